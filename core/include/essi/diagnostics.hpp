@@ -1,0 +1,86 @@
+// Diagnostics: every problem essikit finds is a value with a severity, a stable code, a position and a
+// sentence that says what was found and what was expected. The list of codes lives in one place
+// (diagnostics.cpp) and is documented in docs/diagnostics.md.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace essi {
+
+enum class Severity : std::uint8_t { Note, Warning, Error };
+
+// Stable diagnostic codes. The number never changes once released; the letter says the default
+// severity (E error, W warning). 1xx: reading, 2xx: interpreting, 3xx: geometry, 4xx: machine/profile.
+enum class DiagCode : std::uint16_t {
+    // --- read ---
+    E101_InvalidCharacter = 101,   // a byte that is not + - 0-9 (or a block end) outside a 3/4 section
+    E102_NonAsciiByte = 102,       // a byte >= 0x80 (UTF-8 BOM, GB 18030 text) outside a 3/4 section
+    E103_FunctionCodeTooLong = 103,// a machine function of more than 3 digits (ISO 3.4.1)
+    E104_NumberTooLarge = 104,     // a word whose value does not fit in 9 digits
+    E105_WordCount = 105,          // signed words only, but not 2, 5 or 6 of them
+    E106_FunctionWordCount = 106,  // a leading number followed by 3, 4 or more than 6 signed words
+    E107_UnclosedIgnore = 107,     // a 3 (ignore ON) with no 4 (ignore OFF) after it
+    E108_WhitespaceStrict = 108,   // space or tab inside a block, whitespace policy "strict"
+    W109_WhitespaceSkipped = 109,  // space or tab inside a block, skipped (default policy)
+    W110_ContentAfterEnd = 110,    // blocks after the end of the program: not executed
+    W111_StrayIgnoreOff = 111,     // a 4 (ignore OFF) with no 3 before it
+    W112_MisplacedPercent = 112,   // % in the middle of the program
+    E113_EmptyTape = 113,          // no block at all
+    W114_NoProgramEnd = 114,       // the tape ends without an end code (63, 64, / by default)
+    E115_TooManyErrors = 115,      // reading stopped after too many errors (binary file?)
+    E116_MisplacedMark = 116,      // % or / with other characters in the same block
+    E117_TapeTooLarge = 117,       // more than 4 GiB: positions would not fit
+
+    // --- interp ---
+    W201_UnknownFunction = 201,       // unassigned or unknown machine function
+    W202_FunctionValueIgnored = 202,  // a value given to a function that takes none
+    E203_FunctionValueMissing = 203,  // a function that needs a value (135, 136) has none
+    W204_KerfWhileCutting = 204,      // 29/30/38 while a cutting tool is on
+    W205_AddressOutside3Axis = 205,   // head address without 19 (3-axis mode)
+    E206_BadHeadAddress = 206,        // head address other than 1 or 2
+    E207_ZeroOffsetBlock = 207,       // 83 not followed by a two-word block
+    W208_ManufacturerFunction = 208,  // 55-62 in the ISO dialect: meaning depends on the manufacturer
+    W209_ZeroFeed = 209,              // 39+0: no usable feed
+    W210_RapidWhileCutting = 210,     // motion with rapid traverse on and a cutting tool on
+    W211_ToolOnAtEnd = 211,           // program ends with a cutting or marking tool on
+    W212_BurnerCountNotBeforeSpacing = 212, // 135 not immediately before 136 (Woyda)
+    W213_MacroOnlyFunction = 213,     // 67/68 loops exist only in Woyda macro files
+    W214_UnclosedOptionalIgnore = 214,// 100 without 101
+    W215_ZeroOffsetInIncremental = 215, // 83 while 81 is in force: takes effect with the next absolute move
+
+    // --- geometry ---
+    E301_ArcEndNotOnCircle = 301,     // |r_end - r_start| > arc_tolerance
+    E302_ArcZeroRadius = 302,         // centre on the start point
+    E303_ParabolaEndNotOnCurve = 303, // end point off the parabola by more than arc_tolerance
+    E304_ParabolaZeroCurvature = 304, // radius of curvature at the vertex is zero
+    W305_ParabolaDirection = 305,     // TC does not match the turning of the travelled piece
+    E306_KerfRadiusNegative = 306,    // an arc whose radius would go negative under kerf offset
+
+    // --- machine / profile ---
+    E401_LeavesTable = 401,           // motion beyond the profile's table travel limits
+    E402_BadProfile = 402,            // a profile that cannot be read
+};
+
+struct Diagnostic {
+    Severity severity = Severity::Error;
+    DiagCode code = DiagCode::E101_InvalidCharacter;
+    std::uint32_t line = 0;    // 1-based; 0 when the problem has no position (profile)
+    std::uint32_t column = 0;  // 1-based byte column
+    std::string message;       // what was found and what was expected
+};
+
+// "E101", "W109" ...
+[[nodiscard]] std::string code_name(DiagCode code);
+// The severity a code has by default (its letter).
+[[nodiscard]] Severity default_severity(DiagCode code);
+// "error", "warning", "note"
+[[nodiscard]] std::string_view severity_name(Severity s);
+// One sentence per code: what the rule checks (for SARIF rules, docs and the viewer).
+[[nodiscard]] std::string_view code_summary(DiagCode code);
+// Every code, in numeric order.
+[[nodiscard]] const std::vector<DiagCode>& all_codes();
+
+}  // namespace essi

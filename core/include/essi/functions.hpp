@@ -1,0 +1,36 @@
+// The machine function table: what every ISO 6582 Annex B code (0-115) and every Woyda extension means,
+// in words, for diagnostics, the trace and the viewer's block inspector. One table, one place.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "essi/profile.hpp"
+
+namespace essi {
+
+enum class FunctionValue : std::uint8_t {
+    None,      // takes no value
+    Optional,  // 39, 41, 29, 30: a value may follow
+    Required,  // 135, 136
+};
+
+struct FunctionInfo {
+    int code = 0;
+    std::string_view name;         // "Oxygen ON"
+    std::string_view explanation;  // "cutting oxygen on (tool 1)"
+    FunctionValue value = FunctionValue::None;
+    std::string_view value_unit;   // "mm/min", "s", "unit increments", ""
+    bool assigned = true;          // false: 'Unassigned' in Annex B or unknown in the dialect
+    bool manufacturer = false;     // 55-62 in ISO: specified by the manufacturer
+    bool drawing_machine = false;  // 70-74, 76-79, 84-86, 89-90, 93-98: for drawing machines
+};
+
+// The meaning of `code` in `dialect`; nullopt for codes beyond the table (> 999 cannot be read anyway).
+[[nodiscard]] std::optional<FunctionInfo> function_info(int code, Dialect dialect);
+
+// A sentence that says what a function block does: "function 29: kerf compensation left, 2.0 mm".
+[[nodiscard]] std::string describe_function(int code, bool has_value, long value, const Profile& profile);
+
+}  // namespace essi

@@ -1,0 +1,42 @@
+// Phase 3, geom: exact primitives. Lines, arcs (start radius, signed sweep, the end point exactly) and
+// parabolas (§6) with closed-form lengths, exact bounding boxes and flattening within a chord tolerance.
+#pragma once
+
+#include <vector>
+
+#include "essi/motion.hpp"
+
+namespace essi {
+
+struct Box {
+    double min_x = 0, min_y = 0, max_x = 0, max_y = 0;
+    bool empty = true;
+    void add(Point p);
+    void add(const Box& b);
+};
+
+// Arc sweep from start to end around centre: (0, 2*pi] for ccw, [-2*pi, 0) for cw; a full circle when
+// the end equals the start.
+[[nodiscard]] double arc_sweep(Point start, Point end, Point centre, bool ccw, bool full_circle);
+
+// Closed-form length of a parabola piece.
+[[nodiscard]] double parabola_length(const ParabolaGeom& g);
+// Point of a parabola at parameter t.
+[[nodiscard]] Point parabola_point(const ParabolaGeom& g, double t);
+
+// Exact bounding box of a motion (arc and parabola extremes included).
+[[nodiscard]] Box bounding_box(const MotionRecord& m);
+
+// Appends points approximating the motion within `chord_tolerance_mm` to `out`. The first point
+// (the start) is appended only when `include_start`; the last point appended is exactly `m.end`.
+void flatten(const MotionRecord& m, double chord_tolerance_mm, std::vector<Point>& out, bool include_start = true);
+
+// Point at the given fraction [0,1] of the motion's parameter (for playback and selection).
+[[nodiscard]] Point point_at(const MotionRecord& m, double fraction);
+
+// Tolerances that are not profile settings.
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kMaxFlattenSegments = 4096;   // per motion, whatever the tolerance
+constexpr double kMinChordTolerance = 1e-6; // mm
+
+}  // namespace essi

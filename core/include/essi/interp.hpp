@@ -1,0 +1,31 @@
+// Phase 2, interp: walks the blocks with the machine state (tools, modes, transforms 21-28, 81/82/83,
+// kerf, feed, heads) and emits the motion stream to a sink (ESSI-SEMANTICS §3-§11).
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "essi/diagnostics.hpp"
+#include "essi/motion.hpp"
+#include "essi/profile.hpp"
+#include "essi/read.hpp"
+
+namespace essi {
+
+// Runs the program in `tape` and sends every motion and event to `sink`, in program order. Diagnostics of
+// interpretation and geometry are appended to `diagnostics` (with columns computed from `source`).
+void interpret(const Tape& tape, std::string_view source, const Profile& profile, MotionSink& sink,
+               std::vector<Diagnostic>& diagnostics);
+
+// The coordinate mapping of functions 21-28 (§7): machine = M * tape.
+struct AxisMapping {
+    int xx = 1, xy = 0, yx = 0, yy = 1;  // machine x = xx*X + xy*Y; machine y = yx*X + yy*Y
+    [[nodiscard]] bool mirrors() const { return xx * yy - xy * yx < 0; }
+    [[nodiscard]] Point apply(double X, double Y) const { return {xx * X + xy * Y, yx * X + yy * Y}; }
+    // The inverse (the transpose: M is orthogonal).
+    [[nodiscard]] Point invert(double x, double y) const { return {xx * x + yx * y, xy * x + yy * y}; }
+};
+// The mapping selected by function 21..28.
+[[nodiscard]] AxisMapping axis_mapping(int function_code);
+
+}  // namespace essi

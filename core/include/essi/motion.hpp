@@ -1,0 +1,97 @@
+// The canonical motion stream: what the interpreter emits and every consumer (check, stats, trace,
+// viewer, renderers) reads. Positions are machine coordinates in mm (after 21-28, 83 and the setup
+// offset), before kerf compensation.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace essi {
+
+struct Point {
+    double x = 0, y = 0;
+    friend bool operator==(const Point&, const Point&) = default;
+};
+
+enum class MotionKind : std::uint8_t { Rapid, Travel, Cut, Mark };
+enum class CurveKind : std::uint8_t { Line, Arc, Parabola };
+
+// Tools as bits (ISO 6582 Annex B).
+enum ToolBits : std::uint8_t {
+    kToolOxygen = 1 << 0,      // 7/8   centre torch (tool 1)
+    kToolLeftBevel = 1 << 1,   // 13/14
+    kToolRightBevel = 1 << 2,  // 15/16
+    kToolPlasma = 1 << 3,      // 53/54 (tool 3)
+    kToolPunch = 1 << 4,       // 9/10  punch marking (tool 2)
+    kToolLineMarker = 1 << 5,  // 110/111 line marking (tool 4)
+    kToolFive = 1 << 6,        // 112/113 tool 5
+};
+constexpr std::uint8_t kCuttingTools = kToolOxygen | kToolLeftBevel | kToolRightBevel | kToolPlasma;
+constexpr std::uint8_t kMarkingTools = kToolPunch | kToolLineMarker | kToolFive;
+
+enum class KerfSide : std::uint8_t { Off, Left, Right };
+
+// A parabola as a parametric curve: P(t) = vertex + t*u + t^2/(2*p) * n, t in [t0, t1].
+// u is the unit tangent at the vertex, n the unit axis direction towards the opening, p > 0.
+struct ParabolaGeom {
+    Point vertex;
+    Point u;
+    Point n;
+    double p = 1;
+    double t0 = 0, t1 = 0;
+};
+
+// One motion: a line, arc or parabola from `start` to `end` (the programmed end point, exactly).
+struct MotionRecord {
+    std::uint32_t line = 0;       // source line of the block
+    std::uint32_t block = 0;      // index of the block in the Tape
+    MotionKind kind = MotionKind::Travel;
+    CurveKind curve = CurveKind::Line;
+    std::uint8_t tools = 0;       // ToolBits on during the motion
+    std::uint8_t head = 1;        // 1, or 2 for head 2 on a 3-axis machine
+    KerfSide kerf = KerfSide::Off;
+    bool ccw = false;             // arcs: direction in machine coordinates (after mirroring)
+    Point start, end;
+    Point centre;                 // arcs
+    double radius = 0;            // arcs: start radius (distance start-centre)
+    double end_radius = 0;        // arcs: distance end-centre (differs within arc_tolerance)
+    double sweep = 0;             // arcs: signed angle in radians, + = ccw; full circle = +-2*pi
+    ParabolaGeom parabola;        // parabolas
+    double length_mm = 0;         // closed-form length
+    double feed_mm_min = 0;       // speed used for the time estimate (rapid speed for rapids)
+    double kerf_mm = 0;           // kerf offset (half width) in force, 0 when off
+};
+
+// Everything that is not a motion but changes the machine or the estimate.
+enum class EventKind : std::uint8_t {
+    Function,   // a machine function took effect (code, value)
+    Dwell,      // seconds in `value`
+    Stop,       // 0 programmed stop / 102 optional stop
+    End,        // end of program (63, 64, '/', ...)
+    ZeroOffset, // 83: new origin in `x`, `y` (mm, machine)
+};
+
+struct MachineEvent {
+    std::uint32_t line = 0;
+    std::uint32_t block = 0;
+    EventKind kind = EventKind::Function;
+    std::uint16_t code = 0;     // the machine function
+    bool has_value = false;
+    double value = 0;           // the function's value as written (unit increments, mm/min, s ...)
+    double x = 0, y = 0;        // ZeroOffset: the new origin
+    std::uint8_t tools_after = 0;
+};
+
+// The interpreter's output. Implementations: stats (report), trace printer, viewer buffers, tests.
+class MotionSink {
+public:
+    virtual ~MotionSink() = default;
+    virtual void on_motion(const MotionRecord& record) = 0;
+    virtual void on_event(const MachineEvent& /*event*/) {}
+};
+
+[[nodiscard]] const char* motion_kind_name(MotionKind k);   // "rapid", "travel", "cut", "mark"
+[[nodiscard]] const char* curve_kind_name(CurveKind k);     // "line", "arc", "parabola"
+[[nodiscard]] std::string tools_text(std::uint8_t tools);    // "oxygen+punch", "-" for none
+
+}  // namespace essi

@@ -1,0 +1,105 @@
+// Phase 1, read: bytes -> blocks, each with its source position. No machine semantics beyond
+// "what words does this block hold" (ESSI-SEMANTICS §1-2).
+//
+// Memory: a block is 12 bytes plus 4 bytes per signed word, stored contiguously; the word index of a
+// block is kept sparsely (one entry per kWordIndexStride blocks), so a tape of straight lines costs
+// 20 bytes a block.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "essi/diagnostics.hpp"
+#include "essi/profile.hpp"
+
+namespace essi {
+
+enum class BlockKind : std::uint8_t {
+    Function,       // a machine function: code, no word ("7")
+    FunctionValue,  // a machine function with a value (Woyda): code + 1 word ("39+1400")
+    Motion,         // 2, 5 or 6 signed words; optionally with a head address in `code` ("1+100+0")
+    Comment,        // a line inside a 3 ... 4 section (its text: the source line at `offset`)
+    Percent,        // '%': initialisation / rewind-stop mark
+    EndMark,        // '/' or '=' ending the program (dialect)
+    Invalid,        // a block with a read error; the interpreter skips it
+};
+
+// One block. `code` is the leading unsigned number (function code or head address), or kNoCode.
+struct Block {
+    std::uint32_t offset = 0;      // byte offset of the block's first character
+    std::uint32_t line = 0;        // 1-based line (every CR, LF, CR LF or LF CR counts one)
+    std::uint16_t code = 0;
+    BlockKind kind = BlockKind::Invalid;
+    // low 4 bits: number of signed words (0-6); bit 4: sign of word 5 (TC) is '-';
+    // bit 5: sign of word 6 (TP) is '-'; bit 6: block had a head address
+    std::uint8_t packed = 0;
+
+    static constexpr std::uint16_t kNoCode = 0xFFFF;
+    static constexpr std::uint8_t kWordCountMask = 0x0F;
+    static constexpr std::uint8_t kTcNegative = 0x10;
+    static constexpr std::uint8_t kTpNegative = 0x20;
+    static constexpr std::uint8_t kHasAddress = 0x40;
+
+    [[nodiscard]] int word_count() const { return packed & kWordCountMask; }
+    [[nodiscard]] bool has_code() const { return code != kNoCode; }
+    [[nodiscard]] bool has_address() const { return (packed & kHasAddress) != 0; }
+    // TC (word 5): true = '+' = counter-clockwise (ISO A.7)
+    [[nodiscard]] bool tc_positive() const { return (packed & kTcNegative) == 0; }
+    // TP (word 6): true = '+' = axis parallel to the transverse (Y) axis
+    [[nodiscard]] bool tp_positive() const { return (packed & kTpNegative) == 0; }
+};
+static_assert(sizeof(Block) == 12, "Block must stay compact");
+
+// The read result: blocks, their words, and the diagnostics of reading.
+class Tape {
+public:
+    static constexpr std::size_t kWordIndexStride = 64;
+
+    [[nodiscard]] std::size_t size() const { return blocks_.size(); }
+    [[nodiscard]] const Block& block(std::size_t i) const { return blocks_[i]; }
+    [[nodiscard]] const std::vector<Block>& blocks() const { return blocks_; }
+    // The signed words of block i (random access; sequential walkers should use WordCursor).
+    [[nodiscard]] std::span<const std::int32_t> words(std::size_t i) const;
+    [[nodiscard]] const std::vector<std::int32_t>& all_words() const { return words_; }
+    [[nodiscard]] const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+    [[nodiscard]] bool has_errors() const;
+    // Index of the first block after the program's end, or size() when the tape has no end.
+    [[nodiscard]] std::size_t end_block() const { return end_block_; }
+    [[nodiscard]] bool has_program_end() const { return has_end_; }
+    // Bytes held by blocks, words and the index (capacity, not size): the memory a tape costs.
+    [[nodiscard]] std::size_t memory_bytes() const;
+
+    // Walks the words of consecutive blocks without the index.
+    class WordCursor {
+    public:
+        explicit WordCursor(const Tape& tape) : tape_(&tape) {}
+        // Words of block i; blocks must be visited in increasing order.
+        std::span<const std::int32_t> next(std::size_t i);
+    private:
+        const Tape* tape_;
+        std::size_t block_ = 0;
+        std::size_t word_ = 0;
+    };
+
+private:
+    friend class Reader;
+    std::vector<Block> blocks_;
+    std::vector<std::int32_t> words_;
+    std::vector<std::uint32_t> word_index_;  // first word of block k*kWordIndexStride
+    std::vector<Diagnostic> diagnostics_;
+    std::size_t end_block_ = 0;
+    bool has_end_ = false;
+};
+
+// Reads a tape. Never throws; every problem is a diagnostic in the result.
+[[nodiscard]] Tape read_tape(std::string_view bytes, const Profile& profile);
+
+// 1-based column of a byte offset (counts bytes from the start of its line).
+[[nodiscard]] std::uint32_t column_of(std::string_view bytes, std::uint32_t offset);
+// The source text of the line holding `offset`, without its line end.
+[[nodiscard]] std::string_view line_text(std::string_view bytes, std::uint32_t offset);
+
+}  // namespace essi
