@@ -81,6 +81,6 @@ struct Diagnostic {
 // One sentence per code: what the rule checks (for SARIF rules, docs and the viewer).
 [[nodiscard]] std::string_view code_summary(DiagCode code);
 // Every code, in numeric order.
-[[nodiscard]] const std::vector<DiagCode>& all_codes();
+[[nodiscard]] std::vector<DiagCode> all_codes();
 
 }  // namespace essi

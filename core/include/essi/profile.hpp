@@ -59,7 +59,7 @@ struct Profile {
 
 // The built-in profiles by name ("iso6582", "woyda"); nullopt for other names.
 [[nodiscard]] std::optional<Profile> builtin_profile(std::string_view name);
-[[nodiscard]] const std::vector<std::string>& builtin_profile_names();
+[[nodiscard]] std::vector<std::string> builtin_profile_names();
 
 // Parses a profile from JSON text. Keys absent from the text keep the values of the profile named by its
 // "base" key (default "iso6582"). Errors are returned as diagnostics (E402) with line 0, never thrown.

@@ -46,8 +46,15 @@ public:
 private:
     const Profile& profile_;
     Stats stats_;
+    std::uint8_t tools_ = 0;  // tools on before the current event (pierce counting)
 };
 
 [[nodiscard]] CheckResult check_tape(std::string_view bytes, const Profile& profile);
+
+class Tape;
+// Program blocks of a read tape: blocks up to the end, comment lines inside 3/4 excluded.
+[[nodiscard]] unsigned long long count_program_blocks(const Tape& tape);
+// Orders diagnostics by line, then column (stable).
+void sort_diagnostics(std::vector<Diagnostic>& diagnostics);
 
 }  // namespace essi

@@ -1,0 +1,209 @@
+// Exact primitives: lengths, bounding boxes, points and flattening of lines, arcs and parabolas.
+#include "essi/geom.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace essi {
+namespace {
+
+constexpr double kTwoPi = 2 * kPi;
+
+double angle_of(Point p, Point c) { return std::atan2(p.y - c.y, p.x - c.x); }
+
+// Arc radius at a fraction of the sweep: from the start radius to the end radius, so that the arc ends
+// exactly on the programmed end point (the controller moves there; nothing drifts).
+double radius_at(const MotionRecord& m, double f) { return m.radius + (m.end_radius - m.radius) * f; }
+
+Point arc_point(const MotionRecord& m, double f) {
+    if (f >= 1.0) return m.end;
+    if (f <= 0.0) return m.start;
+    const double a = angle_of(m.start, m.centre) + m.sweep * f;
+    const double r = radius_at(m, f);
+    return {m.centre.x + r * std::cos(a), m.centre.y + r * std::sin(a)};
+}
+
+Point parabola_point_exact_end(const MotionRecord& m, double f) {
+    if (f >= 1.0) return m.end;
+    if (f <= 0.0) return m.start;
+    const ParabolaGeom& g = m.parabola;
+    const double t = g.t0 + (g.t1 - g.t0) * f;
+    // The curve point, corrected linearly so the piece ends exactly at the programmed end point.
+    const Point on = parabola_point(g, t);
+    const Point e = parabola_point(g, g.t1);
+    return {on.x + (m.end.x - e.x) * f, on.y + (m.end.y - e.y) * f};
+}
+
+// Antiderivative of sqrt(1 + (t/p)^2).
+double parabola_arc_integral(double t, double p) {
+    const double q = t / p;
+    return 0.5 * t * std::sqrt(1 + q * q) + 0.5 * p * std::asinh(q);
+}
+
+}  // namespace
+
+void Box::add(Point p) {
+    if (empty) {
+        min_x = max_x = p.x;
+        min_y = max_y = p.y;
+        empty = false;
+        return;
+    }
+    min_x = std::min(min_x, p.x);
+    max_x = std::max(max_x, p.x);
+    min_y = std::min(min_y, p.y);
+    max_y = std::max(max_y, p.y);
+}
+
+void Box::add(const Box& b) {
+    if (b.empty) return;
+    add(Point{b.min_x, b.min_y});
+    add(Point{b.max_x, b.max_y});
+}
+
+double arc_sweep(Point start, Point end, Point centre, bool ccw, bool full_circle) {
+    if (full_circle) return ccw ? kTwoPi : -kTwoPi;
+    const double a0 = angle_of(start, centre);
+    const double a1 = angle_of(end, centre);
+    double d = a1 - a0;
+    if (ccw) {
+        while (d <= 0) d += kTwoPi;
+        while (d > kTwoPi) d -= kTwoPi;
+    } else {
+        while (d >= 0) d -= kTwoPi;
+        while (d < -kTwoPi) d += kTwoPi;
+    }
+    return d;
+}
+
+Point parabola_point(const ParabolaGeom& g, double t) {
+    const double s = t * t / (2 * g.p);
+    return {g.vertex.x + t * g.u.x + s * g.n.x, g.vertex.y + t * g.u.y + s * g.n.y};
+}
+
+double parabola_length(const ParabolaGeom& g) {
+    return std::abs(parabola_arc_integral(g.t1, g.p) - parabola_arc_integral(g.t0, g.p));
+}
+
+Box bounding_box(const MotionRecord& m) {
+    Box b;
+    b.add(m.start);
+    b.add(m.end);
+    switch (m.curve) {
+        case CurveKind::Line: break;
+        case CurveKind::Arc: {
+            // Axis extremes (at angles 0, 90, 180, 270 degrees) that lie inside the sweep.
+            const double a0 = angle_of(m.start, m.centre);
+            for (int k = 0; k < 4; ++k) {
+                const double a = k * kPi / 2;
+                double d = a - a0;  // angle from the start to this extreme, in the arc's direction
+                if (m.sweep >= 0) {
+                    while (d < 0) d += kTwoPi;
+                    while (d >= kTwoPi) d -= kTwoPi;
+                    if (d > m.sweep) continue;
+                } else {
+                    while (d > 0) d -= kTwoPi;
+                    while (d <= -kTwoPi) d += kTwoPi;
+                    if (d < m.sweep) continue;
+                }
+                const double r = radius_at(m, m.sweep == 0 ? 0 : d / m.sweep);
+                b.add(Point{m.centre.x + r * std::cos(a), m.centre.y + r * std::sin(a)});
+            }
+            break;
+        }
+        case CurveKind::Parabola: {
+            // x(t) and y(t) are quadratics; each has one extreme where its derivative vanishes.
+            const ParabolaGeom& g = m.parabola;
+            const double lo = std::min(g.t0, g.t1), hi = std::max(g.t0, g.t1);
+            const double du[2] = {g.u.x, g.u.y};
+            const double dn[2] = {g.n.x, g.n.y};
+            for (int axis = 0; axis < 2; ++axis) {
+                if (dn[axis] == 0) continue;
+                const double t = -du[axis] * g.p / dn[axis];
+                if (t > lo && t < hi) {
+                    const double f = (g.t1 == g.t0) ? 0 : (t - g.t0) / (g.t1 - g.t0);
+                    b.add(parabola_point_exact_end(m, f));
+                }
+            }
+            break;
+        }
+    }
+    return b;
+}
+
+Point point_at(const MotionRecord& m, double fraction) {
+    switch (m.curve) {
+        case CurveKind::Line:
+            if (fraction >= 1.0) return m.end;
+            return {m.start.x + (m.end.x - m.start.x) * fraction, m.start.y + (m.end.y - m.start.y) * fraction};
+        case CurveKind::Arc: return arc_point(m, fraction);
+        case CurveKind::Parabola: return parabola_point_exact_end(m, fraction);
+    }
+    return m.end;
+}
+
+void flatten(const MotionRecord& m, double chord_tolerance_mm, std::vector<Point>& out, bool include_start) {
+    if (include_start) out.push_back(m.start);
+    int segments = 1;
+    const double tol = std::max(chord_tolerance_mm, kMinChordTolerance);
+    switch (m.curve) {
+        case CurveKind::Line: break;
+        case CurveKind::Arc: {
+            // Sagitta of a chord over angle a on radius r: r * (1 - cos(a/2)) <= tol.
+            const double r = std::max(m.radius, m.end_radius);
+            if (r > tol) {
+                const double max_step = 2 * std::acos(1 - tol / r);
+                segments = static_cast<int>(std::ceil(std::abs(m.sweep) / max_step));
+            }
+            segments = std::max(segments, std::abs(m.sweep) > kPi ? 4 : 2);
+            break;
+        }
+        case CurveKind::Parabola: {
+            // Chord error over a parameter step h is at most h^2 * curvature_max / 8, with curvature <= 1/p.
+            const double span = std::abs(m.parabola.t1 - m.parabola.t0);
+            const double max_step = std::sqrt(8 * tol * m.parabola.p);
+            segments = std::max(2, static_cast<int>(std::ceil(span / max_step)));
+            break;
+        }
+    }
+    segments = std::min(segments, kMaxFlattenSegments);
+    for (int i = 1; i < segments; ++i) out.push_back(point_at(m, static_cast<double>(i) / segments));
+    out.push_back(m.end);
+}
+
+const char* motion_kind_name(MotionKind k) {
+    switch (k) {
+        case MotionKind::Rapid: return "rapid";
+        case MotionKind::Travel: return "travel";
+        case MotionKind::Cut: return "cut";
+        case MotionKind::Mark: return "mark";
+    }
+    return "?";
+}
+
+const char* curve_kind_name(CurveKind k) {
+    switch (k) {
+        case CurveKind::Line: return "line";
+        case CurveKind::Arc: return "arc";
+        case CurveKind::Parabola: return "parabola";
+    }
+    return "?";
+}
+
+std::string tools_text(std::uint8_t tools) {
+    static constexpr struct {
+        std::uint8_t bit;
+        const char* name;
+    } kNames[] = {{kToolOxygen, "oxygen"},   {kToolLeftBevel, "left-bevel"}, {kToolRightBevel, "right-bevel"},
+                  {kToolPlasma, "plasma"},   {kToolPunch, "punch"},          {kToolLineMarker, "line-marker"},
+                  {kToolFive, "tool5"}};
+    std::string s;
+    for (const auto& n : kNames) {
+        if (!(tools & n.bit)) continue;
+        if (!s.empty()) s += '+';
+        s += n.name;
+    }
+    return s.empty() ? "-" : s;
+}
+
+}  // namespace essi

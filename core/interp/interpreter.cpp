@@ -1,0 +1,550 @@
+// Phase 2, interp: the machine. Walks the blocks, keeps the state and emits the motion stream.
+// Positions are kept in integer unit increments (machine axes, relative to the program start), so
+// arcs and lines end exactly where the tape says and nothing drifts over millions of blocks.
+#include "essi/interp.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "essi/functions.hpp"
+#include "essi/geom.hpp"
+
+namespace essi {
+namespace {
+
+struct IPoint {
+    long long x = 0, y = 0;
+};
+
+constexpr int kHeads = 2;
+constexpr int kFunctionReturnToZero = 62;  // Woyda
+constexpr int kBurnerCount = 135, kBurnerSpacing = 136;
+
+std::string mm_text(double v) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.3f mm", v);
+    return buf;
+}
+
+class Interpreter {
+public:
+    Interpreter(const Tape& tape, std::string_view source, const Profile& profile, MotionSink& sink,
+                std::vector<Diagnostic>& diagnostics)
+        : tape_(tape), source_(source), profile_(profile), sink_(sink), diags_(diagnostics) {}
+
+    void run();
+
+private:
+    void function(const Block& b, std::size_t index, bool has_value, long long value);
+    void motion(const Block& b, std::size_t index, std::span<const std::int32_t> w);
+    void emit(MotionRecord& m, const Block& b, std::size_t index);
+    void event(const Block& b, std::size_t index, EventKind kind, bool has_value = false, double value = 0);
+    void warn(DiagCode code, const Block& b, std::string message) { diag(default_severity(code), code, b, std::move(message)); }
+    void diag(Severity s, DiagCode code, const Block& b, std::string message) {
+        diags_.push_back({s, code, b.line, column_of(source_, b.offset), std::move(message)});
+    }
+    [[nodiscard]] Point to_mm(IPoint p) const {
+        return {static_cast<double>(p.x) * profile_.unit_mm + profile_.setup_offset_x_mm,
+                static_cast<double>(p.y) * profile_.unit_mm + profile_.setup_offset_y_mm};
+    }
+    [[nodiscard]] IPoint map(long long X, long long Y) const {
+        return {mapping_.xx * X + mapping_.xy * Y, mapping_.yx * X + mapping_.yy * Y};
+    }
+    void set_tools(std::uint8_t tools) { tools_ = tools; }
+    void check_table(const MotionRecord& m, const Block& b);
+
+    const Tape& tape_;
+    std::string_view source_;
+    const Profile& profile_;
+    MotionSink& sink_;
+    std::vector<Diagnostic>& diags_;
+
+    // Machine state
+    IPoint pos_[kHeads];            // per head, machine axes, unit increments
+    IPoint origin_;                 // origin of absolute coordinates (83), machine axes
+    AxisMapping mapping_;           // 21-28
+    bool absolute_ = false;         // 82
+    bool zero_offset_pending_ = false;
+    const Block* zero_offset_block_ = nullptr;
+    std::uint8_t tools_ = 0;
+    bool rapid_ = false;
+    bool rapid_one_block_ = false;  // profile.rapid_single_block: 5 lasts one motion
+    KerfSide kerf_ = KerfSide::Off;
+    double kerf_offset_mm_ = 0;
+    double feed_mm_min_ = 0;
+    bool three_axis_ = false;
+    bool skipping_ = false;          // inside 100 ... 101 with optional ignore on
+    const Block* open_optional_ = nullptr;
+    const Block* burner_count_ = nullptr;  // a 135 waiting for its 136
+    bool inside_table_ = true;
+    const Block* last_block_ = nullptr;
+    std::uint8_t tools_before_end_ = 0;  // tools on when the end code was reached
+};
+
+void Interpreter::run() {
+    feed_mm_min_ = profile_.feed_mm_min;
+    Tape::WordCursor cursor(tape_);
+    const std::size_t end = tape_.end_block();
+    bool ended = false;
+    for (std::size_t i = 0; i < end && !ended; ++i) {
+        const Block& b = tape_.block(i);
+        if (b.kind == BlockKind::Comment || b.kind == BlockKind::Percent) continue;
+        last_block_ = &b;
+        if (burner_count_ && !(b.has_code() && b.code == kBurnerSpacing && b.kind == BlockKind::FunctionValue)) {
+            warn(DiagCode::W212_BurnerCountNotBeforeSpacing, *burner_count_,
+                 "burner count (135) is not immediately followed by the burner spacing (136); expected 136+value next");
+            burner_count_ = nullptr;
+        }
+        const bool is_end = tape_.has_program_end() && i + 1 == end;  // the end still ends a skipped section
+        if (skipping_ && !is_end && !(b.kind == BlockKind::Function && b.code == 101)) continue;
+        switch (b.kind) {
+            case BlockKind::Invalid:
+                zero_offset_pending_ = false;
+                break;
+            case BlockKind::EndMark:
+                event(b, i, EventKind::End);
+                ended = true;
+                break;
+            case BlockKind::Function:
+                if (is_end) {
+                    // The end code recognised by the reader (63, 64, ... per the dialect).
+                    event(b, i, EventKind::End);
+                    ended = true;
+                    break;
+                }
+                function(b, i, false, 0);
+                break;
+            case BlockKind::FunctionValue:
+                function(b, i, true, cursor.next(i)[0]);
+                break;
+            case BlockKind::Motion:
+                motion(b, i, cursor.next(i));
+                break;
+            case BlockKind::Comment:
+            case BlockKind::Percent:
+                break;
+        }
+    }
+    if (zero_offset_pending_ && zero_offset_block_) {
+        warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
+             "zero offset (83) at the end of the program; expected a block of two signed words (the new origin) after it");
+    }
+    if (open_optional_) {
+        warn(DiagCode::W214_UnclosedOptionalIgnore, *open_optional_,
+             "optional ignore ON (100) is never switched off; expected 101 after the blocks to skip");
+    }
+    if (burner_count_) {
+        warn(DiagCode::W212_BurnerCountNotBeforeSpacing, *burner_count_,
+             "burner count (135) is not followed by the burner spacing (136); expected 136+value next");
+    }
+    // The tools in force just before the end code (63/64 switches them off as part of ending).
+    const std::uint8_t tools_at_end = ended ? tools_before_end_ : tools_;
+    if (last_block_ && (tools_at_end & (kCuttingTools | kMarkingTools))) {
+        warn(DiagCode::W211_ToolOnAtEnd, *last_block_,
+             "the program ends with " + tools_text(tools_at_end) +
+                 " still on; expected the tool to be switched off (8, 10, 54, 111 ...) before the end");
+    }
+}
+
+void Interpreter::event(const Block& b, std::size_t index, EventKind kind, bool has_value, double value) {
+    if (kind == EventKind::End) tools_before_end_ = tools_;
+    MachineEvent e;
+    e.line = b.line;
+    e.block = static_cast<std::uint32_t>(index);
+    e.kind = kind;
+    e.code = b.has_code() ? b.code : 0;
+    e.has_value = has_value;
+    e.value = value;
+    if (kind == EventKind::End) tools_ = 0;
+    e.tools_after = tools_;
+    sink_.on_event(e);
+}
+
+void Interpreter::function(const Block& b, std::size_t index, bool has_value, long long value) {
+    const int code = b.code;
+    if (zero_offset_pending_) {
+        warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
+             "zero offset (83) must be followed by a block of two signed words (the new origin); found function " +
+                 std::to_string(code) + " on line " + std::to_string(b.line));
+        zero_offset_pending_ = false;
+    }
+    const auto info = function_info(code, profile_.dialect);
+    if (!info || !info->assigned) {
+        warn(DiagCode::W201_UnknownFunction, b,
+             "machine function " + std::to_string(code) + " is " +
+                 (code > 115 ? "not defined by ISO 6582 (0-115) or by the " + profile_.name + " profile"
+                             : std::string("unassigned in ISO 6582 Annex B")) +
+                 "; it is ignored");
+        return;
+    }
+    if (info->manufacturer) {
+        warn(DiagCode::W208_ManufacturerFunction, b,
+             "machine function " + std::to_string(code) +
+                 " is specified by the machine manufacturer (ISO 6582 55-62); it is ignored — choose the profile of "
+                 "your controller (e.g. woyda) to interpret it");
+        return;
+    }
+    if (has_value && info->value == FunctionValue::None) {
+        warn(DiagCode::W202_FunctionValueIgnored, b,
+             "machine function " + std::to_string(code) + " (" + std::string(info->name) +
+                 ") takes no value; the value " + std::to_string(value) + " is ignored");
+        has_value = false;
+    }
+    if (!has_value && info->value == FunctionValue::Required) {
+        warn(DiagCode::E203_FunctionValueMissing, b,
+             "machine function " + std::to_string(code) + " (" + std::string(info->name) + ") needs a value; expected " +
+                 std::to_string(code) + "+value");
+        return;
+    }
+    const bool cutting = (tools_ & kCuttingTools) != 0;
+    double event_value = static_cast<double>(value);
+    EventKind kind = EventKind::Function;
+
+    auto tool = [&](std::uint8_t bit, bool on) { set_tools(on ? (tools_ | bit) : (tools_ & ~bit)); };
+    auto kerf = [&](KerfSide side) {
+        if (cutting) {
+            warn(DiagCode::W204_KerfWhileCutting, b,
+                 "kerf compensation switched " + std::string(side == KerfSide::Off ? "off" : "on") +
+                     " while a cutting tool is on; expected it before the pierce (7, 53 ...) or after the tool is off");
+        }
+        kerf_ = side;
+        if (side == KerfSide::Off) {
+            kerf_offset_mm_ = 0;
+            return;
+        }
+        const double units = has_value ? static_cast<double>(value) : profile_.kerf_units;
+        const double mm = units * profile_.unit_mm;
+        kerf_offset_mm_ = profile_.kerf_value == KerfValueMeaning::Width ? mm / 2 : mm;
+    };
+
+    switch (code) {
+        case 0:
+        case 102: kind = EventKind::Stop; break;
+        case 5:
+            rapid_ = true;
+            rapid_one_block_ = profile_.rapid_single_block;
+            break;
+        case 6: rapid_ = false; break;
+        case 7: tool(kToolOxygen, true); break;
+        case 8: tool(kToolOxygen, false); break;
+        case 9: tool(kToolPunch, true); break;
+        case 10: tool(kToolPunch, false); break;
+        case 13: tool(kToolLeftBevel, true); break;
+        case 14: tool(kToolLeftBevel, false); break;
+        case 15: tool(kToolRightBevel, true); break;
+        case 16: tool(kToolRightBevel, false); break;
+        case 19: three_axis_ = true; break;
+        case 20: three_axis_ = false; break;
+        case 21: case 22: case 23: case 24: case 25: case 26: case 27: case 28:
+            mapping_ = axis_mapping(code);
+            break;
+        case 29: kerf(KerfSide::Left); event_value = kerf_offset_mm_; break;
+        case 30: kerf(KerfSide::Right); event_value = kerf_offset_mm_; break;
+        case 38: kerf(KerfSide::Off); break;
+        case 39:
+            if (has_value && value <= 0) {
+                warn(DiagCode::W209_ZeroFeed, b,
+                     "programmed feed " + std::to_string(value) + " mm/min cannot move the machine; the time estimate uses the profile's feed of " +
+                         std::to_string(static_cast<long long>(profile_.feed_mm_min)) + " mm/min");
+                feed_mm_min_ = profile_.feed_mm_min;
+            } else {
+                feed_mm_min_ = has_value ? static_cast<double>(value) : profile_.feed_mm_min;
+            }
+            event_value = feed_mm_min_;
+            has_value = true;
+            break;
+        case 41:
+            kind = EventKind::Dwell;
+            event_value = has_value ? static_cast<double>(value) : profile_.default_dwell_s;
+            has_value = true;
+            break;
+        case 43:  // Woyda: cutting oxygen off (preheat stays)
+            tool(kToolOxygen, false);
+            break;
+        case 53: tool(kToolPlasma, true); break;
+        case 54: tool(kToolPlasma, false); break;
+        case 63:
+        case 64:  // not an end code in this profile: still cancels the stored functions
+            set_tools(0);
+            rapid_ = false;
+            kerf_ = KerfSide::Off;
+            kerf_offset_mm_ = 0;
+            break;
+        case 67:
+        case 68:
+            warn(DiagCode::W213_MacroOnlyFunction, b,
+                 "machine function " + std::to_string(code) + " (" + std::string(info->name) +
+                     ") is defined only in Woyda macro files; it is ignored in a program");
+            return;
+        case 81: absolute_ = false; break;
+        case 82: absolute_ = true; break;
+        case 83:
+            zero_offset_pending_ = true;
+            zero_offset_block_ = &b;
+            if (!absolute_) {
+                warn(DiagCode::W215_ZeroOffsetInIncremental, b,
+                     "zero offset (83) while programming incrementally (81): the new origin takes effect with the next "
+                     "absolute move (82)");
+            }
+            break;
+        case 100:
+            open_optional_ = &b;
+            skipping_ = profile_.optional_ignore;
+            break;
+        case 101:
+            open_optional_ = nullptr;
+            skipping_ = false;
+            break;
+        case 110: tool(kToolLineMarker, true); break;
+        case 111: tool(kToolLineMarker, false); break;
+        case 112: tool(kToolFive, true); break;
+        case 113: tool(kToolFive, false); break;
+        case kFunctionReturnToZero:
+            if (profile_.dialect == Dialect::Woyda) {
+                event(b, index, EventKind::Function);
+                MotionRecord m;
+                m.curve = CurveKind::Line;
+                m.start = to_mm(pos_[0]);
+                pos_[0] = IPoint{};
+                m.end = to_mm(pos_[0]);
+                m.length_mm = std::hypot(m.end.x - m.start.x, m.end.y - m.start.y);
+                emit(m, b, index);
+                return;
+            }
+            break;
+        case kBurnerCount: burner_count_ = &b; break;
+        case kBurnerSpacing: burner_count_ = nullptr; break;
+        default: break;  // state-only functions: the event says what happened
+    }
+    event(b, index, kind, has_value, event_value);
+}
+
+void Interpreter::emit(MotionRecord& m, const Block& b, std::size_t index) {
+    m.line = b.line;
+    m.block = static_cast<std::uint32_t>(index);
+    m.tools = tools_;
+    if (tools_ & kCuttingTools) m.kind = MotionKind::Cut;
+    else if (tools_ & kMarkingTools) m.kind = MotionKind::Mark;
+    else if (rapid_) m.kind = MotionKind::Rapid;
+    else m.kind = MotionKind::Travel;
+    if (rapid_ && (tools_ & kCuttingTools)) {
+        warn(DiagCode::W210_RapidWhileCutting, b,
+             "motion at rapid traverse (5) while " + tools_text(tools_ & kCuttingTools) +
+                 " is on; expected 6 (rapid OFF) before cutting");
+    }
+    m.feed_mm_min = rapid_ ? profile_.rapid_mm_min : feed_mm_min_;
+    m.kerf = kerf_;
+    m.kerf_mm = kerf_offset_mm_;
+    if (m.kerf != KerfSide::Off && mapping_.mirrors()) m.kerf = m.kerf == KerfSide::Left ? KerfSide::Right : KerfSide::Left;
+    if (rapid_one_block_) {
+        rapid_ = false;
+        rapid_one_block_ = false;
+    }
+    check_table(m, b);
+    sink_.on_motion(m);
+}
+
+void Interpreter::check_table(const MotionRecord& m, const Block& b) {
+    if (!profile_.table) return;
+    const TableLimits& t = *profile_.table;
+    const Box box = bounding_box(m);
+    const bool inside = box.min_x >= t.min_x_mm && box.max_x <= t.max_x_mm && box.min_y >= t.min_y_mm &&
+                        box.max_y <= t.max_y_mm;
+    if (!inside && inside_table_) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf,
+                      "this motion leaves the table: it reaches x %.3f..%.3f, y %.3f..%.3f mm; the table allows x "
+                      "%.3f..%.3f, y %.3f..%.3f mm",
+                      box.min_x, box.max_x, box.min_y, box.max_y, t.min_x_mm, t.max_x_mm, t.min_y_mm, t.max_y_mm);
+        warn(DiagCode::E401_LeavesTable, b, buf);
+    }
+    inside_table_ = inside;
+}
+
+void Interpreter::motion(const Block& b, std::size_t index, std::span<const std::int32_t> w) {
+    if (zero_offset_pending_) {
+        zero_offset_pending_ = false;
+        if (w.size() == 2 && !b.has_address()) {
+            const IPoint d = map(w[0], w[1]);
+            origin_.x += d.x;
+            origin_.y += d.y;
+            MachineEvent e;
+            e.line = b.line;
+            e.block = static_cast<std::uint32_t>(index);
+            e.kind = EventKind::ZeroOffset;
+            e.code = 83;
+            const Point o = to_mm(origin_);
+            e.x = o.x;
+            e.y = o.y;
+            e.tools_after = tools_;
+            sink_.on_event(e);
+            return;
+        }
+        warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
+             "zero offset (83) must be followed by a block of two signed words (the new origin); line " +
+                 std::to_string(b.line) + " has " + std::to_string(w.size()) + " words");
+    }
+    int head = 1;
+    if (b.has_address()) {
+        if (b.code != 1 && b.code != 2) {
+            warn(DiagCode::E206_BadHeadAddress, b,
+                 "head address " + std::to_string(b.code) + " is not a head; expected 1 or 2 (ISO 6582 Annex B)");
+            return;
+        }
+        head = b.code;
+        if (!three_axis_) {
+            warn(DiagCode::W205_AddressOutside3Axis, b,
+                 "head address " + std::to_string(head) + " while the machine is in 2-axis mode; expected 19 (3-axis control) before addressed blocks");
+        }
+    }
+    IPoint& cur = pos_[head - 1];
+    // The block's frame: machine = base + M * tape. Incremental: base is the start, the start is tape (0,0).
+    // Absolute: base is the origin of absolute coordinates, the start is M^T (current - origin).
+    const IPoint base = absolute_ ? origin_ : cur;
+    IPoint s_t{0, 0};
+    if (absolute_) {
+        const long long dx = cur.x - origin_.x, dy = cur.y - origin_.y;
+        s_t = {mapping_.xx * dx + mapping_.yx * dy, mapping_.xy * dx + mapping_.yy * dy};
+    }
+    const IPoint e_t{w[0], w[1]};
+    const IPoint d_end = map(e_t.x, e_t.y);
+    const IPoint end{base.x + d_end.x, base.y + d_end.y};
+
+    MotionRecord m;
+    m.head = static_cast<std::uint8_t>(head);
+    m.start = to_mm(cur);
+    m.end = to_mm(end);
+    const double unit = profile_.unit_mm;
+    const double tol_units = profile_.arc_tolerance_units;
+
+    if (w.size() == 2) {
+        m.curve = CurveKind::Line;
+        m.length_mm = std::hypot(m.end.x - m.start.x, m.end.y - m.start.y);
+    } else if (w.size() == 5) {
+        const IPoint c_t{w[2], w[3]};
+        const IPoint d_c = map(c_t.x, c_t.y);
+        const IPoint centre{base.x + d_c.x, base.y + d_c.y};
+        const double r0 = std::hypot(static_cast<double>(s_t.x - c_t.x), static_cast<double>(s_t.y - c_t.y));
+        const double r1 = std::hypot(static_cast<double>(e_t.x - c_t.x), static_cast<double>(e_t.y - c_t.y));
+        const bool full = s_t.x == e_t.x && s_t.y == e_t.y;
+        if (r0 == 0) {
+            warn(DiagCode::E302_ArcZeroRadius, b,
+                 "the arc's centre is its start point (radius 0); expected XC/YC to give the centre relative to the start");
+            m.curve = CurveKind::Line;
+            m.length_mm = std::hypot(m.end.x - m.start.x, m.end.y - m.start.y);
+        } else {
+            if (std::abs(r1 - r0) > tol_units) {
+                warn(DiagCode::E301_ArcEndNotOnCircle, b,
+                     "the arc's end point is not on its circle: radius at the start " + mm_text(r0 * unit) +
+                         ", at the end " + mm_text(r1 * unit) + " (difference " + mm_text(std::abs(r1 - r0) * unit) +
+                         "); expected at most " + mm_text(tol_units * unit) + " (arc_tolerance)");
+            }
+            m.curve = CurveKind::Arc;
+            m.centre = to_mm(centre);
+            m.ccw = b.tc_positive() != mapping_.mirrors();
+            m.radius = r0 * unit;
+            m.end_radius = r1 * unit;
+            m.sweep = arc_sweep(m.start, m.end, m.centre, m.ccw, full);
+            m.length_mm = m.radius * std::abs(m.sweep);
+            if (kerf_ != KerfSide::Off) {
+                // Kerf side relative to the programmed contour: a ccw arc has its centre on the left.
+                const bool inside = (kerf_ == KerfSide::Left) == b.tc_positive();
+                if (inside && m.radius - kerf_offset_mm_ <= 0) {
+                    warn(DiagCode::E306_KerfRadiusNegative, b,
+                         "with the kerf offset of " + mm_text(kerf_offset_mm_) + " this arc of radius " +
+                             mm_text(m.radius) + " would have no radius left; expected a radius above the kerf offset");
+                }
+            }
+        }
+    } else {  // 6 words: parabola (§6), worked out in the tape frame and mapped like every point
+        const double XP = w[2], YP = w[3];
+        const bool axis_parallel_y = b.tp_positive();
+        const double p_signed = axis_parallel_y ? YP : XP;
+        const double sx = static_cast<double>(s_t.x), sy = static_cast<double>(s_t.y);
+        const double ex = static_cast<double>(e_t.x), ey = static_cast<double>(e_t.y);
+        if (p_signed == 0) {
+            warn(DiagCode::E304_ParabolaZeroCurvature, b,
+                 std::string("the parabola's radius of curvature at the vertex (") + (axis_parallel_y ? "YP" : "XP") +
+                     ") is 0; expected a non-zero radius");
+            m.curve = CurveKind::Line;
+            m.length_mm = std::hypot(m.end.x - m.start.x, m.end.y - m.start.y);
+        } else {
+            ParabolaGeom g;  // tape frame, units
+            double residual = 0;
+            if (axis_parallel_y) {
+                const double xa = (absolute_ ? 0 : sx) + XP;
+                const double yv = sy - (sx - xa) * (sx - xa) / (2 * YP);
+                g.vertex = {xa, yv};
+                g.u = {1, 0};
+                g.n = {0, YP > 0 ? 1.0 : -1.0};
+                g.t0 = sx - xa;
+                g.t1 = ex - xa;
+                residual = ey - (yv + g.t1 * g.t1 / (2 * YP));
+            } else {
+                const double ya = (absolute_ ? 0 : sy) + YP;
+                const double xv = sx - (sy - ya) * (sy - ya) / (2 * XP);
+                g.vertex = {xv, ya};
+                g.u = {0, 1};
+                g.n = {XP > 0 ? 1.0 : -1.0, 0};
+                g.t0 = sy - ya;
+                g.t1 = ey - ya;
+                residual = ex - (xv + g.t1 * g.t1 / (2 * XP));
+            }
+            g.p = std::abs(p_signed);
+            if (std::abs(residual) > tol_units) {
+                warn(DiagCode::E303_ParabolaEndNotOnCurve, b,
+                     "the parabola's end point is " + mm_text(std::abs(residual) * unit) +
+                         " off its curve (measured along the axis); expected at most " + mm_text(tol_units * unit) +
+                         " (arc_tolerance)");
+            }
+            if (g.t1 != g.t0) {
+                const double turn = (g.u.x * g.n.y - g.u.y * g.n.x) * (g.t1 - g.t0);
+                const bool ccw = turn > 0;
+                if (ccw != b.tc_positive()) {
+                    warn(DiagCode::W305_ParabolaDirection, b,
+                         std::string("TC says ") + (b.tc_positive() ? "counter-clockwise (+)" : "clockwise (-)") +
+                             " but this parabola piece turns " + (ccw ? "counter-clockwise" : "clockwise") +
+                             "; expected TC " + (ccw ? "+" : "-"));
+                }
+            }
+            // Map to machine millimetres.
+            const Point bm = to_mm(base);
+            const Point v = mapping_.apply(g.vertex.x, g.vertex.y);
+            m.parabola.vertex = {bm.x + v.x * unit, bm.y + v.y * unit};
+            m.parabola.u = mapping_.apply(g.u.x, g.u.y);
+            m.parabola.n = mapping_.apply(g.n.x, g.n.y);
+            m.parabola.p = g.p * unit;
+            m.parabola.t0 = g.t0 * unit;
+            m.parabola.t1 = g.t1 * unit;
+            m.curve = CurveKind::Parabola;
+            m.ccw = b.tc_positive() != mapping_.mirrors();
+            m.length_mm = parabola_length(m.parabola);
+        }
+    }
+    cur = end;
+    emit(m, b, index);
+}
+
+}  // namespace
+
+AxisMapping axis_mapping(int function_code) {
+    switch (function_code) {
+        case 22: return {1, 0, 0, -1};
+        case 23: return {-1, 0, 0, -1};
+        case 24: return {-1, 0, 0, 1};
+        case 25: return {0, -1, -1, 0};
+        case 26: return {0, 1, -1, 0};
+        case 27: return {0, 1, 1, 0};
+        case 28: return {0, -1, 1, 0};
+        default: return {1, 0, 0, 1};
+    }
+}
+
+void interpret(const Tape& tape, std::string_view source, const Profile& profile, MotionSink& sink,
+               std::vector<Diagnostic>& diagnostics) {
+    Interpreter interpreter(tape, source, profile, sink, diagnostics);
+    interpreter.run();
+}
+
+}  // namespace essi

@@ -1,0 +1,127 @@
+// The trace: the motion stream as text, one record a line (LinuxCNC's canonical-motion printout is the
+// model). Numbers are fixed to 3 decimals (micrometres) so golden files diff cleanly.
+#include "essi/trace.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "essi/functions.hpp"
+#include "essi/geom.hpp"
+#include "essi/interp.hpp"
+#include "essi/read.hpp"
+#include "essi/report.hpp"
+
+namespace essi {
+namespace {
+
+// Prints -0.000 as 0.000.
+double tidy(double v) { return std::abs(v) < 5e-4 ? 0.0 : v; }
+
+void append(std::string& s, const char* fmt, double a, double b) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, fmt, tidy(a), tidy(b));
+    s += buf;
+}
+
+void append(std::string& s, const char* fmt, double a) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, fmt, tidy(a));
+    s += buf;
+}
+
+const char* kerf_text(KerfSide k) {
+    switch (k) {
+        case KerfSide::Off: return "off";
+        case KerfSide::Left: return "left";
+        case KerfSide::Right: return "right";
+    }
+    return "?";
+}
+
+class TraceSink : public MotionSink {
+public:
+    explicit TraceSink(std::string& out) : out_(out) {}
+    void on_motion(const MotionRecord& m) override {
+        out_ += trace_line(m);
+        out_ += '\n';
+    }
+    void on_event(const MachineEvent& e) override {
+        out_ += trace_line(e);
+        out_ += '\n';
+    }
+private:
+    std::string& out_;
+};
+
+}  // namespace
+
+std::string trace_line(const MotionRecord& m) {
+    std::string s = std::to_string(m.line);
+    s += ' ';
+    s += motion_kind_name(m.kind);
+    s += ' ';
+    s += curve_kind_name(m.curve);
+    if (m.head != 1) s += " head=" + std::to_string(m.head);
+    append(s, " (%.3f,%.3f)", m.start.x, m.start.y);
+    append(s, "->(%.3f,%.3f)", m.end.x, m.end.y);
+    if (m.curve == CurveKind::Arc) {
+        append(s, " c=(%.3f,%.3f)", m.centre.x, m.centre.y);
+        append(s, " r=%.3f", m.radius);
+        s += m.ccw ? " ccw" : " cw";
+        append(s, " sweep=%.3f", m.sweep * 180.0 / kPi);
+    } else if (m.curve == CurveKind::Parabola) {
+        append(s, " v=(%.3f,%.3f)", m.parabola.vertex.x, m.parabola.vertex.y);
+        append(s, " axis=(%.0f,%.0f)", m.parabola.n.x, m.parabola.n.y);
+        append(s, " p=%.3f", m.parabola.p);
+        s += m.ccw ? " ccw" : " cw";
+    }
+    append(s, " len=%.3f", m.length_mm);
+    s += " tools=" + tools_text(m.tools);
+    append(s, " feed=%.0f", m.feed_mm_min);
+    if (m.kerf != KerfSide::Off) {
+        s += " kerf=";
+        s += kerf_text(m.kerf);
+        append(s, ":%.3f", m.kerf_mm);
+    }
+    return s;
+}
+
+std::string trace_line(const MachineEvent& e) {
+    std::string s = std::to_string(e.line);
+    char buf[96];
+    switch (e.kind) {
+        case EventKind::Function: s += " fn " + std::to_string(e.code); break;
+        case EventKind::Dwell:
+            std::snprintf(buf, sizeof buf, " dwell %.3f s", e.value);
+            s += buf;
+            break;
+        case EventKind::Stop: s += " stop " + std::to_string(e.code); break;
+        case EventKind::End: s += e.code ? " end " + std::to_string(e.code) : std::string(" end"); break;
+        case EventKind::ZeroOffset:
+            std::snprintf(buf, sizeof buf, " origin (%.3f,%.3f)", tidy(e.x), tidy(e.y));
+            s += buf;
+            break;
+    }
+    if (e.kind == EventKind::Function && e.has_value) {
+        std::snprintf(buf, sizeof buf, " value=%g", e.value);
+        s += buf;
+    }
+    s += " tools=" + tools_text(e.tools_after);
+    return s;
+}
+
+std::string trace_tape(std::string_view bytes, const Profile& profile) {
+    std::string out;
+    const Tape tape = read_tape(bytes, profile);
+    std::vector<Diagnostic> diagnostics = tape.diagnostics();
+    TraceSink sink(out);
+    interpret(tape, bytes, profile, sink, diagnostics);
+    sort_diagnostics(diagnostics);
+    for (const auto& d : diagnostics) {
+        out += "# " + code_name(d.code) + " line " + std::to_string(d.line) + " col " + std::to_string(d.column) +
+               ": " + d.message + '\n';
+    }
+    return out;
+}
+
+}  // namespace essi
