@@ -176,7 +176,7 @@ std::string describe_function(int code, bool has_value, long value, const Profil
         std::snprintf(buf, sizeof buf, ", %.3g mm (profile kerf)", profile.kerf_units * profile.unit_mm);
         s += buf;
     }
-    s += " — ";
+    s += ": ";
     s += info->explanation;
     return s;
 }

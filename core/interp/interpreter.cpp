@@ -181,7 +181,7 @@ void Interpreter::function(const Block& b, std::size_t index, bool has_value, lo
     if (info->manufacturer) {
         warn(DiagCode::W208_ManufacturerFunction, b,
              "machine function " + std::to_string(code) +
-                 " is specified by the machine manufacturer (ISO 6582 55-62); it is ignored — choose the profile of "
+                 " is specified by the machine manufacturer (ISO 6582 55-62); it is ignored; choose the profile of "
                  "your controller (e.g. woyda) to interpret it");
         return;
     }

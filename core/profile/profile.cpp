@@ -169,7 +169,7 @@ ProfileResult parse_profile(std::string_view json_text) {
     ProfileResult result;
     auto bad = [&](std::string message) {
         result.diagnostics.push_back(
-            {Severity::Error, DiagCode::E402_BadProfile, 0, 0, "profile: " + std::move(message)});
+            {Severity::Error, DiagCode::E402_BadProfile, 0, 0, std::move(message)});
     };
     const json j = json::parse(json_text.begin(), json_text.end(), nullptr, /*allow_exceptions=*/false);
     if (j.is_discarded()) {

@@ -153,14 +153,23 @@ void Reader::run() {
     const char* data = src_.data();
     const auto size = static_cast<std::uint32_t>(src_.size());
     std::uint32_t pos = 0;
+    std::uint32_t skip = 0;  // a UTF-8 byte order mark: reported, then the line is read without it
+    if (src_.substr(0, 3) == "\xEF\xBB\xBF") {
+        report(Severity::Error, DiagCode::E102_NonAsciiByte, 0,
+               "the tape starts with a UTF-8 byte order mark (EF BB BF); ESSI tapes are plain ASCII: save the file "
+               "without a BOM");
+        skip = 3;
+    }
     while (pos < size && !stopped_ && !after_end_seen_) {
         // Find the end of this line.
         std::uint32_t end = pos;
         while (end < size && data[end] != '\n' && data[end] != '\r') ++end;
         line_begin_ = pos;
-        if (ended_) after_end_line(pos, end);
-        else if (in_ignore_) read_ignored_line(pos, end);
-        else read_line(pos, end);
+        const std::uint32_t from = pos + skip;
+        skip = 0;
+        if (ended_) after_end_line(from, end);
+        else if (in_ignore_) read_ignored_line(from, end);
+        else read_line(from, end);
         if (end >= size) break;
         // One line end: CR, LF, CR LF or LF CR.
         const char c = data[end];

@@ -38,19 +38,27 @@ const char* kerf_text(KerfSide k) {
     return "?";
 }
 
+// Buffers lines and hands them to the writer in chunks of about kTraceChunkBytes.
 class TraceSink : public MotionSink {
 public:
-    explicit TraceSink(std::string& out) : out_(out) {}
-    void on_motion(const MotionRecord& m) override {
-        out_ += trace_line(m);
-        out_ += '\n';
+    static constexpr std::size_t kTraceChunkBytes = 1 << 16;
+    TraceSink(const TraceWriter& write, Dialect dialect) : write_(write), dialect_(dialect) {}
+    ~TraceSink() override { flush(); }
+    void on_motion(const MotionRecord& m) override { add(trace_line(m)); }
+    void on_event(const MachineEvent& e) override { add(trace_line(e, dialect_)); }
+    void add(const std::string& line) {
+        buffer_ += line;
+        buffer_ += '\n';
+        if (buffer_.size() >= kTraceChunkBytes) flush();
     }
-    void on_event(const MachineEvent& e) override {
-        out_ += trace_line(e);
-        out_ += '\n';
+    void flush() {
+        if (!buffer_.empty()) write_(buffer_);
+        buffer_.clear();
     }
 private:
-    std::string& out_;
+    const TraceWriter& write_;
+    Dialect dialect_;
+    std::string buffer_;
 };
 
 }  // namespace
@@ -86,16 +94,24 @@ std::string trace_line(const MotionRecord& m) {
     return s;
 }
 
-std::string trace_line(const MachineEvent& e) {
+std::string trace_line(const MachineEvent& e, Dialect dialect) {
     std::string s = std::to_string(e.line);
     char buf[96];
     switch (e.kind) {
-        case EventKind::Function: s += " fn " + std::to_string(e.code); break;
+        case EventKind::Function: {
+            s += " fn " + std::to_string(e.code);
+            const auto info = function_info(e.code, dialect);
+            if (info) {
+                s += ' ';
+                s += info->name;
+            }
+            break;
+        }
         case EventKind::Dwell:
             std::snprintf(buf, sizeof buf, " dwell %.3f s", e.value);
             s += buf;
             break;
-        case EventKind::Stop: s += " stop " + std::to_string(e.code); break;
+        case EventKind::Stop: s += e.code == 0 ? " stop 0 programmed" : " stop 102 optional"; break;
         case EventKind::End: s += e.code ? " end " + std::to_string(e.code) : std::string(" end"); break;
         case EventKind::ZeroOffset:
             std::snprintf(buf, sizeof buf, " origin (%.3f,%.3f)", tidy(e.x), tidy(e.y));
@@ -110,17 +126,23 @@ std::string trace_line(const MachineEvent& e) {
     return s;
 }
 
-std::string trace_tape(std::string_view bytes, const Profile& profile) {
-    std::string out;
+std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profile, const TraceWriter& write) {
     const Tape tape = read_tape(bytes, profile);
     std::vector<Diagnostic> diagnostics = tape.diagnostics();
-    TraceSink sink(out);
+    TraceSink sink(write, profile.dialect);
     interpret(tape, bytes, profile, sink, diagnostics);
     sort_diagnostics(diagnostics);
     for (const auto& d : diagnostics) {
-        out += "# " + code_name(d.code) + " line " + std::to_string(d.line) + " col " + std::to_string(d.column) +
-               ": " + d.message + '\n';
+        sink.add("# " + code_name(d.code) + " line " + std::to_string(d.line) + " col " + std::to_string(d.column) +
+                 ": " + d.message);
     }
+    sink.flush();
+    return diagnostics;
+}
+
+std::string trace_tape(std::string_view bytes, const Profile& profile) {
+    std::string out;
+    (void)trace_tape(bytes, profile, [&](std::string_view piece) { out += piece; });
     return out;
 }
 

@@ -1,7 +1,11 @@
 // The trace: the motion stream as text, one record a line, for `essi trace`, golden tests and people.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <vector>
+
+#include "essi/diagnostics.hpp"
 #include <string_view>
 
 #include "essi/motion.hpp"
@@ -12,10 +16,17 @@ namespace essi {
 // One line (no newline) for a motion:
 //   "12 cut arc (10.000,0.000)->(0.000,10.000) c=(0.000,0.000) r=10.000 ccw sweep=90.000 len=15.708 tools=oxygen feed=1000"
 [[nodiscard]] std::string trace_line(const MotionRecord& m);
-// One line for an event: "3 fn 7 Oxygen ON tools=oxygen"
-[[nodiscard]] std::string trace_line(const MachineEvent& e);
+// One line for an event: "3 fn 7 Oxygen ON tools=oxygen" (function names in the profile's dialect)
+[[nodiscard]] std::string trace_line(const MachineEvent& e, Dialect dialect = Dialect::Iso6582);
 
-// The whole trace of a tape (events and motions, then the diagnostics as "# E301 line 7 col 1: ...").
+// Receives the trace a piece at a time (whole lines, each ending in '\n').
+using TraceWriter = std::function<void(std::string_view)>;
+
+// Streams the trace of a tape to `write`: events and motions in program order, then the diagnostics as
+// "# E301 line 7 col 1: ...". Returns the diagnostics (sorted), so a caller can tell whether it had errors.
+std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profile, const TraceWriter& write);
+
+// The whole trace as one string (small tapes, golden tests).
 [[nodiscard]] std::string trace_tape(std::string_view bytes, const Profile& profile);
 
 }  // namespace essi
