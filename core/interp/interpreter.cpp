@@ -239,8 +239,8 @@ void Interpreter::function(const Block& b, std::size_t index, bool has_value, lo
         case 21: case 22: case 23: case 24: case 25: case 26: case 27: case 28:
             mapping_ = axis_mapping(code);
             break;
-        case 29: kerf(KerfSide::Left); event_value = kerf_offset_mm_; break;
-        case 30: kerf(KerfSide::Right); event_value = kerf_offset_mm_; break;
+        case 29: kerf(KerfSide::Left); break;
+        case 30: kerf(KerfSide::Right); break;
         case 38: kerf(KerfSide::Off); break;
         case 39:
             if (has_value && value <= 0) {

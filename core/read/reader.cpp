@@ -213,7 +213,12 @@ void Reader::read_ignored_line(std::uint32_t begin, std::uint32_t end) {
 
 void Reader::after_end_line(std::uint32_t begin, std::uint32_t end) {
     const std::string_view t = trim(src_.substr(begin, end - begin));
-    if (t.empty() || t == "%") return;  // a rewind-stop mark after the program is accepted
+    if (t.empty()) return;
+    if (t == "%") {  // a rewind-stop mark after the program is accepted (kept, but not part of the program)
+        push_block(begin + static_cast<std::uint32_t>(src_.substr(begin, end - begin).find('%')), BlockKind::Percent,
+                   Block::kNoCode, 0);
+        return;
+    }
     std::uint32_t first = begin;
     while (src_[first] == ' ' || src_[first] == '\t') ++first;
     report(Severity::Warning, DiagCode::W110_ContentAfterEnd, first,

@@ -1,0 +1,105 @@
+#include "report_json.hpp"
+
+#include <cmath>
+
+namespace essi::native {
+
+namespace {
+
+constexpr double pow10(int n) {
+    double r = 1;
+    for (int i = 0; i < n; ++i) r *= 10;
+    return r;
+}
+constexpr double kJsonLengthScale = pow10(kJsonLengthDecimals);
+
+nlohmann::json point_to_json(Point p) {
+    return {{"x", round_for_json(p.x)}, {"y", round_for_json(p.y)}};
+}
+
+}  // namespace
+
+double round_for_json(double value) {
+    if (!std::isfinite(value)) return value;
+    const double r = std::round(value * kJsonLengthScale) / kJsonLengthScale;
+    return r == 0 ? 0.0 : r;  // no "-0.0" in reports
+}
+
+nlohmann::json diagnostic_to_json(const Diagnostic& d) {
+    nlohmann::json j = nlohmann::json::object();
+    j["severity"] = std::string(severity_name(d.severity));
+    j["code"] = code_name(d.code);
+    j["line"] = d.line;
+    j["column"] = d.column;
+    j["message"] = d.message;
+    return j;
+}
+
+nlohmann::json stats_to_json(const Stats& s) {
+    nlohmann::json j = nlohmann::json::object();
+    j["cut_length_mm"] = round_for_json(s.cut_length_mm);
+    j["mark_length_mm"] = round_for_json(s.mark_length_mm);
+    j["travel_length_mm"] = round_for_json(s.travel_length_mm);
+    j["rapid_length_mm"] = round_for_json(s.rapid_length_mm);
+    j["pierces"] = s.pierces;
+    j["blocks"] = s.blocks;
+    j["motions"] = s.motions;
+    j["estimated_time_s"] = round_for_json(s.estimated_time_s);
+    if (s.cut_bbox.empty) {
+        j["cut_bbox_mm"] = nullptr;
+    } else {
+        j["cut_bbox_mm"] = {
+            {"min_x", round_for_json(s.cut_bbox.min_x)},
+            {"min_y", round_for_json(s.cut_bbox.min_y)},
+            {"max_x", round_for_json(s.cut_bbox.max_x)},
+            {"max_y", round_for_json(s.cut_bbox.max_y)},
+        };
+    }
+    j["end_position_mm"] = point_to_json(s.end_position);
+    return j;
+}
+
+nlohmann::json file_report_to_json(const FileReport& file) {
+    nlohmann::json j = nlohmann::json::object();
+    j["path"] = file.path;
+    j["ok"] = file.result.ok();
+    nlohmann::json diags = nlohmann::json::array();
+    for (const Diagnostic& d : file.result.diagnostics) diags.push_back(diagnostic_to_json(d));
+    j["diagnostics"] = std::move(diags);
+    j["stats"] = stats_to_json(file.result.stats);
+    return j;
+}
+
+nlohmann::json report_to_json(std::span<const FileReport> files, std::string_view profile_name) {
+    nlohmann::json out = nlohmann::json::object();
+    nlohmann::json arr = nlohmann::json::array();
+    std::size_t files_ok = 0, errors = 0, warnings = 0;
+    for (const FileReport& f : files) {
+        arr.push_back(file_report_to_json(f));
+        if (f.result.ok()) ++files_ok;
+        errors += f.result.count(Severity::Error);
+        warnings += f.result.count(Severity::Warning);
+    }
+    out["files"] = std::move(arr);
+    out["summary"] = {
+        {"files", files.size()},
+        {"files_ok", files_ok},
+        {"errors", errors},
+        {"warnings", warnings},
+    };
+    out["profile"] = std::string(profile_name);
+    return out;
+}
+
+nlohmann::json stats_report_to_json(std::span<const FileReport> files, std::string_view profile_name) {
+    nlohmann::json out = nlohmann::json::object();
+    nlohmann::json arr = nlohmann::json::array();
+    for (const FileReport& f : files) {
+        arr.push_back({{"path", f.path}, {"stats", stats_to_json(f.result.stats)}});
+    }
+    out["files"] = std::move(arr);
+    out["profile"] = std::string(profile_name);
+    return out;
+}
+
+}  // namespace essi::native

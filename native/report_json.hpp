@@ -1,0 +1,46 @@
+// The JSON form of check results (the report contract documented in docs/report-schema.json).
+// Shared by the `essi` CLI and the server: no files, no I/O, only values in and a JSON value out.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "essi/diagnostics.hpp"
+#include "essi/report.hpp"
+
+namespace essi::native {
+
+// Lengths, coordinates and times are written as doubles rounded to this many decimals
+// (1e-6 mm is far below any machine resolution; it keeps reports stable across platforms).
+constexpr int kJsonLengthDecimals = 6;
+
+// Rounds `value` to kJsonLengthDecimals decimals; -0 becomes 0. Non-finite values are returned unchanged
+// (nlohmann::json writes them as null).
+[[nodiscard]] double round_for_json(double value);
+
+// One checked tape: the path as the user gave it and the pipeline's result.
+struct FileReport {
+    std::string path;
+    CheckResult result;
+};
+
+// {"severity","code","line","column","message"}
+[[nodiscard]] nlohmann::json diagnostic_to_json(const Diagnostic& d);
+
+// {"cut_length_mm", ..., "cut_bbox_mm": {...} or null, "end_position_mm": {"x","y"}}
+[[nodiscard]] nlohmann::json stats_to_json(const Stats& s);
+
+// {"path","ok","diagnostics":[...],"stats":{...}}
+[[nodiscard]] nlohmann::json file_report_to_json(const FileReport& file);
+
+// The whole report of `essi check --format json`:
+// {"files":[...],"summary":{"files","files_ok","errors","warnings"},"profile":"name"}
+[[nodiscard]] nlohmann::json report_to_json(std::span<const FileReport> files, std::string_view profile_name);
+
+// The report of `essi stats --format json`: {"files":[{"path","stats"}],"profile":"name"}
+[[nodiscard]] nlohmann::json stats_report_to_json(std::span<const FileReport> files, std::string_view profile_name);
+
+}  // namespace essi::native

@@ -1,0 +1,34 @@
+// The human-readable forms of check results: compiler-style diagnostics, a one-line stats summary per
+// file, the closing summary line, and the aligned `key: value` block of `essi stats`.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "essi/diagnostics.hpp"
+#include "essi/report.hpp"
+#include "report_json.hpp"
+
+namespace essi::native {
+
+// Lengths in text output: millimetres with this many decimals (1 micrometre).
+constexpr int kTextLengthDecimals = 3;
+
+// "path:12:5: error E301: message" (without position: "path: error E402: message"), no newline.
+[[nodiscard]] std::string diagnostic_line(std::string_view path, const Diagnostic& d);
+
+// "path: ok; cut 123.400 mm, mark 0.000 mm, travel 50.000 mm (rapid 20.000 mm), 2 pierces, 30 blocks,
+//  25 motions, time 0:01:05" (no newline)
+[[nodiscard]] std::string file_stats_line(const FileReport& file);
+
+// "2 files checked (profile iso6582): 1 ok, 1 with errors; 3 errors, 1 warning" (no newline)
+[[nodiscard]] std::string summary_line(std::span<const FileReport> files, std::string_view profile_name);
+
+// The aligned block of `essi stats` for one file, every line ending in a newline.
+[[nodiscard]] std::string stats_block(const FileReport& file);
+
+// Seconds as "h:mm:ss".
+[[nodiscard]] std::string format_duration(double seconds);
+
+}  // namespace essi::native

@@ -1,0 +1,187 @@
+// Profiles: the built-ins, partial JSON over a base, errors as E402 diagnostics, JSON round trip.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "essi/profile.hpp"
+#include "test_util.hpp"
+
+using namespace essi;
+using namespace essi_test;
+
+namespace {
+
+void expect_same(const Profile& a, const Profile& b) {
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.dialect, b.dialect);
+    EXPECT_DOUBLE_EQ(a.unit_mm, b.unit_mm);
+    EXPECT_EQ(a.whitespace, b.whitespace);
+    EXPECT_EQ(a.end_codes, b.end_codes);
+    EXPECT_DOUBLE_EQ(a.arc_tolerance_units, b.arc_tolerance_units);
+    EXPECT_DOUBLE_EQ(a.chord_tolerance_mm, b.chord_tolerance_mm);
+    EXPECT_EQ(a.optional_ignore, b.optional_ignore);
+    EXPECT_EQ(a.rapid_single_block, b.rapid_single_block);
+    EXPECT_EQ(a.kerf_value, b.kerf_value);
+    EXPECT_DOUBLE_EQ(a.kerf_units, b.kerf_units);
+    EXPECT_DOUBLE_EQ(a.default_dwell_s, b.default_dwell_s);
+    EXPECT_DOUBLE_EQ(a.feed_mm_min, b.feed_mm_min);
+    EXPECT_DOUBLE_EQ(a.rapid_mm_min, b.rapid_mm_min);
+    EXPECT_DOUBLE_EQ(a.pierce_time_s, b.pierce_time_s);
+    EXPECT_DOUBLE_EQ(a.setup_offset_x_mm, b.setup_offset_x_mm);
+    EXPECT_DOUBLE_EQ(a.setup_offset_y_mm, b.setup_offset_y_mm);
+    ASSERT_EQ(a.table.has_value(), b.table.has_value());
+    if (a.table) {
+        EXPECT_DOUBLE_EQ(a.table->min_x_mm, b.table->min_x_mm);
+        EXPECT_DOUBLE_EQ(a.table->min_y_mm, b.table->min_y_mm);
+        EXPECT_DOUBLE_EQ(a.table->max_x_mm, b.table->max_x_mm);
+        EXPECT_DOUBLE_EQ(a.table->max_y_mm, b.table->max_y_mm);
+    }
+}
+
+}  // namespace
+
+TEST(ProfileBuiltin, Iso6582Defaults) {
+    auto p = builtin_profile("iso6582");
+    ASSERT_TRUE(p.has_value());
+    EXPECT_EQ(p->name, "iso6582");
+    EXPECT_EQ(p->dialect, Dialect::Iso6582);
+    // the defaults of ESSI-SEMANTICS
+    EXPECT_DOUBLE_EQ(p->unit_mm, 0.1);
+    EXPECT_EQ(p->whitespace, WhitespacePolicy::Skip);
+    EXPECT_DOUBLE_EQ(p->arc_tolerance_units, 2.0);
+    EXPECT_FALSE(p->optional_ignore);
+    EXPECT_EQ(p->kerf_value, KerfValueMeaning::Width);
+    EXPECT_DOUBLE_EQ(p->feed_mm_min, 1000.0);
+    EXPECT_DOUBLE_EQ(p->rapid_mm_min, 10000.0);
+    EXPECT_DOUBLE_EQ(p->pierce_time_s, 2.0);
+    EXPECT_DOUBLE_EQ(p->default_dwell_s, 1.0);
+    EXPECT_FALSE(p->table.has_value());
+    const auto has_end = [&](EndCode e) {
+        return std::find(p->end_codes.begin(), p->end_codes.end(), e) != p->end_codes.end();
+    };
+    EXPECT_TRUE(has_end({63, 0}));
+    EXPECT_TRUE(has_end({64, 0}));
+    EXPECT_TRUE(has_end({-1, '/'}));
+    expect_same(*p, Profile{});
+}
+
+TEST(ProfileBuiltin, Woyda) {
+    auto p = builtin_profile("woyda");
+    ASSERT_TRUE(p.has_value());
+    EXPECT_EQ(p->name, "woyda");
+    EXPECT_EQ(p->dialect, Dialect::Woyda);
+    EXPECT_DOUBLE_EQ(p->unit_mm, 0.1);  // Woyda: 1/10 mm
+    EXPECT_NE(std::find(p->end_codes.begin(), p->end_codes.end(), EndCode{-1, '/'}), p->end_codes.end());
+}
+
+TEST(ProfileBuiltin, NamesAndUnknown) {
+    auto names = builtin_profile_names();
+    EXPECT_NE(std::find(names.begin(), names.end(), "iso6582"), names.end());
+    EXPECT_NE(std::find(names.begin(), names.end(), "woyda"), names.end());
+    for (const auto& n : names) EXPECT_TRUE(builtin_profile(n).has_value()) << n;
+    EXPECT_FALSE(builtin_profile("hypertherm-xyz").has_value());
+    EXPECT_FALSE(builtin_profile("").has_value());
+}
+
+TEST(ProfileParse, PartialKeepsBaseValues) {
+    ProfileResult r = parse_profile(R"({"name": "shop1", "feed_mm_min": 1500, "optional_ignore": true})");
+    ASSERT_TRUE(r.profile.has_value()) << dump(r.diagnostics);
+    EXPECT_TRUE(r.diagnostics.empty()) << dump(r.diagnostics);
+    const Profile& p = *r.profile;
+    EXPECT_EQ(p.name, "shop1");
+    EXPECT_DOUBLE_EQ(p.feed_mm_min, 1500.0);
+    EXPECT_TRUE(p.optional_ignore);
+    // untouched: iso6582 values
+    EXPECT_EQ(p.dialect, Dialect::Iso6582);
+    EXPECT_DOUBLE_EQ(p.rapid_mm_min, 10000.0);
+    EXPECT_DOUBLE_EQ(p.pierce_time_s, 2.0);
+    EXPECT_DOUBLE_EQ(p.unit_mm, 0.1);
+    EXPECT_DOUBLE_EQ(p.arc_tolerance_units, 2.0);
+    EXPECT_EQ(p.whitespace, WhitespacePolicy::Skip);
+}
+
+TEST(ProfileParse, WoydaBase) {
+    ProfileResult r = parse_profile(R"({"base": "woyda", "pierce_time_s": 3.5, "whitespace": "strict"})");
+    ASSERT_TRUE(r.profile.has_value()) << dump(r.diagnostics);
+    EXPECT_EQ(r.profile->dialect, Dialect::Woyda);
+    EXPECT_DOUBLE_EQ(r.profile->pierce_time_s, 3.5);
+    EXPECT_EQ(r.profile->whitespace, WhitespacePolicy::Strict);
+    EXPECT_DOUBLE_EQ(r.profile->feed_mm_min, 1000.0);
+}
+
+TEST(ProfileParse, EmptyObjectIsTheBase) {
+    ProfileResult r = parse_profile("{}");
+    ASSERT_TRUE(r.profile.has_value()) << dump(r.diagnostics);
+    Profile expected;
+    expected.name = r.profile->name;  // a derived name is allowed
+    expect_same(*r.profile, expected);
+}
+
+TEST(ProfileParse, MalformedJsonE402NeverThrows) {
+    for (const char* text : {"{ \"feed_mm_min\": ", "not json", "", "[1, 2]", "{\"feed_mm_min\": \"fast\"}",
+                             "{\"base\": \"nosuch\"}", "{\"whitespace\": \"sometimes\"}"}) {
+        ProfileResult r;
+        EXPECT_NO_THROW(r = parse_profile(text)) << text;
+        EXPECT_FALSE(r.profile.has_value()) << text;
+        ASSERT_FALSE(r.diagnostics.empty()) << text;
+        for (const auto& d : r.diagnostics) {
+            EXPECT_EQ(d.code, DiagCode::E402_BadProfile) << text;
+            EXPECT_EQ(d.severity, Severity::Error) << text;
+            EXPECT_EQ(d.line, 0u) << text;
+            EXPECT_FALSE(d.message.empty()) << text;
+        }
+    }
+}
+
+TEST(ProfileParse, SettingsTakeEffect) {
+    ProfileResult r = parse_profile(R"({"feed_mm_min": 600, "pierce_time_s": 0, "rapid_mm_min": 6000})");
+    ASSERT_TRUE(r.profile.has_value()) << dump(r.diagnostics);
+    // 100 mm cut at 600 mm/min = 10 s; no pierce time
+    auto run_result = run("7\n+1000+0\n8\n64\n", *r.profile);
+    ASSERT_EQ(run_result.motions().size(), 1u);
+    EXPECT_NEAR(run_result.motions()[0].feed_mm_min, 600.0, kTimeTol);
+}
+
+TEST(ProfileJson, RoundTripDefaults) {
+    for (const auto& name : builtin_profile_names()) {
+        Profile p = *builtin_profile(name);
+        ProfileResult r = parse_profile(profile_to_json(p));
+        ASSERT_TRUE(r.profile.has_value()) << name << dump(r.diagnostics);
+        EXPECT_TRUE(r.diagnostics.empty()) << dump(r.diagnostics);
+        expect_same(*r.profile, p);
+    }
+}
+
+TEST(ProfileJson, RoundTripEverySetting) {
+    Profile p;
+    p.name = "custom";
+    p.unit_mm = 0.05;
+    p.whitespace = WhitespacePolicy::Strict;
+    p.end_codes = {{0, 0}, {99, 0}, {-1, '='}};
+    p.arc_tolerance_units = 3.5;
+    p.chord_tolerance_mm = 0.002;
+    p.optional_ignore = true;
+    p.rapid_single_block = true;
+    p.kerf_value = KerfValueMeaning::Offset;
+    p.kerf_units = 17;
+    p.default_dwell_s = 0.25;
+    p.feed_mm_min = 1234.5;
+    p.rapid_mm_min = 15000;
+    p.pierce_time_s = 1.75;
+    p.setup_offset_x_mm = -12.5;
+    p.setup_offset_y_mm = 40;
+    p.table = TableLimits{-10, -20, 3000, 12000};
+    const std::string json = profile_to_json(p);
+    ProfileResult r = parse_profile(json);
+    ASSERT_TRUE(r.profile.has_value()) << json << dump(r.diagnostics);
+    expect_same(*r.profile, p);
+    // and once more: the JSON is stable
+    EXPECT_EQ(profile_to_json(*r.profile), json);
+
+    Profile w = *builtin_profile("woyda");
+    w.feed_mm_min = 777;
+    ProfileResult rw = parse_profile(profile_to_json(w));
+    ASSERT_TRUE(rw.profile.has_value()) << dump(rw.diagnostics);
+    expect_same(*rw.profile, w);
+}

@@ -1,0 +1,237 @@
+// Phase 5 (report): statistics and check results of small tapes (ESSI-SEMANTICS §9). Lengths, times and
+// boxes are worked out by hand. Default profile: feed 1000 mm/min, rapid 10000 mm/min, pierce 2 s, dwell 1 s.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "essi/report.hpp"
+#include "test_util.hpp"
+
+using namespace essi;
+using namespace essi_test;
+
+namespace {
+
+constexpr double kBoxTol = 1e-9;
+
+void expect_box(const Box& b, double x0, double y0, double x1, double y1, const char* what) {
+    EXPECT_FALSE(b.empty) << what;
+    EXPECT_NEAR(b.min_x, x0, kBoxTol) << what << " min_x";
+    EXPECT_NEAR(b.min_y, y0, kBoxTol) << what << " min_y";
+    EXPECT_NEAR(b.max_x, x1, kBoxTol) << what << " max_x";
+    EXPECT_NEAR(b.max_y, y1, kBoxTol) << what << " max_y";
+}
+
+// rapid 100 mm, cut 50 mm + semicircle r=10 (bulging to x=110), mark 30 mm, travel 70 mm
+const char* const kTapeA =
+    "5\n"
+    "+1000+0\n"        // rapid (0,0) -> (100,0)
+    "6\n"
+    "7\n"
+    "+0+500\n"         // cut (100,0) -> (100,50)
+    "+0+200+0+100+\n"  // cut arc (100,50) -> (100,70) around (100,60), ccw: through (110,60)
+    "8\n"
+    "9\n"
+    "+300+0\n"         // mark (100,70) -> (130,70)
+    "10\n"
+    "+0-700\n"         // travel (130,70) -> (130,0)
+    "64\n";
+
+}  // namespace
+
+TEST(ReportStats, MixedTape) {
+    CheckResult r = check_tape(kTapeA, Profile{});
+    EXPECT_TRUE(r.ok());
+    EXPECT_TRUE(r.diagnostics.empty()) << dump(r.diagnostics);
+    const Stats& s = r.stats;
+    EXPECT_NEAR(s.cut_length_mm, 50.0 + 10.0 * kPi, kLenTol);
+    EXPECT_NEAR(s.mark_length_mm, 30.0, kLenTol);
+    EXPECT_NEAR(s.travel_length_mm, 170.0, kLenTol);
+    EXPECT_NEAR(s.rapid_length_mm, 100.0, kLenTol);
+    EXPECT_EQ(s.pierces, 1u);
+    EXPECT_EQ(s.blocks, 12u);
+    EXPECT_EQ(s.motions, 5u);
+    // rapid 100/10000 min = 0.6 s; cut (50+10pi)/1000 min; mark 30/1000 min = 1.8 s; travel 70/1000 min = 4.2 s;
+    // one pierce 2 s
+    const double expected_time = 0.6 + (50.0 + 10.0 * kPi) * 60.0 / 1000.0 + 1.8 + 4.2 + 2.0;
+    EXPECT_NEAR(expected_time, 13.484955592153876, 1e-9);
+    EXPECT_NEAR(s.estimated_time_s, expected_time, kTimeTol);
+    expect_box(s.cut_bbox, 100, 0, 110, 70, "cut_bbox");
+    expect_box(s.motion_bbox, 0, 0, 130, 70, "motion_bbox");
+    EXPECT_POINT_NEAR(s.end_position, 130.0, 0.0, kPosTol);
+}
+
+TEST(ReportStats, FeedAndDwellInTime) {
+    // cut 100 mm at 500 mm/min = 12 s, dwell 3 s + default 1 s, pierce 2 s
+    CheckResult r = check_tape("39+500\n7\n+1000+0\n41+3\n41\n8\n64\n", Profile{});
+    EXPECT_TRUE(r.ok()) << dump(r.diagnostics);
+    EXPECT_NEAR(r.stats.cut_length_mm, 100.0, kLenTol);
+    EXPECT_NEAR(r.stats.estimated_time_s, 18.0, kTimeTol);
+}
+
+TEST(ReportStats, FeedChangesMidway) {
+    // 100 mm at 1000 (6 s), then 39+2000: 100 mm at 2000 (3 s), pierce 2 s
+    CheckResult r = check_tape("7\n+1000+0\n39+2000\n+1000+0\n8\n64\n", Profile{});
+    EXPECT_NEAR(r.stats.estimated_time_s, 11.0, kTimeTol);
+}
+
+TEST(ReportStats, ProfileSpeeds) {
+    Profile p;
+    p.feed_mm_min = 2000;
+    p.rapid_mm_min = 5000;
+    p.pierce_time_s = 0.5;
+    p.default_dwell_s = 4;
+    // rapid 100 mm / 5000 = 1.2 s; cut 100 mm / 2000 = 3 s; pierce 0.5 s; dwell 4 s
+    CheckResult r = check_tape("5\n+1000+0\n6\n7\n41\n+1000+0\n8\n64\n", p);
+    EXPECT_NEAR(r.stats.rapid_length_mm, 100.0, kLenTol);
+    EXPECT_NEAR(r.stats.estimated_time_s, 1.2 + 3.0 + 0.5 + 4.0, kTimeTol);
+}
+
+TEST(ReportStats, WoydaFeedDwell) {
+    // 39+1400: 140 mm cut at 1400 mm/min = 6 s; 41+5 = 5 s; pierce 2 s
+    CheckResult r = check_tape("39+1400\n7\n41+5\n+1400+0\n8\n/\n", woyda_profile());
+    EXPECT_TRUE(r.ok()) << dump(r.diagnostics);
+    EXPECT_NEAR(r.stats.cut_length_mm, 140.0, kLenTol);
+    EXPECT_NEAR(r.stats.estimated_time_s, 13.0, kTimeTol);
+}
+
+TEST(ReportStats, Pierces) {
+    // 7 on: pierce; 13 while 7 on: none; 8 with 13 still on: still cutting; 14: off; 7: pierce; 53: pierce
+    const char* tape =
+        "7\n+100+0\n13\n+100+0\n8\n+100+0\n14\n7\n+100+0\n8\n53\n+100+0\n54\n+100+0\n64\n";
+    CheckResult r = check_tape(tape, Profile{});
+    EXPECT_EQ(r.stats.pierces, 3u);
+    EXPECT_NEAR(r.stats.cut_length_mm, 50.0, kLenTol);
+    EXPECT_NEAR(r.stats.travel_length_mm, 10.0, kLenTol);
+    // 60 mm at 1000 mm/min = 3.6 s, 3 pierces = 6 s
+    EXPECT_NEAR(r.stats.estimated_time_s, 9.6, kTimeTol);
+    CheckResult m = check_tape("9\n+100+0\n10\n110\n+100+0\n111\n64\n", Profile{});
+    EXPECT_EQ(m.stats.pierces, 0u);  // marking is not a pierce
+    EXPECT_NEAR(m.stats.mark_length_mm, 20.0, kLenTol);
+    EXPECT_TRUE(m.stats.cut_bbox.empty);
+}
+
+TEST(ReportStats, FullCircleAndParabolaCut) {
+    CheckResult c = check_tape("7\n+0+0+100+0+\n8\n64\n", Profile{});
+    EXPECT_NEAR(c.stats.cut_length_mm, 20.0 * kPi, kLenTol);
+    expect_box(c.stats.cut_bbox, 0, -10, 20, 10, "circle");
+    EXPECT_POINT_NEAR(c.stats.end_position, 0.0, 0.0, kPosTol);
+    const double F10 = 10.0 / 2 * std::sqrt(1 + 4.0) + 5.0 / 2 * std::asinh(2.0);  // see geom_test
+    CheckResult p = check_tape("7\n+200+0+100+50++\n8\n64\n", Profile{});
+    EXPECT_TRUE(p.ok()) << dump(p.diagnostics);
+    EXPECT_NEAR(p.stats.cut_length_mm, 2 * F10, kLenTol);
+    expect_box(p.stats.cut_bbox, 0, -10, 20, 0, "parabola");
+}
+
+TEST(ReportStats, KerfDoesNotChangeCutLength) {
+    CheckResult r = check_tape("29+20\n7\n+1000+0\n+0+500\n8\n38\n64\n", Profile{});
+    EXPECT_NEAR(r.stats.cut_length_mm, 150.0, kLenTol);
+    expect_box(r.stats.cut_bbox, 0, 0, 100, 50, "kerf");
+}
+
+TEST(ReportStats, BlocksExcludeEmptyLinesAndComments) {
+    CheckResult r = check_tape("7\n\n+100+0\n\r\n8\n64\n", Profile{});
+    EXPECT_EQ(r.stats.blocks, 4u);
+    EXPECT_EQ(r.stats.motions, 1u);
+}
+
+TEST(ReportStats, NothingCut) {
+    CheckResult r = check_tape("+100+0\n+0+100\n64\n", Profile{});
+    EXPECT_TRUE(r.stats.cut_bbox.empty);
+    EXPECT_EQ(r.stats.pierces, 0u);
+    EXPECT_NEAR(r.stats.travel_length_mm, 20.0, kLenTol);
+    EXPECT_NEAR(r.stats.rapid_length_mm, 0.0, kLenTol);
+    EXPECT_NEAR(r.stats.estimated_time_s, 1.2, kTimeTol);
+    expect_box(r.stats.motion_bbox, 0, 0, 10, 10, "motion");
+    EXPECT_POINT_NEAR(r.stats.end_position, 10.0, 10.0, kPosTol);
+}
+
+TEST(ReportStats, WoydaReturnToZero) {
+    CheckResult r = check_tape("+100+50\n7\n+100+0\n8\n62\n/\n", woyda_profile());
+    EXPECT_POINT_NEAR(r.stats.end_position, 0.0, 0.0, kPosTol);
+    // travel sqrt(10^2+5^2) + sqrt(20^2+5^2), cut 10
+    EXPECT_NEAR(r.stats.travel_length_mm, std::sqrt(125.0) + std::sqrt(425.0), kLenTol);
+    EXPECT_NEAR(r.stats.cut_length_mm, 10.0, kLenTol);
+}
+
+// ---------------------------------------------------------------- the check result
+
+TEST(ReportCheck, DiagnosticsSortedByLine) {
+    // W201 on line 1 (interp), E101 on line 3 (read): sorted by line, the warning comes first
+    CheckResult r = check_tape("37\n7\n+1X+0\n8\n64\n", Profile{});
+    ASSERT_GE(r.diagnostics.size(), 2u) << dump(r.diagnostics);
+    EXPECT_EQ(r.diagnostics[0].code, DiagCode::W201_UnknownFunction) << dump(r.diagnostics);
+    EXPECT_EQ(r.diagnostics[0].line, 1u);
+    EXPECT_TRUE(has_code_at(r.diagnostics, DiagCode::E101_InvalidCharacter, 3, 3)) << dump(r.diagnostics);
+    for (std::size_t i = 1; i < r.diagnostics.size(); ++i) {
+        const auto& a = r.diagnostics[i - 1];
+        const auto& b = r.diagnostics[i];
+        EXPECT_TRUE(a.line < b.line || (a.line == b.line && a.column <= b.column)) << dump(r.diagnostics);
+    }
+    EXPECT_FALSE(r.ok());
+    EXPECT_EQ(r.count(Severity::Error), 1u) << dump(r.diagnostics);
+    EXPECT_EQ(r.count(Severity::Warning), 1u) << dump(r.diagnostics);
+}
+
+TEST(ReportCheck, WarningsOnlyIsOk) {
+    CheckResult r = check_tape("37\n+100+0\n64\n", Profile{});
+    EXPECT_TRUE(r.ok());
+    EXPECT_EQ(r.count(Severity::Warning), 1u) << dump(r.diagnostics);
+    EXPECT_EQ(r.count(Severity::Error), 0u);
+}
+
+TEST(ReportCheck, ArcErrorFromGeometry) {
+    CheckResult r = check_tape("7\n+253+0+125+0+\n8\n64\n", Profile{});
+    EXPECT_FALSE(r.ok());
+    EXPECT_TRUE(has_code(r.diagnostics, DiagCode::E301_ArcEndNotOnCircle)) << dump(r.diagnostics);
+}
+
+TEST(ReportCheck, TableLimitsE401) {
+    Profile p;
+    p.table = TableLimits{0, 0, 100, 100};
+    CheckResult r = check_tape("+500+0\n+2000+0\n64\n", p);  // (50,0) inside, (250,0) beyond max_x 100
+    const Diagnostic* d = find_code(r.diagnostics, DiagCode::E401_LeavesTable);
+    ASSERT_NE(d, nullptr) << dump(r.diagnostics);
+    EXPECT_EQ(d->line, 2u);
+    EXPECT_FALSE(r.ok());
+    CheckResult inside = check_tape("+500+0\n+0+900\n64\n", p);
+    EXPECT_FALSE(has_code(inside.diagnostics, DiagCode::E401_LeavesTable)) << dump(inside.diagnostics);
+    // an arc whose end points are inside but whose bulge leaves the table: (50,0) -> (70,0) around (60,0),
+    // ccw goes down to y = -10
+    CheckResult bulge = check_tape("+500+0\n+200+0+100+0+\n64\n", p);
+    EXPECT_TRUE(has_code(bulge.diagnostics, DiagCode::E401_LeavesTable)) << dump(bulge.diagnostics);
+}
+
+TEST(ReportCheck, EmptyAndGarbageNeverThrow) {
+    CheckResult e = check_tape("", Profile{});
+    EXPECT_FALSE(e.ok());
+    EXPECT_TRUE(has_code(e.diagnostics, DiagCode::E113_EmptyTape));
+    std::string bin;
+    for (int i = 0; i < 5000; ++i) bin.push_back(static_cast<char>((i * 37 + 11) & 0xFF));
+    EXPECT_NO_THROW({
+        CheckResult g = check_tape(bin, Profile{});
+        EXPECT_FALSE(g.ok());
+    });
+}
+
+TEST(ReportSink, StatsSinkFromInterpreter) {
+    const std::string src = kTapeA;
+    Profile p;
+    Tape t = read_tape(src, p);
+    std::vector<Diagnostic> diags;
+    StatsSink sink(p);
+    interpret(t, src, p, sink, diags);
+    EXPECT_NEAR(sink.stats().cut_length_mm, 50.0 + 10.0 * kPi, kLenTol);
+    EXPECT_NEAR(sink.stats().mark_length_mm, 30.0, kLenTol);
+    EXPECT_EQ(sink.stats().pierces, 1u);
+}
+
+TEST(ReportStats, RapidWithCuttingToolCountsAsCut) {
+    // §9: cut length is motion while any cutting tool is on, whatever the speed
+    CheckResult r = check_tape("7\n5\n+1000+0\n6\n8\n64\n", Profile{});
+    EXPECT_TRUE(has_code(r.diagnostics, DiagCode::W210_RapidWhileCutting)) << dump(r.diagnostics);
+    EXPECT_NEAR(r.stats.cut_length_mm, 100.0, kLenTol);
+    EXPECT_NEAR(r.stats.travel_length_mm, 0.0, kLenTol);
+    EXPECT_EQ(r.stats.pierces, 1u);
+}

@@ -1,0 +1,128 @@
+// Shared helpers for the core unit tests: a sink that records the motion stream, a one-call
+// read + interpret runner, diagnostic look-ups and the named tolerances every test uses.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "essi/diagnostics.hpp"
+#include "essi/geom.hpp"  // essi::kPi
+#include "essi/interp.hpp"
+#include "essi/motion.hpp"
+#include "essi/profile.hpp"
+#include "essi/read.hpp"
+
+namespace essi_test {
+
+// Named tolerances (mm, rad, s). Positions are unit increments times 0.1 mm: exact to rounding.
+constexpr double kPosTol = 1e-9;     // mm, positions that are integer units * unit_mm
+constexpr double kLenTol = 1e-6;     // mm, closed-form lengths
+constexpr double kAngTol = 1e-9;     // rad, sweeps
+constexpr double kTimeTol = 1e-6;    // s, time estimates
+
+// Records every motion and event in program order.
+class RecordingSink : public essi::MotionSink {
+public:
+    std::vector<essi::MotionRecord> motions;
+    std::vector<essi::MachineEvent> events;
+    std::string order;  // 'm' for a motion, 'e' for an event, in arrival order
+
+    void on_motion(const essi::MotionRecord& m) override {
+        motions.push_back(m);
+        order.push_back('m');
+    }
+    void on_event(const essi::MachineEvent& e) override {
+        events.push_back(e);
+        order.push_back('e');
+    }
+    [[nodiscard]] std::vector<essi::MachineEvent> events_of(essi::EventKind k) const {
+        std::vector<essi::MachineEvent> out;
+        for (const auto& e : events)
+            if (e.kind == k) out.push_back(e);
+        return out;
+    }
+    [[nodiscard]] const essi::MachineEvent* event_with_code(essi::EventKind k, int code) const {
+        for (const auto& e : events)
+            if (e.kind == k && e.code == code) return &e;
+        return nullptr;
+    }
+};
+
+inline std::string dump(const std::vector<essi::Diagnostic>& diags) {
+    std::ostringstream os;
+    for (const auto& d : diags)
+        os << essi::code_name(d.code) << " line " << d.line << " col " << d.column << ": " << d.message << "\n";
+    return os.str();
+}
+
+inline std::size_t count_code(const std::vector<essi::Diagnostic>& diags, essi::DiagCode code) {
+    std::size_t n = 0;
+    for (const auto& d : diags)
+        if (d.code == code) ++n;
+    return n;
+}
+inline bool has_code(const std::vector<essi::Diagnostic>& diags, essi::DiagCode code) {
+    return count_code(diags, code) > 0;
+}
+inline const essi::Diagnostic* find_code(const std::vector<essi::Diagnostic>& diags, essi::DiagCode code) {
+    for (const auto& d : diags)
+        if (d.code == code) return &d;
+    return nullptr;
+}
+inline bool has_code_at(const std::vector<essi::Diagnostic>& diags, essi::DiagCode code, std::uint32_t line,
+                        std::uint32_t column) {
+    for (const auto& d : diags)
+        if (d.code == code && d.line == line && d.column == column) return true;
+    return false;
+}
+inline bool has_severity(const std::vector<essi::Diagnostic>& diags, essi::Severity s) {
+    for (const auto& d : diags)
+        if (d.severity == s) return true;
+    return false;
+}
+
+// read + interpret; `diags` holds the read diagnostics followed by those of interpretation.
+struct RunResult {
+    std::string source;
+    essi::Tape tape;
+    std::vector<essi::Diagnostic> diags;
+    RecordingSink sink;
+
+    [[nodiscard]] const std::vector<essi::MotionRecord>& motions() const { return sink.motions; }
+    [[nodiscard]] const std::vector<essi::MachineEvent>& events() const { return sink.events; }
+    [[nodiscard]] bool has(essi::DiagCode c) const { return has_code(diags, c); }
+    [[nodiscard]] std::string dump() const { return essi_test::dump(diags); }
+};
+
+inline RunResult run(std::string_view text, const essi::Profile& profile = essi::Profile{}) {
+    RunResult r;
+    r.source.assign(text.data(), text.size());
+    r.tape = essi::read_tape(r.source, profile);
+    r.diags = r.tape.diagnostics();
+    essi::interpret(r.tape, r.source, profile, r.sink, r.diags);
+    return r;
+}
+
+inline essi::Profile iso_profile() {
+    auto p = essi::builtin_profile("iso6582");
+    return p ? *p : essi::Profile{};
+}
+inline essi::Profile woyda_profile() {
+    auto p = essi::builtin_profile("woyda");
+    EXPECT_TRUE(p.has_value()) << "built-in profile 'woyda' missing";
+    return p ? *p : essi::Profile{};
+}
+
+#define EXPECT_POINT_NEAR(p, ex, ey, tol)                 \
+    do {                                                  \
+        const essi::Point essi_pt_ = (p);                 \
+        EXPECT_NEAR(essi_pt_.x, (ex), (tol)) << "x of " #p; \
+        EXPECT_NEAR(essi_pt_.y, (ey), (tol)) << "y of " #p; \
+    } while (0)
+
+}  // namespace essi_test

@@ -1,0 +1,57 @@
+// The C functions behind window.essikit (index.html calls them with ccall/cwrap).
+#include <emscripten.h>
+
+#include <cstdint>
+#include <string>
+
+#include "app/App.hpp"
+
+using essi::viewer::App;
+
+extern "C" {
+
+// Loads `len` bytes as a tape called `name` (the page copies the file into the heap and frees it after).
+EMSCRIPTEN_KEEPALIVE void essi_load(const char* name, const std::uint8_t* data, int len) {
+    if (App* app = App::instance())
+        app->load(name, std::string(reinterpret_cast<const char*>(data), static_cast<std::size_t>(len > 0 ? len : 0)));
+}
+
+// The state as JSON; valid until the next call.
+EMSCRIPTEN_KEEPALIVE const char* essi_state() {
+    static std::string s;
+    App* app = App::instance();
+    s = app ? app->state_json() : "{\"status\":\"starting\"}";
+    return s.c_str();
+}
+
+EMSCRIPTEN_KEEPALIVE const char* essi_motion(int index) {
+    static std::string s;
+    App* app = App::instance();
+    s = app && index >= 0 ? app->motion_json(static_cast<std::size_t>(index)) : "null";
+    return s.c_str();
+}
+
+// View centre in machine mm and zoom in pixels per mm; applied after the load in progress, if any.
+EMSCRIPTEN_KEEPALIVE void essi_set_view(double x, double y, double zoom) {
+    if (App* app = App::instance()) app->set_view(x, y, zoom);
+}
+
+EMSCRIPTEN_KEEPALIVE void essi_select_line(int line) {
+    if (App* app = App::instance()) app->select_line(static_cast<std::uint32_t>(line > 0 ? line : 0));
+}
+
+// kind: 0 rapid, 1 travel, 2 cut, 3 mark, 4 pierces, 5 start
+EMSCRIPTEN_KEEPALIVE void essi_set_layer(int kind, int visible) {
+    if (App* app = App::instance()) app->set_layer(kind, visible != 0);
+}
+
+// Makes a share link as the Share button does; the page's essikitShare finishes it.
+EMSCRIPTEN_KEEPALIVE void essi_share() {
+    if (App* app = App::instance()) app->share();
+}
+
+EMSCRIPTEN_KEEPALIVE void essi_share_done(int ok, const char* text) {
+    if (App* app = App::instance()) app->share_done(ok != 0, text ? text : "");
+}
+
+}  // extern "C"

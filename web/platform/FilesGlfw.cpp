@@ -1,0 +1,53 @@
+// Desktop files: the Open button asks zenity (when installed) for a path; files dropped on the window load.
+#include <GLFW/glfw3.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "app/App.hpp"
+#include "platform/Platform.hpp"
+
+namespace essi::viewer::platform {
+
+bool read_file(const std::string& path, std::string& out) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return false;
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    out = std::move(ss).str();
+    return true;
+}
+
+void install_drop_handler(GLFWwindow* window) {
+    glfwSetDropCallback(window, [](GLFWwindow*, int count, const char** paths) {
+        App* app = App::instance();
+        if (app == nullptr || count < 1) return;
+        std::string bytes;
+        if (read_file(paths[0], bytes)) app->load(paths[0], std::move(bytes));
+        else app->notify(std::string("Cannot read ") + paths[0]);
+    });
+}
+
+bool has_file_dialog() { return true; }
+
+void open_file_dialog(App& app) {
+    FILE* p = popen("zenity --file-selection --title='Open an ESSI tape' 2>/dev/null", "r");
+    std::string path;
+    if (p != nullptr) {
+        char buf[4096];
+        while (fgets(buf, sizeof buf, p) != nullptr) path += buf;
+        pclose(p);
+    }
+    while (!path.empty() && (path.back() == '\n' || path.back() == '\r')) path.pop_back();
+    if (path.empty()) {
+        app.notify("No file chosen (drop a file on the window, or run: essi_viewer TAPE).");
+        return;
+    }
+    std::string bytes;
+    if (read_file(path, bytes)) app.load(path, std::move(bytes));
+    else app.notify("Cannot read " + path);
+}
+
+}  // namespace essi::viewer::platform

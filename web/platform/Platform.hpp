@@ -1,0 +1,32 @@
+// What the UI needs from the platform. One file per concern and platform, chosen by CMake:
+//   MainLoopEmscripten.cpp / MainLoopGlfw.cpp    main(), the window, the frame loop
+//   FilesEmscripten.cpp    / FilesGlfw.cpp       the Open button, dropped files
+//   ClipboardEmscripten.cpp / ClipboardGlfw.cpp  copy and paste
+//   ShareEmscripten.cpp    / ShareGlfw.cpp       share links (URL fragment)
+//   ApiEmscripten.cpp                            window.essikit (exported C functions)
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace essi::viewer {
+class App;
+}
+
+namespace essi::viewer::platform {
+
+// Opens the platform's file picker; the chosen file arrives through App::load.
+void open_file_dialog(App& app);
+[[nodiscard]] bool has_file_dialog();
+
+// Copies text to the clipboard.
+void copy_text(const std::string& text);
+// Ctrl+V on the canvas: natively loads the clipboard's text; in the browser the page's paste event does it.
+void paste(App& app);
+
+// Makes a share link for the tape and the view (`view_query`: "c=X,Y,ZOOM&l=LINE"); the result arrives
+// through App::share_done(ok, url_or_message).
+void share(App& app, const std::string& name, std::string_view bytes, const std::string& view_query);
+[[nodiscard]] bool has_share_links();
+
+}  // namespace essi::viewer::platform
