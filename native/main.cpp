@@ -16,7 +16,9 @@
 #include "essi/profile.hpp"
 #include "essi/report.hpp"
 #include "essi/trace.hpp"
+#include "serve.hpp"
 #include "file_io.hpp"
+#include "pipelined_check.hpp"
 #include "report_json.hpp"
 #include "text_report.hpp"
 
@@ -82,7 +84,7 @@ std::vector<FileReport> check_files(const std::vector<std::string>& paths, const
             io_failed = true;
             continue;
         }
-        reports.push_back({path, essi::check_tape(file.bytes, profile)});
+        reports.push_back({path, essi::native::check_tape_pipelined(file.bytes, profile)});
         // The bytes go out of scope here: only one tape is in memory at a time.
     }
     return reports;
@@ -245,6 +247,16 @@ int main(int argc, char** argv) {
         ->type_name("NAME|FILE");
     CLI::App* list = profile->add_subcommand("list", "List the built-in profiles");
 
+    std::string host = "127.0.0.1";
+    int port = 8080;
+    std::string web_root = ESSI_DEFAULT_WEB_ROOT;
+    std::string examples_dir = ESSI_DEFAULT_EXAMPLES_DIR;
+    CLI::App* serve = app.add_subcommand("serve", "Serve the browser viewer and the example tapes over HTTP");
+    serve->add_option("--host", host, "Address to listen on")->capture_default_str();
+    serve->add_option("--port", port, "Port (0 picks a free one)")->check(CLI::Range(0, 65535))->capture_default_str();
+    serve->add_option("--web-root", web_root, "The built viewer (index.html, essi_viewer.js/.wasm)")->capture_default_str();
+    serve->add_option("--examples", examples_dir, "Folder of example tapes served at /examples/")->capture_default_str();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -257,5 +269,6 @@ int main(int argc, char** argv) {
     if (*trace) return run_trace(trace_path, profile_arg);
     if (*show) return run_profile_show(show_arg);
     if (*list) return run_profile_list();
+    if (*serve) return essi::native::run_serve(host, port, web_root, examples_dir);
     return kExitUsage;
 }

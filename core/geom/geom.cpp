@@ -11,6 +11,14 @@ constexpr double kTwoPi = 2 * kPi;
 
 double angle_of(Point p, Point c) { return std::atan2(p.y - c.y, p.x - c.x); }
 
+// A monotonic stand-in for the angle of (x, y): 0 at +x, 1 at +y, 2 at -x, 3 at -y, towards 4.
+double pseudo_angle(double x, double y) {
+    const double sum = std::abs(x) + std::abs(y);
+    if (sum == 0) return 0;
+    const double p = x / sum;
+    return y < 0 ? 3 + p : 1 - p;
+}
+
 // Arc radius at a fraction of the sweep: from the start radius to the end radius, so that the arc ends
 // exactly on the programmed end point (the controller moves there; nothing drifts).
 double radius_at(const MotionRecord& m, double f) { return m.radius + (m.end_radius - m.radius) * f; }
@@ -42,37 +50,14 @@ double parabola_arc_integral(double t, double p) {
 
 }  // namespace
 
-void Box::add(Point p) {
-    if (empty) {
-        min_x = max_x = p.x;
-        min_y = max_y = p.y;
-        empty = false;
-        return;
-    }
-    min_x = std::min(min_x, p.x);
-    max_x = std::max(max_x, p.x);
-    min_y = std::min(min_y, p.y);
-    max_y = std::max(max_y, p.y);
-}
-
-void Box::add(const Box& b) {
-    if (b.empty) return;
-    add(Point{b.min_x, b.min_y});
-    add(Point{b.max_x, b.max_y});
-}
-
 double arc_sweep(Point start, Point end, Point centre, bool ccw, bool full_circle) {
     if (full_circle) return ccw ? kTwoPi : -kTwoPi;
-    const double a0 = angle_of(start, centre);
-    const double a1 = angle_of(end, centre);
-    double d = a1 - a0;
-    if (ccw) {
-        while (d <= 0) d += kTwoPi;
-        while (d > kTwoPi) d -= kTwoPi;
-    } else {
-        while (d >= 0) d -= kTwoPi;
-        while (d < -kTwoPi) d += kTwoPi;
-    }
+    // The angle between the two radius vectors, from one atan2 of their cross and dot products.
+    const double ax = start.x - centre.x, ay = start.y - centre.y;
+    const double bx = end.x - centre.x, by = end.y - centre.y;
+    double d = std::atan2(ax * by - ay * bx, ax * bx + ay * by);  // (-pi, pi]
+    if (ccw && d <= 0) d += kTwoPi;
+    if (!ccw && d >= 0) d -= kTwoPi;
     return d;
 }
 
@@ -93,6 +78,24 @@ Box bounding_box(const MotionRecord& m) {
         case CurveKind::Line: break;
         case CurveKind::Arc: {
             // Axis extremes (at angles 0, 90, 180, 270 degrees) that lie inside the sweep.
+            static constexpr double kAxisCos[4] = {1, 0, -1, 0};
+            static constexpr double kAxisSin[4] = {0, 1, 0, -1};
+            if (m.radius == m.end_radius) {
+                // Constant radius (the usual case): which extremes lie inside the sweep is decided with
+                // pseudo-angles (monotonic in the true angle, no trigonometry).
+                const double pa = pseudo_angle(m.start.x - m.centre.x, m.start.y - m.centre.y);
+                const bool full = std::abs(m.sweep) >= kTwoPi;
+                double span = m.sweep >= 0 ? pseudo_angle(m.end.x - m.centre.x, m.end.y - m.centre.y) - pa
+                                           : pa - pseudo_angle(m.end.x - m.centre.x, m.end.y - m.centre.y);
+                if (span < 0) span += 4;
+                if (full || span == 0) span = 4;
+                for (int k = 0; k < 4; ++k) {
+                    double offset = m.sweep >= 0 ? k - pa : pa - k;  // from the start to this extreme
+                    if (offset < 0) offset += 4;
+                    if (offset <= span) b.add(Point{m.centre.x + m.radius * kAxisCos[k], m.centre.y + m.radius * kAxisSin[k]});
+                }
+                break;
+            }
             const double a0 = angle_of(m.start, m.centre);
             for (int k = 0; k < 4; ++k) {
                 const double a = k * kPi / 2;
@@ -107,7 +110,7 @@ Box bounding_box(const MotionRecord& m) {
                     if (d < m.sweep) continue;
                 }
                 const double r = radius_at(m, m.sweep == 0 ? 0 : d / m.sweep);
-                b.add(Point{m.centre.x + r * std::cos(a), m.centre.y + r * std::sin(a)});
+                b.add(Point{m.centre.x + r * kAxisCos[k], m.centre.y + r * kAxisSin[k]});
             }
             break;
         }

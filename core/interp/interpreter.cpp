@@ -3,6 +3,8 @@
 // arcs and lines end exactly where the tape says and nothing drifts over millions of blocks.
 #include "essi/interp.hpp"
 
+#include <array>
+#include <optional>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -21,19 +23,45 @@ constexpr int kHeads = 2;
 constexpr int kFunctionReturnToZero = 62;  // Woyda
 constexpr int kBurnerCount = 135, kBurnerSpacing = 136;
 
+double distance(Point a, Point b) {
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    return std::sqrt(dx * dx + dy * dy);
+}
+
+double units_length(long long dx, long long dy) {
+    const auto x = static_cast<double>(dx), y = static_cast<double>(dy);
+    return std::sqrt(x * x + y * y);
+}
+
 std::string mm_text(double v) {
     char buf[48];
     std::snprintf(buf, sizeof buf, "%.3f mm", v);
     return buf;
 }
 
-class Interpreter {
-public:
-    Interpreter(const Tape& tape, std::string_view source, const Profile& profile, MotionSink& sink,
-                std::vector<Diagnostic>& diagnostics)
-        : tape_(tape), source_(source), profile_(profile), sink_(sink), diags_(diagnostics) {}
+}  // namespace
 
-    void run();
+namespace detail {
+
+class Machine {
+public:
+    Machine(std::string_view source, const Profile& profile, MotionSink& sink, std::vector<Diagnostic>& diagnostics)
+        : source_(source), profile_(profile), sink_(sink), diags_(diagnostics) {
+        feed_mm_min_ = profile_.feed_mm_min;
+        // The function table, flattened once per run: half the blocks of a tape are functions.
+        for (int code = 0; code < kFunctionCodes; ++code) {
+            const auto info = function_info(code, profile.dialect);
+            std::uint8_t f = 0;
+            if (info && info->assigned) f |= kAssigned;
+            if (info && info->manufacturer) f |= kManufacturer;
+            if (info && info->value == FunctionValue::None) f |= kTakesNoValue;
+            if (info && info->value == FunctionValue::Required) f |= kNeedsValue;
+            function_flags_[code] = f;
+        }
+    }
+
+    void run(const Tape& chunk);
+    void finish();
 
 private:
     void function(const Block& b, std::size_t index, bool has_value, long long value);
@@ -54,7 +82,14 @@ private:
     void set_tools(std::uint8_t tools) { tools_ = tools; }
     void check_table(const MotionRecord& m, const Block& b);
 
-    const Tape& tape_;
+    static constexpr int kFunctionCodes = 1000;  // at most 3 digits
+    enum : std::uint8_t { kAssigned = 1, kManufacturer = 2, kTakesNoValue = 4, kNeedsValue = 8 };
+    std::array<std::uint8_t, kFunctionCodes> function_flags_{};
+    [[nodiscard]] std::string function_name(int code) const {
+        const auto info = function_info(code, profile_.dialect);
+        return info ? std::string(info->name) : std::string("?");
+    }
+
     std::string_view source_;
     const Profile& profile_;
     MotionSink& sink_;
@@ -66,7 +101,7 @@ private:
     AxisMapping mapping_;           // 21-28
     bool absolute_ = false;         // 82
     bool zero_offset_pending_ = false;
-    const Block* zero_offset_block_ = nullptr;
+    std::optional<Block> zero_offset_block_;
     std::uint8_t tools_ = 0;
     bool rapid_ = false;
     bool rapid_one_block_ = false;  // profile.rapid_single_block: 5 lasts one motion
@@ -75,28 +110,32 @@ private:
     double feed_mm_min_ = 0;
     bool three_axis_ = false;
     bool skipping_ = false;          // inside 100 ... 101 with optional ignore on
-    const Block* open_optional_ = nullptr;
-    const Block* burner_count_ = nullptr;  // a 135 waiting for its 136
+    std::optional<Block> open_optional_;
+    std::optional<Block> burner_count_;  // a 135 waiting for its 136
     bool inside_table_ = true;
-    const Block* last_block_ = nullptr;
+    std::optional<Block> last_block_;
+    bool ended_ = false;
     std::uint8_t tools_before_end_ = 0;  // tools on when the end code was reached
+    MotionRecord record_;
 };
 
-void Interpreter::run() {
-    feed_mm_min_ = profile_.feed_mm_min;
-    Tape::WordCursor cursor(tape_);
-    const std::size_t end = tape_.end_block();
-    bool ended = false;
-    for (std::size_t i = 0; i < end && !ended; ++i) {
-        const Block& b = tape_.block(i);
+void Machine::run(const Tape& chunk) {
+    const std::int32_t* words = chunk.all_words().data();  // the words of block k, walking along
+    const std::size_t end = chunk.end_block();
+    const std::size_t base = chunk.first_block();
+    for (std::size_t k = 0; k < end && !ended_; ++k) {
+        const Block& b = chunk.block(k);
+        const std::span<const std::int32_t> w(words, static_cast<std::size_t>(b.word_count()));
+        words += b.word_count();
+        const std::size_t i = base + k;  // the block's index in the whole tape
         if (b.kind == BlockKind::Comment || b.kind == BlockKind::Percent) continue;
-        last_block_ = &b;
+        last_block_ = b;
         if (burner_count_ && !(b.has_code() && b.code == kBurnerSpacing && b.kind == BlockKind::FunctionValue)) {
             warn(DiagCode::W212_BurnerCountNotBeforeSpacing, *burner_count_,
                  "burner count (135) is not immediately followed by the burner spacing (136); expected 136+value next");
-            burner_count_ = nullptr;
+            burner_count_.reset();
         }
-        const bool is_end = tape_.has_program_end() && i + 1 == end;  // the end still ends a skipped section
+        const bool is_end = b.ends_program();  // the end still ends a skipped section
         if (skipping_ && !is_end && !(b.kind == BlockKind::Function && b.code == 101)) continue;
         switch (b.kind) {
             case BlockKind::Invalid:
@@ -104,28 +143,32 @@ void Interpreter::run() {
                 break;
             case BlockKind::EndMark:
                 event(b, i, EventKind::End);
-                ended = true;
+                ended_ = true;
                 break;
             case BlockKind::Function:
                 if (is_end) {
                     // The end code recognised by the reader (63, 64, ... per the dialect).
                     event(b, i, EventKind::End);
-                    ended = true;
+                    ended_ = true;
                     break;
                 }
                 function(b, i, false, 0);
                 break;
             case BlockKind::FunctionValue:
-                function(b, i, true, cursor.next(i)[0]);
+                function(b, i, true, w[0]);
                 break;
             case BlockKind::Motion:
-                motion(b, i, cursor.next(i));
+                motion(b, i, w);
                 break;
             case BlockKind::Comment:
             case BlockKind::Percent:
                 break;
         }
     }
+}
+
+// The checks that need the whole program: things opened and never closed, the state at the end.
+void Machine::finish() {
     if (zero_offset_pending_ && zero_offset_block_) {
         warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
              "zero offset (83) at the end of the program; expected a block of two signed words (the new origin) after it");
@@ -139,7 +182,7 @@ void Interpreter::run() {
              "burner count (135) is not followed by the burner spacing (136); expected 136+value next");
     }
     // The tools in force just before the end code (63/64 switches them off as part of ending).
-    const std::uint8_t tools_at_end = ended ? tools_before_end_ : tools_;
+    const std::uint8_t tools_at_end = ended_ ? tools_before_end_ : tools_;
     if (last_block_ && (tools_at_end & (kCuttingTools | kMarkingTools))) {
         warn(DiagCode::W211_ToolOnAtEnd, *last_block_,
              "the program ends with " + tools_text(tools_at_end) +
@@ -147,7 +190,7 @@ void Interpreter::run() {
     }
 }
 
-void Interpreter::event(const Block& b, std::size_t index, EventKind kind, bool has_value, double value) {
+void Machine::event(const Block& b, std::size_t index, EventKind kind, bool has_value, double value) {
     if (kind == EventKind::End) tools_before_end_ = tools_;
     MachineEvent e;
     e.line = b.line;
@@ -161,7 +204,7 @@ void Interpreter::event(const Block& b, std::size_t index, EventKind kind, bool 
     sink_.on_event(e);
 }
 
-void Interpreter::function(const Block& b, std::size_t index, bool has_value, long long value) {
+void Machine::function(const Block& b, std::size_t index, bool has_value, long long value) {
     const int code = b.code;
     if (zero_offset_pending_) {
         warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
@@ -169,8 +212,8 @@ void Interpreter::function(const Block& b, std::size_t index, bool has_value, lo
                  std::to_string(code) + " on line " + std::to_string(b.line));
         zero_offset_pending_ = false;
     }
-    const auto info = function_info(code, profile_.dialect);
-    if (!info || !info->assigned) {
+    const std::uint8_t flags = code < kFunctionCodes ? function_flags_[code] : 0;
+    if (!(flags & kAssigned)) {
         warn(DiagCode::W201_UnknownFunction, b,
              "machine function " + std::to_string(code) + " is " +
                  (code > 115 ? "not defined by ISO 6582 (0-115) or by the " + profile_.name + " profile"
@@ -178,22 +221,22 @@ void Interpreter::function(const Block& b, std::size_t index, bool has_value, lo
                  "; it is ignored");
         return;
     }
-    if (info->manufacturer) {
+    if (flags & kManufacturer) {
         warn(DiagCode::W208_ManufacturerFunction, b,
              "machine function " + std::to_string(code) +
                  " is specified by the machine manufacturer (ISO 6582 55-62); it is ignored; choose the profile of "
                  "your controller (e.g. woyda) to interpret it");
         return;
     }
-    if (has_value && info->value == FunctionValue::None) {
+    if (has_value && (flags & kTakesNoValue)) {
         warn(DiagCode::W202_FunctionValueIgnored, b,
-             "machine function " + std::to_string(code) + " (" + std::string(info->name) +
+             "machine function " + std::to_string(code) + " (" + function_name(code) +
                  ") takes no value; the value " + std::to_string(value) + " is ignored");
         has_value = false;
     }
-    if (!has_value && info->value == FunctionValue::Required) {
+    if (!has_value && (flags & kNeedsValue)) {
         warn(DiagCode::E203_FunctionValueMissing, b,
-             "machine function " + std::to_string(code) + " (" + std::string(info->name) + ") needs a value; expected " +
+             "machine function " + std::to_string(code) + " (" + function_name(code) + ") needs a value; expected " +
                  std::to_string(code) + "+value");
         return;
     }
@@ -274,14 +317,14 @@ void Interpreter::function(const Block& b, std::size_t index, bool has_value, lo
         case 67:
         case 68:
             warn(DiagCode::W213_MacroOnlyFunction, b,
-                 "machine function " + std::to_string(code) + " (" + std::string(info->name) +
+                 "machine function " + std::to_string(code) + " (" + function_name(code) +
                      ") is defined only in Woyda macro files; it is ignored in a program");
             return;
         case 81: absolute_ = false; break;
         case 82: absolute_ = true; break;
         case 83:
             zero_offset_pending_ = true;
-            zero_offset_block_ = &b;
+            zero_offset_block_ = b;
             if (!absolute_) {
                 warn(DiagCode::W215_ZeroOffsetInIncremental, b,
                      "zero offset (83) while programming incrementally (81): the new origin takes effect with the next "
@@ -289,11 +332,11 @@ void Interpreter::function(const Block& b, std::size_t index, bool has_value, lo
             }
             break;
         case 100:
-            open_optional_ = &b;
+            open_optional_ = b;
             skipping_ = profile_.optional_ignore;
             break;
         case 101:
-            open_optional_ = nullptr;
+            open_optional_.reset();
             skipping_ = false;
             break;
         case 110: tool(kToolLineMarker, true); break;
@@ -308,19 +351,19 @@ void Interpreter::function(const Block& b, std::size_t index, bool has_value, lo
                 m.start = to_mm(pos_[0]);
                 pos_[0] = IPoint{};
                 m.end = to_mm(pos_[0]);
-                m.length_mm = std::hypot(m.end.x - m.start.x, m.end.y - m.start.y);
+                m.length_mm = distance(m.start, m.end);
                 emit(m, b, index);
                 return;
             }
             break;
-        case kBurnerCount: burner_count_ = &b; break;
-        case kBurnerSpacing: burner_count_ = nullptr; break;
+        case kBurnerCount: burner_count_ = b; break;
+        case kBurnerSpacing: burner_count_.reset(); break;
         default: break;  // state-only functions: the event says what happened
     }
     event(b, index, kind, has_value, event_value);
 }
 
-void Interpreter::emit(MotionRecord& m, const Block& b, std::size_t index) {
+void Machine::emit(MotionRecord& m, const Block& b, std::size_t index) {
     m.line = b.line;
     m.block = static_cast<std::uint32_t>(index);
     m.tools = tools_;
@@ -341,11 +384,11 @@ void Interpreter::emit(MotionRecord& m, const Block& b, std::size_t index) {
         rapid_ = false;
         rapid_one_block_ = false;
     }
-    check_table(m, b);
+    if (profile_.table) check_table(m, b);
     sink_.on_motion(m);
 }
 
-void Interpreter::check_table(const MotionRecord& m, const Block& b) {
+void Machine::check_table(const MotionRecord& m, const Block& b) {
     if (!profile_.table) return;
     const TableLimits& t = *profile_.table;
     const Box box = bounding_box(m);
@@ -362,7 +405,7 @@ void Interpreter::check_table(const MotionRecord& m, const Block& b) {
     inside_table_ = inside;
 }
 
-void Interpreter::motion(const Block& b, std::size_t index, std::span<const std::int32_t> w) {
+void Machine::motion(const Block& b, std::size_t index, std::span<const std::int32_t> w) {
     if (zero_offset_pending_) {
         zero_offset_pending_ = false;
         if (w.size() == 2 && !b.has_address()) {
@@ -411,8 +454,12 @@ void Interpreter::motion(const Block& b, std::size_t index, std::span<const std:
     const IPoint d_end = map(e_t.x, e_t.y);
     const IPoint end{base.x + d_end.x, base.y + d_end.y};
 
-    MotionRecord m;
+    // One record reused for every motion: a fresh zeroed record per block costs more than the motion.
+    MotionRecord& m = record_;
     m.head = static_cast<std::uint8_t>(head);
+    m.ccw = false;
+    m.centre = {};
+    m.radius = m.end_radius = m.sweep = 0;
     m.start = to_mm(cur);
     m.end = to_mm(end);
     const double unit = profile_.unit_mm;
@@ -420,19 +467,19 @@ void Interpreter::motion(const Block& b, std::size_t index, std::span<const std:
 
     if (w.size() == 2) {
         m.curve = CurveKind::Line;
-        m.length_mm = std::hypot(m.end.x - m.start.x, m.end.y - m.start.y);
+        m.length_mm = distance(m.start, m.end);
     } else if (w.size() == 5) {
         const IPoint c_t{w[2], w[3]};
         const IPoint d_c = map(c_t.x, c_t.y);
         const IPoint centre{base.x + d_c.x, base.y + d_c.y};
-        const double r0 = std::hypot(static_cast<double>(s_t.x - c_t.x), static_cast<double>(s_t.y - c_t.y));
-        const double r1 = std::hypot(static_cast<double>(e_t.x - c_t.x), static_cast<double>(e_t.y - c_t.y));
+        const double r0 = units_length(s_t.x - c_t.x, s_t.y - c_t.y);
+        const double r1 = units_length(e_t.x - c_t.x, e_t.y - c_t.y);
         const bool full = s_t.x == e_t.x && s_t.y == e_t.y;
         if (r0 == 0) {
             warn(DiagCode::E302_ArcZeroRadius, b,
                  "the arc's centre is its start point (radius 0); expected XC/YC to give the centre relative to the start");
             m.curve = CurveKind::Line;
-            m.length_mm = std::hypot(m.end.x - m.start.x, m.end.y - m.start.y);
+            m.length_mm = distance(m.start, m.end);
         } else {
             if (std::abs(r1 - r0) > tol_units) {
                 warn(DiagCode::E301_ArcEndNotOnCircle, b,
@@ -468,7 +515,7 @@ void Interpreter::motion(const Block& b, std::size_t index, std::span<const std:
                  std::string("the parabola's radius of curvature at the vertex (") + (axis_parallel_y ? "YP" : "XP") +
                      ") is 0; expected a non-zero radius");
             m.curve = CurveKind::Line;
-            m.length_mm = std::hypot(m.end.x - m.start.x, m.end.y - m.start.y);
+            m.length_mm = distance(m.start, m.end);
         } else {
             ParabolaGeom g;  // tape frame, units
             double residual = 0;
@@ -526,7 +573,7 @@ void Interpreter::motion(const Block& b, std::size_t index, std::span<const std:
     emit(m, b, index);
 }
 
-}  // namespace
+}  // namespace detail
 
 AxisMapping axis_mapping(int function_code) {
     switch (function_code) {
@@ -541,10 +588,18 @@ AxisMapping axis_mapping(int function_code) {
     }
 }
 
+Interpreter::Interpreter(std::string_view source, const Profile& profile, MotionSink& sink,
+                         std::vector<Diagnostic>& diagnostics)
+    : machine_(std::make_unique<detail::Machine>(source, profile, sink, diagnostics)) {}
+Interpreter::~Interpreter() = default;
+void Interpreter::run(const Tape& chunk) { machine_->run(chunk); }
+void Interpreter::finish() { machine_->finish(); }
+
 void interpret(const Tape& tape, std::string_view source, const Profile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics) {
-    Interpreter interpreter(tape, source, profile, sink, diagnostics);
-    interpreter.run();
+    Interpreter interpreter(source, profile, sink, diagnostics);
+    interpreter.run(tape);
+    interpreter.finish();
 }
 
 }  // namespace essi

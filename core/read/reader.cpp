@@ -4,6 +4,7 @@
 // end of the program, and the % mark.
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <cstdio>
 #include <limits>
 
@@ -37,6 +38,55 @@ constexpr std::array<std::uint8_t, 256> make_classes() {
 }
 constexpr std::array<std::uint8_t, 256> kClass = make_classes();
 
+// Line ends and signs of a whole tape, 8 bytes at a time (the reservation pass must cost little).
+struct ByteCounts {
+    std::size_t lf = 0, cr = 0, signs = 0;
+};
+
+constexpr std::uint64_t kOnes = 0x0101010101010101ULL;
+
+// 1 in each byte lane of `w` that equals `c`, 0 elsewhere.
+inline std::uint64_t lanes_equal(std::uint64_t w, unsigned char c) {
+    constexpr std::uint64_t kLow7 = 0x7F7F7F7F7F7F7F7FULL;
+    const std::uint64_t x = w ^ (kOnes * c);                 // zero bytes where equal
+    const std::uint64_t nonzero = ((x & kLow7) + kLow7) | x;  // high bit set where not equal
+    return (~nonzero & (kOnes << 7)) >> 7;
+}
+
+// Sum of the byte lanes of `v`.
+inline std::size_t lane_sum(std::uint64_t v) {
+    std::size_t sum = 0;
+    for (int k = 0; k < 8; ++k) sum += (v >> (8 * k)) & 0xFF;
+    return sum;
+}
+
+ByteCounts count_bytes(std::string_view s) {
+    ByteCounts n;
+    std::size_t i = 0;
+    // Per-lane counters; each lane gains at most 1 (2 for signs) a word, so they are emptied every
+    // kWordsPerFlush words, before a lane can pass 255.
+    constexpr int kWordsPerFlush = 120;
+    while (i + 8 <= s.size()) {
+        std::uint64_t lf = 0, cr = 0, signs = 0;
+        for (int k = 0; k < kWordsPerFlush && i + 8 <= s.size(); ++k, i += 8) {
+            std::uint64_t w;
+            std::memcpy(&w, s.data() + i, 8);
+            lf += lanes_equal(w, '\n');
+            cr += lanes_equal(w, '\r');
+            signs += lanes_equal(w, '+') + lanes_equal(w, '-');
+        }
+        n.lf += lane_sum(lf);
+        n.cr += lane_sum(cr);
+        n.signs += lane_sum(signs);
+    }
+    for (; i < s.size(); ++i) {
+        n.lf += s[i] == '\n';
+        n.cr += s[i] == '\r';
+        n.signs += (s[i] == '+') | (s[i] == '-');
+    }
+    return n;
+}
+
 std::string describe_byte(unsigned char c) {
     char buf[32];
     if (c >= 0x21 && c < 0x7F) std::snprintf(buf, sizeof buf, "'%c' (0x%02X)", c, c);
@@ -54,10 +104,16 @@ std::string_view trim(std::string_view s) {
 
 class Reader {
 public:
-    Reader(std::string_view bytes, const Profile& profile, Tape& tape)
-        : src_(bytes), profile_(profile), tape_(tape) {}
+    Reader(std::string_view bytes, const Profile& profile) : src_(bytes), profile_(profile) {
+        for (const EndCode& e : profile.end_codes)
+            if (e.function >= 0 && e.function < kFunctionCodes) end_function_[e.function] = true;
+    }
 
-    void run();
+    // Reads up to `max_blocks` more blocks into `chunk` (emptied first). Returns false once the whole
+    // tape has been read and the last diagnostics given.
+    bool read_chunk(Tape& chunk, std::size_t max_blocks);
+    // Reserves the exact room the whole tape needs in `tape` (one cheap counting pass).
+    void reserve_whole(Tape& tape) const;
 
 private:
     // One line's parse, before classification.
@@ -72,18 +128,38 @@ private:
     };
 
     void read_line(std::uint32_t begin, std::uint32_t end);
+    bool read_plain_line(std::uint32_t begin, std::uint32_t& end);
+    void classify(std::uint32_t first, const LineParse& lp, std::size_t words_before);
     void read_ignored_line(std::uint32_t begin, std::uint32_t end);
     void after_end_line(std::uint32_t begin, std::uint32_t end);
     bool parse_words(std::uint32_t begin, std::uint32_t end, LineParse& lp);
     void push_block(std::uint32_t offset, BlockKind kind, std::uint16_t code, std::uint8_t packed);
+    // The block just pushed ends the program.
+    void mark_program_end() {
+        ended_ = true;
+        end_line_ = line_;
+        tape().blocks_.back().packed |= Block::kProgramEnd;
+        tape().has_end_ = true;
+        tape().end_block_ = tape().blocks_.size();
+    }
     void report(Severity sev, DiagCode code, std::uint32_t offset, std::string message);
     [[nodiscard]] bool is_end_function(long long code) const;
     [[nodiscard]] bool is_end_mark(char mark) const;
     [[nodiscard]] std::uint32_t column(std::uint32_t offset) const { return offset - line_begin_ + 1; }
 
+    static constexpr int kFunctionCodes = 1000;
+    std::array<bool, kFunctionCodes> end_function_{};  // the profile's end codes, by function code
+
     std::string_view src_;
     const Profile& profile_;
-    Tape& tape_;
+    Tape* chunk_ = nullptr;             // the chunk being filled
+    Tape& tape() { return *chunk_; }
+    std::uint32_t pos_ = 0;             // next byte to read
+    std::uint32_t skip_ = 0;            // a UTF-8 byte order mark: reported, then the line is read without it
+    bool started_ = false;
+    std::uint32_t end_line_ = 0;        // line of the block that ended the program
+    bool finished_ = false;             // the closing diagnostics have been given
+    std::size_t total_blocks_ = 0;      // blocks of all earlier chunks
     std::uint32_t line_ = 1;
     std::uint32_t line_begin_ = 0;
     std::size_t errors_ = 0;
@@ -101,9 +177,9 @@ private:
 
 void Reader::report(Severity sev, DiagCode code, std::uint32_t offset, std::string message) {
     if (stopped_) return;
-    tape_.diagnostics_.push_back({sev, code, line_, column(offset), std::move(message)});
+    tape().diagnostics_.push_back({sev, code, line_, column(offset), std::move(message)});
     if (sev == Severity::Error && ++errors_ >= kMaxReadErrors) {
-        tape_.diagnostics_.push_back({Severity::Error, DiagCode::E115_TooManyErrors, line_, column(offset),
+        tape().diagnostics_.push_back({Severity::Error, DiagCode::E115_TooManyErrors, line_, column(offset),
                                       "reading stopped after " + std::to_string(kMaxReadErrors) +
                                           " errors; this does not look like an ESSI tape (expected lines of + - 0-9)"});
         stopped_ = true;
@@ -111,8 +187,7 @@ void Reader::report(Severity sev, DiagCode code, std::uint32_t offset, std::stri
 }
 
 bool Reader::is_end_function(long long code) const {
-    return std::any_of(profile_.end_codes.begin(), profile_.end_codes.end(),
-                       [&](const EndCode& e) { return e.function >= 0 && e.function == code; });
+    return code >= 0 && code < kFunctionCodes && end_function_[static_cast<std::size_t>(code)];
 }
 
 bool Reader::is_end_mark(char mark) const {
@@ -121,83 +196,165 @@ bool Reader::is_end_mark(char mark) const {
 }
 
 void Reader::push_block(std::uint32_t offset, BlockKind kind, std::uint16_t code, std::uint8_t packed) {
-    if (percent_line_ != 0 && kind != BlockKind::Comment) {
-        tape_.diagnostics_.push_back({Severity::Warning, DiagCode::W112_MisplacedPercent, percent_line_, percent_column_,
+    if (percent_line_ != 0 && kind != BlockKind::Comment) [[unlikely]] {
+        tape().diagnostics_.push_back({Severity::Warning, DiagCode::W112_MisplacedPercent, percent_line_, percent_column_,
                                       "a % mark in the middle of the program is ignored; % belongs before the first "
                                       "block or after the end"});
         percent_line_ = 0;
     }
-    if (tape_.blocks_.size() % Tape::kWordIndexStride == 0)
-        tape_.word_index_.push_back(static_cast<std::uint32_t>(tape_.words_.size()) - (packed & Block::kWordCountMask));
-    Block b;
-    b.offset = offset;
-    b.line = line_;
-    b.code = code;
-    b.kind = kind;
-    b.packed = packed;
-    tape_.blocks_.push_back(b);
+    if (tape().blocks_.size() % Tape::kWordIndexStride == 0)
+        tape().word_index_.push_back(static_cast<std::uint32_t>(tape().words_.size()) - (packed & Block::kWordCountMask));
+    tape().blocks_.push_back(Block{offset, line_, code, kind, packed});
     last_line_ = line_;
 }
 
-void Reader::run() {
-    if (src_.size() > std::numeric_limits<std::uint32_t>::max()) {
-        tape_.diagnostics_.push_back({Severity::Error, DiagCode::E117_TapeTooLarge, 0, 0,
-                                      "the tape has " + std::to_string(src_.size()) +
-                                          " bytes; essikit reads tapes of at most 4 GiB"});
-        return;
+void Reader::reserve_whole(Tape& tape) const {
+    // A block per line, a word per sign: no reallocation while reading, no slack to give back.
+    const ByteCounts n = count_bytes(src_);
+    tape.blocks_.reserve(std::max(n.lf, n.cr) + 1);
+    tape.words_.reserve(n.signs);
+    tape.word_index_.reserve(tape.blocks_.capacity() / Tape::kWordIndexStride + 1);
+}
+
+bool Reader::read_chunk(Tape& chunk, std::size_t max_blocks) {
+    if (finished_) return false;
+    chunk_ = &chunk;
+    chunk.blocks_.clear();
+    chunk.words_.clear();
+    chunk.word_index_.clear();
+    chunk.diagnostics_.clear();
+    chunk.first_block_ = total_blocks_;
+    chunk.has_end_ = false;
+    const bool ended_before = ended_;
+
+    if (!started_) {
+        started_ = true;
+        if (src_.size() > std::numeric_limits<std::uint32_t>::max()) {
+            chunk.diagnostics_.push_back({Severity::Error, DiagCode::E117_TapeTooLarge, 0, 0,
+                                          "the tape has " + std::to_string(src_.size()) +
+                                              " bytes; essikit reads tapes of at most 4 GiB"});
+            stopped_ = true;
+        } else if (src_.substr(0, 3) == "\xEF\xBB\xBF") {
+            report(Severity::Error, DiagCode::E102_NonAsciiByte, 0,
+                   "the tape starts with a UTF-8 byte order mark (EF BB BF); ESSI tapes are plain ASCII: save the "
+                   "file without a BOM");
+            skip_ = 3;
+        }
     }
-    // A rough reservation: one block per 10 bytes, two words per block.
-    tape_.blocks_.reserve(src_.size() / 10 + 16);
-    tape_.words_.reserve(src_.size() / 5 + 16);
 
     const char* data = src_.data();
-    const auto size = static_cast<std::uint32_t>(src_.size());
-    std::uint32_t pos = 0;
-    std::uint32_t skip = 0;  // a UTF-8 byte order mark: reported, then the line is read without it
-    if (src_.substr(0, 3) == "\xEF\xBB\xBF") {
-        report(Severity::Error, DiagCode::E102_NonAsciiByte, 0,
-               "the tape starts with a UTF-8 byte order mark (EF BB BF); ESSI tapes are plain ASCII: save the file "
-               "without a BOM");
-        skip = 3;
-    }
-    while (pos < size && !stopped_ && !after_end_seen_) {
-        // Find the end of this line.
+    const auto size = static_cast<std::uint32_t>(std::min<std::size_t>(src_.size(), std::numeric_limits<std::uint32_t>::max()));
+    std::uint32_t pos = pos_;
+    while (pos < size && !stopped_ && !after_end_seen_ && chunk.blocks_.size() < max_blocks) {
         std::uint32_t end = pos;
-        while (end < size && data[end] != '\n' && data[end] != '\r') ++end;
         line_begin_ = pos;
-        const std::uint32_t from = pos + skip;
-        skip = 0;
-        if (ended_) after_end_line(from, end);
-        else if (in_ignore_) read_ignored_line(from, end);
-        else read_line(from, end);
-        if (end >= size) break;
+        // The common case first: a block of digits and signs, read in one pass.
+        if (skip_ != 0 || ended_ || in_ignore_ || !read_plain_line(pos, end)) {
+            while (end < size && data[end] != '\n' && data[end] != '\r') ++end;
+            const std::uint32_t from = pos + skip_;
+            skip_ = 0;
+            if (ended_) after_end_line(from, end);
+            else if (in_ignore_) read_ignored_line(from, end);
+            else read_line(from, end);
+        }
+        if (end >= size) {
+            pos = size;
+            break;
+        }
         // One line end: CR, LF, CR LF or LF CR.
         const char c = data[end];
         pos = end + 1;
         if (pos < size && (data[pos] == '\n' || data[pos] == '\r') && data[pos] != c) ++pos;
         ++line_;
     }
-    if (stopped_) {
-        tape_.end_block_ = tape_.blocks_.size();
-        return;
-    }
+    pos_ = pos;
+    total_blocks_ += chunk.blocks_.size();
+    // Blocks of this chunk that belong to the program: all of them, up to the end block, none after it.
+    if (ended_before) chunk.end_block_ = 0;
+    else if (!ended_) chunk.end_block_ = chunk.blocks_.size();
+    // (when the end was found in this chunk, classify() set end_block_)
+
+    const bool input_done = pos >= size || stopped_ || after_end_seen_;
+    if (!input_done) return true;
+    finished_ = true;
+    if (stopped_) return true;
     if (in_ignore_) {
-        tape_.diagnostics_.push_back({Severity::Error, DiagCode::E107_UnclosedIgnore, ignore_line_, ignore_column_,
+        chunk.diagnostics_.push_back({Severity::Error, DiagCode::E107_UnclosedIgnore, ignore_line_, ignore_column_,
                                       "ignore ON (3) is never switched off: expected a block 4 (ignore OFF) "
                                       "after it; everything after line " + std::to_string(ignore_line_) +
                                           " is ignored"});
     }
-    if (tape_.blocks_.empty()) {
-        tape_.diagnostics_.push_back({Severity::Error, DiagCode::E113_EmptyTape, 1, 1,
+    if (total_blocks_ == 0) {
+        chunk.diagnostics_.push_back({Severity::Error, DiagCode::E113_EmptyTape, 1, 1,
                                       "the tape holds no block; expected ESSI blocks such as 7, +100+0, 63"});
     } else if (!ended_) {
-        tape_.diagnostics_.push_back({Severity::Warning, DiagCode::W114_NoProgramEnd, last_line_, 1,
+        chunk.diagnostics_.push_back({Severity::Warning, DiagCode::W114_NoProgramEnd, last_line_, 1,
                                       "the tape ends without an end of program; expected 63, 64 or / as the last block"});
     }
-    if (!ended_) tape_.end_block_ = tape_.blocks_.size();
-    // The reservation above is generous; give back what the tape did not use.
-    tape_.blocks_.shrink_to_fit();
-    tape_.words_.shrink_to_fit();
+    return true;
+}
+
+// Reads a line made only of digits and signs (almost every line of a real tape) in one pass, and sets
+// `end` to its end. Returns false, having changed nothing, for any other line: the general path reads it.
+// Locals only in the loops, so that the compiler keeps everything in registers.
+bool Reader::read_plain_line(std::uint32_t begin, std::uint32_t& end) {
+    const auto* const base = reinterpret_cast<const unsigned char*>(src_.data());
+    const unsigned char* const first = base + begin;
+    const unsigned char* const stop = base + src_.size();
+    const unsigned char* p = first;
+    std::uint32_t lead = 0;
+    while (p != stop) {
+        const unsigned d = static_cast<unsigned>(*p) - '0';
+        if (d > 9) break;
+        lead = lead * 10 + d;
+        ++p;
+    }
+    const auto lead_digits = static_cast<int>(p - first);
+    if (lead_digits > kMaxWordDigits) return false;
+    constexpr int kMaxPlainWords = 8;  // more words than that: the general path (it is an error anyway)
+    std::int32_t words[kMaxPlainWords];
+    int n = 0;
+    std::uint8_t sign_flags = 0;
+    while (p != stop) {
+        const unsigned char sign = *p;
+        if (sign != '+' && sign != '-') break;
+        if (n == kMaxPlainWords) return false;
+        const unsigned char* const digits = ++p;
+        std::uint32_t v = 0;
+        while (p != stop) {
+            const unsigned d = static_cast<unsigned>(*p) - '0';
+            if (d > 9) break;
+            v = v * 10 + d;
+            ++p;
+        }
+        if (p - digits > kMaxWordDigits) return false;  // leading zeros or a number too large: the general path
+        const auto value = static_cast<std::int32_t>(v);
+        if (sign == '-') {
+            words[n] = -value;
+            if (n == 4) sign_flags |= Block::kTcNegative;
+            if (n == 5) sign_flags |= Block::kTpNegative;
+        } else {
+            words[n] = value;
+        }
+        ++n;
+    }
+    if (p == first || (p != stop && *p != '\n' && *p != '\r')) return false;
+    end = static_cast<std::uint32_t>(p - base);
+    const std::size_t words_before = tape().words_.size();
+    tape().words_.insert(tape().words_.end(), words, words + n);
+    // The two common shapes go straight in; everything else is classified in full.
+    if (lead_digits == 0 && (n == 2 || n == 5 || n == 6) && program_started_) {
+        push_block(begin, BlockKind::Motion, Block::kNoCode, static_cast<std::uint8_t>(n | sign_flags));
+        return true;
+    }
+    LineParse lp;
+    lp.lead_digits = lead_digits;
+    lp.lead_value = lead;
+    lp.words = n;
+    lp.sign_flags = sign_flags;
+    lp.blank = false;
+    classify(begin, lp, words_before);
+    return true;
 }
 
 void Reader::read_ignored_line(std::uint32_t begin, std::uint32_t end) {
@@ -222,7 +379,7 @@ void Reader::after_end_line(std::uint32_t begin, std::uint32_t end) {
     std::uint32_t first = begin;
     while (src_[first] == ' ' || src_[first] == '\t') ++first;
     report(Severity::Warning, DiagCode::W110_ContentAfterEnd, first,
-           "content after the end of the program (line " + std::to_string(tape_.blocks_.empty() ? 0 : tape_.blocks_[tape_.end_block_ - 1].line) +
+           "content after the end of the program (line " + std::to_string(end_line_) +
                "); it is not executed");
     after_end_seen_ = true;  // one warning is enough: nothing after the end is read
 }
@@ -248,7 +405,7 @@ bool Reader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& lp) 
         ++lp.words;
         if (lp.words == 5 && word_negative) lp.sign_flags |= Block::kTcNegative;
         if (lp.words == 6 && word_negative) lp.sign_flags |= Block::kTpNegative;
-        tape_.words_.push_back(static_cast<std::int32_t>(word_negative ? -word_value : word_value));
+        tape().words_.push_back(static_cast<std::int32_t>(word_negative ? -word_value : word_value));
         return true;
     };
     for (std::uint32_t i = begin; i < end; ++i) {
@@ -342,10 +499,10 @@ misplaced_mark:
 
 void Reader::read_line(std::uint32_t begin, std::uint32_t end) {
     if (begin == end) return;  // empty block
-    const std::size_t words_before = tape_.words_.size();
+    const std::size_t words_before = tape().words_.size();
     LineParse lp;
     if (!parse_words(begin, end, lp)) {
-        tape_.words_.resize(words_before);
+        tape().words_.resize(words_before);
         push_block(begin, BlockKind::Invalid, Block::kNoCode, 0);
         program_started_ = true;
         return;
@@ -353,10 +510,15 @@ void Reader::read_line(std::uint32_t begin, std::uint32_t end) {
     if (lp.blank) return;  // only blanks: an empty block
     std::uint32_t first = begin;
     while (src_[first] == ' ' || src_[first] == '\t') ++first;
+    classify(first, lp, words_before);
+}
+
+// Turns a parsed line into a block: its kind by the leading number and the count of signed words.
+void Reader::classify(std::uint32_t first, const LineParse& lp, std::size_t words_before) {
 
     auto fail = [&](DiagCode code, std::string message) {
         report(Severity::Error, code, first, std::move(message));
-        tape_.words_.resize(words_before);
+        tape().words_.resize(words_before);
         push_block(first, BlockKind::Invalid, Block::kNoCode, 0);
         program_started_ = true;
     };
@@ -373,9 +535,7 @@ void Reader::read_line(std::uint32_t begin, std::uint32_t end) {
     program_started_ = true;
     if (lp.mark) {  // '/' or '=' configured as an end of program
         push_block(first, BlockKind::EndMark, Block::kNoCode, 0);
-        ended_ = true;
-        tape_.has_end_ = true;
-        tape_.end_block_ = tape_.blocks_.size();
+        mark_program_end();
         return;
     }
     const auto word_count = static_cast<std::uint8_t>(lp.words);
@@ -398,9 +558,7 @@ void Reader::read_line(std::uint32_t begin, std::uint32_t end) {
                 report(Severity::Warning, DiagCode::W111_StrayIgnoreOff, first,
                        "ignore OFF (4) without an ignore ON (3) before it; expected 3 to open the ignored section");
             } else if (is_end_function(code)) {
-                ended_ = true;
-                tape_.has_end_ = true;
-                tape_.end_block_ = tape_.blocks_.size();
+                mark_program_end();
             }
             return;
         }
@@ -451,10 +609,20 @@ std::size_t Tape::memory_bytes() const {
 
 Tape read_tape(std::string_view bytes, const Profile& profile) {
     Tape tape;
-    Reader reader(bytes, profile, tape);
-    reader.run();
+    Reader reader(bytes, profile);
+    reader.reserve_whole(tape);
+    (void)reader.read_chunk(tape, std::numeric_limits<std::size_t>::max());
     return tape;
 }
+
+// ---- TapeReader: the same reader, a chunk at a time ----
+
+TapeReader::TapeReader(std::string_view bytes, const Profile& profile) : impl_(std::make_unique<Reader>(bytes, profile)) {}
+TapeReader::~TapeReader() = default;
+TapeReader::TapeReader(TapeReader&&) noexcept = default;
+TapeReader& TapeReader::operator=(TapeReader&&) noexcept = default;
+
+bool TapeReader::read_chunk(Tape& chunk, std::size_t max_blocks) { return impl_->read_chunk(chunk, max_blocks); }
 
 std::uint32_t column_of(std::string_view bytes, std::uint32_t offset) {
     std::uint32_t begin = offset;

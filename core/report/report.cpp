@@ -4,16 +4,26 @@
 #include <algorithm>
 
 #include "essi/interp.hpp"
+#include <memory>
 #include "essi/read.hpp"
 
 namespace essi {
 
 void StatsSink::on_motion(const MotionRecord& m) {
     ++stats_.motions;
+    // The exact box of curves costs trigonometry: computed once, used for both boxes.
+    Box box;
+    if (m.curve == CurveKind::Line) {
+        box.add(m.start);
+        box.add(m.end);
+    } else {
+        box = bounding_box(m);
+    }
+    stats_.motion_bbox.add(box);
     switch (m.kind) {
         case MotionKind::Cut:
             stats_.cut_length_mm += m.length_mm;
-            stats_.cut_bbox.add(bounding_box(m));
+            stats_.cut_bbox.add(box);
             break;
         case MotionKind::Mark: stats_.mark_length_mm += m.length_mm; break;
         case MotionKind::Rapid:
@@ -21,12 +31,6 @@ void StatsSink::on_motion(const MotionRecord& m) {
             stats_.travel_length_mm += m.length_mm;
             break;
         case MotionKind::Travel: stats_.travel_length_mm += m.length_mm; break;
-    }
-    if (m.curve == CurveKind::Line) {
-        stats_.motion_bbox.add(m.start);
-        stats_.motion_bbox.add(m.end);
-    } else {
-        stats_.motion_bbox.add(bounding_box(m));
     }
     if (m.feed_mm_min > 0) stats_.estimated_time_s += m.length_mm / m.feed_mm_min * 60.0;
     if (m.head == 1) stats_.end_position = m.end;
@@ -65,16 +69,52 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
     });
 }
 
+// ---- TapeChecker ----
+
+// Sends every record to the statistics and, when asked, to one more sink (the viewer's buffers).
+class TapeChecker::Tee : public MotionSink {
+public:
+    Tee(const Profile& profile, MotionSink* also) : stats(profile), also_(also) {}
+    void on_motion(const MotionRecord& m) override {
+        stats.on_motion(m);
+        if (also_) also_->on_motion(m);
+    }
+    void on_event(const MachineEvent& e) override {
+        stats.on_event(e);
+        if (also_) also_->on_event(e);
+    }
+    StatsSink stats;
+private:
+    MotionSink* also_;
+};
+
+TapeChecker::TapeChecker(std::string_view bytes, const Profile& profile, MotionSink* also)
+    : tee_(std::make_unique<Tee>(profile, also)), interpreter_(bytes, profile, *tee_, result_.diagnostics) {}
+
+TapeChecker::~TapeChecker() = default;
+
+void TapeChecker::check_chunk(const Tape& chunk) {
+    result_.diagnostics.insert(result_.diagnostics.end(), chunk.diagnostics().begin(), chunk.diagnostics().end());
+    interpreter_.run(chunk);
+    blocks_ += count_program_blocks(chunk);
+}
+
+CheckResult TapeChecker::finish() {
+    interpreter_.finish();
+    result_.stats = tee_->stats.stats();
+    result_.stats.blocks = blocks_;
+    sort_diagnostics(result_.diagnostics);
+    return std::move(result_);
+}
+
 CheckResult check_tape(std::string_view bytes, const Profile& profile) {
-    CheckResult result;
-    const Tape tape = read_tape(bytes, profile);
-    result.diagnostics = tape.diagnostics();
-    StatsSink sink(profile);
-    interpret(tape, bytes, profile, sink, result.diagnostics);
-    result.stats = sink.stats();
-    result.stats.blocks = count_program_blocks(tape);
-    sort_diagnostics(result.diagnostics);
-    return result;
+    // A chunk at a time: each chunk is interpreted while it is still in cache, and the whole tape is
+    // never held (a 100 MB tape would cost some 200 MB of blocks).
+    TapeChecker checker(bytes, profile);
+    TapeReader reader(bytes, profile);
+    Tape chunk;
+    while (reader.read_chunk(chunk, kCheckChunkBlocks)) checker.check_chunk(chunk);
+    return checker.finish();
 }
 
 }  // namespace essi

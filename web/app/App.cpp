@@ -852,9 +852,12 @@ void App::draw_inspector() {
     if (b0 == b1 && m0 == m1) ImGui::TextDisabled("No block on this line (comment, empty line or part of a block).");
     auto it = std::lower_bound(d.diagnostics.begin(), d.diagnostics.end(), selected_line_,
                                [](const Diagnostic& x, std::uint32_t l) { return x.line < l; });
-    for (; it != d.diagnostics.end() && it->line == selected_line_; ++it)
-        ImGui::TextColored(severity_color(it->severity), "%s %s: %s", std::string(severity_name(it->severity)).c_str(),
-                           code_name(it->code).c_str(), it->message.c_str());
+    for (; it != d.diagnostics.end() && it->line == selected_line_; ++it) {
+        ImGui::PushStyleColor(ImGuiCol_Text, severity_color(it->severity));
+        ImGui::TextWrapped("%s %s: %s", std::string(severity_name(it->severity)).c_str(), code_name(it->code).c_str(),
+                           it->message.c_str());
+        ImGui::PopStyleColor();
+    }
 }
 
 void App::draw_overlays() {

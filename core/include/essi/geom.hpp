@@ -11,8 +11,23 @@ namespace essi {
 struct Box {
     double min_x = 0, min_y = 0, max_x = 0, max_y = 0;
     bool empty = true;
-    void add(Point p);
-    void add(const Box& b);
+    void add(Point p) {
+        if (empty) {
+            min_x = max_x = p.x;
+            min_y = max_y = p.y;
+            empty = false;
+            return;
+        }
+        min_x = p.x < min_x ? p.x : min_x;
+        max_x = p.x > max_x ? p.x : max_x;
+        min_y = p.y < min_y ? p.y : min_y;
+        max_y = p.y > max_y ? p.y : max_y;
+    }
+    void add(const Box& b) {
+        if (b.empty) return;
+        add(Point{b.min_x, b.min_y});
+        add(Point{b.max_x, b.max_y});
+    }
 };
 
 // Arc sweep from start to end around centre: (0, 2*pi] for ccw, [-2*pi, 0) for cw; a full circle when

@@ -2,6 +2,7 @@
 // kerf, feed, heads) and emits the motion stream to a sink (ESSI-SEMANTICS §3-§11).
 #pragma once
 
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -11,6 +12,26 @@
 #include "essi/read.hpp"
 
 namespace essi {
+
+namespace detail {
+class Machine;
+}
+
+// The machine, fed a chunk of blocks at a time (TapeReader), or a whole tape. Diagnostics of
+// interpretation and geometry are appended to `diagnostics` (columns computed from `source`).
+class Interpreter {
+public:
+    Interpreter(std::string_view source, const Profile& profile, MotionSink& sink, std::vector<Diagnostic>& diagnostics);
+    ~Interpreter();
+    Interpreter(const Interpreter&) = delete;
+    Interpreter& operator=(const Interpreter&) = delete;
+    // Runs the program blocks of `chunk` (chunks must come in tape order).
+    void run(const Tape& chunk);
+    // After the last chunk: reports what the program opened and never closed.
+    void finish();
+private:
+    std::unique_ptr<detail::Machine> machine_;
+};
 
 // Runs the program in `tape` and sends every motion and event to `sink`, in program order. Diagnostics of
 // interpretation and geometry are appended to `diagnostics` (with columns computed from `source`).

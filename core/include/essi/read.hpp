@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -34,7 +35,7 @@ struct Block {
     std::uint16_t code = 0;
     BlockKind kind = BlockKind::Invalid;
     // low 4 bits: number of signed words (0-6); bit 4: sign of word 5 (TC) is '-';
-    // bit 5: sign of word 6 (TP) is '-'; bit 6: block had a head address
+    // bit 5: sign of word 6 (TP) is '-'; bit 6: block had a head address; bit 7: end of program
     std::uint8_t packed = 0;
 
     static constexpr std::uint16_t kNoCode = 0xFFFF;
@@ -42,10 +43,12 @@ struct Block {
     static constexpr std::uint8_t kTcNegative = 0x10;
     static constexpr std::uint8_t kTpNegative = 0x20;
     static constexpr std::uint8_t kHasAddress = 0x40;
+    static constexpr std::uint8_t kProgramEnd = 0x80;  // this block ends the program (63, 64, / ...)
 
     [[nodiscard]] int word_count() const { return packed & kWordCountMask; }
     [[nodiscard]] bool has_code() const { return code != kNoCode; }
     [[nodiscard]] bool has_address() const { return (packed & kHasAddress) != 0; }
+    [[nodiscard]] bool ends_program() const { return (packed & kProgramEnd) != 0; }
     // TC (word 5): true = '+' = counter-clockwise (ISO A.7)
     [[nodiscard]] bool tc_positive() const { return (packed & kTcNegative) == 0; }
     // TP (word 6): true = '+' = axis parallel to the transverse (Y) axis
@@ -67,7 +70,10 @@ public:
     [[nodiscard]] const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
     [[nodiscard]] bool has_errors() const;
     // Index of the first block after the program's end, or size() when the tape has no end.
+    // In a chunk (TapeReader): the blocks of the chunk that belong to the program.
     [[nodiscard]] std::size_t end_block() const { return end_block_; }
+    // Index, in the whole tape, of this chunk's first block (0 for a whole tape).
+    [[nodiscard]] std::size_t first_block() const { return first_block_; }
     [[nodiscard]] bool has_program_end() const { return has_end_; }
     // Bytes held by blocks, words and the index (capacity, not size): the memory a tape costs.
     [[nodiscard]] std::size_t memory_bytes() const;
@@ -86,16 +92,33 @@ public:
 
 private:
     friend class Reader;
+    friend class TapeReader;
     std::vector<Block> blocks_;
     std::vector<std::int32_t> words_;
     std::vector<std::uint32_t> word_index_;  // first word of block k*kWordIndexStride
     std::vector<Diagnostic> diagnostics_;
     std::size_t end_block_ = 0;
+    std::size_t first_block_ = 0;
     bool has_end_ = false;
 };
 
 // Reads a tape. Never throws; every problem is a diagnostic in the result.
 [[nodiscard]] Tape read_tape(std::string_view bytes, const Profile& profile);
+
+// Reads a tape a chunk of blocks at a time, so that a checker can interpret each chunk while it is
+// still in cache, and never holds the whole tape (the same reader as read_tape; the same results).
+class TapeReader {
+public:
+    TapeReader(std::string_view bytes, const Profile& profile);
+    ~TapeReader();
+    TapeReader(TapeReader&&) noexcept;
+    TapeReader& operator=(TapeReader&&) noexcept;
+    // Empties `chunk` and reads up to `max_blocks` more blocks into it, with the diagnostics found
+    // meanwhile. Returns false when the tape is done (nothing was read).
+    bool read_chunk(Tape& chunk, std::size_t max_blocks);
+private:
+    std::unique_ptr<class Reader> impl_;
+};
 
 // 1-based column of a byte offset (counts bytes from the start of its line).
 [[nodiscard]] std::uint32_t column_of(std::string_view bytes, std::uint32_t offset);

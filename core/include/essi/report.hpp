@@ -2,6 +2,7 @@
 // pipeline (read -> interp -> check -> stats) on bytes and never throws.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -9,6 +10,8 @@
 
 #include "essi/diagnostics.hpp"
 #include "essi/geom.hpp"
+#include "essi/interp.hpp"
+#include "essi/read.hpp"
 #include "essi/motion.hpp"
 #include "essi/profile.hpp"
 
@@ -51,7 +54,29 @@ private:
 
 [[nodiscard]] CheckResult check_tape(std::string_view bytes, const Profile& profile);
 
-class Tape;
+// The check pipeline, fed a chunk of blocks at a time (from a TapeReader, in tape order): what
+// check_tape does, for callers that read on another thread or also want the motion stream.
+class TapeChecker {
+public:
+    // `also`, when given, receives every motion and event too (e.g. the viewer's GPU buffers).
+    TapeChecker(std::string_view bytes, const Profile& profile, MotionSink* also = nullptr);
+    ~TapeChecker();
+    TapeChecker(const TapeChecker&) = delete;
+    TapeChecker& operator=(const TapeChecker&) = delete;
+    void check_chunk(const Tape& chunk);
+    // After the last chunk: the result (diagnostics sorted). Call once.
+    [[nodiscard]] CheckResult finish();
+private:
+    class Tee;
+    CheckResult result_;
+    std::unique_ptr<Tee> tee_;
+    Interpreter interpreter_;
+    unsigned long long blocks_ = 0;
+};
+
+// Blocks per chunk when check_tape streams a tape (about 100 KB of blocks: stays in the L2 cache).
+constexpr std::size_t kCheckChunkBlocks = 8192;
+
 // Program blocks of a read tape: blocks up to the end, comment lines inside 3/4 excluded.
 [[nodiscard]] unsigned long long count_program_blocks(const Tape& tape);
 // Orders diagnostics by line, then column (stable).

@@ -1,0 +1,19 @@
+// Checking one tape on two cores: a thread reads chunks of blocks while the caller's thread interprets
+// the chunks already read. The same core steps as essi::check_tape, so the same result to the bit.
+#pragma once
+
+#include <string_view>
+
+#include "essi/report.hpp"
+
+namespace essi::native {
+
+// Tapes smaller than this are checked on one thread (a thread costs more than it saves).
+constexpr std::size_t kPipelineMinBytes = 1u << 20;
+// Blocks per chunk handed between the threads, and chunks in flight.
+constexpr std::size_t kPipelineChunkBlocks = 16384;
+constexpr int kPipelineChunks = 4;
+
+[[nodiscard]] CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile);
+
+}  // namespace essi::native
