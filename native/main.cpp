@@ -1,6 +1,9 @@
 // essi: the command-line tool. check / stats / trace / profile (docs/cli.md).
 // Exit codes: 0 no errors, 1 a tape has errors, 2 usage or I/O problem.
 #include <algorithm>
+#include <array>
+#include <cctype>
+#include <filesystem>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -72,9 +75,42 @@ std::optional<essi::Profile> resolve_profile(const std::string& arg) {
     return parsed.profile;
 }
 
-// Reads and checks every path. Unreadable files are reported on stderr and skipped (io_failed set).
-std::vector<FileReport> check_files(const std::vector<std::string>& paths, const essi::Profile& profile,
+// Tape files below a directory, by extension, in a stable (sorted) order.
+constexpr std::array<std::string_view, 5> kTapeExtensions = {".esi", ".essi", ".ess", ".nc", ".txt"};
+
+std::vector<std::string> expand_paths(const std::vector<std::string>& paths, bool& io_failed) {
+    namespace fs = std::filesystem;
+    std::vector<std::string> files;
+    for (const std::string& path : paths) {
+        std::error_code ec;
+        if (path == "-" || !fs::is_directory(path, ec)) {
+            files.push_back(path);
+            continue;
+        }
+        std::vector<std::string> found;
+        for (fs::recursive_directory_iterator it(path, ec), end; !ec && it != end; it.increment(ec)) {
+            std::error_code entry_ec;
+            if (!it->is_regular_file(entry_ec)) continue;
+            std::string ext = it->path().extension().string();
+            std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+            if (std::find(kTapeExtensions.begin(), kTapeExtensions.end(), ext) != kTapeExtensions.end())
+                found.push_back(it->path().string());
+        }
+        if (ec) {
+            err("essi: cannot read " + path + ": " + ec.message() + "\n");
+            io_failed = true;
+        }
+        std::sort(found.begin(), found.end());
+        files.insert(files.end(), found.begin(), found.end());
+    }
+    return files;
+}
+
+// Reads and checks every path (directories: the tape files below them). Unreadable files are reported on
+// stderr and skipped (io_failed set).
+std::vector<FileReport> check_files(const std::vector<std::string>& args, const essi::Profile& profile,
                                     bool& io_failed) {
+    const std::vector<std::string> paths = expand_paths(args, io_failed);
     std::vector<FileReport> reports;
     reports.reserve(paths.size());
     for (const std::string& path : paths) {
@@ -118,7 +154,7 @@ int run_check(const std::vector<std::string>& paths, const std::string& format, 
 
     // Text: each file as soon as it is checked; keep only what the summary needs.
     std::vector<FileReport> summary;
-    for (const std::string& path : paths) {
+    for (const std::string& path : expand_paths(paths, io_failed)) {
         std::vector<FileReport> one = check_files({path}, *profile, io_failed);
         if (one.empty()) continue;
         FileReport& r = one.front();
