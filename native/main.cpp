@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <chrono>
 #include <filesystem>
 #include <cerrno>
 #include <cstdio>
@@ -12,6 +13,9 @@
 #include <string_view>
 #include <vector>
 
+#include <spawn.h>
+#include <sys/wait.h>
+
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -19,7 +23,11 @@
 #include "essi/profile.hpp"
 #include "essi/report.hpp"
 #include "essi/trace.hpp"
+#include "batch.hpp"
+#include "formats.hpp"
+#include "render_svg.hpp"
 #include "serve.hpp"
+#include "thread_pool.hpp"
 #include "file_io.hpp"
 #include "pipelined_check.hpp"
 #include "report_json.hpp"
@@ -28,6 +36,8 @@
 #ifndef ESSIKIT_VERSION
 #define ESSIKIT_VERSION "0.1.0"
 #endif
+
+extern char** environ;
 
 namespace {
 
@@ -75,33 +85,13 @@ std::optional<essi::Profile> resolve_profile(const std::string& arg) {
     return parsed.profile;
 }
 
-// Tape files below a directory, by extension, in a stable (sorted) order.
-constexpr std::array<std::string_view, 5> kTapeExtensions = {".esi", ".essi", ".ess", ".nc", ".txt"};
-
-std::vector<std::string> expand_paths(const std::vector<std::string>& paths, bool& io_failed) {
-    namespace fs = std::filesystem;
-    std::vector<std::string> files;
-    for (const std::string& path : paths) {
-        std::error_code ec;
-        if (path == "-" || !fs::is_directory(path, ec)) {
-            files.push_back(path);
-            continue;
-        }
-        std::vector<std::string> found;
-        for (fs::recursive_directory_iterator it(path, ec), end; !ec && it != end; it.increment(ec)) {
-            std::error_code entry_ec;
-            if (!it->is_regular_file(entry_ec)) continue;
-            std::string ext = it->path().extension().string();
-            std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-            if (std::find(kTapeExtensions.begin(), kTapeExtensions.end(), ext) != kTapeExtensions.end())
-                found.push_back(it->path().string());
-        }
-        if (ec) {
-            err("essi: cannot read " + path + ": " + ec.message() + "\n");
-            io_failed = true;
-        }
-        std::sort(found.begin(), found.end());
-        files.insert(files.end(), found.begin(), found.end());
+std::vector<std::string> expand_paths(const std::vector<std::string>& paths, bool& io_failed,
+                                      const essi::native::ExpandOptions& options = {}) {
+    std::vector<std::string> errors;
+    std::vector<std::string> files = essi::native::expand_paths(paths, options, errors);
+    for (const std::string& e : errors) {
+        err("essi: " + e + "\n");
+        io_failed = true;
     }
     return files;
 }
@@ -140,41 +130,150 @@ int finish(int code) {
     return code;
 }
 
-int run_check(const std::vector<std::string>& paths, const std::string& format, const std::string& profile_arg) {
-    const auto profile = resolve_profile(profile_arg);
+struct CheckOptions {
+    std::string format = "text";
+    std::string profile;
+    std::string ext;             // --ext LIST ("" = the defaults)
+    bool no_sniff = false;
+    unsigned jobs = 0;           // 0 = all cores
+    std::string fail_on = "error";
+    long long max_diagnostics = -1;  // -1 = all
+    bool quiet = false;
+    std::string docs_url = std::string(essi::native::kDefaultDocsUrl);
+};
+
+int run_check(const std::vector<std::string>& paths, const CheckOptions& o) {
+    using namespace essi::native;
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto profile = resolve_profile(o.profile);
     if (!profile) return kExitUsage;
     bool io_failed = false;
 
-    if (format == "json") {
-        const auto reports = check_files(paths, *profile, io_failed);
-        out(essi::native::report_to_json(reports, profile->name).dump(kJsonIndent));
-        out("\n");
-        return finish(io_failed ? kExitUsage : any_errors(reports) ? kExitTapeErrors : kExitOk);
-    }
+    ExpandOptions expand;
+    if (!o.ext.empty()) expand.extensions = parse_extension_list(o.ext);
+    expand.sniff = !o.no_sniff;
+    const std::vector<std::string> files = expand_paths(paths, io_failed, expand);
 
-    // Text: each file as soon as it is checked; keep only what the summary needs.
-    std::vector<FileReport> summary;
-    for (const std::string& path : expand_paths(paths, io_failed)) {
-        std::vector<FileReport> one = check_files({path}, *profile, io_failed);
-        if (one.empty()) continue;
-        FileReport& r = one.front();
-        std::string text;
-        for (const essi::Diagnostic& d : r.result.diagnostics) {
-            text += essi::native::diagnostic_line(r.path, d);
-            text += '\n';
+    BatchOptions batch;
+    batch.jobs = o.jobs == 0 ? hardware_jobs() : o.jobs;
+    if (o.max_diagnostics >= 0) batch.max_diagnostics = static_cast<std::size_t>(o.max_diagnostics);
+    const FailOn fail_on = o.fail_on == "warning" ? FailOn::Warning : o.fail_on == "never" ? FailOn::Never : FailOn::Error;
+
+    BatchTotals totals;
+    std::vector<BatchItem> kept;       // json, junit, sarif: the whole report is written at the end
+    const bool streamed = o.format == "text" || o.format == "github";
+    check_batch(files, *profile, batch, [&](BatchItem&& item) {
+        totals.add(item, fail_on);
+        if (!item.read_ok) {
+            err("essi: cannot read " + item.report.path + ": " + item.error + "\n");
+            io_failed = true;
         }
-        text += essi::native::file_stats_line(r);
-        text += '\n';
-        out(text);
-        r.result.diagnostics.erase(
-            std::remove_if(r.result.diagnostics.begin(), r.result.diagnostics.end(),
-                           [](const essi::Diagnostic& d) { return d.severity == essi::Severity::Note; }),
-            r.result.diagnostics.end());
-        for (essi::Diagnostic& d : r.result.diagnostics) d.message.clear();  // counts are all we need now
-        summary.push_back(std::move(r));
+        if (o.format == "text") {
+            if (item.read_ok) out(text_file_block(item, o.quiet));
+        } else if (o.format == "github") {
+            out(github_file_block(item));
+        } else {
+            kept.push_back(std::move(item));
+        }
+    });
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    if (o.format == "json") {
+        std::vector<FileReport> reports;
+        reports.reserve(kept.size());
+        for (BatchItem& it : kept)
+            if (it.read_ok) reports.push_back(std::move(it.report));
+        out(report_to_json(reports, profile->name).dump(kJsonIndent));
+        out("\n");
+    } else if (o.format == "junit") {
+        out(junit_report(kept, profile->name, seconds, fail_on));
+    } else if (o.format == "sarif") {
+        out(sarif_report(kept, profile->name, o.docs_url).dump(kJsonIndent));
+        out("\n");
     }
-    out(essi::native::summary_line(summary, profile->name) + "\n");
-    return finish(io_failed ? kExitUsage : any_errors(summary) ? kExitTapeErrors : kExitOk);
+    const std::string summary = batch_summary_line(totals, profile->name, seconds) + "\n";
+    if (streamed) out(summary);
+    else if (!o.quiet) err(summary);
+
+    if (io_failed) return finish(kExitUsage);
+    if (fail_on == FailOn::Never) return finish(kExitOk);
+    return finish(totals.failed > 0 ? kExitTapeErrors : kExitOk);
+}
+
+bool write_file(const std::string& path, std::string_view bytes) {
+    if (path == "-") {
+        out(bytes);
+        return true;
+    }
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) return false;
+    const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+    return std::fclose(f) == 0 && ok;
+}
+
+// Runs `argv` (looked up on PATH) and waits; true when it exits with 0.
+bool run_program(const std::vector<std::string>& args) {
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    if (posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return false;
+    int status = 0;
+    if (waitpid(pid, &status, 0) < 0) return false;
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+struct RenderCliOptions {
+    std::string path;
+    std::string output;
+    std::string profile;
+    bool png = false;
+    bool no_travel = false;
+    double width = 1200;
+};
+
+int run_render(const RenderCliOptions& o) {
+    const auto profile = resolve_profile(o.profile);
+    if (!profile) return kExitUsage;
+    const essi::native::ReadResult file = essi::native::read_whole_file(o.path);
+    if (!file.ok) {
+        err("essi: cannot read " + o.path + ": " + file.error + "\n");
+        return kExitUsage;
+    }
+    essi::native::RenderOptions options;
+    options.title = o.path == "-" ? std::string("-") : std::filesystem::path(o.path).filename().string();
+    options.width_px = o.width;
+    options.show_travel = !o.no_travel;
+    const essi::native::RenderResult r = essi::native::render_svg(file.bytes, *profile, options);
+    std::string output = o.output;
+    const bool png = o.png || (output.size() > 4 && output.compare(output.size() - 4, 4, ".png") == 0);
+    if (output.empty()) {
+        const std::string base = o.path == "-" ? std::string("stdin") : std::filesystem::path(o.path).filename().string();
+        output = base + (png ? ".png" : ".svg");
+    }
+    if (png) {
+        if (output == "-") {
+            err("essi render: --png needs a file name (-o OUT.png)\n");
+            return kExitUsage;
+        }
+        const std::string tmp = output + ".tmp.svg";
+        if (!write_file(tmp, r.svg)) {
+            err("essi render: cannot write " + tmp + ": " + std::strerror(errno) + "\n");
+            return kExitUsage;
+        }
+        const bool ok = run_program({"rsvg-convert", "--background-color=white", "-o", output, tmp});
+        std::remove(tmp.c_str());
+        if (!ok) {
+            err("essi render: rsvg-convert failed or is not installed (apt-get install librsvg2-bin; scripts/setup "
+                "installs it); write an SVG instead\n");
+            return kExitUsage;
+        }
+    } else if (!write_file(output, r.svg)) {
+        err("essi render: cannot write " + output + ": " + std::strerror(errno) + "\n");
+        return kExitUsage;
+    }
+    if (output != "-") err("essi render: wrote " + output + "\n");
+    return finish(r.result.ok() ? kExitOk : kExitTapeErrors);
 }
 
 void report_errors_briefly(const std::vector<FileReport>& reports) {
@@ -261,10 +360,36 @@ int main(int argc, char** argv) {
             ->capture_default_str();
     };
 
+    CheckOptions check_opts;
     CLI::App* check = app.add_subcommand("check", "Check tapes: diagnostics, statistics and a summary");
-    add_format_option(check);
-    add_profile_option(check);
-    check->add_option("PATH", paths, "Tape files ('-' reads standard input)")->required();
+    check->add_option("--format", check_opts.format, "Output format")
+        ->check(CLI::IsMember({"text", "json", "junit", "sarif", "github"}))
+        ->type_name("text|json|junit|sarif|github")
+        ->capture_default_str();
+    check->add_option("--profile", check_opts.profile,
+                      "Built-in profile name (see `essi profile list`) or a JSON profile file; default iso6582")
+        ->type_name("NAME|FILE");
+    check->add_option("--ext", check_opts.ext,
+                      "File extensions that count in directories (default: .esi,.essi,.ess,.nc,.txt)")
+        ->type_name("LIST");
+    check->add_flag("--no-sniff", check_opts.no_sniff,
+                    "In directories, do not look into files with other extensions for ESSI content");
+    check->add_option("-j,--jobs", check_opts.jobs, "Files checked in parallel (default: all cores)")
+        ->check(CLI::Range(1u, 1024u));
+    check->add_option("--fail-on", check_opts.fail_on, "Exit code 1 on: error, warning or never")
+        ->check(CLI::IsMember({"error", "warning", "never"}))
+        ->type_name("error|warning|never")
+        ->capture_default_str();
+    check->add_option("--max-diagnostics", check_opts.max_diagnostics,
+                      "At most N diagnostics per file (the rest are counted in a note)")
+        ->check(CLI::Range(0LL, 1LL << 40))
+        ->type_name("N");
+    check->add_flag("-q,--quiet", check_opts.quiet,
+                    "Text: only errors, warnings and the summary; json/junit/sarif: no summary on stderr");
+    check->add_option("--docs-url", check_opts.docs_url,
+                      "Base URL of the docs/ folder for SARIF help links (helpUri = URL/diagnostics.md#e301)")
+        ->capture_default_str();
+    check->add_option("PATH", paths, "Tape files or directories ('-' reads standard input)")->required();
 
     CLI::App* stats = app.add_subcommand("stats", "Statistics of tapes: lengths, pierces, time, extent");
     add_format_option(stats);
@@ -275,6 +400,18 @@ int main(int argc, char** argv) {
     add_profile_option(trace);
     trace->add_option("PATH", trace_path, "Tape file ('-' reads standard input)")->required();
 
+    RenderCliOptions render_opts;
+    CLI::App* render = app.add_subcommand("render", "Draw a tape as SVG (or PNG): motion, pierces, errors, a legend");
+    render->add_option("PATH", render_opts.path, "Tape file ('-' reads standard input)")->required();
+    render->add_option("-o,--output", render_opts.output, "Output file ('-' = stdout; default NAME.svg)");
+    render->add_option("--profile", render_opts.profile, "Built-in profile name or JSON profile file")
+        ->type_name("NAME|FILE");
+    render->add_flag("--png", render_opts.png, "Write PNG (through rsvg-convert; also when OUT ends in .png)");
+    render->add_flag("--no-travel", render_opts.no_travel, "Leave out travel and rapid motion");
+    render->add_option("--width", render_opts.width, "Width of the picture in pixels")
+        ->check(CLI::Range(16.0, 100000.0))
+        ->capture_default_str();
+
     CLI::App* profile = app.add_subcommand("profile", "Show machine and dialect profiles");
     profile->require_subcommand(1);
     CLI::App* show = profile->add_subcommand("show", "Print a profile as JSON (every key)");
@@ -283,15 +420,22 @@ int main(int argc, char** argv) {
         ->type_name("NAME|FILE");
     CLI::App* list = profile->add_subcommand("list", "List the built-in profiles");
 
-    std::string host = "127.0.0.1";
-    int port = 8080;
-    std::string web_root = ESSI_DEFAULT_WEB_ROOT;
-    std::string examples_dir = ESSI_DEFAULT_EXAMPLES_DIR;
-    CLI::App* serve = app.add_subcommand("serve", "Serve the browser viewer and the example tapes over HTTP");
-    serve->add_option("--host", host, "Address to listen on")->capture_default_str();
-    serve->add_option("--port", port, "Port (0 picks a free one)")->check(CLI::Range(0, 65535))->capture_default_str();
-    serve->add_option("--web-root", web_root, "The built viewer (index.html, essi_viewer.js/.wasm)")->capture_default_str();
-    serve->add_option("--examples", examples_dir, "Folder of example tapes served at /examples/")->capture_default_str();
+    essi::native::ServeOptions serve_opts;
+    serve_opts.web_root = ESSI_DEFAULT_WEB_ROOT;
+    serve_opts.examples_dir = ESSI_DEFAULT_EXAMPLES_DIR;
+    CLI::App* serve = app.add_subcommand("serve", "Serve the browser viewer, the example tapes and the check/share API");
+    serve->add_option("--host", serve_opts.host, "Address to listen on")->capture_default_str();
+    serve->add_option("--port", serve_opts.port, "Port (0 picks a free one)")->check(CLI::Range(0, 65535))->capture_default_str();
+    serve->add_option("--web-root", serve_opts.web_root, "The built viewer (index.html, essi_viewer.js/.wasm)")->capture_default_str();
+    serve->add_option("--examples", serve_opts.examples_dir, "Folder of example tapes served at /examples/")->capture_default_str();
+    serve->add_option("--data", serve_opts.data_dir,
+                      "Folder of the share store (SQLite); default $XDG_DATA_HOME/essikit, else ./essi-data")
+        ->type_name("DIR");
+    serve->add_option("--max-body", serve_opts.max_body, "Largest request body in bytes (suffixes KB MB GB: 1024-based)")
+        ->transform(CLI::AsSizeValue(false))
+        ->type_name("SIZE")
+        ->capture_default_str();
+    serve->add_option("--threads", serve_opts.threads, "Request threads (default: cpp-httplib's)")->check(CLI::Range(0, 1024));
 
     try {
         app.parse(argc, argv);
@@ -300,11 +444,12 @@ int main(int argc, char** argv) {
         return rc == 0 ? kExitOk : kExitUsage;
     }
 
-    if (*check) return run_check(paths, format, profile_arg);
+    if (*check) return run_check(paths, check_opts);
     if (*stats) return run_stats(paths, format, profile_arg);
     if (*trace) return run_trace(trace_path, profile_arg);
+    if (*render) return run_render(render_opts);
     if (*show) return run_profile_show(show_arg);
     if (*list) return run_profile_list();
-    if (*serve) return essi::native::run_serve(host, port, web_root, examples_dir);
+    if (*serve) return essi::native::run_serve(serve_opts);
     return kExitUsage;
 }

@@ -25,6 +25,19 @@ double round_for_json(double value) {
     return r == 0 ? 0.0 : r;  // no "-0.0" in reports
 }
 
+void limit_diagnostics(FileReport& file, std::size_t max) {
+    auto& diags = file.result.diagnostics;
+    if (diags.size() <= max) return;
+    for (std::size_t i = max; i < diags.size(); ++i) {
+        switch (diags[i].severity) {
+            case Severity::Error: ++file.omitted_errors; break;
+            case Severity::Warning: ++file.omitted_warnings; break;
+            case Severity::Note: ++file.omitted_notes; break;
+        }
+    }
+    diags.resize(max);
+}
+
 nlohmann::json diagnostic_to_json(const Diagnostic& d) {
     nlohmann::json j = nlohmann::json::object();
     j["severity"] = std::string(severity_name(d.severity));
@@ -62,11 +75,12 @@ nlohmann::json stats_to_json(const Stats& s) {
 nlohmann::json file_report_to_json(const FileReport& file) {
     nlohmann::json j = nlohmann::json::object();
     j["path"] = file.path;
-    j["ok"] = file.result.ok();
+    j["ok"] = file.ok();
     nlohmann::json diags = nlohmann::json::array();
     for (const Diagnostic& d : file.result.diagnostics) diags.push_back(diagnostic_to_json(d));
     j["diagnostics"] = std::move(diags);
     j["stats"] = stats_to_json(file.result.stats);
+    if (file.omitted() > 0) j["diagnostics_omitted"] = file.omitted();
     return j;
 }
 
@@ -76,9 +90,9 @@ nlohmann::json report_to_json(std::span<const FileReport> files, std::string_vie
     std::size_t files_ok = 0, errors = 0, warnings = 0;
     for (const FileReport& f : files) {
         arr.push_back(file_report_to_json(f));
-        if (f.result.ok()) ++files_ok;
-        errors += f.result.count(Severity::Error);
-        warnings += f.result.count(Severity::Warning);
+        if (f.ok()) ++files_ok;
+        errors += f.errors();
+        warnings += f.warnings();
     }
     out["files"] = std::move(arr);
     out["summary"] = {

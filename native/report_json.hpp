@@ -25,7 +25,20 @@ constexpr int kJsonLengthDecimals = 6;
 struct FileReport {
     std::string path;
     CheckResult result;
+    // Diagnostics dropped by `--max-diagnostics` (not in result.diagnostics), by severity. The verdict and the
+    // counts below include them.
+    std::size_t omitted_errors = 0;
+    std::size_t omitted_warnings = 0;
+    std::size_t omitted_notes = 0;
+
+    [[nodiscard]] std::size_t omitted() const { return omitted_errors + omitted_warnings + omitted_notes; }
+    [[nodiscard]] std::size_t errors() const { return result.count(Severity::Error) + omitted_errors; }
+    [[nodiscard]] std::size_t warnings() const { return result.count(Severity::Warning) + omitted_warnings; }
+    [[nodiscard]] bool ok() const { return errors() == 0; }
 };
+
+// Keeps the first `max` diagnostics of `file` (in source order) and counts the rest in omitted_*.
+void limit_diagnostics(FileReport& file, std::size_t max);
 
 // {"severity","code","line","column","message"}
 [[nodiscard]] nlohmann::json diagnostic_to_json(const Diagnostic& d);
@@ -33,7 +46,7 @@ struct FileReport {
 // {"cut_length_mm", ..., "cut_bbox_mm": {...} or null, "end_position_mm": {"x","y"}}
 [[nodiscard]] nlohmann::json stats_to_json(const Stats& s);
 
-// {"path","ok","diagnostics":[...],"stats":{...}}
+// {"path","ok","diagnostics":[...],"stats":{...}} (+ "diagnostics_omitted": N when --max-diagnostics cut some)
 [[nodiscard]] nlohmann::json file_report_to_json(const FileReport& file);
 
 // The whole report of `essi check --format json`:

@@ -26,9 +26,9 @@ std::string count_of(unsigned long long n, std::string_view singular, std::strin
     return std::to_string(n) + " " + std::string(n == 1 ? singular : plural);
 }
 
-std::string verdict(const CheckResult& r) {
-    const std::size_t errors = r.count(Severity::Error);
-    const std::size_t warnings = r.count(Severity::Warning);
+std::string verdict(const FileReport& f) {
+    const std::size_t errors = f.errors();
+    const std::size_t warnings = f.warnings();
     if (errors == 0 && warnings == 0) return "ok";
     std::string s;
     if (errors > 0) s = count_of(errors, "error", "errors");
@@ -73,7 +73,7 @@ std::string file_stats_line(const FileReport& file) {
     const Stats& st = file.result.stats;
     std::string s = file.path;
     s += ": ";
-    s += verdict(file.result);
+    s += verdict(file);
     s += "; cut " + mm(st.cut_length_mm);
     s += ", mark " + mm(st.mark_length_mm);
     s += ", travel " + mm(st.travel_length_mm);
@@ -88,9 +88,9 @@ std::string file_stats_line(const FileReport& file) {
 std::string summary_line(std::span<const FileReport> files, std::string_view profile_name) {
     std::size_t ok = 0, errors = 0, warnings = 0;
     for (const FileReport& f : files) {
-        if (f.result.ok()) ++ok;
-        errors += f.result.count(Severity::Error);
-        warnings += f.result.count(Severity::Warning);
+        if (f.ok()) ++ok;
+        errors += f.errors();
+        warnings += f.warnings();
     }
     std::string s = count_of(files.size(), "file", "files");
     s += " checked (profile ";

@@ -123,13 +123,14 @@ void Machine::run(const Tape& chunk) {
     const std::int32_t* words = chunk.all_words().data();  // the words of block k, walking along
     const std::size_t end = chunk.end_block();
     const std::size_t base = chunk.first_block();
+    const Block* last = nullptr;  // kept as last_block_ when the chunk is done (the chunk's memory goes)
     for (std::size_t k = 0; k < end && !ended_; ++k) {
         const Block& b = chunk.block(k);
         const std::span<const std::int32_t> w(words, static_cast<std::size_t>(b.word_count()));
         words += b.word_count();
         const std::size_t i = base + k;  // the block's index in the whole tape
         if (b.kind == BlockKind::Comment || b.kind == BlockKind::Percent) continue;
-        last_block_ = b;
+        last = &b;
         if (burner_count_ && !(b.has_code() && b.code == kBurnerSpacing && b.kind == BlockKind::FunctionValue)) {
             warn(DiagCode::W212_BurnerCountNotBeforeSpacing, *burner_count_,
                  "burner count (135) is not immediately followed by the burner spacing (136); expected 136+value next");
@@ -165,6 +166,7 @@ void Machine::run(const Tape& chunk) {
                 break;
         }
     }
+    if (last) last_block_ = *last;
 }
 
 // The checks that need the whole program: things opened and never closed, the state at the end.

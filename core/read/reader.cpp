@@ -160,6 +160,7 @@ private:
     std::uint32_t end_line_ = 0;        // line of the block that ended the program
     bool finished_ = false;             // the closing diagnostics have been given
     std::size_t total_blocks_ = 0;      // blocks of all earlier chunks
+    std::size_t chunk_blocks_ = 0;      // blocks in the chunk being filled
     std::uint32_t line_ = 1;
     std::uint32_t line_begin_ = 0;
     std::size_t errors_ = 0;
@@ -202,9 +203,11 @@ void Reader::push_block(std::uint32_t offset, BlockKind kind, std::uint16_t code
                                       "block or after the end"});
         percent_line_ = 0;
     }
-    if (tape().blocks_.size() % Tape::kWordIndexStride == 0)
-        tape().word_index_.push_back(static_cast<std::uint32_t>(tape().words_.size()) - (packed & Block::kWordCountMask));
-    tape().blocks_.push_back(Block{offset, line_, code, kind, packed});
+    Tape& t = *chunk_;
+    if (chunk_blocks_ % Tape::kWordIndexStride == 0)
+        t.word_index_.push_back(static_cast<std::uint32_t>(t.words_.size()) - (packed & Block::kWordCountMask));
+    t.blocks_.push_back(Block{offset, line_, code, kind, packed});
+    ++chunk_blocks_;
     last_line_ = line_;
 }
 
@@ -224,6 +227,7 @@ bool Reader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     chunk.word_index_.clear();
     chunk.diagnostics_.clear();
     chunk.first_block_ = total_blocks_;
+    chunk_blocks_ = 0;
     chunk.has_end_ = false;
     const bool ended_before = ended_;
 
@@ -245,7 +249,7 @@ bool Reader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     const char* data = src_.data();
     const auto size = static_cast<std::uint32_t>(std::min<std::size_t>(src_.size(), std::numeric_limits<std::uint32_t>::max()));
     std::uint32_t pos = pos_;
-    while (pos < size && !stopped_ && !after_end_seen_ && chunk.blocks_.size() < max_blocks) {
+    while (pos < size && !stopped_ && !after_end_seen_ && chunk_blocks_ < max_blocks) {
         std::uint32_t end = pos;
         line_begin_ = pos;
         // The common case first: a block of digits and signs, read in one pass.
@@ -341,11 +345,18 @@ bool Reader::read_plain_line(std::uint32_t begin, std::uint32_t& end) {
     if (p == first || (p != stop && *p != '\n' && *p != '\r')) return false;
     end = static_cast<std::uint32_t>(p - base);
     const std::size_t words_before = tape().words_.size();
-    tape().words_.insert(tape().words_.end(), words, words + n);
+    chunk_->words_.insert(chunk_->words_.end(), words, words + n);
     // The two common shapes go straight in; everything else is classified in full.
-    if (lead_digits == 0 && (n == 2 || n == 5 || n == 6) && program_started_) {
-        push_block(begin, BlockKind::Motion, Block::kNoCode, static_cast<std::uint8_t>(n | sign_flags));
-        return true;
+    if (program_started_) {
+        if (lead_digits == 0 && (n == 2 || n == 5 || n == 6)) {
+            push_block(begin, BlockKind::Motion, Block::kNoCode, static_cast<std::uint8_t>(n | sign_flags));
+            return true;
+        }
+        if (n == 0 && lead_digits <= kMaxFunctionDigits && lead != kIgnoreOnCode && lead != kIgnoreOffCode &&
+            !end_function_[lead]) {
+            push_block(begin, BlockKind::Function, static_cast<std::uint16_t>(lead), 0);
+            return true;
+        }
     }
     LineParse lp;
     lp.lead_digits = lead_digits;
@@ -605,6 +616,37 @@ bool Tape::has_errors() const {
 std::size_t Tape::memory_bytes() const {
     return blocks_.capacity() * sizeof(Block) + words_.capacity() * sizeof(std::int32_t) +
            word_index_.capacity() * sizeof(std::uint32_t);
+}
+
+void Tape::append(const Tape& chunk) {
+    if (blocks_.empty()) first_block_ = chunk.first_block_;
+    const std::size_t before = blocks_.size();
+    const bool ended_before = has_end_;
+    blocks_.insert(blocks_.end(), chunk.blocks_.begin(), chunk.blocks_.end());
+    // The sparse word index of the whole: one entry per kWordIndexStride blocks, counted from block 0.
+    std::size_t w = words_.size();
+    for (std::size_t k = 0; k < chunk.blocks_.size(); ++k) {
+        if ((before + k) % kWordIndexStride == 0) word_index_.push_back(static_cast<std::uint32_t>(w));
+        w += chunk.blocks_[k].word_count();
+    }
+    words_.insert(words_.end(), chunk.words_.begin(), chunk.words_.end());
+    diagnostics_.insert(diagnostics_.end(), chunk.diagnostics_.begin(), chunk.diagnostics_.end());
+    // Program blocks: those up to the end block (a chunk after the end has end_block() == 0).
+    if (!ended_before) end_block_ = before + chunk.end_block_;
+    has_end_ = has_end_ || chunk.has_end_;
+}
+
+void Tape::reserve(std::size_t blocks, std::size_t words) {
+    blocks_.reserve(blocks);
+    words_.reserve(words);
+    word_index_.reserve(blocks / kWordIndexStride + 1);
+}
+
+void Tape::shrink_to_fit() {
+    blocks_.shrink_to_fit();
+    words_.shrink_to_fit();
+    word_index_.shrink_to_fit();
+    diagnostics_.shrink_to_fit();
 }
 
 Tape read_tape(std::string_view bytes, const Profile& profile) {

@@ -11,19 +11,22 @@ namespace essi {
 
 void StatsSink::on_motion(const MotionRecord& m) {
     ++stats_.motions;
-    // The exact box of curves costs trigonometry: computed once, used for both boxes.
-    Box box;
+    // A line's box is its end points; the exact box of a curve costs more: computed once, used twice.
     if (m.curve == CurveKind::Line) {
-        box.add(m.start);
-        box.add(m.end);
+        stats_.motion_bbox.add(m.start);
+        stats_.motion_bbox.add(m.end);
+        if (m.kind == MotionKind::Cut) {
+            stats_.cut_bbox.add(m.start);
+            stats_.cut_bbox.add(m.end);
+        }
     } else {
-        box = bounding_box(m);
+        const Box box = bounding_box(m);
+        stats_.motion_bbox.add(box);
+        if (m.kind == MotionKind::Cut) stats_.cut_bbox.add(box);
     }
-    stats_.motion_bbox.add(box);
     switch (m.kind) {
         case MotionKind::Cut:
             stats_.cut_length_mm += m.length_mm;
-            stats_.cut_bbox.add(box);
             break;
         case MotionKind::Mark: stats_.mark_length_mm += m.length_mm; break;
         case MotionKind::Rapid:

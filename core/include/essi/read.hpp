@@ -78,6 +78,15 @@ public:
     // Bytes held by blocks, words and the index (capacity, not size): the memory a tape costs.
     [[nodiscard]] std::size_t memory_bytes() const;
 
+    // Appends the next chunk of the same tape (TapeReader, chunks in order): its blocks, words and
+    // diagnostics; afterwards this tape equals read_tape() of the bytes read so far. Appending to an empty
+    // tape takes the chunk's first_block().
+    void append(const Tape& chunk);
+    // Reserves room for `blocks` blocks and `words` words (before appending chunks).
+    void reserve(std::size_t blocks, std::size_t words);
+    // Frees the room reserved but not used (after the last append).
+    void shrink_to_fit();
+
     // Walks the words of consecutive blocks without the index.
     class WordCursor {
     public:

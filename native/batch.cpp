@@ -1,0 +1,154 @@
+#include "batch.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <system_error>
+
+#include "file_io.hpp"
+#include "pipelined_check.hpp"
+#include "thread_pool.hpp"
+
+namespace essi::native {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> default_tape_extensions() { return {".esi", ".essi", ".ess", ".nc", ".txt"}; }
+
+std::vector<std::string> parse_extension_list(std::string_view list) {
+    std::vector<std::string> out;
+    std::string cur;
+    auto flush = [&] {
+        if (cur.empty() || cur == ".") {
+            cur.clear();
+            return;
+        }
+        if (cur[0] != '.') cur.insert(cur.begin(), '.');
+        if (std::find(out.begin(), out.end(), cur) == out.end()) out.push_back(cur);
+        cur.clear();
+    };
+    for (char c : list) {
+        if (c == ',' || c == ' ' || c == '\t' || c == ';') {
+            flush();
+        } else {
+            cur += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        }
+    }
+    flush();
+    return out;
+}
+
+bool looks_like_essi(std::string_view head) {
+    if (head.find('\0') != std::string_view::npos) return false;
+    // Skip a UTF-8 BOM (a tape written by an editor).
+    if (head.size() >= 3 && head.substr(0, 3) == "\xEF\xBB\xBF") head.remove_prefix(3);
+    // A cut-off last line says nothing: drop it when the head is a full kSniffBytes.
+    if (head.size() >= kSniffBytes) {
+        const std::size_t nl = head.find_last_of("\r\n");
+        if (nl != std::string_view::npos) head = head.substr(0, nl + 1);
+    }
+    std::size_t lines = 0, good = 0;
+    bool digit_seen = false, in_comment = false;
+    std::size_t pos = 0;
+    while (pos < head.size()) {
+        std::size_t end = head.find_first_of("\r\n", pos);
+        if (end == std::string_view::npos) end = head.size();
+        std::string_view line = head.substr(pos, end - pos);
+        pos = end + 1;
+        // Trim spaces and tabs.
+        while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
+        while (!line.empty() && (line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
+        if (line.empty()) continue;
+        if (in_comment) {
+            if (line == "4") in_comment = false;
+            continue;
+        }
+        if (line == "3") {  // ignore ON: a comment section follows
+            in_comment = true;
+            ++lines;
+            ++good;
+            digit_seen = true;
+            continue;
+        }
+        ++lines;
+        if (line == "%" || line == "/") {
+            ++good;
+            continue;
+        }
+        const bool all_essi = std::all_of(line.begin(), line.end(), [](char c) {
+            return c == '+' || c == '-' || (c >= '0' && c <= '9') || c == ' ' || c == '\t';
+        });
+        if (all_essi) {
+            ++good;
+            if (std::any_of(line.begin(), line.end(), [](char c) { return c >= '0' && c <= '9'; })) digit_seen = true;
+        }
+    }
+    return lines >= 2 && digit_seen && good * 10 >= lines * 8;
+}
+
+bool sniff_tape_file(const std::string& path) {
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+    if (!f) return false;
+    char buf[kSniffBytes];
+    const std::size_t n = std::fread(buf, 1, sizeof buf, f.get());
+    return looks_like_essi(std::string_view(buf, n));
+}
+
+std::vector<std::string> expand_paths(const std::vector<std::string>& args, const ExpandOptions& options,
+                                      std::vector<std::string>& errors) {
+    std::vector<std::string> files;
+    for (const std::string& path : args) {
+        std::error_code ec;
+        if (path == "-" || !fs::is_directory(path, ec)) {
+            files.push_back(path);
+            continue;
+        }
+        std::vector<std::string> found;
+        for (fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
+             !ec && it != end; it.increment(ec)) {
+            std::error_code entry_ec;
+            if (!it->is_regular_file(entry_ec)) continue;
+            std::string ext = it->path().extension().string();
+            std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+            const bool known =
+                std::find(options.extensions.begin(), options.extensions.end(), ext) != options.extensions.end();
+            // Sniff only files whose extension says nothing: no extension, or one that is not a known text
+            // or data format is still worth a look (the first KB decides).
+            if (known || (options.sniff && sniff_tape_file(it->path().string()))) found.push_back(it->path().string());
+        }
+        if (ec) errors.push_back("cannot read " + path + ": " + ec.message());
+        std::sort(found.begin(), found.end());
+        files.insert(files.end(), found.begin(), found.end());
+    }
+    return files;
+}
+
+void check_batch(const std::vector<std::string>& files, const Profile& profile, const BatchOptions& options,
+                 const std::function<void(BatchItem&&)>& emit) {
+    std::vector<BatchItem> items(files.size());
+    // A pipelined check needs a second thread: use it when there is a core to spare for it.
+    const bool pipelined = options.jobs >= 2;
+    auto work = [&](std::size_t i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        BatchItem& item = items[i];
+        item.report.path = files[i];
+        ReadResult file = read_whole_file(files[i]);
+        if (!file.ok) {
+            item.error = file.error;
+        } else {
+            item.read_ok = true;
+            item.report.result = pipelined ? check_tape_pipelined(file.bytes, profile) : check_tape(file.bytes, profile);
+            limit_diagnostics(item.report, options.max_diagnostics);
+        }
+        item.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
+    for_each_ordered(files.size(), options.jobs, work, [&](std::size_t i) {
+        emit(std::move(items[i]));
+        items[i] = BatchItem{};  // free it now
+    });
+}
+
+}  // namespace essi::native

@@ -1,0 +1,321 @@
+#include "formats.hpp"
+
+#include <cctype>
+#include <cstdio>
+#include <map>
+
+#include "essi/diagnostics.hpp"
+#include "text_report.hpp"
+
+#ifndef ESSIKIT_VERSION
+#define ESSIKIT_VERSION "0.1.0"
+#endif
+
+namespace essi::native {
+
+namespace {
+
+std::string plural(std::size_t n, std::string_view one, std::string_view many) {
+    return std::to_string(n) + " " + std::string(n == 1 ? one : many);
+}
+
+std::string omitted_text(const FileReport& f) {
+    return plural(f.omitted(), "more diagnostic", "more diagnostics") + " not shown (--max-diagnostics " +
+           std::to_string(f.result.diagnostics.size()) + ")";
+}
+
+std::string verdict_text(const FileReport& f) {
+    std::string s = plural(f.errors(), "error", "errors");
+    s += ", " + plural(f.warnings(), "warning", "warnings");
+    return s;
+}
+
+std::string code_anchor(DiagCode c) {
+    std::string s = code_name(c);
+    for (char& ch : s) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    return s;
+}
+
+std::string sarif_level(Severity s) {
+    switch (s) {
+        case Severity::Error: return "error";
+        case Severity::Warning: return "warning";
+        case Severity::Note: return "note";
+    }
+    return "note";
+}
+
+std::string docs_base(std::string_view docs_url) {
+    std::string base(docs_url);
+    if (!base.empty() && base.back() != '/') base += '/';
+    return base;
+}
+
+}  // namespace
+
+bool file_fails(const FileReport& file, FailOn fail_on) {
+    if (fail_on == FailOn::Warning) return file.errors() + file.warnings() > 0;
+    return file.errors() > 0;
+}
+
+void BatchTotals::add(const BatchItem& item, FailOn fail_on) {
+    if (!item.read_ok) {
+        ++unreadable;
+        return;
+    }
+    ++files;
+    if (item.report.ok()) ++files_ok;
+    errors += item.report.errors();
+    warnings += item.report.warnings();
+    if (file_fails(item.report, fail_on)) ++failed;
+}
+
+std::string batch_summary_line(const BatchTotals& t, std::string_view profile_name, double seconds) {
+    std::string s = plural(t.files, "file", "files") + " checked";
+    s += " (profile " + std::string(profile_name) + "): ";
+    s += std::to_string(t.files_ok) + " ok, " + std::to_string(t.files - t.files_ok) + " with errors; ";
+    s += plural(t.errors, "error", "errors") + ", " + plural(t.warnings, "warning", "warnings");
+    if (t.unreadable > 0) s += "; " + std::to_string(t.unreadable) + " unreadable";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "; %.3f s", seconds);
+    s += buf;
+    return s;
+}
+
+std::string text_file_block(const BatchItem& item, bool quiet) {
+    const FileReport& r = item.report;
+    std::string text;
+    for (const Diagnostic& d : r.result.diagnostics) {
+        if (quiet && d.severity == Severity::Note) continue;
+        text += diagnostic_line(r.path, d);
+        text += '\n';
+    }
+    if (r.omitted() > 0) text += r.path + ": note: " + omitted_text(r) + "\n";
+    if (!quiet) {
+        text += file_stats_line(r);
+        text += '\n';
+    }
+    return text;
+}
+
+// --- GitHub ----------------------------------------------------------------------------------------------
+std::string github_escape_data(std::string_view s) {
+    std::string out;
+    for (char c : s) {
+        if (c == '%') out += "%25";
+        else if (c == '\r') out += "%0D";
+        else if (c == '\n') out += "%0A";
+        else out += c;
+    }
+    return out;
+}
+
+std::string github_escape_property(std::string_view s) {
+    std::string out;
+    for (char c : s) {
+        if (c == '%') out += "%25";
+        else if (c == '\r') out += "%0D";
+        else if (c == '\n') out += "%0A";
+        else if (c == ':') out += "%3A";
+        else if (c == ',') out += "%2C";
+        else out += c;
+    }
+    return out;
+}
+
+std::string github_file_block(const BatchItem& item) {
+    const FileReport& r = item.report;
+    const std::string file = github_escape_property(r.path);
+    if (!item.read_ok)
+        return "::error file=" + file + ",title=essi::" + github_escape_data("cannot read " + r.path + ": " + item.error) +
+               "\n";
+    std::string out;
+    for (const Diagnostic& d : r.result.diagnostics) {
+        out += d.severity == Severity::Error ? "::error" : d.severity == Severity::Warning ? "::warning" : "::notice";
+        out += " file=" + file;
+        if (d.line > 0) {
+            out += ",line=" + std::to_string(d.line);
+            if (d.column > 0) out += ",col=" + std::to_string(d.column);
+        }
+        out += ",title=" + code_name(d.code);
+        out += "::" + github_escape_data(d.message) + "\n";
+    }
+    if (r.omitted() > 0) out += "::notice file=" + file + ",title=essi::" + github_escape_data(omitted_text(r)) + "\n";
+    return out;
+}
+
+// --- JUnit -----------------------------------------------------------------------------------------------
+std::string xml_escape(std::string_view s) {
+    std::string out;
+    out.reserve(s.size());
+    for (char c : s) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&apos;"; break;
+            default:
+                // XML 1.0 allows no control characters but tab, CR and LF.
+                if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') out += '?';
+                else out += c;
+        }
+    }
+    return out;
+}
+
+std::string junit_report(std::span<const BatchItem> items, std::string_view profile_name, double seconds,
+                         FailOn fail_on) {
+    std::size_t failures = 0, errors = 0;
+    for (const BatchItem& it : items) {
+        if (!it.read_ok) ++errors;
+        else if (file_fails(it.report, fail_on)) ++failures;
+    }
+    char time_buf[64];
+    auto fmt_time = [&](double s) {
+        std::snprintf(time_buf, sizeof time_buf, "%.6f", s);
+        return std::string(time_buf);
+    };
+    const std::string counts = "tests=\"" + std::to_string(items.size()) + "\" failures=\"" +
+                               std::to_string(failures) + "\" errors=\"" + std::to_string(errors) + "\"";
+    std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    x += "<testsuites name=\"essi check\" " + counts + " time=\"" + fmt_time(seconds) + "\">\n";
+    x += "  <testsuite name=\"essi check (profile " + xml_escape(profile_name) + ")\" " + counts +
+         " skipped=\"0\" time=\"" + fmt_time(seconds) + "\">\n";
+    x += "    <properties>\n      <property name=\"profile\" value=\"" + xml_escape(profile_name) +
+         "\"/>\n      <property name=\"essi.version\" value=\"" ESSIKIT_VERSION "\"/>\n    </properties>\n";
+    for (const BatchItem& it : items) {
+        const FileReport& r = it.report;
+        const std::string path = xml_escape(r.path);
+        x += "    <testcase classname=\"essi.check\" name=\"" + path + "\" file=\"" + path + "\" time=\"" +
+             fmt_time(it.seconds) + "\"";
+        if (!it.read_ok) {
+            x += ">\n      <error type=\"io\" message=\"" + xml_escape("cannot read " + r.path + ": " + it.error) +
+                 "\"/>\n    </testcase>\n";
+            continue;
+        }
+        std::string diags;
+        for (const Diagnostic& d : r.result.diagnostics) diags += diagnostic_line(r.path, d) + "\n";
+        if (r.omitted() > 0) diags += r.path + ": note: " + omitted_text(r) + "\n";
+        const std::string stats = file_stats_line(r);
+        if (file_fails(r, fail_on)) {
+            std::string type;
+            for (const Diagnostic& d : r.result.diagnostics)
+                if (d.severity == Severity::Error || (fail_on == FailOn::Warning && d.severity == Severity::Warning)) {
+                    type = code_name(d.code);
+                    break;
+                }
+            x += ">\n      <failure message=\"" + xml_escape(verdict_text(r)) + "\" type=\"" +
+                 xml_escape(type.empty() ? "essi" : type) + "\">" + xml_escape(diags) + "</failure>\n";
+            x += "      <system-out>" + xml_escape(stats) + "</system-out>\n    </testcase>\n";
+        } else {
+            x += ">\n      <system-out>" + xml_escape(diags + stats) + "</system-out>\n    </testcase>\n";
+        }
+    }
+    x += "  </testsuite>\n</testsuites>\n";
+    return x;
+}
+
+// --- SARIF -----------------------------------------------------------------------------------------------
+std::string path_to_uri(std::string_view path) {
+    std::string p(path);
+    for (char& c : p)
+        if (c == '\\') c = '/';
+    while (p.size() > 2 && p.compare(0, 2, "./") == 0) p.erase(0, 2);
+    std::string out;
+    if (!p.empty() && p[0] == '/') out = "file://";
+    static const char* hex = "0123456789ABCDEF";
+    for (unsigned char c : p) {
+        if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') {
+            out += static_cast<char>(c);
+        } else {
+            out += '%';
+            out += hex[c >> 4];
+            out += hex[c & 15];
+        }
+    }
+    return out;
+}
+
+nlohmann::json sarif_rules(std::string_view docs_url) {
+    const std::string base = docs_base(docs_url);
+    nlohmann::json rules = nlohmann::json::array();
+    for (DiagCode c : all_codes()) {
+        const std::string id = code_name(c);
+        const std::string summary(code_summary(c));
+        const std::string uri = base + "diagnostics.md#" + code_anchor(c);
+        const int group = static_cast<int>(c) / 100;
+        const char* area = group == 1 ? "read" : group == 2 ? "interpret" : group == 3 ? "geometry" : "machine";
+        rules.push_back({
+            {"id", id},
+            {"shortDescription", {{"text", summary}}},
+            {"fullDescription", {{"text", summary}}},
+            {"help", {{"text", summary + " See " + uri}, {"markdown", summary + " See [" + id + "](" + uri + ")."}}},
+            {"helpUri", uri},
+            {"defaultConfiguration", {{"level", sarif_level(default_severity(c))}}},
+            {"properties", {{"tags", {"essi", area}}}},
+        });
+    }
+    return rules;
+}
+
+nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view profile_name, std::string_view docs_url) {
+    std::map<std::string, std::size_t> rule_index;
+    {
+        std::size_t k = 0;
+        for (DiagCode c : all_codes()) rule_index[code_name(c)] = k++;
+    }
+    nlohmann::json results = nlohmann::json::array();
+    nlohmann::json notifications = nlohmann::json::array();
+    bool all_read = true;
+    for (const BatchItem& it : items) {
+        const FileReport& r = it.report;
+        const std::string uri = path_to_uri(r.path);
+        nlohmann::json artifact = {{"artifactLocation", {{"uri", uri}}}};
+        if (!it.read_ok) {
+            all_read = false;
+            notifications.push_back({{"level", "error"},
+                                     {"message", {{"text", "cannot read " + r.path + ": " + it.error}}},
+                                     {"locations", {{{"physicalLocation", artifact}}}}});
+            continue;
+        }
+        for (const Diagnostic& d : r.result.diagnostics) {
+            const std::string id = code_name(d.code);
+            nlohmann::json phys = artifact;
+            if (d.line > 0) {
+                phys["region"] = {{"startLine", d.line}};
+                if (d.column > 0) phys["region"]["startColumn"] = d.column;
+            }
+            nlohmann::json res = {{"ruleId", id},
+                                  {"level", sarif_level(d.severity)},
+                                  {"message", {{"text", d.message}}},
+                                  {"locations", {{{"physicalLocation", phys}}}}};
+            if (auto f = rule_index.find(id); f != rule_index.end()) res["ruleIndex"] = f->second;
+            results.push_back(std::move(res));
+        }
+        if (r.omitted() > 0)
+            notifications.push_back({{"level", "note"},
+                                     {"message", {{"text", r.path + ": " + omitted_text(r)}}},
+                                     {"locations", {{{"physicalLocation", artifact}}}}});
+    }
+    const std::string base = docs_base(docs_url);
+    nlohmann::json invocation = {{"executionSuccessful", all_read}};
+    if (!notifications.empty()) invocation["toolExecutionNotifications"] = std::move(notifications);
+    nlohmann::json run = {
+        {"tool",
+         {{"driver",
+           {{"name", "essi"},
+            {"fullName", "essikit essi check (ESSI / ISO 6582 cutting tapes)"},
+            {"version", ESSIKIT_VERSION},
+            {"semanticVersion", ESSIKIT_VERSION},
+            {"informationUri", base + "cli.md"},
+            {"rules", sarif_rules(docs_url)}}}}},
+        {"invocations", {std::move(invocation)}},
+        {"results", std::move(results)},
+        {"columnKind", "utf16CodeUnits"},
+        {"properties", {{"profile", std::string(profile_name)}}},
+    };
+    return {{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"}, {"version", "2.1.0"}, {"runs", {std::move(run)}}};
+}
+
+}  // namespace essi::native

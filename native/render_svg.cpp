@@ -1,0 +1,212 @@
+#include "render_svg.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <vector>
+
+#include "essi/geom.hpp"
+#include "essi/read.hpp"
+#include "formats.hpp"
+#include "text_report.hpp"
+
+namespace essi::native {
+
+namespace {
+
+// A number for SVG: 3 decimals (1 µm), trailing zeros dropped.
+std::string num(double v) {
+    if (!std::isfinite(v)) v = 0;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.3f", v);
+    std::string s = buf;
+    if (s.find('.') != std::string::npos) {
+        while (s.back() == '0') s.pop_back();
+        if (s.back() == '.') s.pop_back();
+    }
+    if (s == "-0") s = "0";
+    return s;
+}
+
+// Collects the drawing: one path per motion kind, pierce points, and the position at each source line.
+class SvgSink : public MotionSink {
+public:
+    explicit SvgSink(double tolerance) : tolerance_(tolerance) {}
+
+    void on_motion(const MotionRecord& m) override {
+        if (first_line_pos_.find(m.line) == first_line_pos_.end()) first_line_pos_.emplace(m.line, m.start);
+        last_end_ = m.end;
+        if (m.kind == MotionKind::Cut && pierce_pending_) {
+            pierces_.push_back(m.start);
+            pierce_pending_ = false;
+        }
+        const auto k = static_cast<std::size_t>(m.kind);
+        std::string& d = paths_[k];
+        if (!has_last_[k] || !(last_[k] == m.start)) {
+            d += "M" + num(m.start.x) + " " + num(-m.start.y);
+        }
+        points_.clear();
+        flatten(m, tolerance_, points_, false);
+        for (const Point& p : points_) d += "L" + num(p.x) + " " + num(-p.y);
+        last_[k] = m.end;
+        has_last_[k] = true;
+    }
+
+    void on_event(const MachineEvent& e) override {
+        const bool cutting_after = (e.tools_after & kCuttingTools) != 0;
+        if (cutting_after && !cutting_) pierce_pending_ = true;
+        if (!cutting_after) pierce_pending_ = false;
+        cutting_ = cutting_after;
+    }
+
+    // Where the block at `line` starts: the start of the first motion at or after that line, else the end of
+    // the last motion.
+    [[nodiscard]] Point position_at(std::uint32_t line) const {
+        auto it = first_line_pos_.lower_bound(line);
+        return it == first_line_pos_.end() ? last_end_ : it->second;
+    }
+
+    std::array<std::string, 4> paths_;  // by MotionKind: rapid, travel, cut, mark
+    std::vector<Point> pierces_;
+
+private:
+    double tolerance_;
+    std::array<Point, 4> last_{};
+    std::array<bool, 4> has_last_{};
+    std::vector<Point> points_;
+    std::map<std::uint32_t, Point> first_line_pos_;
+    Point last_end_;
+    bool cutting_ = false;
+    bool pierce_pending_ = false;
+};
+
+}  // namespace
+
+RenderResult render_svg(std::string_view bytes, const Profile& profile, const RenderOptions& options) {
+    RenderResult out;
+    // Pass 1: the check (diagnostics, stats, extent).
+    out.result = check_tape(bytes, profile);
+    const Stats& st = out.result.stats;
+    Box box = st.motion_bbox;
+    box.add(st.cut_bbox);
+    if (box.empty) box.add(Point{0, 0});
+    double w = box.max_x - box.min_x, h = box.max_y - box.min_y;
+    const double extent = std::max({w, h, 10.0});
+    const double tolerance = std::max(extent / 4000.0, std::max(profile.chord_tolerance_mm, kMinChordTolerance));
+
+    // Pass 2: the drawing (the same pipeline with a sink; its result is the same as pass 1's).
+    SvgSink sink(tolerance);
+    {
+        TapeChecker checker(bytes, profile, &sink);
+        TapeReader reader(bytes, profile);
+        Tape chunk;
+        while (reader.read_chunk(chunk, kCheckChunkBlocks)) checker.check_chunk(chunk);
+        (void)checker.finish();
+    }
+
+    const double margin = std::max(extent * 0.05, 1.0);
+    const double font = extent * 0.022;
+    const double legend_h = font * 4.6;
+    const double vx = box.min_x - margin, vy = -box.max_y - margin;
+    const double vw = w + 2 * margin, vh = h + 2 * margin + legend_h;
+    const double height_px = std::max(1.0, std::round(options.width_px * vh / vw));
+    const double marker_r = extent * 0.006;
+
+    const std::size_t errors = out.result.count(Severity::Error), warnings = out.result.count(Severity::Warning);
+    std::string s;
+    s.reserve(bytes.size() * 2 + 4096);
+    s += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    s += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + num(options.width_px) + "\" height=\"" +
+         num(height_px) + "\" viewBox=\"" + num(vx) + " " + num(vy) + " " + num(vw) + " " + num(vh) +
+         "\" data-generator=\"essi render\">\n";
+    s += "<title>" + xml_escape(options.title) + "</title>\n";
+    s += "<rect id=\"background\" x=\"" + num(vx) + "\" y=\"" + num(vy) + "\" width=\"" + num(vw) + "\" height=\"" +
+         num(vh) + "\" fill=\"#ffffff\"/>\n";
+    // Machine y points up: every y below is negated.
+    s += "<g id=\"drawing\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+    struct Layer {
+        MotionKind kind;
+        const char* name;
+        std::string_view color;
+        const char* extra;
+    };
+    const Layer layers[] = {
+        {MotionKind::Rapid, "rapid", kSvgRapidColor, " stroke-width=\"1\" stroke-dasharray=\"4 3\""},
+        {MotionKind::Travel, "travel", kSvgTravelColor, " stroke-width=\"1\" stroke-dasharray=\"2 2\""},
+        {MotionKind::Mark, "mark", kSvgMarkColor, " stroke-width=\"1.5\""},
+        {MotionKind::Cut, "cut", kSvgCutColor, " stroke-width=\"2\""},
+    };
+    for (const Layer& l : layers) {
+        const std::string& d = sink.paths_[static_cast<std::size_t>(l.kind)];
+        if (d.empty()) continue;
+        if (!options.show_travel && (l.kind == MotionKind::Rapid || l.kind == MotionKind::Travel)) continue;
+        s += "<path id=\"" + std::string(l.name) + "\" class=\"" + l.name + "\" stroke=\"" + std::string(l.color) +
+             "\"" + l.extra + " vector-effect=\"non-scaling-stroke\" d=\"" + d + "\"/>\n";
+    }
+    s += "</g>\n<g id=\"pierces\" fill=\"none\" stroke=\"" + std::string(kSvgPierceColor) + "\" stroke-width=\"1.5\">\n";
+    for (const Point& p : sink.pierces_)
+        s += "<circle class=\"pierce\" cx=\"" + num(p.x) + "\" cy=\"" + num(-p.y) + "\" r=\"" + num(marker_r) +
+             "\" vector-effect=\"non-scaling-stroke\"/>\n";
+    s += "</g>\n<g id=\"diagnostics\" fill=\"none\" stroke-width=\"2\">\n";
+    for (const Diagnostic& d : out.result.diagnostics) {
+        if (d.severity == Severity::Note) continue;
+        const Point p = sink.position_at(d.line);
+        const bool error = d.severity == Severity::Error;
+        const double r = marker_r * 2;
+        const std::string x = num(p.x), y = num(-p.y);
+        s += "<g class=\"diagnostic " + std::string(error ? "error" : "warning") + "\" data-code=\"" +
+             code_name(d.code) + "\" data-line=\"" + std::to_string(d.line) + "\" data-x=\"" + num(p.x) +
+             "\" data-y=\"" + num(p.y) + "\" stroke=\"" + std::string(error ? kSvgErrorColor : kSvgWarningColor) +
+             "\"><title>" + xml_escape(diagnostic_line(options.title, d)) + "</title>";
+        s += "<circle cx=\"" + x + "\" cy=\"" + y + "\" r=\"" + num(r) + "\" vector-effect=\"non-scaling-stroke\"/>";
+        if (error)
+            s += "<path d=\"M" + num(p.x - r) + " " + num(-p.y - r) + "L" + num(p.x + r) + " " + num(-p.y + r) + "M" +
+                 num(p.x - r) + " " + num(-p.y + r) + "L" + num(p.x + r) + " " + num(-p.y - r) +
+                 "\" vector-effect=\"non-scaling-stroke\"/>";
+        s += "</g>\n";
+    }
+    s += "</g>\n";
+
+    // Legend: below the drawing.
+    const double lx = vx + margin * 0.5;
+    double ly = -box.min_y + margin + font * 1.2;
+    char timebuf[32];
+    std::snprintf(timebuf, sizeof timebuf, "%.1f", st.estimated_time_s);
+    char cutbuf[64];
+    std::snprintf(cutbuf, sizeof cutbuf, "%.3f", st.cut_length_mm);
+    s += "<g id=\"legend\" font-family=\"sans-serif\" font-size=\"" + num(font) + "\" fill=\"#202020\">\n";
+    s += "<text id=\"legend-file\" x=\"" + num(lx) + "\" y=\"" + num(ly) + "\" font-weight=\"bold\">" +
+         xml_escape(options.title) + "</text>\n";
+    ly += font * 1.3;
+    s += "<text id=\"legend-numbers\" x=\"" + num(lx) + "\" y=\"" + num(ly) + "\" data-cut-length-mm=\"" + cutbuf +
+         "\" data-pierces=\"" + std::to_string(st.pierces) + "\" data-time-s=\"" + timebuf + "\" data-errors=\"" +
+         std::to_string(errors) + "\" data-warnings=\"" + std::to_string(warnings) + "\">cut " + cutbuf + " mm, " +
+         std::to_string(st.pierces) + (st.pierces == 1 ? " pierce" : " pierces") + ", time " +
+         format_duration(st.estimated_time_s) + ", " + std::to_string(errors) + (errors == 1 ? " error" : " errors") +
+         ", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings") + "</text>\n";
+    ly += font * 1.3;
+    // The key: a short sample line and a name per layer.
+    double kx = lx;
+    const double sample = font * 2;
+    auto key = [&](std::string_view name, std::string_view color, const char* dash) {
+        s += "<g class=\"key\" data-kind=\"" + std::string(name) + "\"><path d=\"M" + num(kx) + " " + num(ly - font * 0.35) +
+             "h" + num(sample) + "\" stroke=\"" + std::string(color) + "\" stroke-width=\"2\"" + dash +
+             " vector-effect=\"non-scaling-stroke\"/><text x=\"" + num(kx + sample + font * 0.3) + "\" y=\"" + num(ly) +
+             "\">" + std::string(name) + "</text></g>\n";
+        kx += sample + font * (1.0 + 0.62 * static_cast<double>(name.size()));
+    };
+    key("cut", kSvgCutColor, "");
+    key("mark", kSvgMarkColor, "");
+    key("travel", kSvgTravelColor, " stroke-dasharray=\"2 2\"");
+    key("rapid", kSvgRapidColor, " stroke-dasharray=\"4 3\"");
+    key("pierce", kSvgPierceColor, "");
+    key("error", kSvgErrorColor, "");
+    key("warning", kSvgWarningColor, "");
+    s += "</g>\n</svg>\n";
+    out.svg = std::move(s);
+    return out;
+}
+
+}  // namespace essi::native

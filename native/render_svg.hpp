@@ -1,0 +1,38 @@
+// `essi render`: a tape as an SVG picture (preview next to a CI failure). Cut, mark, travel and rapid motion in
+// their colours, pierce markers, errors and warnings marked where their block starts, and a legend with the file
+// name and the key numbers (cut length, pierces, time). Machine y points up (the SVG is flipped).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "essi/profile.hpp"
+#include "essi/report.hpp"
+
+namespace essi::native {
+
+// The colours (also used by the tests and docs/cli.md).
+constexpr std::string_view kSvgCutColor = "#d62728";
+constexpr std::string_view kSvgMarkColor = "#1f77b4";
+constexpr std::string_view kSvgTravelColor = "#7f7f7f";
+constexpr std::string_view kSvgRapidColor = "#bcbd22";
+constexpr std::string_view kSvgPierceColor = "#ff7f0e";
+constexpr std::string_view kSvgErrorColor = "#e000e0";
+constexpr std::string_view kSvgWarningColor = "#e6a100";
+
+struct RenderOptions {
+    std::string title;             // shown in the legend (the file name)
+    double width_px = 1200;        // the SVG's width attribute; height follows the aspect ratio
+    bool show_travel = true;       // travel and rapid motion
+};
+
+struct RenderResult {
+    std::string svg;
+    CheckResult result;  // the check of the tape (diagnostics, stats)
+};
+
+// Checks the tape and draws it. Arcs and parabolas are flattened to polylines within a tolerance of
+// 1/4000 of the drawing's extent (at least the profile's chord tolerance).
+[[nodiscard]] RenderResult render_svg(std::string_view bytes, const Profile& profile, const RenderOptions& options);
+
+}  // namespace essi::native

@@ -1,0 +1,15 @@
+// SHA-256 (FIPS 180-4) through OpenSSL's EVP interface (Debian libssl-dev): the content address of shared tapes.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace essi::native {
+
+// The digest of `bytes` as 64 lower-case hex digits.
+[[nodiscard]] std::string sha256_hex(std::string_view bytes);
+
+// True for 64 lower-case hex digits (a share id).
+[[nodiscard]] bool is_sha256_hex(std::string_view s);
+
+}  // namespace essi::native
