@@ -4,6 +4,7 @@
 // end of the program, and the % mark.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstring>
 #include <cstdio>
 #include <limits>
@@ -85,6 +86,46 @@ ByteCounts count_bytes(std::string_view s) {
         n.signs += (s[i] == '+') | (s[i] == '-');
     }
     return n;
+}
+
+// Reads the run of decimal digits at p (p < stop): returns how many there are and, when at most
+// kMaxWordDigits, their value. Eight bytes at a time without a branch per digit (a tape's numbers have
+// every length from 0 to 6 digits, so a digit loop mispredicts its exit on almost every word).
+inline int read_digits(const unsigned char* p, const unsigned char* stop, std::uint32_t& value) {
+    if (stop - p >= 8) {
+        std::uint64_t bytes;
+        std::memcpy(&bytes, p, 8);  // little-endian: the first character is the lowest byte
+        constexpr std::uint64_t kHigh = 0xF0F0F0F0F0F0F0F0ULL, kThrees = 0x3030303030303030ULL;
+        // Zero bytes where the character is a digit: high nibble 3, and still 3 after adding 6.
+        const std::uint64_t t = ((bytes & kHigh) ^ kThrees) | (((bytes + 0x0606060606060606ULL) & kHigh) ^ kThrees);
+        constexpr std::uint64_t kLow7 = 0x7F7F7F7F7F7F7F7FULL;
+        const std::uint64_t non_digit = (((t & kLow7) + kLow7) | t) & ~kLow7;  // high bit of each non-digit
+        if (non_digit != 0) {
+            const int n = std::countr_zero(non_digit) / 8;
+            if (n == 0) {
+                value = 0;
+                return 0;
+            }
+            // Keep the n digits, move them to the top (leading zeros below), and combine pairwise.
+            std::uint64_t v = ((bytes & 0x0F0F0F0F0F0F0F0FULL) << (8 * (8 - n)));
+            v = (v * 2561) >> 8;
+            v = ((v & 0x00FF00FF00FF00FFULL) * 6553601) >> 16;
+            v = ((v & 0x0000FFFF0000FFFFULL) * 42949672960001ULL) >> 32;
+            value = static_cast<std::uint32_t>(v);
+            return n;
+        }
+        // Eight or more digits: the plain loop below.
+    }
+    const unsigned char* q = p;
+    std::uint32_t v = 0;
+    while (q != stop) {
+        const unsigned d = static_cast<unsigned>(*q) - '0';
+        if (d > 9) break;
+        v = v * 10 + d;  // wraps for more than 9 digits; the caller rejects those
+        ++q;
+    }
+    value = v;
+    return static_cast<int>(q - p);
 }
 
 std::string describe_byte(unsigned char c) {
@@ -307,14 +348,9 @@ bool Reader::read_plain_line(std::uint32_t begin, std::uint32_t& end) {
     const unsigned char* const stop = base + src_.size();
     const unsigned char* p = first;
     std::uint32_t lead = 0;
-    while (p != stop) {
-        const unsigned d = static_cast<unsigned>(*p) - '0';
-        if (d > 9) break;
-        lead = lead * 10 + d;
-        ++p;
-    }
-    const auto lead_digits = static_cast<int>(p - first);
+    const int lead_digits = read_digits(p, stop, lead);
     if (lead_digits > kMaxWordDigits) return false;
+    p += lead_digits;
     constexpr int kMaxPlainWords = 8;  // more words than that: the general path (it is an error anyway)
     std::int32_t words[kMaxPlainWords];
     int n = 0;
@@ -323,15 +359,11 @@ bool Reader::read_plain_line(std::uint32_t begin, std::uint32_t& end) {
         const unsigned char sign = *p;
         if (sign != '+' && sign != '-') break;
         if (n == kMaxPlainWords) return false;
-        const unsigned char* const digits = ++p;
+        ++p;
         std::uint32_t v = 0;
-        while (p != stop) {
-            const unsigned d = static_cast<unsigned>(*p) - '0';
-            if (d > 9) break;
-            v = v * 10 + d;
-            ++p;
-        }
-        if (p - digits > kMaxWordDigits) return false;  // leading zeros or a number too large: the general path
+        const int digits = p == stop ? 0 : read_digits(p, stop, v);
+        if (digits > kMaxWordDigits) return false;  // leading zeros or a number too large: the general path
+        p += digits;
         const auto value = static_cast<std::int32_t>(v);
         if (sign == '-') {
             words[n] = -value;
