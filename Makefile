@@ -1,10 +1,11 @@
 # essikit — entry points. Every target first runs scripts/setup, which installs what is missing
 # (Debian packages, ImGui and Google Benchmark sources) and returns in a second when everything is there.
 #
-#   make run     build the CLI and check the example tapes
-#   make test    build both runtimes and run the whole suite natively and under node (WASM)
-#   make native  build/native/bin/essi (+ tests, bench)      make wasm   build/wasm/bin/*.js
-#   make bench   run the benchmarks natively and under node  make fuzz   libFuzzer for 60 s (clang++-14)
+#   make run     build both runtimes (CLI + browser viewer) and start `essi serve` on http://127.0.0.1:8080/
+#   make test    build both runtimes and run the whole suite natively and under node (WASM) + browser e2e
+#   make native  build/native/bin/essi (+ tests, bench)      make wasm   build/wasm/bin/*.js, build/wasm/web/
+#   make bench   the core benchmarks natively and under node, then the viewer's browser benchmark
+#   make fuzz    libFuzzer for 60 s (clang++-14)
 #   make clean   remove build/
 SHELL := /bin/bash
 JOBS ?= 2
@@ -33,22 +34,31 @@ wasm: setup
 test: setup native wasm
 	@scripts/ctest-both
 
-# Exit code 1 from `essi check` means "the tapes have errors" — a report, not a build failure;
-# 2 (usage, unreadable file) and crashes fail the target.
-run: setup native
-	@test -x build/native/bin/essi || { echo "make run: build/native/bin/essi was not built (no native/*.cpp?)"; exit 2; }
-	@build/native/bin/essi check examples/; rc=$$?; if [ $$rc -ge 2 ]; then exit $$rc; fi
+# Builds the CLI and the viewer, then serves the viewer (build/wasm/web) and examples/ until Ctrl+C.
+# HOST and PORT change the address (make run PORT=8081).
+HOST ?= 127.0.0.1
+PORT ?= 8080
+run: setup native wasm
+	@test -x build/native/bin/essi || { echo "make run: build/native/bin/essi was not built"; exit 2; }
+	@test -f build/wasm/web/essi_viewer.wasm || { echo "make run: the viewer was not built (build/wasm/web)"; exit 2; }
+	@echo "make run: open http://$(HOST):$(PORT)/ in a browser and drop a tape on the page (Ctrl+C stops)"
+	exec build/native/bin/essi serve --host $(HOST) --port $(PORT)
 
 bench: setup
 	cmake --preset native
 	cmake --build --preset native -j$(JOBS) --target essi_bench
 	build/native/bin/essi_bench
+	cmake --build --preset native -j$(JOBS) --target essi essi_gen_batch
+	scripts/bench_batch
 	cmake --preset wasm
 	@if [ -f third_party/benchmark/CMakeLists.txt ]; then \
 	  cmake --build --preset wasm -j$(JOBS) --target essi_bench && \
 	  echo "== WASM (node) ==" && \
 	  cd build/wasm/bin && node --no-experimental-fetch essi_bench.js; \
 	else echo "make bench: third_party/benchmark missing, no WASM bench"; fi
+	cmake --build --preset native -j$(JOBS) --target essi_gen_nest
+	cmake --build --preset wasm -j$(JOBS) --target essi_viewer
+	node tests/e2e/bench.mjs
 
 # libFuzzer + ASan + UBSan. New inputs go to build/fuzz/corpus (the saved corpus tests/fuzz/corpus is
 # read only); crashes are written to build/fuzz/artifacts/. Promote interesting inputs by hand.

@@ -423,6 +423,7 @@ int main(int argc, char** argv) {
     essi::native::ServeOptions serve_opts;
     serve_opts.web_root = ESSI_DEFAULT_WEB_ROOT;
     serve_opts.examples_dir = ESSI_DEFAULT_EXAMPLES_DIR;
+    serve_opts.share_store_js = ESSI_DEFAULT_SHARE_STORE_JS;
     CLI::App* serve = app.add_subcommand("serve", "Serve the browser viewer, the example tapes and the check/share API");
     serve->add_option("--host", serve_opts.host, "Address to listen on")->capture_default_str();
     serve->add_option("--port", serve_opts.port, "Port (0 picks a free one)")->check(CLI::Range(0, 65535))->capture_default_str();

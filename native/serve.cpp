@@ -82,6 +82,7 @@ int run_serve(const ServeOptions& o) {
         server.new_task_queue = [n] { return new httplib::ThreadPool(static_cast<size_t>(n)); };
     }
     server.set_payload_max_length(static_cast<size_t>(o.max_body));
+    server.set_tcp_nodelay(true);  // no 40 ms Nagle + delayed-ACK stall between the headers and the body
     server.set_file_extension_and_mimetype_mapping("wasm", "application/wasm");
     server.set_file_extension_and_mimetype_mapping("js", "text/javascript");
     server.set_file_extension_and_mimetype_mapping("esi", "text/plain; charset=us-ascii");
@@ -179,6 +180,20 @@ int run_serve(const ServeOptions& o) {
         std::fprintf(stderr, "essi serve: cannot serve %s\n", o.web_root.c_str());
         return 2;
     }
+
+    const std::string share_js = o.share_store_js;
+    server.Get("/share_store.js", [share_js](const httplib::Request&, httplib::Response& res) {
+        std::FILE* f = share_js.empty() ? nullptr : std::fopen(share_js.c_str(), "rb");
+        if (!f) {
+            json_error(res, 404, "not found");
+            return;
+        }
+        std::string text;
+        char buf[8192];
+        for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
+        std::fclose(f);
+        res.set_content(std::move(text), "text/javascript");
+    });
 
     // Errors without a body (404 of a missing file, 413 of a too big body, 400 of a bad request): JSON.
     server.set_error_handler([max_body](const httplib::Request&, httplib::Response& res) {

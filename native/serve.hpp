@@ -18,6 +18,8 @@ struct ServeOptions {
     int port = 8080;                 // 0 picks a free port
     std::string web_root;            // the wasm build's web/ folder (index.html, essi_viewer.js/.wasm)
     std::string examples_dir;        // served at /examples/ ("" = none)
+    std::string share_store_js;      // web/share_store.js of the source tree: served at /share_store.js when the
+                                     // web root has none (older viewer builds copy only index.html)
     std::string data_dir;            // the share store (SQLite); "" = default_data_dir()
     std::uint64_t max_body = kDefaultMaxBody;
     int threads = 0;                 // request threads; 0 = cpp-httplib's default

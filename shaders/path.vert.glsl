@@ -1,11 +1,16 @@
 #version 300 es
-// Thick anti-aliased lines: every segment is one instance of a 4-vertex quad, expanded here in pixels.
+// Thick anti-aliased lines: every segment is two triangles (6 vertices, no vertex attributes), expanded here in
+// pixels. The segments are pulled from textures by gl_VertexID: a draw call of 6*N vertices is one batch for
+// any GPU (instanced quads cost SwiftShader one internal draw per instance: seconds a frame at 1 M segments).
 precision highp float;
 precision highp int;
+precision highp sampler2D;
+precision highp usampler2D;
 
-layout(location = 0) in vec2 a_corner;  // x: 0 = segment start, 1 = segment end; y: -1 / +1 across
-layout(location = 1) in vec4 a_seg;     // x0 y0 x1 y1, mm relative to the document origin
-layout(location = 2) in float a_kind;   // 0 rapid, 1 travel, 2 cut, 3 mark
+uniform sampler2D u_segs;     // RGBA32F: x0 y0 x1 y1, mm relative to the document origin; u_tex_width a row
+uniform usampler2D u_kinds;   // R8UI: 0 rapid, 1 travel, 2 cut, 3 mark (same layout)
+uniform int u_tex_width;
+uniform int u_first;          // first segment of this draw
 
 uniform vec2 u_center;        // view centre, mm relative to the document origin
 uniform float u_zoom;         // pixels per mm
@@ -25,21 +30,36 @@ vec2 to_px(vec2 p) {
     return u_origin_px + vec2(p.x - u_center.x, u_center.y - p.y) * u_zoom;
 }
 
+// (along, across) of the 6 corners: (0,-1) (1,-1) (0,1) / (0,1) (1,-1) (1,1)
+const vec2 kCorners[6] = vec2[6](vec2(0.0, -1.0), vec2(1.0, -1.0), vec2(0.0, 1.0),
+                                 vec2(0.0, 1.0), vec2(1.0, -1.0), vec2(1.0, 1.0));
+
 void main() {
-    int kind = clamp(int(a_kind + 0.5), 0, 3);
-    vec2 p0 = to_px(a_seg.xy);
-    vec2 p1 = to_px(a_seg.zw);
+    int seg = u_first + gl_VertexID / 6;
+    vec2 corner = kCorners[gl_VertexID % 6];
+    ivec2 texel = ivec2(seg % u_tex_width, seg / u_tex_width);
+    vec4 s = texelFetch(u_segs, texel, 0);
+    int kind = clamp(int(texelFetch(u_kinds, texel, 0).r), 0, 3);
+    bool visible = ((u_layer_mask >> kind) & 1) != 0;
+    if (!visible) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: nothing drawn
+        v_color = vec4(0.0);
+        v_across = 0.0;
+        v_half = 0.0;
+        return;
+    }
+    vec2 p0 = to_px(s.xy);
+    vec2 p1 = to_px(s.zw);
     vec2 d = p1 - p0;
     float len = length(d);
     vec2 dir = len > 1e-4 ? d / len : vec2(1.0, 0.0);
     vec2 nrm = vec2(-dir.y, dir.x);
     float hw = u_half_width[kind] + u_extra_width;
     float ext = hw + 1.0;  // one pixel of anti-aliasing ramp
-    vec2 p = mix(p0, p1, a_corner.x) + dir * (a_corner.x * 2.0 - 1.0) * ext + nrm * a_corner.y * ext;
-    bool visible = ((u_layer_mask >> kind) & 1) != 0;
+    vec2 p = mix(p0, p1, corner.x) + dir * (corner.x * 2.0 - 1.0) * ext + nrm * corner.y * ext;
     vec2 ndc = vec2(p.x / u_viewport.x * 2.0 - 1.0, 1.0 - p.y / u_viewport.y * 2.0);
-    gl_Position = visible ? vec4(ndc, 0.0, 1.0) : vec4(2.0, 2.0, 2.0, 1.0);
+    gl_Position = vec4(ndc, 0.0, 1.0);
     v_color = u_override.a > 0.0 ? u_override : u_colors[kind];
-    v_across = a_corner.y * ext;
+    v_across = corner.y * ext;
     v_half = hw;
 }

@@ -9,55 +9,13 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync, spawn } from 'node:child_process';
 import fs from 'node:fs';
-import http from 'node:http';
-import net from 'node:net';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
-
-const here = path.dirname(fileURLToPath(import.meta.url));
-const root = path.resolve(here, '..', '..');
-const webRoot = process.env.ESSI_WEB_ROOT || path.join(root, 'build', 'wasm', 'web');
-const essiBin = process.env.ESSI_BIN || path.join(root, 'build', 'native', 'bin', 'essi');
-const chromiumPath = process.env.ESSI_CHROMIUM || '/usr/bin/chromium';
-const examplesDir = path.join(root, 'examples');
-const shots = path.join(root, 'build', 'e2e');
-const CUT_RGB = [255, 140, 26];  // kKindColors[cut] in web/render/Renderer.hpp
-
-const chromiumArgs = [
-  '--no-sandbox', '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-  '--disable-gpu-sandbox', '--disable-background-networking', '--disable-component-update', '--no-first-run',
-];
+import {
+  webRoot, essiBin, genBin, chromiumPath, examplesDir, shots, CUT_RGB, freePort, startStaticServer, launch,
+  newPage as openPage, generatedTape, dropFromUrl, cliReport as cliReportOf, genDir,
+} from './support.mjs';
 
 let server, baseUrl, browser;
-
-function freePort() {
-  return new Promise((resolve, reject) => {
-    const s = net.createServer();
-    s.once('error', reject);
-    s.listen(0, '127.0.0.1', () => { const p = s.address().port; s.close(() => resolve(p)); });
-  });
-}
-
-// A static server for the built page and the examples (no caching, correct wasm type).
-function startStaticServer(port) {
-  const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm',
-                  '.esi': 'text/plain', '.json': 'application/json' };
-  const srv = http.createServer((req, res) => {
-    const urlPath = decodeURIComponent(new URL(req.url, 'http://localhost').pathname);
-    const [base, rel] = urlPath.startsWith('/examples/') ? [examplesDir, urlPath.slice('/examples/'.length)]
-                                                        : [webRoot, urlPath.slice(1) || 'index.html'];
-    const file = path.resolve(base, rel);
-    if (!file.startsWith(base)) { res.writeHead(403); return res.end(); }
-    fs.readFile(file, (err, data) => {
-      if (err) { res.writeHead(404); return res.end(); }
-      res.writeHead(200, { 'content-type': types[path.extname(file)] || 'application/octet-stream',
-                           'cache-control': 'no-cache' });
-      res.end(data);
-    });
-  });
-  return new Promise((resolve) => srv.listen(port, '127.0.0.1', () => resolve(srv)));
-}
 
 function examples() {
   return fs.readdirSync(examplesDir).filter((f) => f.endsWith('.esi')).sort();
@@ -98,13 +56,8 @@ function assertStatsEqual(page, cli, name) {
   }
 }
 
-async function newPage() {
-  const page = await browser.newPage({ viewport: { width: 1600, height: 900 } });
-  page.on('pageerror', (e) => console.log(`pageerror: ${e.message}`));
-  await page.goto(baseUrl);
-  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 30000 });
-  await page.evaluate(() => essikit.ready);
-  return page;
+function newPage() {
+  return openPage(browser, baseUrl);
 }
 
 // Drops a file on the canvas the way a person does (dragenter, dragover, drop with a DataTransfer).
@@ -151,7 +104,7 @@ before(async () => {
   fs.mkdirSync(shots, { recursive: true });
   server = await startStaticServer(await freePort());
   baseUrl = `http://127.0.0.1:${server.address().port}/`;
-  browser = await chromium.launch({ executablePath: chromiumPath, args: chromiumArgs });
+  browser = await launch();
 });
 
 after(async () => {
@@ -322,4 +275,230 @@ test('essi serve serves the viewer and the examples', async (t) => {
   } finally {
     proc.kill();
   }
+});
+
+// ---- every item of issue 3, one test each ------------------------------------------------------------------
+
+async function loadExample(page, file) {
+  const text = fs.readFileSync(path.join(examplesDir, file), 'utf8');
+  const state = await page.evaluate(([n, t]) => essikit.load(n, t), [file, text]);
+  const motions = await page.evaluate((n) => Array.from({ length: n }, (_, i) => essikit.motion(i)), state.motions);
+  await page.mouse.move(700, 450);  // over the drawing, so that keys go to the canvas
+  return { state, motions };
+}
+
+// ImGui 1.86 reads the key state once a frame (no input queue): hold a key down across two frames.
+async function tap(page, key) {
+  await page.keyboard.down(key);
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r()))));
+  await page.keyboard.up(key);
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
+}
+
+// Keys are handled in the next frames: wait until the state says so.
+async function until(page, fn, arg, what) {
+  await page.waitForFunction(fn, arg, { timeout: 15000 }).catch(() => {});
+  assert.ok(await page.evaluate(fn, arg), what);
+}
+
+test('pasting a tape\'s text loads it', async () => {
+  const page = await newPage();
+  const file = 'arcs_both_senses.esi';
+  const text = fs.readFileSync(path.join(examplesDir, file), 'utf8');
+  await page.evaluate((t) => {
+    const dt = new DataTransfer();
+    dt.setData('text/plain', t);
+    document.dispatchEvent(new ClipboardEvent('paste', { clipboardData: dt, bubbles: true, cancelable: true }));
+  }, text);
+  await until(page, () => essikit.state().name === 'pasted.esi' && essikit.state().status === 'ready', null, 'paste loaded nothing');
+  const state = await page.evaluate(() => essikit.state());
+  assert.equal(state.stats.motions, cliReportOf(path.join(examplesDir, file)).stats.motions);
+  await page.close();
+});
+
+test('the Open... button opens the file picker and loads the chosen tape', async () => {
+  const page = await newPage();
+  // The ImGui toolbar's first button (window padding 8 px, 13 px font).
+  const [chooser] = await Promise.all([page.waitForEvent('filechooser', { timeout: 15000 }), page.mouse.click(28, 18)]);
+  await chooser.setFiles(path.join(examplesDir, 'marking.esi'));
+  await until(page, () => essikit.state().name === 'marking.esi' && essikit.state().status === 'ready', null, 'not loaded');
+  await page.close();
+});
+
+test('help window (H) and layer toggles (keys 1-4, setLayer)', async () => {
+  const page = await newPage();
+  const { motions } = await loadExample(page, 'plate_holes.esi');
+  await page.keyboard.press('h');
+  await until(page, () => essikit.state().help === true, null, 'H did not open the help');
+  await page.waitForTimeout(100);
+  await page.screenshot({ path: path.join(shots, 'help.png') });
+  await tap(page, 'Escape');
+  await until(page, () => essikit.state().help === false, null, 'Esc did not close the help');
+
+  const cuts = motions.filter((m) => m.kind === 'cut' && m.curve === 'line' && m.length_mm > 50);
+  const cutVisible = async (name) => {
+    await page.waitForTimeout(100);
+    const at = await pixels(page, await page.screenshot({ path: path.join(shots, name) }));
+    let hits = 0;
+    for (const m of cuts) {
+      const p = await page.evaluate(([x, y]) => essikit.project(x, y), m.mid);
+      const around = [];
+      for (let dy = -1; dy <= 1; ++dy) for (let dx = -1; dx <= 1; ++dx) around.push(at(p.x + dx, p.y + dy));
+      if (around.some((c) => near(c, CUT_RGB))) ++hits;
+    }
+    return hits;
+  };
+  assert.equal(await cutVisible('layers-all.png'), cuts.length);
+  await page.keyboard.press('1');
+  await until(page, () => essikit.state().layers.cut === false, null, 'key 1 did not hide the cut layer');
+  assert.equal(await cutVisible('layers-no-cut.png'), 0, 'cut colour drawn with the cut layer off');
+  await page.keyboard.press('1');
+  await until(page, () => essikit.state().layers.cut === true, null, 'key 1 did not show the cut layer');
+  await page.keyboard.press('4');
+  await until(page, () => essikit.state().layers.pierces === false, null, 'key 4: pierces');
+  await page.evaluate(() => essikit.setLayer(2, false));
+  assert.equal((await page.evaluate(() => essikit.state())).layers.cut, false);
+  await page.close();
+});
+
+test('playback: the scrubber draws the path up to a motion and shows the tool state there', async () => {
+  const page = await newPage();
+  const { state, motions } = await loadExample(page, 'plate_holes.esi');
+  await tap(page, 'Home');
+  for (let i = 0; i < 6; ++i) await tap(page, 'ArrowRight');
+  await until(page, () => essikit.state().playback.active && essikit.state().playback.position === 6, null,
+              'Home + 6 x Right did not put the scrubber at motion 6');
+  const pb = (await page.evaluate(() => essikit.state())).playback;
+  const m = motions[6];
+  assert.equal(pb.motion, 6);
+  assert.equal(pb.line, m.line);
+  assert.equal(pb.kind, m.kind);
+  assert.equal(pb.drawn_motions, 6);
+  assert.ok(Math.hypot(pb.tool_mm[0] - m.start[0], pb.tool_mm[1] - m.start[1]) < 1e-9, 'tool not at the start of motion 6');
+  assert.match(m.text, new RegExp('tools ' + pb.tools.replace(/[+]/g, '\\+')));
+  // A later cut is not drawn yet.
+  await page.mouse.move(5, 890);
+  await page.waitForTimeout(150);
+  const at = await pixels(page, await page.screenshot({ path: path.join(shots, 'playback.png') }));
+  const later = motions.filter((x) => x.index > 6 && x.kind === 'cut' && x.curve === 'line' && x.length_mm > 50);
+  assert.ok(later.length > 0);
+  for (const x of later) {
+    const p = await page.evaluate(([a, b]) => essikit.project(a, b), x.mid);
+    assert.ok(!near(at(p.x, p.y), CUT_RGB), `motion ${x.index} is drawn before its time`);
+  }
+  await page.mouse.move(700, 450);
+  await tap(page, 'End');
+  await until(page, () => !essikit.state().playback.active, null, 'End did not leave the playback');
+  assert.equal(state.motions, motions.length);
+  await page.close();
+});
+
+test('measure: distance and dx/dy between two points, snapping to end points and arc centres', async () => {
+  const page = await newPage();
+  const { motions } = await loadExample(page, 'plate_holes.esi');
+  await page.keyboard.press('m');
+  await until(page, () => essikit.state().measure.active, null, 'M did not start measuring');
+  const longCuts = motions.filter((m) => m.kind === 'cut' && m.curve === 'line' && m.length_mm > 150);
+  const a = longCuts[0].end, b = longCuts[1].end;
+  const click = async (pt, dx, dy) => {
+    const p = await page.evaluate(([x, y]) => essikit.project(x, y), pt);
+    await page.mouse.click(p.x + dx, p.y + dy);
+  };
+  await click(a, 4, -3);  // a few pixels off: snaps
+  await until(page, () => essikit.state().measure.points === 1, null, 'first click not taken');
+  await click(b, -3, 4);
+  await until(page, () => essikit.state().measure.points === 2, null, 'second click not taken');
+  let ms = (await page.evaluate(() => essikit.state())).measure;
+  assert.deepEqual(ms.a_mm, a, 'A did not snap to the end point');
+  assert.deepEqual(ms.b_mm, b, 'B did not snap to the end point');
+  assert.ok(Math.abs(ms.distance_mm - Math.hypot(b[0] - a[0], b[1] - a[1])) < 1e-9);
+  assert.ok(Math.abs(ms.dx_mm - (b[0] - a[0])) < 1e-9 && Math.abs(ms.dy_mm - (b[1] - a[1])) < 1e-9);
+  await page.screenshot({ path: path.join(shots, 'measure.png') });
+  // An arc centre (a hole's centre: nothing else is near it).
+  const hole = motions.find((m) => m.curve === 'arc' && m.centre);
+  await click(hole.centre, 3, 3);
+  await until(page, () => essikit.state().measure.points === 1, null, 'third click not taken');
+  ms = (await page.evaluate(() => essikit.state())).measure;
+  assert.deepEqual(ms.a_mm, hole.centre, 'did not snap to the arc centre');
+  await page.close();
+});
+
+test('the block inspector says in words what a block does', async () => {
+  const page = await newPage();
+  const { motions } = await loadExample(page, 'plate_holes.esi');
+  const words = async (line) => {
+    await page.evaluate((l) => essikit.selectLine(l), line);
+    return (await page.evaluate(() => essikit.state())).inspector.join('\n');
+  };
+  assert.match(await words(9), /^function 39: .*400 mm\/min/m);
+  assert.match(await words(13), /^function 29: .*kerf compensation left/im);
+  assert.match(await words(14), /^function 7: .*oxygen/im);
+  const arc = motions.find((m) => m.curve === 'arc');
+  const t = await words(arc.line);
+  assert.match(t, /motion block, 5 words/);
+  assert.match(t, /cut (full circle|arc) (CCW|CW) r=\d+\.\d{3} mm, centre \(/);
+  await page.screenshot({ path: path.join(shots, 'inspector.png') });
+  // Every function block of every example is explained (never "not a machine function").
+  for (const file of ['feed_dwell.esi', 'bevel_plasma.esi', 'marking.esi', 'three_axis.esi']) {
+    const st = await loadExample(page, file);
+    for (let line = 1; line <= st.state.lines; ++line) {
+      const w = await words(line);
+      for (const sentence of w.split('\n').filter((x) => x.startsWith('function ')))
+        assert.match(sentence, /^function \d+: [^:]+.*: \S/, `${file}:${line}: ${sentence}`);
+    }
+  }
+  await page.close();
+});
+
+test('a share link for a tape too large for a URL says so', async () => {
+  const page = await newPage();
+  const name = generatedTape(5);
+  await page.evaluate(async (n) => {
+    const bytes = new Uint8Array(await (await fetch('/gen/' + n)).arrayBuffer());
+    await essikit.load(n, bytes);
+  }, name);
+  const err = await page.evaluate(() => essikit.shareLink().then(() => 'ok', (e) => e.message));
+  assert.match(err, /too large for a link/);
+  assert.match((await page.evaluate(() => essikit.state())).share_url, /too large/);
+  await page.close();
+});
+
+test('a 50 MB tape loads with a moving progress bar while the page keeps drawing', async () => {
+  const name = generatedTape(50);
+  const page = await newPage();
+  await page.evaluate(() => {
+    window.__frames = [];
+    const tick = (t) => { window.__frames.push(t); requestAnimationFrame(tick); };
+    requestAnimationFrame(tick);
+  });
+  await dropFromUrl(page, '/gen/' + name, name);
+  const samples = [];
+  const t0 = Date.now();
+  for (;;) {
+    const asked = Date.now();
+    const s = await page.evaluate(() => { const st = essikit.state(); return { status: st.status, progress: st.progress, name: st.name, frames: window.__frames.length }; });
+    samples.push({ ...s, answer_ms: Date.now() - asked, t: Date.now() - t0 });
+    if (s.name === name && s.status === 'ready') break;
+    assert.ok(Date.now() - t0 < 600000, 'the 50 MB tape did not load in 10 minutes');
+    await new Promise((r) => setTimeout(r, 200));
+  }
+  const loading = samples.filter((s) => s.status === 'loading' && typeof s.progress === 'number');
+  const progress = loading.map((s) => s.progress);
+  const rising = progress.filter((p, i) => i > 0 && p > progress[i - 1]).length;
+  const frameTimes = await page.evaluate(() => window.__frames);
+  const gaps = frameTimes.slice(1).map((t, i) => t - frameTimes[i]);
+  const maxGap = Math.max(...gaps);
+  const maxAnswer = Math.max(...samples.map((s) => s.answer_ms));
+  const state = await page.evaluate(() => essikit.state());
+  console.log(`50 MB: ${samples.at(-1).t} ms to load, ${loading.length} samples while loading, progress rose ${rising} times, ` +
+              `${frameTimes.length} frames, longest frame gap ${maxGap.toFixed(0)} ms, slowest answer ${maxAnswer} ms, ` +
+              `memory_bytes ${state.memory_bytes}`);
+  assert.ok(rising >= 5, `the progress bar did not move: ${JSON.stringify(progress)}`);
+  assert.ok(frameTimes.length >= 20, 'requestAnimationFrame stopped while loading');
+  assert.ok(maxGap < 5000, `the page froze for ${maxGap} ms`);
+  // (no screenshot: drawing 7 M segments takes SwiftShader seconds a frame, see docs/performance.md)
+  const cli = cliReportOf(path.join(genDir, name));
+  assertStatsEqual(state.stats, cli.stats, name);
+  assert.equal(state.diagnostics.length, cli.diagnostics.length);
+  await page.close();
 });

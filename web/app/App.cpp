@@ -24,7 +24,9 @@ constexpr float kLeftWidth = 310;
 constexpr float kRightWidth = 470;
 constexpr double kPickRadiusPx = 6;
 constexpr double kSnapRadiusPx = 10;
-constexpr std::size_t kBuildMotionsPerFrame = 200000;
+constexpr std::size_t kBuildMotionsPerFrame = 200000;  // tapes up to this size are drawn in the loading frame
+constexpr std::size_t kBuildMotionsPerStep = 20000;
+constexpr double kStepBudgetMs = 30;  // work per frame while loading (the page keeps drawing, ~25 fps)
 // Share links longer than this are refused (browsers and chat programs cut long URLs).
 constexpr std::size_t kMaxShareTapeBytes = 4u << 20;
 
@@ -133,9 +135,9 @@ void App::load(std::string name, std::string bytes, std::optional<ViewRequest> v
 
 void App::step_loading() {
     if (loader_) {
-        // First frame: only show the progress bar; then one stage per frame.
+        // First frame: only show the progress bar; then about kStepBudgetMs of work per frame.
         if (frames_since_load_start_++ == 0) return;
-        if (loader_->step()) {
+        if (loader_->step(kStepBudgetMs)) {
             doc_ = loader_->take();
             loader_.reset();
             finish_loading();
@@ -143,11 +145,14 @@ void App::step_loading() {
         return;
     }
     if (building_) {
-        const bool done = building_->step(kBuildMotionsPerFrame);
+        const double until = glfwGetTime() + kStepBudgetMs / 1000.0;
+        bool done = false;
+        while (!done && glfwGetTime() < until) done = building_->step(kBuildMotionsPerStep);
         if (done) {
             buffers_ = std::move(*building_);
             building_.reset();
             if (graphics_ok_) renderer_.upload(buffers_);
+            buffers_.release_segments();  // the GPU has them; picking uses the exact geometry
             if (first_build_) {
                 first_build_ = false;
                 load_seconds_ = glfwGetTime() - load_started_;
@@ -198,7 +203,7 @@ double App::desired_tolerance() const {
 }
 
 void App::maybe_rebuild() {
-    if (!doc_ || loader_ || building_ || doc_->curves.empty()) return;
+    if (!doc_ || loader_ || building_ || (doc_->arcs.empty() && doc_->parabolas.empty())) return;
     const double want = desired_tolerance();
     const double have = buffers_.tolerance();
     // Finer when zooming in past 2x; coarser (fewer segments) when zooming out by 16x.
@@ -369,38 +374,57 @@ void App::notify(std::string text) {
 // ---------------------------------------------------------------------------------------------------------
 // Input
 // ---------------------------------------------------------------------------------------------------------
+// The motion under the cursor, from the exact geometry (the segments live on the GPU only).
 std::size_t App::pick(double sx, double sy) const {
-    if (!doc_ || buffers_.first_segment.size() != doc_->motions.size() + 1) return npos;
+    if (!doc_ || doc_->motions.empty()) return npos;
+    const Document& d = *doc_;
     const Point w = view_.to_world(sx, sy);
+    const Point p{w.x + d.origin.x, w.y + d.origin.y};
     const double tol = kPickRadiusPx / view_.zoom;
-    const std::size_t limit = buffers_.first_segment[playback_limit_motions()];
+    const std::size_t limit = playback_limit_motions();
     const int mask = layer_mask();
     double best = tol;
-    std::size_t best_seg = npos;
-    const auto& segs = buffers_.segments;
-    for (std::size_t i = 0; i < limit; ++i) {
-        const SegmentInstance& s = segs[i];
-        if (!((mask >> static_cast<int>(s.kind)) & 1)) continue;
-        // quick reject by the box
-        if (w.x < std::min(s.x0, s.x1) - best || w.x > std::max(s.x0, s.x1) + best) continue;
-        if (w.y < std::min(s.y0, s.y1) - best || w.y > std::max(s.y0, s.y1) + best) continue;
-        const double d = seg_distance(w.x, w.y, s.x0, s.y0, s.x1, s.y1);
-        // Prefer cut and mark over travel when they overlap (<=: later cut wins ties)
-        if (d < best || (d <= best + 1e-9 && s.kind >= 2)) {
-            best = d;
-            best_seg = i;
+    std::size_t best_motion = npos;
+    std::vector<Point> pts;
+    auto consider = [&](std::size_t i, double dist) {
+        // Prefer cut and mark over travel when they overlap (<=: a later cut wins ties)
+        if (dist < best || (dist <= best + 1e-9 && d.motions[i].kind >= MotionKind::Cut)) {
+            best = dist;
+            best_motion = i;
         }
+    };
+    for (std::size_t i = 0; i < limit; ++i) {
+        const Motion& m = d.motions[i];
+        if (!((mask >> static_cast<int>(m.kind)) & 1)) continue;
+        if (m.curve == CurveKind::Line) {
+            const Point a = (m.flags & Motion::kFlagJump) ? d.start_of(i) : d.motions[i - 1].end;
+            if (p.x < std::min(a.x, m.end.x) - best || p.x > std::max(a.x, m.end.x) + best) continue;
+            if (p.y < std::min(a.y, m.end.y) - best || p.y > std::max(a.y, m.end.y) + best) continue;
+            consider(i, seg_distance(p.x, p.y, a.x, a.y, m.end.x, m.end.y));
+            continue;
+        }
+        if (m.curve == CurveKind::Arc) {
+            const ArcData& a = d.arcs[m.curve_index];
+            const double r = std::hypot(p.x - a.centre.x, p.y - a.centre.y);
+            if (r < std::min(a.radius, a.end_radius) - best || r > std::max(a.radius, a.end_radius) + best) continue;
+        }
+        pts.clear();
+        flatten(d.record(i), std::max(0.25 / view_.zoom, kMinChordTolerance), pts, true);
+        double dist = 1e300;
+        for (std::size_t k = 1; k < pts.size(); ++k)
+            dist = std::min(dist, seg_distance(p.x, p.y, pts[k - 1].x, pts[k - 1].y, pts[k].x, pts[k].y));
+        consider(i, dist);
     }
-    return best_seg == npos ? npos : buffers_.motion_of_segment(best_seg);
+    return best_motion;
 }
 
 Point App::snap(double sx, double sy, bool* snapped) const {
     const Point w = view_.to_world(sx, sy);  // relative to origin
     *snapped = false;
-    if (!doc_) return w;
-    const Point o = doc_->origin;
-    double best = kSnapRadiusPx / view_.zoom;
+    const Point o = doc_ ? doc_->origin : Point{};
     Point result = {w.x + o.x, w.y + o.y};
+    if (!doc_) return result;
+    double best = kSnapRadiusPx / view_.zoom;
     auto consider = [&](Point p) {
         const double d = std::hypot(p.x - o.x - w.x, p.y - o.y - w.y);
         if (d < best) {
@@ -409,12 +433,10 @@ Point App::snap(double sx, double sy, bool* snapped) const {
             *snapped = true;
         }
     };
-    for (const Motion& m : doc_->motions) {
-        consider(m.start);
-        consider(m.end);
-    }
-    for (const MotionRecord& c : doc_->curves)
-        if (c.curve == CurveKind::Arc) consider(c.centre);
+    // End points (every start is the end before it, or a jump) and arc centres.
+    for (const Motion& m : doc_->motions) consider(m.end);
+    for (const auto& j : doc_->jumps) consider(j.second);
+    for (const ArcData& a : doc_->arcs) consider(a.centre);
     return result;
 }
 
@@ -660,7 +682,7 @@ void App::draw_left_panel() {
                 ImGui::EndTable();
             }
             ImGui::TextDisabled("%.1f MB, %zu lines, %zu segments, loaded in %.2f s", doc_->bytes.size() / 1048576.0,
-                                doc_->line_count(), buffers_.segments.size(), load_seconds_);
+                                doc_->line_count(), buffers_.segment_count, load_seconds_);
         }
     }
     if (ImGui::CollapsingHeader("Layers", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -1054,6 +1076,8 @@ std::string App::state_json() const {
     nlohmann::json j;
     j["status"] = loader_ || (building_ && first_build_) ? "loading" : doc_ ? "ready" : "empty";
     if (loader_) j["progress"] = loader_->progress();
+    else if (building_ && first_build_) j["progress"] = 0.7f + 0.3f * building_->progress();
+    if (loader_) j["stage"] = loader_->stage();
     j["name"] = doc_ ? doc_->name : (loader_ ? loading_name_ : "");
     j["profile"] = profile_name_;
     if (doc_) {
@@ -1080,10 +1104,13 @@ std::string App::state_json() const {
         j["bytes"] = doc_->bytes.size();
         j["lines"] = doc_->line_count();
         j["motions"] = doc_->motions.size();
-        j["segments"] = buffers_.segments.size();
+        j["segments"] = buffers_.segment_count;
         j["pierce_markers"] = doc_->pierces.size();
         j["bbox_mm"] = box_json(doc_->bbox);
-        j["memory_bytes"] = doc_->memory_bytes() + buffers_.segments.capacity() * sizeof(SegmentInstance);
+        j["memory_bytes"] = doc_->memory_bytes() + buffers_.segments.capacity() * sizeof(SegmentInstance) +
+                            buffers_.first_segment.capacity() * sizeof(std::uint32_t);
+        j["tape_memory_bytes"] = doc_->tape.memory_bytes();
+        j["blocks_read"] = doc_->tape.size();
         j["load_seconds"] = load_seconds_;
         j["chord_tolerance_mm"] = buffers_.tolerance();
     }
@@ -1102,9 +1129,38 @@ std::string App::state_json() const {
     j["layers"] = {{"rapid", show_kind_[0]}, {"travel", show_kind_[1]}, {"cut", show_kind_[2]}, {"mark", show_kind_[3]},
                    {"pierces", show_pierces_}, {"start", show_start_}, {"grid", show_grid_}};
     j["playback"] = {{"active", playback_}, {"playing", playing_}, {"position", play_pos_}};
+    if (playback_ && doc_ && !doc_->motions.empty()) {
+        // What the Playback panel shows: the motion at the scrubber, its line, the tools and where the tool is.
+        const std::size_t n = doc_->motions.size();
+        const std::size_t cur = std::min<std::size_t>(static_cast<std::size_t>(play_pos_), n - 1);
+        const Motion& m = doc_->motions[cur];
+        const double frac = static_cast<std::size_t>(play_pos_) >= n ? 1.0 : play_pos_ - std::floor(play_pos_);
+        const Point p = point_at(doc_->record(cur), frac);
+        j["playback"]["motion"] = cur;
+        j["playback"]["line"] = m.line;
+        j["playback"]["kind"] = motion_kind_name(m.kind);
+        j["playback"]["tools"] = tools_text(m.tools);
+        j["playback"]["feed_mm_min"] = m.feed_mm_min;
+        j["playback"]["tool_mm"] = {p.x, p.y};
+        j["playback"]["drawn_motions"] = playback_limit_motions();
+    }
     j["measure"] = {{"active", measure_mode_}, {"points", measure_count_}};
-    if (measure_count_ == 2)
+    if (measure_count_ >= 1) j["measure"]["a_mm"] = {measure_a_.x, measure_a_.y};
+    if (measure_count_ == 2) {
+        j["measure"]["b_mm"] = {measure_b_.x, measure_b_.y};
         j["measure"]["distance_mm"] = std::hypot(measure_b_.x - measure_a_.x, measure_b_.y - measure_a_.y);
+        j["measure"]["dx_mm"] = measure_b_.x - measure_a_.x;
+        j["measure"]["dy_mm"] = measure_b_.y - measure_a_.y;
+    }
+    // The block inspector's sentences for the selected line (blocks, then motions).
+    nlohmann::json insp = nlohmann::json::array();
+    if (doc_ && selected_line_ > 0) {
+        const auto [b0, b1] = doc_->blocks_of_line(selected_line_);
+        for (std::size_t b = b0; b < b1; ++b) insp.push_back(describe_block(*doc_, b));
+        const auto [m0, m1] = doc_->motions_of_line(selected_line_);
+        for (std::size_t m = m0; m < m1 && m < m0 + 8; ++m) insp.push_back(describe_motion(doc_->record(m)));
+    }
+    j["inspector"] = std::move(insp);
     j["help"] = show_help_;
     j["share_url"] = share_url_;
     j["message"] = message_;
@@ -1119,13 +1175,14 @@ std::string App::motion_json(std::size_t i) const {
     const MotionRecord r = doc_->record(i);
     nlohmann::json j = {{"index", i},
                         {"line", r.line},
-                        {"block", r.block},
+                        {"block", doc_->block_of(i)},
                         {"kind", motion_kind_name(r.kind)},
                         {"curve", curve_kind_name(r.curve)},
                         {"start", {r.start.x, r.start.y}},
                         {"end", {r.end.x, r.end.y}},
                         {"mid", {point_at(r, 0.5).x, point_at(r, 0.5).y}},
                         {"length_mm", r.length_mm},
+                        {"centre", r.curve == CurveKind::Arc ? nlohmann::json{r.centre.x, r.centre.y} : nlohmann::json(nullptr)},
                         {"text", describe_motion(r)}};
     return j.dump();
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <chrono>
 #include <cstdio>
 
 #include "essi/functions.hpp"
@@ -11,51 +12,11 @@ namespace essi::viewer {
 
 namespace {
 
-// Sends the core's stream to the statistics (exactly what `essi check` computes) and to the viewer's copy.
-class ViewerSink : public MotionSink {
-public:
-    ViewerSink(Document& doc, StatsSink& stats) : doc_(doc), stats_(stats) {}
+constexpr std::size_t kChunkBlocks = 16384;  // blocks per TapeReader chunk (a few ms in the browser)
 
-    void on_motion(const MotionRecord& r) override {
-        stats_.on_motion(r);
-        Motion m;
-        m.start = r.start;
-        m.end = r.end;
-        m.line = r.line;
-        m.block = r.block;
-        m.kind = r.kind;
-        m.curve = r.curve;
-        m.tools = r.tools;
-        m.feed_mm_min = static_cast<float>(r.feed_mm_min);
-        m.kerf_mm = static_cast<float>(r.kerf_mm);
-        if (r.head == 2) m.flags |= Motion::kFlagHead2;
-        if (r.kerf == KerfSide::Left) m.flags |= Motion::kFlagKerfLeft;
-        if (r.kerf == KerfSide::Right) m.flags |= Motion::kFlagKerfRight;
-        if (r.curve != CurveKind::Line) {
-            m.curve_index = static_cast<std::uint32_t>(doc_.curves.size());
-            doc_.curves.push_back(r);
-        }
-        if (pierce_pending_ && (r.tools & kCuttingTools)) doc_.pierces.push_back(r.start);
-        pierce_pending_ = false;
-        doc_.bbox.add(bounding_box(r));
-        doc_.motions.push_back(m);
-    }
-
-    void on_event(const MachineEvent& e) override {
-        stats_.on_event(e);
-        const bool was_on = (tools_ & kCuttingTools) != 0;
-        const bool now_on = (e.tools_after & kCuttingTools) != 0;
-        if (!was_on && now_on) pierce_pending_ = true;
-        if (!now_on) pierce_pending_ = false;
-        tools_ = e.tools_after;
-    }
-
-private:
-    Document& doc_;
-    StatsSink& stats_;
-    std::uint8_t tools_ = 0;
-    bool pierce_pending_ = false;
-};
+double now_ms() {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 std::string fmt(const char* format, auto... args) {
     char buf[512];
@@ -66,31 +27,65 @@ std::string fmt(const char* format, auto... args) {
 }  // namespace
 
 std::string_view Document::line(std::size_t n) const {
-    if (n == 0 || n > line_starts.size()) return {};
-    const std::size_t begin = line_starts[n - 1];
-    std::size_t end = n < line_starts.size() ? line_starts[n] : bytes.size();
-    while (end > begin && (bytes[end - 1] == '\n' || bytes[end - 1] == '\r')) --end;
-    return std::string_view(bytes).substr(begin, end - begin);
+    if (n == 0 || n > lines) return {};
+    const std::string& s = bytes;
+    std::size_t i = line_index[(n - 1) / kLineIndexStride];
+    for (std::size_t skip = (n - 1) % kLineIndexStride; skip > 0; --skip) {
+        while (i < s.size() && s[i] != '\n' && s[i] != '\r') ++i;
+        if (i >= s.size()) return {};
+        const char c = s[i++];
+        if (i < s.size() && (s[i] == '\n' || s[i] == '\r') && s[i] != c) ++i;
+    }
+    std::size_t end = i;
+    while (end < s.size() && s[end] != '\n' && s[end] != '\r') ++end;
+    return std::string_view(s).substr(i, end - i);
+}
+
+Point Document::start_of(std::size_t i) const {
+    if (i < motions.size() && (motions[i].flags & Motion::kFlagJump)) {
+        auto it = std::lower_bound(jumps.begin(), jumps.end(), static_cast<std::uint32_t>(i),
+                                   [](const auto& j, std::uint32_t k) { return j.first < k; });
+        if (it != jumps.end() && it->first == i) return it->second;
+    }
+    return i > 0 && i <= motions.size() ? motions[i - 1].end : Point{};
 }
 
 MotionRecord Document::record(std::size_t i) const {
     const Motion& m = motions[i];
-    if (m.curve_index != Motion::kNoCurve) return curves[m.curve_index];
+    if (m.curve == CurveKind::Parabola && m.curve_index != Motion::kNoCurve) return parabolas[m.curve_index];
     MotionRecord r;
     r.line = m.line;
-    r.block = m.block;
     r.kind = m.kind;
     r.curve = m.curve;
     r.tools = m.tools;
     r.head = (m.flags & Motion::kFlagHead2) ? 2 : 1;
     r.kerf = (m.flags & Motion::kFlagKerfLeft) ? KerfSide::Left
              : (m.flags & Motion::kFlagKerfRight) ? KerfSide::Right : KerfSide::Off;
-    r.start = m.start;
+    r.start = start_of(i);
     r.end = m.end;
-    r.length_mm = std::hypot(m.end.x - m.start.x, m.end.y - m.start.y);
     r.feed_mm_min = m.feed_mm_min;
-    r.kerf_mm = m.kerf_mm;
+    auto k = std::upper_bound(kerfs.begin(), kerfs.end(), static_cast<std::uint32_t>(i),
+                              [](std::uint32_t v, const auto& e) { return v < e.first; });
+    r.kerf_mm = k == kerfs.begin() ? 0.0 : static_cast<double>(std::prev(k)->second);
+    if (m.curve == CurveKind::Arc && m.curve_index != Motion::kNoCurve) {
+        const ArcData& a = arcs[m.curve_index];
+        r.centre = a.centre;
+        r.radius = a.radius;
+        r.end_radius = a.end_radius;
+        r.sweep = a.sweep;
+        r.ccw = a.sweep > 0;
+        r.length_mm = a.length_mm;
+    } else {
+        r.length_mm = std::hypot(r.end.x - r.start.x, r.end.y - r.start.y);
+    }
     return r;
+}
+
+std::size_t Document::block_of(std::size_t i) const {
+    const auto [b0, b1] = blocks_of_line(motions[i].line);
+    for (std::size_t b = b0; b < b1; ++b)
+        if (tape.block(b).kind == BlockKind::Motion) return b;
+    return b0;
 }
 
 std::size_t Document::first_motion_at_or_after(std::uint32_t line) const {
@@ -124,8 +119,9 @@ std::size_t Document::count(Severity s) const {
 
 std::size_t Document::memory_bytes() const {
     return bytes.capacity() + tape.memory_bytes() + motions.capacity() * sizeof(Motion) +
-           curves.capacity() * sizeof(MotionRecord) + pierces.capacity() * sizeof(Point) +
-           line_starts.capacity() * sizeof(std::uint32_t);
+           arcs.capacity() * sizeof(ArcData) + parabolas.capacity() * sizeof(MotionRecord) +
+           jumps.capacity() * sizeof(jumps[0]) + kerfs.capacity() * sizeof(kerfs[0]) +
+           pierces.capacity() * sizeof(Point) + line_index.capacity() * sizeof(std::uint32_t);
 }
 
 std::string describe_motion(const MotionRecord& m) {
@@ -185,6 +181,55 @@ std::string describe_block(const Document& doc, std::size_t i) {
 }
 
 // ---------------------------------------------------------------------------------------------------------
+// The viewer's copy of the stream: TapeChecker's `also` sink (the statistics are the checker's own).
+class DocumentLoader::Sink : public MotionSink {
+public:
+    explicit Sink(Document& doc) : doc_(doc) {}
+
+    void on_motion(const MotionRecord& r) override {
+        const auto index = static_cast<std::uint32_t>(doc_.motions.size());
+        Motion m;
+        m.end = r.end;
+        m.line = r.line;
+        m.kind = r.kind;
+        m.curve = r.curve;
+        m.tools = r.tools;
+        m.feed_mm_min = static_cast<float>(r.feed_mm_min);
+        if (r.head == 2) m.flags |= Motion::kFlagHead2;
+        if (r.kerf == KerfSide::Left) m.flags |= Motion::kFlagKerfLeft;
+        if (r.kerf == KerfSide::Right) m.flags |= Motion::kFlagKerfRight;
+        if (index == 0 || !(doc_.motions.back().end == r.start)) {
+            m.flags |= Motion::kFlagJump;
+            doc_.jumps.emplace_back(index, r.start);
+        }
+        const float kerf = static_cast<float>(r.kerf_mm);
+        if (doc_.kerfs.empty() ? kerf != 0.f : doc_.kerfs.back().second != kerf) doc_.kerfs.emplace_back(index, kerf);
+        if (r.curve == CurveKind::Arc) {
+            m.curve_index = static_cast<std::uint32_t>(doc_.arcs.size());
+            doc_.arcs.push_back({r.centre, r.radius, r.end_radius, r.sweep, r.length_mm});
+        } else if (r.curve == CurveKind::Parabola) {
+            m.curve_index = static_cast<std::uint32_t>(doc_.parabolas.size());
+            doc_.parabolas.push_back(r);
+        }
+        if (pierce_pending_ && (r.tools & kCuttingTools)) doc_.pierces.push_back(r.start);
+        pierce_pending_ = false;
+        doc_.motions.push_back(m);
+    }
+
+    void on_event(const MachineEvent& e) override {
+        const bool was_on = (tools_ & kCuttingTools) != 0;
+        const bool now_on = (e.tools_after & kCuttingTools) != 0;
+        if (!was_on && now_on) pierce_pending_ = true;
+        if (!now_on) pierce_pending_ = false;
+        tools_ = e.tools_after;
+    }
+
+private:
+    Document& doc_;
+    std::uint8_t tools_ = 0;
+    bool pierce_pending_ = false;
+};
+
 DocumentLoader::DocumentLoader(std::string name, std::string bytes, Profile profile)
     : doc_(std::make_unique<Document>()) {
     doc_->name = std::move(name);
@@ -192,59 +237,93 @@ DocumentLoader::DocumentLoader(std::string name, std::string bytes, Profile prof
     doc_->profile = std::move(profile);
 }
 
-bool DocumentLoader::step() {
+DocumentLoader::~DocumentLoader() = default;
+
+namespace {
+// Grows `v` ahead of need to the size projected from the share of the tape read so far (no doubling: a
+// 10 M motion stream must not cost twice its size).
+template <class T>
+void grow(std::vector<T>& v, std::size_t more, std::size_t read, std::size_t total) {
+    if (v.size() + more <= v.capacity()) return;
+    const double share = read > 0 ? static_cast<double>(read) / static_cast<double>(total) : 0.0;
+    std::size_t want = v.size() + more;
+    if (share > 0.01) want = std::max(want, static_cast<std::size_t>(static_cast<double>(v.size()) / share * 1.05) + 1024);
+    else want = std::max(want, v.capacity() * 2);
+    v.reserve(want);
+}
+}  // namespace
+
+bool DocumentLoader::step(double budget_ms) {
     Document& d = *doc_;
-    switch (stage_) {
-        case 0: {  // line index, 8 MB a step
-            const std::string& s = d.bytes;
-            if (index_pos_ == 0) {
-                d.line_starts.clear();
-                d.line_starts.push_back(0);
-            }
-            const std::size_t stop = std::min(s.size(), index_pos_ + (std::size_t(8) << 20));
-            std::size_t i = index_pos_;
+    const double until = now_ms() + budget_ms;
+    if (stage_ == 0) {  // the sparse line index
+        const std::string& s = d.bytes;
+        if (index_pos_ == 0) {
+            d.line_index.clear();
+            d.line_index.push_back(0);
+            d.lines = s.empty() ? 0 : 1;
+        }
+        const char* p = s.data();
+        const std::size_t n = s.size();
+        std::size_t i = index_pos_;
+        while (i < n) {
+            const std::size_t stop = std::min(n, i + (std::size_t(2) << 20));
             while (i < stop) {
-                const char c = s[i];
-                if (c == '\n' || c == '\r') {
-                    ++i;
-                    if (i < s.size() && (s[i] == '\n' || s[i] == '\r') && s[i] != c) ++i;
-                    if (i < s.size()) d.line_starts.push_back(static_cast<std::uint32_t>(i));
-                } else {
-                    ++i;
+                const char c = p[i++];
+                if (c != '\n' && c != '\r') continue;
+                if (i < n && (p[i] == '\n' || p[i] == '\r') && p[i] != c) ++i;
+                if (i < n) {
+                    if (d.lines % Document::kLineIndexStride == 0) d.line_index.push_back(static_cast<std::uint32_t>(i));
+                    ++d.lines;
                 }
             }
-            index_pos_ = i;
-            if (index_pos_ >= s.size()) stage_ = 1;
-            return false;
+            if (now_ms() > until) break;
         }
-        case 1:
-            d.tape = read_tape(d.bytes, d.profile);
-            d.diagnostics = d.tape.diagnostics();
-            stage_ = 2;
-            return false;
-        case 2: {
-            // The same pipeline as essi::check_tape, with the viewer's copy of the stream taken on the way.
-            StatsSink stats(d.profile);
-            ViewerSink sink(d, stats);
-            interpret(d.tape, d.bytes, d.profile, sink, d.diagnostics);
-            d.stats = stats.stats();
-            d.stats.blocks = count_program_blocks(d.tape);
-            sort_diagnostics(d.diagnostics);
-            d.motions.shrink_to_fit();
-            d.curves.shrink_to_fit();
-            if (!d.bbox.empty) d.origin = {std::round((d.bbox.min_x + d.bbox.max_x) / 2), std::round((d.bbox.min_y + d.bbox.max_y) / 2)};
-            stage_ = 3;
-            return true;
-        }
-        default: return true;
+        index_pos_ = i;
+        if (index_pos_ < n) return false;
+        stage_ = 1;
+        sink_ = std::make_unique<Sink>(d);
+        reader_ = std::make_unique<TapeReader>(d.bytes, d.profile);
+        checker_ = std::make_unique<TapeChecker>(d.bytes, d.profile, sink_.get());
+        if (now_ms() > until) return false;
     }
+    if (stage_ == 1) {  // read and check, a chunk at a time
+        for (;;) {
+            if (!reader_->read_chunk(chunk_, kChunkBlocks)) {
+                stage_ = 2;
+                break;
+            }
+            if (chunk_.size() > 0) read_pos_ = chunk_.block(chunk_.size() - 1).offset;
+            grow(d.motions, chunk_.size(), read_pos_, d.bytes.size());
+            checker_->check_chunk(chunk_);
+            if (d.tape.size() == 0) d.tape.reserve(d.lines + 16, 2 * d.lines + 16);
+            d.tape.append(chunk_);
+            if (now_ms() > until) return false;
+        }
+    }
+    if (stage_ == 2) {
+        CheckResult r = checker_->finish();
+        d.stats = r.stats;
+        d.diagnostics = std::move(r.diagnostics);
+        d.bbox = d.stats.motion_bbox;
+        checker_.reset();
+        reader_.reset();
+        sink_.reset();
+        chunk_ = Tape{};
+        if (d.motions.capacity() > d.motions.size() + d.motions.size() / 8 + 4096) d.motions.shrink_to_fit();
+        d.arcs.shrink_to_fit();
+        if (!d.bbox.empty)
+            d.origin = {std::round((d.bbox.min_x + d.bbox.max_x) / 2), std::round((d.bbox.min_y + d.bbox.max_y) / 2)};
+        stage_ = 3;
+    }
+    return true;
 }
 
 float DocumentLoader::progress() const {
+    const double n = static_cast<double>(std::max<std::size_t>(doc_ ? doc_->bytes.size() : 1, 1));
     switch (stage_) {
-        case 0: return doc_->bytes.empty() ? 0.1f : 0.1f * static_cast<float>(index_pos_) / static_cast<float>(doc_->bytes.size());
-        case 1: return 0.1f;
-        case 2: return 0.4f;
+        case 0: return static_cast<float>(0.1 * static_cast<double>(index_pos_) / n);
+        case 1: return static_cast<float>(0.1 + 0.6 * static_cast<double>(read_pos_) / n);
         default: return 0.7f;
     }
 }
@@ -252,8 +331,7 @@ float DocumentLoader::progress() const {
 const char* DocumentLoader::stage() const {
     switch (stage_) {
         case 0: return "indexing lines";
-        case 1: return "reading blocks";
-        case 2: return "interpreting";
+        case 1: return "reading and checking";
         default: return "building the drawing";
     }
 }

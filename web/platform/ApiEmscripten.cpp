@@ -17,6 +17,27 @@ EMSCRIPTEN_KEEPALIVE void essi_load(const char* name, const std::uint8_t* data, 
 }
 
 // The state as JSON; valid until the next call.
+// Big files without a second copy: the page asks for a buffer of `len` bytes, writes the file into it and
+// commits it (the buffer becomes the document's bytes).
+namespace {
+std::string g_pending;
+}
+
+EMSCRIPTEN_KEEPALIVE char* essi_load_buffer(int len) {
+    g_pending = std::string();
+    try {
+        g_pending.resize(static_cast<std::size_t>(len > 0 ? len : 0));
+    } catch (...) {
+        return nullptr;
+    }
+    return g_pending.data();
+}
+
+EMSCRIPTEN_KEEPALIVE void essi_load_commit(const char* name) {
+    if (App* app = App::instance()) app->load(name, std::move(g_pending));
+    g_pending = std::string();
+}
+
 EMSCRIPTEN_KEEPALIVE const char* essi_state() {
     static std::string s;
     App* app = App::instance();

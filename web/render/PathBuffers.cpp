@@ -11,7 +11,7 @@ void PathBuffers::begin(const Document& doc, double tol) {
     tolerance_ = std::max(tol, kMinChordTolerance);
     next_ = 0;
     segments.clear();
-    segments.reserve(doc.motions.size() + doc.curves.size() * 8);
+    segments.reserve(doc.motions.size() + doc.arcs.size() * 4);
     first_segment.clear();
     first_segment.reserve(doc.motions.size() + 1);
     markers.clear();
@@ -21,7 +21,7 @@ void PathBuffers::begin(const Document& doc, double tol) {
     for (const Point& p : doc.pierces)
         markers.push_back({static_cast<float>(p.x - doc.origin.x), static_cast<float>(p.y - doc.origin.y), 0.f});
     if (!doc.motions.empty()) {
-        const Point s = doc.motions.front().start;
+        const Point s = doc.start_of(0);
         markers.push_back({static_cast<float>(s.x - doc.origin.x), static_cast<float>(s.y - doc.origin.y), 1.f});
     }
 }
@@ -35,13 +35,14 @@ bool PathBuffers::step(std::size_t max_motions) {
         const Motion& m = doc.motions[next_];
         first_segment.push_back(static_cast<std::uint32_t>(segments.size()));
         const float kind = static_cast<float>(static_cast<int>(m.kind));
-        if (m.curve_index == Motion::kNoCurve) {
-            segments.push_back({static_cast<float>(m.start.x - ox), static_cast<float>(m.start.y - oy),
+        if (m.curve == CurveKind::Line) {
+            const Point a = (m.flags & Motion::kFlagJump) ? doc.start_of(next_) : (next_ > 0 ? doc.motions[next_ - 1].end : Point{});
+            segments.push_back({static_cast<float>(a.x - ox), static_cast<float>(a.y - oy),
                                 static_cast<float>(m.end.x - ox), static_cast<float>(m.end.y - oy), kind});
             continue;
         }
         scratch_.clear();
-        flatten(doc.curves[m.curve_index], tolerance_, scratch_, true);
+        flatten(doc.record(next_), tolerance_, scratch_, true);
         for (std::size_t k = 1; k < scratch_.size(); ++k) {
             segments.push_back({static_cast<float>(scratch_[k - 1].x - ox), static_cast<float>(scratch_[k - 1].y - oy),
                                 static_cast<float>(scratch_[k].x - ox), static_cast<float>(scratch_[k].y - oy), kind});
@@ -49,6 +50,7 @@ bool PathBuffers::step(std::size_t max_motions) {
     }
     if (next_ >= doc.motions.size() && first_segment.size() == doc.motions.size()) {
         first_segment.push_back(static_cast<std::uint32_t>(segments.size()));
+        segment_count = segments.size();
         return true;
     }
     return next_ >= doc.motions.size();
@@ -57,6 +59,11 @@ bool PathBuffers::step(std::size_t max_motions) {
 float PathBuffers::progress() const {
     if (doc_ == nullptr || doc_->motions.empty()) return 1.f;
     return static_cast<float>(next_) / static_cast<float>(doc_->motions.size());
+}
+
+void PathBuffers::release_segments() {
+    segments.clear();
+    segments.shrink_to_fit();
 }
 
 std::size_t PathBuffers::motion_of_segment(std::size_t s) const {

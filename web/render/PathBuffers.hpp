@@ -32,10 +32,12 @@ public:
     [[nodiscard]] float progress() const;
     [[nodiscard]] double tolerance() const { return tolerance_; }
 
-    std::vector<SegmentInstance> segments;
+    std::vector<SegmentInstance> segments;     // freed once uploaded (release_segments): the GPU has them
+    std::size_t segment_count = 0;
     std::vector<std::uint32_t> first_segment;  // per motion, plus one at the end
     std::vector<MarkerInstance> markers;       // pierces then the start point
 
+    void release_segments();
     // Motion index of segment s.
     [[nodiscard]] std::size_t motion_of_segment(std::size_t s) const;
 

@@ -2,9 +2,11 @@
 
 #include <GLES3/gl3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "essi_shaders.hpp"
 
@@ -78,7 +80,16 @@ bool Renderer::init() {
     glGenBuffers(1, &seg_vbo_);
     glGenBuffers(1, &marker_vbo_);
     glGenBuffers(1, &tool_vbo_);
-    glGenVertexArrays(1, &path_vao_);
+    glGenVertexArrays(1, &path_vao_);  // no attributes: the path program pulls its segments from textures
+    for (GLuint* t : {&seg_tex_, &kind_tex_}) {
+        glGenTextures(1, t);
+        glBindTexture(GL_TEXTURE_2D, *t);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
     glGenVertexArrays(1, &sel_vao_);
     glGenVertexArrays(1, &marker_vao_);
     glGenVertexArrays(1, &tool_vao_);
@@ -101,33 +112,50 @@ bool Renderer::init() {
     return true;
 }
 
-void Renderer::bind_segments(unsigned vao, std::size_t first) {
-    glBindVertexArray(vao);
-    glBindBuffer(GL_ARRAY_BUFFER, quad_vbo_);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
-    glBindBuffer(GL_ARRAY_BUFFER, seg_vbo_);
-    const auto base = static_cast<std::uintptr_t>(first * sizeof(SegmentInstance));
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(SegmentInstance), reinterpret_cast<void*>(base));
-    glVertexAttribDivisor(1, 1);
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(SegmentInstance),
-                          reinterpret_cast<void*>(base + offsetof(SegmentInstance, kind)));
-    glVertexAttribDivisor(2, 1);
-    glBindVertexArray(0);
-}
-
 void Renderer::upload(const PathBuffers& b) {
-    glBindBuffer(GL_ARRAY_BUFFER, seg_vbo_);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(b.segments.size() * sizeof(SegmentInstance)),
-                 b.segments.empty() ? nullptr : b.segments.data(), GL_STATIC_DRAW);
-    segment_count_ = b.segments.size();
+    // Segments into two textures, a row of kTexWidth segments at a time (no second copy of the stream).
+    GLint max_size = 4096;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    const std::size_t rows_max = static_cast<std::size_t>(max_size);
+    std::size_t n = b.segments.size();
+    std::size_t rows = (n + kTexWidth - 1) / kTexWidth;
+    if (rows > rows_max) {
+        std::fprintf(stderr, "essi_viewer: %zu segments, the GPU takes %zu; the rest is not drawn\n", n, rows_max * kTexWidth);
+        rows = rows_max;
+        n = rows * kTexWidth;
+    }
+    const GLsizei h = static_cast<GLsizei>(std::max<std::size_t>(rows, 1));
+    glBindTexture(GL_TEXTURE_2D, seg_tex_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kTexWidth, h, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glBindTexture(GL_TEXTURE_2D, kind_tex_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, kTexWidth, h, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+    std::vector<float> row(static_cast<std::size_t>(kTexWidth) * 4);
+    std::vector<std::uint8_t> kinds(static_cast<std::size_t>(kTexWidth));
+    for (std::size_t r = 0; r < rows; ++r) {
+        const std::size_t first = r * kTexWidth;
+        const std::size_t count = std::min<std::size_t>(kTexWidth, n - first);
+        for (std::size_t k = 0; k < count; ++k) {
+            const SegmentInstance& sg = b.segments[first + k];
+            row[4 * k] = sg.x0;
+            row[4 * k + 1] = sg.y0;
+            row[4 * k + 2] = sg.x1;
+            row[4 * k + 3] = sg.y1;
+            kinds[k] = static_cast<std::uint8_t>(sg.kind);
+        }
+        glBindTexture(GL_TEXTURE_2D, seg_tex_);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, static_cast<GLint>(r), static_cast<GLsizei>(count), 1, GL_RGBA, GL_FLOAT, row.data());
+        glBindTexture(GL_TEXTURE_2D, kind_tex_);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, static_cast<GLint>(r), static_cast<GLsizei>(count), 1, GL_RED_INTEGER,
+                        GL_UNSIGNED_BYTE, kinds.data());
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    segment_count_ = n;
     glBindBuffer(GL_ARRAY_BUFFER, marker_vbo_);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(b.markers.size() * sizeof(MarkerInstance)),
                  b.markers.empty() ? nullptr : b.markers.data(), GL_STATIC_DRAW);
     marker_count_ = b.markers.size();
-    bind_segments(path_vao_, 0);
 }
 
 void Renderer::clear_geometry() {
@@ -167,19 +195,31 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
         glUniform1i(glGetUniformLocation(path_program_, "u_layer_mask"), o.layer_mask);
         glUniform4f(glGetUniformLocation(path_program_, "u_override"), 0, 0, 0, 0);
         glUniform1f(glGetUniformLocation(path_program_, "u_extra_width"), 0);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, seg_tex_);
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, kind_tex_);
+        glActiveTexture(GL_TEXTURE0);
+        glUniform1i(glGetUniformLocation(path_program_, "u_segs"), 0);
+        glUniform1i(glGetUniformLocation(path_program_, "u_kinds"), 1);
+        glUniform1i(glGetUniformLocation(path_program_, "u_tex_width"), kTexWidth);
+        glUniform1i(glGetUniformLocation(path_program_, "u_first"), 0);
         glBindVertexArray(path_vao_);
         const std::size_t n = std::min(segment_count_, o.segment_limit);
-        if (n > 0) glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(n));
+        if (n > 0) glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(n * 6));
         if (o.selection_count > 0 && o.selection_first < segment_count_) {
-            bind_segments(sel_vao_, o.selection_first);
             glUniform4f(glGetUniformLocation(path_program_, "u_override"), kSelectionColor.r, kSelectionColor.g,
                         kSelectionColor.b, kSelectionColor.a);
             glUniform1f(glGetUniformLocation(path_program_, "u_extra_width"), 1.0f * s);
             glUniform1i(glGetUniformLocation(path_program_, "u_layer_mask"), 0xF);
+            glUniform1i(glGetUniformLocation(path_program_, "u_first"), static_cast<GLint>(o.selection_first));
             const std::size_t count = std::min(o.selection_count, segment_count_ - o.selection_first);
-            glBindVertexArray(sel_vao_);
-            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(count));
+            glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(count * 6));
         }
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, 0);
     }
 
     // Markers

@@ -47,9 +47,10 @@ private:
     unsigned path_program_ = 0, grid_program_ = 0, marker_program_ = 0;
     unsigned quad_vbo_ = 0, seg_vbo_ = 0, marker_vbo_ = 0, tool_vbo_ = 0;
     unsigned path_vao_ = 0, marker_vao_ = 0, grid_vao_ = 0, sel_vao_ = 0, tool_vao_ = 0;
+    unsigned seg_tex_ = 0, kind_tex_ = 0;  // the segments (RGBA32F x0 y0 x1 y1, R8UI kind), kTexWidth a row
+    static constexpr int kTexWidth = 4096;
     std::size_t segment_count_ = 0, marker_count_ = 0;
     const char* error_ = "";
-    void bind_segments(unsigned vao, std::size_t first);
 };
 
 }  // namespace essi::viewer

@@ -1,0 +1,160 @@
+// The viewer's browser benchmark (`make bench`, or `node tests/e2e/bench.mjs [MOTIONS...]`): headless Debian
+// Chromium with SwiftShader (WebGL2 on the CPU), the wasm build's page, generated nesting tapes
+// (tests/bench/nest_generator.hpp through essi_gen_nest).
+//
+//   drop -> first frame   from the drop event until the first animation frame after the tape is drawn
+//   panning               animation-frame intervals while the mouse drags the drawing (1 M motion tape)
+//   memory                the page's WASM heap, JS heap, renderer and GPU process RSS, against the budget
+//                         2 x tape bytes + the core's bytes per block x blocks
+//
+// Results: printed, and written to build/e2e/bench.json.
+import fs from 'node:fs';
+import path from 'node:path';
+import {
+  shots, genDir, freePort, startStaticServer, launch, newPage, dropFromUrl, cliReport,
+} from './support.mjs';
+import { execFileSync } from 'node:child_process';
+import { genBin } from './support.mjs';
+
+const targets = process.argv.slice(2).map(Number).filter((n) => n > 0);
+const motionTargets = targets.length ? targets : [1e6, 1e7];
+
+function rssKb(pid) {
+  try {
+    const m = fs.readFileSync(`/proc/${pid}/status`, 'utf8').match(/VmRSS:\s+(\d+) kB/);
+    return m ? Number(m[1]) : 0;
+  } catch { return 0; }
+}
+
+// A tape with about `motions` motions: the generator's motions per byte, measured on a 2 MB tape.
+function tapeFor(motions, perByte) {
+  const mb = Math.max(1, Math.round(motions / perByte / 1e6));
+  fs.mkdirSync(genDir, { recursive: true });
+  const name = `nest_${mb}mb.esi`;
+  const file = path.join(genDir, name);
+  if (!fs.existsSync(file)) execFileSync(genBin, [String(mb), file], { stdio: 'ignore' });
+  return { name, file, bytes: fs.statSync(file).size };
+}
+
+async function processes(browser) {
+  const cdp = await browser.newBrowserCDPSession();
+  const info = await cdp.send('SystemInfo.getProcessInfo');
+  await cdp.detach();
+  return info.processInfo;  // [{type, id, cpuTime}]
+}
+
+async function memory(browser, page) {
+  const procs = await processes(browser);
+  const renderer = procs.filter((p) => p.type === 'renderer').reduce((a, p) => a + rssKb(p.id), 0) * 1024;
+  const gpu = procs.filter((p) => p.type === 'GPU' || p.type === 'gpu').reduce((a, p) => a + rssKb(p.id), 0) * 1024;
+  const page_ = await page.evaluate(() => ({
+    wasm: Module.HEAPU8.length,
+    js: performance.memory ? performance.memory.usedJSHeapSize : 0,
+  }));
+  return { renderer_rss: renderer, gpu_rss: gpu, wasm_heap: page_.wasm, js_heap: page_.js };
+}
+
+async function measureLoad(browser, baseUrl, tape) {
+  const page = await newPage(browser, baseUrl);
+  const before = await memory(browser, page);
+  // Watch every animation frame: the first one after the state says "ready" is the first frame drawn.
+  await page.evaluate(() => {
+    window.__frames = [];
+    window.__readyAt = 0;
+    const tick = (t) => {
+      window.__frames.push(t);
+      if (!window.__readyAt && window.__dropT0 && essikit.state().status === 'ready' && essikit.state().name === window.__want)
+        requestAnimationFrame((t2) => { window.__readyAt = t2; });
+      else if (!window.__readyAt) requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  });
+  await page.evaluate((n) => { window.__want = n; }, tape.name);
+  await dropFromUrl(page, '/gen/' + tape.name, tape.name);
+  await page.waitForFunction(() => window.__readyAt > 0, null, { timeout: 900000, polling: 250 });
+  const r = await page.evaluate(() => {
+    const f = window.__frames;
+    const gaps = f.slice(1).map((t, i) => t - f[i]).filter((g, i) => f[i + 1] >= window.__dropT0);
+    return { first_frame_ms: window.__readyAt - window.__dropT0, frames: gaps.length, max_gap_ms: Math.max(...gaps) };
+  });
+  const state = await page.evaluate(() => essikit.state());
+  const after = await memory(browser, page);
+  return { page, state, before, after, ...r };
+}
+
+async function measurePan(page) {
+  const v = (await page.evaluate(() => essikit.state())).view;
+  const [ax, ay, aw, ah] = v.area;
+  const cx = ax + aw / 2, cy = ay + ah / 2;
+  await page.mouse.move(cx, cy);
+  await page.mouse.down();
+  await page.evaluate(() => {
+    window.__pan = [];
+    window.__panOn = true;
+    const tick = (t) => { window.__pan.push(t); if (window.__panOn) requestAnimationFrame(tick); };
+    requestAnimationFrame(tick);
+  });
+  for (let i = 1; i <= 60; ++i) {
+    await page.mouse.move(cx + 4 * i, cy + 2 * i);
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
+  }
+  await page.mouse.up();
+  const t = await page.evaluate(() => { window.__panOn = false; return window.__pan; });
+  const gaps = t.slice(1).map((x, i) => x - t[i]).sort((a, b) => a - b);
+  const q = (p) => gaps[Math.min(gaps.length - 1, Math.floor(p * gaps.length))];
+  const moved = (await page.evaluate(() => essikit.state())).view;
+  return { frames: gaps.length, median_ms: q(0.5), p95_ms: q(0.95), mean_ms: gaps.reduce((a, b) => a + b, 0) / gaps.length,
+           moved_mm: Math.hypot(moved.x_mm - v.x_mm, moved.y_mm - v.y_mm) };
+}
+
+const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
+
+(async () => {
+  fs.mkdirSync(shots, { recursive: true });
+  // Calibrate: motions per byte of the generator.
+  fs.mkdirSync(genDir, { recursive: true });
+  const small = path.join(genDir, 'nest_2mb.esi');
+  if (!fs.existsSync(small)) execFileSync(genBin, ['2', small], { stdio: 'ignore' });
+  const perByte = cliReport(small).stats.motions / fs.statSync(small).size;
+
+  const server = await startStaticServer(await freePort());
+  const baseUrl = `http://127.0.0.1:${server.address().port}/`;
+  const browser = await launch();
+  const results = [];
+  try {
+    for (const motions of motionTargets) {
+      const tape = tapeFor(motions, perByte);
+      console.log(`== ${tape.name}: ${mb(tape.bytes)}, about ${(motions / 1e6).toFixed(1)} M motions`);
+      const r = await measureLoad(browser, baseUrl, tape);
+      const s = r.state;
+      const perBlock = s.tape_memory_bytes / Math.max(1, s.blocks_read);
+      const budget = 2 * tape.bytes + s.tape_memory_bytes;
+      const row = {
+        tape: tape.name, bytes: tape.bytes, motions: s.motions, segments: s.segments, blocks: s.blocks_read,
+        drop_to_first_frame_ms: Math.round(r.first_frame_ms), load_seconds_viewer: s.load_seconds,
+        frames_while_loading: r.frames, longest_frame_gap_ms: Math.round(r.max_gap_ms),
+        core_bytes_per_block: +perBlock.toFixed(1), budget_bytes: budget,
+        viewer_bytes: s.memory_bytes, wasm_heap: r.after.wasm_heap, js_heap: r.after.js_heap,
+        renderer_rss: r.after.renderer_rss, renderer_rss_before: r.before.renderer_rss, gpu_rss: r.after.gpu_rss,
+      };
+      console.log(`   motions ${s.motions}, segments ${s.segments}, blocks ${s.blocks_read}`);
+      console.log(`   drop -> first frame ${row.drop_to_first_frame_ms} ms (${r.frames} frames meanwhile, longest gap ${row.longest_frame_gap_ms} ms)`);
+      console.log(`   memory: viewer ${mb(s.memory_bytes)} (${(s.memory_bytes / s.motions).toFixed(0)} B/motion), wasm heap ${mb(r.after.wasm_heap)}, ` +
+                  `JS heap ${mb(r.after.js_heap)}, renderer RSS ${mb(r.after.renderer_rss)} (empty page ${mb(r.before.renderer_rss)}), ` +
+                  `GPU process RSS ${mb(r.after.gpu_rss)}; budget 2 x ${mb(tape.bytes)} + ${perBlock.toFixed(1)} B/block x ${s.blocks_read} = ${mb(budget)}`);
+      if (Math.abs(s.motions - 1e6) / 1e6 < 0.5 || motionTargets.length === 1) {
+        const pan = await measurePan(r.page);
+        row.pan = pan;
+        console.log(`   panning: median ${pan.median_ms.toFixed(1)} ms, p95 ${pan.p95_ms.toFixed(1)} ms, mean ${pan.mean_ms.toFixed(1)} ms a frame (${pan.frames} frames, moved ${pan.moved_mm.toFixed(0)} mm)`);
+      }
+      await r.page.screenshot({ path: path.join(shots, `bench-${tape.name.replace(/\.esi$/, '')}.png`) });
+      await r.page.close();
+      results.push(row);
+    }
+  } finally {
+    await browser.close();
+    server.close();
+  }
+  fs.writeFileSync(path.join(shots, 'bench.json'), JSON.stringify(results, null, 2));
+  console.log(`written ${path.join(shots, 'bench.json')}`);
+})().catch((e) => { console.error(e); process.exit(1); });

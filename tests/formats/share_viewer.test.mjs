@@ -1,0 +1,73 @@
+// The viewer served by `essi serve` shares a tape too big for a link through /api/share (web/share_store.js) and
+// opens the /#share=ID link again. Needs the wasm build's viewer (build/wasm/web); skipped without it.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+import crypto from 'node:crypto';
+import fs from 'node:fs';
+import path from 'node:path';
+import { chromium } from 'playwright-core';
+import { essiBin, chromiumPath, sourceDir, tempDir } from './support.mjs';
+
+const webRoot = process.env.ESSI_WEB_ROOT || path.join(sourceDir, 'build/wasm/web');
+const haveViewer = fs.existsSync(path.join(webRoot, 'essi_viewer.wasm'));
+const args = ['--no-sandbox', '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'];
+
+function startServer(dataDir) {
+  return new Promise((resolve, reject) => {
+    const p = spawn(essiBin, ['serve', '--port', '0', '--web-root', webRoot, '--data', dataDir], { stdio: ['ignore', 'pipe', 'pipe'] });
+    let out = '';
+    p.stdout.on('data', (d) => {
+      out += d;
+      const m = out.match(/http:\/\/127\.0\.0\.1:\d+/);
+      if (m) resolve({ proc: p, url: m[0] });
+    });
+    p.on('exit', (code) => reject(new Error('essi serve exited with ' + code)));
+  });
+}
+
+// A valid tape of about `bytes` bytes: many small square parts.
+function bigTape(bytes) {
+  const part = '+2000+0\n7\n+1000+0\n+0+1000\n-1000+0\n+0-1000\n8\n';
+  let s = '%\n39+3000\n';
+  while (s.length < bytes) s += part;
+  return s + '63\n';
+}
+
+test('share button: a big tape goes to /api/share and the /#share=ID link opens it', { skip: !haveViewer && 'viewer not built (build/wasm/web)', timeout: 240000 }, async () => {
+  const data = tempDir('share');
+  const { proc, url } = await startServer(data);
+  const browser = await chromium.launch({ executablePath: chromiumPath, args });
+  try {
+    const page = await browser.newPage();
+    await page.goto(url + '/');
+    await page.waitForFunction(() => window.essikit && window.essikit.started, null, { timeout: 120000 });
+    const server = await page.evaluate(() => window.essikit.shareStore.ready);
+    assert.equal(server.ok, true);
+    const tape = bigTape(1.5e6);
+    const state = await page.evaluate((t) => window.essikit.load('big.esi', t), tape);
+    assert.equal(state.status, 'ready');
+    assert.equal(state.bytes, tape.length);
+    const link = await page.evaluate(() => window.essikit.shareLink());
+    const id = crypto.createHash('sha256').update(tape).digest('hex');
+    assert.match(link, new RegExp(`^${url}/#share=${id}&c=[^&]+&l=\\d+&n=big\\.esi$`));
+    // The server has the tape byte for byte.
+    const stored = await (await fetch(`${url}/api/share/${id}`)).text();
+    assert.equal(stored, tape);
+    // A small tape still gets an ordinary link (the tape in the URL).
+    await page.evaluate(() => window.essikit.load('small.esi', '+100+0\n63\n'));
+    const small = await page.evaluate(() => window.essikit.shareLink());
+    assert.match(small, /#c=.*&t=/);
+    // The link opens the tape in a fresh page (the same tab: a background tab's frames are throttled).
+    await page.goto('about:blank');
+    const page2 = page;
+    await page2.goto(link);
+    await page2.waitForFunction(() => window.essikit && window.essikit.started, null, { timeout: 120000 });
+    await page2.waitForFunction(() => { const s = window.essikit.state(); return s.status === 'ready' && s.name === 'big.esi'; }, null, { timeout: 120000 });
+    const s2 = await page2.evaluate(() => window.essikit.state());
+    assert.equal(s2.bytes, tape.length);
+  } finally {
+    await browser.close();
+    proc.kill();
+  }
+});

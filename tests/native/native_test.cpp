@@ -1,0 +1,240 @@
+// Unit tests of the native-only parts of the CLI (native/: batch, formats, SHA-256, share store, thread pool).
+// Built natively only (essi_native_tests); the formats are also checked end to end against their real consumers
+// by tests/formats (node: ajv + the SARIF schema, junit2json, xml2js, Chromium).
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "batch.hpp"
+#include "essi/diagnostics.hpp"
+#include "formats.hpp"
+#include "render_svg.hpp"
+#include "sha256.hpp"
+#include "share_store.hpp"
+#include "thread_pool.hpp"
+
+namespace fs = std::filesystem;
+using namespace essi::native;
+
+namespace {
+
+fs::path temp_dir(const std::string& name) {
+    fs::path p = fs::temp_directory_path() / ("essi_native_test_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(p);
+    fs::create_directories(p);
+    return p;
+}
+
+void write(const fs::path& p, const std::string& s) {
+    fs::create_directories(p.parent_path());
+    std::ofstream(p, std::ios::binary) << s;
+}
+
+essi::Diagnostic diag(essi::Severity s, essi::DiagCode c, std::uint32_t line, std::uint32_t col, std::string msg) {
+    essi::Diagnostic d;
+    d.severity = s;
+    d.code = c;
+    d.line = line;
+    d.column = col;
+    d.message = std::move(msg);
+    return d;
+}
+
+}  // namespace
+
+// FIPS 180-4 / NIST CSRC example vectors for SHA-256.
+TEST(Sha256, FipsVectors) {
+    EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+    EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+    EXPECT_EQ(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+              "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+    EXPECT_EQ(sha256_hex("abcdefghbcdefghicdefghijdefghijkefghijklfghijklmghijklmnhijklmnoijklmnopjklmnopqklmnopqrlmnopqrs"
+                         "mnopqrstnopqrstu"),
+              "cf5b16a778af8380036ce59e7b0492370b249b11e8f07a51afac45037afee9d1");
+    EXPECT_EQ(sha256_hex(std::string(1000000, 'a')),
+              "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
+TEST(Sha256, IdSyntax) {
+    EXPECT_TRUE(is_sha256_hex(sha256_hex("x")));
+    EXPECT_FALSE(is_sha256_hex("abc"));
+    EXPECT_FALSE(is_sha256_hex(std::string(64, 'A')));
+    EXPECT_FALSE(is_sha256_hex(std::string(63, 'a') + "/"));
+}
+
+TEST(Sniff, TapesAndOtherFiles) {
+    EXPECT_TRUE(looks_like_essi("%\r\n3\r\nPART 12 - any text\r\n4\r\n39+3000\r\n+100+200\r\n7\r\n-100\r\n8\r\n63\r\n"));
+    EXPECT_TRUE(looks_like_essi("\xEF\xBB\xBF+100+200\n-50+0\n64\n"));
+    EXPECT_TRUE(looks_like_essi("+100+200\n+5+5 \n+1x\n0\n/\n"));  // one bad line of five is still a tape
+    EXPECT_FALSE(looks_like_essi("# README\nSome text\n"));
+    EXPECT_FALSE(looks_like_essi("{\"a\": 1}\n"));
+    EXPECT_FALSE(looks_like_essi("1 fn 39 value=30 tools=-\n2 fn 29 tools=-\n"));  // a trace
+    EXPECT_FALSE(looks_like_essi("123\n"));                                         // one line says nothing
+    EXPECT_FALSE(looks_like_essi(std::string("+1+2\n\0\n+3+4\n", 12)));
+    EXPECT_FALSE(looks_like_essi(""));
+}
+
+TEST(Expand, ExtensionsSniffingAndOrder) {
+    const fs::path d = temp_dir("expand");
+    write(d / "b.esi", "+1+1\n63\n");
+    write(d / "a.NC", "+1+1\n63\n");
+    write(d / "sub/c.txt", "+1+1\n63\n");
+    write(d / "sub/PART7", "3\nPART 7\n4\n+100+0\n63\n");   // no extension, ESSI content
+    write(d / "sub/notes", "just some notes\n");             // no extension, not ESSI
+    write(d / "sub/x.json", "{}\n");
+    std::vector<std::string> errors;
+    auto files = expand_paths({d.string()}, ExpandOptions{}, errors);
+    ASSERT_TRUE(errors.empty());
+    std::vector<std::string> rel;
+    for (auto& f : files) rel.push_back(fs::relative(f, d).generic_string());
+    EXPECT_EQ(rel, (std::vector<std::string>{"a.NC", "b.esi", "sub/PART7", "sub/c.txt"}));
+
+    ExpandOptions only_esi;
+    only_esi.extensions = parse_extension_list("esi");
+    only_esi.sniff = false;
+    files = expand_paths({d.string(), "-", "missing.esi"}, only_esi, errors);
+    ASSERT_EQ(files.size(), 3u);
+    EXPECT_EQ(fs::path(files[0]).filename(), "b.esi");
+    EXPECT_EQ(files[1], "-");
+    EXPECT_EQ(files[2], "missing.esi");  // reported when it is read
+    fs::remove_all(d);
+}
+
+TEST(Expand, ParseExtensionList) {
+    EXPECT_EQ(parse_extension_list("esi,.NC  txt;;"), (std::vector<std::string>{".esi", ".nc", ".txt"}));
+    EXPECT_TRUE(parse_extension_list(" , ").empty());
+}
+
+TEST(ThreadPool, EmitsInOrderWithManyWorkers) {
+    for (unsigned jobs : {1u, 2u, 7u}) {
+        const std::size_t n = 500;
+        std::vector<int> results(n, -1);
+        std::vector<std::size_t> order;
+        std::atomic<int> running{0}, max_running{0};
+        for_each_ordered(
+            n, jobs,
+            [&](std::size_t i) {
+                const int now = ++running;
+                int m = max_running.load();
+                while (now > m && !max_running.compare_exchange_weak(m, now)) {}
+                if (i % 7 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
+                results[i] = static_cast<int>(i * 3);
+                --running;
+            },
+            [&](std::size_t i) {
+                EXPECT_EQ(results[i], static_cast<int>(i * 3));
+                order.push_back(i);
+            },
+            16);
+        ASSERT_EQ(order.size(), n);
+        for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(order[i], i);
+        EXPECT_LE(max_running.load(), static_cast<int>(jobs));
+    }
+}
+
+TEST(Batch, SameResultsForAnyJobCountAndLimit) {
+    const fs::path d = temp_dir("batch");
+    for (int i = 0; i < 20; ++i) write(d / ("t" + std::to_string(100 + i) + ".esi"), i % 3 ? "+100+0\n63\n" : "+1x\n+5\n");
+    std::vector<std::string> errors;
+    const auto files = expand_paths({d.string()}, ExpandOptions{}, errors);
+    ASSERT_EQ(files.size(), 20u);
+    std::vector<std::string> seen1, seen2;
+    BatchOptions o;
+    o.jobs = 1;
+    check_batch(files, *essi::builtin_profile("iso6582"), o, [&](BatchItem&& it) { seen1.push_back(it.report.path + ":" + std::to_string(it.report.errors())); });
+    o.jobs = 4;
+    o.max_diagnostics = 1;
+    check_batch(files, *essi::builtin_profile("iso6582"), o, [&](BatchItem&& it) {
+        EXPECT_LE(it.report.result.diagnostics.size(), 1u);
+        seen2.push_back(it.report.path + ":" + std::to_string(it.report.errors()));
+    });
+    EXPECT_EQ(seen1, seen2);  // same order, same counts (omitted diagnostics still count)
+    fs::remove_all(d);
+}
+
+TEST(Formats, LimitDiagnosticsCountsTheRest) {
+    FileReport f;
+    f.result.diagnostics = {diag(essi::Severity::Warning, essi::DiagCode::W109_WhitespaceSkipped, 1, 1, "w"),
+                            diag(essi::Severity::Error, essi::DiagCode::E101_InvalidCharacter, 2, 1, "e"),
+                            diag(essi::Severity::Error, essi::DiagCode::E101_InvalidCharacter, 3, 1, "e")};
+    limit_diagnostics(f, 1);
+    EXPECT_EQ(f.result.diagnostics.size(), 1u);
+    EXPECT_EQ(f.omitted(), 2u);
+    EXPECT_EQ(f.errors(), 2u);
+    EXPECT_EQ(f.warnings(), 1u);
+    EXPECT_FALSE(f.ok());
+}
+
+TEST(Formats, GithubCommands) {
+    EXPECT_EQ(github_escape_data("a%b\r\nc"), "a%25b%0D%0Ac");
+    EXPECT_EQ(github_escape_property("dir,x:y.esi"), "dir%2Cx%3Ay.esi");
+    BatchItem it;
+    it.read_ok = true;
+    it.report.path = "a b.esi";
+    it.report.result.diagnostics = {diag(essi::Severity::Error, essi::DiagCode::E301_ArcEndNotOnCircle, 12, 3, "off 50%"),
+                                    diag(essi::Severity::Warning, essi::DiagCode::W114_NoProgramEnd, 0, 0, "no end")};
+    EXPECT_EQ(github_file_block(it),
+              "::error file=a b.esi,line=12,col=3,title=E301::off 50%25\n"
+              "::warning file=a b.esi,title=W114::no end\n");
+}
+
+TEST(Formats, UrisAndXml) {
+    EXPECT_EQ(path_to_uri("./dir/a b#1.esi"), "dir/a%20b%231.esi");
+    EXPECT_EQ(path_to_uri("/abs/x.esi"), "file:///abs/x.esi");
+    EXPECT_EQ(path_to_uri("dir\\x.esi"), "dir/x.esi");
+    EXPECT_EQ(xml_escape("<a href=\"x\">'&'\x01</a>"), "&lt;a href=&quot;x&quot;&gt;&apos;&amp;&apos;?&lt;/a&gt;");
+}
+
+TEST(Formats, SarifHasOneRulePerCode) {
+    const auto rules = sarif_rules("https://example.org/docs");
+    ASSERT_EQ(rules.size(), essi::all_codes().size());
+    EXPECT_EQ(rules[0]["id"], "E101");
+    EXPECT_EQ(rules[0]["helpUri"], "https://example.org/docs/diagnostics.md#e101");
+    EXPECT_EQ(rules[0]["defaultConfiguration"]["level"], "error");
+    for (const auto& r : rules) EXPECT_FALSE(r["shortDescription"]["text"].get<std::string>().empty());
+}
+
+TEST(ShareStore, ContentAddressedAndPersistent) {
+    const fs::path d = temp_dir("store");
+    std::string error;
+    {
+        auto store = ShareStore::open((d / "data").string(), error);
+        ASSERT_TRUE(store) << error;
+        const auto a = store->put("+100+0\n63\n");
+        ASSERT_TRUE(a.ok) << a.error;
+        EXPECT_TRUE(a.created);
+        EXPECT_EQ(a.id, sha256_hex("+100+0\n63\n"));
+        const auto b = store->put("+100+0\n63\n");
+        EXPECT_TRUE(b.ok);
+        EXPECT_FALSE(b.created);
+        EXPECT_EQ(b.id, a.id);
+        EXPECT_FALSE(store->get(sha256_hex("other")));
+    }
+    auto again = ShareStore::open((d / "data").string(), error);
+    ASSERT_TRUE(again);
+    auto tape = again->get(sha256_hex("+100+0\n63\n"));
+    ASSERT_TRUE(tape);
+    EXPECT_EQ(*tape, "+100+0\n63\n");
+    const std::string binary("\0\xff\r\n", 4);  // blobs, not text
+    const auto c = again->put(binary);
+    EXPECT_EQ(*again->get(c.id), binary);
+    fs::remove_all(d);
+}
+
+TEST(Render, LegendAndLayers) {
+    const std::string tape = "39+3000\n+0+1000\n7\n+1000+0\n+0+1000+0+500-\n8\n+5+5\n63\n";
+    RenderOptions o;
+    o.title = "t<1>.esi";
+    const auto r = render_svg(tape, *essi::builtin_profile("iso6582"), o);
+    EXPECT_NE(r.svg.find("id=\"cut\""), std::string::npos);
+    EXPECT_NE(r.svg.find(std::string(kSvgCutColor)), std::string::npos);
+    EXPECT_NE(r.svg.find("class=\"pierce\""), std::string::npos);
+    EXPECT_NE(r.svg.find("t&lt;1&gt;.esi"), std::string::npos);
+    EXPECT_NE(r.svg.find("data-pierces=\"" + std::to_string(r.result.stats.pierces) + "\""), std::string::npos);
+}
