@@ -94,8 +94,8 @@ async function measurePan(page) {
     const tick = (t) => { window.__pan.push(t); if (window.__panOn) requestAnimationFrame(tick); };
     requestAnimationFrame(tick);
   });
-  for (let i = 1; i <= 60; ++i) {
-    await page.mouse.move(cx + 4 * i, cy + 2 * i);
+  for (let i = 1; i <= 12; ++i) {
+    await page.mouse.move(cx + 10 * i, cy + 5 * i);
     await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
   }
   await page.mouse.up();

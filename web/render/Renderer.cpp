@@ -186,7 +186,7 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
     // Paths
-    if (segment_count_ > 0) {
+    if (segment_count_ > 0 && (o.layer_mask & 0xF) != 0) {  // every layer hidden: not one vertex to run
         glUseProgram(path_program_);
         set_view_uniforms(path_program_, view, fb_w, fb_h, s);
         float hw[4] = {0.6f * s, 0.6f * s, 1.1f * s, 1.0f * s};
