@@ -163,7 +163,6 @@ private:
         long long lead_value = 0;
         int words = 0;
         std::uint8_t sign_flags = 0;  // Block::kTcNegative / kTpNegative
-        bool failed = false;
         bool blank = true;
         int mark = 0;                 // '%', '/' or '=' when the block is that mark
     };
