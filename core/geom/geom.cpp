@@ -80,6 +80,11 @@ Box bounding_box(const MotionRecord& m) {
             // Axis extremes (at angles 0, 90, 180, 270 degrees) that lie inside the sweep.
             static constexpr double kAxisCos[4] = {1, 0, -1, 0};
             static constexpr double kAxisSin[4] = {0, 1, 0, -1};
+            if (m.radius == m.end_radius && std::abs(m.sweep) >= kTwoPi) {
+                // A full circle (common: holes) reaches all four extremes.
+                for (int k = 0; k < 4; ++k) b.add(Point{m.centre.x + m.radius * kAxisCos[k], m.centre.y + m.radius * kAxisSin[k]});
+                break;
+            }
             if (m.radius == m.end_radius) {
                 // Constant radius (the usual case): which extremes lie inside the sweep is decided with
                 // pseudo-angles (monotonic in the true angle, no trigonometry).

@@ -124,11 +124,25 @@ void Machine::run(const Tape& chunk) {
     const std::size_t end = chunk.end_block();
     const std::size_t base = chunk.first_block();
     const Block* last = nullptr;  // kept as last_block_ when the chunk is done (the chunk's memory goes)
+    const Block* const blocks = chunk.blocks().data();
     for (std::size_t k = 0; k < end && !ended_; ++k) {
-        const Block& b = chunk.block(k);
+        const Block& b = blocks[k];
         const std::span<const std::int32_t> w(words, static_cast<std::size_t>(b.word_count()));
         words += b.word_count();
         const std::size_t i = base + k;  // the block's index in the whole tape
+        // The common case first: a motion or a function, nothing pending, not the end.
+        if (!burner_count_ && !skipping_ && !b.ends_program()) {
+            if (b.kind == BlockKind::Motion) {
+                last = &b;
+                motion(b, i, w);
+                continue;
+            }
+            if (b.kind == BlockKind::Function) {
+                last = &b;
+                function(b, i, false, 0);
+                continue;
+            }
+        }
         if (b.kind == BlockKind::Comment || b.kind == BlockKind::Percent) continue;
         last = &b;
         if (burner_count_ && !(b.has_code() && b.code == kBurnerSpacing && b.kind == BlockKind::FunctionValue)) {

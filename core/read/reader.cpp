@@ -19,6 +19,9 @@ constexpr int kMaxWordDigits = 9;              // significant digits of a dimens
 constexpr int kMaxFunctionDigits = 3;          // ISO 6582 3.4.1
 constexpr int kIgnoreOnCode = 3;
 constexpr int kIgnoreOffCode = 4;
+// Words of a line read by the fast path; a line with more goes the general way (it is an error anyway).
+// The fast path makes room for this many words before it reads a line.
+constexpr int kMaxPlainWords = 8;
 
 enum CharClass : std::uint8_t { kOther, kDigit, kPlus, kMinus, kSpace, kLineEnd, kPercent, kSlash, kEquals, kHigh };
 
@@ -168,7 +171,7 @@ private:
     };
 
     void read_line(std::uint32_t begin, std::uint32_t end);
-    bool read_plain_line(std::uint32_t begin, std::uint32_t& end);
+    std::uint32_t read_plain_lines(std::uint32_t pos, std::uint32_t size, std::size_t max_blocks);
     void classify(std::uint32_t first, const LineParse& lp, std::size_t words_before);
     void read_ignored_line(std::uint32_t begin, std::uint32_t end);
     void after_end_line(std::uint32_t begin, std::uint32_t end);
@@ -201,6 +204,7 @@ private:
     bool finished_ = false;             // the closing diagnostics have been given
     std::size_t total_blocks_ = 0;      // blocks of all earlier chunks
     std::size_t chunk_blocks_ = 0;      // blocks in the chunk being filled
+    std::size_t chunk_comments_ = 0;    // comment blocks among them
     std::uint32_t line_ = 1;
     std::uint32_t line_begin_ = 0;
     std::size_t errors_ = 0;
@@ -244,6 +248,7 @@ void Reader::push_block(std::uint32_t offset, BlockKind kind, std::uint16_t code
         percent_line_ = 0;
     }
     Tape& t = *chunk_;
+    if (kind == BlockKind::Comment) ++chunk_comments_;
     if (chunk_blocks_ % Tape::kWordIndexStride == 0)
         t.word_index_.push_back(static_cast<std::uint32_t>(t.words_.size()) - (packed & Block::kWordCountMask));
     t.blocks_.push_back(Block{offset, line_, code, kind, packed});
@@ -255,7 +260,7 @@ void Reader::reserve_whole(Tape& tape) const {
     // A block per line, a word per sign: no reallocation while reading, no slack to give back.
     const ByteCounts n = count_bytes(src_);
     tape.blocks_.reserve(std::max(n.lf, n.cr) + 1);
-    tape.words_.reserve(n.signs);
+    tape.words_.reserve(n.signs + kMaxPlainWords);  // the fast path's room for the last line
     tape.word_index_.reserve(tape.blocks_.capacity() / Tape::kWordIndexStride + 1);
 }
 
@@ -268,6 +273,7 @@ bool Reader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     chunk.diagnostics_.clear();
     chunk.first_block_ = total_blocks_;
     chunk_blocks_ = 0;
+    chunk_comments_ = 0;
     chunk.has_end_ = false;
     const bool ended_before = ended_;
 
@@ -290,17 +296,20 @@ bool Reader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     const auto size = static_cast<std::uint32_t>(std::min<std::size_t>(src_.size(), std::numeric_limits<std::uint32_t>::max()));
     std::uint32_t pos = pos_;
     while (pos < size && !stopped_ && !after_end_seen_ && chunk_blocks_ < max_blocks) {
+        // The common case first: a run of blocks of digits and signs, read in one pass.
+        if (skip_ == 0 && !ended_ && !in_ignore_ && percent_line_ == 0) {
+            pos = read_plain_lines(pos, size, max_blocks);
+            if (pos >= size || stopped_ || chunk_blocks_ >= max_blocks) break;
+        }
+        // The line at `pos` needs the general path.
         std::uint32_t end = pos;
         line_begin_ = pos;
-        // The common case first: a block of digits and signs, read in one pass.
-        if (skip_ != 0 || ended_ || in_ignore_ || !read_plain_line(pos, end)) {
-            while (end < size && data[end] != '\n' && data[end] != '\r') ++end;
-            const std::uint32_t from = pos + skip_;
-            skip_ = 0;
-            if (ended_) after_end_line(from, end);
-            else if (in_ignore_) read_ignored_line(from, end);
-            else read_line(from, end);
-        }
+        while (end < size && data[end] != '\n' && data[end] != '\r') ++end;
+        const std::uint32_t from = pos + skip_;
+        skip_ = 0;
+        if (ended_) after_end_line(from, end);
+        else if (in_ignore_) read_ignored_line(from, end);
+        else read_line(from, end);
         if (end >= size) {
             pos = size;
             break;
@@ -317,6 +326,8 @@ bool Reader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     if (ended_before) chunk.end_block_ = 0;
     else if (!ended_) chunk.end_block_ = chunk.blocks_.size();
     // (when the end was found in this chunk, classify() set end_block_)
+    // Comment blocks come only before the end (after it nothing but % is kept).
+    chunk.program_blocks_ = chunk.end_block_ - (ended_before ? 0 : chunk_comments_);
 
     const bool input_done = pos >= size || stopped_ || after_end_seen_;
     if (!input_done) return true;
@@ -338,65 +349,93 @@ bool Reader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     return true;
 }
 
-// Reads a line made only of digits and signs (almost every line of a real tape) in one pass, and sets
-// `end` to its end. Returns false, having changed nothing, for any other line: the general path reads it.
-// Locals only in the loops, so that the compiler keeps everything in registers.
-bool Reader::read_plain_line(std::uint32_t begin, std::uint32_t& end) {
+// Reads lines made only of digits and signs (almost every line of a real tape) from `pos` on, one pass
+// a line, until a line needs the general path (blanks, marks, comments, errors), the reader's state
+// changes (the end, an ignore section), the chunk is full or the bytes end. Returns the start of the
+// first line it did not read (line_ is that line's number), or `size`. Locals only in the loop, so that
+// the compiler keeps them in registers; a line's words are written straight into room made once a line.
+std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, std::size_t max_blocks) {
     const auto* const base = reinterpret_cast<const unsigned char*>(src_.data());
-    const unsigned char* const first = base + begin;
-    const unsigned char* const stop = base + src_.size();
-    const unsigned char* p = first;
-    std::uint32_t lead = 0;
-    const int lead_digits = read_digits(p, stop, lead);
-    if (lead_digits > kMaxWordDigits) return false;
-    p += lead_digits;
-    constexpr int kMaxPlainWords = 8;  // more words than that: the general path (it is an error anyway)
-    std::int32_t words[kMaxPlainWords];
-    int n = 0;
-    std::uint8_t sign_flags = 0;
-    while (p != stop) {
-        const unsigned char sign = *p;
-        if (sign != '+' && sign != '-') break;
-        if (n == kMaxPlainWords) return false;
-        ++p;
-        std::uint32_t v = 0;
-        const int digits = p == stop ? 0 : read_digits(p, stop, v);
-        if (digits > kMaxWordDigits) return false;  // leading zeros or a number too large: the general path
-        p += digits;
-        const auto value = static_cast<std::int32_t>(v);
-        if (sign == '-') {
-            words[n] = -value;
-            if (n == 4) sign_flags |= Block::kTcNegative;
-            if (n == 5) sign_flags |= Block::kTpNegative;
+    const unsigned char* const stop = base + size;
+    Tape& t = *chunk_;
+    std::uint32_t line = line_;
+    std::size_t blocks = chunk_blocks_;
+    const std::size_t blocks_before = blocks;
+    while (pos < size && blocks < max_blocks) {
+        const unsigned char* const first = base + pos;
+        const unsigned char* p = first;
+        std::uint32_t lead = 0;
+        const int lead_digits = read_digits(p, stop, lead);
+        if (lead_digits > kMaxWordDigits) break;
+        p += lead_digits;
+        std::int32_t* const words = t.words_.room(kMaxPlainWords);
+        int n = 0;
+        std::uint8_t sign_flags = 0;
+        while (p != stop) {
+            const unsigned char sign = *p;
+            if (sign != '+' && sign != '-') break;
+            if (n == kMaxPlainWords) break;
+            ++p;
+            std::uint32_t v = 0;
+            const int digits = p == stop ? 0 : read_digits(p, stop, v);
+            if (digits > kMaxWordDigits) break;  // leading zeros or a number too large: the general path
+            p += digits;
+            const auto value = static_cast<std::int32_t>(v);
+            if (sign == '-') {
+                words[n] = -value;
+                if (n == 4) sign_flags |= Block::kTcNegative;
+                if (n == 5) sign_flags |= Block::kTpNegative;
+            } else {
+                words[n] = value;
+            }
+            ++n;
+        }
+        if (p == first || (p != stop && *p != '\n' && *p != '\r')) break;  // not a plain line
+        const auto offset = static_cast<std::uint32_t>(first - base);
+        t.words_.commit(static_cast<std::size_t>(n));
+        bool state_changed = false;
+        // The two common shapes go straight in; everything else is classified in full.
+        if (program_started_ && lead_digits == 0 && (n == 2 || n == 5 || n == 6)) {
+            if (blocks % Tape::kWordIndexStride == 0) t.word_index_.push_back(static_cast<std::uint32_t>(t.words_.size()) - n);
+            t.blocks_.push_back(Block{offset, line, Block::kNoCode, BlockKind::Motion, static_cast<std::uint8_t>(n | sign_flags)});
+            ++blocks;
+        } else if (program_started_ && n == 0 && lead_digits <= kMaxFunctionDigits && lead != kIgnoreOnCode &&
+                   lead != kIgnoreOffCode && !end_function_[lead]) {
+            if (blocks % Tape::kWordIndexStride == 0) t.word_index_.push_back(static_cast<std::uint32_t>(t.words_.size()));
+            t.blocks_.push_back(Block{offset, line, static_cast<std::uint16_t>(lead), BlockKind::Function, 0});
+            ++blocks;
         } else {
-            words[n] = value;
+            // Rare shapes (the first block, a function value, a head address, an end code, 3/4, wrong word
+            // counts): classify() with the reader's state brought up to date; it may change that state.
+            line_ = line;
+            line_begin_ = offset;
+            chunk_blocks_ = blocks;
+            LineParse lp;
+            lp.lead_digits = lead_digits;
+            lp.lead_value = lead;
+            lp.words = n;
+            lp.sign_flags = sign_flags;
+            lp.blank = false;
+            classify(offset, lp, t.words_.size() - static_cast<std::size_t>(n));
+            blocks = chunk_blocks_;
+            state_changed = ended_ || in_ignore_ || stopped_ || percent_line_ != 0;
         }
-        ++n;
+        // One line end: CR, LF, CR LF or LF CR.
+        pos = static_cast<std::uint32_t>(p - base);
+        if (pos >= size) {
+            pos = size;
+            break;
+        }
+        const unsigned char c = base[pos];
+        ++pos;
+        if (pos < size && (base[pos] == '\n' || base[pos] == '\r') && base[pos] != c) ++pos;
+        ++line;
+        if (state_changed) break;
     }
-    if (p == first || (p != stop && *p != '\n' && *p != '\r')) return false;
-    end = static_cast<std::uint32_t>(p - base);
-    const std::size_t words_before = tape().words_.size();
-    chunk_->words_.insert(chunk_->words_.end(), words, words + n);
-    // The two common shapes go straight in; everything else is classified in full.
-    if (program_started_) {
-        if (lead_digits == 0 && (n == 2 || n == 5 || n == 6)) {
-            push_block(begin, BlockKind::Motion, Block::kNoCode, static_cast<std::uint8_t>(n | sign_flags));
-            return true;
-        }
-        if (n == 0 && lead_digits <= kMaxFunctionDigits && lead != kIgnoreOnCode && lead != kIgnoreOffCode &&
-            !end_function_[lead]) {
-            push_block(begin, BlockKind::Function, static_cast<std::uint16_t>(lead), 0);
-            return true;
-        }
-    }
-    LineParse lp;
-    lp.lead_digits = lead_digits;
-    lp.lead_value = lead;
-    lp.words = n;
-    lp.sign_flags = sign_flags;
-    lp.blank = false;
-    classify(begin, lp, words_before);
-    return true;
+    if (blocks != blocks_before) last_line_ = t.blocks_.back().line;
+    line_ = line;
+    chunk_blocks_ = blocks;
+    return pos;
 }
 
 void Reader::read_ignored_line(std::uint32_t begin, std::uint32_t end) {
@@ -544,7 +583,7 @@ void Reader::read_line(std::uint32_t begin, std::uint32_t end) {
     const std::size_t words_before = tape().words_.size();
     LineParse lp;
     if (!parse_words(begin, end, lp)) {
-        tape().words_.resize(words_before);
+        tape().words_.truncate(words_before);
         push_block(begin, BlockKind::Invalid, Block::kNoCode, 0);
         program_started_ = true;
         return;
@@ -560,7 +599,7 @@ void Reader::classify(std::uint32_t first, const LineParse& lp, std::size_t word
 
     auto fail = [&](DiagCode code, std::string message) {
         report(Severity::Error, code, first, std::move(message));
-        tape().words_.resize(words_before);
+        tape().words_.truncate(words_before);
         push_block(first, BlockKind::Invalid, Block::kNoCode, 0);
         program_started_ = true;
     };
@@ -653,17 +692,18 @@ void Tape::append(const Tape& chunk) {
     if (blocks_.empty()) first_block_ = chunk.first_block_;
     const std::size_t before = blocks_.size();
     const bool ended_before = has_end_;
-    blocks_.insert(blocks_.end(), chunk.blocks_.begin(), chunk.blocks_.end());
+    blocks_.append(chunk.blocks_.data(), chunk.blocks_.size());
     // The sparse word index of the whole: one entry per kWordIndexStride blocks, counted from block 0.
     std::size_t w = words_.size();
     for (std::size_t k = 0; k < chunk.blocks_.size(); ++k) {
         if ((before + k) % kWordIndexStride == 0) word_index_.push_back(static_cast<std::uint32_t>(w));
         w += chunk.blocks_[k].word_count();
     }
-    words_.insert(words_.end(), chunk.words_.begin(), chunk.words_.end());
+    words_.append(chunk.words_.data(), chunk.words_.size());
     diagnostics_.insert(diagnostics_.end(), chunk.diagnostics_.begin(), chunk.diagnostics_.end());
     // Program blocks: those up to the end block (a chunk after the end has end_block() == 0).
     if (!ended_before) end_block_ = before + chunk.end_block_;
+    program_blocks_ += chunk.program_blocks_;
     has_end_ = has_end_ || chunk.has_end_;
 }
 

@@ -57,14 +57,6 @@ std::size_t CheckResult::count(Severity s) const {
         std::count_if(diagnostics.begin(), diagnostics.end(), [&](const Diagnostic& d) { return d.severity == s; }));
 }
 
-unsigned long long count_program_blocks(const Tape& tape) {
-    unsigned long long n = 0;
-    const std::size_t end = tape.end_block();
-    for (std::size_t i = 0; i < end; ++i)
-        if (tape.block(i).kind != BlockKind::Comment) ++n;
-    return n;
-}
-
 void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
     std::stable_sort(diagnostics.begin(), diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
         if (a.line != b.line) return a.line < b.line;
@@ -78,6 +70,8 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
 class TapeChecker::Tee : public MotionSink {
 public:
     Tee(const Profile& profile, MotionSink* also) : stats(profile), also_(also) {}
+    // Where the interpreter sends its records: the statistics alone need no hop through the tee.
+    MotionSink& target() { return also_ ? static_cast<MotionSink&>(*this) : stats; }
     void on_motion(const MotionRecord& m) override {
         stats.on_motion(m);
         if (also_) also_->on_motion(m);
@@ -92,14 +86,14 @@ private:
 };
 
 TapeChecker::TapeChecker(std::string_view bytes, const Profile& profile, MotionSink* also)
-    : tee_(std::make_unique<Tee>(profile, also)), interpreter_(bytes, profile, *tee_, result_.diagnostics) {}
+    : tee_(std::make_unique<Tee>(profile, also)), interpreter_(bytes, profile, tee_->target(), result_.diagnostics) {}
 
 TapeChecker::~TapeChecker() = default;
 
 void TapeChecker::check_chunk(const Tape& chunk) {
     result_.diagnostics.insert(result_.diagnostics.end(), chunk.diagnostics().begin(), chunk.diagnostics().end());
     interpreter_.run(chunk);
-    blocks_ += count_program_blocks(chunk);
+    blocks_ += chunk.program_blocks();
 }
 
 CheckResult TapeChecker::finish() {

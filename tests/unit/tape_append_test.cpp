@@ -26,8 +26,17 @@ Tape read_appended(std::string_view bytes, const Profile& p, std::size_t chunk_b
     return whole;
 }
 
+// Program blocks counted the plain way: blocks before the end that are not comment lines.
+std::size_t count_program_blocks(const Tape& t) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < t.end_block(); ++i) n += t.block(i).kind != BlockKind::Comment;
+    return n;
+}
+
 void expect_same(const Tape& a, const Tape& b, const std::string& what) {
     ASSERT_EQ(a.size(), b.size()) << what;
+    EXPECT_EQ(a.program_blocks(), count_program_blocks(a)) << what;
+    EXPECT_EQ(b.program_blocks(), count_program_blocks(b)) << what;
     for (std::size_t i = 0; i < a.size(); ++i) {
         const Block& x = a.block(i);
         const Block& y = b.block(i);
@@ -37,7 +46,7 @@ void expect_same(const Tape& a, const Tape& b, const std::string& what) {
         const auto wa = a.words(i), wb = b.words(i);
         ASSERT_TRUE(std::equal(wa.begin(), wa.end(), wb.begin(), wb.end())) << what << ": words of block " << i;
     }
-    EXPECT_EQ(a.all_words(), b.all_words()) << what;
+    EXPECT_TRUE(std::ranges::equal(a.all_words(), b.all_words())) << what;
     Tape::WordCursor ca(a), cb(b);
     for (std::size_t i = 0; i < a.size(); ++i) {
         const auto wa = ca.next(i), wb = cb.next(i);

@@ -8,9 +8,14 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <memory>
+#include <new>
 #include <span>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "essi/diagnostics.hpp"
@@ -27,6 +32,83 @@ enum class BlockKind : std::uint8_t {
     EndMark,        // '/' or '=' ending the program (dialect)
     Invalid,        // a block with a read error; the interpreter skips it
 };
+
+namespace detail {
+// A growable array of plain values (blocks, words) that the reader's hot loop fills through a raw pointer:
+// it makes room for a line's worth once (`room`), writes, then `commit`s what it wrote, instead of a
+// capacity check per value. Growth is geometric, as std::vector's.
+template <class T>
+class PodArray {
+    static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>);
+
+public:
+    PodArray() = default;
+    PodArray(const PodArray& o) { append(o.data(), o.size()); }
+    PodArray(PodArray&& o) noexcept
+        : data_(std::exchange(o.data_, nullptr)), size_(std::exchange(o.size_, 0)), cap_(std::exchange(o.cap_, 0)) {}
+    PodArray& operator=(const PodArray& o) {
+        if (this != &o) {
+            size_ = 0;
+            append(o.data(), o.size());
+        }
+        return *this;
+    }
+    PodArray& operator=(PodArray&& o) noexcept {
+        std::swap(data_, o.data_);
+        std::swap(size_, o.size_);
+        std::swap(cap_, o.cap_);
+        return *this;
+    }
+    ~PodArray() { std::free(data_); }
+
+    [[nodiscard]] T* data() { return data_; }
+    [[nodiscard]] const T* data() const { return data_; }
+    [[nodiscard]] std::size_t size() const { return size_; }
+    [[nodiscard]] std::size_t capacity() const { return cap_; }
+    [[nodiscard]] bool empty() const { return size_ == 0; }
+    T& operator[](std::size_t i) { return data_[i]; }
+    const T& operator[](std::size_t i) const { return data_[i]; }
+    T& back() { return data_[size_ - 1]; }
+    [[nodiscard]] std::span<const T> span() const { return {data_, size_}; }
+
+    void clear() { size_ = 0; }
+    void truncate(std::size_t n) { if (n < size_) size_ = n; }
+    void reserve(std::size_t n) { if (n > cap_) reallocate(n); }
+    void push_back(const T& v) {
+        if (size_ == cap_) reallocate(grown(size_ + 1));
+        data_[size_++] = v;
+    }
+    void append(const T* p, std::size_t n) {
+        if (n == 0) return;
+        std::memcpy(room(n), p, n * sizeof(T));
+        size_ += n;
+    }
+    // Room for `n` more values: where to write them (then commit how many were written).
+    T* room(std::size_t n) {
+        if (cap_ - size_ < n) reallocate(grown(size_ + n));
+        return data_ + size_;
+    }
+    void commit(std::size_t n) { size_ += n; }
+    void shrink_to_fit() { if (cap_ != size_) reallocate(size_); }
+
+private:
+    [[nodiscard]] std::size_t grown(std::size_t need) const { return need > 2 * cap_ ? need : 2 * cap_; }
+    void reallocate(std::size_t cap) {
+        if (cap == 0) {
+            std::free(data_);
+            data_ = nullptr;
+            cap_ = 0;
+            return;
+        }
+        void* p = std::realloc(data_, cap * sizeof(T));
+        if (p == nullptr) throw std::bad_alloc();  // as std::vector does
+        data_ = static_cast<T*>(p);
+        cap_ = cap;
+    }
+    T* data_ = nullptr;
+    std::size_t size_ = 0, cap_ = 0;
+};
+}  // namespace detail
 
 // One block. `code` is the leading unsigned number (function code or head address), or kNoCode.
 struct Block {
@@ -63,10 +145,10 @@ public:
 
     [[nodiscard]] std::size_t size() const { return blocks_.size(); }
     [[nodiscard]] const Block& block(std::size_t i) const { return blocks_[i]; }
-    [[nodiscard]] const std::vector<Block>& blocks() const { return blocks_; }
+    [[nodiscard]] std::span<const Block> blocks() const { return blocks_.span(); }
     // The signed words of block i (random access; sequential walkers should use WordCursor).
     [[nodiscard]] std::span<const std::int32_t> words(std::size_t i) const;
-    [[nodiscard]] const std::vector<std::int32_t>& all_words() const { return words_; }
+    [[nodiscard]] std::span<const std::int32_t> all_words() const { return words_.span(); }
     [[nodiscard]] const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
     [[nodiscard]] bool has_errors() const;
     // Index of the first block after the program's end, or size() when the tape has no end.
@@ -75,6 +157,9 @@ public:
     // Index, in the whole tape, of this chunk's first block (0 for a whole tape).
     [[nodiscard]] std::size_t first_block() const { return first_block_; }
     [[nodiscard]] bool has_program_end() const { return has_end_; }
+    // Blocks of the program (those before end_block(), comment lines inside 3 ... 4 excluded): the block
+    // count of the statistics (§9).
+    [[nodiscard]] std::size_t program_blocks() const { return program_blocks_; }
     // Bytes held by blocks, words and the index (capacity, not size): the memory a tape costs.
     [[nodiscard]] std::size_t memory_bytes() const;
 
@@ -102,12 +187,13 @@ public:
 private:
     friend class Reader;
     friend class TapeReader;
-    std::vector<Block> blocks_;
-    std::vector<std::int32_t> words_;
-    std::vector<std::uint32_t> word_index_;  // first word of block k*kWordIndexStride
+    detail::PodArray<Block> blocks_;
+    detail::PodArray<std::int32_t> words_;
+    detail::PodArray<std::uint32_t> word_index_;  // first word of block k*kWordIndexStride
     std::vector<Diagnostic> diagnostics_;
     std::size_t end_block_ = 0;
     std::size_t first_block_ = 0;
+    std::size_t program_blocks_ = 0;
     bool has_end_ = false;
 };
 

@@ -69,16 +69,14 @@ public:
 private:
     class Tee;
     CheckResult result_;
-    std::unique_ptr<Tee> tee_;
-    Interpreter interpreter_;
+    std::unique_ptr<Tee> tee_;  // the statistics, and the `also` sink when there is one
+    Interpreter interpreter_;   // feeds the statistics directly when there is no `also` sink
     unsigned long long blocks_ = 0;
 };
 
 // Blocks per chunk when check_tape streams a tape (about 100 KB of blocks: stays in the L2 cache).
 constexpr std::size_t kCheckChunkBlocks = 8192;
 
-// Program blocks of a read tape: blocks up to the end, comment lines inside 3/4 excluded.
-[[nodiscard]] unsigned long long count_program_blocks(const Tape& tape);
 // Orders diagnostics by line, then column (stable).
 void sort_diagnostics(std::vector<Diagnostic>& diagnostics);
 
