@@ -444,6 +444,25 @@ void Machine::motion(const Block& b, std::size_t index, std::span<const std::int
              "zero offset (83) must be followed by a block of two signed words (the new origin); line " +
                  std::to_string(b.line) + " has " + std::to_string(w.size()) + " words");
     }
+    if (w.size() == 2 && !b.has_address()) {
+        // The common case first: a straight line of head 1 (what the general path below does for it).
+        IPoint& cur = pos_[0];
+        const IPoint base = absolute_ ? origin_ : cur;
+        const IPoint d = map(w[0], w[1]);
+        const IPoint end{base.x + d.x, base.y + d.y};
+        MotionRecord& m = record_;
+        m.head = 1;
+        m.curve = CurveKind::Line;
+        m.ccw = false;
+        m.centre = {};
+        m.radius = m.end_radius = m.sweep = 0;
+        m.start = to_mm(cur);
+        m.end = to_mm(end);
+        m.length_mm = distance(m.start, m.end);
+        cur = end;
+        emit(m, b, index);
+        return;
+    }
     int head = 1;
     if (b.has_address()) {
         if (b.code != 1 && b.code != 2) {
