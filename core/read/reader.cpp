@@ -86,7 +86,7 @@ ByteCounts count_bytes(std::string_view s) {
     for (; i < s.size(); ++i) {
         n.lf += s[i] == '\n';
         n.cr += s[i] == '\r';
-        n.signs += (s[i] == '+') | (s[i] == '-');
+        n.signs += static_cast<std::size_t>(s[i] == '+' || s[i] == '-');
     }
     return n;
 }

@@ -46,7 +46,8 @@ void expect_same(const Tape& a, const Tape& b, const std::string& what) {
         const auto wa = a.words(i), wb = b.words(i);
         ASSERT_TRUE(std::equal(wa.begin(), wa.end(), wb.begin(), wb.end())) << what << ": words of block " << i;
     }
-    EXPECT_TRUE(std::ranges::equal(a.all_words(), b.all_words())) << what;
+    const auto all_a = a.all_words(), all_b = b.all_words();
+    EXPECT_TRUE(std::equal(all_a.begin(), all_a.end(), all_b.begin(), all_b.end())) << what;  // (Emscripten's libc++ has no ranges::equal)
     Tape::WordCursor ca(a), cb(b);
     for (std::size_t i = 0; i < a.size(); ++i) {
         const auto wa = ca.next(i), wb = cb.next(i);
