@@ -13,6 +13,7 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile)
     // A ring of chunks: the reader fills slot k, the checker empties it, in order.
     struct Slot {
         Tape chunk;
+        std::vector<MotionMeasure> measures;  // worked out by the reading thread (lengths, radii, sweeps)
         bool full = false;
         bool last = false;  // the reader is done: this slot holds nothing
     };
@@ -29,6 +30,7 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile)
                 changed.wait(lock, [&] { return !slot.full; });
             }
             const bool more = reader.read_chunk(slot.chunk, kPipelineChunkBlocks);
+            measure_motions(slot.chunk, slot.measures);  // the square roots and atan2s, off the interpreting thread
             {
                 std::lock_guard lock(mutex);
                 slot.full = true;
@@ -47,7 +49,7 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile)
             changed.wait(lock, [&] { return slot.full; });
         }
         const bool last = slot.last;
-        if (!last) checker.check_chunk(slot.chunk);
+        if (!last) checker.check_chunk(slot.chunk, slot.measures);
         {
             std::lock_guard lock(mutex);
             slot.full = false;

@@ -23,14 +23,20 @@ constexpr int kHeads = 2;
 constexpr int kFunctionReturnToZero = 62;  // Woyda
 constexpr int kBurnerCount = 135, kBurnerSpacing = 136;
 
-double distance(Point a, Point b) {
-    const double dx = b.x - a.x, dy = b.y - a.y;
-    return std::sqrt(dx * dx + dy * dy);
-}
-
 double units_length(long long dx, long long dy) {
     const auto x = static_cast<double>(dx), y = static_cast<double>(dy);
     return std::sqrt(x * x + y * y);
+}
+
+// An arc's radii and sweep from its start, end and centre in the tape frame (unit increments): one
+// formula for measure_motions (incremental, start (0,0)) and the interpreter (any mode).
+MotionMeasure measure_arc(IPoint s, IPoint e, IPoint c, bool tape_ccw) {
+    MotionMeasure a;
+    a.r0 = units_length(s.x - c.x, s.y - c.y);
+    a.r1 = units_length(e.x - c.x, e.y - c.y);
+    const auto point = [](IPoint p) { return Point{static_cast<double>(p.x), static_cast<double>(p.y)}; };
+    a.sweep = arc_sweep(point(s), point(e), point(c), tape_ccw, s.x == e.x && s.y == e.y);
+    return a;
 }
 
 std::string mm_text(double v) {
@@ -60,12 +66,13 @@ public:
         }
     }
 
-    void run(const Tape& chunk);
+    void run(const Tape& chunk, std::span<const MotionMeasure> measures);
     void finish();
 
 private:
     void function(const Block& b, std::size_t index, bool has_value, long long value);
-    void motion(const Block& b, std::size_t index, std::span<const std::int32_t> w);
+    // `pre`: the block's MotionMeasure when it was worked out ahead (2 or 5 words), else null.
+    void motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre);
     void emit(MotionRecord& m, const Block& b, std::size_t index);
     void event(const Block& b, std::size_t index, EventKind kind, bool has_value = false, double value = 0);
     void warn(DiagCode code, const Block& b, std::string message) { diag(default_severity(code), code, b, std::move(message)); }
@@ -119,7 +126,8 @@ private:
     MotionRecord record_;
 };
 
-void Machine::run(const Tape& chunk) {
+void Machine::run(const Tape& chunk, std::span<const MotionMeasure> measures) {
+    const MotionMeasure* measure = measures.empty() ? nullptr : measures.data();  // the next one, walking along
     const std::int32_t* words = chunk.all_words().data();  // the words of block k, walking along
     const std::size_t end = chunk.end_block();
     const std::size_t base = chunk.first_block();
@@ -130,11 +138,13 @@ void Machine::run(const Tape& chunk) {
         const std::span<const std::int32_t> w(words, static_cast<std::size_t>(b.word_count()));
         words += b.word_count();
         const std::size_t i = base + k;  // the block's index in the whole tape
+        const MotionMeasure* pre = nullptr;
+        if (measure != nullptr && b.kind == BlockKind::Motion && (w.size() == 2 || w.size() == 5)) pre = measure++;
         // The common case first: a motion or a function, nothing pending, not the end.
         if (!burner_count_ && !skipping_ && !b.ends_program()) {
             if (b.kind == BlockKind::Motion) {
                 last = &b;
-                motion(b, i, w);
+                motion(b, i, w, pre);
                 continue;
             }
             if (b.kind == BlockKind::Function) {
@@ -173,7 +183,7 @@ void Machine::run(const Tape& chunk) {
                 function(b, i, true, w[0]);
                 break;
             case BlockKind::Motion:
-                motion(b, i, w);
+                motion(b, i, w, pre);
                 break;
             case BlockKind::Comment:
             case BlockKind::Percent:
@@ -365,9 +375,9 @@ void Machine::function(const Block& b, std::size_t index, bool has_value, long l
                 MotionRecord m;
                 m.curve = CurveKind::Line;
                 m.start = to_mm(pos_[0]);
+                m.length_mm = units_length(pos_[0].x, pos_[0].y) * profile_.unit_mm;
                 pos_[0] = IPoint{};
                 m.end = to_mm(pos_[0]);
-                m.length_mm = distance(m.start, m.end);
                 emit(m, b, index);
                 return;
             }
@@ -421,7 +431,8 @@ void Machine::check_table(const MotionRecord& m, const Block& b) {
     inside_table_ = inside;
 }
 
-void Machine::motion(const Block& b, std::size_t index, std::span<const std::int32_t> w) {
+void Machine::motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre) {
+    if (absolute_) pre = nullptr;  // worked out for an incremental start
     if (zero_offset_pending_) {
         zero_offset_pending_ = false;
         if (w.size() == 2 && !b.has_address()) {
@@ -458,7 +469,7 @@ void Machine::motion(const Block& b, std::size_t index, std::span<const std::int
         m.radius = m.end_radius = m.sweep = 0;
         m.start = to_mm(cur);
         m.end = to_mm(end);
-        m.length_mm = distance(m.start, m.end);
+        m.length_mm = (pre ? pre->length_units : units_length(end.x - cur.x, end.y - cur.y)) * profile_.unit_mm;
         cur = end;
         emit(m, b, index);
         return;
@@ -500,21 +511,21 @@ void Machine::motion(const Block& b, std::size_t index, std::span<const std::int
     const double unit = profile_.unit_mm;
     const double tol_units = profile_.arc_tolerance_units;
 
+    const double line_length_mm = units_length(end.x - cur.x, end.y - cur.y) * unit;  // (when it is a line)
     if (w.size() == 2) {
         m.curve = CurveKind::Line;
-        m.length_mm = distance(m.start, m.end);
+        m.length_mm = pre ? pre->length_units * unit : line_length_mm;
     } else if (w.size() == 5) {
         const IPoint c_t{w[2], w[3]};
         const IPoint d_c = map(c_t.x, c_t.y);
         const IPoint centre{base.x + d_c.x, base.y + d_c.y};
-        const double r0 = units_length(s_t.x - c_t.x, s_t.y - c_t.y);
-        const double r1 = units_length(e_t.x - c_t.x, e_t.y - c_t.y);
-        const bool full = s_t.x == e_t.x && s_t.y == e_t.y;
+        const MotionMeasure arc = pre ? *pre : measure_arc(s_t, e_t, c_t, b.tc_positive());
+        const double r0 = arc.r0, r1 = arc.r1;
         if (r0 == 0) {
             warn(DiagCode::E302_ArcZeroRadius, b,
                  "the arc's centre is its start point (radius 0); expected XC/YC to give the centre relative to the start");
             m.curve = CurveKind::Line;
-            m.length_mm = distance(m.start, m.end);
+            m.length_mm = line_length_mm;
         } else {
             if (std::abs(r1 - r0) > tol_units) {
                 warn(DiagCode::E301_ArcEndNotOnCircle, b,
@@ -527,7 +538,7 @@ void Machine::motion(const Block& b, std::size_t index, std::span<const std::int
             m.ccw = b.tc_positive() != mapping_.mirrors();
             m.radius = r0 * unit;
             m.end_radius = r1 * unit;
-            m.sweep = arc_sweep(m.start, m.end, m.centre, m.ccw, full);
+            m.sweep = mapping_.mirrors() ? -arc.sweep : arc.sweep;  // a mirror turns the sense
             m.length_mm = m.radius * std::abs(m.sweep);
             if (kerf_ != KerfSide::Off) {
                 // Kerf side relative to the programmed contour: a ccw arc has its centre on the left.
@@ -550,7 +561,7 @@ void Machine::motion(const Block& b, std::size_t index, std::span<const std::int
                  std::string("the parabola's radius of curvature at the vertex (") + (axis_parallel_y ? "YP" : "XP") +
                      ") is 0; expected a non-zero radius");
             m.curve = CurveKind::Line;
-            m.length_mm = distance(m.start, m.end);
+            m.length_mm = line_length_mm;
         } else {
             ParabolaGeom g;  // tape frame, units
             double residual = 0;
@@ -627,7 +638,25 @@ Interpreter::Interpreter(std::string_view source, const Profile& profile, Motion
                          std::vector<Diagnostic>& diagnostics)
     : machine_(std::make_unique<detail::Machine>(source, profile, sink, diagnostics)) {}
 Interpreter::~Interpreter() = default;
-void Interpreter::run(const Tape& chunk) { machine_->run(chunk); }
+void Interpreter::run(const Tape& chunk, std::span<const MotionMeasure> measures) { machine_->run(chunk, measures); }
+
+void measure_motions(const Tape& chunk, std::vector<MotionMeasure>& out) {
+    out.clear();
+    const std::int32_t* w = chunk.all_words().data();
+    const std::size_t end = chunk.end_block();
+    for (std::size_t k = 0; k < end; ++k) {
+        const Block& b = chunk.block(k);
+        const int n = b.word_count();
+        if (b.kind == BlockKind::Motion && n == 2) {
+            MotionMeasure line;
+            line.length_units = units_length(w[0], w[1]);
+            out.push_back(line);
+        } else if (b.kind == BlockKind::Motion && n == 5) {
+            out.push_back(measure_arc({0, 0}, {w[0], w[1]}, {w[2], w[3]}, b.tc_positive()));
+        }
+        w += n;
+    }
+}
 void Interpreter::finish() { machine_->finish(); }
 
 void interpret(const Tape& tape, std::string_view source, const Profile& profile, MotionSink& sink,

@@ -90,9 +90,9 @@ TapeChecker::TapeChecker(std::string_view bytes, const Profile& profile, MotionS
 
 TapeChecker::~TapeChecker() = default;
 
-void TapeChecker::check_chunk(const Tape& chunk) {
+void TapeChecker::check_chunk(const Tape& chunk, std::span<const MotionMeasure> measures) {
     result_.diagnostics.insert(result_.diagnostics.end(), chunk.diagnostics().begin(), chunk.diagnostics().end());
-    interpreter_.run(chunk);
+    interpreter_.run(chunk, measures);
     blocks_ += chunk.program_blocks();
 }
 

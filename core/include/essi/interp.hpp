@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -17,6 +18,18 @@ namespace detail {
 class Machine;
 }
 
+// What a line or arc block measures from its words alone when it is incremental (its start is the tape's
+// (0,0)), in the tape frame and unit increments. 21-28 only swap and mirror the axes: lengths and radii stay,
+// a mirror turns the sweep's sign. The interpreter computes the same numbers the same way when it is not given
+// them (and in absolute mode, where the start is not (0,0)).
+struct MotionMeasure {
+    double length_units = 0;  // lines: the length
+    double r0 = 0, r1 = 0;    // arcs: radius at the start and at the end
+    double sweep = 0;         // arcs: signed angle in the tape's sense (TC), +-2 pi for a full circle
+};
+// The measures of a chunk's motion blocks of 2 or 5 words before its end_block(), in block order, into `out`.
+void measure_motions(const Tape& chunk, std::vector<MotionMeasure>& out);
+
 // The machine, fed a chunk of blocks at a time (TapeReader), or a whole tape. Diagnostics of
 // interpretation and geometry are appended to `diagnostics` (columns computed from `source`).
 class Interpreter {
@@ -25,8 +38,9 @@ public:
     ~Interpreter();
     Interpreter(const Interpreter&) = delete;
     Interpreter& operator=(const Interpreter&) = delete;
-    // Runs the program blocks of `chunk` (chunks must come in tape order).
-    void run(const Tape& chunk);
+    // Runs the program blocks of `chunk` (chunks must come in tape order). `measures`, when given, is
+    // measure_motions(chunk) worked out ahead (e.g. on the reading thread): the same numbers, not computed twice.
+    void run(const Tape& chunk, std::span<const MotionMeasure> measures = {});
     // After the last chunk: reports what the program opened and never closed.
     void finish();
 private:

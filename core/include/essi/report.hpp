@@ -63,7 +63,8 @@ public:
     ~TapeChecker();
     TapeChecker(const TapeChecker&) = delete;
     TapeChecker& operator=(const TapeChecker&) = delete;
-    void check_chunk(const Tape& chunk);
+    // `measures`: measure_motions(chunk), when the caller worked it out ahead (on another thread).
+    void check_chunk(const Tape& chunk, std::span<const MotionMeasure> measures = {});
     // After the last chunk: the result (diagnostics sorted). Call once.
     [[nodiscard]] CheckResult finish();
 private:
