@@ -1,10 +1,14 @@
 #version 300 es
-// Point markers (pierces, the start point, the tool in playback): a screen-aligned quad per instance.
+// Point markers (pierces, the start point, the tool in playback): a screen-aligned quad (6 vertices) per marker,
+// pulled from a texture by gl_VertexID like the paths (instancing costs SwiftShader one internal draw per instance).
 precision highp float;
+precision highp int;
+precision highp sampler2D;
 
-layout(location = 0) in vec2 a_corner;  // the path quad: x 0..1, y -1..1
-layout(location = 1) in vec2 a_pos;     // mm relative to the document origin
-layout(location = 2) in float a_type;   // 0 pierce, 1 start, 2 tool
+uniform sampler2D u_markers;  // RGBA32F: x, y (mm relative to the document origin), type (0 pierce, 1 start, 2 tool)
+uniform int u_tex_width;
+uniform int u_use_single;     // 1: draw u_single instead of the texture (the playback tool)
+uniform vec3 u_single;        // x, y, type
 
 uniform vec2 u_center;
 uniform float u_zoom;
@@ -16,10 +20,15 @@ uniform int u_type_mask;
 out vec2 v_local;
 flat out int v_type;
 
+const vec2 kCorners[6] = vec2[6](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0),
+                                 vec2(-1.0, 1.0), vec2(1.0, -1.0), vec2(1.0, 1.0));
+
 void main() {
-    int type = int(a_type + 0.5);
-    vec2 corner = vec2(a_corner.x * 2.0 - 1.0, a_corner.y);
-    vec2 c = u_origin_px + vec2(a_pos.x - u_center.x, u_center.y - a_pos.y) * u_zoom;
+    int index = gl_VertexID / 6;
+    vec3 m = u_use_single != 0 ? u_single : texelFetch(u_markers, ivec2(index % u_tex_width, index / u_tex_width), 0).xyz;
+    int type = int(m.z + 0.5);
+    vec2 corner = kCorners[gl_VertexID % 6];
+    vec2 c = u_origin_px + vec2(m.x - u_center.x, u_center.y - m.y) * u_zoom;
     vec2 p = c + corner * (u_radius_px + 1.0);
     vec2 ndc = vec2(p.x / u_viewport.x * 2.0 - 1.0, 1.0 - p.y / u_viewport.y * 2.0);
     bool visible = ((u_type_mask >> type) & 1) != 0;

@@ -3,7 +3,8 @@
 // (tests/bench/nest_generator.hpp through essi_gen_nest).
 //
 //   drop -> first frame   from the drop event until the first animation frame after the tape is drawn
-//   panning               animation-frame intervals while the mouse drags the drawing (1 M motion tape)
+//   panning               animation-frame intervals while the mouse drags the drawing (1 M motion tape), and
+//                         how many of those frames drew the whole scene again (the rest moved the cached image)
 //   memory                the page's WASM heap, JS heap, renderer and GPU process RSS, against the budget
 //                         2 x tape bytes + the core's bytes per block x blocks
 //
@@ -96,7 +97,8 @@ async function measurePan(page) {
   const restMs = rest.reduce((a, b) => a + b, 0) / rest.length;
   // A drag of 12 moves waits for a frame per move: skipped when a frame takes over a second.
   if (restMs > 1000) return { frames: rest.length, median_ms: restMs, p95_ms: Math.max(...rest), mean_ms: restMs, moved_mm: 0, at_rest: true };
-  const v = (await page.evaluate(() => essikit.state())).view;
+  const st0 = await page.evaluate(() => essikit.state());
+  const v = st0.view;
   const [ax, ay, aw, ah] = v.area;
   const cx = ax + aw / 2, cy = ay + ah / 2;
   await page.mouse.move(cx, cy);
@@ -115,9 +117,11 @@ async function measurePan(page) {
   const t = await page.evaluate(() => { window.__panOn = false; return window.__pan; });
   const gaps = t.slice(1).map((x, i) => x - t[i]).sort((a, b) => a - b);
   const q = (p) => gaps[Math.min(gaps.length - 1, Math.floor(p * gaps.length))];
-  const moved = (await page.evaluate(() => essikit.state())).view;
+  const st1 = await page.evaluate(() => essikit.state());
+  const moved = st1.view;
   return { frames: gaps.length, median_ms: q(0.5), p95_ms: q(0.95), mean_ms: gaps.reduce((a, b) => a + b, 0) / gaps.length,
-           moved_mm: Math.hypot(moved.x_mm - v.x_mm, moved.y_mm - v.y_mm) };
+           moved_mm: Math.hypot(moved.x_mm - v.x_mm, moved.y_mm - v.y_mm),
+           full_redraws: st1.render.full_redraws - st0.render.full_redraws, lod: st1.lod.drawn };
 }
 
 const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
@@ -147,19 +151,27 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
         drop_to_first_frame_ms: Math.round(r.first_frame_ms), load_seconds_viewer: s.load_seconds,
         frames_while_loading: r.frames, longest_frame_gap_ms: Math.round(r.max_gap_ms),
         core_bytes_per_block: +perBlock.toFixed(1), budget_bytes: budget,
-        viewer_bytes: s.memory_bytes, wasm_heap: r.after.wasm_heap, js_heap: r.after.js_heap,
+        viewer_bytes: s.memory_bytes, gpu_bytes: s.gpu_bytes, lod: s.lod, wasm_heap: r.after.wasm_heap, js_heap: r.after.js_heap,
         renderer_rss: r.after.renderer_rss, renderer_rss_before: r.before.renderer_rss, gpu_rss: r.after.gpu_rss,
       };
       console.log(`   motions ${s.motions}, segments ${s.segments}, blocks ${s.blocks_read}`);
       console.log(`   drop -> first frame ${row.drop_to_first_frame_ms} ms (${r.frames} frames meanwhile, longest gap ${row.longest_frame_gap_ms} ms)`);
-      console.log(`   memory: viewer ${mb(s.memory_bytes)} (${(s.memory_bytes / s.motions).toFixed(0)} B/motion), wasm heap ${mb(r.after.wasm_heap)}, ` +
+      console.log(`   memory: viewer ${mb(s.memory_bytes)} (${(s.memory_bytes / s.motions).toFixed(0)} B/motion), textures ${mb(s.gpu_bytes)}, wasm heap ${mb(r.after.wasm_heap)}, ` +
                   `JS heap ${mb(r.after.js_heap)}, renderer RSS ${mb(r.after.renderer_rss)} (empty page ${mb(r.before.renderer_rss)}), ` +
                   `GPU process RSS ${mb(r.after.gpu_rss)}; budget 2 x ${mb(tape.bytes)} + ${perBlock.toFixed(1)} B/block x ${s.blocks_read} = ${mb(budget)}`);
       if (Math.abs(s.motions - 1e6) / 1e6 < 0.5 || motionTargets.length === 1) {
         const pan = await measurePan(r.page);
         row.pan = pan;
         if (pan.at_rest) console.log(`   frame time at rest ${pan.mean_ms.toFixed(0)} ms (max ${pan.p95_ms.toFixed(0)} ms): over a second, no drag measured (a pan frame costs at least this)`);
-        else console.log(`   panning: median ${pan.median_ms.toFixed(1)} ms, p95 ${pan.p95_ms.toFixed(1)} ms, mean ${pan.mean_ms.toFixed(1)} ms a frame (${pan.frames} frames, moved ${pan.moved_mm.toFixed(0)} mm)`);
+        else console.log(`   panning: median ${pan.median_ms.toFixed(1)} ms, p95 ${pan.p95_ms.toFixed(1)} ms, mean ${pan.mean_ms.toFixed(1)} ms a frame (${pan.frames} frames, moved ${pan.moved_mm.toFixed(0)} mm, ${pan.full_redraws} full redraws, level of detail ${pan.lod ? 'on' : 'off'})`);
+        // The same drag zoomed in (4x the fitted zoom): the segments are drawn, not the level of detail.
+        const v = (await r.page.evaluate(() => essikit.state())).view;
+        await r.page.evaluate(([x, y, z]) => essikit.setView(x, y, z), [v.x_mm, v.y_mm, v.zoom * 4]);
+        await r.page.evaluate(() => new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(() => res()))));
+        const panIn = await measurePan(r.page);
+        row.pan_zoomed_in = panIn;
+        if (panIn.at_rest) console.log(`   zoomed in 4x: frame time at rest ${panIn.mean_ms.toFixed(0)} ms`);
+        else console.log(`   panning zoomed in 4x: median ${panIn.median_ms.toFixed(1)} ms, p95 ${panIn.p95_ms.toFixed(1)} ms a frame (${panIn.frames} frames, ${panIn.full_redraws} full redraws, level of detail ${panIn.lod ? 'on' : 'off'})`);
       }
       await r.page.screenshot({ path: path.join(shots, `bench-${tape.name.replace(/\.esi$/, '')}.png`), timeout: 120000 })
         .catch(() => console.log('   (no screenshot: the frame took over 2 minutes)'));

@@ -85,11 +85,16 @@ async function pixels(page, png) {
     const c = new OffscreenCanvas(bmp.width, bmp.height);
     const g = c.getContext('2d');
     g.drawImage(bmp, 0, 0);
-    return { w: bmp.width, h: bmp.height, px: Array.from(g.getImageData(0, 0, bmp.width, bmp.height).data) };
+    // The RGBA bytes as base64 (a JSON array of millions of numbers takes seconds to pass).
+    const px = g.getImageData(0, 0, bmp.width, bmp.height).data;
+    let bin = '';
+    for (let i = 0; i < px.length; i += 0x8000) bin += String.fromCharCode.apply(null, px.subarray(i, i + 0x8000));
+    return { w: bmp.width, h: bmp.height, px: btoa(bin) };
   }, png.toString('base64'));
+  const px = Buffer.from(data.px, 'base64');
   return (x, y) => {
     const i = (Math.round(y) * data.w + Math.round(x)) * 4;
-    return [data.px[i], data.px[i + 1], data.px[i + 2]];
+    return [px[i], px[i + 1], px[i + 2]];
   };
 }
 
@@ -318,11 +323,37 @@ test('pasting a tape\'s text loads it', async () => {
 
 test('the Open... button opens the file picker and loads the chosen tape', async () => {
   const page = await newPage();
+  // Headless Chromium shows no file chooser for a mouse click while a WebGL canvas draws every frame (a
+  // plain page shows it; keys work), so the click is checked where the page does its part: the picker
+  // (<input type=file>) is opened inside the click itself, with the user activation browsers require.
+  await page.evaluate(() => {
+    const input = document.getElementById('file');
+    window.__opened = [];
+    input.click = () => window.__opened.push(`${window.event ? window.event.type : 'frame'} ${navigator.userActivation.isActive}`);
+  });
   // The ImGui toolbar's first button (window padding 8 px, 13 px font).
-  const [chooser] = await Promise.all([page.waitForEvent('filechooser', { timeout: 15000 }), page.mouse.click(28, 18)]);
-  await chooser.setFiles(path.join(examplesDir, 'marking.esi'));
+  await page.mouse.click(28, 18);
+  assert.deepEqual(await page.evaluate(() => window.__opened), ['click true'], 'the Open button did not open the picker in the click');
+  // A click elsewhere on the toolbar opens nothing.
+  await page.mouse.click(1500, 18);
+  await page.waitForTimeout(300);
+  assert.equal((await page.evaluate(() => window.__opened)).length, 1, 'a click beside the Open button opened the picker');
+  // The chosen file arrives through the input's change event.
+  await page.setInputFiles('#file', path.join(examplesDir, 'marking.esi'));
   await until(page, () => essikit.state().name === 'marking.esi' && essikit.state().status === 'ready', null, 'not loaded');
   await page.close();
+
+  // Ctrl+O opens it too, in the key press (and the browser's own "open file" is prevented).
+  const page2 = await newPage();
+  await page2.evaluate(() => {
+    window.__opened = [];
+    document.getElementById('file').click = () => window.__opened.push(`${window.event ? window.event.type : 'frame'} ${navigator.userActivation.isActive}`);
+    window.addEventListener('keydown', (e) => { window.__prevented = e.defaultPrevented; });  // after the page's (capture) listener
+  });
+  await page2.keyboard.press('Control+o');
+  assert.deepEqual(await page2.evaluate(() => window.__opened), ['keydown true'], 'Ctrl+O did not open the picker in the key press');
+  assert.equal(await page2.evaluate(() => window.__prevented), true, 'Ctrl+O was left to the browser');
+  await page2.close();
 });
 
 test('help window (H) and layer toggles (keys 1-4, setLayer)', async () => {
@@ -505,5 +536,187 @@ test('a 50 MB tape loads with a moving progress bar while the page keeps drawing
   const cli = cliReportOf(path.join(genDir, name));
   assertStatsEqual(state.stats, cli.stats, name);
   assert.equal(state.diagnostics.length, cli.diagnostics.length);
+  await page.close();
+});
+
+// ---- drawing performance: the cached image, panning, level of detail ---------------------------------------
+
+// How many of the motions show the cut colour at (or next to) the page pixel of their middle.
+async function cutHits(page, list, shot) {
+  await page.mouse.move(5, 890);  // keep the cursor away from the drawing
+  const at = await pixels(page, await page.screenshot({ path: path.join(shots, shot) }));
+  let hits = 0;
+  for (const m of list) {
+    const p = await page.evaluate(([x, y]) => essikit.project(x, y), m.mid);
+    const around = [];
+    for (let dy = -1; dy <= 1; ++dy) for (let dx = -1; dx <= 1; ++dx) around.push(at(p.x + dx, p.y + dy));
+    if (around.some((c) => near(c, CUT_RGB))) ++hits;
+  }
+  return hits;
+}
+
+// The motions whose middle is inside the drawing area (not under a panel).
+async function inArea(page, list) {
+  const [ax, ay, aw, ah] = (await page.evaluate(() => essikit.state())).view.area;
+  const out = [];
+  for (const m of list) {
+    const p = await page.evaluate(([x, y]) => essikit.project(x, y), m.mid);
+    if (p.x > ax + 5 && p.x < ax + aw - 5 && p.y > ay + 5 && p.y < ay + ah - 5) out.push(m);
+  }
+  return out;
+}
+
+async function nextFrames(page, n = 2) {
+  for (let i = 0; i < n; ++i) await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
+}
+
+// Drags the drawing with the left button from the area's centre by (dx, dy) pixels.
+async function drag(page, dx, dy) {
+  const [ax, ay, aw, ah] = (await page.evaluate(() => essikit.state())).view.area;
+  const x = ax + aw / 2, y = ay + ah / 2;
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await nextFrames(page, 1);
+  for (let i = 1; i <= 4; ++i) {
+    await page.mouse.move(x + (dx * i) / 4, y + (dy * i) / 4);
+    await nextFrames(page, 1);
+  }
+  await page.mouse.up();
+  await nextFrames(page, 2);
+}
+
+test('panning moves the cached drawing with the mouse; a zoom or a far pan draws it again', async () => {
+  const page = await newPage();
+  const { motions } = await loadExample(page, 'plate_holes.esi');
+  const cuts = motions.filter((m) => m.kind === 'cut' && m.curve === 'line' && m.length_mm > 50);
+  assert.equal(await cutHits(page, cuts, 'pan-before.png'), cuts.length);
+  const before = await page.evaluate(() => essikit.state());
+  const p0 = await page.evaluate(([x, y]) => essikit.project(x, y), cuts[0].mid);
+
+  // A pan within the image's margin: the drawing follows the mouse and is not drawn again.
+  await drag(page, 80, -50);
+  const panned = await page.evaluate(() => essikit.state());
+  const p1 = await page.evaluate(([x, y]) => essikit.project(x, y), cuts[0].mid);
+  assert.ok(Math.hypot(p1.x - p0.x, p1.y - p0.y) > 40, `the view did not move: ${JSON.stringify([p0, p1])}`);
+  assert.equal(panned.render.full_redraws, before.render.full_redraws, 'a small pan drew the whole scene again');
+  assert.ok(panned.render.cached_frames > before.render.cached_frames, 'no frame reused the image');
+  // The cut colour is where the cuts are now: the image moved by the pan.
+  const shown = await inArea(page, cuts);
+  assert.ok(shown.length >= 2, 'no cut left in view after the pan');
+  assert.equal(await cutHits(page, shown, 'pan-after.png'), shown.length, 'the moved image does not match the view');
+
+  // A zoom draws the image again, at the new scale.
+  const [ax, ay, aw, ah] = panned.view.area;
+  await page.mouse.move(ax + aw / 2, ay + ah / 2);
+  await page.keyboard.press('=');  // zoom in 1.25x at the centre
+  await until(page, (z) => essikit.state().view.zoom > z * 1.2, panned.view.zoom, 'the key = did not zoom');
+  await nextFrames(page, 2);
+  const zoomed = await page.evaluate(() => essikit.state());
+  assert.ok(zoomed.render.full_redraws > panned.render.full_redraws, 'the zoom did not draw the image again');
+  const inView = await inArea(page, cuts);
+  assert.ok(inView.length >= 2, 'no cut left in view after the zoom');
+  assert.equal(await cutHits(page, inView, 'pan-zoomed.png'), inView.length, 'the cuts are not where the zoom put them');
+
+  // A pan farther than the margin draws the image again (nothing is left blank).
+  await page.keyboard.press('f');
+  await until(page, (z) => Math.abs(essikit.state().view.zoom - z) < 1e-9, before.view.zoom, 'F did not fit');
+  await nextFrames(page, 2);
+  const fitted = await page.evaluate(() => essikit.state());
+  await drag(page, -Math.round(aw * 0.8), 0);
+  const far = await page.evaluate(() => essikit.state());
+  assert.ok(far.render.full_redraws > fitted.render.full_redraws, 'a far pan did not draw the image again');
+  const visible = await inArea(page, cuts);
+  assert.ok(visible.length >= 1, 'no cut left in view after the far pan');
+  assert.equal(await cutHits(page, visible, 'pan-far.png'), visible.length, 'the far pan left cuts undrawn');
+
+  // One wheel notch (120 pixels of the browser) zooms by about 1.2x at the cursor: up in, down out.
+  await page.mouse.move(ax + aw / 2, ay + ah / 2);
+  await nextFrames(page, 2);  // (ImGui knows the cursor is over the drawing, not a panel)
+  const z0 = (await page.evaluate(() => essikit.state())).view.zoom;
+  await page.mouse.wheel(0, 120);
+  await until(page, (z) => essikit.state().view.zoom < z / 1.05, z0, 'the wheel did not zoom out');
+  const z1 = (await page.evaluate(() => essikit.state())).view.zoom;
+  assert.ok(z1 > z0 / 2, `one wheel notch zoomed out ${z0 / z1} times`);
+  await page.mouse.wheel(0, -120);
+  await until(page, (z) => essikit.state().view.zoom > z * 1.05, z1, 'the wheel did not zoom in');
+  await page.close();
+});
+
+// A tape of N x N small round parts (64 cut lines each) on a pitch of `pitch` mm: over 100 000 motions, so
+// that the viewer makes its level of detail, with empty space between the parts.
+function partGrid(n = 40, pitch = 20, radius = 2, sides = 64) {
+  const u = 10;  // units a mm (0.1 mm units)
+  const out = ['%', '39+2000'];
+  const num = (v) => (v >= 0 ? '+' : '-') + Math.abs(v);
+  let x = 0, y = 0;  // position in units
+  const parts = [];
+  for (let j = 0; j < n; ++j) {
+    for (let i = 0; i < n; ++i) {
+      const cx = Math.round((i + 0.5) * pitch * u), cy = Math.round((j + 0.5) * pitch * u);
+      const pts = [];
+      for (let k = 0; k <= sides; ++k) {
+        const a = (2 * Math.PI * (k % sides)) / sides;
+        pts.push([cx + Math.round(radius * u * Math.cos(a)), cy + Math.round(radius * u * Math.sin(a))]);
+      }
+      out.push('5', num(pts[0][0] - x) + num(pts[0][1] - y), '6', '7');
+      for (let k = 1; k < pts.length; ++k) out.push(num(pts[k][0] - pts[k - 1][0]) + num(pts[k][1] - pts[k - 1][1]));
+      out.push('8');
+      [x, y] = pts[0];
+      parts.push({ centre: [cx / u, cy / u], onCut: [pts[0][0] / u, pts[0][1] / u] });
+    }
+  }
+  // One arc (a full circle around the last part's first point): zooming in rebuilds the segments at a finer
+  // chord tolerance.
+  out.push('7', '+0+0-10+0+', '8');
+  out.push('5', num(-x) + num(-y), '6', '63');
+  return { text: out.join('\n') + '\n', parts, pitch };
+}
+
+// How many of the machine points (mm) have the cut colour at or next to their page pixel.
+async function cutAt(page, points, shot) {
+  await page.mouse.move(5, 890);
+  const at = await pixels(page, await page.screenshot({ path: path.join(shots, shot) }));
+  let hits = 0;
+  for (const pt of points) {
+    const p = await page.evaluate(([x, y]) => essikit.project(x, y), pt);
+    const around = [];
+    for (let dy = -1; dy <= 1; ++dy) for (let dx = -1; dx <= 1; ++dx) around.push(at(p.x + dx, p.y + dy));
+    if (around.some((c) => near(c, CUT_RGB))) ++hits;
+  }
+  return hits;
+}
+
+test('a big tape zoomed out is drawn from the level-of-detail raster: cuts where the cuts are, nothing between', async () => {
+  const page = await newPage();
+  const grid = partGrid();
+  const st = await page.evaluate((t) => essikit.load('parts_grid.esi', t), grid.text);
+  assert.ok(st.motions > 100000, `only ${st.motions} motions`);
+  await nextFrames(page, 2);
+  const lod = (await page.evaluate(() => essikit.state())).lod;
+  assert.ok(lod.available, 'no level of detail for a tape of over 100 000 motions');
+  assert.ok(lod.drawn, 'the fitted view of a big tape did not use the level of detail');
+  await page.evaluate(() => essikit.setLayer(4, false));  // pierces (drawn over the cuts in the raster)
+  const sample = grid.parts.filter((_, k) => k % 97 === 0);
+  const onCut = sample.map((p) => p.onCut);
+  const between = sample.map((p) => [p.centre[0] + grid.pitch / 2, p.centre[1] + grid.pitch / 2]);
+  assert.equal(await cutAt(page, onCut, 'lod-cuts.png'), onCut.length, 'the level of detail lost cuts');
+  assert.equal(await cutAt(page, between, 'lod-cuts.png'), 0, 'cut colour between the parts');
+  // The layers apply to it: without the cut layer, no cut colour.
+  await page.evaluate(() => essikit.setLayer(2, false));
+  assert.equal(await cutAt(page, onCut, 'lod-no-cut.png'), 0, 'cut colour with the cut layer hidden');
+  await page.evaluate(() => essikit.setLayer(2, true));
+  // Zoomed in, the segments themselves are drawn again, in the cut colour (rebuilt at a finer tolerance).
+  const fitted = (await page.evaluate(() => essikit.state())).view;
+  const tolerance = (await page.evaluate(() => essikit.state())).chord_tolerance_mm;
+  const part = grid.parts[Math.floor(grid.parts.length / 2)];
+  await page.evaluate(([x, y]) => essikit.setView(x, y, 20), part.centre);
+  await until(page, () => !essikit.state().lod.drawn, null, 'zoomed in, the level of detail is still drawn');
+  await until(page, (t) => essikit.state().chord_tolerance_mm < t / 2, tolerance, 'zooming in did not rebuild the segments');
+  assert.equal(await cutAt(page, [part.onCut], 'lod-zoomed-in.png'), 1, 'zoomed in, the part is not drawn');
+  // Back out: the same level of detail as before the rebuild.
+  await page.evaluate(([x, y, z]) => essikit.setView(x, y, z), [fitted.x_mm, fitted.y_mm, fitted.zoom]);
+  await until(page, () => essikit.state().lod.drawn, null, 'zoomed out again, no level of detail');
+  assert.equal(await cutAt(page, onCut, 'lod-again.png'), onCut.length, 'after a rebuild the level of detail lost cuts');
+  assert.equal(await cutAt(page, between, 'lod-again.png'), 0, 'after a rebuild, cut colour between the parts');
   await page.close();
 });

@@ -25,8 +25,11 @@ constexpr float kRightWidth = 470;
 constexpr double kPickRadiusPx = 6;
 constexpr double kSnapRadiusPx = 10;
 constexpr std::size_t kBuildMotionsPerFrame = 200000;  // tapes up to this size are drawn in the loading frame
-constexpr std::size_t kBuildMotionsPerStep = 20000;
-constexpr double kStepBudgetMs = 30;  // work per frame while loading (the page keeps drawing, ~25 fps)
+constexpr std::size_t kBuildMotionsPerStep = 4096;  // between two looks at the clock (and texture uploads)
+constexpr double kStepBudgetMs = 30;  // work per frame while loading (the page keeps drawing)
+// Tapes with at least this many motions get a level-of-detail raster for zoomed-out views (below, drawing every
+// segment costs a CPU renderer less than a frame or two).
+constexpr std::size_t kLodMinMotions = 100000;
 // Share links longer than this are refused (browsers and chat programs cut long URLs).
 constexpr std::size_t kMaxShareTapeBytes = 4u << 20;
 
@@ -145,20 +148,41 @@ void App::step_loading() {
         return;
     }
     if (building_) {
+        // Flatten and upload in the same slice: the segments go to the GPU a few texture rows at a time, so
+        // no frame builds or uploads the whole stream (and no CPU copy of it is kept).
         const double until = glfwGetTime() + kStepBudgetMs / 1000.0;
         bool done = false;
-        while (!done && glfwGetTime() < until) done = building_->step(kBuildMotionsPerStep);
+        while (!done && glfwGetTime() < until) {
+            done = building_->step(kBuildMotionsPerStep);
+            if (graphics_ok_) renderer_.append(gpu_building_, *building_);
+            else building_->drop_staged(building_->staged_count());
+        }
         if (done) {
             buffers_ = std::move(*building_);
             building_.reset();
-            if (graphics_ok_) renderer_.upload(buffers_);
-            buffers_.release_segments();  // the GPU has them; picking uses the exact geometry
+            buffers_.staged_ends = {};
+            buffers_.staged_kinds = {};
+            renderer_.release(gpu_);
+            gpu_ = std::move(gpu_building_);
+            gpu_building_ = GpuPath{};
+            if (first_build_ && lod_.active()) {  // (rebuilds at other tolerances do not feed it)
+                lod_.finish();
+                if (graphics_ok_) renderer_.upload_lod(lod_);
+                lod_.release();  // the GPU has it
+            }
             if (first_build_) {
                 first_build_ = false;
                 load_seconds_ = glfwGetTime() - load_started_;
             }
         }
     }
+}
+
+bool App::background_step() {
+    // Not before the first frame of a load has shown the progress bar.
+    if (loader_ && frames_since_load_start_ == 0) return true;
+    step_loading();
+    return has_background_work();
 }
 
 void App::finish_loading() {
@@ -188,10 +212,20 @@ void App::finish_loading() {
         pending_view_.reset();
     }
     play_pos_ = static_cast<double>(d.motions.size());
-    renderer_.clear_geometry();
+    renderer_.release(gpu_);
+    renderer_.release(gpu_building_);
     buffers_ = PathBuffers{};
     building_ = std::make_unique<PathBuffers>();
     building_->begin(d, desired_tolerance());
+    if (graphics_ok_) renderer_.upload_markers(building_->markers);
+    renderer_.clear_lod();
+    lod_ = LodRaster{};
+    if (d.motions.size() >= kLodMinMotions) {
+        lod_.begin(d.bbox, d.origin);
+        for (const Point& p : d.pierces)
+            lod_.add_pierce(static_cast<float>(p.x - d.origin.x), static_cast<float>(p.y - d.origin.y));
+        building_->lod = &lod_;
+    }
     first_build_ = true;
     // Small tapes: build at once so the first frame after loading shows the drawing.
     if (d.motions.size() <= kBuildMotionsPerFrame) step_loading();
@@ -208,6 +242,7 @@ void App::maybe_rebuild() {
     const double have = buffers_.tolerance();
     // Finer when zooming in past 2x; coarser (fewer segments) when zooming out by 16x.
     if (have > want * 2 || have < want / 16) {
+        renderer_.release(gpu_building_);
         building_ = std::make_unique<PathBuffers>();
         building_->begin(*doc_, want);
         if (doc_->motions.size() <= kBuildMotionsPerFrame) step_loading();
@@ -247,7 +282,12 @@ void App::frame() {
         DrawOptions o;
         o.framebuffer_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.f;
         o.layer_mask = layer_mask();
-        o.marker_mask = (show_pierces_ ? 1 : 0) | (show_start_ ? 2 : 0);
+        // While the first build runs nothing of the new tape is drawn (the frames stay cheap).
+        o.marker_mask = first_build_ ? 0 : (show_pierces_ ? 1 : 0) | (show_start_ ? 2 : 0);
+        // Zoomed out on a big tape: the level-of-detail raster instead of millions of sub-pixel segments.
+        o.lod = !playback_ && renderer_.has_lod() &&
+                renderer_.lod_cell_mm() * view_.zoom * o.framebuffer_scale <= Renderer::kLodMaxCellPx;
+        lod_drawn_ = o.lod;
         if (doc_ && buffers_.first_segment.size() == doc_->motions.size() + 1) {
             if (playback_) {
                 const std::size_t k = playback_limit_motions();
@@ -266,7 +306,7 @@ void App::frame() {
             o.selection_count = count;
         }
         renderer_.draw(view_, fb_w, fb_h, o, show_grid_ ? grid_step(view_.zoom) : 1e30,
-                       doc_ ? doc_->origin : Point{});
+                       doc_ ? doc_->origin : Point{}, first_build_ ? nullptr : &gpu_);
     }
 }
 
@@ -602,6 +642,8 @@ void App::draw_toolbar() {
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus);
     if (ImGui::Button("Open...")) platform::open_file_dialog(*this);
+    platform::open_button_at(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                             ImGui::GetItemRectSize().y);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Open a tape (Ctrl+O). You can also drop a file or paste text (Ctrl+V).");
     ImGui::SameLine();
     if (ImGui::Button("Paste")) platform::paste(*this);
@@ -1107,8 +1149,9 @@ std::string App::state_json() const {
         j["segments"] = buffers_.segment_count;
         j["pierce_markers"] = doc_->pierces.size();
         j["bbox_mm"] = box_json(doc_->bbox);
-        j["memory_bytes"] = doc_->memory_bytes() + buffers_.segments.capacity() * sizeof(SegmentInstance) +
-                            buffers_.first_segment.capacity() * sizeof(std::uint32_t);
+        j["memory_bytes"] = doc_->memory_bytes() + buffers_.memory_bytes() + (building_ ? building_->memory_bytes() : 0);
+        j["gpu_bytes"] = gpu_.gpu_bytes() + gpu_building_.gpu_bytes() + renderer_.lod_gpu_bytes();
+        j["lod"] = {{"available", renderer_.has_lod()}, {"drawn", lod_drawn_}, {"cell_mm", renderer_.lod_cell_mm()}};
         j["tape_memory_bytes"] = doc_->tape.memory_bytes();
         j["blocks_read"] = doc_->tape.size();
         j["load_seconds"] = load_seconds_;
@@ -1161,6 +1204,9 @@ std::string App::state_json() const {
         for (std::size_t m = m0; m < m1 && m < m0 + 8; ++m) insp.push_back(describe_motion(doc_->record(m)));
     }
     j["inspector"] = std::move(insp);
+    const RenderStats& rs = renderer_.stats();
+    j["render"] = {{"frames", rs.frames}, {"full_redraws", rs.full_redraws}, {"partial_redraws", rs.partial_redraws},
+                   {"cached_frames", rs.cached_frames}};
     j["help"] = show_help_;
     j["share_url"] = share_url_;
     j["message"] = message_;

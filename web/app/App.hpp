@@ -34,6 +34,10 @@ public:
     bool init_graphics();  // after the GL context and ImGui exist
     // One frame: UI, input, drawing. Called by the platform loop between NewFrame and Render.
     void frame();
+    // Loading or building work left to do (the browser loop also runs slices of it between frames).
+    [[nodiscard]] bool has_background_work() const { return loader_ != nullptr || building_ != nullptr; }
+    // One slice (about kStepBudgetMs) of that work outside a frame; returns has_background_work().
+    bool background_step();
     // Starts loading a tape (bytes as read from the file). `view`, when given, replaces the fit at the end.
     void load(std::string name, std::string bytes, std::optional<ViewRequest> view = std::nullopt);
     void set_view(double x, double y, double zoom);   // machine mm, px/mm; kept until a load completes
@@ -90,8 +94,12 @@ private:
 
     // The document and its drawing
     std::unique_ptr<Document> doc_;
-    PathBuffers buffers_;           // uploaded
+    PathBuffers buffers_;           // the drawn set's motion -> segment map (its segments are on the GPU only)
+    GpuPath gpu_;                   // the drawn segments
     std::unique_ptr<PathBuffers> building_;  // being built (first build or a rebuild at a new tolerance)
+    GpuPath gpu_building_;          // its segments, uploaded as they are made
+    LodRaster lod_;                 // zoomed-out drawing of big tapes, made during the first build
+    bool lod_drawn_ = false;        // the last frame drew it
     bool first_build_ = false;
     std::string profile_name_ = "iso6582";
     std::string banner_;            // a problem with the whole file ("not an ESSI tape ...")

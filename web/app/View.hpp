@@ -11,6 +11,7 @@ namespace essi::viewer {
 struct Rect {
     float x = 0, y = 0, w = 1, h = 1;
     [[nodiscard]] bool contains(float px, float py) const { return px >= x && py >= y && px < x + w && py < y + h; }
+    bool operator==(const Rect&) const = default;
 };
 
 struct View {

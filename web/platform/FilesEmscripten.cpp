@@ -1,5 +1,6 @@
-// Browser files: the Open button clicks the page's <input type=file>; drops and pastes are handled by the
-// page (index.html), which passes the bytes to essi_load (ApiEmscripten.cpp).
+// Browser files: the page (index.html) opens its <input type=file> in the click on the Open button (whose
+// place this file tells it) or on Ctrl+O, inside the user's gesture as browsers require; drops and pastes
+// are handled by the page too, which passes the bytes to essi_load (ApiEmscripten.cpp).
 #include <emscripten.h>
 
 #include "app/App.hpp"
@@ -9,11 +10,22 @@ namespace essi::viewer::platform {
 
 bool has_file_dialog() { return true; }
 
-void open_file_dialog(App&) {
+// The page has already opened the picker in the click or key event (a picker opened from a later frame
+// is refused once the gesture has expired).
+void open_file_dialog(App&) {}
+
+void open_button_at(float x, float y, float width, float height) {
+    static float last[4] = {-1, -1, -1, -1};
+    if (last[0] == x && last[1] == y && last[2] == width && last[3] == height) return;
+    last[0] = x;
+    last[1] = y;
+    last[2] = width;
+    last[3] = height;
+    // (no commas inside the JavaScript: the EM_ASM macro would split its argument there)
     EM_ASM({
-        const input = document.getElementById('file');
-        if (input) input.click();
-    });
+        const b = window.essikitOpenButton || (window.essikitOpenButton = {});
+        b.x = $0; b.y = $1; b.w = $2; b.h = $3;
+    }, x, y, width, height);
 }
 
 }  // namespace essi::viewer::platform

@@ -7,6 +7,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "app/App.hpp"
@@ -15,6 +16,33 @@ namespace {
 
 GLFWwindow* g_window = nullptr;
 essi::viewer::App* g_app = nullptr;
+
+// Emscripten's GLFW (3.1.6) passes the browser's wheel deltas as the scroll offsets: pixels (about 100 a
+// notch; 3 a notch in line mode), positive downwards. GLFW's offsets are notches, positive upwards: without
+// this, one notch zoomed the drawing 1.2^120 times the wrong way and scrolled the panels by 120 lines.
+constexpr double kWheelPixelsPerNotch = 100;
+constexpr double kWheelLinesPerNotch = 3;
+constexpr double kWheelLineModeBelow = 10;  // deltas smaller than this come in lines
+
+void on_scroll(GLFWwindow* window, double dx, double dy) {
+    auto notches = [](double d) {
+        return -d / (std::fabs(d) < kWheelLineModeBelow ? kWheelLinesPerNotch : kWheelPixelsPerNotch);
+    };
+    ImGui_ImplGlfw_ScrollCallback(window, notches(dx), notches(dy));
+}
+
+// While the viewer loads, slices of its work also run between two animation frames (a task queued with
+// setTimeout 0 after each slice): under SwiftShader a frame takes 50-80 ms, most of it outside this thread,
+// and the loading would otherwise get only the ~30 ms slice inside each frame. No task is longer than a slice.
+bool g_background_queued = false;
+
+void background(void*) {
+    if (g_app != nullptr && g_app->background_step()) {
+        emscripten_async_call(background, nullptr, 0);
+    } else {
+        g_background_queued = false;
+    }
+}
 
 void fit_canvas() {
     double w = 0, h = 0;
@@ -34,6 +62,10 @@ void frame(void*) {
     g_app->frame();
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (g_app->has_background_work() && !g_background_queued) {
+        g_background_queued = true;
+        emscripten_async_call(background, nullptr, 0);
+    }
 }
 
 }  // namespace
@@ -57,6 +89,7 @@ int main() {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui_ImplGlfw_InitForOpenGL(g_window, true);
+    glfwSetScrollCallback(g_window, on_scroll);  // replaces the backend's (on_scroll calls it)
     ImGui_ImplOpenGL3_Init("#version 300 es");
     g_app = new essi::viewer::App(g_window);
     if (!g_app->init_graphics()) std::fprintf(stderr, "essi_viewer: the drawing programs did not compile\n");

@@ -18,6 +18,10 @@ namespace essi::viewer::platform {
 // Opens the platform's file picker; the chosen file arrives through App::load.
 void open_file_dialog(App& app);
 [[nodiscard]] bool has_file_dialog();
+// Where the Open button is drawn this frame (screen pixels). Browsers show a file picker only during the
+// user's click or key press, and the frame that sees the click may come after that gesture has expired:
+// the page opens the picker in the click event itself when it lands on this rectangle.
+void open_button_at(float x, float y, float width, float height);
 
 // Copies text to the clipboard.
 void copy_text(const std::string& text);

@@ -10,14 +10,14 @@ void PathBuffers::begin(const Document& doc, double tol) {
     doc_ = &doc;
     tolerance_ = std::max(tol, kMinChordTolerance);
     next_ = 0;
-    segments.clear();
-    segments.reserve(doc.motions.size() + doc.arcs.size() * 4);
+    segment_count = 0;
+    staged_first = 0;
+    staged_ends.clear();
+    staged_kinds.clear();
     first_segment.clear();
     first_segment.reserve(doc.motions.size() + 1);
     markers.clear();
-    const float ox = static_cast<float>(doc.origin.x), oy = static_cast<float>(doc.origin.y);
-    (void)ox;
-    (void)oy;
+    markers.reserve(doc.pierces.size() + 1);
     for (const Point& p : doc.pierces)
         markers.push_back({static_cast<float>(p.x - doc.origin.x), static_cast<float>(p.y - doc.origin.y), 0.f});
     if (!doc.motions.empty()) {
@@ -26,34 +26,45 @@ void PathBuffers::begin(const Document& doc, double tol) {
     }
 }
 
+void PathBuffers::put(Point a, Point b, std::uint8_t kind) {
+    const double ox = doc_->origin.x, oy = doc_->origin.y;
+    const float x0 = static_cast<float>(a.x - ox), y0 = static_cast<float>(a.y - oy);
+    const float x1 = static_cast<float>(b.x - ox), y1 = static_cast<float>(b.y - oy);
+    staged_ends.insert(staged_ends.end(), {x0, y0, x1, y1});
+    staged_kinds.push_back(kind);
+    if (lod != nullptr) lod->add_segment(x0, y0, x1, y1, kind);
+    ++segment_count;
+}
+
 bool PathBuffers::step(std::size_t max_motions) {
     if (doc_ == nullptr) return true;
     const Document& doc = *doc_;
-    const double ox = doc.origin.x, oy = doc.origin.y;
     const std::size_t stop = std::min(doc.motions.size(), next_ + max_motions);
     for (; next_ < stop; ++next_) {
         const Motion& m = doc.motions[next_];
-        first_segment.push_back(static_cast<std::uint32_t>(segments.size()));
-        const float kind = static_cast<float>(static_cast<int>(m.kind));
+        first_segment.push_back(static_cast<std::uint32_t>(segment_count));
+        const auto kind = static_cast<std::uint8_t>(m.kind);
         if (m.curve == CurveKind::Line) {
             const Point a = (m.flags & Motion::kFlagJump) ? doc.start_of(next_) : (next_ > 0 ? doc.motions[next_ - 1].end : Point{});
-            segments.push_back({static_cast<float>(a.x - ox), static_cast<float>(a.y - oy),
-                                static_cast<float>(m.end.x - ox), static_cast<float>(m.end.y - oy), kind});
+            put(a, m.end, kind);
             continue;
         }
         scratch_.clear();
         flatten(doc.record(next_), tolerance_, scratch_, true);
-        for (std::size_t k = 1; k < scratch_.size(); ++k) {
-            segments.push_back({static_cast<float>(scratch_[k - 1].x - ox), static_cast<float>(scratch_[k - 1].y - oy),
-                                static_cast<float>(scratch_[k].x - ox), static_cast<float>(scratch_[k].y - oy), kind});
-        }
+        for (std::size_t k = 1; k < scratch_.size(); ++k) put(scratch_[k - 1], scratch_[k], kind);
     }
-    if (next_ >= doc.motions.size() && first_segment.size() == doc.motions.size()) {
-        first_segment.push_back(static_cast<std::uint32_t>(segments.size()));
-        segment_count = segments.size();
+    if (next_ >= doc.motions.size()) {
+        if (first_segment.size() == doc.motions.size()) first_segment.push_back(static_cast<std::uint32_t>(segment_count));
         return true;
     }
-    return next_ >= doc.motions.size();
+    return false;
+}
+
+std::size_t PathBuffers::estimated_segments() const {
+    if (doc_ == nullptr) return 0;
+    if (complete() || next_ == 0) return std::max(segment_count, doc_->motions.size());
+    const double per_motion = static_cast<double>(segment_count) / static_cast<double>(next_);
+    return static_cast<std::size_t>(per_motion * static_cast<double>(doc_->motions.size()));
 }
 
 float PathBuffers::progress() const {
@@ -61,14 +72,21 @@ float PathBuffers::progress() const {
     return static_cast<float>(next_) / static_cast<float>(doc_->motions.size());
 }
 
-void PathBuffers::release_segments() {
-    segments.clear();
-    segments.shrink_to_fit();
+void PathBuffers::drop_staged(std::size_t n) {
+    n = std::min(n, staged_count());
+    staged_ends.erase(staged_ends.begin(), staged_ends.begin() + static_cast<std::ptrdiff_t>(4 * n));
+    staged_kinds.erase(staged_kinds.begin(), staged_kinds.begin() + static_cast<std::ptrdiff_t>(n));
+    staged_first += n;
 }
 
 std::size_t PathBuffers::motion_of_segment(std::size_t s) const {
     auto it = std::upper_bound(first_segment.begin(), first_segment.end(), static_cast<std::uint32_t>(s));
     return static_cast<std::size_t>(it - first_segment.begin()) - 1;
+}
+
+std::size_t PathBuffers::memory_bytes() const {
+    return first_segment.capacity() * sizeof(std::uint32_t) + markers.capacity() * sizeof(MarkerInstance) +
+           staged_ends.capacity() * sizeof(float) + staged_kinds.capacity();
 }
 
 }  // namespace essi::viewer

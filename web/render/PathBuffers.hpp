@@ -1,5 +1,7 @@
-// The motion stream as GPU-ready arrays: one instance (x0 y0 x1 y1 kind) per flattened segment, built in
-// chunks from a Document at a chord tolerance that follows the zoom (essi::flatten).
+// The motion stream as GPU-ready segments (x0 y0 x1 y1 in float mm relative to the document origin, and a
+// kind byte), built in steps from a Document at a chord tolerance that follows the zoom (essi::flatten).
+// No copy of the whole segment stream is kept: the segments made by a step wait in a small staging area
+// until the Renderer takes them (Renderer::append, a few texture rows at a time).
 #pragma once
 
 #include <cstddef>
@@ -7,14 +9,9 @@
 #include <vector>
 
 #include "app/Document.hpp"
+#include "render/LodRaster.hpp"
 
 namespace essi::viewer {
-
-struct SegmentInstance {
-    float x0, y0, x1, y1;
-    float kind;  // MotionKind as a number
-};
-static_assert(sizeof(SegmentInstance) == 20);
 
 struct MarkerInstance {
     float x, y;
@@ -26,22 +23,34 @@ enum class MarkerType { Pierce = 0, Start = 1, Tool = 2 };
 class PathBuffers {
 public:
     void begin(const Document& doc, double chord_tolerance_mm);
-    // Flattens up to `max_motions` more motions; returns true when complete.
+    // Flattens up to `max_motions` more motions into the staging area; returns true when complete.
     bool step(std::size_t max_motions);
     [[nodiscard]] bool complete() const { return doc_ != nullptr && next_ >= doc_->motions.size(); }
     [[nodiscard]] float progress() const;
     [[nodiscard]] double tolerance() const { return tolerance_; }
+    // The final segment count once complete, a projection from the share built so far before.
+    [[nodiscard]] std::size_t estimated_segments() const;
 
-    std::vector<SegmentInstance> segments;     // freed once uploaded (release_segments): the GPU has them
-    std::size_t segment_count = 0;
+    std::size_t segment_count = 0;             // segments made so far (all of them once complete)
     std::vector<std::uint32_t> first_segment;  // per motion, plus one at the end
     std::vector<MarkerInstance> markers;       // pierces then the start point
 
-    void release_segments();
+    // Segments made but not yet taken by the renderer: [staged_first, segment_count).
+    std::vector<float> staged_ends;            // 4 floats a segment
+    std::vector<std::uint8_t> staged_kinds;    // MotionKind
+    std::size_t staged_first = 0;
+    [[nodiscard]] std::size_t staged_count() const { return staged_kinds.size(); }
+    void drop_staged(std::size_t n);           // the first n staged segments are on the GPU
+
     // Motion index of segment s.
     [[nodiscard]] std::size_t motion_of_segment(std::size_t s) const;
+    [[nodiscard]] std::size_t memory_bytes() const;
+
+    LodRaster* lod = nullptr;  // when set, every segment made is also rasterised into it
 
 private:
+    void put(Point a, Point b, std::uint8_t kind);
+
     const Document* doc_ = nullptr;
     double tolerance_ = 0.01;
     std::size_t next_ = 0;

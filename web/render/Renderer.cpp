@@ -55,14 +55,38 @@ GLuint link(const char* vs_src, const char* fs_src, const char* name) {
     return p;
 }
 
-void set_view_uniforms(GLuint p, const View& v, int fb_w, int fb_h, float scale) {
-    glUniform2f(glGetUniformLocation(p, "u_center"), static_cast<float>(v.cx), static_cast<float>(v.cy));
-    glUniform1f(glGetUniformLocation(p, "u_zoom"), static_cast<float>(v.zoom * scale));
-    glUniform2f(glGetUniformLocation(p, "u_origin_px"), static_cast<float>(v.ox() * scale), static_cast<float>(v.oy() * scale));
-    glUniform2f(glGetUniformLocation(p, "u_viewport"), static_cast<float>(fb_w), static_cast<float>(fb_h));
+// The image around the drawing area: this share of the area's width (height) on each side.
+constexpr float kCacheMarginShare = 0.5f;
+
+void set_target_uniforms(GLuint p, float cx, float cy, float zoom, float ox, float oy, int w, int h) {
+    glUniform2f(glGetUniformLocation(p, "u_center"), cx, cy);
+    glUniform1f(glGetUniformLocation(p, "u_zoom"), zoom);
+    glUniform2f(glGetUniformLocation(p, "u_origin_px"), ox, oy);
+    glUniform2f(glGetUniformLocation(p, "u_viewport"), static_cast<float>(w), static_cast<float>(h));
 }
 
 }  // namespace
+
+namespace {
+
+GLuint new_texture() {
+    GLuint t = 0;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_2D, t);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+}  // namespace
+
+std::size_t GpuPath::gpu_bytes() const {
+    std::size_t n = 0;
+    for (const GpuPage& p : pages) n += p.rows * Renderer::kTexWidth * 17;
+    return n;
+}
 
 bool Renderer::init() {
     path_program_ = link(shaders::path_vert_glsl, shaders::path_frag_glsl, "path");
@@ -72,178 +96,370 @@ bool Renderer::init() {
         error_ = g_error.c_str();
         return false;
     }
-    // Unit quad as a triangle strip: (along, across).
-    const float quad[] = {0, -1, 1, -1, 0, 1, 1, 1};
-    glGenBuffers(1, &quad_vbo_);
-    glBindBuffer(GL_ARRAY_BUFFER, quad_vbo_);
-    glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
-    glGenBuffers(1, &seg_vbo_);
-    glGenBuffers(1, &marker_vbo_);
-    glGenBuffers(1, &tool_vbo_);
-    glGenVertexArrays(1, &path_vao_);  // no attributes: the path program pulls its segments from textures
-    for (GLuint* t : {&seg_tex_, &kind_tex_}) {
-        glGenTextures(1, t);
-        glBindTexture(GL_TEXTURE_2D, *t);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    blit_program_ = link(shaders::blit_vert_glsl, shaders::blit_frag_glsl, "blit");
+    lod_program_ = link(shaders::blit_vert_glsl, shaders::lod_frag_glsl, "lod");
+    if (!blit_program_ || !lod_program_) {
+        error_ = g_error.c_str();
+        return false;
     }
+    glGenVertexArrays(1, &empty_vao_);
+    marker_tex_ = new_texture();
     glBindTexture(GL_TEXTURE_2D, 0);
-    glGenVertexArrays(1, &sel_vao_);
-    glGenVertexArrays(1, &marker_vao_);
-    glGenVertexArrays(1, &tool_vao_);
-    glGenVertexArrays(1, &grid_vao_);
-    for (GLuint vao : {marker_vao_, tool_vao_}) {
-        glBindVertexArray(vao);
-        glBindBuffer(GL_ARRAY_BUFFER, quad_vbo_);
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);  // marker corners: remapped in the shader
-        glBindBuffer(GL_ARRAY_BUFFER, vao == marker_vao_ ? marker_vbo_ : tool_vbo_);
-        glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, sizeof(MarkerInstance), nullptr);
-        glVertexAttribDivisor(1, 1);
-        glEnableVertexAttribArray(2);
-        glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(MarkerInstance),
-                              reinterpret_cast<void*>(offsetof(MarkerInstance, type)));
-        glVertexAttribDivisor(2, 1);
-    }
-    glBindVertexArray(0);
     return true;
 }
 
-void Renderer::upload(const PathBuffers& b) {
-    // Segments into two textures, a row of kTexWidth segments at a time (no second copy of the stream).
-    GLint max_size = 4096;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
-    const std::size_t rows_max = static_cast<std::size_t>(max_size);
-    std::size_t n = b.segments.size();
-    std::size_t rows = (n + kTexWidth - 1) / kTexWidth;
-    if (rows > rows_max) {
-        std::fprintf(stderr, "essi_viewer: %zu segments, the GPU takes %zu; the rest is not drawn\n", n, rows_max * kTexWidth);
-        rows = rows_max;
-        n = rows * kTexWidth;
-    }
-    const GLsizei h = static_cast<GLsizei>(std::max<std::size_t>(rows, 1));
-    glBindTexture(GL_TEXTURE_2D, seg_tex_);
+void Renderer::add_page(GpuPath& path, std::size_t first, std::size_t rows) {
+    GpuPage pg;
+    pg.first = first;
+    pg.rows = rows;
+    const auto h = static_cast<GLsizei>(rows);
+    pg.seg_tex = new_texture();
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kTexWidth, h, 0, GL_RGBA, GL_FLOAT, nullptr);
-    glBindTexture(GL_TEXTURE_2D, kind_tex_);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    pg.kind_tex = new_texture();
     glTexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, kTexWidth, h, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
-    std::vector<float> row(static_cast<std::size_t>(kTexWidth) * 4);
-    std::vector<std::uint8_t> kinds(static_cast<std::size_t>(kTexWidth));
-    for (std::size_t r = 0; r < rows; ++r) {
-        const std::size_t first = r * kTexWidth;
-        const std::size_t count = std::min<std::size_t>(kTexWidth, n - first);
-        for (std::size_t k = 0; k < count; ++k) {
-            const SegmentInstance& sg = b.segments[first + k];
-            row[4 * k] = sg.x0;
-            row[4 * k + 1] = sg.y0;
-            row[4 * k + 2] = sg.x1;
-            row[4 * k + 3] = sg.y1;
-            kinds[k] = static_cast<std::uint8_t>(sg.kind);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    path.pages.push_back(pg);
+}
+
+void Renderer::append(GpuPath& path, PathBuffers& b) {
+    const bool final = b.complete();
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    while (b.staged_count() > 0) {
+        const std::size_t first = b.staged_first;  // == path.count
+        if (path.pages.empty() || first >= path.pages.back().first + path.pages.back().rows * kTexWidth) {
+            // A new page sized for the segments still to come (projected), in whole quanta of rows.
+            const std::size_t expected = std::max(b.estimated_segments(), first + b.staged_count()) - first;
+            std::size_t rows = (expected + kTexWidth - 1) / kTexWidth;
+            rows = std::clamp((rows + kRowQuantum - 1) / kRowQuantum * kRowQuantum, kRowQuantum, kPageRows);
+            add_page(path, first, rows);
         }
-        glBindTexture(GL_TEXTURE_2D, seg_tex_);
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, static_cast<GLint>(r), static_cast<GLsizei>(count), 1, GL_RGBA, GL_FLOAT, row.data());
-        glBindTexture(GL_TEXTURE_2D, kind_tex_);
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, static_cast<GLint>(r), static_cast<GLsizei>(count), 1, GL_RED_INTEGER,
-                        GL_UNSIGNED_BYTE, kinds.data());
+        const GpuPage& pg = path.pages.back();
+        const std::size_t row0 = (first - pg.first) / kTexWidth;  // uploads start on whole rows
+        std::size_t rows = std::min(b.staged_count() / kTexWidth, pg.rows - row0);
+        std::size_t width = kTexWidth;
+        if (rows == 0) {
+            if (!final) break;  // wait for a whole row
+            rows = 1;           // the last, partial row
+            width = b.staged_count();
+        }
+        glBindTexture(GL_TEXTURE_2D, pg.seg_tex);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, static_cast<GLint>(row0), static_cast<GLsizei>(width),
+                        static_cast<GLsizei>(rows), GL_RGBA, GL_FLOAT, b.staged_ends.data());
+        glBindTexture(GL_TEXTURE_2D, pg.kind_tex);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, static_cast<GLint>(row0), static_cast<GLsizei>(width),
+                        static_cast<GLsizei>(rows), GL_RED_INTEGER, GL_UNSIGNED_BYTE, b.staged_kinds.data());
+        const std::size_t n = rows == 1 && width < kTexWidth ? width : rows * kTexWidth;
+        b.drop_staged(n);
+        path.count += n;
+        path.version = ++version_counter_;
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glBindTexture(GL_TEXTURE_2D, 0);
-    segment_count_ = n;
-    glBindBuffer(GL_ARRAY_BUFFER, marker_vbo_);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(b.markers.size() * sizeof(MarkerInstance)),
-                 b.markers.empty() ? nullptr : b.markers.data(), GL_STATIC_DRAW);
-    marker_count_ = b.markers.size();
 }
 
-void Renderer::clear_geometry() {
-    segment_count_ = 0;
-    marker_count_ = 0;
+void Renderer::release(GpuPath& path) {
+    for (GpuPage& p : path.pages) {
+        glDeleteTextures(1, &p.seg_tex);
+        glDeleteTextures(1, &p.kind_tex);
+    }
+    path.pages.clear();
+    path.count = 0;
+    path.version = ++version_counter_;
 }
 
-void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, double grid_step, Point world_origin) {
-    glViewport(0, 0, fb_w, fb_h);
-    glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    const float s = o.framebuffer_scale;
+void Renderer::upload_markers(const std::vector<MarkerInstance>& markers) {
+    GLint max_size = 4096;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    const std::size_t n = std::min(markers.size(), static_cast<std::size_t>(max_size) * kTexWidth);
+    const std::size_t rows = std::max<std::size_t>((n + kTexWidth - 1) / kTexWidth, 1);
+    std::vector<float> data(rows * kTexWidth * 4, 0.f);
+    for (std::size_t i = 0; i < n; ++i) {
+        data[4 * i] = markers[i].x;
+        data[4 * i + 1] = markers[i].y;
+        data[4 * i + 2] = markers[i].type;
+    }
+    glBindTexture(GL_TEXTURE_2D, marker_tex_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kTexWidth, static_cast<GLsizei>(rows), 0, GL_RGBA, GL_FLOAT, data.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    marker_count_ = n;
+    markers_version_ = ++version_counter_;
+}
 
-    // Grid
+void Renderer::upload_lod(const LodRaster& lod) {
+    clear_lod();
+    if (!lod.active() || !lod.finished()) return;
+    if (lod_tex_ == 0) lod_tex_ = new_texture();
+    glBindTexture(GL_TEXTURE_2D, lod_tex_);
+    // Integer textures are read with texelFetch at an explicit level: no filtering.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, lod.levels() - 1);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    lod_bytes_ = 0;
+    for (int k = 0; k < lod.levels(); ++k) {
+        glTexImage2D(GL_TEXTURE_2D, k, GL_R8UI, lod.width(k), lod.height(k), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE,
+                     lod.level(k).data());
+        lod_bytes_ += lod.level(k).size();
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    lod_levels_ = lod.levels();
+    lod_cell_ = lod.cell_mm();
+    lod_min_x_ = lod.min_x();
+    lod_min_y_ = lod.min_y();
+    lod_version_ = ++version_counter_;
+}
+
+void Renderer::clear_lod() {
+    lod_levels_ = 0;
+    lod_bytes_ = 0;
+    lod_version_ = ++version_counter_;
+}
+
+int Renderer::lod_level(double zoom) const {
+    int level = 0;
+    double cell_px = lod_cell_ * zoom;
+    while (cell_px < 1.0 && level + 1 < lod_levels_) {
+        cell_px *= 2;
+        ++level;
+    }
+    return level;
+}
+
+void Renderer::draw_lod(const Target& t, int mask) {
+    if (lod_levels_ == 0 || mask == 0) return;
+    const int level = lod_level(t.zoom);
+    glUseProgram(lod_program_);
+    set_target_uniforms(lod_program_, t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h);
+    glUniform4f(glGetUniformLocation(lod_program_, "u_rect"), 0.f, 0.f, static_cast<float>(t.w), static_cast<float>(t.h));
+    glUniform1i(glGetUniformLocation(lod_program_, "u_lod"), 0);
+    glUniform1i(glGetUniformLocation(lod_program_, "u_level"), level);
+    glUniform1f(glGetUniformLocation(lod_program_, "u_cell"), static_cast<float>(lod_cell_ * std::ldexp(1.0, level)));
+    glUniform2f(glGetUniformLocation(lod_program_, "u_min"), lod_min_x_, lod_min_y_);
+    glUniform1i(glGetUniformLocation(lod_program_, "u_mask"), mask);
+    glUniform4fv(glGetUniformLocation(lod_program_, "u_colors"), 4, &kKindColors[0].r);
+    glUniform4f(glGetUniformLocation(lod_program_, "u_pierce"), 1.0f, 0.25f, 0.2f, 1.0f);
+    glBindTexture(GL_TEXTURE_2D, lod_tex_);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+}
+
+// Segments [first, first + count) of `path`, a draw per page they touch (the path program is in use).
+void Renderer::draw_segments(const GpuPath& path, std::size_t first, std::size_t count) {
+    const std::size_t end = std::min(first + count, path.count);
+    for (const GpuPage& pg : path.pages) {
+        const std::size_t a = std::max(first, pg.first);
+        const std::size_t b = std::min(end, pg.first + pg.rows * kTexWidth);
+        if (a >= b) continue;
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, pg.kind_tex);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, pg.seg_tex);
+        glUniform1i(glGetUniformLocation(path_program_, "u_first"), static_cast<GLint>(a - pg.first));
+        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>((b - a) * 6));
+    }
+}
+
+void Renderer::draw_grid(const Target& t, double grid_step, Point world_origin) {
     glUseProgram(grid_program_);
-    set_view_uniforms(grid_program_, view, fb_w, fb_h, s);
+    set_target_uniforms(grid_program_, t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h);
     glUniform2f(glGetUniformLocation(grid_program_, "u_world_origin"), static_cast<float>(world_origin.x),
                 static_cast<float>(world_origin.y));
     glUniform1f(glGetUniformLocation(grid_program_, "u_step"), static_cast<float>(grid_step));
     glUniform4f(glGetUniformLocation(grid_program_, "u_minor"), 0.5f, 0.55f, 0.6f, 0.10f);
     glUniform4f(glGetUniformLocation(grid_program_, "u_major"), 0.5f, 0.55f, 0.6f, 0.25f);
     glUniform4f(glGetUniformLocation(grid_program_, "u_axis"), 0.6f, 0.8f, 0.6f, 0.45f);
-    glBindVertexArray(grid_vao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+}
 
-    // Paths
-    if (segment_count_ > 0 && (o.layer_mask & 0xF) != 0) {  // every layer hidden: not one vertex to run
-        glUseProgram(path_program_);
-        set_view_uniforms(path_program_, view, fb_w, fb_h, s);
-        float hw[4] = {0.6f * s, 0.6f * s, 1.1f * s, 1.0f * s};
-        glUniform1fv(glGetUniformLocation(path_program_, "u_half_width"), 4, hw);
-        glUniform4fv(glGetUniformLocation(path_program_, "u_colors"), 4, &kKindColors[0].r);
-        glUniform1i(glGetUniformLocation(path_program_, "u_layer_mask"), o.layer_mask);
-        glUniform4f(glGetUniformLocation(path_program_, "u_override"), 0, 0, 0, 0);
-        glUniform1f(glGetUniformLocation(path_program_, "u_extra_width"), 0);
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, seg_tex_);
-        glActiveTexture(GL_TEXTURE1);
-        glBindTexture(GL_TEXTURE_2D, kind_tex_);
-        glActiveTexture(GL_TEXTURE0);
-        glUniform1i(glGetUniformLocation(path_program_, "u_segs"), 0);
-        glUniform1i(glGetUniformLocation(path_program_, "u_kinds"), 1);
-        glUniform1i(glGetUniformLocation(path_program_, "u_tex_width"), kTexWidth);
-        glUniform1i(glGetUniformLocation(path_program_, "u_first"), 0);
-        glBindVertexArray(path_vao_);
-        const std::size_t n = std::min(segment_count_, o.segment_limit);
-        if (n > 0) glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(n * 6));
-        if (o.selection_count > 0 && o.selection_first < segment_count_) {
-            glUniform4f(glGetUniformLocation(path_program_, "u_override"), kSelectionColor.r, kSelectionColor.g,
-                        kSelectionColor.b, kSelectionColor.a);
-            glUniform1f(glGetUniformLocation(path_program_, "u_extra_width"), 1.0f * s);
-            glUniform1i(glGetUniformLocation(path_program_, "u_layer_mask"), 0xF);
-            glUniform1i(glGetUniformLocation(path_program_, "u_first"), static_cast<GLint>(o.selection_first));
-            const std::size_t count = std::min(o.selection_count, segment_count_ - o.selection_first);
-            glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(count * 6));
-        }
-        glActiveTexture(GL_TEXTURE1);
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, 0);
-    }
+void Renderer::begin_paths(const Target& t, int layer_mask) {
+    const float s = t.scale;
+    glUseProgram(path_program_);
+    set_target_uniforms(path_program_, t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h);
+    float hw[4] = {0.6f * s, 0.6f * s, 1.1f * s, 1.0f * s};
+    glUniform1fv(glGetUniformLocation(path_program_, "u_half_width"), 4, hw);
+    glUniform4fv(glGetUniformLocation(path_program_, "u_colors"), 4, &kKindColors[0].r);
+    glUniform1i(glGetUniformLocation(path_program_, "u_layer_mask"), layer_mask);
+    glUniform4f(glGetUniformLocation(path_program_, "u_override"), 0, 0, 0, 0);
+    glUniform1f(glGetUniformLocation(path_program_, "u_extra_width"), 0);
+    glUniform1i(glGetUniformLocation(path_program_, "u_segs"), 0);
+    glUniform1i(glGetUniformLocation(path_program_, "u_kinds"), 1);
+    glUniform1i(glGetUniformLocation(path_program_, "u_tex_width"), kTexWidth);
+}
 
-    // Markers
+void Renderer::draw_selection(const Target& t, const GpuPath& path, const DrawOptions& o) {
+    if (o.selection_count == 0 || o.selection_first >= path.count) return;
+    begin_paths(t, 0xF);
+    glUniform4f(glGetUniformLocation(path_program_, "u_override"), kSelectionColor.r, kSelectionColor.g,
+                kSelectionColor.b, kSelectionColor.a);
+    glUniform1f(glGetUniformLocation(path_program_, "u_extra_width"), 1.0f * t.scale);
+    draw_segments(path, o.selection_first, o.selection_count);
+}
+
+void Renderer::draw_markers(const Target& t, int marker_mask) {
+    if (marker_count_ == 0 || (marker_mask & 3) == 0) return;
     glUseProgram(marker_program_);
-    set_view_uniforms(marker_program_, view, fb_w, fb_h, s);
-    glUniform1f(glGetUniformLocation(marker_program_, "u_radius_px"), 5.0f * s);
+    set_target_uniforms(marker_program_, t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h);
+    glUniform1f(glGetUniformLocation(marker_program_, "u_radius_px"), 5.0f * t.scale);
     const float mc[12] = {1.0f, 0.25f, 0.2f, 1.0f,   // pierce: red ring
                           0.3f, 0.95f, 0.4f, 1.0f,   // start: green disc
                           1.0f, 1.0f, 1.0f, 1.0f};   // tool: white ring + cross
     glUniform4fv(glGetUniformLocation(marker_program_, "u_colors"), 3, mc);
-    glUniform1i(glGetUniformLocation(marker_program_, "u_type_mask"), o.marker_mask);
-    if (marker_count_ > 0) {
-        glBindVertexArray(marker_vao_);
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(marker_count_));
+    glUniform1i(glGetUniformLocation(marker_program_, "u_type_mask"), marker_mask);
+    glUniform1i(glGetUniformLocation(marker_program_, "u_markers"), 0);
+    glUniform1i(glGetUniformLocation(marker_program_, "u_tex_width"), kTexWidth);
+    glUniform1i(glGetUniformLocation(marker_program_, "u_use_single"), 0);
+    glBindTexture(GL_TEXTURE_2D, marker_tex_);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(marker_count_ * 6));
+}
+
+void Renderer::draw_tool(const Target& t, const DrawOptions& o) {
+    if (!o.has_tool) return;
+    glUseProgram(marker_program_);
+    set_target_uniforms(marker_program_, t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h);
+    const float mc[12] = {1.0f, 0.25f, 0.2f, 1.0f, 0.3f, 0.95f, 0.4f, 1.0f, 1.0f, 1.0f, 1.0f, 1.0f};
+    glUniform4fv(glGetUniformLocation(marker_program_, "u_colors"), 3, mc);
+    glUniform1i(glGetUniformLocation(marker_program_, "u_markers"), 0);
+    glUniform1i(glGetUniformLocation(marker_program_, "u_tex_width"), kTexWidth);
+    glUniform1i(glGetUniformLocation(marker_program_, "u_use_single"), 1);
+    glUniform3f(glGetUniformLocation(marker_program_, "u_single"), static_cast<float>(o.tool.x),
+                static_cast<float>(o.tool.y), 2.f);
+    glUniform1i(glGetUniformLocation(marker_program_, "u_type_mask"), 0x7);
+    glUniform1f(glGetUniformLocation(marker_program_, "u_radius_px"), 8.0f * t.scale);
+    glBindTexture(GL_TEXTURE_2D, marker_tex_);  // (a sampler must still be bound)
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+}
+
+bool Renderer::ensure_cache(int w, int h) {
+    if (cache_fbo_ != 0 && cache_w_ == w && cache_h_ == h) return true;
+    if (cache_fbo_ == 0) {
+        glGenFramebuffers(1, &cache_fbo_);
+        cache_tex_ = new_texture();
     }
-    if (o.has_tool) {
-        const MarkerInstance tool{static_cast<float>(o.tool.x), static_cast<float>(o.tool.y), 2.f};
-        glBindBuffer(GL_ARRAY_BUFFER, tool_vbo_);
-        glBufferData(GL_ARRAY_BUFFER, sizeof tool, &tool, GL_DYNAMIC_DRAW);
-        glUniform1i(glGetUniformLocation(marker_program_, "u_type_mask"), 0x7);
-        glUniform1f(glGetUniformLocation(marker_program_, "u_radius_px"), 8.0f * s);
-        glBindVertexArray(tool_vao_);
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, 1);
+    glBindTexture(GL_TEXTURE_2D, cache_tex_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, cache_fbo_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, cache_tex_, 0);
+    const bool ok = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    cache_w_ = ok ? w : 0;
+    cache_h_ = ok ? h : 0;
+    return ok;
+}
+
+void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, double grid_step, Point world_origin,
+                    const GpuPath* path) {
+    ++stats_.frames;
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glBindVertexArray(empty_vao_);
+    glActiveTexture(GL_TEXTURE0);
+    const float s = o.framebuffer_scale;
+    const float zoom = static_cast<float>(view.zoom * s);
+    const Target window{static_cast<float>(view.cx), static_cast<float>(view.cy), zoom, static_cast<float>(view.ox() * s),
+                        static_cast<float>(view.oy() * s), fb_w, fb_h, s};
+    const std::size_t count = path ? path->count : 0;
+    const std::size_t limit = std::min(count, o.segment_limit);
+    const int layer_mask = o.layer_mask & 0xF;
+
+    // The scene: grid, paths [from, limit), markers (when `full`), into target t.
+    const bool lod = o.lod && lod_levels_ > 0;
+    auto draw_scene = [&](const Target& t, std::size_t from, bool full) {
+        if (full) draw_grid(t, grid_step, world_origin);
+        if (lod) {  // the raster has the paths and the pierces; the start marker is drawn as usual
+            draw_lod(t, layer_mask | ((o.marker_mask & 1) ? LodRaster::kPierceBit : 0));
+            draw_markers(t, o.marker_mask & 2);
+            return;
+        }
+        if (limit > from && layer_mask != 0) {  // every layer hidden: not one vertex to run
+            begin_paths(t, layer_mask);
+            draw_segments(*path, from, limit - from);
+        }
+        if (full) draw_markers(t, o.marker_mask);
+    };
+
+    // The drawing area and its margin, in framebuffer pixels (top-left origin).
+    const float ax = view.area.x * s, ay = view.area.y * s, aw = view.area.w * s, ah = view.area.h * s;
+    const int mx = static_cast<int>(std::ceil(aw * kCacheMarginShare)), my = static_cast<int>(std::ceil(ah * kCacheMarginShare));
+    const int cw = static_cast<int>(std::ceil(aw)) + 2 * mx, ch = static_cast<int>(std::ceil(ah)) + 2 * my;
+    const bool cache = o.use_cache && cw > 0 && ch > 0 && ensure_cache(cw, ch);
+    if (!cache) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, fb_w, fb_h);
+        glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
+        glClear(GL_COLOR_BUFFER_BIT);
+        draw_scene(window, 0, true);
+        ++stats_.full_redraws;
+        cache_valid_ = false;
+    } else {
+        const SceneKey key{view.zoom, grid_step, world_origin, layer_mask, o.marker_mask, fb_w, fb_h, s, view.area, path,
+                           path ? path->version : 0, markers_version_, lod_version_, lod};
+        // Where the image's top-left corner is now: where it was, moved by the pan since (whole pixels).
+        const float left = cache_left_ + std::round(static_cast<float>((cache_cx_ - view.cx) * view.zoom * s));
+        const float top = cache_top_ + std::round(static_cast<float>((view.cy - cache_cy_) * view.zoom * s));
+        const bool covers = left <= ax && top <= ay && left + static_cast<float>(cache_w_) >= ax + aw &&
+                            top + static_cast<float>(cache_h_) >= ay + ah;
+        const bool same = cache_valid_ && key == cache_key_;
+        if (!same || !covers || limit < cache_limit_) {
+            // Draw the image for the current view, the area in its middle.
+            cache_key_ = key;
+            cache_cx_ = view.cx;
+            cache_cy_ = view.cy;
+            cache_left_ = ax - static_cast<float>(mx);
+            cache_top_ = ay - static_cast<float>(my);
+            glBindFramebuffer(GL_FRAMEBUFFER, cache_fbo_);
+            glViewport(0, 0, cache_w_, cache_h_);
+            glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
+            glClear(GL_COLOR_BUFFER_BIT);
+            const Target t{window.cx, window.cy, zoom, window.ox - cache_left_, window.oy - cache_top_, cache_w_, cache_h_, s};
+            draw_scene(t, 0, true);
+            cache_limit_ = limit;
+            cache_valid_ = true;
+            ++stats_.full_redraws;
+        } else if (limit > cache_limit_ && !lod) {
+            // Playback moved forward: add the new segments to the image (drawn at the image's own view).
+            glBindFramebuffer(GL_FRAMEBUFFER, cache_fbo_);
+            glViewport(0, 0, cache_w_, cache_h_);
+            // The image's own mapping: its centre view (cache_cx_, cache_cy_) at the area's centre.
+            const Target own{static_cast<float>(cache_cx_), static_cast<float>(cache_cy_), zoom,
+                             static_cast<float>(view.ox() * s) - cache_left_, static_cast<float>(view.oy() * s) - cache_top_,
+                             cache_w_, cache_h_, s};
+            draw_scene(own, cache_limit_, false);
+            cache_limit_ = limit;
+            ++stats_.partial_redraws;
+        } else {
+            ++stats_.cached_frames;
+        }
+        // The window: background, the image where it is now (inside the drawing area), then the overlays.
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, fb_w, fb_h);
+        glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
+        glClear(GL_COLOR_BUFFER_BIT);
+        const float now_left = cache_left_ + std::round(static_cast<float>((cache_cx_ - view.cx) * view.zoom * s));
+        const float now_top = cache_top_ + std::round(static_cast<float>((view.cy - cache_cy_) * view.zoom * s));
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(static_cast<GLint>(ax), static_cast<GLint>(static_cast<float>(fb_h) - (ay + ah)), static_cast<GLsizei>(std::ceil(aw)),
+                  static_cast<GLsizei>(std::ceil(ah)));
+        glDisable(GL_BLEND);
+        glUseProgram(blit_program_);
+        glUniform4f(glGetUniformLocation(blit_program_, "u_rect"), now_left, now_top, static_cast<float>(cache_w_),
+                    static_cast<float>(cache_h_));
+        glUniform2f(glGetUniformLocation(blit_program_, "u_viewport"), static_cast<float>(fb_w), static_cast<float>(fb_h));
+        glUniform1i(glGetUniformLocation(blit_program_, "u_image"), 0);
+        glBindTexture(GL_TEXTURE_2D, cache_tex_);
+        glDrawArrays(GL_TRIANGLES, 0, 6);
+        glEnable(GL_BLEND);
+        glDisable(GL_SCISSOR_TEST);
     }
+    // Overlays drawn every frame at the current view: the selection and the playback tool.
+    if (path != nullptr && layer_mask != 0) draw_selection(window, *path, o);
+    draw_tool(window, o);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, 0);
     glBindVertexArray(0);
     glUseProgram(0);
 }

@@ -1,12 +1,22 @@
 // Draws the grid, the flattened motion and the markers with the programs in shaders/ (OpenGL ES 3.0:
-// WebGL2 in the browser, a GLES 3 context natively).
+// WebGL2 in the browser, a GLES 3 context natively). The segments live in textures of kTexWidth segments a row,
+// split into pages of at most kPageRows rows, filled a few rows at a time while the drawing is built (append):
+// no frame uploads the whole stream, and the texture height never reaches the GPU's limit.
+//
+// The grid, the paths and the markers are drawn into an offscreen image (a framebuffer texture) that covers
+// the drawing area and a margin around it. A frame whose zoom, layers, playback and geometry are those of the
+// image only draws the image, moved by the pan since it was drawn, and the small overlays (selection, tool):
+// panning costs one textured rectangle. The image is drawn again when one of those changes or when a pan
+// leaves its margin (a CPU renderer such as SwiftShader needs seconds for a million segments).
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "app/View.hpp"
+#include "render/LodRaster.hpp"
 #include "render/PathBuffers.hpp"
 
 namespace essi::viewer {
@@ -23,6 +33,16 @@ struct DrawOptions {
     bool has_tool = false;         // playback: the tool marker
     Point tool;                    // relative to the document origin
     float framebuffer_scale = 1;
+    bool use_cache = true;         // false: draw everything into the window every frame
+    bool lod = false;              // draw the level-of-detail raster instead of the segments (and pierces)
+};
+
+// What the last frames cost (the e2e tests check that a pan reuses the image and a zoom redraws it).
+struct RenderStats {
+    std::uint64_t frames = 0;
+    std::uint64_t full_redraws = 0;    // the whole scene drawn (into the image or the window)
+    std::uint64_t partial_redraws = 0; // playback moved forward: only the new segments drawn into the image
+    std::uint64_t cached_frames = 0;   // the image reused, moved by the pan
 };
 
 // Colours by MotionKind: rapid, travel, cut, mark (also used by the UI legend and the e2e test).
@@ -35,21 +55,99 @@ inline constexpr std::array<Rgba, 4> kKindColors = {{
 inline constexpr Rgba kBackground = {0.11f, 0.12f, 0.14f, 1.f};
 inline constexpr Rgba kSelectionColor = {0.25f, 0.95f, 1.0f, 1.f};
 
+// One page of segments: RGBA32F x0 y0 x1 y1 and R8UI kind, kTexWidth segments a row.
+struct GpuPage {
+    unsigned seg_tex = 0, kind_tex = 0;
+    std::size_t first = 0;  // its first segment
+    std::size_t rows = 0;
+};
+
+// A segment set on the GPU: [0, count) uploaded.
+struct GpuPath {
+    std::vector<GpuPage> pages;
+    std::size_t count = 0;
+    std::uint64_t version = 0;  // changes whenever its content does (the cached image depends on it)
+    [[nodiscard]] std::size_t gpu_bytes() const;
+};
+
 class Renderer {
 public:
+    static constexpr int kTexWidth = 4096;        // segments a texture row (GLES 3 guarantees 2048; WebGL2 4096+)
+    static constexpr std::size_t kPageRows = 256;  // rows a page at most: 1 M segments, 17 MB
+    static constexpr std::size_t kRowQuantum = 16; // page heights are multiples of this
+
     bool init();  // compiles the programs; false (and a message) when the GPU refuses them
     [[nodiscard]] const char* error() const { return error_; }
-    void upload(const PathBuffers& buffers);
-    void clear_geometry();
-    void draw(const View& view, int fb_w, int fb_h, const DrawOptions& options, double grid_step_mm, Point world_origin);
+    // Moves the whole rows staged in `b` to `path` (and the last, partial row once `b` is complete).
+    void append(GpuPath& path, PathBuffers& b);
+    void release(GpuPath& path);
+    void upload_markers(const std::vector<MarkerInstance>& markers);
+    void clear_markers() { marker_count_ = 0; }
+    void upload_lod(const LodRaster& lod);  // a finished raster, every level
+    void clear_lod();
+    [[nodiscard]] bool has_lod() const { return lod_levels_ > 0; }
+    [[nodiscard]] double lod_cell_mm() const { return lod_cell_; }
+    [[nodiscard]] std::size_t lod_gpu_bytes() const { return lod_bytes_; }
+    // The finest LOD level whose cells are at least a pixel at `zoom_px_per_mm` (the raster is used when
+    // even the finest cells are at most kLodMaxCellPx).
+    [[nodiscard]] int lod_level(double zoom_px_per_mm) const;
+    static constexpr double kLodMaxCellPx = 1.0;
+    void draw(const View& view, int fb_w, int fb_h, const DrawOptions& options, double grid_step_mm, Point world_origin,
+              const GpuPath* path);
+
+    [[nodiscard]] const RenderStats& stats() const { return stats_; }
+    void invalidate_cache() { cache_valid_ = false; }
 
 private:
+    // Where a pass draws: the view mapped into a target of w x h pixels, u_center drawn at (ox, oy).
+    struct Target {
+        float cx, cy, zoom, ox, oy;
+        int w, h;
+        float scale;
+    };
+    // The state the cached image was drawn for (a pan is not part of it).
+    struct SceneKey {
+        double zoom = 0, grid_step = 0;
+        Point world_origin;
+        int layer_mask = 0, marker_mask = 0, fb_w = 0, fb_h = 0;
+        float scale = 0;
+        Rect area;
+        const GpuPath* path = nullptr;
+        std::uint64_t path_version = 0, markers_version = 0, lod_version = 0;
+        bool lod = false;
+        bool operator==(const SceneKey&) const = default;
+    };
+    void add_page(GpuPath& path, std::size_t first, std::size_t rows);
+    void draw_segments(const GpuPath& path, std::size_t first, std::size_t count);
+    void draw_grid(const Target& t, double grid_step, Point world_origin);
+    void begin_paths(const Target& t, int layer_mask);
+    void draw_markers(const Target& t, int marker_mask);
+    void draw_selection(const Target& t, const GpuPath& path, const DrawOptions& o);
+    void draw_tool(const Target& t, const DrawOptions& o);
+    void draw_lod(const Target& t, int mask);
+    bool ensure_cache(int w, int h);
+
+    unsigned blit_program_ = 0, lod_program_ = 0;
+    unsigned lod_tex_ = 0;
+    int lod_levels_ = 0;
+    double lod_cell_ = 1;
+    float lod_min_x_ = 0, lod_min_y_ = 0;
+    std::size_t lod_bytes_ = 0;
+    std::uint64_t lod_version_ = 0;
+    unsigned cache_fbo_ = 0, cache_tex_ = 0;
+    int cache_w_ = 0, cache_h_ = 0;
+    bool cache_valid_ = false;
+    SceneKey cache_key_;
+    std::size_t cache_limit_ = 0;        // segments [0, limit) are in the image
+    double cache_cx_ = 0, cache_cy_ = 0; // the view centre (mm) the image was drawn at
+    float cache_left_ = 0, cache_top_ = 0;  // the image's top-left corner in window pixels, then
+    std::uint64_t version_counter_ = 0, markers_version_ = 0;
+    RenderStats stats_;
+
     unsigned path_program_ = 0, grid_program_ = 0, marker_program_ = 0;
-    unsigned quad_vbo_ = 0, seg_vbo_ = 0, marker_vbo_ = 0, tool_vbo_ = 0;
-    unsigned path_vao_ = 0, marker_vao_ = 0, grid_vao_ = 0, sel_vao_ = 0, tool_vao_ = 0;
-    unsigned seg_tex_ = 0, kind_tex_ = 0;  // the segments (RGBA32F x0 y0 x1 y1, R8UI kind), kTexWidth a row
-    static constexpr int kTexWidth = 4096;
-    std::size_t segment_count_ = 0, marker_count_ = 0;
+    unsigned empty_vao_ = 0;     // the programs pull their data by gl_VertexID: no attributes
+    unsigned marker_tex_ = 0;    // RGBA32F x y type, kTexWidth a row
+    std::size_t marker_count_ = 0;
     const char* error_ = "";
 };
 
