@@ -365,7 +365,7 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
         const unsigned char* const first = base + pos;
         const unsigned char* p = first;
         std::uint32_t lead = 0;
-        const int lead_digits = read_digits(p, stop, lead);
+        const int lead_digits = (*p == '+' || *p == '-') ? 0 : read_digits(p, stop, lead);  // motions start with a sign
         if (lead_digits > kMaxWordDigits) break;
         p += lead_digits;
         std::int32_t* const words = t.words_.room(kMaxPlainWords);

@@ -262,6 +262,7 @@ bool DocumentLoader::step(double budget_ms) {
             d.line_index.clear();
             d.line_index.push_back(0);
             d.lines = s.empty() ? 0 : 1;
+            motion_lines_ = !s.empty() && (s[0] == '+' || s[0] == '-');
         }
         const char* p = s.data();
         const std::size_t n = s.size();
@@ -275,6 +276,7 @@ bool DocumentLoader::step(double budget_ms) {
                 if (i < n) {
                     if (d.lines % Document::kLineIndexStride == 0) d.line_index.push_back(static_cast<std::uint32_t>(i));
                     ++d.lines;
+                    motion_lines_ += p[i] == '+' || p[i] == '-';
                 }
             }
             if (now_ms() > until) break;
@@ -282,6 +284,9 @@ bool DocumentLoader::step(double budget_ms) {
         index_pos_ = i;
         if (index_pos_ < n) return false;
         stage_ = 1;
+        // Room for the motion stream at once (lines that start with a sign are motions, near enough): no late
+        // reserve has to copy hundreds of MB in one slice. grow() covers the few motions this misses.
+        d.motions.reserve(motion_lines_ + motion_lines_ / kMotionReserveSlack + 16);
         sink_ = std::make_unique<Sink>(d);
         reader_ = std::make_unique<TapeReader>(d.bytes, d.profile);
         checker_ = std::make_unique<TapeChecker>(d.bytes, d.profile, sink_.get());

@@ -105,6 +105,8 @@ private:
     Tape chunk_;
     int stage_ = 0;
     std::size_t index_pos_ = 0;
+    std::size_t motion_lines_ = 0;  // lines starting with + or -: the motion stream's size, near enough
+    static constexpr std::size_t kMotionReserveSlack = 64;  // 1/64 more for addressed motions ("1+100+0")
     std::size_t read_pos_ = 0;  // byte offset reached by the reader
 };
 
