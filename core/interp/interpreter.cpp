@@ -39,6 +39,9 @@ MotionMeasure measure_arc(IPoint s, IPoint e, IPoint c, bool tape_ccw) {
     return a;
 }
 
+// The blocks measure_motions measures: lines and arcs (parabolas are rare; the interpreter works them out).
+bool has_measure(const Block& b) { return b.kind == BlockKind::Motion && (b.word_count() == 2 || b.word_count() == 5); }
+
 std::string mm_text(double v) {
     char buf[48];
     std::snprintf(buf, sizeof buf, "%.3f mm", v);
@@ -139,7 +142,7 @@ void Machine::run(const Tape& chunk, std::span<const MotionMeasure> measures) {
         words += b.word_count();
         const std::size_t i = base + k;  // the block's index in the whole tape
         const MotionMeasure* pre = nullptr;
-        if (measure != nullptr && b.kind == BlockKind::Motion && (w.size() == 2 || w.size() == 5)) pre = measure++;
+        if (measure != nullptr && has_measure(b)) pre = measure++;
         // The common case first: a motion or a function, nothing pending, not the end.
         if (!burner_count_ && !skipping_ && !b.ends_program()) {
             if (b.kind == BlockKind::Motion) {
@@ -511,10 +514,11 @@ void Machine::motion(const Block& b, std::size_t index, std::span<const std::int
     const double unit = profile_.unit_mm;
     const double tol_units = profile_.arc_tolerance_units;
 
-    const double line_length_mm = units_length(end.x - cur.x, end.y - cur.y) * unit;  // (when it is a line)
+    // Lines, and curves that fall back to a line: the straight length (a square root, only when needed).
+    const auto line_length_mm = [&] { return units_length(end.x - cur.x, end.y - cur.y) * unit; };
     if (w.size() == 2) {
         m.curve = CurveKind::Line;
-        m.length_mm = pre ? pre->length_units * unit : line_length_mm;
+        m.length_mm = pre ? pre->length_units * unit : line_length_mm();
     } else if (w.size() == 5) {
         const IPoint c_t{w[2], w[3]};
         const IPoint d_c = map(c_t.x, c_t.y);
@@ -525,7 +529,7 @@ void Machine::motion(const Block& b, std::size_t index, std::span<const std::int
             warn(DiagCode::E302_ArcZeroRadius, b,
                  "the arc's centre is its start point (radius 0); expected XC/YC to give the centre relative to the start");
             m.curve = CurveKind::Line;
-            m.length_mm = line_length_mm;
+            m.length_mm = line_length_mm();
         } else {
             if (std::abs(r1 - r0) > tol_units) {
                 warn(DiagCode::E301_ArcEndNotOnCircle, b,
@@ -561,7 +565,7 @@ void Machine::motion(const Block& b, std::size_t index, std::span<const std::int
                  std::string("the parabola's radius of curvature at the vertex (") + (axis_parallel_y ? "YP" : "XP") +
                      ") is 0; expected a non-zero radius");
             m.curve = CurveKind::Line;
-            m.length_mm = line_length_mm;
+            m.length_mm = line_length_mm();
         } else {
             ParabolaGeom g;  // tape frame, units
             double residual = 0;
@@ -646,15 +650,16 @@ void measure_motions(const Tape& chunk, std::vector<MotionMeasure>& out) {
     const std::size_t end = chunk.end_block();
     for (std::size_t k = 0; k < end; ++k) {
         const Block& b = chunk.block(k);
-        const int n = b.word_count();
-        if (b.kind == BlockKind::Motion && n == 2) {
-            MotionMeasure line;
-            line.length_units = units_length(w[0], w[1]);
-            out.push_back(line);
-        } else if (b.kind == BlockKind::Motion && n == 5) {
-            out.push_back(measure_arc({0, 0}, {w[0], w[1]}, {w[2], w[3]}, b.tc_positive()));
+        if (has_measure(b)) {
+            if (b.word_count() == 2) {
+                MotionMeasure line;
+                line.length_units = units_length(w[0], w[1]);
+                out.push_back(line);
+            } else {
+                out.push_back(measure_arc({0, 0}, {w[0], w[1]}, {w[2], w[3]}, b.tc_positive()));
+            }
         }
-        w += n;
+        w += b.word_count();
     }
 }
 void Interpreter::finish() { machine_->finish(); }
