@@ -36,14 +36,8 @@ std::string code_anchor(DiagCode c) {
     return s;
 }
 
-std::string sarif_level(Severity s) {
-    switch (s) {
-        case Severity::Error: return "error";
-        case Severity::Warning: return "warning";
-        case Severity::Note: return "note";
-    }
-    return "note";
-}
+// SARIF's result levels have our severities' names ("error", "warning", "note").
+std::string sarif_level(Severity s) { return std::string(severity_name(s)); }
 
 std::string docs_base(std::string_view docs_url) {
     std::string base(docs_url);
@@ -99,29 +93,24 @@ std::string text_file_block(const BatchItem& item, bool quiet) {
 }
 
 // --- GitHub ----------------------------------------------------------------------------------------------
-std::string github_escape_data(std::string_view s) {
+namespace {
+// Workflow-command escaping: data escapes % CR LF; a property (file=..., title=...) also : and ,.
+std::string github_escape(std::string_view s, bool property) {
     std::string out;
     for (char c : s) {
         if (c == '%') out += "%25";
         else if (c == '\r') out += "%0D";
         else if (c == '\n') out += "%0A";
+        else if (property && c == ':') out += "%3A";
+        else if (property && c == ',') out += "%2C";
         else out += c;
     }
     return out;
 }
+}  // namespace
 
-std::string github_escape_property(std::string_view s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '%') out += "%25";
-        else if (c == '\r') out += "%0D";
-        else if (c == '\n') out += "%0A";
-        else if (c == ':') out += "%3A";
-        else if (c == ',') out += "%2C";
-        else out += c;
-    }
-    return out;
-}
+std::string github_escape_data(std::string_view s) { return github_escape(s, false); }
+std::string github_escape_property(std::string_view s) { return github_escape(s, true); }
 
 std::string github_file_block(const BatchItem& item) {
     const FileReport& r = item.report;
