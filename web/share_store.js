@@ -14,7 +14,6 @@
     .catch(() => null);
 
   const useStore = (len) => !!server && len > LINK_BYTES && len <= server.max_body;
-  let storeWaiters = [];
 
   async function upload(name, bytes, query) {
     const res = await fetch('api/share', { method: 'POST', body: bytes, headers: { 'Content-Type': 'application/octet-stream' } });
@@ -24,42 +23,20 @@
            '&n=' + encodeURIComponent(name);
   }
 
-  // The Share button: index.html's essikitShare(name, ptr, len, query), wrapped.
-  const inlineShare = window.essikitShare;
-  window.essikitShare = function (name, ptr, len, query) {
-    if (!useStore(len)) return inlineShare(name, ptr, len, query);
-    const bytes = Module.HEAPU8.slice(ptr, ptr + len);  // copy now: the heap may move
-    (async () => {
-      let ok = 0, text;
-      try {
-        text = await upload(name, bytes, query);
-        ok = 1;
-        history.replaceState(null, '', text);
-        try { await navigator.clipboard.writeText(text); } catch (e) { /* the popup shows the link */ }
-      } catch (e) {
-        text = 'Could not store the tape on the server: ' + e.message;
-      }
-      Module.ccall('essi_share_done', null, ['number', 'string'], [ok, text]);
-      const waiters = storeWaiters;
-      storeWaiters = [];
-      waiters.forEach((w) => (ok ? w.resolve(text) : w.reject(new Error(text))));
-    })();
+  // The link for a tape (index.html's essikitMakeLink, wrapped): big tapes go to the store. The Share button
+  // and essikit.shareLink() go through it; the rest of sharing stays index.html's.
+  const inlineLink = window.essikitMakeLink;
+  window.essikitMakeLink = async function (name, bytes, query) {
+    if (!useStore(bytes.length)) return inlineLink(name, bytes, query);
+    try {
+      return await upload(name, bytes, query);
+    } catch (e) {
+      throw new Error('Could not store the tape on the server: ' + e.message);
+    }
   };
 
-  // essikit.shareLink() (automation, tests) resolves through the store when the Share button would use it.
   const api = window.essikit;
-  if (api && api.shareLink) {
-    const inlineLink = api.shareLink.bind(api);
-    api.shareLink = function () {
-      const s = api.state();
-      if (s.status !== 'ready' || !useStore(s.bytes || 0)) return inlineLink();
-      return new Promise((resolve, reject) => {
-        storeWaiters.push({ resolve, reject });
-        Module._essi_share();
-      });
-    };
-    api.shareStore = { ready: health, get server() { return server; }, LINK_BYTES };
-  }
+  if (api) api.shareStore = { ready: health, get server() { return server; }, LINK_BYTES };
 
   // Opening a stored link: #share=ID[&c=X,Y,ZOOM][&l=LINE][&n=NAME].
   async function openShared() {
