@@ -369,15 +369,7 @@ test('help window (H) and layer toggles (keys 1-4, setLayer)', async () => {
   const cuts = motions.filter((m) => m.kind === 'cut' && m.curve === 'line' && m.length_mm > 50);
   const cutVisible = async (name) => {
     await page.waitForTimeout(100);
-    const at = await pixels(page, await page.screenshot({ path: path.join(shots, name) }));
-    let hits = 0;
-    for (const m of cuts) {
-      const p = await page.evaluate(([x, y]) => essikit.project(x, y), m.mid);
-      const around = [];
-      for (let dy = -1; dy <= 1; ++dy) for (let dx = -1; dx <= 1; ++dx) around.push(at(p.x + dx, p.y + dy));
-      if (around.some((c) => near(c, CUT_RGB))) ++hits;
-    }
-    return hits;
+    return cutHits(page, cuts, name);
   };
   assert.equal(await cutVisible('layers-all.png'), cuts.length);
   await page.keyboard.press('1');
