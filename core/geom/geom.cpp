@@ -11,13 +11,14 @@ constexpr double kTwoPi = 2 * kPi;
 
 double angle_of(Point p, Point c) { return std::atan2(p.y - c.y, p.x - c.x); }
 
-// A monotonic stand-in for the angle of (x, y): 0 at +x, 1 at +y, 2 at -x, 3 at -y, towards 4.
-double pseudo_angle(double x, double y) {
-    const double sum = std::abs(x) + std::abs(y);
-    if (sum == 0) return 0;
-    const double p = x / sum;
-    return y < 0 ? 3 + p : 1 - p;
+// Quadrant of the direction (x, y): k for angles in [k * 90, (k + 1) * 90) degrees. The axis extreme k
+// (+x, +y, -x, -y) is where quadrant k starts.
+int quadrant(Point d) {
+    const bool upper = d.y > 0 || (d.y == 0 && d.x > 0);  // [0, 180)
+    return upper ? (d.x > 0 ? 0 : 1) : (d.x < 0 ? 2 : 3);
 }
+// Whether the direction d (in quadrant q) lies exactly on the axis where q starts.
+bool starts_quadrant(Point d, int q) { return (q & 1) ? d.x == 0 : d.y == 0; }
 
 // Arc radius at a fraction of the sweep: from the start radius to the end radius, so that the arc ends
 // exactly on the programmed end point (the controller moves there; nothing drifts).
@@ -86,19 +87,19 @@ Box bounding_box(const MotionRecord& m) {
                 break;
             }
             if (m.radius == m.end_radius) {
-                // Constant radius (the usual case): which extremes lie inside the sweep is decided with
-                // pseudo-angles (monotonic in the true angle, no trigonometry).
-                const double pa = pseudo_angle(m.start.x - m.centre.x, m.start.y - m.centre.y);
-                const bool full = std::abs(m.sweep) >= kTwoPi;
-                double span = m.sweep >= 0 ? pseudo_angle(m.end.x - m.centre.x, m.end.y - m.centre.y) - pa
-                                           : pa - pseudo_angle(m.end.x - m.centre.x, m.end.y - m.centre.y);
-                if (span < 0) span += 4;
-                if (full || span == 0) span = 4;
-                for (int k = 0; k < 4; ++k) {
-                    double offset = m.sweep >= 0 ? k - pa : pa - k;  // from the start to this extreme
-                    if (offset < 0) offset += 4;
-                    if (offset <= span) b.add(Point{m.centre.x + m.radius * kAxisCos[k], m.centre.y + m.radius * kAxisSin[k]});
-                }
+                // Constant radius (the usual case): the extremes inside the sweep are the starts of the
+                // quadrants the arc enters, found from the quadrants of its ends (no trigonometry). A cw arc
+                // covers what the ccw arc from its end to its start covers.
+                Point a{m.start.x - m.centre.x, m.start.y - m.centre.y}, e{m.end.x - m.centre.x, m.end.y - m.centre.y};
+                if (m.sweep < 0) std::swap(a, e);
+                const int qa = quadrant(a), qe = quadrant(e);
+                int entered = (qe - qa) & 3;
+                // Both ends in one quadrant with the end not after the start: the arc goes all the way round.
+                if (entered == 0 && a.x * e.y - a.y * e.x <= 0) entered = 4;
+                unsigned extremes = starts_quadrant(a, qa) ? 1u << qa : 0u;  // the start on an axis is its extreme
+                for (int i = 1; i <= entered; ++i) extremes |= 1u << ((qa + i) & 3);
+                for (int k = 0; k < 4; ++k)
+                    if (extremes & (1u << k)) b.add(Point{m.centre.x + m.radius * kAxisCos[k], m.centre.y + m.radius * kAxisSin[k]});
                 break;
             }
             const double a0 = angle_of(m.start, m.centre);

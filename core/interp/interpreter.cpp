@@ -11,6 +11,7 @@
 
 #include "essi/functions.hpp"
 #include "essi/geom.hpp"
+#include "essi/stats.hpp"
 
 namespace essi {
 namespace {
@@ -55,7 +56,7 @@ namespace detail {
 class Machine {
 public:
     Machine(std::string_view source, const Profile& profile, MotionSink& sink, std::vector<Diagnostic>& diagnostics)
-        : source_(source), profile_(profile), sink_(sink), diags_(diagnostics) {
+        : source_(source), profile_(profile), sink_(sink), stats_(dynamic_cast<StatsSink*>(&sink)), diags_(diagnostics) {
         feed_mm_min_ = profile_.feed_mm_min;
         // The function table, flattened once per run: half the blocks of a tape are functions.
         for (int code = 0; code < kFunctionCodes; ++code) {
@@ -74,6 +75,12 @@ public:
 
 private:
     void function(const Block& b, std::size_t index, bool has_value, long long value);
+    bool admit_function(const Block& b, bool& has_value, long long value);
+    void set_kerf(const Block& b, KerfSide side, bool has_value, long long value);
+    void set_feed(const Block& b, bool has_value, long long value);
+    void zero_offset(const Block& b);
+    void return_to_zero(const Block& b, std::size_t index);
+    [[nodiscard]] std::uint8_t function_flags(int code) const { return code < kFunctionCodes ? function_flags_[code] : 0; }
     // `pre`: the block's MotionMeasure when it was worked out ahead (2 or 5 words), else null.
     void motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre);
     void emit(MotionRecord& m, const Block& b, std::size_t index);
@@ -103,12 +110,23 @@ private:
     std::string_view source_;
     const Profile& profile_;
     MotionSink& sink_;
+    // The sink when it is the statistics alone (what a check runs): called directly, its calls inlined.
+    StatsSink* const stats_;
     std::vector<Diagnostic>& diags_;
+    void send(const MotionRecord& m) {
+        if (stats_) stats_->on_motion(m);
+        else sink_.on_motion(m);
+    }
+    void send(const MachineEvent& e) {
+        if (stats_) stats_->on_event(e);
+        else sink_.on_event(e);
+    }
 
     // Machine state
     IPoint pos_[kHeads];            // per head, machine axes, unit increments
     IPoint origin_;                 // origin of absolute coordinates (83), machine axes
     AxisMapping mapping_;           // 21-28
+    bool mirrors_ = false;          // mapping_.mirrors(), kept with it (asked for every motion)
     bool absolute_ = false;         // 82
     bool zero_offset_pending_ = false;
     std::optional<Block> zero_offset_block_;
@@ -230,10 +248,12 @@ void Machine::event(const Block& b, std::size_t index, EventKind kind, bool has_
     e.value = value;
     if (kind == EventKind::End) tools_ = 0;
     e.tools_after = tools_;
-    sink_.on_event(e);
+    send(e);
 }
 
-void Machine::function(const Block& b, std::size_t index, bool has_value, long long value) {
+// The checks a function block must pass before it takes effect (rarely failed: kept out of the common path).
+// Returns false when the block is ignored; may clear `has_value` (a value the function does not take).
+bool Machine::admit_function(const Block& b, bool& has_value, long long value) {
     const int code = b.code;
     if (zero_offset_pending_) {
         warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
@@ -241,21 +261,21 @@ void Machine::function(const Block& b, std::size_t index, bool has_value, long l
                  std::to_string(code) + " on line " + std::to_string(b.line));
         zero_offset_pending_ = false;
     }
-    const std::uint8_t flags = code < kFunctionCodes ? function_flags_[code] : 0;
+    const std::uint8_t flags = function_flags(code);
     if (!(flags & kAssigned)) {
         warn(DiagCode::W201_UnknownFunction, b,
              "machine function " + std::to_string(code) + " is " +
                  (code > 115 ? "not defined by ISO 6582 (0-115) or by the " + profile_.name + " profile"
                              : std::string("unassigned in ISO 6582 Annex B")) +
                  "; it is ignored");
-        return;
+        return false;
     }
     if (flags & kManufacturer) {
         warn(DiagCode::W208_ManufacturerFunction, b,
              "machine function " + std::to_string(code) +
                  " is specified by the machine manufacturer (ISO 6582 55-62); it is ignored; choose the profile of "
                  "your controller (e.g. woyda) to interpret it");
-        return;
+        return false;
     }
     if (has_value && (flags & kTakesNoValue)) {
         warn(DiagCode::W202_FunctionValueIgnored, b,
@@ -267,28 +287,70 @@ void Machine::function(const Block& b, std::size_t index, bool has_value, long l
         warn(DiagCode::E203_FunctionValueMissing, b,
              "machine function " + std::to_string(code) + " (" + function_name(code) + ") needs a value; expected " +
                  std::to_string(code) + "+value");
+        return false;
+    }
+    return true;
+}
+
+void Machine::set_kerf(const Block& b, KerfSide side, bool has_value, long long value) {
+    if (tools_ & kCuttingTools) {
+        warn(DiagCode::W204_KerfWhileCutting, b,
+             "kerf compensation switched " + std::string(side == KerfSide::Off ? "off" : "on") +
+                 " while a cutting tool is on; expected it before the pierce (7, 53 ...) or after the tool is off");
+    }
+    kerf_ = side;
+    if (side == KerfSide::Off) {
+        kerf_offset_mm_ = 0;
         return;
     }
-    const bool cutting = (tools_ & kCuttingTools) != 0;
+    const double units = has_value ? static_cast<double>(value) : profile_.kerf_units;
+    const double mm = units * profile_.unit_mm;
+    kerf_offset_mm_ = profile_.kerf_value == KerfValueMeaning::Width ? mm / 2 : mm;
+}
+
+void Machine::set_feed(const Block& b, bool has_value, long long value) {
+    if (has_value && value <= 0) {
+        warn(DiagCode::W209_ZeroFeed, b,
+             "programmed feed " + std::to_string(value) + " mm/min cannot move the machine; the time estimate uses the profile's feed of " +
+                 std::to_string(static_cast<long long>(profile_.feed_mm_min)) + " mm/min");
+        feed_mm_min_ = profile_.feed_mm_min;
+    } else {
+        feed_mm_min_ = has_value ? static_cast<double>(value) : profile_.feed_mm_min;
+    }
+}
+
+void Machine::zero_offset(const Block& b) {
+    zero_offset_pending_ = true;
+    zero_offset_block_ = b;
+    if (!absolute_) {
+        warn(DiagCode::W215_ZeroOffsetInIncremental, b,
+             "zero offset (83) while programming incrementally (81): the new origin takes effect with the next "
+             "absolute move (82)");
+    }
+}
+
+// Woyda 62: return to the program's zero point, a motion of its own.
+void Machine::return_to_zero(const Block& b, std::size_t index) {
+    event(b, index, EventKind::Function);
+    MotionRecord m;
+    m.curve = CurveKind::Line;
+    m.start = to_mm(pos_[0]);
+    m.length_mm = units_length(pos_[0].x, pos_[0].y) * profile_.unit_mm;
+    pos_[0] = IPoint{};
+    m.end = to_mm(pos_[0]);
+    emit(m, b, index);
+}
+
+void Machine::function(const Block& b, std::size_t index, bool has_value, long long value) {
+    const int code = b.code;
+    // One test for the common case: nothing pending, an assigned function with a value only if it takes one.
+    const std::uint8_t refused = kManufacturer | (has_value ? kTakesNoValue : kNeedsValue);
+    if (zero_offset_pending_ || (function_flags(code) & (kAssigned | refused)) != kAssigned) [[unlikely]] {
+        if (!admit_function(b, has_value, value)) return;
+    }
     double event_value = static_cast<double>(value);
     EventKind kind = EventKind::Function;
-
-    auto tool = [&](std::uint8_t bit, bool on) { set_tools(on ? (tools_ | bit) : (tools_ & ~bit)); };
-    auto kerf = [&](KerfSide side) {
-        if (cutting) {
-            warn(DiagCode::W204_KerfWhileCutting, b,
-                 "kerf compensation switched " + std::string(side == KerfSide::Off ? "off" : "on") +
-                     " while a cutting tool is on; expected it before the pierce (7, 53 ...) or after the tool is off");
-        }
-        kerf_ = side;
-        if (side == KerfSide::Off) {
-            kerf_offset_mm_ = 0;
-            return;
-        }
-        const double units = has_value ? static_cast<double>(value) : profile_.kerf_units;
-        const double mm = units * profile_.unit_mm;
-        kerf_offset_mm_ = profile_.kerf_value == KerfValueMeaning::Width ? mm / 2 : mm;
-    };
+    const auto tool = [&](std::uint8_t bit, bool on) { set_tools(on ? (tools_ | bit) : (tools_ & ~bit)); };
 
     switch (code) {
         case 0:
@@ -310,19 +372,13 @@ void Machine::function(const Block& b, std::size_t index, bool has_value, long l
         case 20: three_axis_ = false; break;
         case 21: case 22: case 23: case 24: case 25: case 26: case 27: case 28:
             mapping_ = axis_mapping(code);
+            mirrors_ = mapping_.mirrors();
             break;
-        case 29: kerf(KerfSide::Left); break;
-        case 30: kerf(KerfSide::Right); break;
-        case 38: kerf(KerfSide::Off); break;
+        case 29: set_kerf(b, KerfSide::Left, has_value, value); break;
+        case 30: set_kerf(b, KerfSide::Right, has_value, value); break;
+        case 38: set_kerf(b, KerfSide::Off, has_value, value); break;
         case 39:
-            if (has_value && value <= 0) {
-                warn(DiagCode::W209_ZeroFeed, b,
-                     "programmed feed " + std::to_string(value) + " mm/min cannot move the machine; the time estimate uses the profile's feed of " +
-                         std::to_string(static_cast<long long>(profile_.feed_mm_min)) + " mm/min");
-                feed_mm_min_ = profile_.feed_mm_min;
-            } else {
-                feed_mm_min_ = has_value ? static_cast<double>(value) : profile_.feed_mm_min;
-            }
+            set_feed(b, has_value, value);
             event_value = feed_mm_min_;
             has_value = true;
             break;
@@ -351,15 +407,7 @@ void Machine::function(const Block& b, std::size_t index, bool has_value, long l
             return;
         case 81: absolute_ = false; break;
         case 82: absolute_ = true; break;
-        case 83:
-            zero_offset_pending_ = true;
-            zero_offset_block_ = b;
-            if (!absolute_) {
-                warn(DiagCode::W215_ZeroOffsetInIncremental, b,
-                     "zero offset (83) while programming incrementally (81): the new origin takes effect with the next "
-                     "absolute move (82)");
-            }
-            break;
+        case 83: zero_offset(b); break;
         case 100:
             open_optional_ = b;
             skipping_ = profile_.optional_ignore;
@@ -374,14 +422,7 @@ void Machine::function(const Block& b, std::size_t index, bool has_value, long l
         case 113: tool(kToolFive, false); break;
         case kFunctionReturnToZero:
             if (profile_.dialect == Dialect::Woyda) {
-                event(b, index, EventKind::Function);
-                MotionRecord m;
-                m.curve = CurveKind::Line;
-                m.start = to_mm(pos_[0]);
-                m.length_mm = units_length(pos_[0].x, pos_[0].y) * profile_.unit_mm;
-                pos_[0] = IPoint{};
-                m.end = to_mm(pos_[0]);
-                emit(m, b, index);
+                return_to_zero(b, index);
                 return;
             }
             break;
@@ -408,13 +449,13 @@ void Machine::emit(MotionRecord& m, const Block& b, std::size_t index) {
     m.feed_mm_min = rapid_ ? profile_.rapid_mm_min : feed_mm_min_;
     m.kerf = kerf_;
     m.kerf_mm = kerf_offset_mm_;
-    if (m.kerf != KerfSide::Off && mapping_.mirrors()) m.kerf = m.kerf == KerfSide::Left ? KerfSide::Right : KerfSide::Left;
+    if (m.kerf != KerfSide::Off && mirrors_) m.kerf = m.kerf == KerfSide::Left ? KerfSide::Right : KerfSide::Left;
     if (rapid_one_block_) {
         rapid_ = false;
         rapid_one_block_ = false;
     }
     if (profile_.table) check_table(m, b);
-    sink_.on_motion(m);
+    send(m);
 }
 
 void Machine::check_table(const MotionRecord& m, const Block& b) {
@@ -451,7 +492,7 @@ void Machine::motion(const Block& b, std::size_t index, std::span<const std::int
             e.x = o.x;
             e.y = o.y;
             e.tools_after = tools_;
-            sink_.on_event(e);
+            send(e);
             return;
         }
         warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
@@ -539,10 +580,10 @@ void Machine::motion(const Block& b, std::size_t index, std::span<const std::int
             }
             m.curve = CurveKind::Arc;
             m.centre = to_mm(centre);
-            m.ccw = b.tc_positive() != mapping_.mirrors();
+            m.ccw = b.tc_positive() != mirrors_;
             m.radius = r0 * unit;
             m.end_radius = r1 * unit;
-            m.sweep = mapping_.mirrors() ? -arc.sweep : arc.sweep;  // a mirror turns the sense
+            m.sweep = mirrors_ ? -arc.sweep : arc.sweep;  // a mirror turns the sense
             m.length_mm = m.radius * std::abs(m.sweep);
             if (kerf_ != KerfSide::Off) {
                 // Kerf side relative to the programmed contour: a ccw arc has its centre on the left.
@@ -615,7 +656,7 @@ void Machine::motion(const Block& b, std::size_t index, std::span<const std::int
             m.parabola.t0 = g.t0 * unit;
             m.parabola.t1 = g.t1 * unit;
             m.curve = CurveKind::Parabola;
-            m.ccw = b.tc_positive() != mapping_.mirrors();
+            m.ccw = b.tc_positive() != mirrors_;
             m.length_mm = parabola_length(m.parabola);
         }
     }

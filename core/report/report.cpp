@@ -9,47 +9,6 @@
 
 namespace essi {
 
-void StatsSink::on_motion(const MotionRecord& m) {
-    ++stats_.motions;
-    // A line's box is its end points; the exact box of a curve costs more: computed once, used twice.
-    if (m.curve == CurveKind::Line) {
-        stats_.motion_bbox.add(m.start);
-        stats_.motion_bbox.add(m.end);
-        if (m.kind == MotionKind::Cut) {
-            stats_.cut_bbox.add(m.start);
-            stats_.cut_bbox.add(m.end);
-        }
-    } else {
-        const Box box = bounding_box(m);
-        stats_.motion_bbox.add(box);
-        if (m.kind == MotionKind::Cut) stats_.cut_bbox.add(box);
-    }
-    switch (m.kind) {
-        case MotionKind::Cut:
-            stats_.cut_length_mm += m.length_mm;
-            break;
-        case MotionKind::Mark: stats_.mark_length_mm += m.length_mm; break;
-        case MotionKind::Rapid:
-            stats_.rapid_length_mm += m.length_mm;
-            stats_.travel_length_mm += m.length_mm;
-            break;
-        case MotionKind::Travel: stats_.travel_length_mm += m.length_mm; break;
-    }
-    if (m.feed_mm_min > 0) stats_.estimated_time_s += m.length_mm / m.feed_mm_min * 60.0;
-    if (m.head == 1) stats_.end_position = m.end;
-}
-
-void StatsSink::on_event(const MachineEvent& e) {
-    if (e.kind == EventKind::Dwell) stats_.estimated_time_s += e.value;
-    const bool was_cutting = (tools_ & kCuttingTools) != 0;
-    const bool cutting = (e.tools_after & kCuttingTools) != 0;
-    if (!was_cutting && cutting) {
-        ++stats_.pierces;
-        stats_.estimated_time_s += profile_.pierce_time_s;
-    }
-    tools_ = e.tools_after;
-}
-
 bool CheckResult::ok() const { return count(Severity::Error) == 0; }
 
 std::size_t CheckResult::count(Severity s) const {

@@ -1,0 +1,75 @@
+// The statistics of ESSI-SEMANTICS §9, accumulated from the motion stream. Defined here, inline, because
+// the interpreter feeds them directly (not through the MotionSink's virtual calls) when they are its only
+// sink: a call per motion and per function block of every tape that is checked.
+#pragma once
+
+#include "essi/geom.hpp"
+#include "essi/motion.hpp"
+#include "essi/profile.hpp"
+
+namespace essi {
+
+struct Stats {
+    double cut_length_mm = 0;
+    double mark_length_mm = 0;
+    double travel_length_mm = 0;   // rapid and other tool-off motion
+    double rapid_length_mm = 0;    // the rapid part of travel_length_mm
+    unsigned long long pierces = 0;
+    unsigned long long blocks = 0; // program blocks read (comment lines and empty lines excluded)
+    unsigned long long motions = 0;
+    double estimated_time_s = 0;
+    Box cut_bbox;                  // empty when nothing is cut
+    Box motion_bbox;               // all motion
+    Point end_position;            // machine position at the end (head 1)
+};
+
+// Accumulates statistics from the motion stream.
+class StatsSink final : public MotionSink {
+public:
+    explicit StatsSink(const Profile& profile) : profile_(profile) {}
+    void on_motion(const MotionRecord& m) override {
+        ++stats_.motions;
+        // A line's box is its end points; the exact box of a curve costs more: computed once, used twice.
+        if (m.curve == CurveKind::Line) {
+            stats_.motion_bbox.add(m.start);
+            stats_.motion_bbox.add(m.end);
+            if (m.kind == MotionKind::Cut) {
+                stats_.cut_bbox.add(m.start);
+                stats_.cut_bbox.add(m.end);
+            }
+        } else {
+            const Box box = bounding_box(m);
+            stats_.motion_bbox.add(box);
+            if (m.kind == MotionKind::Cut) stats_.cut_bbox.add(box);
+        }
+        switch (m.kind) {
+            case MotionKind::Cut: stats_.cut_length_mm += m.length_mm; break;
+            case MotionKind::Mark: stats_.mark_length_mm += m.length_mm; break;
+            case MotionKind::Rapid:
+                stats_.rapid_length_mm += m.length_mm;
+                stats_.travel_length_mm += m.length_mm;
+                break;
+            case MotionKind::Travel: stats_.travel_length_mm += m.length_mm; break;
+        }
+        if (m.feed_mm_min > 0) stats_.estimated_time_s += m.length_mm / m.feed_mm_min * 60.0;
+        if (m.head == 1) stats_.end_position = m.end;
+    }
+    void on_event(const MachineEvent& e) override {
+        if (e.kind == EventKind::Dwell) stats_.estimated_time_s += e.value;
+        const bool was_cutting = (tools_ & kCuttingTools) != 0;
+        const bool cutting = (e.tools_after & kCuttingTools) != 0;
+        if (!was_cutting && cutting) {
+            ++stats_.pierces;
+            stats_.estimated_time_s += profile_.pierce_time_s;
+        }
+        tools_ = e.tools_after;
+    }
+    [[nodiscard]] const Stats& stats() const { return stats_; }
+    Stats& stats() { return stats_; }
+private:
+    const Profile& profile_;
+    Stats stats_;
+    std::uint8_t tools_ = 0;  // tools on before the current event (pierce counting)
+};
+
+}  // namespace essi
