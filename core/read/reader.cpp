@@ -4,7 +4,6 @@
 // end of the program, and the % mark.
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cstring>
 #include <cstdio>
 #include <limits>
@@ -91,44 +90,76 @@ ByteCounts count_bytes(std::string_view s) {
     return n;
 }
 
-// Reads the run of decimal digits at p (p < stop): returns how many there are and, when at most
-// kMaxWordDigits, their value. Eight bytes at a time without a branch per digit (a tape's numbers have
-// every length from 0 to 6 digits, so a digit loop mispredicts its exit on almost every word).
-inline int read_digits(const unsigned char* p, const unsigned char* stop, std::uint32_t& value) {
-    if (stop - p >= 8) {
-        std::uint64_t bytes;
-        std::memcpy(&bytes, p, 8);  // little-endian: the first character is the lowest byte
-        constexpr std::uint64_t kHigh = 0xF0F0F0F0F0F0F0F0ULL, kThrees = 0x3030303030303030ULL;
-        // Zero bytes where the character is a digit: high nibble 3, and still 3 after adding 6.
-        const std::uint64_t t = ((bytes & kHigh) ^ kThrees) | (((bytes + 0x0606060606060606ULL) & kHigh) ^ kThrees);
-        constexpr std::uint64_t kLow7 = 0x7F7F7F7F7F7F7F7FULL;
-        const std::uint64_t non_digit = (((t & kLow7) + kLow7) | t) & ~kLow7;  // high bit of each non-digit
-        if (non_digit != 0) {
-            const int n = std::countr_zero(non_digit) / 8;
-            if (n == 0) {
-                value = 0;
-                return 0;
-            }
-            // Keep the n digits, move them to the top (leading zeros below), and combine pairwise.
-            std::uint64_t v = ((bytes & 0x0F0F0F0F0F0F0F0FULL) << (8 * (8 - n)));
-            v = (v * 2561) >> 8;
-            v = ((v & 0x00FF00FF00FF00FFULL) * 6553601) >> 16;
-            v = ((v & 0x0000FFFF0000FFFFULL) * 42949672960001ULL) >> 32;
-            value = static_cast<std::uint32_t>(v);
-            return n;
-        }
-        // Eight or more digits: the plain loop below.
-    }
-    const unsigned char* q = p;
+// What the fast path read of one line of digits and signs.
+struct PlainLine {
+    int lead_digits = 0;          // digits of the leading unsigned number (function code or head address)
+    std::uint32_t lead = 0;       // its value
+    int words = 0;                // signed words written
+    std::uint8_t sign_flags = 0;  // Block::kTcNegative / kTpNegative
+    const unsigned char* line_end = nullptr;  // the line's CR or LF, or the end of the bytes
+};
+
+// The bytes read_plain_line may look at from a line's start when it is not told where the bytes end: the
+// leading number and kMaxPlainWords words of at most kMaxWordDigits + 1 digits each are read before it gives up.
+constexpr std::uint32_t kPlainLineReach = (kMaxWordDigits + 2) * (kMaxPlainWords + 1);
+
+// Reads the unsigned number at p a digit at a time, at most kMaxWordDigits + 1 digits (more is an error the
+// general path reports): its value and the first byte after it. `bounded`: p may reach `stop`. Unrolled:
+// no loop counter, one test a digit.
+template <bool bounded>
+inline const unsigned char* read_number(const unsigned char* p, const unsigned char* stop, std::uint32_t& value) {
+    static_assert(kMaxWordDigits == 9, "read_number reads up to 10 digits");
     std::uint32_t v = 0;
-    while (q != stop) {
-        const unsigned d = static_cast<unsigned>(*q) - '0';
-        if (d > 9) break;
-        v = v * 10 + d;  // wraps for more than 9 digits; the caller rejects those
-        ++q;
-    }
+    int k = 0;
+#define ESSI_READ_DIGIT                                               \
+    if (bounded && p + k == stop) goto done;                          \
+    if (const unsigned d = static_cast<unsigned>(p[k]) - '0'; d <= 9) \
+        v = v * 10 + d, ++k;                                          \
+    else                                                              \
+        goto done;
+    ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT
+    ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT
+#undef ESSI_READ_DIGIT
+done:
     value = v;
-    return static_cast<int>(q - p);
+    return p + k;
+}
+
+// Reads a line made only of digits and signs: a leading number, then signed words, then a line end.
+// Returns false (the general path reads the line) when it is anything else: blanks, other characters, a
+// number of more than kMaxWordDigits digits (leading zeros included), more than kMaxPlainWords words, empty.
+// `bounded`: the line may reach `stop` (the end of the bytes); else kPlainLineReach bytes are readable.
+template <bool bounded>
+inline bool read_plain_line(const unsigned char* first, const unsigned char* stop, std::int32_t* words, PlainLine& out) {
+    const unsigned char* p = first;
+    std::uint32_t lead = 0;
+    if (*p != '+' && *p != '-') p = read_number<bounded>(p, stop, lead);  // motions start with a sign
+    const auto lead_digits = static_cast<int>(p - first);
+    if (lead_digits > kMaxWordDigits) return false;
+    int n = 0;
+    std::uint32_t negative = 0;  // bit k: word k has a '-' sign
+    while (!(bounded && p == stop)) {
+        const unsigned char sign = *p;
+        if (sign != '+' && sign != '-') break;
+        if (n == kMaxPlainWords) return false;
+        std::uint32_t v = 0;
+        const unsigned char* const after = read_number<bounded>(p + 1, stop, v);
+        if (after - (p + 1) > kMaxWordDigits) return false;
+        const std::uint32_t minus = sign == '-';
+        words[n] = static_cast<std::int32_t>((v ^ (0u - minus)) + minus);  // -v for '-', without a branch
+        negative |= minus << n;
+        ++n;
+        p = after;
+    }
+    if (p == first || (!(bounded && p == stop) && *p != '\n' && *p != '\r')) return false;  // not a plain line
+    out.lead_digits = lead_digits;
+    out.lead = lead;
+    out.words = n;
+    // Words 5 (TC) and 6 (TP) have their signs' flags at bits 4 and 5, where `negative` has them.
+    static_assert(Block::kTcNegative == 1u << 4 && Block::kTpNegative == 1u << 5);
+    out.sign_flags = static_cast<std::uint8_t>(negative & (Block::kTcNegative | Block::kTpNegative));
+    out.line_end = p;
+    return true;
 }
 
 std::string describe_byte(unsigned char c) {
@@ -363,34 +394,15 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
     const std::size_t blocks_before = blocks;
     while (pos < size && blocks < max_blocks) {
         const unsigned char* const first = base + pos;
-        const unsigned char* p = first;
-        std::uint32_t lead = 0;
-        const int lead_digits = (*p == '+' || *p == '-') ? 0 : read_digits(p, stop, lead);  // motions start with a sign
-        if (lead_digits > kMaxWordDigits) break;
-        p += lead_digits;
         std::int32_t* const words = t.words_.room(kMaxPlainWords);
-        int n = 0;
-        std::uint8_t sign_flags = 0;
-        while (p != stop) {
-            const unsigned char sign = *p;
-            if (sign != '+' && sign != '-') break;
-            if (n == kMaxPlainWords) break;
-            ++p;
-            std::uint32_t v = 0;
-            const int digits = p == stop ? 0 : read_digits(p, stop, v);
-            if (digits > kMaxWordDigits) break;  // leading zeros or a number too large: the general path
-            p += digits;
-            const auto value = static_cast<std::int32_t>(v);
-            if (sign == '-') {
-                words[n] = -value;
-                if (n == 4) sign_flags |= Block::kTcNegative;
-                if (n == 5) sign_flags |= Block::kTpNegative;
-            } else {
-                words[n] = value;
-            }
-            ++n;
-        }
-        if (p == first || (p != stop && *p != '\n' && *p != '\r')) break;  // not a plain line
+        PlainLine pl;
+        const bool plain = size - pos >= kPlainLineReach ? read_plain_line<false>(first, stop, words, pl)
+                                                         : read_plain_line<true>(first, stop, words, pl);
+        if (!plain) break;
+        const int n = pl.words;
+        const int lead_digits = pl.lead_digits;
+        const std::uint32_t lead = pl.lead;
+        const std::uint8_t sign_flags = pl.sign_flags;
         const auto offset = static_cast<std::uint32_t>(first - base);
         t.words_.commit(static_cast<std::size_t>(n));
         bool state_changed = false;
@@ -421,14 +433,15 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
             state_changed = ended_ || in_ignore_ || stopped_ || percent_line_ != 0;
         }
         // One line end: CR, LF, CR LF or LF CR.
-        pos = static_cast<std::uint32_t>(p - base);
+        pos = static_cast<std::uint32_t>(pl.line_end - base);
         if (pos >= size) {
             pos = size;
             break;
         }
         const unsigned char c = base[pos];
         ++pos;
-        if (pos < size && (base[pos] == '\n' || base[pos] == '\r') && base[pos] != c) ++pos;
+        // The other of CR and LF right after it belongs to the same line end (CR ^ LF: no branch).
+        if (pos < size) pos += (base[pos] ^ c) == ('\r' ^ '\n');
         ++line;
         if (state_changed) break;
     }

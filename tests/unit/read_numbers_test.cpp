@@ -1,8 +1,10 @@
-// Numbers of every length, at every position relative to the end of the tape: the reader parses digits
-// eight bytes at a time when it can and one at a time near the end, and both must agree with the text.
+// Numbers of every length, at every position relative to the end of the tape: the reader's fast path reads
+// a line without looking for the end of the bytes when enough of them follow, and with that check near the
+// end; both must agree with the text and with each other.
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "essi/read.hpp"
 
@@ -64,6 +66,61 @@ TEST(ReadNumbers, LeadingZerosKeepTheirValue) {
     ASSERT_EQ(t.block(0).kind, BlockKind::Motion) << (t.diagnostics().empty() ? "" : t.diagnostics()[0].message);
     EXPECT_EQ(t.words(0)[0], 12);
     EXPECT_EQ(t.words(0)[1], -7);
+}
+
+// The same line read far from the end of the bytes (the fast path's unchecked reading) and as the last line
+// (checked at every byte): the same block, words and diagnostics, and the values the text says.
+TEST(ReadNumbers, SameBlockFarFromAndAtTheEnd) {
+    const essi::Profile profile;
+    std::string filler;
+    while (filler.size() < 400) filler += "38\n";
+    struct Case {
+        const char* line;
+        std::vector<std::int32_t> words;  // expected; empty with `error` for a line that is an error
+        const char* error;                // expected diagnostic code name, or nullptr
+    };
+    const Case cases[] = {
+        {"+1-2", {1, -2}, nullptr},
+        {"+-", {0, 0}, nullptr},
+        {"-0+0", {0, 0}, nullptr},
+        {"+123456789-987654321", {123456789, -987654321}, nullptr},
+        {"+0000000001+2", {1, 2}, nullptr},  // 10 characters of digits, 1 significant: the general path
+        {"+1234567890+0", {}, "E104"},
+        {"+10+20+5+5+", {10, 20, 5, 5, 0}, nullptr},
+        {"+10+20+5+5-+", {10, 20, 5, 5, 0, 0}, nullptr},  // a parabola: TC -, TP +
+        {"+1+2+3+4+5+6+7+8+9", {}, "E105"},  // more words than the fast path takes: the general path
+        {"+1+2+3", {}, "E105"},
+        {"7", {}, nullptr},
+        {"39+1400", {1400}, nullptr},
+        {"1234", {}, "E103"},
+        {"+1 +2", {1, 2}, "W109"},
+        {"+1x", {}, "E101"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.line);
+        // The first line of a tape is read by the general path: the line under test comes second.
+        const std::string far = "6\n" + std::string(c.line) + "\n" + filler + "63\n";
+        const std::string at_end = "6\n" + std::string(c.line);
+        const essi::Tape a = essi::read_tape(far, profile), b = essi::read_tape(at_end, profile);
+        ASSERT_GE(a.size(), 2u);
+        ASSERT_EQ(b.size(), 2u);
+        EXPECT_EQ(a.block(1).kind, b.block(1).kind);
+        EXPECT_EQ(a.block(1).code, b.block(1).code);
+        EXPECT_EQ(a.block(1).packed & ~essi::Block::kProgramEnd, b.block(1).packed & ~essi::Block::kProgramEnd);
+        const auto wa = a.words(1), wb = b.words(1);
+        EXPECT_EQ(std::vector<std::int32_t>(wa.begin(), wa.end()), std::vector<std::int32_t>(wb.begin(), wb.end()));
+        if (!c.words.empty()) {
+            EXPECT_EQ(std::vector<std::int32_t>(wa.begin(), wa.end()), c.words);
+        }
+        const auto first_code = [](const essi::Tape& t) {
+            return t.diagnostics().empty() ? std::string() : essi::code_name(t.diagnostics()[0].code);
+        };
+        EXPECT_EQ(first_code(a), c.error ? c.error : "");
+        // At the end the tape also lacks its end code (W114) after any error of the line.
+        if (c.error) {
+            EXPECT_EQ(first_code(b), c.error);
+        }
+    }
 }
 
 }  // namespace
