@@ -20,6 +20,22 @@ int quadrant(Point d) {
 // Whether the direction d (in quadrant q) lies exactly on the axis where q starts.
 bool starts_quadrant(Point d, int q) { return (q & 1) ? d.x == 0 : d.y == 0; }
 
+// The axis extremes an arc of constant radius reaches, as bits: bit k for the direction at k * 90 degrees from
+// the centre (+x, +y, -x, -y). `a` and `e` are its start and end relative to the centre. Decided from the
+// quadrants of the two ends, without trigonometry.
+unsigned arc_axis_extremes(Point a, Point e, bool ccw) {
+    // A cw arc covers what the ccw arc from its end to its start covers. The extremes inside are the starts of
+    // the quadrants the arc enters.
+    if (!ccw) std::swap(a, e);
+    const int qa = quadrant(a), qe = quadrant(e);
+    int entered = (qe - qa) & 3;
+    // Both ends in one quadrant with the end not after the start: the arc goes all the way round.
+    if (entered == 0 && a.x * e.y - a.y * e.x <= 0) entered = 4;
+    unsigned extremes = starts_quadrant(a, qa) ? 1u << qa : 0u;  // the start on an axis is its extreme
+    for (int i = 1; i <= entered; ++i) extremes |= 1u << ((qa + i) & 3);
+    return extremes;
+}
+
 // Arc radius at a fraction of the sweep: from the start radius to the end radius, so that the arc ends
 // exactly on the programmed end point (the controller moves there; nothing drifts).
 double radius_at(const MotionRecord& m, double f) { return m.radius + (m.end_radius - m.radius) * f; }
@@ -72,32 +88,19 @@ double parabola_length(const ParabolaGeom& g) {
 }
 
 Box bounding_box(const MotionRecord& m) {
-    Box b;
-    b.add(m.start);
-    b.add(m.end);
+    Box b = Box::of(m.start, m.end);
     switch (m.curve) {
         case CurveKind::Line: break;
         case CurveKind::Arc: {
             // Axis extremes (at angles 0, 90, 180, 270 degrees) that lie inside the sweep.
             static constexpr double kAxisCos[4] = {1, 0, -1, 0};
             static constexpr double kAxisSin[4] = {0, 1, 0, -1};
-            if (m.radius == m.end_radius && std::abs(m.sweep) >= kTwoPi) {
-                // A full circle (common: holes) reaches all four extremes.
-                for (int k = 0; k < 4; ++k) b.add(Point{m.centre.x + m.radius * kAxisCos[k], m.centre.y + m.radius * kAxisSin[k]});
-                break;
-            }
             if (m.radius == m.end_radius) {
-                // Constant radius (the usual case): the extremes inside the sweep are the starts of the
-                // quadrants the arc enters, found from the quadrants of its ends (no trigonometry). A cw arc
-                // covers what the ccw arc from its end to its start covers.
-                Point a{m.start.x - m.centre.x, m.start.y - m.centre.y}, e{m.end.x - m.centre.x, m.end.y - m.centre.y};
-                if (m.sweep < 0) std::swap(a, e);
-                const int qa = quadrant(a), qe = quadrant(e);
-                int entered = (qe - qa) & 3;
-                // Both ends in one quadrant with the end not after the start: the arc goes all the way round.
-                if (entered == 0 && a.x * e.y - a.y * e.x <= 0) entered = 4;
-                unsigned extremes = starts_quadrant(a, qa) ? 1u << qa : 0u;  // the start on an axis is its extreme
-                for (int i = 1; i <= entered; ++i) extremes |= 1u << ((qa + i) & 3);
+                // Constant radius (the usual case): a full circle (holes, common) reaches all four extremes.
+                const unsigned extremes = std::abs(m.sweep) >= kTwoPi
+                                              ? 0xFu
+                                              : arc_axis_extremes({m.start.x - m.centre.x, m.start.y - m.centre.y},
+                                                                  {m.end.x - m.centre.x, m.end.y - m.centre.y}, m.sweep >= 0);
                 for (int k = 0; k < 4; ++k)
                     if (extremes & (1u << k)) b.add(Point{m.centre.x + m.radius * kAxisCos[k], m.centre.y + m.radius * kAxisSin[k]});
                 break;

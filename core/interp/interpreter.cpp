@@ -83,7 +83,10 @@ private:
     [[nodiscard]] std::uint8_t function_flags(int code) const { return code < kFunctionCodes ? function_flags_[code] : 0; }
     // `pre`: the block's MotionMeasure when it was worked out ahead (2 or 5 words), else null.
     void motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre);
+    bool zero_offset_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w);
+    void curve_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre);
     void emit(MotionRecord& m, const Block& b, std::size_t index);
+    void warn_rapid_while_cutting(const Block& b);
     void event(const Block& b, std::size_t index, EventKind kind, bool has_value = false, double value = 0);
     void warn(DiagCode code, const Block& b, std::string message) { diag(default_severity(code), code, b, std::move(message)); }
     void diag(Severity s, DiagCode code, const Block& b, std::string message) {
@@ -92,6 +95,10 @@ private:
     [[nodiscard]] Point to_mm(IPoint p) const {
         return {static_cast<double>(p.x) * profile_.unit_mm + profile_.setup_offset_x_mm,
                 static_cast<double>(p.y) * profile_.unit_mm + profile_.setup_offset_y_mm};
+    }
+    void set_mapping(const AxisMapping& mapping) {
+        mapping_ = mapping;
+        mirrors_ = mapping.mirrors();
     }
     [[nodiscard]] IPoint map(long long X, long long Y) const {
         return {mapping_.xx * X + mapping_.xy * Y, mapping_.yx * X + mapping_.yy * Y};
@@ -238,7 +245,14 @@ void Machine::finish() {
 }
 
 void Machine::event(const Block& b, std::size_t index, EventKind kind, bool has_value, double value) {
-    if (kind == EventKind::End) tools_before_end_ = tools_;
+    if (kind == EventKind::End) {
+        tools_before_end_ = tools_;
+        tools_ = 0;
+    }
+    if (stats_) {  // the statistics alone: what they count, without making the event
+        stats_->count_event(kind, value, tools_);
+        return;
+    }
     MachineEvent e;
     e.line = b.line;
     e.block = static_cast<std::uint32_t>(index);
@@ -246,9 +260,8 @@ void Machine::event(const Block& b, std::size_t index, EventKind kind, bool has_
     e.code = b.has_code() ? b.code : 0;
     e.has_value = has_value;
     e.value = value;
-    if (kind == EventKind::End) tools_ = 0;
     e.tools_after = tools_;
-    send(e);
+    sink_.on_event(e);
 }
 
 // The checks a function block must pass before it takes effect (rarely failed: kept out of the common path).
@@ -371,8 +384,7 @@ void Machine::function(const Block& b, std::size_t index, bool has_value, long l
         case 19: three_axis_ = true; break;
         case 20: three_axis_ = false; break;
         case 21: case 22: case 23: case 24: case 25: case 26: case 27: case 28:
-            mapping_ = axis_mapping(code);
-            mirrors_ = mapping_.mirrors();
+            set_mapping(axis_mapping(code));
             break;
         case 29: set_kerf(b, KerfSide::Left, has_value, value); break;
         case 30: set_kerf(b, KerfSide::Right, has_value, value); break;
@@ -433,7 +445,13 @@ void Machine::function(const Block& b, std::size_t index, bool has_value, long l
     event(b, index, kind, has_value, event_value);
 }
 
-void Machine::emit(MotionRecord& m, const Block& b, std::size_t index) {
+void Machine::warn_rapid_while_cutting(const Block& b) {
+    warn(DiagCode::W210_RapidWhileCutting, b,
+         "motion at rapid traverse (5) while " + tools_text(tools_ & kCuttingTools) +
+             " is on; expected 6 (rapid OFF) before cutting");
+}
+
+inline void Machine::emit(MotionRecord& m, const Block& b, std::size_t index) {
     m.line = b.line;
     m.block = static_cast<std::uint32_t>(index);
     m.tools = tools_;
@@ -441,11 +459,7 @@ void Machine::emit(MotionRecord& m, const Block& b, std::size_t index) {
     else if (tools_ & kMarkingTools) m.kind = MotionKind::Mark;
     else if (rapid_) m.kind = MotionKind::Rapid;
     else m.kind = MotionKind::Travel;
-    if (rapid_ && (tools_ & kCuttingTools)) {
-        warn(DiagCode::W210_RapidWhileCutting, b,
-             "motion at rapid traverse (5) while " + tools_text(tools_ & kCuttingTools) +
-                 " is on; expected 6 (rapid OFF) before cutting");
-    }
+    if (rapid_ && (tools_ & kCuttingTools)) [[unlikely]] warn_rapid_while_cutting(b);
     m.feed_mm_min = rapid_ ? profile_.rapid_mm_min : feed_mm_min_;
     m.kerf = kerf_;
     m.kerf_mm = kerf_offset_mm_;
@@ -475,30 +489,35 @@ void Machine::check_table(const MotionRecord& m, const Block& b) {
     inside_table_ = inside;
 }
 
+// The block after 83 (zero offset): its two words are the new origin. Returns true when the block was that
+// origin; false (after E207 when it is not a block of two words) when it is an ordinary motion.
+bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w) {
+    zero_offset_pending_ = false;
+    if (w.size() == 2 && !b.has_address()) {
+        const IPoint d = map(w[0], w[1]);
+        origin_.x += d.x;
+        origin_.y += d.y;
+        MachineEvent e;
+        e.line = b.line;
+        e.block = static_cast<std::uint32_t>(index);
+        e.kind = EventKind::ZeroOffset;
+        e.code = 83;
+        const Point o = to_mm(origin_);
+        e.x = o.x;
+        e.y = o.y;
+        e.tools_after = tools_;
+        send(e);
+        return true;
+    }
+    warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
+         "zero offset (83) must be followed by a block of two signed words (the new origin); line " +
+             std::to_string(b.line) + " has " + std::to_string(w.size()) + " words");
+    return false;
+}
+
 void Machine::motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre) {
     if (absolute_) pre = nullptr;  // worked out for an incremental start
-    if (zero_offset_pending_) {
-        zero_offset_pending_ = false;
-        if (w.size() == 2 && !b.has_address()) {
-            const IPoint d = map(w[0], w[1]);
-            origin_.x += d.x;
-            origin_.y += d.y;
-            MachineEvent e;
-            e.line = b.line;
-            e.block = static_cast<std::uint32_t>(index);
-            e.kind = EventKind::ZeroOffset;
-            e.code = 83;
-            const Point o = to_mm(origin_);
-            e.x = o.x;
-            e.y = o.y;
-            e.tools_after = tools_;
-            send(e);
-            return;
-        }
-        warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
-             "zero offset (83) must be followed by a block of two signed words (the new origin); line " +
-                 std::to_string(b.line) + " has " + std::to_string(w.size()) + " words");
-    }
+    if (zero_offset_pending_ && zero_offset_motion(b, index, w)) return;
     if (w.size() == 2 && !b.has_address()) {
         // The common case first: a straight line of head 1 (what the general path below does for it).
         IPoint& cur = pos_[0];
@@ -518,6 +537,11 @@ void Machine::motion(const Block& b, std::size_t index, std::span<const std::int
         emit(m, b, index);
         return;
     }
+    curve_motion(b, index, w, pre);
+}
+
+// Every other motion: head addresses, absolute mode, arcs, parabolas.
+void Machine::curve_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre) {
     int head = 1;
     if (b.has_address()) {
         if (b.code != 1 && b.code != 2) {

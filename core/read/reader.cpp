@@ -392,45 +392,65 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
     std::uint32_t line = line_;
     std::size_t blocks = chunk_blocks_;
     const std::size_t blocks_before = blocks;
+    bool started = program_started_;
+    // Blocks and words are written through local pointers (registers), checked against the room made and
+    // committed when the loop ends or the general path needs the arrays.
+    Block* bp = t.blocks_.room(1);
+    Block* b_room_end = t.blocks_.end_of_room();
+    std::int32_t* wp = t.words_.room(kMaxPlainWords);
+    std::int32_t* w_room_end = t.words_.end_of_room();
     while (pos < size && blocks < max_blocks) {
+        if (w_room_end - wp < kMaxPlainWords) [[unlikely]] {
+            t.words_.commit_to(wp);
+            wp = t.words_.room(kMaxPlainWords);
+            w_room_end = t.words_.end_of_room();
+        }
         const unsigned char* const first = base + pos;
-        std::int32_t* const words = t.words_.room(kMaxPlainWords);
         PlainLine pl;
-        const bool plain = size - pos >= kPlainLineReach ? read_plain_line<false>(first, stop, words, pl)
-                                                         : read_plain_line<true>(first, stop, words, pl);
+        const bool plain = size - pos >= kPlainLineReach ? read_plain_line<false>(first, stop, wp, pl)
+                                                         : read_plain_line<true>(first, stop, wp, pl);
         if (!plain) break;
         const int n = pl.words;
-        const int lead_digits = pl.lead_digits;
         const std::uint32_t lead = pl.lead;
-        const std::uint8_t sign_flags = pl.sign_flags;
         const auto offset = static_cast<std::uint32_t>(first - base);
-        t.words_.commit(static_cast<std::size_t>(n));
         bool state_changed = false;
         // The two common shapes go straight in; everything else is classified in full.
-        if (program_started_ && lead_digits == 0 && (n == 2 || n == 5 || n == 6)) {
-            if (blocks % Tape::kWordIndexStride == 0) t.word_index_.push_back(static_cast<std::uint32_t>(t.words_.size()) - n);
-            t.blocks_.push_back(Block{offset, line, Block::kNoCode, BlockKind::Motion, static_cast<std::uint8_t>(n | sign_flags)});
+        const bool motion = pl.lead_digits == 0 && (n == 2 || n == 5 || n == 6);
+        const bool function = n == 0 && pl.lead_digits <= kMaxFunctionDigits && lead != kIgnoreOnCode &&
+                              lead != kIgnoreOffCode && !end_function_[lead];
+        if (started && (motion || function)) {
+            if (bp == b_room_end) [[unlikely]] {
+                t.blocks_.commit_to(bp);
+                bp = t.blocks_.room(1);
+                b_room_end = t.blocks_.end_of_room();
+            }
+            if (blocks % Tape::kWordIndexStride == 0) t.word_index_.push_back(static_cast<std::uint32_t>(wp - t.words_.data()));
+            *bp++ = motion ? Block{offset, line, Block::kNoCode, BlockKind::Motion, static_cast<std::uint8_t>(n | pl.sign_flags)}
+                           : Block{offset, line, static_cast<std::uint16_t>(lead), BlockKind::Function, 0};
             ++blocks;
-        } else if (program_started_ && n == 0 && lead_digits <= kMaxFunctionDigits && lead != kIgnoreOnCode &&
-                   lead != kIgnoreOffCode && !end_function_[lead]) {
-            if (blocks % Tape::kWordIndexStride == 0) t.word_index_.push_back(static_cast<std::uint32_t>(t.words_.size()));
-            t.blocks_.push_back(Block{offset, line, static_cast<std::uint16_t>(lead), BlockKind::Function, 0});
-            ++blocks;
+            wp += n;
         } else {
             // Rare shapes (the first block, a function value, a head address, an end code, 3/4, wrong word
             // counts): classify() with the reader's state brought up to date; it may change that state.
+            t.blocks_.commit_to(bp);
+            t.words_.commit_to(wp + n);
             line_ = line;
             line_begin_ = offset;
             chunk_blocks_ = blocks;
             LineParse lp;
-            lp.lead_digits = lead_digits;
+            lp.lead_digits = pl.lead_digits;
             lp.lead_value = lead;
             lp.words = n;
-            lp.sign_flags = sign_flags;
+            lp.sign_flags = pl.sign_flags;
             lp.blank = false;
             classify(offset, lp, t.words_.size() - static_cast<std::size_t>(n));
             blocks = chunk_blocks_;
+            started = program_started_;
             state_changed = ended_ || in_ignore_ || stopped_ || percent_line_ != 0;
+            bp = t.blocks_.room(1);
+            b_room_end = t.blocks_.end_of_room();
+            wp = t.words_.room(kMaxPlainWords);
+            w_room_end = t.words_.end_of_room();
         }
         // One line end: CR, LF, CR LF or LF CR.
         pos = static_cast<std::uint32_t>(pl.line_end - base);
@@ -445,6 +465,8 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
         ++line;
         if (state_changed) break;
     }
+    t.blocks_.commit_to(bp);
+    t.words_.commit_to(wp);
     if (blocks != blocks_before) last_line_ = t.blocks_.back().line;
     line_ = line;
     chunk_blocks_ = blocks;

@@ -25,8 +25,18 @@ struct Box {
     }
     void add(const Box& b) {
         if (b.empty) return;
-        add(Point{b.min_x, b.min_y});
-        add(Point{b.max_x, b.max_y});
+        if (empty) {
+            *this = b;
+            return;
+        }
+        min_x = b.min_x < min_x ? b.min_x : min_x;
+        max_x = b.max_x > max_x ? b.max_x : max_x;
+        min_y = b.min_y < min_y ? b.min_y : min_y;
+        max_y = b.max_y > max_y ? b.max_y : max_y;
+    }
+    // The box of two points (a line's).
+    [[nodiscard]] static Box of(Point a, Point b) {
+        return {a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, false};
     }
 };
 

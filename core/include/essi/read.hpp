@@ -89,6 +89,9 @@ public:
         return data_ + size_;
     }
     void commit(std::size_t n) { size_ += n; }
+    // The values up to `end` (a pointer into the room made) are now part of the array.
+    void commit_to(const T* end) { size_ = static_cast<std::size_t>(end - data_); }
+    [[nodiscard]] T* end_of_room() { return data_ + cap_; }
     void shrink_to_fit() { if (cap_ != size_) reallocate(size_); }
 
 private:

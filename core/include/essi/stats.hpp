@@ -30,18 +30,9 @@ public:
     void on_motion(const MotionRecord& m) override {
         ++stats_.motions;
         // A line's box is its end points; the exact box of a curve costs more: computed once, used twice.
-        if (m.curve == CurveKind::Line) {
-            stats_.motion_bbox.add(m.start);
-            stats_.motion_bbox.add(m.end);
-            if (m.kind == MotionKind::Cut) {
-                stats_.cut_bbox.add(m.start);
-                stats_.cut_bbox.add(m.end);
-            }
-        } else {
-            const Box box = bounding_box(m);
-            stats_.motion_bbox.add(box);
-            if (m.kind == MotionKind::Cut) stats_.cut_bbox.add(box);
-        }
+        const Box box = m.curve == CurveKind::Line ? Box::of(m.start, m.end) : bounding_box(m);
+        stats_.motion_bbox.add(box);
+        if (m.kind == MotionKind::Cut) stats_.cut_bbox.add(box);
         switch (m.kind) {
             case MotionKind::Cut: stats_.cut_length_mm += m.length_mm; break;
             case MotionKind::Mark: stats_.mark_length_mm += m.length_mm; break;
@@ -54,15 +45,17 @@ public:
         if (m.feed_mm_min > 0) stats_.estimated_time_s += m.length_mm / m.feed_mm_min * 60.0;
         if (m.head == 1) stats_.end_position = m.end;
     }
-    void on_event(const MachineEvent& e) override {
-        if (e.kind == EventKind::Dwell) stats_.estimated_time_s += e.value;
+    void on_event(const MachineEvent& e) override { count_event(e.kind, e.value, e.tools_after); }
+    // What on_event counts of an event: the interpreter calls it directly, without making the event.
+    void count_event(EventKind kind, double value, std::uint8_t tools_after) {
+        if (kind == EventKind::Dwell) stats_.estimated_time_s += value;
         const bool was_cutting = (tools_ & kCuttingTools) != 0;
-        const bool cutting = (e.tools_after & kCuttingTools) != 0;
+        const bool cutting = (tools_after & kCuttingTools) != 0;
         if (!was_cutting && cutting) {
             ++stats_.pierces;
             stats_.estimated_time_s += profile_.pierce_time_s;
         }
-        tools_ = e.tools_after;
+        tools_ = tools_after;
     }
     [[nodiscard]] const Stats& stats() const { return stats_; }
     Stats& stats() { return stats_; }
