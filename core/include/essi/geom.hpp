@@ -34,6 +34,10 @@ struct Box {
         min_y = b.min_y < min_y ? b.min_y : min_y;
         max_y = b.max_y > max_y ? b.max_y : max_y;
     }
+    // Whether `o` lies inside this box (edges included); false when either is empty.
+    [[nodiscard]] bool contains(const Box& o) const {
+        return !empty && !o.empty && o.min_x >= min_x && o.max_x <= max_x && o.min_y >= min_y && o.max_y <= max_y;
+    }
     // The box of two points (a line's).
     [[nodiscard]] static Box of(Point a, Point b) {
         return {a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, false};

@@ -27,23 +27,20 @@ struct Stats {
 class StatsSink final : public MotionSink {
 public:
     explicit StatsSink(const Profile& profile) : profile_(profile) {}
+
     void on_motion(const MotionRecord& m) override {
-        ++stats_.motions;
-        // A line's box is its end points; the exact box of a curve costs more: computed once, used twice.
+        const bool cut = m.kind == MotionKind::Cut;
+        count_motion(m);
+        // A line's box is its end points; the exact box of a curve costs more: computed once, used for both.
+        // An arc inside the boxes so far (its ends and its whole circle are) changes neither: its exact box
+        // (the extremes inside the sweep) is needed only when it may reach further.
+        if (m.curve == CurveKind::Arc) {
+            const Box reach = arc_reach(m);
+            if (stats_.motion_bbox.contains(reach) && (!cut || stats_.cut_bbox.contains(reach))) return;
+        }
         const Box box = m.curve == CurveKind::Line ? Box::of(m.start, m.end) : bounding_box(m);
         stats_.motion_bbox.add(box);
-        if (m.kind == MotionKind::Cut) stats_.cut_bbox.add(box);
-        switch (m.kind) {
-            case MotionKind::Cut: stats_.cut_length_mm += m.length_mm; break;
-            case MotionKind::Mark: stats_.mark_length_mm += m.length_mm; break;
-            case MotionKind::Rapid:
-                stats_.rapid_length_mm += m.length_mm;
-                stats_.travel_length_mm += m.length_mm;
-                break;
-            case MotionKind::Travel: stats_.travel_length_mm += m.length_mm; break;
-        }
-        if (m.feed_mm_min > 0) stats_.estimated_time_s += m.length_mm / m.feed_mm_min * 60.0;
-        if (m.head == 1) stats_.end_position = m.end;
+        if (cut) stats_.cut_bbox.add(box);
     }
     void on_event(const MachineEvent& e) override { count_event(e.kind, e.value, e.tools_after); }
     // What on_event counts of an event: the interpreter calls it directly, without making the event.
@@ -57,9 +54,36 @@ public:
         }
         tools_ = tools_after;
     }
+
     [[nodiscard]] const Stats& stats() const { return stats_; }
     Stats& stats() { return stats_; }
+
 private:
+    // Everything of a motion but its box: the count, the length by kind, the time, the end position.
+    void count_motion(const MotionRecord& m) {
+        ++stats_.motions;
+        switch (m.kind) {
+            case MotionKind::Cut: stats_.cut_length_mm += m.length_mm; break;
+            case MotionKind::Mark: stats_.mark_length_mm += m.length_mm; break;
+            case MotionKind::Rapid:
+                stats_.rapid_length_mm += m.length_mm;
+                stats_.travel_length_mm += m.length_mm;
+                break;
+            case MotionKind::Travel: stats_.travel_length_mm += m.length_mm; break;
+        }
+        if (m.feed_mm_min > 0) stats_.estimated_time_s += m.length_mm / m.feed_mm_min * 60.0;
+        if (m.head == 1) stats_.end_position = m.end;
+    }
+    // A box that holds the whole arc: its ends, and its circle at the larger of its two radii widened a little,
+    // so that no rounding of the exact box's extremes (centre + radius) can pass it.
+    static Box arc_reach(const MotionRecord& m) {
+        constexpr double kRelativeSlack = 1e-9;
+        const double r = (m.radius > m.end_radius ? m.radius : m.end_radius) * (1 + kRelativeSlack);
+        Box reach = Box::of(m.start, m.end);
+        reach.add(Box{m.centre.x - r, m.centre.y - r, m.centre.x + r, m.centre.y + r, false});
+        return reach;
+    }
+
     const Profile& profile_;
     Stats stats_;
     std::uint8_t tools_ = 0;  // tools on before the current event (pierce counting)
