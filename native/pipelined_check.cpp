@@ -1,8 +1,7 @@
 #include "pipelined_check.hpp"
 
 #include <array>
-#include <condition_variable>
-#include <mutex>
+#include <atomic>
 #include <thread>
 
 namespace essi::native {
@@ -10,33 +9,27 @@ namespace essi::native {
 CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile) {
     if (bytes.size() < kPipelineMinBytes) return check_tape(bytes, profile);
 
-    // A ring of chunks: the reader fills slot k, the checker empties it, in order.
+    // A ring of chunks: the reader fills slot k, the checker empties it, in order. A slot changes hands through
+    // its atomic `full` flag (C++20 wait/notify: a short spin, then a futex), so a thread that is only a little
+    // ahead does not go to sleep and wait to be woken at every chunk.
     struct Slot {
         Tape chunk;
         std::vector<MotionMeasure> measures;  // worked out by the reading thread (lengths, radii, sweeps)
-        bool full = false;
-        bool last = false;  // the reader is done: this slot holds nothing
+        bool last = false;                    // the reader is done: this slot holds nothing
+        std::atomic<bool> full{false};
     };
     std::array<Slot, kPipelineChunks> slots;
-    std::mutex mutex;
-    std::condition_variable changed;
 
     std::thread reader_thread([&] {
         TapeReader reader(bytes, profile);
         for (std::size_t k = 0;; ++k) {
             Slot& slot = slots[k % slots.size()];
-            {
-                std::unique_lock lock(mutex);
-                changed.wait(lock, [&] { return !slot.full; });
-            }
+            slot.full.wait(true, std::memory_order_acquire);
             const bool more = reader.read_chunk(slot.chunk, kPipelineChunkBlocks);
             measure_motions(slot.chunk, slot.measures);  // the square roots and atan2s, off the interpreting thread
-            {
-                std::lock_guard lock(mutex);
-                slot.full = true;
-                slot.last = !more;
-            }
-            changed.notify_all();
+            slot.last = !more;
+            slot.full.store(true, std::memory_order_release);
+            slot.full.notify_one();
             if (!more) return;
         }
     });
@@ -44,17 +37,11 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile)
     TapeChecker checker(bytes, profile);
     for (std::size_t k = 0;; ++k) {
         Slot& slot = slots[k % slots.size()];
-        {
-            std::unique_lock lock(mutex);
-            changed.wait(lock, [&] { return slot.full; });
-        }
+        slot.full.wait(false, std::memory_order_acquire);
         const bool last = slot.last;
         if (!last) checker.check_chunk(slot.chunk, slot.measures);
-        {
-            std::lock_guard lock(mutex);
-            slot.full = false;
-        }
-        changed.notify_all();
+        slot.full.store(false, std::memory_order_release);
+        slot.full.notify_one();
         if (last) break;
     }
     reader_thread.join();

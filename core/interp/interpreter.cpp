@@ -75,18 +75,27 @@ public:
 
 private:
     void function(const Block& b, std::size_t index, bool has_value, long long value);
-    bool admit_function(const Block& b, bool& has_value, long long value);
+    [[gnu::noinline]] bool admit_function(const Block& b, bool& has_value, long long value);
     void set_kerf(const Block& b, KerfSide side, bool has_value, long long value);
-    void set_feed(const Block& b, bool has_value, long long value);
-    void zero_offset(const Block& b);
-    void return_to_zero(const Block& b, std::size_t index);
+    [[gnu::noinline]] void set_feed(const Block& b, bool has_value, long long value);
+    [[gnu::noinline]] void zero_offset(const Block& b);
+    [[gnu::noinline]] void return_to_zero(const Block& b, std::size_t index);
     [[nodiscard]] std::uint8_t function_flags(int code) const { return code < kFunctionCodes ? function_flags_[code] : 0; }
     // `pre`: the block's MotionMeasure when it was worked out ahead (2 or 5 words), else null.
     void motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre);
-    bool zero_offset_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w);
+    [[gnu::noinline]] bool zero_offset_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w);
     void curve_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre);
     void emit(MotionRecord& m, const Block& b, std::size_t index);
-    void warn_rapid_while_cutting(const Block& b);
+    // Diagnostics that build their message: out of line, so the hot functions stay small.
+    [[gnu::cold, gnu::noinline]] void warn_rapid_while_cutting(const Block& b);
+    [[gnu::cold, gnu::noinline]] void warn_macro_only(const Block& b);
+    [[gnu::cold, gnu::noinline]] void warn_bad_head(const Block& b);
+    [[gnu::cold, gnu::noinline]] void warn_address_outside_3_axis(const Block& b);
+    [[gnu::cold, gnu::noinline]] void warn_arc_zero_radius(const Block& b);
+    [[gnu::cold, gnu::noinline]] void warn_arc_off_circle(const Block& b, double r0_units, double r1_units);
+    [[gnu::cold, gnu::noinline]] void warn_kerf_radius(const Block& b, double radius_mm);
+    [[gnu::noinline]] void parabola_motion(MotionRecord& m, const Block& b, std::span<const std::int32_t> w, IPoint s_t,
+                                           IPoint e_t, IPoint base);
     void event(const Block& b, std::size_t index, EventKind kind, bool has_value = false, double value = 0);
     void warn(DiagCode code, const Block& b, std::string message) { diag(default_severity(code), code, b, std::move(message)); }
     void diag(Severity s, DiagCode code, const Block& b, std::string message) {
@@ -354,6 +363,12 @@ void Machine::return_to_zero(const Block& b, std::size_t index) {
     emit(m, b, index);
 }
 
+void Machine::warn_macro_only(const Block& b) {
+    warn(DiagCode::W213_MacroOnlyFunction, b,
+         "machine function " + std::to_string(b.code) + " (" + function_name(b.code) +
+             ") is defined only in Woyda macro files; it is ignored in a program");
+}
+
 void Machine::function(const Block& b, std::size_t index, bool has_value, long long value) {
     const int code = b.code;
     // One test for the common case: nothing pending, an assigned function with a value only if it takes one.
@@ -413,9 +428,7 @@ void Machine::function(const Block& b, std::size_t index, bool has_value, long l
             break;
         case 67:
         case 68:
-            warn(DiagCode::W213_MacroOnlyFunction, b,
-                 "machine function " + std::to_string(code) + " (" + function_name(code) +
-                     ") is defined only in Woyda macro files; it is ignored in a program");
+            warn_macro_only(b);
             return;
         case 81: absolute_ = false; break;
         case 82: absolute_ = true; break;
@@ -515,7 +528,8 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
     return false;
 }
 
-void Machine::motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre) {
+// Inlined into run(): half the blocks of a tape come here.
+[[gnu::always_inline]] inline void Machine::motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre) {
     if (absolute_) pre = nullptr;  // worked out for an incremental start
     if (zero_offset_pending_ && zero_offset_motion(b, index, w)) return;
     if (w.size() == 2 && !b.has_address()) {
@@ -545,15 +559,11 @@ void Machine::curve_motion(const Block& b, std::size_t index, std::span<const st
     int head = 1;
     if (b.has_address()) {
         if (b.code != 1 && b.code != 2) {
-            warn(DiagCode::E206_BadHeadAddress, b,
-                 "head address " + std::to_string(b.code) + " is not a head; expected 1 or 2 (ISO 6582 Annex B)");
+            warn_bad_head(b);
             return;
         }
         head = b.code;
-        if (!three_axis_) {
-            warn(DiagCode::W205_AddressOutside3Axis, b,
-                 "head address " + std::to_string(head) + " while the machine is in 2-axis mode; expected 19 (3-axis control) before addressed blocks");
-        }
+        if (!three_axis_) warn_address_outside_3_axis(b);
     }
     IPoint& cur = pos_[head - 1];
     // The block's frame: machine = base + M * tape. Incremental: base is the start, the start is tape (0,0).
@@ -591,17 +601,11 @@ void Machine::curve_motion(const Block& b, std::size_t index, std::span<const st
         const MotionMeasure arc = pre ? *pre : measure_arc(s_t, e_t, c_t, b.tc_positive());
         const double r0 = arc.r0, r1 = arc.r1;
         if (r0 == 0) {
-            warn(DiagCode::E302_ArcZeroRadius, b,
-                 "the arc's centre is its start point (radius 0); expected XC/YC to give the centre relative to the start");
+            warn_arc_zero_radius(b);
             m.curve = CurveKind::Line;
             m.length_mm = line_length_mm();
         } else {
-            if (std::abs(r1 - r0) > tol_units) {
-                warn(DiagCode::E301_ArcEndNotOnCircle, b,
-                     "the arc's end point is not on its circle: radius at the start " + mm_text(r0 * unit) +
-                         ", at the end " + mm_text(r1 * unit) + " (difference " + mm_text(std::abs(r1 - r0) * unit) +
-                         "); expected at most " + mm_text(tol_units * unit) + " (arc_tolerance)");
-            }
+            if (std::abs(r1 - r0) > tol_units) warn_arc_off_circle(b, r0, r1);
             m.curve = CurveKind::Arc;
             m.centre = to_mm(centre);
             m.ccw = b.tc_positive() != mirrors_;
@@ -612,80 +616,114 @@ void Machine::curve_motion(const Block& b, std::size_t index, std::span<const st
             if (kerf_ != KerfSide::Off) {
                 // Kerf side relative to the programmed contour: a ccw arc has its centre on the left.
                 const bool inside = (kerf_ == KerfSide::Left) == b.tc_positive();
-                if (inside && m.radius - kerf_offset_mm_ <= 0) {
-                    warn(DiagCode::E306_KerfRadiusNegative, b,
-                         "with the kerf offset of " + mm_text(kerf_offset_mm_) + " this arc of radius " +
-                             mm_text(m.radius) + " would have no radius left; expected a radius above the kerf offset");
-                }
+                if (inside && m.radius - kerf_offset_mm_ <= 0) warn_kerf_radius(b, m.radius);
             }
         }
-    } else {  // 6 words: parabola (§6), worked out in the tape frame and mapped like every point
-        const double XP = w[2], YP = w[3];
-        const bool axis_parallel_y = b.tp_positive();
-        const double p_signed = axis_parallel_y ? YP : XP;
-        const double sx = static_cast<double>(s_t.x), sy = static_cast<double>(s_t.y);
-        const double ex = static_cast<double>(e_t.x), ey = static_cast<double>(e_t.y);
-        if (p_signed == 0) {
-            warn(DiagCode::E304_ParabolaZeroCurvature, b,
-                 std::string("the parabola's radius of curvature at the vertex (") + (axis_parallel_y ? "YP" : "XP") +
-                     ") is 0; expected a non-zero radius");
-            m.curve = CurveKind::Line;
-            m.length_mm = line_length_mm();
-        } else {
-            ParabolaGeom g;  // tape frame, units
-            double residual = 0;
-            if (axis_parallel_y) {
-                const double xa = (absolute_ ? 0 : sx) + XP;
-                const double yv = sy - (sx - xa) * (sx - xa) / (2 * YP);
-                g.vertex = {xa, yv};
-                g.u = {1, 0};
-                g.n = {0, YP > 0 ? 1.0 : -1.0};
-                g.t0 = sx - xa;
-                g.t1 = ex - xa;
-                residual = ey - (yv + g.t1 * g.t1 / (2 * YP));
-            } else {
-                const double ya = (absolute_ ? 0 : sy) + YP;
-                const double xv = sx - (sy - ya) * (sy - ya) / (2 * XP);
-                g.vertex = {xv, ya};
-                g.u = {0, 1};
-                g.n = {XP > 0 ? 1.0 : -1.0, 0};
-                g.t0 = sy - ya;
-                g.t1 = ey - ya;
-                residual = ex - (xv + g.t1 * g.t1 / (2 * XP));
-            }
-            g.p = std::abs(p_signed);
-            if (std::abs(residual) > tol_units) {
-                warn(DiagCode::E303_ParabolaEndNotOnCurve, b,
-                     "the parabola's end point is " + mm_text(std::abs(residual) * unit) +
-                         " off its curve (measured along the axis); expected at most " + mm_text(tol_units * unit) +
-                         " (arc_tolerance)");
-            }
-            if (g.t1 != g.t0) {
-                const double turn = (g.u.x * g.n.y - g.u.y * g.n.x) * (g.t1 - g.t0);
-                const bool ccw = turn > 0;
-                if (ccw != b.tc_positive()) {
-                    warn(DiagCode::W305_ParabolaDirection, b,
-                         std::string("TC says ") + (b.tc_positive() ? "counter-clockwise (+)" : "clockwise (-)") +
-                             " but this parabola piece turns " + (ccw ? "counter-clockwise" : "clockwise") +
-                             "; expected TC " + (ccw ? "+" : "-"));
-                }
-            }
-            // Map to machine millimetres.
-            const Point bm = to_mm(base);
-            const Point v = mapping_.apply(g.vertex.x, g.vertex.y);
-            m.parabola.vertex = {bm.x + v.x * unit, bm.y + v.y * unit};
-            m.parabola.u = mapping_.apply(g.u.x, g.u.y);
-            m.parabola.n = mapping_.apply(g.n.x, g.n.y);
-            m.parabola.p = g.p * unit;
-            m.parabola.t0 = g.t0 * unit;
-            m.parabola.t1 = g.t1 * unit;
-            m.curve = CurveKind::Parabola;
-            m.ccw = b.tc_positive() != mirrors_;
-            m.length_mm = parabola_length(m.parabola);
-        }
+    } else {  // 6 words: parabola (§6)
+        parabola_motion(m, b, w, s_t, e_t, base);
     }
     cur = end;
     emit(m, b, index);
+}
+
+// A parabola block (6 words) into `m`: worked out in the tape frame (start s_t, end e_t) and mapped like every
+// point. Rare: out of the arcs' way.
+void Machine::parabola_motion(MotionRecord& m, const Block& b, std::span<const std::int32_t> w, IPoint s_t, IPoint e_t,
+                              IPoint base) {
+    const double unit = profile_.unit_mm;
+    const double tol_units = profile_.arc_tolerance_units;
+    const double XP = w[2], YP = w[3];
+    const bool axis_parallel_y = b.tp_positive();
+    const double p_signed = axis_parallel_y ? YP : XP;
+    const double sx = static_cast<double>(s_t.x), sy = static_cast<double>(s_t.y);
+    const double ex = static_cast<double>(e_t.x), ey = static_cast<double>(e_t.y);
+    if (p_signed == 0) {
+        warn(DiagCode::E304_ParabolaZeroCurvature, b,
+             std::string("the parabola's radius of curvature at the vertex (") + (axis_parallel_y ? "YP" : "XP") +
+                 ") is 0; expected a non-zero radius");
+        m.curve = CurveKind::Line;
+        m.length_mm = units_length(e_t.x - s_t.x, e_t.y - s_t.y) * unit;  // the straight length (the mapping keeps lengths)
+    } else {
+        ParabolaGeom g;  // tape frame, units
+        double residual = 0;
+        if (axis_parallel_y) {
+            const double xa = (absolute_ ? 0 : sx) + XP;
+            const double yv = sy - (sx - xa) * (sx - xa) / (2 * YP);
+            g.vertex = {xa, yv};
+            g.u = {1, 0};
+            g.n = {0, YP > 0 ? 1.0 : -1.0};
+            g.t0 = sx - xa;
+            g.t1 = ex - xa;
+            residual = ey - (yv + g.t1 * g.t1 / (2 * YP));
+        } else {
+            const double ya = (absolute_ ? 0 : sy) + YP;
+            const double xv = sx - (sy - ya) * (sy - ya) / (2 * XP);
+            g.vertex = {xv, ya};
+            g.u = {0, 1};
+            g.n = {XP > 0 ? 1.0 : -1.0, 0};
+            g.t0 = sy - ya;
+            g.t1 = ey - ya;
+            residual = ex - (xv + g.t1 * g.t1 / (2 * XP));
+        }
+        g.p = std::abs(p_signed);
+        if (std::abs(residual) > tol_units) {
+            warn(DiagCode::E303_ParabolaEndNotOnCurve, b,
+                 "the parabola's end point is " + mm_text(std::abs(residual) * unit) +
+                     " off its curve (measured along the axis); expected at most " + mm_text(tol_units * unit) +
+                     " (arc_tolerance)");
+        }
+        if (g.t1 != g.t0) {
+            const double turn = (g.u.x * g.n.y - g.u.y * g.n.x) * (g.t1 - g.t0);
+            const bool ccw = turn > 0;
+            if (ccw != b.tc_positive()) {
+                warn(DiagCode::W305_ParabolaDirection, b,
+                     std::string("TC says ") + (b.tc_positive() ? "counter-clockwise (+)" : "clockwise (-)") +
+                         " but this parabola piece turns " + (ccw ? "counter-clockwise" : "clockwise") +
+                         "; expected TC " + (ccw ? "+" : "-"));
+            }
+        }
+        // Map to machine millimetres.
+        const Point bm = to_mm(base);
+        const Point v = mapping_.apply(g.vertex.x, g.vertex.y);
+        m.parabola.vertex = {bm.x + v.x * unit, bm.y + v.y * unit};
+        m.parabola.u = mapping_.apply(g.u.x, g.u.y);
+        m.parabola.n = mapping_.apply(g.n.x, g.n.y);
+        m.parabola.p = g.p * unit;
+        m.parabola.t0 = g.t0 * unit;
+        m.parabola.t1 = g.t1 * unit;
+        m.curve = CurveKind::Parabola;
+        m.ccw = b.tc_positive() != mirrors_;
+        m.length_mm = parabola_length(m.parabola);
+    }
+}
+
+void Machine::warn_bad_head(const Block& b) {
+    warn(DiagCode::E206_BadHeadAddress, b,
+         "head address " + std::to_string(b.code) + " is not a head; expected 1 or 2 (ISO 6582 Annex B)");
+}
+
+void Machine::warn_address_outside_3_axis(const Block& b) {
+    warn(DiagCode::W205_AddressOutside3Axis, b,
+         "head address " + std::to_string(b.code) + " while the machine is in 2-axis mode; expected 19 (3-axis control) before addressed blocks");
+}
+
+void Machine::warn_arc_zero_radius(const Block& b) {
+    warn(DiagCode::E302_ArcZeroRadius, b,
+         "the arc's centre is its start point (radius 0); expected XC/YC to give the centre relative to the start");
+}
+
+void Machine::warn_arc_off_circle(const Block& b, double r0_units, double r1_units) {
+    const double unit = profile_.unit_mm;
+    warn(DiagCode::E301_ArcEndNotOnCircle, b,
+         "the arc's end point is not on its circle: radius at the start " + mm_text(r0_units * unit) + ", at the end " +
+             mm_text(r1_units * unit) + " (difference " + mm_text(std::abs(r1_units - r0_units) * unit) +
+             "); expected at most " + mm_text(profile_.arc_tolerance_units * unit) + " (arc_tolerance)");
+}
+
+void Machine::warn_kerf_radius(const Block& b, double radius_mm) {
+    warn(DiagCode::E306_KerfRadiusNegative, b,
+         "with the kerf offset of " + mm_text(kerf_offset_mm_) + " this arc of radius " + mm_text(radius_mm) +
+             " would have no radius left; expected a radius above the kerf offset");
 }
 
 }  // namespace detail
