@@ -50,9 +50,11 @@ async function memory(browser, page) {
   const gpu = procs.filter((p) => p.type === 'GPU' || p.type === 'gpu').reduce((a, p) => a + rssKb(p.id), 0) * 1024;
   const page_ = await page.evaluate(() => ({
     wasm: Module.HEAPU8.length,
+    malloc: JSON.parse(Module.UTF8ToString(Module._essi_heap())),
     js: performance.memory ? performance.memory.usedJSHeapSize : 0,
   }));
-  return { renderer_rss: renderer, gpu_rss: gpu, wasm_heap: page_.wasm, js_heap: page_.js };
+  return { renderer_rss: renderer, gpu_rss: gpu, wasm_heap: page_.wasm, malloc_peak: page_.malloc.peak,
+           malloc_footprint: page_.malloc.footprint, js_heap: page_.js };
 }
 
 async function measureLoad(browser, baseUrl, tape) {
@@ -151,7 +153,9 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
         drop_to_first_frame_ms: Math.round(r.first_frame_ms), load_seconds_viewer: s.load_seconds,
         frames_while_loading: r.frames, longest_frame_gap_ms: Math.round(r.max_gap_ms),
         core_bytes_per_block: +perBlock.toFixed(1), budget_bytes: budget,
-        viewer_bytes: s.memory_bytes, gpu_bytes: s.gpu_bytes, lod: s.lod, wasm_heap: r.after.wasm_heap, js_heap: r.after.js_heap,
+        viewer_bytes: s.memory_bytes, viewer_parts: s.memory_parts, gpu_bytes: s.gpu_bytes, lod: s.lod,
+        wasm_heap: r.after.wasm_heap, wasm_heap_empty_page: r.before.wasm_heap,
+        malloc_peak: r.after.malloc_peak, malloc_empty_page: r.before.malloc_footprint, js_heap: r.after.js_heap,
         renderer_rss: r.after.renderer_rss, renderer_rss_before: r.before.renderer_rss, gpu_rss: r.after.gpu_rss,
       };
       console.log(`   motions ${s.motions}, segments ${s.segments}, blocks ${s.blocks_read}`);
@@ -159,6 +163,8 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
       console.log(`   memory: viewer ${mb(s.memory_bytes)} (${(s.memory_bytes / s.motions).toFixed(0)} B/motion), textures ${mb(s.gpu_bytes)}, wasm heap ${mb(r.after.wasm_heap)}, ` +
                   `JS heap ${mb(r.after.js_heap)}, renderer RSS ${mb(r.after.renderer_rss)} (empty page ${mb(r.before.renderer_rss)}), ` +
                   `GPU process RSS ${mb(r.after.gpu_rss)}; budget 2 x ${mb(tape.bytes)} + ${perBlock.toFixed(1)} B/block x ${s.blocks_read} = ${mb(budget)}`);
+      console.log(`   against the budget: viewer ${(s.memory_bytes / budget).toFixed(2)}, WASM heap ${(r.after.wasm_heap / budget).toFixed(2)} ` +
+                  `(malloc peak ${mb(r.after.malloc_peak)}, empty page ${mb(r.before.wasm_heap)}); parts ${JSON.stringify(s.memory_parts)}`);
       if (Math.abs(s.motions - 1e6) / 1e6 < 0.5 || motionTargets.length === 1) {
         const pan = await measurePan(r.page);
         row.pan = pan;
