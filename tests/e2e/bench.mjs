@@ -106,6 +106,10 @@ async function measurePan(page) {
   await page.mouse.move(cx, cy);
   await page.mouse.down();
   await page.evaluate(() => {
+    // The main thread's share of each frame: Emscripten's main loop calls these around the viewer's frame.
+    window.__cpu = [];
+    Module.preMainLoop = () => { window.__cpuT0 = performance.now(); };
+    Module.postMainLoop = () => { window.__cpu.push(performance.now() - window.__cpuT0); };
     window.__pan = [];
     window.__panOn = true;
     const tick = (t) => { window.__pan.push(t); if (window.__panOn) requestAnimationFrame(tick); };
@@ -116,12 +120,14 @@ async function measurePan(page) {
     await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
   }
   await page.mouse.up();
-  const t = await page.evaluate(() => { window.__panOn = false; return window.__pan; });
+  const t = await page.evaluate(() => { window.__panOn = false; Module.preMainLoop = Module.postMainLoop = null; return window.__pan; });
+  const cpu = (await page.evaluate(() => window.__cpu)).sort((a, b) => a - b);
   const gaps = t.slice(1).map((x, i) => x - t[i]).sort((a, b) => a - b);
   const q = (p) => gaps[Math.min(gaps.length - 1, Math.floor(p * gaps.length))];
   const st1 = await page.evaluate(() => essikit.state());
   const moved = st1.view;
   return { frames: gaps.length, median_ms: q(0.5), p95_ms: q(0.95), mean_ms: gaps.reduce((a, b) => a + b, 0) / gaps.length,
+           drag_ms_per_move: (t[t.length - 1] - t[0]) / 12, main_thread_median_ms: cpu[Math.floor(cpu.length / 2)],
            moved_mm: Math.hypot(moved.x_mm - v.x_mm, moved.y_mm - v.y_mm),
            full_redraws: st1.render.full_redraws - st0.render.full_redraws, lod: st1.lod.drawn };
 }
@@ -169,7 +175,7 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
         const pan = await measurePan(r.page);
         row.pan = pan;
         if (pan.at_rest) console.log(`   frame time at rest ${pan.mean_ms.toFixed(0)} ms (max ${pan.p95_ms.toFixed(0)} ms): over a second, no drag measured (a pan frame costs at least this)`);
-        else console.log(`   panning: median ${pan.median_ms.toFixed(1)} ms, p95 ${pan.p95_ms.toFixed(1)} ms, mean ${pan.mean_ms.toFixed(1)} ms a frame (${pan.frames} frames, moved ${pan.moved_mm.toFixed(0)} mm, ${pan.full_redraws} full redraws, level of detail ${pan.lod ? 'on' : 'off'})`);
+        else console.log(`   panning: median ${pan.median_ms.toFixed(1)} ms, p95 ${pan.p95_ms.toFixed(1)} ms, mean ${pan.mean_ms.toFixed(1)} ms a frame, ${pan.drag_ms_per_move.toFixed(0)} ms a mouse move, main thread ${pan.main_thread_median_ms.toFixed(1)} ms a frame (${pan.frames} frames, moved ${pan.moved_mm.toFixed(0)} mm, ${pan.full_redraws} full redraws, level of detail ${pan.lod ? 'on' : 'off'})`);
         // The same drag zoomed in (4x the fitted zoom): the segments are drawn, not the level of detail.
         const v = (await r.page.evaluate(() => essikit.state())).view;
         await r.page.evaluate(([x, y, z]) => essikit.setView(x, y, z), [v.x_mm, v.y_mm, v.zoom * 4]);

@@ -110,6 +110,7 @@ App* App::instance() { return g_app; }
 bool App::init_graphics() {
     graphics_ok_ = renderer_.init();
     ImGuiIO& io = ImGui::GetIO();
+    if (!io.Fonts->IsBuilt()) io.Fonts->Build();  // (renderer_.init() makes the atlas unless the GPU refused it)
     io.IniFilename = nullptr;  // no imgui.ini: the layout is fixed
     ImGui::StyleColorsDark();
     ImGuiStyle& st = ImGui::GetStyle();
@@ -310,6 +311,12 @@ void App::frame() {
         renderer_.draw(view_, fb_w, fb_h, o, show_grid_ ? grid_step(view_.zoom) : 1e30,
                        doc_ ? doc_->origin : Point{}, first_build_ ? nullptr : &gpu_);
     }
+}
+
+void App::render_ui() {
+    int fb_w = 0, fb_h = 0;
+    glfwGetFramebufferSize(window_, &fb_w, &fb_h);
+    if (graphics_ok_) renderer_.draw_ui(*ImGui::GetDrawData(), fb_w, fb_h);
 }
 
 int App::layer_mask() const {
