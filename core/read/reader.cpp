@@ -769,6 +769,12 @@ TapeReader::TapeReader(std::string_view bytes, const Profile& profile) : impl_(s
 TapeReader::~TapeReader() = default;
 TapeReader::TapeReader(TapeReader&&) noexcept = default;
 TapeReader& TapeReader::operator=(TapeReader&&) noexcept = default;
+TapeReader::TapeReader(const TapeReader& other) : impl_(std::make_unique<Reader>(*other.impl_)) {}
+TapeReader& TapeReader::operator=(const TapeReader& other) {
+    if (this != &other) impl_ = std::make_unique<Reader>(*other.impl_);
+    return *this;
+}
+std::size_t TapeReader::state_bytes() { return sizeof(TapeReader) + sizeof(Reader); }
 
 bool TapeReader::read_chunk(Tape& chunk, std::size_t max_blocks) { return impl_->read_chunk(chunk, max_blocks); }
 

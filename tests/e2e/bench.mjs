@@ -50,9 +50,11 @@ async function memory(browser, page) {
   const gpu = procs.filter((p) => p.type === 'GPU' || p.type === 'gpu').reduce((a, p) => a + rssKb(p.id), 0) * 1024;
   const page_ = await page.evaluate(() => ({
     wasm: Module.HEAPU8.length,
+    malloc: JSON.parse(Module.UTF8ToString(Module._essi_heap())),
     js: performance.memory ? performance.memory.usedJSHeapSize : 0,
   }));
-  return { renderer_rss: renderer, gpu_rss: gpu, wasm_heap: page_.wasm, js_heap: page_.js };
+  return { renderer_rss: renderer, gpu_rss: gpu, wasm_heap: page_.wasm, malloc_peak: page_.malloc.peak,
+           malloc_footprint: page_.malloc.footprint, js_heap: page_.js };
 }
 
 async function measureLoad(browser, baseUrl, tape) {
@@ -104,6 +106,10 @@ async function measurePan(page) {
   await page.mouse.move(cx, cy);
   await page.mouse.down();
   await page.evaluate(() => {
+    // The main thread's share of each frame: Emscripten's main loop calls these around the viewer's frame.
+    window.__cpu = [];
+    Module.preMainLoop = () => { window.__cpuT0 = performance.now(); };
+    Module.postMainLoop = () => { window.__cpu.push(performance.now() - window.__cpuT0); };
     window.__pan = [];
     window.__panOn = true;
     const tick = (t) => { window.__pan.push(t); if (window.__panOn) requestAnimationFrame(tick); };
@@ -114,12 +120,14 @@ async function measurePan(page) {
     await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
   }
   await page.mouse.up();
-  const t = await page.evaluate(() => { window.__panOn = false; return window.__pan; });
+  const t = await page.evaluate(() => { window.__panOn = false; Module.preMainLoop = Module.postMainLoop = null; return window.__pan; });
+  const cpu = (await page.evaluate(() => window.__cpu)).sort((a, b) => a - b);
   const gaps = t.slice(1).map((x, i) => x - t[i]).sort((a, b) => a - b);
   const q = (p) => gaps[Math.min(gaps.length - 1, Math.floor(p * gaps.length))];
   const st1 = await page.evaluate(() => essikit.state());
   const moved = st1.view;
   return { frames: gaps.length, median_ms: q(0.5), p95_ms: q(0.95), mean_ms: gaps.reduce((a, b) => a + b, 0) / gaps.length,
+           drag_ms_per_move: (t[t.length - 1] - t[0]) / 12, main_thread_median_ms: cpu[Math.floor(cpu.length / 2)],
            moved_mm: Math.hypot(moved.x_mm - v.x_mm, moved.y_mm - v.y_mm),
            full_redraws: st1.render.full_redraws - st0.render.full_redraws, lod: st1.lod.drawn };
 }
@@ -151,7 +159,9 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
         drop_to_first_frame_ms: Math.round(r.first_frame_ms), load_seconds_viewer: s.load_seconds,
         frames_while_loading: r.frames, longest_frame_gap_ms: Math.round(r.max_gap_ms),
         core_bytes_per_block: +perBlock.toFixed(1), budget_bytes: budget,
-        viewer_bytes: s.memory_bytes, gpu_bytes: s.gpu_bytes, lod: s.lod, wasm_heap: r.after.wasm_heap, js_heap: r.after.js_heap,
+        viewer_bytes: s.memory_bytes, viewer_parts: s.memory_parts, gpu_bytes: s.gpu_bytes, lod: s.lod,
+        wasm_heap: r.after.wasm_heap, wasm_heap_empty_page: r.before.wasm_heap,
+        malloc_peak: r.after.malloc_peak, malloc_empty_page: r.before.malloc_footprint, js_heap: r.after.js_heap,
         renderer_rss: r.after.renderer_rss, renderer_rss_before: r.before.renderer_rss, gpu_rss: r.after.gpu_rss,
       };
       console.log(`   motions ${s.motions}, segments ${s.segments}, blocks ${s.blocks_read}`);
@@ -159,11 +169,13 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
       console.log(`   memory: viewer ${mb(s.memory_bytes)} (${(s.memory_bytes / s.motions).toFixed(0)} B/motion), textures ${mb(s.gpu_bytes)}, wasm heap ${mb(r.after.wasm_heap)}, ` +
                   `JS heap ${mb(r.after.js_heap)}, renderer RSS ${mb(r.after.renderer_rss)} (empty page ${mb(r.before.renderer_rss)}), ` +
                   `GPU process RSS ${mb(r.after.gpu_rss)}; budget 2 x ${mb(tape.bytes)} + ${perBlock.toFixed(1)} B/block x ${s.blocks_read} = ${mb(budget)}`);
+      console.log(`   against the budget: viewer ${(s.memory_bytes / budget).toFixed(2)}, WASM heap ${(r.after.wasm_heap / budget).toFixed(2)} ` +
+                  `(malloc peak ${mb(r.after.malloc_peak)}, empty page ${mb(r.before.wasm_heap)}); parts ${JSON.stringify(s.memory_parts)}`);
       if (Math.abs(s.motions - 1e6) / 1e6 < 0.5 || motionTargets.length === 1) {
         const pan = await measurePan(r.page);
         row.pan = pan;
         if (pan.at_rest) console.log(`   frame time at rest ${pan.mean_ms.toFixed(0)} ms (max ${pan.p95_ms.toFixed(0)} ms): over a second, no drag measured (a pan frame costs at least this)`);
-        else console.log(`   panning: median ${pan.median_ms.toFixed(1)} ms, p95 ${pan.p95_ms.toFixed(1)} ms, mean ${pan.mean_ms.toFixed(1)} ms a frame (${pan.frames} frames, moved ${pan.moved_mm.toFixed(0)} mm, ${pan.full_redraws} full redraws, level of detail ${pan.lod ? 'on' : 'off'})`);
+        else console.log(`   panning: median ${pan.median_ms.toFixed(1)} ms, p95 ${pan.p95_ms.toFixed(1)} ms, mean ${pan.mean_ms.toFixed(1)} ms a frame, ${pan.drag_ms_per_move.toFixed(0)} ms a mouse move, main thread ${pan.main_thread_median_ms.toFixed(1)} ms a frame (${pan.frames} frames, moved ${pan.moved_mm.toFixed(0)} mm, ${pan.full_redraws} full redraws, level of detail ${pan.lod ? 'on' : 'off'})`);
         // The same drag zoomed in (4x the fitted zoom): the segments are drawn, not the level of detail.
         const v = (await r.page.evaluate(() => essikit.state())).view;
         await r.page.evaluate(([x, y, z]) => essikit.setView(x, y, z), [v.x_mm, v.y_mm, v.zoom * 4]);

@@ -531,6 +531,34 @@ test('a 50 MB tape loads with a moving progress bar while the page keeps drawing
   await page.close();
 });
 
+// The budget of issue 3: the page's memory for a tape stays below 2 x its bytes + what the core's Tape of it holds
+// (tape_memory_bytes: 12 bytes a block, 4 a word). Checked on the viewer's own count and on the WASM heap: the
+// peak of malloc's footprint (what HEAPU8 must hold; it never shrinks) and HEAPU8's growth. A 1 MB tape (71 000
+// motions: below the level of detail's threshold, whose raster is a fixed few MB).
+test('the memory of a loaded tape stays below 2 x its bytes + the core\'s bytes per block', async () => {
+  const name = generatedTape(1);
+  const bytes = fs.statSync(path.join(genDir, name)).size;
+  const page = await newPage();
+  const heap = () => page.evaluate(() => ({ length: Module.HEAPU8.length, ...JSON.parse(Module.UTF8ToString(Module._essi_heap())) }));
+  const empty = await heap();
+  await dropFromUrl(page, '/gen/' + name, name);
+  await page.waitForFunction((n) => { const s = essikit.state(); return s.name === n && s.status === 'ready'; }, name,
+                             { timeout: 300000, polling: 200 });
+  const loaded = await heap();
+  const state = await page.evaluate(() => essikit.state());
+  const budget = 2 * bytes + state.tape_memory_bytes;
+  const perBlock = state.tape_memory_bytes / state.blocks_read;
+  console.log(`memory of ${name} (${bytes} bytes, ${state.motions} motions, ${state.blocks_read} blocks): viewer ` +
+              `${state.memory_bytes} (${(state.memory_bytes / state.motions).toFixed(1)} B/motion), heap peak ` +
+              `${loaded.peak - empty.footprint} over the empty page, HEAPU8 ${empty.length} -> ${loaded.length}; ` +
+              `budget ${budget} (${perBlock.toFixed(1)} B/block)`);
+  assert.ok(perBlock > 12 && perBlock < 24, `the core's bytes per block: ${perBlock}`);
+  assert.ok(state.memory_bytes < budget, `viewer memory ${state.memory_bytes} over the budget ${budget}: ${JSON.stringify(state.memory_parts)}`);
+  assert.ok(loaded.peak - empty.footprint < budget, `WASM heap peak ${loaded.peak - empty.footprint} over the budget ${budget}`);
+  assert.ok(loaded.length - empty.length < budget, `WASM heap grew by ${loaded.length - empty.length}, over the budget ${budget}`);
+  await page.close();
+});
+
 // ---- drawing performance: the cached image, panning, level of detail ---------------------------------------
 
 // How many of the motions show the cut colour at (or next to) the page pixel of their middle.

@@ -110,6 +110,7 @@ App* App::instance() { return g_app; }
 bool App::init_graphics() {
     graphics_ok_ = renderer_.init();
     ImGuiIO& io = ImGui::GetIO();
+    if (!io.Fonts->IsBuilt()) io.Fonts->Build();  // (renderer_.init() makes the atlas unless the GPU refused it)
     io.IniFilename = nullptr;  // no imgui.ini: the layout is fixed
     ImGui::StyleColorsDark();
     ImGuiStyle& st = ImGui::GetStyle();
@@ -160,8 +161,7 @@ void App::step_loading() {
         if (done) {
             buffers_ = std::move(*building_);
             building_.reset();
-            buffers_.staged_ends = {};
-            buffers_.staged_kinds = {};
+            buffers_.release_staging();
             renderer_.release(gpu_);
             gpu_ = std::move(gpu_building_);
             gpu_building_ = GpuPath{};
@@ -218,12 +218,15 @@ void App::finish_loading() {
     building_ = std::make_unique<PathBuffers>();
     building_->begin(d, desired_tolerance());
     if (graphics_ok_) renderer_.upload_markers(building_->markers);
+    building_->markers = std::vector<MarkerInstance>();  // (the GPU has them)
     renderer_.clear_lod();
     lod_ = LodRaster{};
     if (d.motions.size() >= kLodMinMotions) {
         lod_.begin(d.bbox, d.origin);
-        for (const Point& p : d.pierces)
+        for (const std::uint32_t i : d.pierces) {
+            const Point p = d.start_of(i);
             lod_.add_pierce(static_cast<float>(p.x - d.origin.x), static_cast<float>(p.y - d.origin.y));
+        }
         building_->lod = &lod_;
     }
     first_build_ = true;
@@ -237,7 +240,7 @@ double App::desired_tolerance() const {
 }
 
 void App::maybe_rebuild() {
-    if (!doc_ || loader_ || building_ || (doc_->arcs.empty() && doc_->parabolas.empty())) return;
+    if (!doc_ || loader_ || building_ || doc_->curves == 0) return;
     const double want = desired_tolerance();
     const double have = buffers_.tolerance();
     // Finer when zooming in past 2x; coarser (fewer segments) when zooming out by 16x.
@@ -308,6 +311,12 @@ void App::frame() {
         renderer_.draw(view_, fb_w, fb_h, o, show_grid_ ? grid_step(view_.zoom) : 1e30,
                        doc_ ? doc_->origin : Point{}, first_build_ ? nullptr : &gpu_);
     }
+}
+
+void App::render_ui() {
+    int fb_w = 0, fb_h = 0;
+    glfwGetFramebufferSize(window_, &fb_w, &fb_h);
+    if (graphics_ok_) renderer_.draw_ui(*ImGui::GetDrawData(), fb_w, fb_h);
 }
 
 int App::layer_mask() const {
@@ -437,19 +446,19 @@ std::size_t App::pick(double sx, double sy) const {
         const Motion& m = d.motions[i];
         if (!((mask >> static_cast<int>(m.kind)) & 1)) continue;
         if (m.curve == CurveKind::Line) {
-            const Point a = (m.flags & Motion::kFlagJump) ? d.start_of(i) : d.motions[i - 1].end;
-            if (p.x < std::min(a.x, m.end.x) - best || p.x > std::max(a.x, m.end.x) + best) continue;
-            if (p.y < std::min(a.y, m.end.y) - best || p.y > std::max(a.y, m.end.y) + best) continue;
-            consider(i, seg_distance(p.x, p.y, a.x, a.y, m.end.x, m.end.y));
+            const Point a = d.start_of(i), e = d.end_of(i);
+            if (p.x < std::min(a.x, e.x) - best || p.x > std::max(a.x, e.x) + best) continue;
+            if (p.y < std::min(a.y, e.y) - best || p.y > std::max(a.y, e.y) + best) continue;
+            consider(i, seg_distance(p.x, p.y, a.x, a.y, e.x, e.y));
             continue;
         }
-        if (m.curve == CurveKind::Arc) {
-            const ArcData& a = d.arcs[m.curve_index];
-            const double r = std::hypot(p.x - a.centre.x, p.y - a.centre.y);
-            if (r < std::min(a.radius, a.end_radius) - best || r > std::max(a.radius, a.end_radius) + best) continue;
+        const MotionRecord r = d.record(i);
+        if (r.curve == CurveKind::Arc) {
+            const double rc = std::hypot(p.x - r.centre.x, p.y - r.centre.y);
+            if (rc < std::min(r.radius, r.end_radius) - best || rc > std::max(r.radius, r.end_radius) + best) continue;
         }
         pts.clear();
-        flatten(d.record(i), std::max(0.25 / view_.zoom, kMinChordTolerance), pts, true);
+        flatten(r, std::max(0.25 / view_.zoom, kMinChordTolerance), pts, true);
         double dist = 1e300;
         for (std::size_t k = 1; k < pts.size(); ++k)
             dist = std::min(dist, seg_distance(p.x, p.y, pts[k - 1].x, pts[k - 1].y, pts[k].x, pts[k].y));
@@ -474,9 +483,12 @@ Point App::snap(double sx, double sy, bool* snapped) const {
         }
     };
     // End points (every start is the end before it, or a jump) and arc centres.
-    for (const Motion& m : doc_->motions) consider(m.end);
-    for (const auto& j : doc_->jumps) consider(j.second);
-    for (const ArcData& a : doc_->arcs) consider(a.centre);
+    const Document& d = *doc_;
+    for (std::size_t i = 0; i < d.motions.size(); ++i) consider(d.end_of(i));
+    for (const auto& j : d.jumps) consider(j.second);
+    for (const UnitPoint& c : d.arc_centres) consider(d.point_mm(c));
+    for (const auto& k : d.kept)
+        if (k.second.curve == CurveKind::Arc) consider(k.second.centre);
     return result;
 }
 
@@ -783,7 +795,7 @@ void App::draw_left_panel() {
                 const std::size_t cur = std::min<std::size_t>(static_cast<std::size_t>(play_pos_), doc_->motions.size() - 1);
                 const Motion& m = doc_->motions[cur];
                 ImGui::Text("line %u: %s %s", m.line, motion_kind_name(m.kind), curve_kind_name(m.curve));
-                ImGui::Text("tools %s, %.0f mm/min", tools_text(m.tools).c_str(), m.feed_mm_min);
+                ImGui::Text("tools %s, %.0f mm/min", tools_text(m.tools).c_str(), doc_->feed_of(cur));
                 if (ImGui::SmallButton("show line")) select_line(m.line, false);
             }
         }
@@ -903,8 +915,9 @@ void App::draw_inspector() {
     ImGui::SameLine();
     ImGui::TextDisabled("%s", printable(d.line(selected_line_), 80).c_str());
     ImGui::Separator();
-    const auto [b0, b1] = d.blocks_of_line(selected_line_);
-    for (std::size_t b = b0; b < b1; ++b) ImGui::TextWrapped("%s", describe_block(d, b).c_str());
+    const LineBlocks blocks = d.blocks_of_line(selected_line_);
+    for (std::size_t b = blocks.first; b < blocks.last; ++b)
+        ImGui::TextWrapped("%s", describe_block(*blocks.chunk, b, d.profile).c_str());
     const auto [m0, m1] = d.motions_of_line(selected_line_);
     for (std::size_t m = m0; m < m1 && m < m0 + 8; ++m) {
         const MotionRecord r = d.record(m);
@@ -913,7 +926,7 @@ void App::draw_inspector() {
         ImGui::TextWrapped("%s", describe_motion(r).c_str());
         ImGui::PopStyleColor();
     }
-    if (b0 == b1 && m0 == m1) ImGui::TextDisabled("No block on this line (comment, empty line or part of a block).");
+    if (blocks.empty() && m0 == m1) ImGui::TextDisabled("No block on this line (comment, empty line or part of a block).");
     auto it = std::lower_bound(d.diagnostics.begin(), d.diagnostics.end(), selected_line_,
                                [](const Diagnostic& x, std::uint32_t l) { return x.line < l; });
     for (; it != d.diagnostics.end() && it->line == selected_line_; ++it) {
@@ -1150,10 +1163,15 @@ std::string App::state_json() const {
         j["pierce_markers"] = doc_->pierces.size();
         j["bbox_mm"] = box_json(doc_->bbox);
         j["memory_bytes"] = doc_->memory_bytes() + buffers_.memory_bytes() + (building_ ? building_->memory_bytes() : 0);
+        nlohmann::json parts = nlohmann::json::object();
+        for (const auto& [part, n] : doc_->memory_parts()) parts[part] = n;
+        parts["segment_index"] = buffers_.memory_bytes() + (building_ ? building_->memory_bytes() : 0);
+        j["memory_parts"] = std::move(parts);
         j["gpu_bytes"] = gpu_.gpu_bytes() + gpu_building_.gpu_bytes() + renderer_.lod_gpu_bytes();
         j["lod"] = {{"available", renderer_.has_lod()}, {"drawn", lod_drawn_}, {"cell_mm", renderer_.lod_cell_mm()}};
-        j["tape_memory_bytes"] = doc_->tape.memory_bytes();
-        j["blocks_read"] = doc_->tape.size();
+        j["tape_memory_bytes"] = doc_->core_tape_bytes();
+        j["blocks_read"] = doc_->blocks;
+        j["kept_records"] = doc_->kept.size();
         j["load_seconds"] = load_seconds_;
         j["chord_tolerance_mm"] = buffers_.tolerance();
     }
@@ -1183,7 +1201,7 @@ std::string App::state_json() const {
         j["playback"]["line"] = m.line;
         j["playback"]["kind"] = motion_kind_name(m.kind);
         j["playback"]["tools"] = tools_text(m.tools);
-        j["playback"]["feed_mm_min"] = m.feed_mm_min;
+        j["playback"]["feed_mm_min"] = doc_->feed_of(cur);
         j["playback"]["tool_mm"] = {p.x, p.y};
         j["playback"]["drawn_motions"] = playback_limit_motions();
     }
@@ -1198,8 +1216,9 @@ std::string App::state_json() const {
     // The block inspector's sentences for the selected line (blocks, then motions).
     nlohmann::json insp = nlohmann::json::array();
     if (doc_ && selected_line_ > 0) {
-        const auto [b0, b1] = doc_->blocks_of_line(selected_line_);
-        for (std::size_t b = b0; b < b1; ++b) insp.push_back(describe_block(*doc_, b));
+        const LineBlocks blocks = doc_->blocks_of_line(selected_line_);
+        for (std::size_t b = blocks.first; b < blocks.last; ++b)
+            insp.push_back(describe_block(*blocks.chunk, b, doc_->profile));
         const auto [m0, m1] = doc_->motions_of_line(selected_line_);
         for (std::size_t m = m0; m < m1 && m < m0 + 8; ++m) insp.push_back(describe_motion(doc_->record(m)));
     }

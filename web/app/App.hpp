@@ -34,6 +34,8 @@ public:
     bool init_graphics();  // after the GL context and ImGui exist
     // One frame: UI, input, drawing. Called by the platform loop between NewFrame and Render.
     void frame();
+    // Draws the panels (ImGui's draw data, after ImGui::Render) over the frame's drawing.
+    void render_ui();
     // Loading or building work left to do (the browser loop also runs slices of it between frames).
     [[nodiscard]] bool has_background_work() const { return loader_ != nullptr || building_ != nullptr; }
     // One slice (about kStepBudgetMs) of that work outside a frame; returns has_background_work().

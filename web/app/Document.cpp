@@ -1,9 +1,11 @@
 #include "app/Document.hpp"
 
 #include <algorithm>
-#include <cmath>
+#include <bit>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "essi/functions.hpp"
 #include "essi/interp.hpp"
@@ -11,8 +13,6 @@
 namespace essi::viewer {
 
 namespace {
-
-constexpr std::size_t kChunkBlocks = 16384;  // blocks per TapeReader chunk (a few ms in the browser)
 
 double now_ms() {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -41,18 +41,98 @@ std::string_view Document::line(std::size_t n) const {
     return std::string_view(s).substr(i, end - i);
 }
 
+void RankIndex::reserve(std::size_t n) {
+    bits_.reserve(n / 64 + 1);
+    before_.reserve(n / 64 + 1);
+}
+
+void RankIndex::push_back(bool has_entry) {
+    if (size_ % 64 == 0) {
+        bits_.push_back(0);
+        before_.push_back(static_cast<std::uint32_t>(count_));
+    }
+    if (has_entry) {
+        bits_.back() |= std::uint64_t(1) << (size_ % 64);
+        ++count_;
+    }
+    ++size_;
+}
+
+std::size_t RankIndex::rank(std::size_t i) const {
+    const std::size_t word = i / 64;
+    const std::uint64_t below = (std::uint64_t(1) << (i % 64)) - 1;
+    return before_[word] + static_cast<std::size_t>(std::popcount(bits_[word] & below));
+}
+
+std::size_t RankIndex::memory_bytes() const {
+    return bits_.capacity() * sizeof(std::uint64_t) + before_.capacity() * sizeof(std::uint32_t);
+}
+
+Point Document::point_mm(UnitPoint u) const {
+    return {static_cast<double>(u.x) * profile.unit_mm + profile.setup_offset_x_mm,
+            static_cast<double>(u.y) * profile.unit_mm + profile.setup_offset_y_mm};
+}
+
+bool Document::to_units(Point mm, UnitPoint& out) const {
+    const double x = std::round((mm.x - profile.setup_offset_x_mm) / profile.unit_mm);
+    const double y = std::round((mm.y - profile.setup_offset_y_mm) / profile.unit_mm);
+    constexpr double kMax = std::numeric_limits<std::int32_t>::max();
+    if (!(std::fabs(x) <= kMax && std::fabs(y) <= kMax)) return false;  // (NaN too)
+    out = {static_cast<std::int32_t>(x), static_cast<std::int32_t>(y)};
+    return point_mm(out) == mm;  // exactly the interpreter's number, or the record is kept whole
+}
+
+const MotionRecord& Document::kept_record(std::size_t i) const {
+    auto it = std::lower_bound(kept.begin(), kept.end(), static_cast<std::uint32_t>(i),
+                               [](const auto& k, std::uint32_t v) { return k.first < v; });
+    return it->second;
+}
+
+Point Document::end_of(std::size_t i) const {
+    const Motion& m = motions[i];
+    return (m.flags & Motion::kFlagKept) ? kept_record(i).end : point_mm(m.end_units);
+}
+
 Point Document::start_of(std::size_t i) const {
     if (i < motions.size() && (motions[i].flags & Motion::kFlagJump)) {
         auto it = std::lower_bound(jumps.begin(), jumps.end(), static_cast<std::uint32_t>(i),
                                    [](const auto& j, std::uint32_t k) { return j.first < k; });
         if (it != jumps.end() && it->first == i) return it->second;
     }
-    return i > 0 && i <= motions.size() ? motions[i - 1].end : Point{};
+    return i > 0 && i <= motions.size() ? end_of(i - 1) : Point{};
+}
+
+namespace {
+// The value of a change list ((first motion, value) whenever it changes) at motion i; 0 before the first change.
+float value_at(const std::vector<std::pair<std::uint32_t, float>>& changes, std::size_t i) {
+    auto k = std::upper_bound(changes.begin(), changes.end(), static_cast<std::uint32_t>(i),
+                              [](std::uint32_t v, const auto& e) { return v < e.first; });
+    return k == changes.begin() ? 0.f : std::prev(k)->second;
+}
+
+// A length in units between two points in units, as the interpreter measures lines and radii.
+double units_length(UnitPoint a, UnitPoint b) {
+    const auto x = static_cast<double>(static_cast<long long>(b.x) - a.x);
+    const auto y = static_cast<double>(static_cast<long long>(b.y) - a.y);
+    return std::sqrt(x * x + y * y);
+}
+
+Point as_point(UnitPoint u) { return {static_cast<double>(u.x), static_cast<double>(u.y)}; }
+}  // namespace
+
+float Document::kerf_of(std::size_t i) const {
+    if (!(motions[i].flags & (Motion::kFlagKerfLeft | Motion::kFlagKerfRight))) return 0.f;
+    return value_at(kerfs, i);
+}
+
+float Document::feed_of(std::size_t i) const {
+    if (motions[i].flags & Motion::kFlagRapidFeed) return static_cast<float>(profile.rapid_mm_min);
+    return value_at(feeds, i);
 }
 
 MotionRecord Document::record(std::size_t i) const {
     const Motion& m = motions[i];
-    if (m.curve == CurveKind::Parabola && m.curve_index != Motion::kNoCurve) return parabolas[m.curve_index];
+    if (m.flags & Motion::kFlagKept) return kept_record(i);
     MotionRecord r;
     r.line = m.line;
     r.kind = m.kind;
@@ -62,30 +142,57 @@ MotionRecord Document::record(std::size_t i) const {
     r.kerf = (m.flags & Motion::kFlagKerfLeft) ? KerfSide::Left
              : (m.flags & Motion::kFlagKerfRight) ? KerfSide::Right : KerfSide::Off;
     r.start = start_of(i);
-    r.end = m.end;
-    r.feed_mm_min = m.feed_mm_min;
-    auto k = std::upper_bound(kerfs.begin(), kerfs.end(), static_cast<std::uint32_t>(i),
-                              [](std::uint32_t v, const auto& e) { return v < e.first; });
-    r.kerf_mm = k == kerfs.begin() ? 0.0 : static_cast<double>(std::prev(k)->second);
-    if (m.curve == CurveKind::Arc && m.curve_index != Motion::kNoCurve) {
-        const ArcData& a = arcs[m.curve_index];
-        r.centre = a.centre;
-        r.radius = a.radius;
-        r.end_radius = a.end_radius;
-        r.sweep = a.sweep;
-        r.ccw = a.sweep > 0;
-        r.length_mm = a.length_mm;
+    r.end = point_mm(m.end_units);
+    r.feed_mm_min = feed_of(i);
+    r.kerf_mm = kerf_of(i);
+    UnitPoint start;
+    static_cast<void>(to_units(r.start, start));  // whole units: the loader kept the motion compact only then
+    if (m.curve == CurveKind::Arc) {
+        // The interpreter's numbers: radii and sweep from the integer vectors centre -> start and centre -> end
+        // (in the machine frame they are the tape frame's, swapped or mirrored: the same squares, the same
+        // dot product and the cross product's sign turned with the sense).
+        const UnitPoint c = arc_centres[arc_rank.rank(i)];
+        r.centre = point_mm(c);
+        r.ccw = (m.flags & Motion::kFlagCcw) != 0;
+        r.radius = units_length(c, start) * profile.unit_mm;
+        r.end_radius = units_length(c, m.end_units) * profile.unit_mm;
+        r.sweep = arc_sweep(as_point(start), as_point(m.end_units), as_point(c), r.ccw, start == m.end_units);
+        r.length_mm = r.radius * std::abs(r.sweep);
     } else {
-        r.length_mm = std::hypot(r.end.x - r.start.x, r.end.y - r.start.y);
+        r.length_mm = units_length(start, m.end_units) * profile.unit_mm;
     }
     return r;
 }
 
+const Tape& Document::reread(std::size_t chunk) const {
+    if (reread_chunk_ != chunk) {
+        TapeReader reader = chunks[chunk].reader;  // a copy: the kept one stays before the chunk
+        reader.read_chunk(reread_, kReadChunkBlocks);
+        reread_chunk_ = chunk;
+    }
+    return reread_;
+}
+
+LineBlocks Document::blocks_of_line(std::uint32_t line) const {
+    // The last chunk that starts on or before the line (a line holds one block at most: the blocks of a line
+    // are in one chunk).
+    auto it = std::upper_bound(chunks.begin(), chunks.end(), line,
+                               [](std::uint32_t l, const ReadChunk& c) { return l < c.first_line; });
+    if (it == chunks.begin()) return {};
+    const Tape& t = reread(static_cast<std::size_t>(it - chunks.begin()) - 1);
+    const auto blocks_read = t.blocks();
+    auto lo = std::lower_bound(blocks_read.begin(), blocks_read.end(), line,
+                               [](const Block& b, std::uint32_t l) { return b.line < l; });
+    auto hi = lo;
+    while (hi != blocks_read.end() && hi->line == line) ++hi;
+    return {&t, static_cast<std::size_t>(lo - blocks_read.begin()), static_cast<std::size_t>(hi - blocks_read.begin())};
+}
+
 std::size_t Document::block_of(std::size_t i) const {
-    const auto [b0, b1] = blocks_of_line(motions[i].line);
-    for (std::size_t b = b0; b < b1; ++b)
-        if (tape.block(b).kind == BlockKind::Motion) return b;
-    return b0;
+    const LineBlocks lb = blocks_of_line(motions[i].line);
+    for (std::size_t k = lb.first; k < lb.last; ++k)
+        if (lb.chunk->block(k).kind == BlockKind::Motion) return lb.tape_index(k);
+    return lb.chunk != nullptr ? lb.tape_index(lb.first) : 0;
 }
 
 std::size_t Document::first_motion_at_or_after(std::uint32_t line) const {
@@ -101,15 +208,6 @@ std::pair<std::size_t, std::size_t> Document::motions_of_line(std::uint32_t line
     return {a, b};
 }
 
-std::pair<std::size_t, std::size_t> Document::blocks_of_line(std::uint32_t line) const {
-    const auto& blocks = tape.blocks();
-    auto lo = std::lower_bound(blocks.begin(), blocks.end(), line,
-                               [](const Block& b, std::uint32_t l) { return b.line < l; });
-    auto hi = lo;
-    while (hi != blocks.end() && hi->line == line) ++hi;
-    return {static_cast<std::size_t>(lo - blocks.begin()), static_cast<std::size_t>(hi - blocks.begin())};
-}
-
 bool Document::has_errors() const { return count(Severity::Error) > 0; }
 
 std::size_t Document::count(Severity s) const {
@@ -117,11 +215,31 @@ std::size_t Document::count(Severity s) const {
         std::count_if(diagnostics.begin(), diagnostics.end(), [s](const Diagnostic& d) { return d.severity == s; }));
 }
 
+std::vector<std::pair<const char*, std::size_t>> Document::memory_parts() const {
+    return {
+        {"bytes", bytes.capacity()},
+        {"motions", motions.capacity() * sizeof(Motion)},
+        {"arc_centres", arc_centres.capacity() * sizeof(UnitPoint) + arc_rank.memory_bytes()},
+        {"kept", kept.capacity() * sizeof(kept[0])},
+        {"changes", jumps.capacity() * sizeof(jumps[0]) + kerfs.capacity() * sizeof(kerfs[0]) +
+                        feeds.capacity() * sizeof(feeds[0])},
+        {"pierces", pierces.capacity() * sizeof(std::uint32_t)},
+        {"diagnostics", diagnostics.capacity() * sizeof(Diagnostic)},
+        {"line_index", line_index.capacity() * sizeof(std::uint32_t)},
+        {"read_chunks", chunks.capacity() * sizeof(ReadChunk) + chunks.size() * TapeReader::state_bytes() +
+                            reread_.memory_bytes()},
+    };
+}
+
 std::size_t Document::memory_bytes() const {
-    return bytes.capacity() + tape.memory_bytes() + motions.capacity() * sizeof(Motion) +
-           arcs.capacity() * sizeof(ArcData) + parabolas.capacity() * sizeof(MotionRecord) +
-           jumps.capacity() * sizeof(jumps[0]) + kerfs.capacity() * sizeof(kerfs[0]) +
-           pierces.capacity() * sizeof(Point) + line_index.capacity() * sizeof(std::uint32_t);
+    std::size_t n = 0;
+    for (const auto& part : memory_parts()) n += part.second;
+    return n;
+}
+
+std::size_t Document::core_tape_bytes() const {
+    return blocks * sizeof(Block) + block_words * sizeof(std::int32_t) +
+           (blocks / Tape::kWordIndexStride + 1) * sizeof(std::uint32_t);
 }
 
 std::string describe_motion(const MotionRecord& m) {
@@ -156,17 +274,17 @@ std::string describe_motion(const MotionRecord& m) {
     return s;
 }
 
-std::string describe_block(const Document& doc, std::size_t i) {
-    const Block& b = doc.tape.block(i);
+std::string describe_block(const Tape& tape, std::size_t i, const Profile& profile) {
+    const Block& b = tape.block(i);
     switch (b.kind) {
         case BlockKind::Function:
-            return describe_function(b.code, false, 0, doc.profile);
+            return describe_function(b.code, false, 0, profile);
         case BlockKind::FunctionValue: {
-            const auto w = doc.tape.words(i);
-            return describe_function(b.code, true, w.empty() ? 0 : static_cast<long>(w[0]), doc.profile);
+            const auto w = tape.words(i);
+            return describe_function(b.code, true, w.empty() ? 0 : static_cast<long>(w[0]), profile);
         }
         case BlockKind::Motion: {
-            const auto w = doc.tape.words(i);
+            const auto w = tape.words(i);
             std::string s = fmt("motion block, %d words:", b.word_count());
             for (auto v : w) s += fmt(" %+d", static_cast<int>(v));
             if (b.has_address()) s += fmt(" (head %d)", static_cast<int>(b.code));
@@ -187,33 +305,47 @@ public:
     explicit Sink(Document& doc) : doc_(doc) {}
 
     void on_motion(const MotionRecord& r) override {
-        const auto index = static_cast<std::uint32_t>(doc_.motions.size());
+        Document& d = doc_;
+        const auto index = static_cast<std::uint32_t>(d.motions.size());
         Motion m;
-        m.end = r.end;
         m.line = r.line;
         m.kind = r.kind;
         m.curve = r.curve;
         m.tools = r.tools;
-        m.feed_mm_min = static_cast<float>(r.feed_mm_min);
         if (r.head == 2) m.flags |= Motion::kFlagHead2;
         if (r.kerf == KerfSide::Left) m.flags |= Motion::kFlagKerfLeft;
         if (r.kerf == KerfSide::Right) m.flags |= Motion::kFlagKerfRight;
-        if (index == 0 || !(doc_.motions.back().end == r.start)) {
+        if (index == 0 || !(last_end_ == r.start)) {
             m.flags |= Motion::kFlagJump;
-            doc_.jumps.emplace_back(index, r.start);
+            d.jumps.emplace_back(index, r.start);
         }
+        last_end_ = r.end;
+        // Kerf compensation goes on and off with every contour: its value is listed only where it is on.
         const float kerf = static_cast<float>(r.kerf_mm);
-        if (doc_.kerfs.empty() ? kerf != 0.f : doc_.kerfs.back().second != kerf) doc_.kerfs.emplace_back(index, kerf);
-        if (r.curve == CurveKind::Arc) {
-            m.curve_index = static_cast<std::uint32_t>(doc_.arcs.size());
-            doc_.arcs.push_back({r.centre, r.radius, r.end_radius, r.sweep, r.length_mm});
-        } else if (r.curve == CurveKind::Parabola) {
-            m.curve_index = static_cast<std::uint32_t>(doc_.parabolas.size());
-            doc_.parabolas.push_back(r);
+        if (r.kerf != KerfSide::Off && (d.kerfs.empty() ? kerf != 0.f : d.kerfs.back().second != kerf))
+            d.kerfs.emplace_back(index, kerf);
+        // Rapids alternate with cuts: their feed (the rapid speed) is a flag, and only the others' changes are listed.
+        const float feed = static_cast<float>(r.feed_mm_min);
+        if (feed == static_cast<float>(d.profile.rapid_mm_min)) m.flags |= Motion::kFlagRapidFeed;
+        else if (d.feeds.empty() ? feed != 0.f : d.feeds.back().second != feed) d.feeds.emplace_back(index, feed);
+        // Compact when every point is whole units (always, but for positions beyond 32 bits), not a parabola, and
+        // (as the interpreter has it) the kerf is 0 when compensation is off.
+        UnitPoint start, centre;
+        bool compact = r.curve != CurveKind::Parabola && (r.kerf != KerfSide::Off || kerf == 0.f) &&
+                       d.to_units(r.end, m.end_units) && d.to_units(r.start, start);
+        if (compact && r.curve == CurveKind::Arc) compact = d.to_units(r.centre, centre);
+        if (!compact) {
+            m.flags |= Motion::kFlagKept;
+            d.kept.emplace_back(index, r);
+        } else if (r.curve == CurveKind::Arc) {
+            if (r.ccw) m.flags |= Motion::kFlagCcw;
+            d.arc_centres.push_back(centre);
         }
-        if (pierce_pending_ && (r.tools & kCuttingTools)) doc_.pierces.push_back(r.start);
+        d.arc_rank.push_back(compact && r.curve == CurveKind::Arc);
+        if (r.curve != CurveKind::Line) ++d.curves;
+        if (pierce_pending_ && (r.tools & kCuttingTools)) d.pierces.push_back(index);
         pierce_pending_ = false;
-        doc_.motions.push_back(m);
+        d.motions.push_back(m);
     }
 
     void on_event(const MachineEvent& e) override {
@@ -226,6 +358,7 @@ public:
 
 private:
     Document& doc_;
+    Point last_end_;  // of the motion before (a motion that starts elsewhere is a jump)
     std::uint8_t tools_ = 0;
     bool pierce_pending_ = false;
 };
@@ -250,6 +383,12 @@ void grow(std::vector<T>& v, std::size_t more, std::size_t read, std::size_t tot
     if (share > 0.01) want = std::max(want, static_cast<std::size_t>(static_cast<double>(v.size()) / share * 1.05) + 1024);
     else want = std::max(want, v.capacity() * 2);
     v.reserve(want);
+}
+
+// Gives back the room reserved ahead when it is more than an eighth (a copy: the WASM heap's peak grows by it).
+template <class T>
+void shrink_if_loose(std::vector<T>& v) {
+    if (v.capacity() > v.size() + v.size() / 8 + 4096) v.shrink_to_fit();
 }
 }  // namespace
 
@@ -287,22 +426,30 @@ bool DocumentLoader::step(double budget_ms) {
         // Room for the motion stream at once (lines that start with a sign are motions, near enough): no late
         // reserve has to copy hundreds of MB in one slice. grow() covers the few motions this misses.
         d.motions.reserve(motion_lines_ + motion_lines_ / kMotionReserveSlack + 16);
+        d.arc_rank.reserve(d.motions.capacity());
         sink_ = std::make_unique<Sink>(d);
         reader_ = std::make_unique<TapeReader>(d.bytes, d.profile);
+        chunk_.reserve(Document::kReadChunkBlocks, 2 * Document::kReadChunkBlocks);  // (no doubling steps)
         checker_ = std::make_unique<TapeChecker>(d.bytes, d.profile, sink_.get());
         if (now_ms() > until) return false;
     }
     if (stage_ == 1) {  // read and check, a chunk at a time
         for (;;) {
-            if (!reader_->read_chunk(chunk_, kChunkBlocks)) {
+            TapeReader before = *reader_;  // kept with the chunk: the inspector reads it again from there
+            if (!reader_->read_chunk(chunk_, Document::kReadChunkBlocks)) {
                 stage_ = 2;
                 break;
             }
-            if (chunk_.size() > 0) read_pos_ = chunk_.block(chunk_.size() - 1).offset;
+            if (chunk_.size() > 0) {
+                read_pos_ = chunk_.block(chunk_.size() - 1).offset;
+                d.chunks.push_back({std::move(before), static_cast<std::uint32_t>(chunk_.first_block()),
+                                    chunk_.block(0).line});
+            }
+            d.blocks += chunk_.size();
+            d.block_words += chunk_.all_words().size();
             grow(d.motions, chunk_.size(), read_pos_, d.bytes.size());
+            grow(d.arc_centres, chunk_.size(), read_pos_, d.bytes.size());
             checker_->check_chunk(chunk_);
-            if (d.tape.size() == 0) d.tape.reserve(d.lines + 16, 2 * d.lines + 16);
-            d.tape.append(chunk_);
             if (now_ms() > until) return false;
         }
     }
@@ -315,8 +462,13 @@ bool DocumentLoader::step(double budget_ms) {
         reader_.reset();
         sink_.reset();
         chunk_ = Tape{};
-        if (d.motions.capacity() > d.motions.size() + d.motions.size() / 8 + 4096) d.motions.shrink_to_fit();
-        d.arcs.shrink_to_fit();
+        shrink_if_loose(d.motions);
+        shrink_if_loose(d.arc_centres);
+        shrink_if_loose(d.jumps);
+        shrink_if_loose(d.kerfs);
+        shrink_if_loose(d.feeds);
+        shrink_if_loose(d.pierces);
+        d.chunks.shrink_to_fit();
         if (!d.bbox.empty)
             d.origin = {std::round((d.bbox.min_x + d.bbox.max_x) / 2), std::round((d.bbox.min_y + d.bbox.max_y) / 2)};
         stage_ = 3;

@@ -1,5 +1,6 @@
 // The C functions behind window.essikit (index.html calls them with ccall/cwrap).
 #include <emscripten.h>
+#include <malloc.h>
 
 #include <cstdint>
 #include <string>
@@ -42,6 +43,18 @@ EMSCRIPTEN_KEEPALIVE const char* essi_state() {
     static std::string s;
     App* app = App::instance();
     s = app ? app->state_json() : "{\"status\":\"starting\"}";
+    return s.c_str();
+}
+
+// The WASM heap as malloc sees it (tests and benchmarks): {"footprint": bytes taken from the heap's end (sbrk),
+// "peak": the largest footprint so far, "in_use": bytes in allocated blocks}. The page's memory (HEAPU8.length)
+// grows to hold the peak footprint and never shrinks.
+EMSCRIPTEN_KEEPALIVE const char* essi_heap() {
+    static std::string s;
+    const struct mallinfo m = mallinfo();
+    s = "{\"footprint\":" + std::to_string(static_cast<unsigned>(m.arena)) +
+        ",\"peak\":" + std::to_string(static_cast<unsigned>(m.usmblks)) +
+        ",\"in_use\":" + std::to_string(static_cast<unsigned>(m.uordblks)) + "}";
     return s.c_str();
 }
 

@@ -5,7 +5,6 @@
 #include <emscripten/html5.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
-#include <imgui_impl_opengl3.h>
 
 #include <cmath>
 #include <cstdio>
@@ -56,12 +55,11 @@ void fit_canvas() {
 void frame(void*) {
     fit_canvas();
     glfwPollEvents();
-    ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     g_app->frame();
     ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    g_app->render_ui();
     if (g_app->has_background_work() && !g_background_queued) {
         g_background_queued = true;
         emscripten_async_call(background, nullptr, 0);
@@ -78,6 +76,12 @@ int main() {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+    // An opaque canvas with no depth or stencil buffer (the viewer draws neither): the WebGL context attributes
+    // alpha, depth and stencil false. (With an alpha channel, the blended grid left the drawing area a little
+    // translucent over the page.)
+    glfwWindowHint(GLFW_ALPHA_BITS, 0);
+    glfwWindowHint(GLFW_DEPTH_BITS, 0);
+    glfwWindowHint(GLFW_STENCIL_BITS, 0);
     double w = 1280, h = 720;
     emscripten_get_element_css_size("#canvas", &w, &h);
     g_window = glfwCreateWindow(static_cast<int>(w), static_cast<int>(h), "essikit viewer", nullptr, nullptr);
@@ -90,7 +94,6 @@ int main() {
     ImGui::CreateContext();
     ImGui_ImplGlfw_InitForOpenGL(g_window, true);
     glfwSetScrollCallback(g_window, on_scroll);  // replaces the backend's (on_scroll calls it)
-    ImGui_ImplOpenGL3_Init("#version 300 es");
     g_app = new essi::viewer::App(g_window);
     if (!g_app->init_graphics()) std::fprintf(stderr, "essi_viewer: the drawing programs did not compile\n");
     emscripten_set_main_loop_arg(frame, nullptr, 0, false);

@@ -18,8 +18,10 @@ void PathBuffers::begin(const Document& doc, double tol) {
     first_segment.reserve(doc.motions.size() + 1);
     markers.clear();
     markers.reserve(doc.pierces.size() + 1);
-    for (const Point& p : doc.pierces)
+    for (const std::uint32_t i : doc.pierces) {
+        const Point p = doc.start_of(i);
         markers.push_back({static_cast<float>(p.x - doc.origin.x), static_cast<float>(p.y - doc.origin.y), 0.f});
+    }
     if (!doc.motions.empty()) {
         const Point s = doc.start_of(0);
         markers.push_back({static_cast<float>(s.x - doc.origin.x), static_cast<float>(s.y - doc.origin.y), 1.f});
@@ -45,8 +47,7 @@ bool PathBuffers::step(std::size_t max_motions) {
         first_segment.push_back(static_cast<std::uint32_t>(segment_count));
         const auto kind = static_cast<std::uint8_t>(m.kind);
         if (m.curve == CurveKind::Line) {
-            const Point a = (m.flags & Motion::kFlagJump) ? doc.start_of(next_) : (next_ > 0 ? doc.motions[next_ - 1].end : Point{});
-            put(a, m.end, kind);
+            put(doc.start_of(next_), doc.end_of(next_), kind);
             continue;
         }
         scratch_.clear();
@@ -77,6 +78,11 @@ void PathBuffers::drop_staged(std::size_t n) {
     staged_ends.erase(staged_ends.begin(), staged_ends.begin() + static_cast<std::ptrdiff_t>(4 * n));
     staged_kinds.erase(staged_kinds.begin(), staged_kinds.begin() + static_cast<std::ptrdiff_t>(n));
     staged_first += n;
+}
+
+void PathBuffers::release_staging() {
+    staged_ends = std::vector<float>();  // (`= {}` would keep the capacity)
+    staged_kinds = std::vector<std::uint8_t>();
 }
 
 std::size_t PathBuffers::motion_of_segment(std::size_t s) const {

@@ -33,7 +33,7 @@ public:
 
     std::size_t segment_count = 0;             // segments made so far (all of them once complete)
     std::vector<std::uint32_t> first_segment;  // per motion, plus one at the end
-    std::vector<MarkerInstance> markers;       // pierces then the start point
+    std::vector<MarkerInstance> markers;       // pierces then the start point (until uploaded)
 
     // Segments made but not yet taken by the renderer: [staged_first, segment_count).
     std::vector<float> staged_ends;            // 4 floats a segment
@@ -41,6 +41,7 @@ public:
     std::size_t staged_first = 0;
     [[nodiscard]] std::size_t staged_count() const { return staged_kinds.size(); }
     void drop_staged(std::size_t n);           // the first n staged segments are on the GPU
+    void release_staging();                    // frees the staging area (the build is complete)
 
     // Motion index of segment s.
     [[nodiscard]] std::size_t motion_of_segment(std::size_t s) const;

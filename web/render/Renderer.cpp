@@ -1,6 +1,7 @@
 #include "render/Renderer.hpp"
 
 #include <GLES3/gl3.h>
+#include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
@@ -105,7 +106,94 @@ bool Renderer::init() {
     glGenVertexArrays(1, &empty_vao_);
     marker_tex_ = new_texture();
     glBindTexture(GL_TEXTURE_2D, 0);
+    return init_ui();
+}
+
+bool Renderer::init_ui() {
+    ui_program_ = link(shaders::ui_vert_glsl, shaders::ui_frag_glsl, "ui");
+    if (!ui_program_) {
+        error_ = g_error.c_str();
+        return false;
+    }
+    glGenVertexArrays(1, &ui_vao_);
+    glGenBuffers(1, &ui_vertices_);
+    glGenBuffers(1, &ui_indices_);
+    glBindVertexArray(ui_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, ui_vertices_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ui_indices_);
+    const auto stride = static_cast<GLsizei>(sizeof(ImDrawVert));
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(IM_OFFSETOF(ImDrawVert, pos)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(IM_OFFSETOF(ImDrawVert, uv)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride, reinterpret_cast<void*>(IM_OFFSETOF(ImDrawVert, col)));
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+
+    // The font atlas (ImGui's default font), linear filtering as ImGui draws it.
+    ImGuiIO& io = ImGui::GetIO();
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    font_tex_ = new_texture();
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(font_tex_)));
+    io.BackendRendererName = "essikit";
     return true;
+}
+
+void Renderer::draw_ui(const ImDrawData& data, int fb_w, int fb_h) {
+    if (fb_w <= 0 || fb_h <= 0 || data.CmdListsCount == 0) return;
+    const ImVec2 scale = data.FramebufferScale;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fb_w, fb_h);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_SCISSOR_TEST);
+    glUseProgram(ui_program_);
+    glUniform2f(glGetUniformLocation(ui_program_, "u_viewport"), data.DisplaySize.x, data.DisplaySize.y);
+    glUniform1i(glGetUniformLocation(ui_program_, "u_texture"), 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindVertexArray(ui_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, ui_vertices_);
+    for (int n = 0; n < data.CmdListsCount; ++n) {
+        const ImDrawList& list = *data.CmdLists[n];
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(list.VtxBuffer.Size) * static_cast<GLsizeiptr>(sizeof(ImDrawVert)),
+                     list.VtxBuffer.Data, GL_STREAM_DRAW);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(list.IdxBuffer.Size) * static_cast<GLsizeiptr>(sizeof(ImDrawIdx)),
+                     list.IdxBuffer.Data, GL_STREAM_DRAW);
+        for (const ImDrawCmd& cmd : list.CmdBuffer) {
+            if (cmd.UserCallback != nullptr) {  // (the viewer adds none)
+                cmd.UserCallback(&list, &cmd);
+                continue;
+            }
+            // The clip rectangle in framebuffer pixels (GL's y runs upwards).
+            const float x0 = (cmd.ClipRect.x - data.DisplayPos.x) * scale.x, y0 = (cmd.ClipRect.y - data.DisplayPos.y) * scale.y;
+            const float x1 = (cmd.ClipRect.z - data.DisplayPos.x) * scale.x, y1 = (cmd.ClipRect.w - data.DisplayPos.y) * scale.y;
+            if (x1 <= x0 || y1 <= y0) continue;
+            glScissor(static_cast<GLint>(x0), static_cast<GLint>(static_cast<float>(fb_h) - y1), static_cast<GLsizei>(x1 - x0),
+                      static_cast<GLsizei>(y1 - y0));
+            glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(reinterpret_cast<std::intptr_t>(cmd.GetTexID())));
+            // (no vertex offsets: the viewer does not set ImGuiBackendFlags_RendererHasVtxOffset)
+            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(cmd.ElemCount),
+                           sizeof(ImDrawIdx) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT,
+                           reinterpret_cast<void*>(static_cast<std::intptr_t>(cmd.IdxOffset * sizeof(ImDrawIdx))));
+        }
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glUseProgram(0);
 }
 
 void Renderer::add_page(GpuPath& path, std::size_t first, std::size_t rows) {

@@ -19,6 +19,8 @@
 #include "render/LodRaster.hpp"
 #include "render/PathBuffers.hpp"
 
+struct ImDrawData;
+
 namespace essi::viewer {
 
 struct Rgba {
@@ -95,6 +97,11 @@ public:
     void draw(const View& view, int fb_w, int fb_h, const DrawOptions& options, double grid_step_mm, Point world_origin,
               const GpuPath* path);
 
+    // The panels: Dear ImGui's draw data over the scene, with the font atlas made in init(). Sets the GL state it
+    // needs and reads none back: every glGet of a WebGL context waits for the GPU process to finish the frame's
+    // drawing (ImGui's own backend saves and restores the state that way: 30-70 ms a frame on SwiftShader).
+    void draw_ui(const ImDrawData& data, int fb_w, int fb_h);
+
     [[nodiscard]] const RenderStats& stats() const { return stats_; }
     void invalidate_cache() { cache_valid_ = false; }
 
@@ -117,6 +124,7 @@ private:
         bool lod = false;
         bool operator==(const SceneKey&) const = default;
     };
+    bool init_ui();
     void add_page(GpuPath& path, std::size_t first, std::size_t rows);
     void draw_segments(const GpuPath& path, std::size_t first, std::size_t count);
     void draw_grid(const Target& t, double grid_step, Point world_origin);
@@ -146,6 +154,7 @@ private:
 
     unsigned path_program_ = 0, grid_program_ = 0, marker_program_ = 0;
     unsigned empty_vao_ = 0;     // the programs pull their data by gl_VertexID: no attributes
+    unsigned ui_program_ = 0, ui_vao_ = 0, ui_vertices_ = 0, ui_indices_ = 0, font_tex_ = 0;
     unsigned marker_tex_ = 0;    // RGBA32F x y type, kTexWidth a row
     std::size_t marker_count_ = 0;
     const char* error_ = "";

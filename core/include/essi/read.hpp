@@ -211,6 +211,11 @@ public:
     ~TapeReader();
     TapeReader(TapeReader&&) noexcept;
     TapeReader& operator=(TapeReader&&) noexcept;
+    // A copy goes on from where the original is: keep one before a chunk to read that chunk again later.
+    TapeReader(const TapeReader& other);
+    TapeReader& operator=(const TapeReader& other);
+    // The bytes a reader holds (what keeping a copy costs).
+    [[nodiscard]] static std::size_t state_bytes();
     // Empties `chunk` and reads up to `max_blocks` more blocks into it, with the diagnostics found
     // meanwhile. Returns false when the tape is done (nothing was read).
     bool read_chunk(Tape& chunk, std::size_t max_blocks);

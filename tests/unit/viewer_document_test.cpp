@@ -1,0 +1,167 @@
+// The viewer's compact document (web/app/Document): what it rebuilds from 16 bytes a motion, the arc centres and
+// the change lists is the interpreter's record to the last bit, and the blocks it reads again for a line are the
+// blocks read_tape gives that line. Over every example, the real-tape corpus and a generated tape of many chunks.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "../bench/nest_generator.hpp"
+#include "app/Document.hpp"
+#include "essi/interp.hpp"
+#include "essi/read.hpp"
+#include "paths.hpp"
+
+using namespace essi;
+using essi::viewer::Document;
+using essi::viewer::DocumentLoader;
+using essi::viewer::LineBlocks;
+
+namespace {
+
+class Collect : public MotionSink {
+public:
+    std::vector<MotionRecord> records;
+    void on_motion(const MotionRecord& r) override { records.push_back(r); }
+};
+
+std::unique_ptr<Document> load(const std::string& bytes, const Profile& p) {
+    DocumentLoader loader("tape", bytes, p);
+    while (!loader.step(1e9)) {
+    }
+    return loader.take();
+}
+
+void expect_same_records(const Document& doc, const std::vector<MotionRecord>& want, const std::string& what) {
+    ASSERT_EQ(doc.motions.size(), want.size()) << what;
+    for (std::size_t i = 0; i < want.size(); ++i) {
+        const MotionRecord r = doc.record(i);
+        const MotionRecord& w = want[i];
+        const std::string at = what + " motion " + std::to_string(i) + " line " + std::to_string(w.line);
+        ASSERT_EQ(r.line, w.line) << at;
+        ASSERT_EQ(r.kind, w.kind) << at;
+        ASSERT_EQ(r.curve, w.curve) << at;
+        ASSERT_EQ(r.tools, w.tools) << at;
+        ASSERT_EQ(r.head, w.head) << at;
+        ASSERT_EQ(r.kerf, w.kerf) << at;
+        ASSERT_EQ(r.ccw, w.ccw) << at;
+        // Exactly (==, not near): the same doubles as the interpreter's.
+        ASSERT_EQ(r.start, w.start) << at;
+        ASSERT_EQ(r.end, w.end) << at;
+        ASSERT_EQ(doc.start_of(i), w.start) << at;
+        ASSERT_EQ(doc.end_of(i), w.end) << at;
+        ASSERT_EQ(r.centre, w.centre) << at;
+        ASSERT_EQ(r.radius, w.radius) << at;
+        ASSERT_EQ(r.end_radius, w.end_radius) << at;
+        ASSERT_EQ(r.sweep, w.sweep) << at;
+        ASSERT_EQ(r.length_mm, w.length_mm) << at;
+        // Feed and kerf are kept as float (display only).
+        ASSERT_EQ(r.feed_mm_min, static_cast<double>(static_cast<float>(w.feed_mm_min))) << at;
+        ASSERT_EQ(r.kerf_mm, static_cast<double>(static_cast<float>(w.kerf_mm))) << at;
+        if (w.curve == CurveKind::Parabola) {
+            ASSERT_EQ(r.parabola.vertex, w.parabola.vertex) << at;
+            ASSERT_EQ(r.parabola.t1, w.parabola.t1) << at;
+        }
+    }
+}
+
+void expect_same_blocks(const Document& doc, const Tape& want, const std::string& what) {
+    ASSERT_EQ(doc.blocks, want.size()) << what;
+    std::size_t b = 0;
+    for (std::uint32_t line = 1; line <= doc.line_count() + 1; ++line) {
+        const LineBlocks got = doc.blocks_of_line(line);
+        const std::size_t first = b;
+        while (b < want.size() && want.block(b).line == line) ++b;
+        const std::string at = what + " line " + std::to_string(line);
+        ASSERT_EQ(got.last - got.first, b - first) << at;
+        for (std::size_t k = got.first; k < got.last; ++k) {
+            const std::size_t t = got.tape_index(k);
+            ASSERT_EQ(t, first + (k - got.first)) << at;
+            const Block& g = got.chunk->block(k);
+            const Block& w = want.block(t);
+            ASSERT_EQ(g.offset, w.offset) << at;
+            ASSERT_EQ(g.kind, w.kind) << at;
+            ASSERT_EQ(g.code, w.code) << at;
+            ASSERT_EQ(g.packed, w.packed) << at;
+            const auto gw = got.chunk->words(k), ww = want.words(t);
+            ASSERT_TRUE(std::equal(gw.begin(), gw.end(), ww.begin(), ww.end())) << at;
+        }
+    }
+    ASSERT_EQ(b, want.size()) << what;
+}
+
+void check_tape(const std::string& bytes, const Profile& p, const std::string& what) {
+    const auto doc = load(bytes, p);
+    const Tape tape = read_tape(bytes, p);
+    Collect sink;
+    std::vector<Diagnostic> diagnostics;
+    interpret(tape, bytes, p, sink, diagnostics);
+    expect_same_records(*doc, sink.records, what);
+    expect_same_blocks(*doc, tape, what);
+    for (std::size_t i = 0; i < doc->motions.size(); ++i) {
+        const std::size_t block = doc->block_of(i);
+        ASSERT_EQ(tape.block(block).line, doc->motions[i].line) << what << " motion " << i;
+    }
+}
+
+std::vector<std::filesystem::path> tapes_in(const std::string& dir) {
+    std::vector<std::filesystem::path> out;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
+        if (e.is_regular_file() && e.path().extension() != ".json" && e.path().extension() != ".trace")
+            out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+}  // namespace
+
+TEST(ViewerDocument, ExamplesRebuildTheInterpretersRecordsAndBlocks) {
+    std::size_t tapes = 0;
+    for (const auto& path : tapes_in(examples_dir())) {
+        if (path.extension() != ".esi") continue;
+        ++tapes;
+        const std::string name = path.filename().string();
+        std::filesystem::path expected = path;
+        expected.replace_extension(".expected.json");
+        const bool woyda = std::filesystem::exists(expected) &&
+                           read_file(expected.string()).find("\"woyda\"") != std::string::npos;
+        const Profile p = *builtin_profile(woyda ? "woyda" : "iso6582");
+        check_tape(read_file(path.string()), p, name);
+    }
+    EXPECT_GE(tapes, 10u);
+}
+
+TEST(ViewerDocument, CorpusRebuildsTheInterpretersRecordsAndBlocks) {
+    const auto dir = corpus_dir();
+    if (!dir) GTEST_SKIP() << "no corpus";
+    for (const auto& path : tapes_in(*dir)) check_tape(read_file(path.string()), *builtin_profile("iso6582"), path.string());
+}
+
+TEST(ViewerDocument, GeneratedTapeOfManyChunks) {
+    const std::string bytes = bench::generate_nest_tape(1 << 20, 7);
+    const auto doc = load(bytes, *builtin_profile("iso6582"));
+    EXPECT_GT(doc->chunks.size(), 3u);
+    EXPECT_TRUE(doc->kept.empty());  // every point in whole units: nothing kept whole
+    check_tape(bytes, *builtin_profile("iso6582"), "generated");
+}
+
+TEST(ViewerDocument, PointsBeyondThirtyTwoBitsKeepTheirRecord) {
+    // 30 x 99 999 999 units is past int32: those motions keep their full record (and the first one back, which
+    // starts out there).
+    std::string bytes = "81\n";
+    for (int k = 0; k < 30; ++k) bytes += "+99999999+0\n";
+    for (int k = 0; k < 30; ++k) bytes += "-99999999+0\n";
+    bytes += "+10+0\n+0+0+0+10+\n63\n";
+    const auto doc = load(bytes, *builtin_profile("iso6582"));
+    EXPECT_GE(doc->kept.size(), 10u);
+    EXPECT_LT(doc->kept.size(), 40u);
+    check_tape(bytes, *builtin_profile("iso6582"), "far");
+}
+
+TEST(ViewerDocument, MemoryPerMotionIsCompact) {
+    const std::string bytes = bench::generate_nest_tape(1 << 20, 3);
+    const auto doc = load(bytes, *builtin_profile("iso6582"));
+    // The viewer's memory budget: 2 x the bytes + what the core's Tape of the tape holds.
+    EXPECT_LT(doc->memory_bytes(), 2 * bytes.size() + doc->core_tape_bytes());
+}
