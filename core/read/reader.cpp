@@ -395,9 +395,10 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
     bool started = program_started_;
     // Blocks and words are written through local pointers (registers), checked against the room made and
     // committed when the loop ends or the general path needs the arrays.
-    Block* bp = t.blocks_.room(1);
+    // Room is made only when a block or a line's words need it: an exact reservation (read_tape) stays exact.
+    Block* bp = t.blocks_.data() + t.blocks_.size();
     Block* b_room_end = t.blocks_.end_of_room();
-    std::int32_t* wp = t.words_.room(kMaxPlainWords);
+    std::int32_t* wp = t.words_.data() + t.words_.size();
     std::int32_t* w_room_end = t.words_.end_of_room();
     while (pos < size && blocks < max_blocks) {
         if (w_room_end - wp < kMaxPlainWords) [[unlikely]] {
@@ -447,9 +448,9 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
             blocks = chunk_blocks_;
             started = program_started_;
             state_changed = ended_ || in_ignore_ || stopped_ || percent_line_ != 0;
-            bp = t.blocks_.room(1);
+            bp = t.blocks_.data() + t.blocks_.size();
             b_room_end = t.blocks_.end_of_room();
-            wp = t.words_.room(kMaxPlainWords);
+            wp = t.words_.data() + t.words_.size();
             w_room_end = t.words_.end_of_room();
         }
         // One line end: CR, LF, CR LF or LF CR.

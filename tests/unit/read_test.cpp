@@ -2,6 +2,8 @@
 // Every expectation is worked out by hand from the rules, never copied from the reader's output.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <string>
 #include <vector>
 
@@ -577,4 +579,19 @@ TEST(ReadChars, StrictWhitespaceInsideCommentIsFine) {
     p.whitespace = WhitespacePolicy::Strict;
     Tape t = rd("3\nPART NO 12\t A\n4\n7\n8\n64\n", p);
     EXPECT_TRUE(t.diagnostics().empty()) << dump(t.diagnostics());
+}
+
+// read_tape reserves exactly what a tape needs (a block per line, a word per sign, and the fast path's room for
+// one line's words): nothing grows while reading, whatever the last line is and whether a line end follows it.
+TEST(ReadBlock, WholeTapeReservationStaysExact) {
+    for (const char* tape : {"7\n+1+2\n8\n63\n", "7\n+1+2\n8\n63", "7\n+1+2\n8\n+3-4", "39+2000\n7\n+1+2\n8\n64"}) {
+        SCOPED_TRACE(tape);
+        const Tape t = rd(tape);
+        const std::string s(tape);
+        const std::size_t lines = static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')) + 1;
+        const std::size_t signs = static_cast<std::size_t>(std::count(s.begin(), s.end(), '+') + std::count(s.begin(), s.end(), '-'));
+        const std::size_t room_for_one_line = 8;  // the reader's kMaxPlainWords
+        EXPECT_EQ(t.memory_bytes(), lines * sizeof(essi::Block) + (signs + room_for_one_line) * sizeof(std::int32_t) +
+                                        (lines / Tape::kWordIndexStride + 1) * sizeof(std::uint32_t));
+    }
 }
