@@ -14,7 +14,7 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile)
     // ahead does not go to sleep and wait to be woken at every chunk.
     struct Slot {
         Tape chunk;
-        std::vector<MotionMeasure> measures;  // worked out by the reading thread (lengths, radii, sweeps)
+        std::vector<MotionMeasure> measures;  // worked out by the reading thread (arcs: radii, sweeps)
         bool last = false;                    // the reader is done: this slot holds nothing
         std::atomic<bool> full{false};
     };
@@ -26,7 +26,7 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile)
             Slot& slot = slots[k % slots.size()];
             slot.full.wait(true, std::memory_order_acquire);
             const bool more = reader.read_chunk(slot.chunk, kPipelineChunkBlocks);
-            measure_motions(slot.chunk, slot.measures);  // the square roots and atan2s, off the interpreting thread
+            measure_motions(slot.chunk, slot.measures);  // the arcs' square roots and atan2s, off the interpreting thread
             slot.last = !more;
             slot.full.store(true, std::memory_order_release);
             slot.full.notify_one();

@@ -40,8 +40,9 @@ MotionMeasure measure_arc(IPoint s, IPoint e, IPoint c, bool tape_ccw) {
     return a;
 }
 
-// The blocks measure_motions measures: lines and arcs (parabolas are rare; the interpreter works them out).
-bool has_measure(const Block& b) { return b.kind == BlockKind::Motion && (b.word_count() == 2 || b.word_count() == 5); }
+// The blocks measure_motions measures: arcs (a line's length is one square root, parabolas are rare: the
+// interpreter works those out).
+bool has_measure(const Block& b) { return b.kind == BlockKind::Motion && b.word_count() == 5; }
 
 std::string mm_text(double v) {
     char buf[48];
@@ -546,7 +547,7 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
         m.radius = m.end_radius = m.sweep = 0;
         m.start = to_mm(cur);
         m.end = to_mm(end);
-        m.length_mm = (pre ? pre->length_units : units_length(end.x - cur.x, end.y - cur.y)) * profile_.unit_mm;
+        m.length_mm = units_length(end.x - cur.x, end.y - cur.y) * profile_.unit_mm;
         cur = end;
         emit(m, b, index);
         return;
@@ -593,7 +594,7 @@ void Machine::curve_motion(const Block& b, std::size_t index, std::span<const st
     const auto line_length_mm = [&] { return units_length(end.x - cur.x, end.y - cur.y) * unit; };
     if (w.size() == 2) {
         m.curve = CurveKind::Line;
-        m.length_mm = pre ? pre->length_units * unit : line_length_mm();
+        m.length_mm = line_length_mm();
     } else if (w.size() == 5) {
         const IPoint c_t{w[2], w[3]};
         const IPoint d_c = map(c_t.x, c_t.y);
@@ -753,15 +754,7 @@ void measure_motions(const Tape& chunk, std::vector<MotionMeasure>& out) {
     const std::size_t end = chunk.end_block();
     for (std::size_t k = 0; k < end; ++k) {
         const Block& b = chunk.block(k);
-        if (has_measure(b)) {
-            if (b.word_count() == 2) {
-                MotionMeasure line;
-                line.length_units = units_length(w[0], w[1]);
-                out.push_back(line);
-            } else {
-                out.push_back(measure_arc({0, 0}, {w[0], w[1]}, {w[2], w[3]}, b.tc_positive()));
-            }
-        }
+        if (has_measure(b)) out.push_back(measure_arc({0, 0}, {w[0], w[1]}, {w[2], w[3]}, b.tc_positive()));
         w += b.word_count();
     }
 }

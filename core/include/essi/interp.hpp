@@ -18,16 +18,15 @@ namespace detail {
 class Machine;
 }
 
-// What a line or arc block measures from its words alone when it is incremental (its start is the tape's
-// (0,0)), in the tape frame and unit increments. 21-28 only swap and mirror the axes: lengths and radii stay,
-// a mirror turns the sweep's sign. The interpreter computes the same numbers the same way when it is not given
-// them (and in absolute mode, where the start is not (0,0)).
+// What an arc block measures from its words alone when it is incremental (its start is the tape's (0,0)), in
+// the tape frame and unit increments: two square roots and an atan2, worth working out on another thread.
+// 21-28 only swap and mirror the axes: radii stay, a mirror turns the sweep's sign. The interpreter computes
+// the same numbers the same way when it is not given them (and in absolute mode, where the start is not (0,0)).
 struct MotionMeasure {
-    double length_units = 0;  // lines: the length
-    double r0 = 0, r1 = 0;    // arcs: radius at the start and at the end
-    double sweep = 0;         // arcs: signed angle in the tape's sense (TC), +-2 pi for a full circle
+    double r0 = 0, r1 = 0;  // radius at the start and at the end
+    double sweep = 0;       // signed angle in the tape's sense (TC), +-2 pi for a full circle
 };
-// The measures of a chunk's motion blocks of 2 or 5 words before its end_block(), in block order, into `out`.
+// The measures of a chunk's arc blocks (motions of 5 words) before its end_block(), in block order, into `out`.
 void measure_motions(const Tape& chunk, std::vector<MotionMeasure>& out);
 
 // The machine, fed a chunk of blocks at a time (TapeReader), or a whole tape. Diagnostics of
