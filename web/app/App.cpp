@@ -20,6 +20,10 @@ namespace {
 App* g_app = nullptr;
 
 constexpr float kToolbarHeight = 38;
+// The toolbar and the side panels draw no background: the renderer clears the window in their colour (ImGui's
+// window background over the drawing's, as they looked), which saves SwiftShader filling a million pixels a frame.
+constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                                         ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoBackground;
 constexpr float kLeftWidth = 310;
 constexpr float kRightWidth = 470;
 constexpr double kPickRadiusPx = 6;
@@ -45,6 +49,16 @@ std::string hms(double seconds) {
 }
 
 ImU32 to_u32(Rgba c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
+
+// What the panels looked like with their own background: ImGui's window background blended over the drawing's
+// background, in the 8-bit steps the GPU blends in (the same pixels).
+Rgba panel_color() {
+    const auto byte = [](float v) { return std::round(std::clamp(v, 0.f, 1.f) * 255.f) / 255.f; };
+    const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+    const float a = byte(bg.w);
+    const auto over = [&](float top, float below) { return byte(top) * a + byte(below) * (1 - a); };
+    return {over(bg.x, kBackground.r), over(bg.y, kBackground.g), over(bg.z, kBackground.b), 1.f};
+}
 
 ImVec4 severity_color(Severity s) {
     switch (s) {
@@ -285,6 +299,7 @@ void App::frame() {
         DrawOptions o;
         o.framebuffer_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.f;
         o.layer_mask = layer_mask();
+        o.panel_color = panel_color();
         // While the first build runs nothing of the new tape is drawn (the frames stay cheap).
         o.marker_mask = first_build_ ? 0 : (show_pierces_ ? 1 : 0) | (show_start_ ? 2 : 0);
         // Zoomed out on a big tape: the level-of-detail raster instead of millions of sub-pixel segments.
@@ -650,9 +665,7 @@ void App::draw_toolbar() {
     ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(0, 0));
     ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, kToolbarHeight));
-    ImGui::Begin("##toolbar", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+    ImGui::Begin("##toolbar", nullptr, kPanelFlags | ImGuiWindowFlags_NoDecoration);
     if (ImGui::Button("Open...")) platform::open_file_dialog(*this);
     platform::open_button_at(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
                              ImGui::GetItemRectSize().y);
@@ -702,8 +715,7 @@ void App::draw_left_panel() {
     ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(0, kToolbarHeight));
     ImGui::SetNextWindowSize(ImVec2(kLeftWidth, io.DisplaySize.y - kToolbarHeight));
-    ImGui::Begin("Tape", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
+    ImGui::Begin("Tape", nullptr, kPanelFlags | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
         if (!doc_) {
             ImGui::TextDisabled("No tape loaded.");
@@ -833,8 +845,7 @@ void App::draw_right_panel() {
     ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - kRightWidth, kToolbarHeight));
     ImGui::SetNextWindowSize(ImVec2(kRightWidth, io.DisplaySize.y - kToolbarHeight));
-    ImGui::Begin("Source", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
+    ImGui::Begin("Source", nullptr, kPanelFlags | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     const float inspector_h = 220;
     ImGui::BeginChild("source", ImVec2(0, -inspector_h), true, ImGuiWindowFlags_HorizontalScrollbar);
     draw_source();
