@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <nlohmann/json.hpp>
 
 #include "essi/diagnostics.hpp"
@@ -292,9 +293,10 @@ void App::frame() {
     draw_messages();
     if (show_help_) draw_help();
 
-    // GPU drawing (below ImGui)
+    // The scene (drawn by render(), below the panels)
     int fb_w = 0, fb_h = 0;
     glfwGetFramebufferSize(window_, &fb_w, &fb_h);
+    scene_.reset();
     if (graphics_ok_ && fb_w > 0 && fb_h > 0) {
         DrawOptions o;
         o.framebuffer_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.f;
@@ -323,15 +325,59 @@ void App::frame() {
             o.selection_first = first;
             o.selection_count = count;
         }
-        renderer_.draw(view_, fb_w, fb_h, o, show_grid_ ? grid_step(view_.zoom) : 1e30,
-                       doc_ ? doc_->origin : Point{}, first_build_ ? nullptr : &gpu_);
+        const GpuPath* path = first_build_ ? nullptr : &gpu_;
+        scene_ = SceneFrame{view_, fb_w, fb_h, o, show_grid_ ? grid_step(view_.zoom) : 1e30,
+                            doc_ ? doc_->origin : Point{}, path, path ? path->version : 0};
     }
 }
 
-void App::render_ui() {
+namespace {
+// A fingerprint of ImGui's draw data: the vertices, indices and commands of every list.
+std::uint64_t ui_hash(const ImDrawData& data) {
+    std::uint64_t h = 1469598103934665603ull;  // FNV-1a over 8-byte words
+    const auto mix = [&h](const void* p, std::size_t n) {
+        const auto* b = static_cast<const unsigned char*>(p);
+        std::uint64_t w = 0;
+        for (std::size_t i = 0; i + 8 <= n; i += 8) {
+            std::memcpy(&w, b + i, 8);
+            h = (h ^ w) * 1099511628211ull;
+        }
+        for (std::size_t i = n - n % 8; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+    };
+    mix(&data.DisplaySize, sizeof data.DisplaySize);
+    for (int n = 0; n < data.CmdListsCount; ++n) {
+        const ImDrawList& list = *data.CmdLists[n];
+        mix(list.VtxBuffer.Data, static_cast<std::size_t>(list.VtxBuffer.Size) * sizeof(ImDrawVert));
+        mix(list.IdxBuffer.Data, static_cast<std::size_t>(list.IdxBuffer.Size) * sizeof(ImDrawIdx));
+        for (const ImDrawCmd& c : list.CmdBuffer) {
+            mix(&c.ClipRect, sizeof c.ClipRect);
+            const auto texture = reinterpret_cast<std::uintptr_t>(c.GetTexID());
+            mix(&texture, sizeof texture);
+            const unsigned counts[2] = {c.ElemCount, c.IdxOffset};
+            mix(counts, sizeof counts);
+        }
+    }
+    return h;
+}
+}  // namespace
+
+void App::render(bool keep_unchanged) {
+    if (!graphics_ok_) return;
+    const ImDrawData& ui = *ImGui::GetDrawData();
+    const std::uint64_t hash = ui_hash(ui);
+    if (keep_unchanged && scene_ && scene_ == last_scene_ && hash == last_ui_hash_) {
+        ++skipped_frames_;
+        return;
+    }
+    if (scene_) {
+        const SceneFrame& s = *scene_;
+        renderer_.draw(s.view, s.fb_w, s.fb_h, s.options, s.grid_step, s.origin, s.path);
+    }
     int fb_w = 0, fb_h = 0;
     glfwGetFramebufferSize(window_, &fb_w, &fb_h);
-    if (graphics_ok_) renderer_.draw_ui(*ImGui::GetDrawData(), fb_w, fb_h);
+    renderer_.draw_ui(ui, fb_w, fb_h);
+    last_scene_ = scene_;
+    last_ui_hash_ = hash;
 }
 
 int App::layer_mask() const {
@@ -1236,7 +1282,7 @@ std::string App::state_json() const {
     j["inspector"] = std::move(insp);
     const RenderStats& rs = renderer_.stats();
     j["render"] = {{"frames", rs.frames}, {"full_redraws", rs.full_redraws}, {"partial_redraws", rs.partial_redraws},
-                   {"cached_frames", rs.cached_frames}};
+                   {"cached_frames", rs.cached_frames}, {"unchanged_frames", skipped_frames_}};
     j["help"] = show_help_;
     j["share_url"] = share_url_;
     j["message"] = message_;
