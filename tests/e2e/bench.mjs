@@ -3,8 +3,10 @@
 // (tests/bench/nest_generator.hpp through essi_gen_nest).
 //
 //   drop -> first frame   from the drop event until the first animation frame after the tape is drawn
-//   panning               animation-frame intervals while the mouse drags the drawing (1 M motion tape), and
-//                         how many of those frames drew the whole scene again (the rest moved the cached image)
+//   panning               while the mouse drags the drawing (1 M motion tape): the time per frame that drew (frames
+//                         with nothing new draw nothing), per mouse move, the animation-frame intervals, the main
+//                         thread's share, and how many frames drew the whole scene again (the rest moved the
+//                         cached image)
 //   memory                the page's WASM heap, JS heap, renderer and GPU process RSS, against the budget
 //                         2 x tape bytes + the core's bytes per block x blocks
 //
@@ -94,6 +96,33 @@ async function restFrames(page) {
   }));
 }
 
+// Panning driven from inside the page: every animation frame moves the view by 3 pixels (setView), so every
+// frame draws (the moved cached image) and the intervals are the frame time while panning, with no round trip
+// to the test in between (a mouse drag from the test waits for one per move).
+async function measureSteadyPan(page) {
+  const r = await page.evaluate(() => new Promise((res) => {
+    const v = essikit.state().view;
+    const before = essikit.state().render;
+    const f = [];
+    let k = 0;
+    const tick = (t) => {
+      f.push(t);
+      essikit.setView(v.x_mm + (3 * ++k) / v.zoom, v.y_mm, v.zoom);
+      if (f.length < 41) requestAnimationFrame(tick);
+      else {
+        const after = essikit.state().render;
+        essikit.setView(v.x_mm, v.y_mm, v.zoom);
+        res({ gaps: f.slice(1).map((x, i) => x - f[i]), drawn: after.frames - before.frames,
+              full_redraws: after.full_redraws - before.full_redraws });
+      }
+    };
+    requestAnimationFrame(tick);
+  }));
+  const g = [...r.gaps].sort((a, b) => a - b);
+  return { frames: g.length, drawn: r.drawn, full_redraws: r.full_redraws, median_ms: g[Math.floor(g.length / 2)],
+           p95_ms: g[Math.min(g.length - 1, Math.floor(0.95 * g.length))], mean_ms: g.reduce((a, b) => a + b, 0) / g.length };
+}
+
 async function measurePan(page) {
   const rest = await restFrames(page);
   const restMs = rest.reduce((a, b) => a + b, 0) / rest.length;
@@ -128,6 +157,9 @@ async function measurePan(page) {
   const moved = st1.view;
   return { frames: gaps.length, median_ms: q(0.5), p95_ms: q(0.95), mean_ms: gaps.reduce((a, b) => a + b, 0) / gaps.length,
            drag_ms_per_move: (t[t.length - 1] - t[0]) / 12, main_thread_median_ms: cpu[Math.floor(cpu.length / 2)],
+           // Frames that drew (the others showed the same pixels and drew nothing): the drag's time per drawn frame.
+           drawn_frames: st1.render.frames - st0.render.frames,
+           ms_per_drawn_frame: (t[t.length - 1] - t[0]) / Math.max(1, st1.render.frames - st0.render.frames),
            moved_mm: Math.hypot(moved.x_mm - v.x_mm, moved.y_mm - v.y_mm),
            full_redraws: st1.render.full_redraws - st0.render.full_redraws, lod: st1.lod.drawn };
 }
@@ -172,18 +204,24 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
       console.log(`   against the budget: viewer ${(s.memory_bytes / budget).toFixed(2)}, WASM heap ${(r.after.wasm_heap / budget).toFixed(2)} ` +
                   `(malloc peak ${mb(r.after.malloc_peak)}, empty page ${mb(r.before.wasm_heap)}); parts ${JSON.stringify(s.memory_parts)}`);
       if (Math.abs(s.motions - 1e6) / 1e6 < 0.5 || motionTargets.length === 1) {
+        const steady = await measureSteadyPan(r.page);
+        row.pan_steady = steady;
+        console.log(`   panning every frame (setView): median ${steady.median_ms.toFixed(1)} ms, p95 ${steady.p95_ms.toFixed(1)} ms, mean ${steady.mean_ms.toFixed(1)} ms a frame (${steady.frames} frames, ${steady.drawn} drawn, ${steady.full_redraws} full redraws)`);
         const pan = await measurePan(r.page);
         row.pan = pan;
         if (pan.at_rest) console.log(`   frame time at rest ${pan.mean_ms.toFixed(0)} ms (max ${pan.p95_ms.toFixed(0)} ms): over a second, no drag measured (a pan frame costs at least this)`);
-        else console.log(`   panning: median ${pan.median_ms.toFixed(1)} ms, p95 ${pan.p95_ms.toFixed(1)} ms, mean ${pan.mean_ms.toFixed(1)} ms a frame, ${pan.drag_ms_per_move.toFixed(0)} ms a mouse move, main thread ${pan.main_thread_median_ms.toFixed(1)} ms a frame (${pan.frames} frames, moved ${pan.moved_mm.toFixed(0)} mm, ${pan.full_redraws} full redraws, level of detail ${pan.lod ? 'on' : 'off'})`);
+        else console.log(`   panning: ${pan.ms_per_drawn_frame.toFixed(1)} ms a drawn frame (${pan.drawn_frames} drawn), ${pan.drag_ms_per_move.toFixed(0)} ms a mouse move; animation frames median ${pan.median_ms.toFixed(1)} ms, p95 ${pan.p95_ms.toFixed(1)} ms; main thread ${pan.main_thread_median_ms.toFixed(1)} ms a frame (${pan.frames} frames, moved ${pan.moved_mm.toFixed(0)} mm, ${pan.full_redraws} full redraws, level of detail ${pan.lod ? 'on' : 'off'})`);
         // The same drag zoomed in (4x the fitted zoom): the segments are drawn, not the level of detail.
         const v = (await r.page.evaluate(() => essikit.state())).view;
         await r.page.evaluate(([x, y, z]) => essikit.setView(x, y, z), [v.x_mm, v.y_mm, v.zoom * 4]);
         await r.page.evaluate(() => new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(() => res()))));
+        const steadyIn = await measureSteadyPan(r.page);
+        row.pan_steady_zoomed_in = steadyIn;
+        console.log(`   zoomed in 4x, panning every frame: median ${steadyIn.median_ms.toFixed(1)} ms, p95 ${steadyIn.p95_ms.toFixed(1)} ms a frame (${steadyIn.drawn} drawn, ${steadyIn.full_redraws} full redraws)`);
         const panIn = await measurePan(r.page);
         row.pan_zoomed_in = panIn;
         if (panIn.at_rest) console.log(`   zoomed in 4x: frame time at rest ${panIn.mean_ms.toFixed(0)} ms`);
-        else console.log(`   panning zoomed in 4x: median ${panIn.median_ms.toFixed(1)} ms, p95 ${panIn.p95_ms.toFixed(1)} ms a frame (${panIn.frames} frames, ${panIn.full_redraws} full redraws, level of detail ${panIn.lod ? 'on' : 'off'})`);
+        else console.log(`   panning zoomed in 4x: ${panIn.ms_per_drawn_frame.toFixed(1)} ms a drawn frame (${panIn.drawn_frames} drawn), ${panIn.drag_ms_per_move.toFixed(0)} ms a mouse move; animation frames median ${panIn.median_ms.toFixed(1)} ms, p95 ${panIn.p95_ms.toFixed(1)} ms (${panIn.frames} frames, ${panIn.full_redraws} full redraws, level of detail ${panIn.lod ? 'on' : 'off'})`);
       }
       await r.page.screenshot({ path: path.join(shots, `bench-${tape.name.replace(/\.esi$/, '')}.png`), timeout: 120000 })
         .catch(() => console.log('   (no screenshot: the frame took over 2 minutes)'));

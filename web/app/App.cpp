@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <nlohmann/json.hpp>
 
 #include "essi/diagnostics.hpp"
@@ -20,6 +21,10 @@ namespace {
 App* g_app = nullptr;
 
 constexpr float kToolbarHeight = 38;
+// The toolbar and the side panels draw no background: the renderer clears the window in their colour (ImGui's
+// window background over the drawing's, as they looked), which saves SwiftShader filling a million pixels a frame.
+constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                                         ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoBackground;
 constexpr float kLeftWidth = 310;
 constexpr float kRightWidth = 470;
 constexpr double kPickRadiusPx = 6;
@@ -45,6 +50,16 @@ std::string hms(double seconds) {
 }
 
 ImU32 to_u32(Rgba c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
+
+// What the panels looked like with their own background: ImGui's window background blended over the drawing's
+// background, in the 8-bit steps the GPU blends in (the same pixels).
+Rgba panel_color() {
+    const auto byte = [](float v) { return std::round(std::clamp(v, 0.f, 1.f) * 255.f) / 255.f; };
+    const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+    const float a = byte(bg.w);
+    const auto over = [&](float top, float below) { return byte(top) * a + byte(below) * (1 - a); };
+    return {over(bg.x, kBackground.r), over(bg.y, kBackground.g), over(bg.z, kBackground.b), 1.f};
+}
 
 ImVec4 severity_color(Severity s) {
     switch (s) {
@@ -278,13 +293,15 @@ void App::frame() {
     draw_messages();
     if (show_help_) draw_help();
 
-    // GPU drawing (below ImGui)
+    // The scene (drawn by render(), below the panels)
     int fb_w = 0, fb_h = 0;
     glfwGetFramebufferSize(window_, &fb_w, &fb_h);
+    scene_.reset();
     if (graphics_ok_ && fb_w > 0 && fb_h > 0) {
         DrawOptions o;
         o.framebuffer_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.f;
         o.layer_mask = layer_mask();
+        o.panel_color = panel_color();
         // While the first build runs nothing of the new tape is drawn (the frames stay cheap).
         o.marker_mask = first_build_ ? 0 : (show_pierces_ ? 1 : 0) | (show_start_ ? 2 : 0);
         // Zoomed out on a big tape: the level-of-detail raster instead of millions of sub-pixel segments.
@@ -308,15 +325,59 @@ void App::frame() {
             o.selection_first = first;
             o.selection_count = count;
         }
-        renderer_.draw(view_, fb_w, fb_h, o, show_grid_ ? grid_step(view_.zoom) : 1e30,
-                       doc_ ? doc_->origin : Point{}, first_build_ ? nullptr : &gpu_);
+        const GpuPath* path = first_build_ ? nullptr : &gpu_;
+        scene_ = SceneFrame{view_, fb_w, fb_h, o, show_grid_ ? grid_step(view_.zoom) : 1e30,
+                            doc_ ? doc_->origin : Point{}, path, path ? path->version : 0};
     }
 }
 
-void App::render_ui() {
+namespace {
+// A fingerprint of ImGui's draw data: the vertices, indices and commands of every list.
+std::uint64_t ui_hash(const ImDrawData& data) {
+    std::uint64_t h = 1469598103934665603ull;  // FNV-1a over 8-byte words
+    const auto mix = [&h](const void* p, std::size_t n) {
+        const auto* b = static_cast<const unsigned char*>(p);
+        std::uint64_t w = 0;
+        for (std::size_t i = 0; i + 8 <= n; i += 8) {
+            std::memcpy(&w, b + i, 8);
+            h = (h ^ w) * 1099511628211ull;
+        }
+        for (std::size_t i = n - n % 8; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+    };
+    mix(&data.DisplaySize, sizeof data.DisplaySize);
+    for (int n = 0; n < data.CmdListsCount; ++n) {
+        const ImDrawList& list = *data.CmdLists[n];
+        mix(list.VtxBuffer.Data, static_cast<std::size_t>(list.VtxBuffer.Size) * sizeof(ImDrawVert));
+        mix(list.IdxBuffer.Data, static_cast<std::size_t>(list.IdxBuffer.Size) * sizeof(ImDrawIdx));
+        for (const ImDrawCmd& c : list.CmdBuffer) {
+            mix(&c.ClipRect, sizeof c.ClipRect);
+            const auto texture = reinterpret_cast<std::uintptr_t>(c.GetTexID());
+            mix(&texture, sizeof texture);
+            const unsigned counts[2] = {c.ElemCount, c.IdxOffset};
+            mix(counts, sizeof counts);
+        }
+    }
+    return h;
+}
+}  // namespace
+
+void App::render(bool keep_unchanged) {
+    if (!graphics_ok_) return;
+    const ImDrawData& ui = *ImGui::GetDrawData();
+    const std::uint64_t hash = ui_hash(ui);
+    if (keep_unchanged && scene_ && scene_ == last_scene_ && hash == last_ui_hash_) {
+        ++skipped_frames_;
+        return;
+    }
+    if (scene_) {
+        const SceneFrame& s = *scene_;
+        renderer_.draw(s.view, s.fb_w, s.fb_h, s.options, s.grid_step, s.origin, s.path);
+    }
     int fb_w = 0, fb_h = 0;
     glfwGetFramebufferSize(window_, &fb_w, &fb_h);
-    if (graphics_ok_) renderer_.draw_ui(*ImGui::GetDrawData(), fb_w, fb_h);
+    renderer_.draw_ui(ui, fb_w, fb_h);
+    last_scene_ = scene_;
+    last_ui_hash_ = hash;
 }
 
 int App::layer_mask() const {
@@ -650,9 +711,7 @@ void App::draw_toolbar() {
     ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(0, 0));
     ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, kToolbarHeight));
-    ImGui::Begin("##toolbar", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+    ImGui::Begin("##toolbar", nullptr, kPanelFlags | ImGuiWindowFlags_NoDecoration);
     if (ImGui::Button("Open...")) platform::open_file_dialog(*this);
     platform::open_button_at(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
                              ImGui::GetItemRectSize().y);
@@ -702,8 +761,7 @@ void App::draw_left_panel() {
     ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(0, kToolbarHeight));
     ImGui::SetNextWindowSize(ImVec2(kLeftWidth, io.DisplaySize.y - kToolbarHeight));
-    ImGui::Begin("Tape", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
+    ImGui::Begin("Tape", nullptr, kPanelFlags | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
         if (!doc_) {
             ImGui::TextDisabled("No tape loaded.");
@@ -833,8 +891,7 @@ void App::draw_right_panel() {
     ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - kRightWidth, kToolbarHeight));
     ImGui::SetNextWindowSize(ImVec2(kRightWidth, io.DisplaySize.y - kToolbarHeight));
-    ImGui::Begin("Source", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
+    ImGui::Begin("Source", nullptr, kPanelFlags | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     const float inspector_h = 220;
     ImGui::BeginChild("source", ImVec2(0, -inspector_h), true, ImGuiWindowFlags_HorizontalScrollbar);
     draw_source();
@@ -1225,7 +1282,7 @@ std::string App::state_json() const {
     j["inspector"] = std::move(insp);
     const RenderStats& rs = renderer_.stats();
     j["render"] = {{"frames", rs.frames}, {"full_redraws", rs.full_redraws}, {"partial_redraws", rs.partial_redraws},
-                   {"cached_frames", rs.cached_frames}};
+                   {"cached_frames", rs.cached_frames}, {"unchanged_frames", skipped_frames_}};
     j["help"] = show_help_;
     j["share_url"] = share_url_;
     j["message"] = message_;

@@ -34,8 +34,10 @@ public:
     bool init_graphics();  // after the GL context and ImGui exist
     // One frame: UI, input, drawing. Called by the platform loop between NewFrame and Render.
     void frame();
-    // Draws the panels (ImGui's draw data, after ImGui::Render) over the frame's drawing.
-    void render_ui();
+    // Draws the frame: the scene frame() prepared, then the panels (ImGui's draw data, after ImGui::Render).
+    // With `keep_unchanged` (the browser shows the last frame until the canvas is drawn again) a frame that would
+    // draw the same pixels as the last one draws nothing: no GPU work while nothing moves.
+    void render(bool keep_unchanged);
     // Loading or building work left to do (the browser loop also runs slices of it between frames).
     [[nodiscard]] bool has_background_work() const { return loader_ != nullptr || building_ != nullptr; }
     // One slice (about kStepBudgetMs) of that work outside a frame; returns has_background_work().
@@ -81,8 +83,24 @@ private:
     [[nodiscard]] int layer_mask() const;
     [[nodiscard]] std::string view_query() const;
 
+    // Everything the scene's pixels depend on (what frame() hands to render()).
+    struct SceneFrame {
+        View view;
+        int fb_w = 0, fb_h = 0;
+        DrawOptions options;
+        double grid_step = 0;
+        Point origin;
+        const GpuPath* path = nullptr;
+        std::uint64_t path_version = 0;
+        bool operator==(const SceneFrame&) const = default;
+    };
+
     GLFWwindow* window_ = nullptr;
     Renderer renderer_;
+    std::optional<SceneFrame> scene_;       // this frame's (none: nothing to draw)
+    std::optional<SceneFrame> last_scene_;  // the last frame drawn
+    std::uint64_t last_ui_hash_ = 0;
+    std::uint64_t skipped_frames_ = 0;      // frames that drew nothing (the same pixels as the last)
     bool graphics_ok_ = false;
 
     // Loading

@@ -46,6 +46,8 @@ struct View {
         cy += before.y - after.y;
     }
 
+    bool operator==(const View&) const = default;
+
     static constexpr double kMinZoom = 1e-4;  // px/mm
     static constexpr double kMaxZoom = 1e4;
 };

@@ -59,7 +59,7 @@ void frame(void*) {
     ImGui::NewFrame();
     g_app->frame();
     ImGui::Render();
-    g_app->render_ui();
+    g_app->render(true);  // (the browser keeps showing an unchanged frame)
     if (g_app->has_background_work() && !g_background_queued) {
         g_background_queued = true;
         emscripten_async_call(background, nullptr, 0);

@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
             ImGui::NewFrame();
             app.frame();
             ImGui::Render();
-            app.render_ui();
+            app.render(false);  // (after a swap the back buffer must be drawn again)
             glfwSwapBuffers(window);
         }
     }

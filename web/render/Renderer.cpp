@@ -473,11 +473,21 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
     const int mx = static_cast<int>(std::ceil(aw * kCacheMarginShare)), my = static_cast<int>(std::ceil(ah * kCacheMarginShare));
     const int cw = static_cast<int>(std::ceil(aw)) + 2 * mx, ch = static_cast<int>(std::ceil(ah)) + 2 * my;
     const bool cache = o.use_cache && cw > 0 && ch > 0 && ensure_cache(cw, ch);
+    // The drawing area in GL's scissor terms (bottom-left origin).
+    const auto scissor_area = [&] {
+        glScissor(static_cast<GLint>(ax), static_cast<GLint>(static_cast<float>(fb_h) - (ay + ah)),
+                  static_cast<GLsizei>(std::ceil(aw)), static_cast<GLsizei>(std::ceil(ah)));
+    };
     if (!cache) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, fb_w, fb_h);
+        glClearColor(o.panel_color.r, o.panel_color.g, o.panel_color.b, o.panel_color.a);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glEnable(GL_SCISSOR_TEST);
+        scissor_area();
         glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
         glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
         draw_scene(window, 0, true);
         ++stats_.full_redraws;
         cache_valid_ = false;
@@ -520,16 +530,15 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
         } else {
             ++stats_.cached_frames;
         }
-        // The window: background, the image where it is now (inside the drawing area), then the overlays.
+        // The window: the panels' colour, the image where it is now (it covers the drawing area), then the overlays.
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, fb_w, fb_h);
-        glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
+        glClearColor(o.panel_color.r, o.panel_color.g, o.panel_color.b, o.panel_color.a);
         glClear(GL_COLOR_BUFFER_BIT);
         const float now_left = cache_left_ + std::round(static_cast<float>((cache_cx_ - view.cx) * view.zoom * s));
         const float now_top = cache_top_ + std::round(static_cast<float>((view.cy - cache_cy_) * view.zoom * s));
         glEnable(GL_SCISSOR_TEST);
-        glScissor(static_cast<GLint>(ax), static_cast<GLint>(static_cast<float>(fb_h) - (ay + ah)), static_cast<GLsizei>(std::ceil(aw)),
-                  static_cast<GLsizei>(std::ceil(ah)));
+        scissor_area();
         glDisable(GL_BLEND);
         glUseProgram(blit_program_);
         glUniform4f(glGetUniformLocation(blit_program_, "u_rect"), now_left, now_top, static_cast<float>(cache_w_),

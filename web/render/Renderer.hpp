@@ -25,6 +25,7 @@ namespace essi::viewer {
 
 struct Rgba {
     float r, g, b, a;
+    bool operator==(const Rgba&) const = default;
 };
 
 struct DrawOptions {
@@ -37,6 +38,8 @@ struct DrawOptions {
     float framebuffer_scale = 1;
     bool use_cache = true;         // false: draw everything into the window every frame
     bool lod = false;              // draw the level-of-detail raster instead of the segments (and pierces)
+    Rgba panel_color = {0, 0, 0, 1};  // the window around the drawing area (the panels draw no background)
+    bool operator==(const DrawOptions&) const = default;
 };
 
 // What the last frames cost (the e2e tests check that a pan reuses the image and a zoom redraws it).
