@@ -41,7 +41,7 @@ struct Motion {
     std::uint8_t flags = 0;  // kFlag*
     static constexpr std::uint8_t kFlagHead2 = 1, kFlagKerfLeft = 2, kFlagKerfRight = 4, kFlagJump = 8,
                                   kFlagCcw = 16,  // arcs: counter-clockwise in machine coordinates
-                                  kFlagKept = 32,
+                                  kFlagKept = 32,  // the full record is in Document::kept
                                   kFlagRapidFeed = 64;  // the feed is the profile's rapid speed (else: `feeds`)
 };
 static_assert(sizeof(Motion) == 16, "Motion must stay compact");
