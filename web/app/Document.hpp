@@ -122,6 +122,8 @@ struct Document {
     [[nodiscard]] Point start_of(std::size_t i) const;
     [[nodiscard]] float feed_of(std::size_t i) const;
     [[nodiscard]] float kerf_of(std::size_t i) const;
+    // The centre of arc i (an arc motion), without working out the rest of its record.
+    [[nodiscard]] Point arc_centre(std::size_t i) const;
     // The full record of motion i (rebuilt from the compact form; `block` left 0: see block_of).
     [[nodiscard]] MotionRecord record(std::size_t i) const;
     // The block of motion i (the motion block on its line).
