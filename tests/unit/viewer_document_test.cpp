@@ -52,6 +52,9 @@ void expect_same_records(const Document& doc, const std::vector<MotionRecord>& w
         ASSERT_EQ(doc.start_of(i), w.start) << at;
         ASSERT_EQ(doc.end_of(i), w.end) << at;
         ASSERT_EQ(r.centre, w.centre) << at;
+        if (w.curve == CurveKind::Arc) {
+            ASSERT_EQ(doc.arc_centre(i), w.centre) << at;
+        }
         ASSERT_EQ(r.radius, w.radius) << at;
         ASSERT_EQ(r.end_radius, w.end_radius) << at;
         ASSERT_EQ(r.sweep, w.sweep) << at;

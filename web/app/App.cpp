@@ -513,11 +513,13 @@ std::size_t App::pick(double sx, double sy) const {
             consider(i, seg_distance(p.x, p.y, a.x, a.y, e.x, e.y));
             continue;
         }
-        const MotionRecord r = d.record(i);
-        if (r.curve == CurveKind::Arc) {
-            const double rc = std::hypot(p.x - r.centre.x, p.y - r.centre.y);
-            if (rc < std::min(r.radius, r.end_radius) - best || rc > std::max(r.radius, r.end_radius) + best) continue;
+        if (m.curve == CurveKind::Arc) {  // the ring between the two radii, before the whole record
+            const Point c = d.arc_centre(i), a = d.start_of(i), e = d.end_of(i);
+            const double rc = std::hypot(p.x - c.x, p.y - c.y);
+            const double r0 = std::hypot(a.x - c.x, a.y - c.y), r1 = std::hypot(e.x - c.x, e.y - c.y);
+            if (rc < std::min(r0, r1) - best || rc > std::max(r0, r1) + best) continue;
         }
+        const MotionRecord r = d.record(i);
         pts.clear();
         flatten(r, std::max(0.25 / view_.zoom, kMinChordTolerance), pts, true);
         double dist = 1e300;

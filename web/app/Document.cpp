@@ -120,6 +120,10 @@ double units_length(UnitPoint a, UnitPoint b) {
 Point as_point(UnitPoint u) { return {static_cast<double>(u.x), static_cast<double>(u.y)}; }
 }  // namespace
 
+Point Document::arc_centre(std::size_t i) const {
+    return (motions[i].flags & Motion::kFlagKept) ? kept_record(i).centre : point_mm(arc_centres[arc_rank.rank(i)]);
+}
+
 float Document::kerf_of(std::size_t i) const {
     if (!(motions[i].flags & (Motion::kFlagKerfLeft | Motion::kFlagKerfRight))) return 0.f;
     return value_at(kerfs, i);
@@ -151,7 +155,7 @@ MotionRecord Document::record(std::size_t i) const {
         // The interpreter's numbers: radii and sweep from the integer vectors centre -> start and centre -> end
         // (in the machine frame they are the tape frame's, swapped or mirrored: the same squares, the same
         // dot product and the cross product's sign turned with the sense).
-        const UnitPoint c = arc_centres[arc_rank.rank(i)];
+        const UnitPoint c = arc_centres[arc_rank.rank(i)];  // (arc_centre(i), in units)
         r.centre = point_mm(c);
         r.ccw = (m.flags & Motion::kFlagCcw) != 0;
         r.radius = units_length(c, start) * profile.unit_mm;

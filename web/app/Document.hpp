@@ -41,7 +41,7 @@ struct Motion {
     std::uint8_t flags = 0;  // kFlag*
     static constexpr std::uint8_t kFlagHead2 = 1, kFlagKerfLeft = 2, kFlagKerfRight = 4, kFlagJump = 8,
                                   kFlagCcw = 16,  // arcs: counter-clockwise in machine coordinates
-                                  kFlagKept = 32,
+                                  kFlagKept = 32,  // the full record is in Document::kept
                                   kFlagRapidFeed = 64;  // the feed is the profile's rapid speed (else: `feeds`)
 };
 static_assert(sizeof(Motion) == 16, "Motion must stay compact");
@@ -122,6 +122,8 @@ struct Document {
     [[nodiscard]] Point start_of(std::size_t i) const;
     [[nodiscard]] float feed_of(std::size_t i) const;
     [[nodiscard]] float kerf_of(std::size_t i) const;
+    // The centre of arc i (an arc motion), without working out the rest of its record.
+    [[nodiscard]] Point arc_centre(std::size_t i) const;
     // The full record of motion i (rebuilt from the compact form; `block` left 0: see block_of).
     [[nodiscard]] MotionRecord record(std::size_t i) const;
     // The block of motion i (the motion block on its line).
