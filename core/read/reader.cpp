@@ -426,8 +426,13 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
                 b_room_end = t.blocks_.end_of_room();
             }
             if (blocks % Tape::kWordIndexStride == 0) t.word_index_.push_back(static_cast<std::uint32_t>(wp - t.words_.data()));
-            *bp++ = motion ? Block{offset, line, Block::kNoCode, BlockKind::Motion, static_cast<std::uint8_t>(n | pl.sign_flags)}
-                           : Block{offset, line, static_cast<std::uint16_t>(lead), BlockKind::Function, 0};
+            // One block either way; only its last three fields differ (selected, not branched on).
+            Block& b = *bp++;
+            b.offset = offset;
+            b.line = line;
+            b.code = motion ? Block::kNoCode : static_cast<std::uint16_t>(lead);
+            b.kind = motion ? BlockKind::Motion : BlockKind::Function;
+            b.packed = motion ? static_cast<std::uint8_t>(n | pl.sign_flags) : std::uint8_t{0};
             ++blocks;
             wp += n;
         } else {
