@@ -90,6 +90,13 @@ ByteCounts count_bytes(std::string_view s) {
     return n;
 }
 
+// The position after the line end at `end` (data[end] is CR or LF, end < size): one line end is CR, LF,
+// CR LF or LF CR, so the other of CR and LF right after it belongs to it (CR ^ LF: no branch).
+inline std::uint32_t past_line_end(const unsigned char* data, std::uint32_t end, std::uint32_t size) {
+    const std::uint32_t next = end + 1;
+    return next < size ? next + ((data[next] ^ data[end]) == ('\r' ^ '\n')) : next;
+}
+
 // What the fast path read of one line of digits and signs.
 struct PlainLine {
     int lead_digits = 0;          // digits of the leading unsigned number (function code or head address)
@@ -345,10 +352,7 @@ bool Reader::read_chunk(Tape& chunk, std::size_t max_blocks) {
             pos = size;
             break;
         }
-        // One line end: CR, LF, CR LF or LF CR.
-        const char c = data[end];
-        pos = end + 1;
-        if (pos < size && (data[pos] == '\n' || data[pos] == '\r') && data[pos] != c) ++pos;
+        pos = past_line_end(reinterpret_cast<const unsigned char*>(data), end, size);
         ++line_;
     }
     pos_ = pos;
@@ -394,12 +398,17 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
     const std::size_t blocks_before = blocks;
     bool started = program_started_;
     // Blocks and words are written through local pointers (registers), checked against the room made and
-    // committed when the loop ends or the general path needs the arrays.
-    // Room is made only when a block or a line's words need it: an exact reservation (read_tape) stays exact.
-    Block* bp = t.blocks_.data() + t.blocks_.size();
-    Block* b_room_end = t.blocks_.end_of_room();
-    std::int32_t* wp = t.words_.data() + t.words_.size();
-    std::int32_t* w_room_end = t.words_.end_of_room();
+    // committed when the loop ends or the general path needs the arrays. Room is made only when a block or a
+    // line's words need it: an exact reservation (read_tape) stays exact.
+    Block *bp = nullptr, *b_room_end = nullptr;
+    std::int32_t *wp = nullptr, *w_room_end = nullptr;
+    const auto take_pointers = [&] {
+        bp = t.blocks_.data() + t.blocks_.size();
+        b_room_end = t.blocks_.end_of_room();
+        wp = t.words_.data() + t.words_.size();
+        w_room_end = t.words_.end_of_room();
+    };
+    take_pointers();
     while (pos < size && blocks < max_blocks) {
         if (w_room_end - wp < kMaxPlainWords) [[unlikely]] {
             t.words_.commit_to(wp);
@@ -453,21 +462,14 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
             blocks = chunk_blocks_;
             started = program_started_;
             state_changed = ended_ || in_ignore_ || stopped_ || percent_line_ != 0;
-            bp = t.blocks_.data() + t.blocks_.size();
-            b_room_end = t.blocks_.end_of_room();
-            wp = t.words_.data() + t.words_.size();
-            w_room_end = t.words_.end_of_room();
+            take_pointers();
         }
-        // One line end: CR, LF, CR LF or LF CR.
         pos = static_cast<std::uint32_t>(pl.line_end - base);
         if (pos >= size) {
             pos = size;
             break;
         }
-        const unsigned char c = base[pos];
-        ++pos;
-        // The other of CR and LF right after it belongs to the same line end (CR ^ LF: no branch).
-        if (pos < size) pos += (base[pos] ^ c) == ('\r' ^ '\n');
+        pos = past_line_end(base, pos, size);
         ++line;
         if (state_changed) break;
     }
