@@ -82,7 +82,7 @@ private:
     [[gnu::noinline]] void zero_offset(const Block& b);
     [[gnu::noinline]] void return_to_zero(const Block& b, std::size_t index);
     [[nodiscard]] std::uint8_t function_flags(int code) const { return code < kFunctionCodes ? function_flags_[code] : 0; }
-    // `pre`: the block's MotionMeasure when it was worked out ahead (2 or 5 words), else null.
+    // `pre`: the block's MotionMeasure when it was worked out ahead (arcs), else null.
     void motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre);
     [[gnu::noinline]] bool zero_offset_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w);
     void curve_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre);
@@ -95,7 +95,7 @@ private:
     [[gnu::cold, gnu::noinline]] void warn_arc_zero_radius(const Block& b);
     [[gnu::cold, gnu::noinline]] void warn_arc_off_circle(const Block& b, double r0_units, double r1_units);
     [[gnu::cold, gnu::noinline]] void warn_kerf_radius(const Block& b, double radius_mm);
-    [[gnu::noinline]] void parabola_motion(MotionRecord& m, const Block& b, std::span<const std::int32_t> w, IPoint s_t,
+    [[gnu::noinline]] bool parabola_motion(MotionRecord& m, const Block& b, std::span<const std::int32_t> w, IPoint s_t,
                                            IPoint e_t, IPoint base);
     void event(const Block& b, std::size_t index, EventKind kind, bool has_value = false, double value = 0);
     void warn(DiagCode code, const Block& b, std::string message) { diag(default_severity(code), code, b, std::move(message)); }
@@ -620,16 +620,17 @@ void Machine::curve_motion(const Block& b, std::size_t index, std::span<const st
                 if (inside && m.radius - kerf_offset_mm_ <= 0) warn_kerf_radius(b, m.radius);
             }
         }
-    } else {  // 6 words: parabola (§6)
-        parabola_motion(m, b, w, s_t, e_t, base);
+    } else if (!parabola_motion(m, b, w, s_t, e_t, base)) {  // 6 words: parabola (§6)
+        m.curve = CurveKind::Line;
+        m.length_mm = line_length_mm();
     }
     cur = end;
     emit(m, b, index);
 }
 
 // A parabola block (6 words) into `m`: worked out in the tape frame (start s_t, end e_t) and mapped like every
-// point. Rare: out of the arcs' way.
-void Machine::parabola_motion(MotionRecord& m, const Block& b, std::span<const std::int32_t> w, IPoint s_t, IPoint e_t,
+// point. Rare: out of the arcs' way. Returns false (after E304) when it has no curvature: a straight line then.
+bool Machine::parabola_motion(MotionRecord& m, const Block& b, std::span<const std::int32_t> w, IPoint s_t, IPoint e_t,
                               IPoint base) {
     const double unit = profile_.unit_mm;
     const double tol_units = profile_.arc_tolerance_units;
@@ -642,60 +643,59 @@ void Machine::parabola_motion(MotionRecord& m, const Block& b, std::span<const s
         warn(DiagCode::E304_ParabolaZeroCurvature, b,
              std::string("the parabola's radius of curvature at the vertex (") + (axis_parallel_y ? "YP" : "XP") +
                  ") is 0; expected a non-zero radius");
-        m.curve = CurveKind::Line;
-        m.length_mm = units_length(e_t.x - s_t.x, e_t.y - s_t.y) * unit;  // the straight length (the mapping keeps lengths)
-    } else {
-        ParabolaGeom g;  // tape frame, units
-        double residual = 0;
-        if (axis_parallel_y) {
-            const double xa = (absolute_ ? 0 : sx) + XP;
-            const double yv = sy - (sx - xa) * (sx - xa) / (2 * YP);
-            g.vertex = {xa, yv};
-            g.u = {1, 0};
-            g.n = {0, YP > 0 ? 1.0 : -1.0};
-            g.t0 = sx - xa;
-            g.t1 = ex - xa;
-            residual = ey - (yv + g.t1 * g.t1 / (2 * YP));
-        } else {
-            const double ya = (absolute_ ? 0 : sy) + YP;
-            const double xv = sx - (sy - ya) * (sy - ya) / (2 * XP);
-            g.vertex = {xv, ya};
-            g.u = {0, 1};
-            g.n = {XP > 0 ? 1.0 : -1.0, 0};
-            g.t0 = sy - ya;
-            g.t1 = ey - ya;
-            residual = ex - (xv + g.t1 * g.t1 / (2 * XP));
-        }
-        g.p = std::abs(p_signed);
-        if (std::abs(residual) > tol_units) {
-            warn(DiagCode::E303_ParabolaEndNotOnCurve, b,
-                 "the parabola's end point is " + mm_text(std::abs(residual) * unit) +
-                     " off its curve (measured along the axis); expected at most " + mm_text(tol_units * unit) +
-                     " (arc_tolerance)");
-        }
-        if (g.t1 != g.t0) {
-            const double turn = (g.u.x * g.n.y - g.u.y * g.n.x) * (g.t1 - g.t0);
-            const bool ccw = turn > 0;
-            if (ccw != b.tc_positive()) {
-                warn(DiagCode::W305_ParabolaDirection, b,
-                     std::string("TC says ") + (b.tc_positive() ? "counter-clockwise (+)" : "clockwise (-)") +
-                         " but this parabola piece turns " + (ccw ? "counter-clockwise" : "clockwise") +
-                         "; expected TC " + (ccw ? "+" : "-"));
-            }
-        }
-        // Map to machine millimetres.
-        const Point bm = to_mm(base);
-        const Point v = mapping_.apply(g.vertex.x, g.vertex.y);
-        m.parabola.vertex = {bm.x + v.x * unit, bm.y + v.y * unit};
-        m.parabola.u = mapping_.apply(g.u.x, g.u.y);
-        m.parabola.n = mapping_.apply(g.n.x, g.n.y);
-        m.parabola.p = g.p * unit;
-        m.parabola.t0 = g.t0 * unit;
-        m.parabola.t1 = g.t1 * unit;
-        m.curve = CurveKind::Parabola;
-        m.ccw = b.tc_positive() != mirrors_;
-        m.length_mm = parabola_length(m.parabola);
+        return false;
     }
+    ParabolaGeom g;  // tape frame, units
+    double residual = 0;
+    if (axis_parallel_y) {
+        const double xa = (absolute_ ? 0 : sx) + XP;
+        const double yv = sy - (sx - xa) * (sx - xa) / (2 * YP);
+        g.vertex = {xa, yv};
+        g.u = {1, 0};
+        g.n = {0, YP > 0 ? 1.0 : -1.0};
+        g.t0 = sx - xa;
+        g.t1 = ex - xa;
+        residual = ey - (yv + g.t1 * g.t1 / (2 * YP));
+    } else {
+        const double ya = (absolute_ ? 0 : sy) + YP;
+        const double xv = sx - (sy - ya) * (sy - ya) / (2 * XP);
+        g.vertex = {xv, ya};
+        g.u = {0, 1};
+        g.n = {XP > 0 ? 1.0 : -1.0, 0};
+        g.t0 = sy - ya;
+        g.t1 = ey - ya;
+        residual = ex - (xv + g.t1 * g.t1 / (2 * XP));
+    }
+    g.p = std::abs(p_signed);
+    if (std::abs(residual) > tol_units) {
+        warn(DiagCode::E303_ParabolaEndNotOnCurve, b,
+             "the parabola's end point is " + mm_text(std::abs(residual) * unit) +
+                 " off its curve (measured along the axis); expected at most " + mm_text(tol_units * unit) +
+                 " (arc_tolerance)");
+    }
+    if (g.t1 != g.t0) {
+        const double turn = (g.u.x * g.n.y - g.u.y * g.n.x) * (g.t1 - g.t0);
+        const bool ccw = turn > 0;
+        if (ccw != b.tc_positive()) {
+            warn(DiagCode::W305_ParabolaDirection, b,
+                 std::string("TC says ") + (b.tc_positive() ? "counter-clockwise (+)" : "clockwise (-)") +
+                     " but this parabola piece turns " + (ccw ? "counter-clockwise" : "clockwise") +
+                     "; expected TC " + (ccw ? "+" : "-"));
+        }
+    }
+    // Map to machine millimetres.
+    const Point bm = to_mm(base);
+    const Point v = mapping_.apply(g.vertex.x, g.vertex.y);
+    m.parabola.vertex = {bm.x + v.x * unit, bm.y + v.y * unit};
+    m.parabola.u = mapping_.apply(g.u.x, g.u.y);
+    m.parabola.n = mapping_.apply(g.n.x, g.n.y);
+    m.parabola.p = g.p * unit;
+    m.parabola.t0 = g.t0 * unit;
+    m.parabola.t1 = g.t1 * unit;
+    m.curve = CurveKind::Parabola;
+    m.ccw = b.tc_positive() != mirrors_;
+    m.length_mm = parabola_length(m.parabola);
+    return true;
 }
 
 void Machine::warn_bad_head(const Block& b) {
