@@ -24,20 +24,10 @@ constexpr int kHeads = 2;
 constexpr int kFunctionReturnToZero = 62;  // Woyda
 constexpr int kBurnerCount = 135, kBurnerSpacing = 136;
 
-double units_length(long long dx, long long dy) {
-    const auto x = static_cast<double>(dx), y = static_cast<double>(dy);
-    return std::sqrt(x * x + y * y);
-}
-
 // An arc's radii and sweep from its start, end and centre in the tape frame (unit increments): one
 // formula for measure_motions (incremental, start (0,0)) and the interpreter (any mode).
 MotionMeasure measure_arc(IPoint s, IPoint e, IPoint c, bool tape_ccw) {
-    MotionMeasure a;
-    a.r0 = units_length(s.x - c.x, s.y - c.y);
-    a.r1 = units_length(e.x - c.x, e.y - c.y);
-    const auto point = [](IPoint p) { return Point{static_cast<double>(p.x), static_cast<double>(p.y)}; };
-    a.sweep = arc_sweep(point(s), point(e), point(c), tape_ccw, s.x == e.x && s.y == e.y);
-    return a;
+    return essi::measure_arc(s.x, s.y, e.x, e.y, c.x, c.y, tape_ccw);
 }
 
 // The blocks measure_motions measures: arcs (a line's length is one square root, parabolas are rare: the
@@ -747,6 +737,20 @@ Interpreter::Interpreter(std::string_view source, const Profile& profile, Motion
     : machine_(std::make_unique<detail::Machine>(source, profile, sink, diagnostics)) {}
 Interpreter::~Interpreter() = default;
 void Interpreter::run(const Tape& chunk, std::span<const MotionMeasure> measures) { machine_->run(chunk, measures); }
+
+double units_length(long long dx, long long dy) {
+    const auto x = static_cast<double>(dx), y = static_cast<double>(dy);
+    return std::sqrt(x * x + y * y);
+}
+
+MotionMeasure measure_arc(long long sx, long long sy, long long ex, long long ey, long long cx, long long cy, bool ccw) {
+    MotionMeasure a;
+    a.r0 = units_length(sx - cx, sy - cy);
+    a.r1 = units_length(ex - cx, ey - cy);
+    const auto point = [](long long x, long long y) { return Point{static_cast<double>(x), static_cast<double>(y)}; };
+    a.sweep = arc_sweep(point(sx, sy), point(ex, ey), point(cx, cy), ccw, sx == ex && sy == ey);
+    return a;
+}
 
 void measure_motions(const Tape& chunk, std::vector<MotionMeasure>& out) {
     out.clear();

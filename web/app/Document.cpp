@@ -110,14 +110,10 @@ float value_at(const std::vector<std::pair<std::uint32_t, float>>& changes, std:
     return k == changes.begin() ? 0.f : std::prev(k)->second;
 }
 
-// A length in units between two points in units, as the interpreter measures lines and radii.
-double units_length(UnitPoint a, UnitPoint b) {
-    const auto x = static_cast<double>(static_cast<long long>(b.x) - a.x);
-    const auto y = static_cast<double>(static_cast<long long>(b.y) - a.y);
-    return std::sqrt(x * x + y * y);
+// The length in units between two points in units, by the interpreter's formula.
+double units_between(UnitPoint a, UnitPoint b) {
+    return units_length(static_cast<long long>(b.x) - a.x, static_cast<long long>(b.y) - a.y);
 }
-
-Point as_point(UnitPoint u) { return {static_cast<double>(u.x), static_cast<double>(u.y)}; }
 }  // namespace
 
 Point Document::arc_centre(std::size_t i) const {
@@ -158,12 +154,13 @@ MotionRecord Document::record(std::size_t i) const {
         const UnitPoint c = arc_centres[arc_rank.rank(i)];  // (arc_centre(i), in units)
         r.centre = point_mm(c);
         r.ccw = (m.flags & Motion::kFlagCcw) != 0;
-        r.radius = units_length(c, start) * profile.unit_mm;
-        r.end_radius = units_length(c, m.end_units) * profile.unit_mm;
-        r.sweep = arc_sweep(as_point(start), as_point(m.end_units), as_point(c), r.ccw, start == m.end_units);
+        const MotionMeasure arc = measure_arc(start.x, start.y, m.end_units.x, m.end_units.y, c.x, c.y, r.ccw);
+        r.radius = arc.r0 * profile.unit_mm;
+        r.end_radius = arc.r1 * profile.unit_mm;
+        r.sweep = arc.sweep;
         r.length_mm = r.radius * std::abs(r.sweep);
     } else {
-        r.length_mm = units_length(start, m.end_units) * profile.unit_mm;
+        r.length_mm = units_between(start, m.end_units) * profile.unit_mm;
     }
     return r;
 }

@@ -29,6 +29,14 @@ struct MotionMeasure {
 // The measures of a chunk's arc blocks (motions of 5 words) before its end_block(), in block order, into `out`.
 void measure_motions(const Tape& chunk, std::vector<MotionMeasure>& out);
 
+// The interpreter's formulas on integer points in unit increments (any one frame), for callers that rebuild a
+// motion's numbers from its integer points (the viewer's compact document): the same numbers to the bit.
+// A straight length (a line's, times the unit):
+[[nodiscard]] double units_length(long long dx, long long dy);
+// An arc's radii and sweep from its start (sx, sy), end and centre, `ccw` its sense in that frame:
+[[nodiscard]] MotionMeasure measure_arc(long long sx, long long sy, long long ex, long long ey, long long cx,
+                                        long long cy, bool ccw);
+
 // The machine, fed a chunk of blocks at a time (TapeReader), or a whole tape. Diagnostics of
 // interpretation and geometry are appended to `diagnostics` (columns computed from `source`).
 class Interpreter {
