@@ -109,12 +109,16 @@ struct PlainLine {
 // The bytes read_plain_line may look at from a line's start when it is not told where the bytes end: the
 // leading number and kMaxPlainWords words of at most kMaxWordDigits + 1 digits each are read before it gives up.
 constexpr std::uint32_t kPlainLineReach = (kMaxWordDigits + 2) * (kMaxPlainWords + 1);
+// Lines read_plain_lines reads in one batch without the per-line tests for rare cases, and the bytes a batch
+// may look at (each line within its reach, and the byte after the last line end).
+constexpr std::size_t kBatchLines = 64;
+constexpr std::uint32_t kBatchReach = kBatchLines * kPlainLineReach + 1;
 
 // Reads the unsigned number at p a digit at a time, at most kMaxWordDigits + 1 digits (more is an error the
 // general path reports): its value and the first byte after it. `bounded`: p may reach `stop`. Unrolled:
 // no loop counter, one test a digit.
 template <bool bounded>
-inline const unsigned char* read_number(const unsigned char* p, const unsigned char* stop, std::uint32_t& value) {
+[[gnu::always_inline]] inline const unsigned char* read_number(const unsigned char* p, const unsigned char* stop, std::uint32_t& value) {
     static_assert(kMaxWordDigits == 9, "read_number reads up to 10 digits");
     std::uint32_t v = 0;
     int k = 0;
@@ -137,7 +141,7 @@ done:
 // number of more than kMaxWordDigits digits (leading zeros included), more than kMaxPlainWords words, empty.
 // `bounded`: the line may reach `stop` (the end of the bytes); else kPlainLineReach bytes are readable.
 template <bool bounded>
-inline bool read_plain_line(const unsigned char* first, const unsigned char* stop, std::int32_t* words, PlainLine& out) {
+[[gnu::always_inline]] inline bool read_plain_line(const unsigned char* first, const unsigned char* stop, std::int32_t* words, PlainLine& out) {
     const unsigned char* p = first;
     std::uint32_t lead = 0;
     if (*p != '+' && *p != '-') p = read_number<bounded>(p, stop, lead);  // motions start with a sign
@@ -409,7 +413,55 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
         w_room_end = t.words_.end_of_room();
     };
     take_pointers();
+    // The two common shapes go straight in as blocks; every other line is classified in full. A motion: two,
+    // five or six words. A function without a value that changes no reading state (not 3/4, not an end code).
+    const auto is_motion = [](const PlainLine& pl) {
+        return pl.lead_digits == 0 && (pl.words == 2 || pl.words == 5 || pl.words == 6);
+    };
+    const auto is_function = [this](const PlainLine& pl) {
+        return pl.words == 0 && pl.lead_digits <= kMaxFunctionDigits && pl.lead != kIgnoreOnCode &&
+               pl.lead != kIgnoreOffCode && !end_function_[pl.lead];
+    };
+    // Writes the block of a common line (its words are already in place); the room has been made. One block
+    // either way; only its last three fields differ (selected, not branched on).
+    const auto put_block = [&](const PlainLine& pl, bool motion, std::uint32_t offset) {
+        if (blocks % Tape::kWordIndexStride == 0) t.word_index_.push_back(static_cast<std::uint32_t>(wp - t.words_.data()));
+        Block& b = *bp++;
+        b.offset = offset;
+        b.line = line;
+        b.code = motion ? Block::kNoCode : static_cast<std::uint16_t>(pl.lead);
+        b.kind = motion ? BlockKind::Motion : BlockKind::Function;
+        b.packed = motion ? static_cast<std::uint8_t>(pl.words | pl.sign_flags) : std::uint8_t{0};
+        ++blocks;
+        wp += pl.words;
+    };
     while (pos < size && blocks < max_blocks) {
+        // A batch of common lines, with every per-line test that only guards a rare case hoisted out of it:
+        // the lines cannot reach the end of the bytes, the room for their blocks and words is there, the
+        // chunk has room for all of them and the program has started. The first line that is not a plain
+        // motion or function ends the batch and is read again by the loop below.
+        if (started && size - pos >= kBatchReach && max_blocks - blocks >= kBatchLines &&
+            b_room_end - bp >= static_cast<std::ptrdiff_t>(kBatchLines) &&
+            w_room_end - wp >= static_cast<std::ptrdiff_t>(kBatchLines * kMaxPlainWords)) {
+            const unsigned char* p = base + pos;
+            for (const std::size_t batch_end = blocks + kBatchLines; blocks != batch_end;) {
+                PlainLine pl;
+                if (!read_plain_line<false>(p, stop, wp, pl)) break;
+                const bool motion = is_motion(pl);
+                if (!motion && !is_function(pl)) break;
+                put_block(pl, motion, static_cast<std::uint32_t>(p - base));
+                ++line;
+                // Past the line end: the byte after it is there (kBatchReach), so no end-of-bytes test.
+                const unsigned char* const e = pl.line_end;
+                p = e + 1 + ((e[1] ^ e[0]) == ('\r' ^ '\n'));
+            }
+            const auto batch_end = static_cast<std::uint32_t>(p - base);
+            if (batch_end != pos) {
+                pos = batch_end;
+                continue;
+            }
+            // Its first line was not common: the loop below reads it.
+        }
         if (w_room_end - wp < kMaxPlainWords) [[unlikely]] {
             t.words_.commit_to(wp);
             wp = t.words_.room(kMaxPlainWords);
@@ -424,26 +476,14 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
         const std::uint32_t lead = pl.lead;
         const auto offset = static_cast<std::uint32_t>(first - base);
         bool state_changed = false;
-        // The two common shapes go straight in; everything else is classified in full.
-        const bool motion = pl.lead_digits == 0 && (n == 2 || n == 5 || n == 6);
-        const bool function = n == 0 && pl.lead_digits <= kMaxFunctionDigits && lead != kIgnoreOnCode &&
-                              lead != kIgnoreOffCode && !end_function_[lead];
-        if (started && (motion || function)) {
+        const bool motion = is_motion(pl);
+        if (started && (motion || is_function(pl))) {
             if (bp == b_room_end) [[unlikely]] {
                 t.blocks_.commit_to(bp);
                 bp = t.blocks_.room(1);
                 b_room_end = t.blocks_.end_of_room();
             }
-            if (blocks % Tape::kWordIndexStride == 0) t.word_index_.push_back(static_cast<std::uint32_t>(wp - t.words_.data()));
-            // One block either way; only its last three fields differ (selected, not branched on).
-            Block& b = *bp++;
-            b.offset = offset;
-            b.line = line;
-            b.code = motion ? Block::kNoCode : static_cast<std::uint16_t>(lead);
-            b.kind = motion ? BlockKind::Motion : BlockKind::Function;
-            b.packed = motion ? static_cast<std::uint8_t>(n | pl.sign_flags) : std::uint8_t{0};
-            ++blocks;
-            wp += n;
+            put_block(pl, motion, offset);
         } else {
             // Rare shapes (the first block, a function value, a head address, an end code, 3/4, wrong word
             // counts): classify() with the reader's state brought up to date; it may change that state.
