@@ -68,12 +68,15 @@ TEST(ReadNumbers, LeadingZerosKeepTheirValue) {
     EXPECT_EQ(t.words(0)[1], -7);
 }
 
-// The same line read far from the end of the bytes (the fast path's unchecked reading) and as the last line
-// (checked at every byte): the same block, words and diagnostics, and the values the text says.
+// The same line read far from the end of the bytes (in a batch of common lines, with no end-of-bytes test)
+// and as the last line (checked at every byte): the same block, words and diagnostics, and the values the
+// text says. The filler after it is long enough, and has words enough, for the reader to read in batches
+// (more than 64 lines of 99 bytes, and room for 64 lines of 8 words in read_tape's exact reservation).
 TEST(ReadNumbers, SameBlockFarFromAndAtTheEnd) {
     const essi::Profile profile;
     std::string filler;
-    while (filler.size() < 400) filler += "38\n";
+    std::uint32_t filler_lines = 0;
+    for (; filler.size() < 8000; filler_lines += 2) filler += "+1-2\n38\n";
     struct Case {
         const char* line;
         std::vector<std::int32_t> words;  // expected; empty with `error` for a line that is an error
@@ -116,6 +119,9 @@ TEST(ReadNumbers, SameBlockFarFromAndAtTheEnd) {
             return t.diagnostics().empty() ? std::string() : essi::code_name(t.diagnostics()[0].code);
         };
         EXPECT_EQ(first_code(a), c.error ? c.error : "");
+        // Every line counted: the end code is on the line after the filler.
+        EXPECT_EQ(a.block(a.size() - 1).line, 2 + filler_lines + 1);
+        EXPECT_EQ(a.block(a.size() - 1).code, 63);
         // At the end the tape also lacks its end code (W114) after any error of the line.
         if (c.error) {
             EXPECT_EQ(first_code(b), c.error);
