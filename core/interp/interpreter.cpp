@@ -77,6 +77,9 @@ private:
     [[gnu::noinline]] bool zero_offset_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w);
     void curve_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre);
     void emit(MotionRecord& m, const Block& b, std::size_t index);
+    [[nodiscard]] MotionKind motion_kind() const;
+    [[nodiscard]] double motion_feed() const;
+    void after_motion(const Block& b);
     // Diagnostics that build their message: out of line, so the hot functions stay small.
     [[gnu::cold, gnu::noinline]] void warn_rapid_while_cutting(const Block& b);
     [[gnu::cold, gnu::noinline]] void warn_macro_only(const Block& b);
@@ -459,21 +462,31 @@ inline void Machine::emit(MotionRecord& m, const Block& b, std::size_t index) {
     m.line = b.line;
     m.block = static_cast<std::uint32_t>(index);
     m.tools = tools_;
-    if (tools_ & kCuttingTools) m.kind = MotionKind::Cut;
-    else if (tools_ & kMarkingTools) m.kind = MotionKind::Mark;
-    else if (rapid_) m.kind = MotionKind::Rapid;
-    else m.kind = MotionKind::Travel;
-    if (rapid_ && (tools_ & kCuttingTools)) [[unlikely]] warn_rapid_while_cutting(b);
-    m.feed_mm_min = rapid_ ? profile_.rapid_mm_min : feed_mm_min_;
+    m.kind = motion_kind();
+    m.feed_mm_min = motion_feed();
     m.kerf = kerf_;
     m.kerf_mm = kerf_offset_mm_;
     if (m.kerf != KerfSide::Off && mirrors_) m.kerf = m.kerf == KerfSide::Left ? KerfSide::Right : KerfSide::Left;
+    after_motion(b);
+    if (profile_.table) check_table(m, b);
+    send(m);
+}
+
+// What the tools and rapid make of a motion, and the speed its time is estimated at.
+inline MotionKind Machine::motion_kind() const {
+    if (tools_ & kCuttingTools) return MotionKind::Cut;
+    if (tools_ & kMarkingTools) return MotionKind::Mark;
+    return rapid_ ? MotionKind::Rapid : MotionKind::Travel;
+}
+inline double Machine::motion_feed() const { return rapid_ ? profile_.rapid_mm_min : feed_mm_min_; }
+
+// After every motion: a rapid while cutting is warned about; a one-block rapid (profile) ends.
+inline void Machine::after_motion(const Block& b) {
+    if (rapid_ && (tools_ & kCuttingTools)) [[unlikely]] warn_rapid_while_cutting(b);
     if (rapid_one_block_) {
         rapid_ = false;
         rapid_one_block_ = false;
     }
-    if (profile_.table) check_table(m, b);
-    send(m);
 }
 
 void Machine::check_table(const MotionRecord& m, const Block& b) {
@@ -529,6 +542,16 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
         const IPoint base = absolute_ ? origin_ : cur;
         const IPoint d = map(w[0], w[1]);
         const IPoint end{base.x + d.x, base.y + d.y};
+        const double length_mm = units_length(end.x - cur.x, end.y - cur.y) * profile_.unit_mm;
+        if (stats_ && !profile_.table) {
+            // Only checked (the statistics are the only sink): what they count of a line, without its record.
+            const MotionKind kind = motion_kind();
+            const double feed = motion_feed();
+            after_motion(b);
+            stats_->add_line(kind, 1, to_mm(cur), to_mm(end), length_mm, feed);
+            cur = end;
+            return;
+        }
         MotionRecord& m = record_;
         m.head = 1;
         m.curve = CurveKind::Line;
@@ -537,7 +560,7 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
         m.radius = m.end_radius = m.sweep = 0;
         m.start = to_mm(cur);
         m.end = to_mm(end);
-        m.length_mm = units_length(end.x - cur.x, end.y - cur.y) * profile_.unit_mm;
+        m.length_mm = length_mm;
         cur = end;
         emit(m, b, index);
         return;

@@ -29,18 +29,26 @@ public:
     explicit StatsSink(const Profile& profile) : profile_(profile) {}
 
     void on_motion(const MotionRecord& m) override {
+        if (m.curve == CurveKind::Line) {
+            add_line(m.kind, m.head, m.start, m.end, m.length_mm, m.feed_mm_min);
+            return;
+        }
+        count_motion(m.kind, m.head, m.end, m.length_mm, m.feed_mm_min);
+        // The exact box of a curve costs more than a line's: computed once, used for both boxes. An arc
+        // inside the boxes so far (its ends and its whole circle are) changes neither: its exact box (the
+        // extremes inside the sweep) is needed only when it may reach further.
         const bool cut = m.kind == MotionKind::Cut;
-        count_motion(m);
-        // A line's box is its end points; the exact box of a curve costs more: computed once, used for both.
-        // An arc inside the boxes so far (its ends and its whole circle are) changes neither: its exact box
-        // (the extremes inside the sweep) is needed only when it may reach further.
         if (m.curve == CurveKind::Arc) {
             const Box reach = arc_reach(m);
             if (stats_.motion_bbox.contains(reach) && (!cut || stats_.cut_bbox.contains(reach))) return;
         }
-        const Box box = m.curve == CurveKind::Line ? Box::of(m.start, m.end) : bounding_box(m);
-        stats_.motion_bbox.add(box);
-        if (cut) stats_.cut_bbox.add(box);
+        add_box(bounding_box(m), cut);
+    }
+    // A straight line (what on_motion counts of one): the interpreter calls it directly for the lines of a
+    // tape that is only checked, without making their records.
+    [[gnu::always_inline]] void add_line(MotionKind kind, int head, Point start, Point end, double length_mm, double feed_mm_min) {
+        count_motion(kind, head, end, length_mm, feed_mm_min);
+        add_box(Box::of(start, end), kind == MotionKind::Cut);  // a line's box is its end points
     }
     void on_event(const MachineEvent& e) override { count_event(e.kind, e.value, e.tools_after); }
     // What on_event counts of an event: the interpreter calls it directly, without making the event.
@@ -60,19 +68,23 @@ public:
 
 private:
     // Everything of a motion but its box: the count, the length by kind, the time, the end position.
-    void count_motion(const MotionRecord& m) {
+    void count_motion(MotionKind kind, int head, Point end, double length_mm, double feed_mm_min) {
         ++stats_.motions;
-        switch (m.kind) {
-            case MotionKind::Cut: stats_.cut_length_mm += m.length_mm; break;
-            case MotionKind::Mark: stats_.mark_length_mm += m.length_mm; break;
+        switch (kind) {
+            case MotionKind::Cut: stats_.cut_length_mm += length_mm; break;
+            case MotionKind::Mark: stats_.mark_length_mm += length_mm; break;
             case MotionKind::Rapid:
-                stats_.rapid_length_mm += m.length_mm;
-                stats_.travel_length_mm += m.length_mm;
+                stats_.rapid_length_mm += length_mm;
+                stats_.travel_length_mm += length_mm;
                 break;
-            case MotionKind::Travel: stats_.travel_length_mm += m.length_mm; break;
+            case MotionKind::Travel: stats_.travel_length_mm += length_mm; break;
         }
-        if (m.feed_mm_min > 0) stats_.estimated_time_s += m.length_mm / m.feed_mm_min * 60.0;
-        if (m.head == 1) stats_.end_position = m.end;
+        if (feed_mm_min > 0) stats_.estimated_time_s += length_mm / feed_mm_min * 60.0;
+        if (head == 1) stats_.end_position = end;
+    }
+    void add_box(const Box& box, bool cut) {
+        stats_.motion_bbox.add(box);
+        if (cut) stats_.cut_bbox.add(box);
     }
     // A box that holds the whole arc: its ends, and its circle at the larger of its two radii widened a little,
     // so that no rounding of the exact box's extremes (centre + radius) can pass it.
