@@ -91,6 +91,7 @@ private:
     [[gnu::noinline]] bool parabola_motion(MotionRecord& m, const Block& b, std::span<const std::int32_t> w, IPoint s_t,
                                            IPoint e_t, IPoint base);
     void event(const Block& b, std::size_t index, EventKind kind, bool has_value = false, double value = 0);
+    void send_event(const Block& b, std::size_t index, EventKind kind, bool has_value, double value);
     void warn(DiagCode code, const Block& b, std::string message) { diag(default_severity(code), code, b, std::move(message)); }
     void diag(Severity s, DiagCode code, const Block& b, std::string message) {
         diags_.push_back({s, code, b.line, column_of(source_, b.offset), std::move(message)});
@@ -247,7 +248,9 @@ void Machine::finish() {
     }
 }
 
-void Machine::event(const Block& b, std::size_t index, EventKind kind, bool has_value, double value) {
+// Inlined into function(): every function block ends here.
+[[gnu::always_inline]] inline void Machine::event(const Block& b, std::size_t index, EventKind kind, bool has_value,
+                                                   double value) {
     if (kind == EventKind::End) {
         tools_before_end_ = tools_;
         tools_ = 0;
@@ -256,6 +259,10 @@ void Machine::event(const Block& b, std::size_t index, EventKind kind, bool has_
         stats_->count_event(kind, value, tools_);
         return;
     }
+    send_event(b, index, kind, has_value, value);
+}
+
+void Machine::send_event(const Block& b, std::size_t index, EventKind kind, bool has_value, double value) {
     MachineEvent e;
     e.line = b.line;
     e.block = static_cast<std::uint32_t>(index);
