@@ -88,6 +88,7 @@ private:
     [[gnu::cold, gnu::noinline]] void warn_arc_zero_radius(const Block& b);
     [[gnu::cold, gnu::noinline]] void warn_arc_off_circle(const Block& b, double r0_units, double r1_units);
     [[gnu::cold, gnu::noinline]] void warn_kerf_radius(const Block& b, double radius_mm);
+    [[gnu::cold, gnu::noinline]] void warn_kerf_while_cutting(const Block& b, KerfSide side);
     [[gnu::noinline]] bool parabola_motion(MotionRecord& m, const Block& b, std::span<const std::int32_t> w, IPoint s_t,
                                            IPoint e_t, IPoint base);
     void event(const Block& b, std::size_t index, EventKind kind, bool has_value = false, double value = 0);
@@ -315,12 +316,14 @@ bool Machine::admit_function(const Block& b, bool& has_value, long long value) {
     return true;
 }
 
+void Machine::warn_kerf_while_cutting(const Block& b, KerfSide side) {
+    warn(DiagCode::W204_KerfWhileCutting, b,
+         "kerf compensation switched " + std::string(side == KerfSide::Off ? "off" : "on") +
+             " while a cutting tool is on; expected it before the pierce (7, 53 ...) or after the tool is off");
+}
+
 void Machine::set_kerf(const Block& b, KerfSide side, bool has_value, long long value) {
-    if (tools_ & kCuttingTools) {
-        warn(DiagCode::W204_KerfWhileCutting, b,
-             "kerf compensation switched " + std::string(side == KerfSide::Off ? "off" : "on") +
-                 " while a cutting tool is on; expected it before the pierce (7, 53 ...) or after the tool is off");
-    }
+    if (tools_ & kCuttingTools) [[unlikely]] warn_kerf_while_cutting(b, side);
     kerf_ = side;
     if (side == KerfSide::Off) {
         kerf_offset_mm_ = 0;
