@@ -90,11 +90,15 @@ ByteCounts count_bytes(std::string_view s) {
     return n;
 }
 
-// The position after the line end at `end` (data[end] is CR or LF, end < size): one line end is CR, LF,
-// CR LF or LF CR, so the other of CR and LF right after it belongs to it (CR ^ LF: no branch).
+// The start of the next line after the line end at `end` (a CR or LF), when the byte after it is there to
+// read: one line end is CR, LF, CR LF or LF CR, so the other of CR and LF right after it belongs to it
+// (CR ^ LF: no branch).
+inline const unsigned char* past_line_end(const unsigned char* end) {
+    return end + 1 + ((end[1] ^ end[0]) == ('\r' ^ '\n'));
+}
+// The same as a position, for a line end at `end` < size that may be the last byte.
 inline std::uint32_t past_line_end(const unsigned char* data, std::uint32_t end, std::uint32_t size) {
-    const std::uint32_t next = end + 1;
-    return next < size ? next + ((data[next] ^ data[end]) == ('\r' ^ '\n')) : next;
+    return end + 1 < size ? static_cast<std::uint32_t>(past_line_end(data + end) - data) : end + 1;
 }
 
 // What the fast path read of one line of digits and signs.
@@ -451,9 +455,7 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
                 if (!motion && !is_function(pl)) break;
                 put_block(pl, motion, static_cast<std::uint32_t>(p - base));
                 ++line;
-                // Past the line end: the byte after it is there (kBatchReach), so no end-of-bytes test.
-                const unsigned char* const e = pl.line_end;
-                p = e + 1 + ((e[1] ^ e[0]) == ('\r' ^ '\n'));
+                p = past_line_end(pl.line_end);  // the byte after the line end is there (kBatchReach)
             }
             const auto batch_end = static_cast<std::uint32_t>(p - base);
             if (batch_end != pos) {
