@@ -788,12 +788,14 @@ MotionMeasure measure_arc(long long sx, long long sy, long long ex, long long ey
 
 void measure_motions(const Tape& chunk, std::vector<MotionMeasure>& out) {
     out.clear();
+    // Local pointers and the word count read once: nothing reloads them after each push_back.
     const std::int32_t* w = chunk.all_words().data();
-    const std::size_t end = chunk.end_block();
-    for (std::size_t k = 0; k < end; ++k) {
-        const Block& b = chunk.block(k);
-        if (has_measure(b)) out.push_back(measure_arc({0, 0}, {w[0], w[1]}, {w[2], w[3]}, b.tc_positive()));
-        w += b.word_count();
+    const Block* const blocks = chunk.blocks().data();
+    const Block* const end = blocks + chunk.end_block();
+    for (const Block* b = blocks; b != end; ++b) {
+        const int words = b->word_count();
+        if (has_measure(*b)) out.push_back(measure_arc({0, 0}, {w[0], w[1]}, {w[2], w[3]}, b->tc_positive()));
+        w += words;
     }
 }
 void Interpreter::finish() { machine_->finish(); }
