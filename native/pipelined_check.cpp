@@ -26,7 +26,14 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile)
             Slot& slot = slots[k % slots.size()];
             slot.full.wait(true, std::memory_order_acquire);
             const bool more = reader.read_chunk(slot.chunk, kPipelineChunkBlocks);
-            measure_motions(slot.chunk, slot.measures);  // the arcs' square roots and atan2s, off the interpreting thread
+            // The arcs' square roots and atan2s, off the interpreting thread, but only while a chunk waits for
+            // it besides the one it is checking (this thread is ahead): else the chunk goes at once and the
+            // interpreter measures its arcs itself (the same formula, the same numbers). The two threads
+            // balance their work so, whichever is faster on the machine.
+            std::size_t full = 0;
+            for (const Slot& s : slots) full += s.full.load(std::memory_order_relaxed) ? 1 : 0;
+            if (full >= 2) measure_motions(slot.chunk, slot.measures);
+            else slot.measures.clear();
             slot.last = !more;
             slot.full.store(true, std::memory_order_release);
             slot.full.notify_one();

@@ -559,7 +559,7 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
             const MotionKind kind = motion_kind();
             const double feed = motion_feed();
             after_motion(b);
-            stats_->add_line(kind, 1, to_mm(cur), to_mm(end), length_mm, feed);
+            stats_->add_line(kind, /*head*/ 1, to_mm(cur), to_mm(end), length_mm, feed);
             cur = end;
             return;
         }
