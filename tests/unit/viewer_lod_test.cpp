@@ -10,6 +10,7 @@
 
 #include "../bench/nest_generator.hpp"
 #include "app/Document.hpp"
+#include "essi/geom.hpp"
 #include "essi/profile.hpp"
 #include "render/LodRaster.hpp"
 
@@ -88,6 +89,23 @@ TEST(ViewerLod, EveryMotionIsInEveryLevel) {
             }
         }
     }
+    // Along every arc (drawn from chords a quarter cell from it): its points at a quarter, half and three quarters
+    // of the way are in or next to a cell with the bit, at the finest level.
+    std::size_t arcs = 0;
+    for (std::size_t i = 0; i < d.motions.size(); ++i) {
+        if (d.motions[i].curve != CurveKind::Arc) continue;
+        ++arcs;
+        const MotionRecord r = d.record(i);
+        const auto bit = static_cast<std::uint8_t>(1u << static_cast<int>(r.kind));
+        for (const double f : {0.25, 0.5, 0.75}) {
+            const auto [x, y] = cell_of(lod, d, point_at(r, f), 0);
+            bool near = false;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) near = near || (lod.at(0, x + dx, y + dy) & bit) != 0;
+            ASSERT_TRUE(near) << "arc " << i << " at " << f << ": cell " << x << "," << y;
+        }
+    }
+    EXPECT_GT(arcs, 10000u);
     for (const std::uint32_t i : d.pierces) {
         const auto [x, y] = cell_of(lod, d, d.start_of(i), 0);
         ASSERT_TRUE(lod.at(0, x, y) & LodRaster::kPierceBit) << "pierce at motion " << i;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "essi/interp.hpp"
+
 namespace essi::viewer {
 
 int LodRaster::cells_for(double w, double h, std::size_t motions) {
@@ -43,6 +45,7 @@ bool LodRaster::step(std::size_t max_motions) {
             put(doc.start_of(next_), doc.end_of(next_), kind);
             continue;
         }
+        if (m.curve == CurveKind::Arc && (m.flags & Motion::kFlagKept) == 0 && put_arc(next_, tolerance, kind)) continue;
         scratch_.clear();
         flatten(doc.record(next_), tolerance, scratch_, true);
         for (std::size_t k = 1; k < scratch_.size(); ++k) put(scratch_[k - 1], scratch_[k], kind);
@@ -50,6 +53,44 @@ bool LodRaster::step(std::size_t max_motions) {
     if (next_ < doc.motions.size()) return false;
     scratch_ = std::vector<Point>();
     doc_ = nullptr;
+    return true;
+}
+
+// A compact arc without its whole record: the sweep from the interpreter's formula on its integer points (as
+// Document::record), the chords as essi::flatten counts them, their points by turning the radius vector a fixed
+// angle each step (flatten's point_at takes an arctangent, a sine and a cosine a point: most of this pass's time
+// on arcs). False when the start is not whole units (then the caller flattens the record).
+bool LodRaster::put_arc(std::size_t i, double tolerance, std::uint8_t kind) {
+    const Document& doc = *doc_;
+    const Motion& m = doc.motions[i];
+    const Point s = doc.start_of(i);
+    UnitPoint su;
+    if (!doc.to_units(s, su)) return false;
+    const UnitPoint cu = doc.arc_centres[doc.arc_rank.rank(i)];
+    const MotionMeasure arc =
+        measure_arc(su.x, su.y, m.end_units.x, m.end_units.y, cu.x, cu.y, (m.flags & Motion::kFlagCcw) != 0);
+    const Point c = doc.point_mm(cu), e = doc.point_mm(m.end_units);
+    const double r0 = std::hypot(s.x - c.x, s.y - c.y), r1 = std::hypot(e.x - c.x, e.y - c.y);
+    const double r = std::max(r0, r1);
+    int segments = 1;
+    if (r > tolerance) segments = static_cast<int>(std::ceil(std::abs(arc.sweep) / (2 * std::acos(1 - tolerance / r))));
+    segments = std::min(std::max(segments, std::abs(arc.sweep) > kPi ? 4 : 2), kMaxFlattenSegments);
+    const double ox = doc.origin.x, oy = doc.origin.y;
+    const double step = arc.sweep / segments, cs = std::cos(step), sn = std::sin(step);
+    double ux = r0 > 0 ? (s.x - c.x) / r0 : 1, uy = r0 > 0 ? (s.y - c.y) / r0 : 0;  // unit vector centre -> point
+    Point prev = s;
+    for (int k = 1; k < segments; ++k) {
+        const double nx = ux * cs - uy * sn;
+        uy = ux * sn + uy * cs;
+        ux = nx;
+        const double rk = r0 + (r1 - r0) * k / segments;
+        const Point p{c.x + rk * ux, c.y + rk * uy};
+        add_segment(static_cast<float>(prev.x - ox), static_cast<float>(prev.y - oy), static_cast<float>(p.x - ox),
+                    static_cast<float>(p.y - oy), kind);
+        prev = p;
+    }
+    add_segment(static_cast<float>(prev.x - ox), static_cast<float>(prev.y - oy), static_cast<float>(e.x - ox),
+                static_cast<float>(e.y - oy), kind);
     return true;
 }
 

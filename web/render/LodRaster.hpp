@@ -76,6 +76,7 @@ private:
         return level[static_cast<std::size_t>(y / rows)]
                     [static_cast<std::size_t>(y % rows) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)];
     }
+    bool put_arc(std::size_t motion, double tolerance, std::uint8_t kind);
     void set(int cx, int cy, std::uint8_t bit) {
         if (cx >= 0 && cy >= 0 && cx < width_ && cy < height_) rows_[static_cast<std::size_t>(cy)][cx] |= bit;
     }
