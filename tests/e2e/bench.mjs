@@ -97,7 +97,10 @@ async function measureLoad(browser, baseUrl, tape) {
   const r = await page.evaluate(() => {
     const f = window.__frames;
     const gaps = f.slice(1).map((t, i) => t - f[i]).filter((g, i) => f[i + 1] >= window.__dropT0);
-    return { first_frame_ms: window.__drawnAt - window.__dropT0, ready_ms: window.__readyAt - window.__dropT0,
+    // Where the longest gap ended (ms from the drop): which stage it belongs to.
+    let at = 0, longest = 0;
+    for (let i = 1; i < f.length; ++i) if (f[i] >= window.__dropT0 && f[i] - f[i - 1] > longest) [longest, at] = [f[i] - f[i - 1], f[i]];
+    return { longest_gap_end_ms: Math.round(at - window.__dropT0), first_frame_ms: window.__drawnAt - window.__dropT0, ready_ms: window.__readyAt - window.__dropT0,
              stages: window.__stages.map(([t, st]) => [Math.round(t - window.__dropT0), st]),
              frames: gaps.length, max_gap_ms: Math.max(...gaps) };
   });
@@ -209,7 +212,7 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
         tape: tape.name, bytes: tape.bytes, motions: s.motions, segments: s.segments, blocks: s.blocks_read,
         drop_to_first_frame_ms: Math.round(r.first_frame_ms), drop_to_ready_ms: Math.round(r.ready_ms), stages: r.stages,
         shown_seconds_viewer: s.shown_seconds, load_seconds_viewer: s.load_seconds,
-        frames_while_loading: r.frames, longest_frame_gap_ms: Math.round(r.max_gap_ms),
+        frames_while_loading: r.frames, longest_frame_gap_ms: Math.round(r.max_gap_ms), longest_gap_end_ms: r.longest_gap_end_ms,
         core_bytes_per_block: +perBlock.toFixed(1), budget_bytes: budget,
         viewer_bytes: s.memory_bytes, viewer_parts: s.memory_parts, gpu_bytes: s.gpu_bytes, lod: s.lod,
         wasm_heap: r.after.wasm_heap, wasm_heap_empty_page: r.before.wasm_heap,
@@ -218,7 +221,7 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
       };
       console.log(`   motions ${s.motions}, segments ${s.segments}, blocks ${s.blocks_read}`);
       console.log(`   drop -> first frame ${row.drop_to_first_frame_ms} ms (level of detail ${s.lod.available ? 'made' : 'none'}), ` +
-                  `drop -> ready (every segment on the GPU) ${row.drop_to_ready_ms} ms (${r.frames} frames meanwhile, longest gap ${row.longest_frame_gap_ms} ms)`);
+                  `drop -> ready (every segment on the GPU) ${row.drop_to_ready_ms} ms (${r.frames} frames meanwhile, longest gap ${row.longest_frame_gap_ms} ms, ending ${r.longest_gap_end_ms} ms after the drop)`);
       console.log(`   stages (ms from the drop, seen at animation frames): ${r.stages.map(([t, st]) => `${t} ${st}`).join(', ')}`);
       console.log(`   memory: viewer ${mb(s.memory_bytes)} (${(s.memory_bytes / s.motions).toFixed(0)} B/motion), textures ${mb(s.gpu_bytes)}, wasm heap ${mb(r.after.wasm_heap)}, ` +
                   `JS heap ${mb(r.after.js_heap)}, renderer RSS ${mb(r.after.renderer_rss)} (empty page ${mb(r.before.renderer_rss)}), ` +
