@@ -256,7 +256,7 @@ void App::finish_loading() {
     lod_cells_ = lod_full_cells_ = 0;
     if (d.motions.size() >= kLodMinMotions && !d.bbox.empty) {
         // First the cells the view needs (a cell at most a pixel, as the renderer draws it), when that is well
-        // below what the tape's motions allow: a quarter of the samples for a big tape at the fitted view.
+        // below what the tape's motions allow (samples scale with the cells: 0.4 of them for a big tape fitted here).
         const double w = d.bbox.max_x - d.bbox.min_x, h = d.bbox.max_y - d.bbox.min_y;
         lod_full_cells_ = LodRaster::cells_for(w, h, d.motions.size());
         const double scale = ImGui::GetIO().DisplayFramebufferScale.x > 0 ? ImGui::GetIO().DisplayFramebufferScale.x : 1.0;
