@@ -2,7 +2,9 @@
 // Chromium with SwiftShader (WebGL2 on the CPU), the wasm build's page, generated nesting tapes
 // (tests/bench/nest_generator.hpp through essi_gen_nest).
 //
-//   drop -> first frame   from the drop event until the first animation frame after the tape is drawn
+//   drop -> first frame   from the drop event until the first animation frame after the one that drew the tape
+//                         (state().drawn: its segments, or for big tapes the level of detail while they are made)
+//   drop -> ready         the same until the state says "ready" (every segment made and on the GPU)
 //   panning               while the mouse drags the drawing (1 M motion tape): the time per frame that drew (frames
 //                         with nothing new draw nothing), per mouse move, the animation-frame intervals, the main
 //                         thread's share, and how many frames drew the whole scene again (the rest moved the
@@ -62,25 +64,45 @@ async function memory(browser, page) {
 async function measureLoad(browser, baseUrl, tape) {
   const page = await newPage(browser, baseUrl);
   const before = await memory(browser, page);
-  // Watch every animation frame: the first one after the state says "ready" is the first frame drawn.
+  // Watch every animation frame: the first one after the state says the tape was drawn is the first frame that
+  // shows it; the first one after "ready" comes once every segment is made.
   await page.evaluate(() => {
     window.__frames = [];
+    window.__drawnAt = 0;
     window.__readyAt = 0;
+    window.__stages = [];  // [animation frame time, stage] at each change
+    let drawnSeen = false, readySeen = false;
     const tick = (t) => {
       window.__frames.push(t);
-      if (!window.__readyAt && window.__dropT0 && essikit.state().status === 'ready' && essikit.state().name === window.__want)
-        requestAnimationFrame((t2) => { window.__readyAt = t2; });
-      else if (!window.__readyAt) requestAnimationFrame(tick);
+      if (drawnSeen && !window.__drawnAt) window.__drawnAt = t;
+      if (readySeen && !window.__readyAt) window.__readyAt = t;
+      if (window.__dropT0 && !(drawnSeen && readySeen)) {
+        const s = essikit.state();
+        if (s.name === window.__want || s.status === 'loading') {
+          const stage = s.status === 'loading' ? s.stage : s.status;
+          if (!window.__stages.length || window.__stages.at(-1)[1] !== stage) window.__stages.push([t, stage]);
+        }
+        if (s.name === window.__want) {
+          drawnSeen = drawnSeen || s.drawn;
+          readySeen = readySeen || s.status === 'ready';
+        }
+      }
+      if (!window.__readyAt || !window.__drawnAt) requestAnimationFrame(tick);
     };
     requestAnimationFrame(tick);
   });
   await page.evaluate((n) => { window.__want = n; }, tape.name);
   await dropFromUrl(page, '/gen/' + tape.name, tape.name);
-  await page.waitForFunction(() => window.__readyAt > 0, null, { timeout: 900000, polling: 250 });
+  await page.waitForFunction(() => window.__readyAt > 0 && window.__drawnAt > 0, null, { timeout: 900000, polling: 250 });
   const r = await page.evaluate(() => {
     const f = window.__frames;
     const gaps = f.slice(1).map((t, i) => t - f[i]).filter((g, i) => f[i + 1] >= window.__dropT0);
-    return { first_frame_ms: window.__readyAt - window.__dropT0, frames: gaps.length, max_gap_ms: Math.max(...gaps) };
+    // Where the longest gap ended (ms from the drop): which stage it belongs to.
+    let at = 0, longest = 0;
+    for (let i = 1; i < f.length; ++i) if (f[i] >= window.__dropT0 && f[i] - f[i - 1] > longest) [longest, at] = [f[i] - f[i - 1], f[i]];
+    return { longest_gap_end_ms: Math.round(at - window.__dropT0), first_frame_ms: window.__drawnAt - window.__dropT0, ready_ms: window.__readyAt - window.__dropT0,
+             stages: window.__stages.map(([t, st]) => [Math.round(t - window.__dropT0), st]),
+             frames: gaps.length, max_gap_ms: Math.max(...gaps) };
   });
   const state = await page.evaluate(() => essikit.state());
   const after = await memory(browser, page);
@@ -188,8 +210,9 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
       const budget = 2 * tape.bytes + s.tape_memory_bytes;
       const row = {
         tape: tape.name, bytes: tape.bytes, motions: s.motions, segments: s.segments, blocks: s.blocks_read,
-        drop_to_first_frame_ms: Math.round(r.first_frame_ms), load_seconds_viewer: s.load_seconds,
-        frames_while_loading: r.frames, longest_frame_gap_ms: Math.round(r.max_gap_ms),
+        drop_to_first_frame_ms: Math.round(r.first_frame_ms), drop_to_ready_ms: Math.round(r.ready_ms), stages: r.stages,
+        shown_seconds_viewer: s.shown_seconds, load_seconds_viewer: s.load_seconds,
+        frames_while_loading: r.frames, longest_frame_gap_ms: Math.round(r.max_gap_ms), longest_gap_end_ms: r.longest_gap_end_ms,
         core_bytes_per_block: +perBlock.toFixed(1), budget_bytes: budget,
         viewer_bytes: s.memory_bytes, viewer_parts: s.memory_parts, gpu_bytes: s.gpu_bytes, lod: s.lod,
         wasm_heap: r.after.wasm_heap, wasm_heap_empty_page: r.before.wasm_heap,
@@ -197,7 +220,9 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
         renderer_rss: r.after.renderer_rss, renderer_rss_before: r.before.renderer_rss, gpu_rss: r.after.gpu_rss,
       };
       console.log(`   motions ${s.motions}, segments ${s.segments}, blocks ${s.blocks_read}`);
-      console.log(`   drop -> first frame ${row.drop_to_first_frame_ms} ms (${r.frames} frames meanwhile, longest gap ${row.longest_frame_gap_ms} ms)`);
+      console.log(`   drop -> first frame ${row.drop_to_first_frame_ms} ms (level of detail ${s.lod.available ? 'made' : 'none'}), ` +
+                  `drop -> ready (every segment on the GPU) ${row.drop_to_ready_ms} ms (${r.frames} frames meanwhile, longest gap ${row.longest_frame_gap_ms} ms, ending ${r.longest_gap_end_ms} ms after the drop)`);
+      console.log(`   stages (ms from the drop, seen at animation frames): ${r.stages.map(([t, st]) => `${t} ${st}`).join(', ')}`);
       console.log(`   memory: viewer ${mb(s.memory_bytes)} (${(s.memory_bytes / s.motions).toFixed(0)} B/motion), textures ${mb(s.gpu_bytes)}, wasm heap ${mb(r.after.wasm_heap)}, ` +
                   `JS heap ${mb(r.after.js_heap)}, renderer RSS ${mb(r.after.renderer_rss)} (empty page ${mb(r.before.renderer_rss)}), ` +
                   `GPU process RSS ${mb(r.after.gpu_rss)}; budget 2 x ${mb(tape.bytes)} + ${perBlock.toFixed(1)} B/block x ${s.blocks_read} = ${mb(budget)}`);

@@ -504,7 +504,7 @@ test('a 50 MB tape loads with a moving progress bar while the page keeps drawing
   const t0 = Date.now();
   for (;;) {
     const asked = Date.now();
-    const s = await page.evaluate(() => { const st = essikit.state(); return { status: st.status, progress: st.progress, name: st.name, frames: window.__frames.length }; });
+    const s = await page.evaluate(() => { const st = essikit.state(); return { status: st.status, progress: st.progress, name: st.name, drawn: st.drawn, lod: !!(st.lod && st.lod.available), frames: window.__frames.length }; });
     samples.push({ ...s, answer_ms: Date.now() - asked, t: Date.now() - t0 });
     if (s.name === name && s.status === 'ready') break;
     assert.ok(Date.now() - t0 < 600000, 'the 50 MB tape did not load in 10 minutes');
@@ -520,8 +520,12 @@ test('a 50 MB tape loads with a moving progress bar while the page keeps drawing
   const state = await page.evaluate(() => essikit.state());
   console.log(`50 MB: ${samples.at(-1).t} ms to load, ${loading.length} samples while loading, progress rose ${rising} times, ` +
               `${frameTimes.length} frames, longest frame gap ${maxGap.toFixed(0)} ms, slowest answer ${maxAnswer} ms, ` +
-              `memory_bytes ${state.memory_bytes}`);
+              `memory_bytes ${state.memory_bytes}, drawn from the level of detail at ${loading.find((s) => s.drawn && s.name === name)?.t} ms`);
   assert.ok(rising >= 5, `the progress bar did not move: ${JSON.stringify(progress)}`);
+  // The level of detail is made before the exact segments: the tape is on the screen from it while its 7 M
+  // segments are made and uploaded (seconds: many 200 ms samples).
+  const overview = loading.filter((s) => s.name === name && s.drawn && s.lod);
+  assert.ok(overview.length >= 1, 'the tape was not drawn from its level of detail while its segments were made');
   assert.ok(frameTimes.length >= 20, 'requestAnimationFrame stopped while loading');
   assert.ok(maxGap < 5000, `the page froze for ${maxGap} ms`);
   // (no screenshot: drawing 7 M segments takes SwiftShader seconds a frame, see docs/performance.md)
@@ -533,18 +537,16 @@ test('a 50 MB tape loads with a moving progress bar while the page keeps drawing
 
 // The budget of issue 3: the page's memory for a tape stays below 2 x its bytes + what the core's Tape of it holds
 // (tape_memory_bytes: 12 bytes a block, 4 a word). Checked on the viewer's own count and on the WASM heap: the
-// peak of malloc's footprint (what HEAPU8 must hold; it never shrinks) and HEAPU8's growth. A 1.35 MB tape (96 000
-// motions: below the level of detail's threshold, whose raster is a fixed few MB; the loader's fixed few hundred
-// KB, and where the allocator leaves holes, which varies with the timing of the slices, weigh less than on a
-// smaller tape).
-test('the memory of a loaded tape stays below 2 x its bytes + the core\'s bytes per block', async () => {
-  const name = generatedTape(1.35);
+// peak of malloc's footprint (what HEAPU8 must hold; it never shrinks) and HEAPU8's growth. Returns the state.
+async function assertMemoryBudget(mb) {
+  const name = generatedTape(mb);
   const bytes = fs.statSync(path.join(genDir, name)).size;
   const page = await newPage();
   const heap = () => page.evaluate(() => ({ length: Module.HEAPU8.length, ...JSON.parse(Module.UTF8ToString(Module._essi_heap())) }));
   const empty = await heap();
   await dropFromUrl(page, '/gen/' + name, name);
-  await page.waitForFunction((n) => { const s = essikit.state(); return s.name === n && s.status === 'ready'; }, name,
+  // (also the work after "ready": a big tape's finer level of detail)
+  await page.waitForFunction((n) => { const s = essikit.state(); return s.name === n && s.status === 'ready' && !s.busy; }, name,
                              { timeout: 300000, polling: 200 });
   const loaded = await heap();
   const state = await page.evaluate(() => essikit.state());
@@ -553,12 +555,30 @@ test('the memory of a loaded tape stays below 2 x its bytes + the core\'s bytes 
   console.log(`memory of ${name} (${bytes} bytes, ${state.motions} motions, ${state.blocks_read} blocks): viewer ` +
               `${state.memory_bytes} (${(state.memory_bytes / state.motions).toFixed(1)} B/motion), heap peak ` +
               `${loaded.peak - empty.footprint} over the empty page, HEAPU8 ${empty.length} -> ${loaded.length}; ` +
-              `budget ${budget} (${perBlock.toFixed(1)} B/block)`);
+              `budget ${budget} (${perBlock.toFixed(1)} B/block), level of detail ${JSON.stringify(state.lod)}`);
   assert.ok(perBlock > 12 && perBlock < 24, `the core's bytes per block: ${perBlock}`);
   assert.ok(state.memory_bytes < budget, `viewer memory ${state.memory_bytes} over the budget ${budget}: ${JSON.stringify(state.memory_parts)}`);
   assert.ok(loaded.peak - empty.footprint < budget, `WASM heap peak ${loaded.peak - empty.footprint} over the budget ${budget}`);
   assert.ok(loaded.length - empty.length < budget, `WASM heap grew by ${loaded.length - empty.length}, over the budget ${budget}`);
   await page.close();
+  return state;
+}
+
+// A 1.35 MB tape (96 000 motions: below the level of detail's threshold; the loader's fixed few hundred KB, and
+// where the allocator leaves holes, which varies with the timing of the slices, weigh less than on a smaller tape).
+test('the memory of a loaded tape stays below 2 x its bytes + the core\'s bytes per block', async () => {
+  const state = await assertMemoryBudget(1.35);
+  assert.ok(state.motions < 100000 && !state.lod.available, `${state.motions} motions, level of detail ${state.lod.available}`);
+});
+
+// A 2.1 MB tape (about 150 000 motions: just above the level of detail's threshold, where its raster weighs most
+// against the budget; it is sized by the tape's motions, LodRaster::cells_for).
+test('the memory of a tape with a level of detail (150 000 motions) stays within the same budget', async () => {
+  const state = await assertMemoryBudget(2.1);
+  assert.ok(state.motions > 140000 && state.motions < 160000, `${state.motions} motions`);
+  assert.ok(state.lod.available, 'no level of detail');
+  // The finer level of detail was made (after the one the fitted view needs) and counted in the peak.
+  assert.ok(state.lod.cell_mm < 3000 / 1024, `level of detail of ${state.lod.cell_mm} mm cells`);
 });
 
 // ---- drawing performance: the cached image, panning, level of detail ---------------------------------------

@@ -35,6 +35,9 @@ constexpr double kStepBudgetMs = 30;  // work per frame while loading (the page 
 // Tapes with at least this many motions get a level-of-detail raster for zoomed-out views (below, drawing every
 // segment costs a CPU renderer less than a frame or two).
 constexpr std::size_t kLodMinMotions = 100000;
+// The first level of detail has the cells the view needs when the tape's own (LodRaster::cells_for) are more than
+// this many times those; the finer one follows once the segments are made.
+constexpr double kLodRefineRatio = 1.5;
 // Share links longer than this are refused (browsers and chat programs cut long URLs).
 constexpr std::size_t kMaxShareTapeBytes = 4u << 20;
 
@@ -163,10 +166,23 @@ void App::step_loading() {
         }
         return;
     }
+    const double until = glfwGetTime() + kStepBudgetMs / 1000.0;
+    // A big tape's level of detail goes first (one pass over the motions, arcs at a chord of a quarter cell), with
+    // the cells the view needs: the fitted view shows the tape from it while the exact segments are made. The
+    // finer one (LodRaster::cells_for, for zooms between the fit and the segments) is made after them; a rebuild
+    // at another tolerance goes before it.
+    if (lod_building_ && (first_build_ || !building_)) {
+        bool done = false;
+        while (!done && glfwGetTime() < until) done = lod_.step(kBuildMotionsPerStep);
+        if (!done) return;
+        lod_building_ = false;
+        lod_.finish();
+        if (graphics_ok_) renderer_.upload_lod(lod_);
+        lod_.release();  // the GPU has it
+    }
     if (building_) {
         // Flatten and upload in the same slice: the segments go to the GPU a few texture rows at a time, so
         // no frame builds or uploads the whole stream (and no CPU copy of it is kept).
-        const double until = glfwGetTime() + kStepBudgetMs / 1000.0;
         bool done = false;
         while (!done && glfwGetTime() < until) {
             done = building_->step(kBuildMotionsPerStep);
@@ -180,14 +196,14 @@ void App::step_loading() {
             renderer_.release(gpu_);
             gpu_ = std::move(gpu_building_);
             gpu_building_ = GpuPath{};
-            if (first_build_ && lod_.active()) {  // (rebuilds at other tolerances do not feed it)
-                lod_.finish();
-                if (graphics_ok_) renderer_.upload_lod(lod_);
-                lod_.release();  // the GPU has it
-            }
             if (first_build_) {
                 first_build_ = false;
                 load_seconds_ = glfwGetTime() - load_started_;
+                if (lod_cells_ > 0 && lod_cells_ < lod_full_cells_) {  // the finer level of detail
+                    lod_.begin(*doc_, lod_full_cells_);
+                    lod_cells_ = lod_full_cells_;
+                    lod_building_ = lod_.active();
+                }
             }
         }
     }
@@ -236,17 +252,41 @@ void App::finish_loading() {
     building_->markers = std::vector<MarkerInstance>();  // (the GPU has them)
     renderer_.clear_lod();
     lod_ = LodRaster{};
-    if (d.motions.size() >= kLodMinMotions) {
-        lod_.begin(d.bbox, d.origin);
-        for (const std::uint32_t i : d.pierces) {
-            const Point p = d.start_of(i);
-            lod_.add_pierce(static_cast<float>(p.x - d.origin.x), static_cast<float>(p.y - d.origin.y));
-        }
-        building_->lod = &lod_;
+    lod_building_ = false;
+    lod_cells_ = lod_full_cells_ = 0;
+    if (d.motions.size() >= kLodMinMotions && !d.bbox.empty) {
+        // First the cells the view needs (a cell at most a pixel, as the renderer draws it), when that is well
+        // below what the tape's motions allow (samples scale with the cells: 0.4 of them for a big tape fitted here).
+        const double w = d.bbox.max_x - d.bbox.min_x, h = d.bbox.max_y - d.bbox.min_y;
+        lod_full_cells_ = LodRaster::cells_for(w, h, d.motions.size());
+        const double scale = ImGui::GetIO().DisplayFramebufferScale.x > 0 ? ImGui::GetIO().DisplayFramebufferScale.x : 1.0;
+        const double view_cells = std::max(w, h) * view_.zoom * scale / Renderer::kLodMaxCellPx + 2;
+        lod_cells_ = view_cells * kLodRefineRatio < lod_full_cells_
+                         ? std::max(LodRaster::kMinCells, static_cast<int>(std::ceil(view_cells)))
+                         : lod_full_cells_;
+        lod_.begin(d, lod_cells_);
+        lod_building_ = lod_.active();
     }
     first_build_ = true;
+    shown_seconds_ = 0;
     // Small tapes: build at once so the first frame after loading shows the drawing.
     if (d.motions.size() <= kBuildMotionsPerFrame) step_loading();
+}
+
+bool App::loading() const { return loader_ || ((lod_building_ || building_) && first_build_); }
+
+// Reading and checking up to 0.7, then the level of detail (big tapes) and the segments.
+float App::load_progress() const {
+    if (loader_) return loader_->progress();
+    if (lod_building_ && first_build_) return 0.7f + 0.1f * lod_.progress();
+    const float from = renderer_.has_lod() ? 0.8f : 0.7f;
+    return building_ ? from + (1.f - from) * building_->progress() : 1.f;
+}
+
+const char* App::load_stage() const {
+    if (loader_) return loader_->stage();
+    if (lod_building_ && first_build_) return "drawing the overview";
+    return "building the drawing";
 }
 
 double App::desired_tolerance() const {
@@ -302,12 +342,13 @@ void App::frame() {
         o.framebuffer_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.f;
         o.layer_mask = layer_mask();
         o.panel_color = panel_color();
-        // While the first build runs nothing of the new tape is drawn (the frames stay cheap).
-        o.marker_mask = first_build_ ? 0 : (show_pierces_ ? 1 : 0) | (show_start_ ? 2 : 0);
-        // Zoomed out on a big tape: the level-of-detail raster instead of millions of sub-pixel segments.
+        // Zoomed out on a big tape: the level-of-detail raster instead of millions of sub-pixel segments (also
+        // while the first build makes the exact segments: the raster is made before them).
         o.lod = !playback_ && renderer_.has_lod() &&
                 renderer_.lod_cell_mm() * view_.zoom * o.framebuffer_scale <= Renderer::kLodMaxCellPx;
         lod_drawn_ = o.lod;
+        // While the first build runs nothing else of the new tape is drawn (the frames stay cheap).
+        o.marker_mask = first_build_ && !o.lod ? 0 : (show_pierces_ ? 1 : 0) | (show_start_ ? 2 : 0);
         if (doc_ && buffers_.first_segment.size() == doc_->motions.size() + 1) {
             if (playback_) {
                 const std::size_t k = playback_limit_motions();
@@ -326,6 +367,8 @@ void App::frame() {
             o.selection_count = count;
         }
         const GpuPath* path = first_build_ ? nullptr : &gpu_;
+        tape_drawn_ = doc_ && (o.lod || path != nullptr);
+        if (tape_drawn_ && shown_seconds_ == 0) shown_seconds_ = glfwGetTime() - load_started_;
         scene_ = SceneFrame{view_, fb_w, fb_h, o, show_grid_ ? grid_step(view_.zoom) : 1e30,
                             doc_ ? doc_->origin : Point{}, path, path ? path->version : 0};
     }
@@ -1089,14 +1132,14 @@ void App::draw_overlays() {
 void App::draw_messages() {
     const Rect& a = view_.area;
     const ImVec2 centre(a.x + a.w / 2, a.y + a.h / 2);
-    if (loader_ || (building_ && first_build_)) {
-        ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    if (loading()) {
+        // Over the middle of the drawing area; at its top once the level of detail shows the tape.
+        if (tape_drawn_) ImGui::SetNextWindowPos(ImVec2(centre.x, a.y + 8), ImGuiCond_Always, ImVec2(0.5f, 0.f));
+        else ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
         ImGui::SetNextWindowSize(ImVec2(420, 0));
         ImGui::Begin("Loading", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove);
-        const float p = loader_ ? loader_->progress() : 0.7f + 0.3f * building_->progress();
-        ImGui::Text("Loading %s (%.1f MB): %s", loading_name_.c_str(), loading_bytes_ / 1048576.0,
-                    loader_ ? loader_->stage() : "building the drawing");
-        ImGui::ProgressBar(p, ImVec2(-1, 0));
+        ImGui::Text("Loading %s (%.1f MB): %s", loading_name_.c_str(), loading_bytes_ / 1048576.0, load_stage());
+        ImGui::ProgressBar(load_progress(), ImVec2(-1, 0));
         ImGui::End();
     } else if (!doc_) {
         ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
@@ -1188,10 +1231,17 @@ void App::draw_help() {
 // ---------------------------------------------------------------------------------------------------------
 std::string App::state_json() const {
     nlohmann::json j;
-    j["status"] = loader_ || (building_ && first_build_) ? "loading" : doc_ ? "ready" : "empty";
-    if (loader_) j["progress"] = loader_->progress();
-    else if (building_ && first_build_) j["progress"] = 0.7f + 0.3f * building_->progress();
-    if (loader_) j["stage"] = loader_->stage();
+    j["status"] = loading() ? "loading" : doc_ ? "ready" : "empty";
+    if (loading()) {
+        j["progress"] = load_progress();
+        j["stage"] = load_stage();
+    }
+    // The last frame drew the tape (its segments, or its level of detail while the segments are made), and how
+    // long after the start of the load the first such frame came.
+    j["drawn"] = tape_drawn_;
+    // Work left after "ready" too: the finer level of detail of a big tape, a rebuild at another tolerance.
+    j["busy"] = has_background_work();
+    j["shown_seconds"] = shown_seconds_;
     j["name"] = doc_ ? doc_->name : (loader_ ? loading_name_ : "");
     j["profile"] = profile_name_;
     if (doc_) {

@@ -39,7 +39,7 @@ public:
     // draw the same pixels as the last one draws nothing: no GPU work while nothing moves.
     void render(bool keep_unchanged);
     // Loading or building work left to do (the browser loop also runs slices of it between frames).
-    [[nodiscard]] bool has_background_work() const { return loader_ != nullptr || building_ != nullptr; }
+    [[nodiscard]] bool has_background_work() const { return loader_ != nullptr || lod_building_ || building_ != nullptr; }
     // One slice (about kStepBudgetMs) of that work outside a frame; returns has_background_work().
     bool background_step();
     // Starts loading a tape (bytes as read from the file). `view`, when given, replaces the fit at the end.
@@ -62,6 +62,9 @@ private:
     void step_loading();
     void finish_loading();
     void maybe_rebuild();
+    [[nodiscard]] bool loading() const;  // reading, or making the first drawing of a tape
+    [[nodiscard]] float load_progress() const;
+    [[nodiscard]] const char* load_stage() const;
     void draw_toolbar();
     void draw_left_panel();
     void draw_right_panel();
@@ -118,8 +121,13 @@ private:
     GpuPath gpu_;                   // the drawn segments
     std::unique_ptr<PathBuffers> building_;  // being built (first build or a rebuild at a new tolerance)
     GpuPath gpu_building_;          // its segments, uploaded as they are made
-    LodRaster lod_;                 // zoomed-out drawing of big tapes, made during the first build
+    LodRaster lod_;                 // zoomed-out drawing of big tapes, made before the first build
+    bool lod_building_ = false;     // lod_ is being made (the first build waits for it; a finer one waits for builds)
+    int lod_cells_ = 0;             // cells on the longer side of the level of detail being made or drawn
+    int lod_full_cells_ = 0;        // the tape's own (LodRaster::cells_for)
     bool lod_drawn_ = false;        // the last frame drew it
+    bool tape_drawn_ = false;       // the last frame drew the tape (its segments or its level of detail)
+    double shown_seconds_ = 0;      // from the start of the load to the first frame that drew the tape
     bool first_build_ = false;
     std::string profile_name_ = "iso6582";
     std::string banner_;            // a problem with the whole file ("not an ESSI tape ...")

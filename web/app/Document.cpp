@@ -448,8 +448,13 @@ bool DocumentLoader::step(double budget_ms) {
             }
             d.blocks += chunk_.size();
             d.block_words += chunk_.all_words().size();
-            grow(d.motions, chunk_.size(), read_pos_, d.bytes.size());
-            grow(d.arc_centres, chunk_.size(), read_pos_, d.bytes.size());
+            // Room for the chunk's motions (a motion block makes at most one): counting the chunk's blocks instead
+            // made the last chunks re-reserve the whole stream that was reserved for every motion line at once (a
+            // copy of it, and a hole the size of it in the heap, at 150 000 motions a quarter of the budget).
+            std::size_t motion_blocks = 0;
+            for (std::size_t b = 0; b < chunk_.size(); ++b) motion_blocks += chunk_.block(b).kind == BlockKind::Motion;
+            grow(d.motions, motion_blocks, read_pos_, d.bytes.size());
+            grow(d.arc_centres, motion_blocks, read_pos_, d.bytes.size());
             checker_->check_chunk(chunk_);
             if (now_ms() > until) return false;
         }

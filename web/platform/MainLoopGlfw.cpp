@@ -1,12 +1,23 @@
 // Desktop main loop: a GLFW window with an OpenGL ES 3.0 context (the API WebGL2 has), so the shaders and
-// the renderer are the same text as in the browser. Usage: essi_viewer [TAPE]
+// the renderer are the same text as in the browser.
+//
+// Usage: essi_viewer [--frames N] [--screenshot FILE.ppm] [--state FILE.json] [TAPE]
+//   --frames N          draw N frames once the tape is loaded and drawn (or from the start without a tape), then
+//                       exit (tests and scripts; without it the window stays until it is closed)
+//   --screenshot FILE   with --frames: the last frame as a binary PPM (P6, RGB, top row first)
+//   --state FILE        with --frames: the viewer's state JSON at the end (the page's window.essikit.state())
+#include <GLES3/gl3.h>
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "app/App.hpp"
 
@@ -15,8 +26,60 @@ bool read_file(const std::string& path, std::string& out);  // FilesGlfw.cpp
 void install_drop_handler(GLFWwindow* window);               // FilesGlfw.cpp
 }  // namespace essi::viewer::platform
 
+namespace {
+
+struct Options {
+    std::string tape;
+    long frames = -1;  // -1: run until the window closes
+    std::string screenshot, state;
+};
+
+int usage() {
+    std::fprintf(stderr, "usage: essi_viewer [--frames N] [--screenshot FILE.ppm] [--state FILE.json] [TAPE]\n");
+    return 2;
+}
+
+// The back buffer of the frame just drawn (before the swap), bottom row first as GL reads it, written top first.
+bool write_screenshot(const std::string& path, int w, int h) {
+    std::vector<unsigned char> rgba(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    if (glGetError() != GL_NO_ERROR) return false;
+    std::ofstream out(path, std::ios::binary);
+    out << "P6\n" << w << " " << h << "\n255\n";
+    std::vector<unsigned char> row(static_cast<std::size_t>(w) * 3);
+    for (int y = h - 1; y >= 0; --y) {
+        const unsigned char* src = rgba.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(w) * 4;
+        for (int x = 0; x < w; ++x) std::memcpy(&row[static_cast<std::size_t>(x) * 3], src + x * 4, 3);
+        out.write(reinterpret_cast<const char*>(row.data()), static_cast<std::streamsize>(row.size()));
+    }
+    return static_cast<bool>(out);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     using namespace essi::viewer;
+    Options opt;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        const bool has_value = i + 1 < argc;
+        if (a == "--frames" && has_value) {
+            char* end = nullptr;
+            opt.frames = std::strtol(argv[++i], &end, 10);
+            if (*end != '\0' || opt.frames < 1) return usage();
+        } else if (a == "--screenshot" && has_value) {
+            opt.screenshot = argv[++i];
+        } else if (a == "--state" && has_value) {
+            opt.state = argv[++i];
+        } else if (a == "--help" || a == "-h" || (a.size() > 1 && a[0] == '-') || !opt.tape.empty()) {
+            return usage();
+        } else {
+            opt.tape = a;
+        }
+    }
+    if ((!opt.screenshot.empty() || !opt.state.empty()) && opt.frames < 0) return usage();
+    int status = 0;
     glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "essi_viewer: GLFW error %d: %s\n", code, text); });
     if (!glfwInit()) {
         std::fprintf(stderr, "essi_viewer: cannot initialise GLFW (no display?)\n");
@@ -47,18 +110,41 @@ int main(int argc, char** argv) {
         App app(window);
         if (!app.init_graphics()) std::fprintf(stderr, "essi_viewer: the drawing programs did not compile\n");
         platform::install_drop_handler(window);
-        if (argc > 1) {
+        if (!opt.tape.empty()) {
             std::string bytes;
-            if (platform::read_file(argv[1], bytes)) app.load(argv[1], std::move(bytes));
-            else std::fprintf(stderr, "essi_viewer: cannot read %s\n", argv[1]);
+            if (platform::read_file(opt.tape, bytes)) {
+                app.load(opt.tape, std::move(bytes));
+            } else {
+                std::fprintf(stderr, "essi_viewer: cannot read %s\n", opt.tape.c_str());
+                status = 2;
+            }
         }
-        while (!glfwWindowShouldClose(window)) {
+        long frames_left = opt.frames;  // counted once the loading and the drawing's build are done
+        while (status == 0 && !glfwWindowShouldClose(window)) {
             glfwPollEvents();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
             app.frame();
             ImGui::Render();
             app.render(false);  // (after a swap the back buffer must be drawn again)
+            if (frames_left > 0 && !app.has_background_work() && --frames_left == 0) {
+                int w = 0, h = 0;
+                glfwGetFramebufferSize(window, &w, &h);
+                if (!opt.screenshot.empty() && !write_screenshot(opt.screenshot, w, h)) {
+                    std::fprintf(stderr, "essi_viewer: cannot write %s\n", opt.screenshot.c_str());
+                    status = 1;
+                }
+                if (!opt.state.empty()) {
+                    std::ofstream out(opt.state, std::ios::binary);
+                    out << app.state_json() << "\n";
+                    if (!out) {
+                        std::fprintf(stderr, "essi_viewer: cannot write %s\n", opt.state.c_str());
+                        status = 1;
+                    }
+                }
+                glfwSwapBuffers(window);
+                break;
+            }
             glfwSwapBuffers(window);
         }
     }
@@ -66,5 +152,5 @@ int main(int argc, char** argv) {
     ImGui::DestroyContext();
     glfwDestroyWindow(window);
     glfwTerminate();
-    return 0;
+    return status;
 }

@@ -1,25 +1,49 @@
 // The level of detail for zoomed-out views of big tapes: the drawing as a raster of kinds, built once per tape
-// while its segments are made. Each cell of the finest level (kCells on the tape's longer side) holds a bit per
-// motion kind that crosses it and one for a pierce in it; each coarser level ORs 2 x 2 cells, so a thin line
-// never disappears when zooming out. When a cell is at most about a pixel the renderer draws this raster (one
-// rectangle, a few texel reads a pixel) instead of millions of sub-pixel segments.
+// in its own pass over the motions (in steps, before the exact segments are made, so that a big tape is on the
+// screen from the raster while they are). Each cell of the finest level (at most kMaxCells on the tape's longer
+// side, fewer for smaller tapes: see cells_for) holds a bit per motion kind that crosses it and one for a pierce
+// in it; each coarser level ORs 2 x 2 cells, so a thin line never disappears when zooming out. When a cell is at
+// most about a pixel the renderer draws this raster (one rectangle, a few texel reads a pixel) instead of
+// millions of sub-pixel segments.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "app/Document.hpp"
 #include "essi/geom.hpp"
 
 namespace essi::viewer {
 
 class LodRaster {
 public:
-    static constexpr int kCells = 2048;           // finest level, on the longer side (GLES 3 guarantees 2048)
+    static constexpr int kMaxCells = 2048;          // finest level, on the longer side (GLES 3 guarantees 2048)
+    static constexpr int kMinCells = 256;           // (a tape with fewer motions than a few thousand has no LOD)
+    // The finest level holds at most this many cells a motion (one byte a cell, while it is built on the CPU):
+    // a tape of 100 000-250 000 motions gets a raster of ~900-1 400 cells on its longer side instead of 2 048,
+    // which keeps the page's memory peak within its budget (docs/performance.md) and still covers a fitted view
+    // of this window size at a cell a pixel; from ~520 000 motions (square tapes) it is the full kMaxCells.
+    static constexpr double kCellsPerMotion = 8;
     static constexpr std::uint8_t kPierceBit = 16;  // bits 0-3: MotionKind
+    // The chord tolerance of the arcs rasterised, in cells.
+    static constexpr double kChordCells = 0.25;
+    // Each level is held in strips of whole rows of about this many bytes, not one block: at the end of a load the
+    // heap has holes of a few hundred KB (the loader's buffers, just freed) that strips fill and a raster of a
+    // megabyte or more would not, so it would grow the heap's peak by its whole size.
+    static constexpr std::size_t kStripBytes = 64u << 10;
+    // Cells on the longer side of a box w x h mm for a tape of `motions` motions.
+    [[nodiscard]] static int cells_for(double w, double h, std::size_t motions);
 
-    // `bbox` in machine mm; the raster is relative to `origin` like the segments.
-    void begin(const Box& bbox, Point origin);
+    // `bbox` in machine mm; the raster is relative to `origin` like the segments; `cells` on the longer side.
+    void begin(const Box& bbox, Point origin, int cells = kMaxCells);
+    // The whole document with `cells` on the longer side (default: cells_for), its pierces; then step()
+    // rasterises its motions.
+    void begin(const Document& doc, int cells = 0);
+    // Rasterises up to `max_motions` more motions of the document given to begin(doc); true when all are in.
+    bool step(std::size_t max_motions);
+    [[nodiscard]] float progress() const;
     void add_segment(float x0, float y0, float x1, float y1, std::uint8_t kind);
     void add_pierce(float x, float y);
     void finish();  // builds the coarser levels
@@ -33,13 +57,28 @@ public:
     [[nodiscard]] int width(int level = 0) const { return level < static_cast<int>(sizes_.size()) ? sizes_[level].first : 0; }
     [[nodiscard]] int height(int level = 0) const { return level < static_cast<int>(sizes_.size()) ? sizes_[level].second : 0; }
     [[nodiscard]] int levels() const { return static_cast<int>(sizes_.size()); }
-    [[nodiscard]] const std::vector<std::uint8_t>& level(int k) const { return data_[static_cast<std::size_t>(k)]; }
+    // Level k as strips of whole rows, bottom row first: strip j holds rows [j x strip_rows(k), ...).
+    [[nodiscard]] const std::vector<std::vector<std::uint8_t>>& strips(int k) const { return data_[static_cast<std::size_t>(k)]; }
+    [[nodiscard]] int strip_rows(int k) const { return rows_for(width(k)); }
+    // The cell (x, y) of level k (tests).
+    [[nodiscard]] std::uint8_t at(int k, int x, int y) const;
     [[nodiscard]] std::size_t memory_bytes() const;
 
 private:
+    [[nodiscard]] static int rows_for(int width) {  // (a power of two)
+        int rows = 1;
+        while (static_cast<std::size_t>(rows) * 2 * static_cast<std::size_t>(std::max(width, 1)) <= kStripBytes) rows *= 2;
+        return rows;
+    }
+    [[nodiscard]] static std::vector<std::vector<std::uint8_t>> blank(int w, int h);
+    [[nodiscard]] static std::uint8_t& cell(std::vector<std::vector<std::uint8_t>>& level, int w, int x, int y) {
+        const int rows = rows_for(w);
+        return level[static_cast<std::size_t>(y / rows)]
+                    [static_cast<std::size_t>(y % rows) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)];
+    }
+    bool put_arc(std::size_t motion, double tolerance, std::uint8_t kind);
     void set(int cx, int cy, std::uint8_t bit) {
-        if (cx >= 0 && cy >= 0 && cx < width_ && cy < height_)
-            data_[0][static_cast<std::size_t>(cy) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(cx)] |= bit;
+        if (cx >= 0 && cy >= 0 && cx < width_ && cy < height_) rows_[static_cast<std::size_t>(cy)][cx] |= bit;
     }
 
     int width_ = 0, height_ = 0;
@@ -47,8 +86,13 @@ private:
     float min_x_ = 0, min_y_ = 0;
     float inv_cell_ = 1;
     bool finished_ = false;
+    int cells_ = kMaxCells;
+    const Document* doc_ = nullptr;
+    std::size_t next_ = 0;
+    std::vector<Point> scratch_;
     std::vector<std::pair<int, int>> sizes_;
-    std::vector<std::vector<std::uint8_t>> data_;
+    std::vector<std::vector<std::vector<std::uint8_t>>> data_;  // level, strip, cells
+    std::vector<std::uint8_t*> rows_;  // the finest level's rows (no division by the strip height per cell)
 };
 
 }  // namespace essi::viewer

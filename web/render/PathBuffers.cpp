@@ -34,7 +34,6 @@ void PathBuffers::put(Point a, Point b, std::uint8_t kind) {
     const float x1 = static_cast<float>(b.x - ox), y1 = static_cast<float>(b.y - oy);
     staged_ends.insert(staged_ends.end(), {x0, y0, x1, y1});
     staged_kinds.push_back(kind);
-    if (lod != nullptr) lod->add_segment(x0, y0, x1, y1, kind);
     ++segment_count;
 }
 

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "app/Document.hpp"
-#include "render/LodRaster.hpp"
 
 namespace essi::viewer {
 
@@ -46,8 +45,6 @@ public:
     // Motion index of segment s.
     [[nodiscard]] std::size_t motion_of_segment(std::size_t s) const;
     [[nodiscard]] std::size_t memory_bytes() const;
-
-    LodRaster* lod = nullptr;  // when set, every segment made is also rasterised into it
 
 private:
     void put(Point a, Point b, std::uint8_t kind);

@@ -284,9 +284,15 @@ void Renderer::upload_lod(const LodRaster& lod) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     lod_bytes_ = 0;
     for (int k = 0; k < lod.levels(); ++k) {
-        glTexImage2D(GL_TEXTURE_2D, k, GL_R8UI, lod.width(k), lod.height(k), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE,
-                     lod.level(k).data());
-        lod_bytes_ += lod.level(k).size();
+        const int w = lod.width(k), rows = lod.strip_rows(k);
+        glTexImage2D(GL_TEXTURE_2D, k, GL_R8UI, w, lod.height(k), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+        int y = 0;
+        for (const std::vector<std::uint8_t>& strip : lod.strips(k)) {
+            const int h = static_cast<int>(strip.size() / static_cast<std::size_t>(w));
+            glTexSubImage2D(GL_TEXTURE_2D, k, 0, y, w, h, GL_RED_INTEGER, GL_UNSIGNED_BYTE, strip.data());
+            y += rows;
+            lod_bytes_ += strip.size();
+        }
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glBindTexture(GL_TEXTURE_2D, 0);
