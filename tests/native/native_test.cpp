@@ -13,6 +13,7 @@
 
 #include "batch.hpp"
 #include "../bench/nest_generator.hpp"
+#include "../unit/test_util.hpp"
 #include "essi/diagnostics.hpp"
 #include "formats.hpp"
 #include "pipelined_check.hpp"
@@ -242,7 +243,7 @@ TEST(Render, LegendAndLayers) {
 }
 
 // `essi check` on two threads (native/pipelined_check.cpp) gives check_tape's result to the bit: the
-// statistics (doubles compared exactly) and every diagnostic, on a tape of many chunks. Whether a chunk's arcs
+// statistics (doubles compared bit for bit) and every diagnostic, on a tape of many chunks. Whether a chunk's arcs
 // are measured by the reading thread or by the interpreter depends on which thread is ahead at that moment,
 // so each tape is checked several times. One tape is valid; in the other, errors and warnings are spread
 // over the chunks (a bad character, an unassigned function, a function with a value it does not take).
@@ -259,39 +260,12 @@ TEST(PipelinedCheck, SameResultAsOneThread) {
         if (++line % 40'009 == 0) flawed += (line / 40'009) % 3 == 0 ? "+1x2\r\n" : (line / 40'009) % 3 == 1 ? "117\r\n" : "7+5\r\n";
     }
     ASSERT_GT(valid.size(), kPipelineMinBytes * 2);
-    const auto expect_same = [](const essi::CheckResult& a, const essi::CheckResult& b) {
-        const essi::Stats &x = a.stats, &y = b.stats;
-        EXPECT_EQ(x.cut_length_mm, y.cut_length_mm);
-        EXPECT_EQ(x.mark_length_mm, y.mark_length_mm);
-        EXPECT_EQ(x.travel_length_mm, y.travel_length_mm);
-        EXPECT_EQ(x.rapid_length_mm, y.rapid_length_mm);
-        EXPECT_EQ(x.pierces, y.pierces);
-        EXPECT_EQ(x.blocks, y.blocks);
-        EXPECT_EQ(x.motions, y.motions);
-        EXPECT_EQ(x.estimated_time_s, y.estimated_time_s);
-        for (const auto& [p, q] : {std::pair{x.cut_bbox, y.cut_bbox}, std::pair{x.motion_bbox, y.motion_bbox}}) {
-            EXPECT_EQ(p.empty, q.empty);
-            EXPECT_EQ(p.min_x, q.min_x);
-            EXPECT_EQ(p.min_y, q.min_y);
-            EXPECT_EQ(p.max_x, q.max_x);
-            EXPECT_EQ(p.max_y, q.max_y);
-        }
-        EXPECT_EQ(x.end_position, y.end_position);
-        ASSERT_EQ(a.diagnostics.size(), b.diagnostics.size());
-        for (std::size_t i = 0; i < a.diagnostics.size(); ++i) {
-            const essi::Diagnostic &d = a.diagnostics[i], &e = b.diagnostics[i];
-            EXPECT_EQ(essi::code_name(d.code), essi::code_name(e.code));
-            EXPECT_EQ(d.line, e.line);
-            EXPECT_EQ(d.column, e.column);
-            EXPECT_EQ(d.message, e.message);
-        }
-    };
     for (const std::string* tape : {static_cast<const std::string*>(&valid), static_cast<const std::string*>(&flawed)}) {
         SCOPED_TRACE(tape == &valid ? "valid tape" : "tape with errors and warnings");
         const essi::CheckResult one = essi::check_tape(*tape, profile);
         EXPECT_GT(one.stats.motions, 100'000u);
         if (tape == &valid) EXPECT_TRUE(one.diagnostics.empty());
         else EXPECT_GE(one.diagnostics.size(), 6u);
-        for (int run = 0; run < 3; ++run) expect_same(check_tape_pipelined(*tape, profile), one);
+        for (int run = 0; run < 3; ++run) essi_test::expect_same_result(check_tape_pipelined(*tape, profile), one, "run " + std::to_string(run));
     }
 }

@@ -3,7 +3,6 @@
 // generated nest tape, and tapes with mirrors (21-28) and absolute mode (82, where nothing is taken ahead).
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -31,21 +30,9 @@ CheckResult check_chunked(std::string_view text, const Profile& p, bool ahead) {
     return checker.finish();
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
 void expect_identical(std::string_view text, const std::string& what) {
     const Profile p;
-    const CheckResult a = check_chunked(text, p, false), b = check_chunked(text, p, true);
-    const Stats &x = a.stats, &y = b.stats;
-    EXPECT_TRUE(same_bits(x.cut_length_mm, y.cut_length_mm)) << what;
-    EXPECT_TRUE(same_bits(x.mark_length_mm, y.mark_length_mm)) << what;
-    EXPECT_TRUE(same_bits(x.travel_length_mm, y.travel_length_mm)) << what;
-    EXPECT_TRUE(same_bits(x.estimated_time_s, y.estimated_time_s)) << what;
-    EXPECT_TRUE(same_bits(x.cut_bbox.min_x, y.cut_bbox.min_x) && same_bits(x.cut_bbox.max_y, y.cut_bbox.max_y)) << what;
-    EXPECT_EQ(x.motions, y.motions) << what;
-    EXPECT_EQ(x.blocks, y.blocks) << what;
-    ASSERT_EQ(a.diagnostics.size(), b.diagnostics.size()) << what;
-    for (std::size_t i = 0; i < a.diagnostics.size(); ++i) EXPECT_EQ(a.diagnostics[i].message, b.diagnostics[i].message) << what;
+    essi_test::expect_same_result(check_chunked(text, p, false), check_chunked(text, p, true), what);
 }
 
 }  // namespace

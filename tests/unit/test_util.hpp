@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -16,6 +17,7 @@
 #include "essi/motion.hpp"
 #include "essi/profile.hpp"
 #include "essi/read.hpp"
+#include "essi/report.hpp"
 
 namespace essi_test {
 
@@ -116,6 +118,37 @@ inline essi::Profile woyda_profile() {
     auto p = essi::builtin_profile("woyda");
     EXPECT_TRUE(p.has_value()) << "built-in profile 'woyda' missing";
     return p ? *p : essi::Profile{};
+}
+
+inline bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Two checks of the same tape that must agree to the bit (one thread or two, measures ahead or not): every
+// statistic, the doubles compared bit for bit, and every diagnostic.
+inline void expect_same_result(const essi::CheckResult& a, const essi::CheckResult& b, const std::string& what) {
+    SCOPED_TRACE(what);
+    const essi::Stats &x = a.stats, &y = b.stats;
+    EXPECT_TRUE(same_bits(x.cut_length_mm, y.cut_length_mm));
+    EXPECT_TRUE(same_bits(x.mark_length_mm, y.mark_length_mm));
+    EXPECT_TRUE(same_bits(x.travel_length_mm, y.travel_length_mm));
+    EXPECT_TRUE(same_bits(x.rapid_length_mm, y.rapid_length_mm));
+    EXPECT_TRUE(same_bits(x.estimated_time_s, y.estimated_time_s));
+    EXPECT_EQ(x.pierces, y.pierces);
+    EXPECT_EQ(x.blocks, y.blocks);
+    EXPECT_EQ(x.motions, y.motions);
+    for (const auto& [p, q] : {std::pair{x.cut_bbox, y.cut_bbox}, std::pair{x.motion_bbox, y.motion_bbox}}) {
+        EXPECT_EQ(p.empty, q.empty);
+        EXPECT_TRUE(same_bits(p.min_x, q.min_x) && same_bits(p.min_y, q.min_y) && same_bits(p.max_x, q.max_x) &&
+                    same_bits(p.max_y, q.max_y));
+    }
+    EXPECT_TRUE(same_bits(x.end_position.x, y.end_position.x) && same_bits(x.end_position.y, y.end_position.y));
+    ASSERT_EQ(a.diagnostics.size(), b.diagnostics.size());
+    for (std::size_t i = 0; i < a.diagnostics.size(); ++i) {
+        const essi::Diagnostic &d = a.diagnostics[i], &e = b.diagnostics[i];
+        EXPECT_EQ(essi::code_name(d.code), essi::code_name(e.code));
+        EXPECT_EQ(d.line, e.line);
+        EXPECT_EQ(d.column, e.column);
+        EXPECT_EQ(d.message, e.message);
+    }
 }
 
 #define EXPECT_POINT_NEAR(p, ex, ey, tol)                 \
