@@ -183,6 +183,23 @@ void flatten(const MotionRecord& m, double chord_tolerance_mm, std::vector<Point
     out.push_back(m.end);
 }
 
+MotionRecord record_of(const UnitLine& l) {
+    MotionRecord m;
+    m.line = l.line;
+    m.block = l.block;
+    m.kind = l.kind;
+    m.curve = CurveKind::Line;
+    m.tools = l.tools;
+    m.head = 1;
+    m.kerf = l.kerf;
+    m.start = l.start;
+    m.end = l.end;
+    m.length_mm = l.length_mm;
+    m.feed_mm_min = l.feed_mm_min;
+    m.kerf_mm = l.kerf_mm;
+    return m;
+}
+
 const char* motion_kind_name(MotionKind k) {
     switch (k) {
         case MotionKind::Rapid: return "rapid";

@@ -46,8 +46,11 @@ namespace detail {
 
 class Machine {
 public:
-    Machine(std::string_view source, const Profile& profile, MotionSink& sink, std::vector<Diagnostic>& diagnostics)
-        : source_(source), profile_(profile), sink_(sink), stats_(dynamic_cast<StatsSink*>(&sink)), diags_(diagnostics) {
+    // `also`: one more sink beside the statistics (only when `sink` is a StatsSink).
+    Machine(std::string_view source, const Profile& profile, MotionSink& sink, MotionSink* also,
+            std::vector<Diagnostic>& diagnostics)
+        : source_(source), profile_(profile), sink_(sink), stats_(dynamic_cast<StatsSink*>(&sink)),
+          also_(stats_ ? also : nullptr), diags_(diagnostics) {
         feed_mm_min_ = profile_.feed_mm_min;
         // The function table, flattened once per run: half the blocks of a tape are functions.
         for (int code = 0; code < kFunctionCodes; ++code) {
@@ -79,6 +82,7 @@ private:
     void emit(MotionRecord& m, const Block& b, std::size_t index);
     [[nodiscard]] MotionKind motion_kind() const;
     [[nodiscard]] double motion_feed() const;
+    [[nodiscard]] KerfSide motion_kerf() const;
     void after_motion(const Block& b);
     // Diagnostics that build their message: out of line, so the hot functions stay small.
     [[gnu::cold, gnu::noinline]] void warn_rapid_while_cutting(const Block& b);
@@ -122,16 +126,26 @@ private:
     std::string_view source_;
     const Profile& profile_;
     MotionSink& sink_;
-    // The sink when it is the statistics alone (what a check runs): called directly, its calls inlined.
+    // The sink when it is the statistics (what a check runs): called directly, its calls inlined.
     StatsSink* const stats_;
+    // The one more sink of a check (the viewer's document): given the lines of head 1 as UnitLines.
+    MotionSink* const also_;
     std::vector<Diagnostic>& diags_;
     void send(const MotionRecord& m) {
-        if (stats_) stats_->on_motion(m);
-        else sink_.on_motion(m);
+        if (stats_) {
+            stats_->on_motion(m);
+            if (also_) also_->on_motion(m);
+        } else {
+            sink_.on_motion(m);
+        }
     }
     void send(const MachineEvent& e) {
-        if (stats_) stats_->on_event(e);
-        else sink_.on_event(e);
+        if (stats_) {
+            stats_->on_event(e);
+            if (also_) also_->on_event(e);
+        } else {
+            sink_.on_event(e);
+        }
     }
 
     // Machine state
@@ -256,9 +270,9 @@ void Machine::finish() {
         tools_before_end_ = tools_;
         tools_ = 0;
     }
-    if (stats_) {  // the statistics alone: what they count, without making the event
+    if (stats_) {  // the statistics: what they count, without making the event
         stats_->count_event(kind, value, tools_);
-        return;
+        if (also_ == nullptr) return;
     }
     send_event(b, index, kind, has_value, value);
 }
@@ -272,7 +286,7 @@ void Machine::send_event(const Block& b, std::size_t index, EventKind kind, bool
     e.has_value = has_value;
     e.value = value;
     e.tools_after = tools_;
-    sink_.on_event(e);
+    (stats_ ? *also_ : sink_).on_event(e);  // (the statistics counted it: event())
 }
 
 // The checks a function block must pass before it takes effect (rarely failed: kept out of the common path).
@@ -475,9 +489,8 @@ inline void Machine::emit(MotionRecord& m, const Block& b, std::size_t index) {
     m.tools = tools_;
     m.kind = motion_kind();
     m.feed_mm_min = motion_feed();
-    m.kerf = kerf_;
+    m.kerf = motion_kerf();
     m.kerf_mm = kerf_offset_mm_;
-    if (m.kerf != KerfSide::Off && mirrors_) m.kerf = m.kerf == KerfSide::Left ? KerfSide::Right : KerfSide::Left;
     after_motion(b);
     if (profile_.table) check_table(m, b);
     send(m);
@@ -490,6 +503,11 @@ inline MotionKind Machine::motion_kind() const {
     return rapid_ ? MotionKind::Rapid : MotionKind::Travel;
 }
 inline double Machine::motion_feed() const { return rapid_ ? profile_.rapid_mm_min : feed_mm_min_; }
+// The side of the path the kerf is on, in machine coordinates (a mirror 21-28 swaps it).
+inline KerfSide Machine::motion_kerf() const {
+    if (kerf_ == KerfSide::Off || !mirrors_) return kerf_;
+    return kerf_ == KerfSide::Left ? KerfSide::Right : KerfSide::Left;
+}
 
 // After every motion: a rapid while cutting is warned about; a one-block rapid (profile) ends.
 inline void Machine::after_motion(const Block& b) {
@@ -555,11 +573,30 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
         const IPoint end{base.x + d.x, base.y + d.y};
         const double length_mm = units_length(end.x - cur.x, end.y - cur.y) * profile_.unit_mm;
         if (stats_ && !profile_.table) {
-            // Only checked (the statistics are the only sink): what they count of a line, without its record.
+            // Checked: what the statistics count of a line, without its record; the one more sink's UnitLine.
             const MotionKind kind = motion_kind();
             const double feed = motion_feed();
             after_motion(b);
-            stats_->add_line(kind, /*head*/ 1, to_mm(cur), to_mm(end), length_mm, feed);
+            const Point start_mm = to_mm(cur), end_mm = to_mm(end);
+            stats_->add_line(kind, /*head*/ 1, start_mm, end_mm, length_mm, feed);
+            if (also_) {
+                UnitLine l;
+                l.line = b.line;
+                l.block = static_cast<std::uint32_t>(index);
+                l.kind = kind;
+                l.tools = tools_;
+                l.kerf = motion_kerf();
+                l.start_x = cur.x;
+                l.start_y = cur.y;
+                l.end_x = end.x;
+                l.end_y = end.y;
+                l.start = start_mm;
+                l.end = end_mm;
+                l.length_mm = length_mm;
+                l.feed_mm_min = feed;
+                l.kerf_mm = kerf_offset_mm_;
+                also_->on_line(l);
+            }
             cur = end;
             return;
         }
@@ -768,7 +805,10 @@ AxisMapping axis_mapping(int function_code) {
 
 Interpreter::Interpreter(std::string_view source, const Profile& profile, MotionSink& sink,
                          std::vector<Diagnostic>& diagnostics)
-    : machine_(std::make_unique<detail::Machine>(source, profile, sink, diagnostics)) {}
+    : machine_(std::make_unique<detail::Machine>(source, profile, sink, nullptr, diagnostics)) {}
+Interpreter::Interpreter(std::string_view source, const Profile& profile, StatsSink& stats, MotionSink* also,
+                         std::vector<Diagnostic>& diagnostics)
+    : machine_(std::make_unique<detail::Machine>(source, profile, stats, also, diagnostics)) {}
 Interpreter::~Interpreter() = default;
 void Interpreter::run(const Tape& chunk, std::span<const MotionMeasure> measures) { machine_->run(chunk, measures); }
 

@@ -25,27 +25,8 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
 
 // ---- TapeChecker ----
 
-// Sends every record to the statistics and, when asked, to one more sink (the viewer's buffers).
-class TapeChecker::Tee : public MotionSink {
-public:
-    Tee(const Profile& profile, MotionSink* also) : stats(profile), also_(also) {}
-    // Where the interpreter sends its records: the statistics alone need no hop through the tee.
-    MotionSink& target() { return also_ ? static_cast<MotionSink&>(*this) : stats; }
-    void on_motion(const MotionRecord& m) override {
-        stats.on_motion(m);
-        if (also_) also_->on_motion(m);
-    }
-    void on_event(const MachineEvent& e) override {
-        stats.on_event(e);
-        if (also_) also_->on_event(e);
-    }
-    StatsSink stats;
-private:
-    MotionSink* also_;
-};
-
 TapeChecker::TapeChecker(std::string_view bytes, const Profile& profile, MotionSink* also)
-    : tee_(std::make_unique<Tee>(profile, also)), interpreter_(bytes, profile, tee_->target(), result_.diagnostics) {}
+    : stats_(profile), interpreter_(bytes, profile, stats_, also, result_.diagnostics) {}
 
 TapeChecker::~TapeChecker() = default;
 
@@ -57,7 +38,7 @@ void TapeChecker::check_chunk(const Tape& chunk, std::span<const MotionMeasure> 
 
 CheckResult TapeChecker::finish() {
     interpreter_.finish();
-    result_.stats = tee_->stats.stats();
+    result_.stats = stats_.stats();
     result_.stats.blocks = blocks_;
     sort_diagnostics(result_.diagnostics);
     return std::move(result_);

@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 
+#include "../bench/nest_generator.hpp"
 #include "essi/report.hpp"
+#include "paths.hpp"
 #include "test_util.hpp"
 
 using namespace essi;
@@ -234,4 +237,94 @@ TEST(ReportStats, RapidWithCuttingToolCountsAsCut) {
     EXPECT_NEAR(r.stats.cut_length_mm, 100.0, kLenTol);
     EXPECT_NEAR(r.stats.travel_length_mm, 0.0, kLenTol);
     EXPECT_EQ(r.stats.pierces, 1u);
+}
+
+// TapeChecker's `also` sink (the viewer's document) gets the interpreter's stream exactly: the straight lines
+// of head 1 come as UnitLines without a record, and what MotionSink::on_line makes of them by default is
+// the record interpret() emits, to the bit. A sink that takes the UnitLines gets units that are its mm.
+namespace {
+
+void expect_same_record(const MotionRecord& a, const MotionRecord& b, const std::string& at) {
+    ASSERT_EQ(a.line, b.line) << at;
+    ASSERT_EQ(a.block, b.block) << at;
+    ASSERT_EQ(a.kind, b.kind) << at;
+    ASSERT_EQ(a.curve, b.curve) << at;
+    ASSERT_EQ(a.tools, b.tools) << at;
+    ASSERT_EQ(a.head, b.head) << at;
+    ASSERT_EQ(a.kerf, b.kerf) << at;
+    ASSERT_EQ(a.ccw, b.ccw) << at;
+    for (const auto& [x, y] : {std::pair{a.start, b.start}, std::pair{a.end, b.end}, std::pair{a.centre, b.centre}})
+        ASSERT_TRUE(same_bits(x.x, y.x) && same_bits(x.y, y.y)) << at;
+    for (const auto& [x, y] : {std::pair{a.radius, b.radius}, std::pair{a.end_radius, b.end_radius},
+                               std::pair{a.sweep, b.sweep}, std::pair{a.length_mm, b.length_mm},
+                               std::pair{a.feed_mm_min, b.feed_mm_min}, std::pair{a.kerf_mm, b.kerf_mm}})
+        ASSERT_TRUE(same_bits(x, y)) << at;
+    if (a.curve == CurveKind::Parabola) {
+        ASSERT_TRUE(same_bits(a.parabola.t0, b.parabola.t0) && same_bits(a.parabola.t1, b.parabola.t1)) << at;
+        ASSERT_TRUE(same_bits(a.parabola.vertex.x, b.parabola.vertex.x)) << at;
+    }
+}
+
+// Counts the UnitLines and checks their units against their mm, then records them as the default does.
+class UnitLineSink : public RecordingSink {
+public:
+    explicit UnitLineSink(const Profile& p) : profile_(p) {}
+    std::size_t lines = 0;
+    void on_line(const UnitLine& l) override {
+        ++lines;
+        EXPECT_TRUE(same_bits(static_cast<double>(l.start_x) * profile_.unit_mm + profile_.setup_offset_x_mm, l.start.x));
+        EXPECT_TRUE(same_bits(static_cast<double>(l.end_y) * profile_.unit_mm + profile_.setup_offset_y_mm, l.end.y));
+        RecordingSink::on_line(l);
+    }
+private:
+    const Profile& profile_;
+};
+
+void expect_also_gets_the_stream(const std::string& text, const Profile& p, const std::string& what) {
+    SCOPED_TRACE(what);
+    const RunResult want = run(text, p);
+    UnitLineSink also(p);
+    TapeChecker checker(text, p, &also);
+    TapeReader reader(text, p);
+    Tape chunk;
+    while (reader.read_chunk(chunk, 1000)) checker.check_chunk(chunk);
+    const CheckResult got = checker.finish();
+    expect_same_result(got, check_tape(text, p), what);
+    ASSERT_EQ(also.motions.size(), want.motions().size());
+    for (std::size_t i = 0; i < want.motions().size(); ++i)
+        expect_same_record(also.motions[i], want.motions()[i], "motion " + std::to_string(i));
+    ASSERT_EQ(also.events.size(), want.events().size());
+    for (std::size_t i = 0; i < want.events().size(); ++i) {
+        const MachineEvent &a = also.events[i], &b = want.events()[i];
+        ASSERT_TRUE(a.line == b.line && a.block == b.block && a.kind == b.kind && a.code == b.code &&
+                    a.has_value == b.has_value && same_bits(a.value, b.value) && same_bits(a.x, b.x) &&
+                    same_bits(a.y, b.y) && a.tools_after == b.tools_after)
+            << "event " << i;
+    }
+    EXPECT_EQ(also.order, want.sink.order);
+    if (!want.motions().empty()) {
+        EXPECT_GT(also.lines, 0u);
+    }
+}
+
+}  // namespace
+
+TEST(TapeCheckerAlso, GetsTheInterpretersStreamExactly) {
+    expect_also_gets_the_stream(kTapeA, Profile{}, "tape A");
+    // Every example: kerf, absolute mode and zero offsets, 21-28, head 2, parabolas, dwells, bad tapes.
+    std::size_t examples = 0;
+    for (const auto& e : std::filesystem::directory_iterator(examples_dir())) {
+        if (e.path().extension() != ".esi") continue;
+        ++examples;
+        const std::string text = read_file(e.path().string());
+        for (const Profile& p : {iso_profile(), woyda_profile()})
+            expect_also_gets_the_stream(text, p, e.path().filename().string() + " " + p.name);
+    }
+    EXPECT_GE(examples, 10u);
+    Profile offset = iso_profile();
+    offset.setup_offset_x_mm = -12.5;
+    offset.setup_offset_y_mm = 40;
+    const std::string nest = bench::generate_nest_tape(200000, 3);
+    expect_also_gets_the_stream(nest, iso_profile(), "generated");
+    expect_also_gets_the_stream(nest, offset, "generated, setup offset");
 }

@@ -149,6 +149,14 @@ TEST(ViewerDocument, GeneratedTapeOfManyChunks) {
     check_tape(bytes, *builtin_profile("iso6582"), "generated");
 }
 
+TEST(ViewerDocument, SetupOffsetGivesTheSameRecords) {
+    // With a setup offset the lines are not taken in units (Sink::on_line): the records must not change.
+    Profile p = *builtin_profile("iso6582");
+    p.setup_offset_x_mm = -12.5;
+    p.setup_offset_y_mm = 40;
+    check_tape(bench::generate_nest_tape(200000, 5), p, "generated, setup offset");
+}
+
 TEST(ViewerDocument, PointsBeyondThirtyTwoBitsKeepTheirRecord) {
     // 30 x 99 999 999 units is past int32: those motions keep their full record (and the first one back, which
     // starts out there).

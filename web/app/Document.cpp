@@ -303,50 +303,46 @@ std::string describe_block(const Tape& tape, std::size_t i, const Profile& profi
 // The viewer's copy of the stream: TapeChecker's `also` sink (the statistics are the checker's own).
 class DocumentLoader::Sink : public MotionSink {
 public:
-    explicit Sink(Document& doc) : doc_(doc) {}
+    explicit Sink(Document& doc)
+        : doc_(doc), lines_in_units_(doc.profile.setup_offset_x_mm == 0 && doc.profile.setup_offset_y_mm == 0) {}
 
     void on_motion(const MotionRecord& r) override {
         Document& d = doc_;
-        const auto index = static_cast<std::uint32_t>(d.motions.size());
-        Motion m;
-        m.line = r.line;
-        m.kind = r.kind;
-        m.curve = r.curve;
-        m.tools = r.tools;
-        if (r.head == 2) m.flags |= Motion::kFlagHead2;
-        if (r.kerf == KerfSide::Left) m.flags |= Motion::kFlagKerfLeft;
-        if (r.kerf == KerfSide::Right) m.flags |= Motion::kFlagKerfRight;
-        if (index == 0 || !(last_end_ == r.start)) {
-            m.flags |= Motion::kFlagJump;
-            d.jumps.emplace_back(index, r.start);
-        }
-        last_end_ = r.end;
-        // Kerf compensation goes on and off with every contour: its value is listed only where it is on.
-        const float kerf = static_cast<float>(r.kerf_mm);
-        if (r.kerf != KerfSide::Off && (d.kerfs.empty() ? kerf != 0.f : d.kerfs.back().second != kerf))
-            d.kerfs.emplace_back(index, kerf);
-        // Rapids alternate with cuts: their feed (the rapid speed) is a flag, and only the others' changes are listed.
-        const float feed = static_cast<float>(r.feed_mm_min);
-        if (feed == static_cast<float>(d.profile.rapid_mm_min)) m.flags |= Motion::kFlagRapidFeed;
-        else if (d.feeds.empty() ? feed != 0.f : d.feeds.back().second != feed) d.feeds.emplace_back(index, feed);
+        Motion m = start_motion(r.line, r.kind, r.curve, r.tools, r.head, r.kerf, r.start, r.end, r.kerf_mm,
+                                r.feed_mm_min);
         // Compact when every point is whole units (always, but for positions beyond 32 bits), not a parabola, and
         // (as the interpreter has it) the kerf is 0 when compensation is off.
         UnitPoint start, centre;
-        bool compact = r.curve != CurveKind::Parabola && (r.kerf != KerfSide::Off || kerf == 0.f) &&
+        bool compact = r.curve != CurveKind::Parabola && (r.kerf != KerfSide::Off || static_cast<float>(r.kerf_mm) == 0.f) &&
                        d.to_units(r.end, m.end_units) && d.to_units(r.start, start);
         if (compact && r.curve == CurveKind::Arc) compact = d.to_units(r.centre, centre);
         if (!compact) {
             m.flags |= Motion::kFlagKept;
-            d.kept.emplace_back(index, r);
+            d.kept.emplace_back(static_cast<std::uint32_t>(d.motions.size()), r);
         } else if (r.curve == CurveKind::Arc) {
             if (r.ccw) m.flags |= Motion::kFlagCcw;
             d.arc_centres.push_back(centre);
         }
         d.arc_rank.push_back(compact && r.curve == CurveKind::Arc);
         if (r.curve != CurveKind::Line) ++d.curves;
-        if (pierce_pending_ && (r.tools & kCuttingTools)) d.pierces.push_back(index);
-        pierce_pending_ = false;
-        d.motions.push_back(m);
+        add(m);
+    }
+
+    // Most motions: their units as the interpreter has them (no division and rounding back from mm). With no
+    // setup offset, mm = units x unit_mm exactly, so these are the units Document::to_units gives for the mm.
+    void on_line(const UnitLine& l) override {
+        constexpr long long kMax = std::numeric_limits<std::int32_t>::max();
+        const auto fits = [](long long v) { return v >= -kMax && v <= kMax; };
+        if (!lines_in_units_ || !(l.kerf != KerfSide::Off || static_cast<float>(l.kerf_mm) == 0.f) || !fits(l.start_x) ||
+            !fits(l.start_y) || !fits(l.end_x) || !fits(l.end_y)) {
+            on_motion(record_of(l));
+            return;
+        }
+        Motion m = start_motion(l.line, l.kind, CurveKind::Line, l.tools, 1, l.kerf, l.start, l.end, l.kerf_mm,
+                                l.feed_mm_min);
+        m.end_units = {static_cast<std::int32_t>(l.end_x), static_cast<std::int32_t>(l.end_y)};
+        doc_.arc_rank.push_back(false);
+        add(m);
     }
 
     void on_event(const MachineEvent& e) override {
@@ -358,7 +354,45 @@ public:
     }
 
 private:
+    // What every motion records: its kind, flags, whether it starts where the one before ended, the kerf and
+    // feed when they change.
+    Motion start_motion(std::uint32_t line, MotionKind kind, CurveKind curve, std::uint8_t tools, int head,
+                        KerfSide kerf_side, Point start, Point end, double kerf_mm, double feed_mm_min) {
+        Document& d = doc_;
+        const auto index = static_cast<std::uint32_t>(d.motions.size());
+        Motion m;
+        m.line = line;
+        m.kind = kind;
+        m.curve = curve;
+        m.tools = tools;
+        if (head == 2) m.flags |= Motion::kFlagHead2;
+        if (kerf_side == KerfSide::Left) m.flags |= Motion::kFlagKerfLeft;
+        if (kerf_side == KerfSide::Right) m.flags |= Motion::kFlagKerfRight;
+        if (index == 0 || !(last_end_ == start)) {
+            m.flags |= Motion::kFlagJump;
+            d.jumps.emplace_back(index, start);
+        }
+        last_end_ = end;
+        // Kerf compensation goes on and off with every contour: its value is listed only where it is on.
+        const float kerf = static_cast<float>(kerf_mm);
+        if (kerf_side != KerfSide::Off && (d.kerfs.empty() ? kerf != 0.f : d.kerfs.back().second != kerf))
+            d.kerfs.emplace_back(index, kerf);
+        // Rapids alternate with cuts: their feed (the rapid speed) is a flag, and only the others' changes are listed.
+        const float feed = static_cast<float>(feed_mm_min);
+        if (feed == rapid_feed_) m.flags |= Motion::kFlagRapidFeed;
+        else if (d.feeds.empty() ? feed != 0.f : d.feeds.back().second != feed) d.feeds.emplace_back(index, feed);
+        return m;
+    }
+    void add(const Motion& m) {
+        Document& d = doc_;
+        if (pierce_pending_ && (m.tools & kCuttingTools)) d.pierces.push_back(static_cast<std::uint32_t>(d.motions.size()));
+        pierce_pending_ = false;
+        d.motions.push_back(m);
+    }
+
     Document& doc_;
+    const bool lines_in_units_;  // (no setup offset)
+    const float rapid_feed_ = static_cast<float>(doc_.profile.rapid_mm_min);
     Point last_end_;  // of the motion before (a motion that starts elsewhere is a jump)
     std::uint8_t tools_ = 0;
     bool pierce_pending_ = false;

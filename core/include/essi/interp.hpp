@@ -17,6 +17,7 @@ namespace essi {
 namespace detail {
 class Machine;
 }
+class StatsSink;
 
 // What an arc block measures from its words alone when it is incremental (its start is the tape's (0,0)), in
 // the tape frame and unit increments: two square roots and an atan2, worth working out on another thread.
@@ -42,6 +43,10 @@ void measure_motions(const Tape& chunk, std::vector<MotionMeasure>& out);
 class Interpreter {
 public:
     Interpreter(std::string_view source, const Profile& profile, MotionSink& sink, std::vector<Diagnostic>& diagnostics);
+    // The statistics and, when given, one more sink `also` (what TapeChecker runs): the statistics are fed
+    // directly, `also` gets every motion and event, its straight lines of head 1 as MotionSink::on_line.
+    Interpreter(std::string_view source, const Profile& profile, StatsSink& stats, MotionSink* also,
+                std::vector<Diagnostic>& diagnostics);
     ~Interpreter();
     Interpreter(const Interpreter&) = delete;
     Interpreter& operator=(const Interpreter&) = delete;

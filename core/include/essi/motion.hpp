@@ -82,12 +82,33 @@ struct MachineEvent {
     std::uint8_t tools_after = 0;
 };
 
+// A straight motion of head 1, what most of a tape is, as the interpreter has it: its points in mm and as
+// the whole unit increments they are made from (machine axes: mm = units x Profile::unit_mm + the setup
+// offset). The interpreter hands these to MotionSink::on_line without making their MotionRecord when it
+// checks a tape for one more sink (TapeChecker's `also`); record_of makes the record they stand for.
+struct UnitLine {
+    std::uint32_t line = 0, block = 0;
+    MotionKind kind = MotionKind::Travel;
+    std::uint8_t tools = 0;
+    KerfSide kerf = KerfSide::Off;
+    long long start_x = 0, start_y = 0, end_x = 0, end_y = 0;  // unit increments
+    Point start, end;                                          // mm
+    double length_mm = 0;
+    double feed_mm_min = 0;
+    double kerf_mm = 0;
+};
+// The MotionRecord of a straight motion (the one the interpreter emits for it, exactly).
+[[nodiscard]] MotionRecord record_of(const UnitLine& line);
+
 // The interpreter's output. Implementations: stats (report), trace printer, viewer buffers, tests.
 class MotionSink {
 public:
     virtual ~MotionSink() = default;
     virtual void on_motion(const MotionRecord& record) = 0;
     virtual void on_event(const MachineEvent& /*event*/) {}
+    // A straight motion of head 1 (see UnitLine). A sink that keeps motions in units overrides it; by default
+    // it is the record, to on_motion.
+    virtual void on_line(const UnitLine& line) { on_motion(record_of(line)); }
 };
 
 [[nodiscard]] const char* motion_kind_name(MotionKind k);   // "rapid", "travel", "cut", "mark"

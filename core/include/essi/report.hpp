@@ -41,10 +41,9 @@ public:
     // After the last chunk: the result (diagnostics sorted). Call once.
     [[nodiscard]] CheckResult finish();
 private:
-    class Tee;
     CheckResult result_;
-    std::unique_ptr<Tee> tee_;  // the statistics, and the `also` sink when there is one
-    Interpreter interpreter_;   // feeds the statistics directly when there is no `also` sink
+    StatsSink stats_;
+    Interpreter interpreter_;   // feeds the statistics directly, and `also` when there is one
     unsigned long long blocks_ = 0;
 };
 
