@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 
 #include "essi/functions.hpp"
@@ -408,6 +409,9 @@ DocumentLoader::DocumentLoader(std::string name, std::string bytes, Profile prof
 DocumentLoader::~DocumentLoader() = default;
 
 namespace {
+// A byte repeated in every byte of a 64-bit word.
+constexpr std::uint64_t kBytesOf(std::uint8_t b) { return 0x0101010101010101ull * b; }
+
 // Grows `v` ahead of need to the size projected from the share of the tape read so far (no doubling: a
 // 10 M motion stream must not cost twice its size).
 template <class T>
@@ -444,9 +448,21 @@ bool DocumentLoader::step(double budget_ms) {
         while (i < n) {
             const std::size_t stop = std::min(n, i + (std::size_t(2) << 20));
             while (i < stop) {
+                // Eight bytes at a time to the next control character (a byte below 0x0E: CR, LF, and rarely a
+                // tab or worse): the lowest flagged byte is always one (the others may be borrows of it).
+                if (i + 8 <= n) {
+                    std::uint64_t w;
+                    std::memcpy(&w, p + i, 8);
+                    const std::uint64_t below = (w - kBytesOf(0x0E)) & ~w & kBytesOf(0x80);
+                    if (below == 0) {
+                        i += 8;
+                        continue;
+                    }
+                    i += static_cast<std::size_t>(std::countr_zero(below)) / 8;  // (little-endian: WASM, x86, ARM)
+                }
                 const char c = p[i++];
                 if (c != '\n' && c != '\r') continue;
-                if (i < n && (p[i] == '\n' || p[i] == '\r') && p[i] != c) ++i;
+                if (i < n) i += (p[i] ^ c) == ('\r' ^ '\n');  // the other of CR and LF belongs to this line end
                 if (i < n) {
                     if (d.lines % Document::kLineIndexStride == 0) d.line_index.push_back(static_cast<std::uint32_t>(i));
                     ++d.lines;

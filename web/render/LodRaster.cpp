@@ -22,33 +22,49 @@ void LodRaster::begin(const Document& doc, int cells) {
     begin(b, doc.origin, cells);
     if (width_ == 0) return;
     doc_ = &doc;
+    // A position in units to cells: cells = units x unit_mm / cell + (setup offset - origin - the raster's corner) / cell.
+    const Profile& p = doc.profile;
+    units_to_cells_ = p.unit_mm / cell_;
+    cells_at_zero_x_ = (p.setup_offset_x_mm - doc.origin.x - min_x_) / cell_;
+    cells_at_zero_y_ = (p.setup_offset_y_mm - doc.origin.y - min_y_) / cell_;
     for (const std::uint32_t i : doc.pierces) {
-        const Point p = doc.start_of(i);
-        add_pierce(static_cast<float>(p.x - doc.origin.x), static_cast<float>(p.y - doc.origin.y));
+        const Point c = to_cells(doc.start_of(i));
+        set(static_cast<int>(std::floor(c.x)), static_cast<int>(std::floor(c.y)), kPierceBit);
     }
+}
+
+Point LodRaster::to_cells(Point mm) const {
+    return {(mm.x - doc_->origin.x - min_x_) / cell_, (mm.y - doc_->origin.y - min_y_) / cell_};
 }
 
 bool LodRaster::step(std::size_t max_motions) {
     if (doc_ == nullptr || width_ == 0) return true;
     const Document& doc = *doc_;
-    const double ox = doc.origin.x, oy = doc.origin.y;
-    const auto put = [&](Point a, Point b, std::uint8_t kind) {
-        add_segment(static_cast<float>(a.x - ox), static_cast<float>(a.y - oy), static_cast<float>(b.x - ox),
-                    static_cast<float>(b.y - oy), kind);
-    };
-    const double tolerance = std::max(cell_ * kChordCells, kMinChordTolerance);
+    const double tolerance_cells = std::max(kChordCells, kMinChordTolerance / cell_);
     const std::size_t stop = std::min(doc.motions.size(), next_ + max_motions);
+    // The motions one after the other, in units: a motion starts where the one before ended (its end in units,
+    // carried along) unless it is a jump (Document::start_of). Kept records (parabolas, points beyond 32 bits)
+    // are flattened from their record.
     for (; next_ < stop; ++next_) {
         const Motion& m = doc.motions[next_];
-        const auto kind = static_cast<std::uint8_t>(m.kind);
-        if (m.curve == CurveKind::Line) {
-            put(doc.start_of(next_), doc.end_of(next_), kind);
+        const auto bit = static_cast<std::uint8_t>(1u << (static_cast<unsigned>(m.kind) & 3));
+        const bool kept = (m.flags & Motion::kFlagKept) != 0;
+        bool start_in_units = !(m.flags & Motion::kFlagJump) && last_in_units_;
+        UnitPoint su = last_end_;
+        if (!start_in_units && !kept) start_in_units = doc.to_units(doc.start_of(next_), su);
+        last_in_units_ = !kept;
+        if (!kept) last_end_ = m.end_units;
+        if (start_in_units && m.curve == CurveKind::Line) {
+            add_cells(cells_of(su), cells_of(m.end_units), bit);
             continue;
         }
-        if (m.curve == CurveKind::Arc && (m.flags & Motion::kFlagKept) == 0 && put_arc(next_, tolerance, kind)) continue;
+        if (start_in_units && m.curve == CurveKind::Arc && !kept) {
+            put_arc(next_, su, tolerance_cells, bit);
+            continue;
+        }
         scratch_.clear();
-        flatten(doc.record(next_), tolerance, scratch_, true);
-        for (std::size_t k = 1; k < scratch_.size(); ++k) put(scratch_[k - 1], scratch_[k], kind);
+        flatten(doc.record(next_), tolerance_cells * cell_, scratch_, true);
+        for (std::size_t k = 1; k < scratch_.size(); ++k) add_cells(to_cells(scratch_[k - 1]), to_cells(scratch_[k]), bit);
     }
     if (next_ < doc.motions.size()) return false;
     scratch_ = std::vector<Point>();
@@ -57,25 +73,21 @@ bool LodRaster::step(std::size_t max_motions) {
 }
 
 // A compact arc without its whole record: the sweep from the interpreter's formula on its integer points (as
-// Document::record), the chords as essi::flatten counts them, their points by turning the radius vector a fixed
-// angle each step (flatten's point_at takes an arctangent, a sine and a cosine a point: most of this pass's time
-// on arcs). False when the start is not whole units (then the caller flattens the record).
-bool LodRaster::put_arc(std::size_t i, double tolerance, std::uint8_t kind) {
+// Document::record), chords at most `tolerance` cells from the circle (the angle a chord may span is at least
+// 2 sqrt(2 t / r), a little less than flatten's 2 acos(1 - t / r): a chord or two more, no arccosine), their
+// points by turning the radius vector a fixed angle each step (no sine and cosine a point).
+void LodRaster::put_arc(std::size_t i, UnitPoint su, double tolerance, std::uint8_t bit) {
     const Document& doc = *doc_;
     const Motion& m = doc.motions[i];
-    const Point s = doc.start_of(i);
-    UnitPoint su;
-    if (!doc.to_units(s, su)) return false;
     const UnitPoint cu = doc.arc_centres[doc.arc_rank.rank(i)];
     const MotionMeasure arc =
         measure_arc(su.x, su.y, m.end_units.x, m.end_units.y, cu.x, cu.y, (m.flags & Motion::kFlagCcw) != 0);
-    const Point c = doc.point_mm(cu), e = doc.point_mm(m.end_units);
-    const double r0 = std::hypot(s.x - c.x, s.y - c.y), r1 = std::hypot(e.x - c.x, e.y - c.y);
-    const double r = std::max(r0, r1);
+    const Point s = cells_of(su), e = cells_of(m.end_units), c = cells_of(cu);
+    const double r0 = arc.r0 * units_to_cells_, r1 = arc.r1 * units_to_cells_;
+    const double r = std::max(r0, r1), sweep = std::abs(arc.sweep);
     int segments = 1;
-    if (r > tolerance) segments = static_cast<int>(std::ceil(std::abs(arc.sweep) / (2 * std::acos(1 - tolerance / r))));
-    segments = std::min(std::max(segments, std::abs(arc.sweep) > kPi ? 4 : 2), kMaxFlattenSegments);
-    const double ox = doc.origin.x, oy = doc.origin.y;
+    if (r > tolerance) segments = static_cast<int>(std::ceil(sweep / (2 * std::sqrt(2 * tolerance / r))));
+    segments = std::min(std::max(segments, sweep > kPi ? 4 : 2), kMaxFlattenSegments);
     const double step = arc.sweep / segments, cs = std::cos(step), sn = std::sin(step);
     double ux = r0 > 0 ? (s.x - c.x) / r0 : 1, uy = r0 > 0 ? (s.y - c.y) / r0 : 0;  // unit vector centre -> point
     Point prev = s;
@@ -85,13 +97,10 @@ bool LodRaster::put_arc(std::size_t i, double tolerance, std::uint8_t kind) {
         ux = nx;
         const double rk = r0 + (r1 - r0) * k / segments;
         const Point p{c.x + rk * ux, c.y + rk * uy};
-        add_segment(static_cast<float>(prev.x - ox), static_cast<float>(prev.y - oy), static_cast<float>(p.x - ox),
-                    static_cast<float>(p.y - oy), kind);
+        add_cells(prev, p, bit);
         prev = p;
     }
-    add_segment(static_cast<float>(prev.x - ox), static_cast<float>(prev.y - oy), static_cast<float>(e.x - ox),
-                static_cast<float>(e.y - oy), kind);
-    return true;
+    add_cells(prev, e, bit);
 }
 
 float LodRaster::progress() const {
@@ -109,7 +118,6 @@ void LodRaster::begin(const Box& bbox, Point origin, int cells) {
     cell_ = longer / (cells_ - 2);  // a cell of border on each side
     min_x_ = static_cast<float>(bbox.min_x - origin.x - cell_);
     min_y_ = static_cast<float>(bbox.min_y - origin.y - cell_);
-    inv_cell_ = static_cast<float>(1.0 / cell_);
     int lw = std::clamp(static_cast<int>(std::ceil(w / cell_)) + 2, 1, cells_);
     int lh = std::clamp(static_cast<int>(std::ceil(h / cell_)) + 2, 1, cells_);
     width_ = lw;
@@ -145,33 +153,25 @@ std::uint8_t LodRaster::at(int k, int x, int y) const {
                 [static_cast<std::size_t>(y % rows) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)];
 }
 
-void LodRaster::add_segment(float x0, float y0, float x1, float y1, std::uint8_t kind) {
-    if (width_ == 0 || finished_) return;
-    const std::uint8_t bit = static_cast<std::uint8_t>(1u << (kind & 3));
-    const float ax = (x0 - min_x_) * inv_cell_, ay = (y0 - min_y_) * inv_cell_;
-    const float bx = (x1 - min_x_) * inv_cell_, by = (y1 - min_y_) * inv_cell_;
+void LodRaster::add_cells(Point a, Point b, std::uint8_t bit) {
     // Samples at most a cell apart along the longer axis: every cell the segment crosses gets the bit
-    // (8-connected, as a one-pixel line is drawn). Stepped in 32.32 fixed point. (This loop is half the time of a
-    // big tape's level of detail: about one sample a cell crossed, 60 M at 1 M motions and 2 048 cells, ~4 ns each
-    // natively. Tiles of 8 x 8 cells instead of rows, and skipping the store where the bit is set, were no faster.)
-    const float span = std::max(std::fabs(bx - ax), std::fabs(by - ay));
-    const int n = static_cast<int>(std::min(span, static_cast<float>(2 * cells_))) + 1;
+    // (8-connected, as a one-pixel line is drawn). Stepped in 32.32 fixed point. (This loop is most of the time of
+    // a big tape's level of detail: about one sample a cell crossed, 25 a motion of the generated nest at 822
+    // cells. Tiles of 8 x 8 cells instead of rows, and skipping the store where the bit is set, were no faster.)
+    const double span = std::max(std::fabs(b.x - a.x), std::fabs(b.y - a.y));
+    const int n = static_cast<int>(std::min(span, static_cast<double>(2 * cells_))) + 1;
     constexpr double kOne = 4294967296.0;  // 2^32
-    std::int64_t fx = static_cast<std::int64_t>(static_cast<double>(ax) * kOne);
-    std::int64_t fy = static_cast<std::int64_t>(static_cast<double>(ay) * kOne);
-    const std::int64_t sx = static_cast<std::int64_t>(static_cast<double>(bx - ax) / n * kOne);
-    const std::int64_t sy = static_cast<std::int64_t>(static_cast<double>(by - ay) / n * kOne);
+    constexpr double kFar = 1e9;  // cells: far outside, and within the fixed point's range
+    std::int64_t fx = static_cast<std::int64_t>(std::clamp(a.x, -kFar, kFar) * kOne);
+    std::int64_t fy = static_cast<std::int64_t>(std::clamp(a.y, -kFar, kFar) * kOne);
+    const std::int64_t sx = static_cast<std::int64_t>(std::clamp((b.x - a.x) / n, -kFar, kFar) * kOne);
+    const std::int64_t sy = static_cast<std::int64_t>(std::clamp((b.y - a.y) / n, -kFar, kFar) * kOne);
     const auto w = static_cast<std::uint32_t>(width_), h = static_cast<std::uint32_t>(height_);
     std::uint8_t* const* rows = rows_.data();
     for (int i = 0; i <= n; ++i, fx += sx, fy += sy) {
         const auto cx = static_cast<std::uint32_t>(fx >> 32), cy = static_cast<std::uint32_t>(fy >> 32);
         if (cx < w && cy < h) rows[cy][cx] |= bit;  // (a negative cell is a large unsigned one)
     }
-}
-
-void LodRaster::add_pierce(float x, float y) {
-    if (width_ == 0 || finished_) return;
-    set(static_cast<int>((x - min_x_) * inv_cell_), static_cast<int>((y - min_y_) * inv_cell_), kPierceBit);
 }
 
 void LodRaster::finish() {

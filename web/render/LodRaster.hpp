@@ -44,8 +44,6 @@ public:
     // Rasterises up to `max_motions` more motions of the document given to begin(doc); true when all are in.
     bool step(std::size_t max_motions);
     [[nodiscard]] float progress() const;
-    void add_segment(float x0, float y0, float x1, float y1, std::uint8_t kind);
-    void add_pierce(float x, float y);
     void finish();  // builds the coarser levels
     void release();  // frees the CPU copy (once on the GPU)
 
@@ -76,7 +74,14 @@ private:
         return level[static_cast<std::size_t>(y / rows)]
                     [static_cast<std::size_t>(y % rows) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)];
     }
-    bool put_arc(std::size_t motion, double tolerance, std::uint8_t kind);
+    // The segment a -> b in cells (fractions: cell (i, j) is [i, i+1) x [j, j+1)): `bit` in every cell it crosses.
+    void add_cells(Point a, Point b, std::uint8_t bit);
+    // Arc `motion` (compact, starting at `start`), chords within `tolerance` cells.
+    void put_arc(std::size_t motion, UnitPoint start, double tolerance, std::uint8_t bit);
+    [[nodiscard]] Point cells_of(UnitPoint u) const {
+        return {u.x * units_to_cells_ + cells_at_zero_x_, u.y * units_to_cells_ + cells_at_zero_y_};
+    }
+    [[nodiscard]] Point to_cells(Point mm) const;
     void set(int cx, int cy, std::uint8_t bit) {
         if (cx >= 0 && cy >= 0 && cx < width_ && cy < height_) rows_[static_cast<std::size_t>(cy)][cx] |= bit;
     }
@@ -84,12 +89,14 @@ private:
     int width_ = 0, height_ = 0;
     double cell_ = 1;
     float min_x_ = 0, min_y_ = 0;
-    float inv_cell_ = 1;
     bool finished_ = false;
     int cells_ = kMaxCells;
     const Document* doc_ = nullptr;
     std::size_t next_ = 0;
     std::vector<Point> scratch_;
+    double units_to_cells_ = 0, cells_at_zero_x_ = 0, cells_at_zero_y_ = 0;  // (begin(doc))
+    UnitPoint last_end_;         // of the motion before, when it was compact
+    bool last_in_units_ = false;
     std::vector<std::pair<int, int>> sizes_;
     std::vector<std::vector<std::vector<std::uint8_t>>> data_;  // level, strip, cells
     std::vector<std::uint8_t*> rows_;  // the finest level's rows (no division by the strip height per cell)
