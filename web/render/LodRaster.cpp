@@ -154,6 +154,26 @@ std::uint8_t LodRaster::at(int k, int x, int y) const {
 }
 
 void LodRaster::add_cells(Point a, Point b, std::uint8_t bit) {
+    // Within one row or one column (a nest's straight edges, and most short segments): the run of cells from one
+    // end's to the other's, without stepping.
+    const double row = std::floor(a.y), column = std::floor(a.x);
+    if (row == std::floor(b.y) || column == std::floor(b.x)) {
+        const bool in_row = row == std::floor(b.y);
+        const double along0 = in_row ? std::floor(std::min(a.x, b.x)) : std::floor(std::min(a.y, b.y));
+        const double along1 = in_row ? std::floor(std::max(a.x, b.x)) : std::floor(std::max(a.y, b.y));
+        const double across = in_row ? row : column;
+        const int length = in_row ? width_ : height_, breadth = in_row ? height_ : width_;
+        if (!(across >= 0 && across < breadth && along1 >= 0 && along0 < length)) return;  // (NaN: nothing)
+        const int k = static_cast<int>(across);
+        const int first = static_cast<int>(std::max(along0, 0.0)), last = static_cast<int>(std::min(along1, length - 1.0));
+        if (in_row) {
+            std::uint8_t* cells = rows_[static_cast<std::size_t>(k)];
+            for (int x = first; x <= last; ++x) cells[x] |= bit;
+        } else {
+            for (int y = first; y <= last; ++y) rows_[static_cast<std::size_t>(y)][k] |= bit;
+        }
+        return;
+    }
     // Samples at most a cell apart along the longer axis: every cell the segment crosses gets the bit
     // (8-connected, as a one-pixel line is drawn). Stepped in 32.32 fixed point. (This loop is most of the time of
     // a big tape's level of detail: about one sample a cell crossed, 25 a motion of the generated nest at 822
