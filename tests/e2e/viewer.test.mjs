@@ -460,7 +460,7 @@ test('the block inspector says in words what a block does', async () => {
   assert.match(await words(14), /^function 7: .*oxygen/im);
   const arc = motions.find((m) => m.curve === 'arc');
   const t = await words(arc.line);
-  assert.match(t, /motion block, 5 words/);
+  assert.match(t, /motion block, 5 words: DX [+-]\d+, DY [+-]\d+, XC [+-]\d+, YC [+-]\d+, TC [+-] \((counter-)?clockwise\)/);
   assert.match(t, /cut (full circle|arc) (CCW|CW) r=\d+\.\d{3} mm, centre \(/);
   await page.screenshot({ path: path.join(shots, 'inspector.png') });
   // Every function block of every example is explained (never "not a machine function").

@@ -213,3 +213,17 @@ TEST(ViewerDocument, MemoryPerMotionIsCompact) {
     // The viewer's memory budget: 2 x the bytes + what the core's Tape of the tape holds.
     EXPECT_LT(doc->memory_bytes(), 2 * bytes.size() + doc->core_tape_bytes());
 }
+
+TEST(ViewerDocument, MotionBlocksAreDescribedByTheirWordNames) {
+    const std::string text = "+100-1673\n+0+1778+948+889-\n+800+400+200+400+-\n19\n2+30+40\n63\n";
+    const Profile p = *builtin_profile("iso6582");
+    const Tape tape = read_tape(text, p);
+    ASSERT_GE(tape.size(), 5u);
+    EXPECT_EQ(viewer::describe_block(tape, 0, p), "motion block, 2 words: DX +100, DY -1673 (unit increments)");
+    EXPECT_EQ(viewer::describe_block(tape, 1, p),
+              "motion block, 5 words: DX +0, DY +1778, XC +948, YC +889, TC - (clockwise) (unit increments)");
+    EXPECT_EQ(viewer::describe_block(tape, 2, p),
+              "motion block, 6 words: DX +800, DY +400, XP +200, YP +400, TC + (counter-clockwise), TP - (axis "
+              "parallel to X) (unit increments)");
+    EXPECT_EQ(viewer::describe_block(tape, 4, p), "motion block, 2 words: DX +30, DY +40 (unit increments); head 2");
+}

@@ -52,6 +52,13 @@ std::string hms(double seconds) {
     return fmt("%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
 }
 
+// A file size as people read it: "840 bytes", "12.4 KB", "133.5 MB".
+std::string size_text(std::size_t bytes) {
+    if (bytes < 1024) return fmt("%zu bytes", bytes);
+    if (bytes < 1024 * 1024) return fmt("%.1f KB", static_cast<double>(bytes) / 1024.0);
+    return fmt("%.1f MB", static_cast<double>(bytes) / 1048576.0);
+}
+
 ImU32 to_u32(Rgba c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
 
 // What the panels looked like with their own background: ImGui's window background blended over the drawing's
@@ -812,13 +819,16 @@ void App::draw_left_panel() {
             ImGui::TextDisabled("No tape loaded.");
         } else {
             const Stats& s = doc_->stats;
-            if (ImGui::BeginTable("stats", 2, ImGuiTableFlags_SizingStretchProp)) {
+            if (ImGui::BeginTable("stats", 2)) {
+                // The names as wide as the longest; the values in the rest, wrapped (the boxes do not fit a line).
+                ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+                ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
                 auto row = [](const char* k, const std::string& v) {
                     ImGui::TableNextRow();
                     ImGui::TableNextColumn();
                     ImGui::TextUnformatted(k);
                     ImGui::TableNextColumn();
-                    ImGui::TextUnformatted(v.c_str());
+                    ImGui::TextWrapped("%s", v.c_str());
                 };
                 row("cut", fmt("%.3f mm", s.cut_length_mm));
                 row("mark", fmt("%.3f mm", s.mark_length_mm));
@@ -838,8 +848,15 @@ void App::draw_left_panel() {
                 row("profile", doc_->profile.name);
                 ImGui::EndTable();
             }
-            ImGui::TextDisabled("%.1f MB, %zu lines, %zu segments, loaded in %.2f s", doc_->bytes.size() / 1048576.0,
-                                doc_->line_count(), buffers_.segment_count, load_seconds_);
+            const std::string about =
+                building_ && first_build_  // (the segments are still being made: none to count yet)
+                    ? fmt("%s, %zu lines, segments being made (%.0f %%)", size_text(doc_->bytes.size()).c_str(),
+                          doc_->line_count(), 100.0 * building_->progress())
+                    : fmt("%s, %zu lines, %zu segments, loaded in %.2f s", size_text(doc_->bytes.size()).c_str(),
+                          doc_->line_count(), buffers_.segment_count, load_seconds_);
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            ImGui::TextWrapped("%s", about.c_str());
+            ImGui::PopStyleColor();
         }
     }
     if (ImGui::CollapsingHeader("Layers", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -1138,7 +1155,7 @@ void App::draw_messages() {
         else ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
         ImGui::SetNextWindowSize(ImVec2(420, 0));
         ImGui::Begin("Loading", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove);
-        ImGui::Text("Loading %s (%.1f MB): %s", loading_name_.c_str(), loading_bytes_ / 1048576.0, load_stage());
+        ImGui::Text("Loading %s (%s): %s", loading_name_.c_str(), size_text(loading_bytes_).c_str(), load_stage());
         ImGui::ProgressBar(load_progress(), ImVec2(-1, 0));
         ImGui::End();
     } else if (!doc_) {

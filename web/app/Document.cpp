@@ -286,10 +286,21 @@ std::string describe_block(const Tape& tape, std::size_t i, const Profile& profi
             return describe_function(b.code, true, w.empty() ? 0 : static_cast<long>(w[0]), profile);
         }
         case BlockKind::Motion: {
+            // The words by their names (ESSI-SEMANTICS §2): TC and TP count by their sign only.
             const auto w = tape.words(i);
+            static constexpr const char* kLine[] = {"DX", "DY"};
+            static constexpr const char* kArc[] = {"DX", "DY", "XC", "YC"};
+            static constexpr const char* kParabola[] = {"DX", "DY", "XP", "YP"};
+            const char* const* names = w.size() == 5 ? kArc : w.size() == 6 ? kParabola : kLine;
+            const std::size_t named = w.size() == 2 ? 2 : w.size() == 5 || w.size() == 6 ? 4 : 0;
             std::string s = fmt("motion block, %d words:", b.word_count());
-            for (auto v : w) s += fmt(" %+d", static_cast<int>(v));
-            if (b.has_address()) s += fmt(" (head %d)", static_cast<int>(b.code));
+            for (std::size_t k = 0; k < named; ++k) s += fmt("%s %s %+d", k == 0 ? "" : ",", names[k], static_cast<int>(w[k]));
+            if (named == 0)
+                for (auto v : w) s += fmt(" %+d", static_cast<int>(v));
+            if (w.size() >= 5) s += b.tc_positive() ? ", TC + (counter-clockwise)" : ", TC - (clockwise)";
+            if (w.size() == 6) s += b.tp_positive() ? ", TP + (axis parallel to Y)" : ", TP - (axis parallel to X)";
+            s += " (unit increments)";
+            if (b.has_address()) s += fmt("; head %d", static_cast<int>(b.code));
             return s;
         }
         case BlockKind::Comment: return "comment (inside 3 ... 4, not executed)";
