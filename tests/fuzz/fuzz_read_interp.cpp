@@ -36,6 +36,41 @@ const essi::Profile& profile_named(const char* name) {
     return std::string_view(name) == "woyda" ? woyda : iso;
 }
 
+// TapeChecker's one more sink (the viewer's document): every motion once (the straight ones of head 1 as
+// UnitLines, whose units are their mm), and the statistics of check_tape.
+class CountingSink : public essi::MotionSink {
+public:
+    explicit CountingSink(const essi::Profile& p) : profile_(p) {}
+    unsigned long long motions = 0;
+    bool units_agree = true;
+    void on_motion(const essi::MotionRecord&) override { ++motions; }
+    void on_line(const essi::UnitLine& l) override {
+        ++motions;
+        const double ex = static_cast<double>(l.end_x) * profile_.unit_mm + profile_.setup_offset_x_mm;
+        const double sy = static_cast<double>(l.start_y) * profile_.unit_mm + profile_.setup_offset_y_mm;
+        units_agree = units_agree && ex == l.end.x && sy == l.start.y;
+    }
+private:
+    const essi::Profile& profile_;
+};
+
+void check_also(std::string_view bytes, const char* name, const essi::CheckResult& want) {
+    const essi::Profile& profile = profile_named(name);
+    CountingSink also(profile);
+    essi::TapeChecker checker(bytes, profile, &also);
+    essi::TapeReader reader(bytes, profile);
+    essi::Tape chunk;
+    while (reader.read_chunk(chunk, 64)) checker.check_chunk(chunk);
+    const essi::CheckResult got = checker.finish();
+    if (got.stats.motions != want.stats.motions || also.motions != want.stats.motions)
+        fail("TapeChecker with a sink counts other motions than check_tape", name);
+    if (got.diagnostics.size() != want.diagnostics.size())
+        fail("TapeChecker with a sink gives other diagnostics than check_tape", name);
+    if (!(got.stats.cut_length_mm == want.stats.cut_length_mm) && !(std::isnan(got.stats.cut_length_mm)))
+        fail("TapeChecker with a sink gives another cut length than check_tape", name);
+    if (!also.units_agree) fail("a UnitLine's units are not its mm", name);
+}
+
 void check_one(std::string_view bytes, const char* name) {
     const essi::Profile& profile = profile_named(name);
     // check_tape is documented never to throw: an exception escaping here terminates (= a failure).
@@ -59,6 +94,8 @@ void check_one(std::string_view bytes, const char* name) {
     if (!(s.cut_length_mm >= 0) || !(s.mark_length_mm >= 0) || !(s.travel_length_mm >= 0) ||
         !(s.rapid_length_mm >= 0))
         fail("a length in Stats is negative or NaN", name);
+
+    check_also(bytes, name, r);
 }
 
 }  // namespace
