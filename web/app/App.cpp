@@ -31,6 +31,7 @@ constexpr double kPickRadiusPx = 6;
 constexpr double kSnapRadiusPx = 10;
 constexpr std::size_t kBuildMotionsPerFrame = 200000;  // tapes up to this size are drawn in the loading frame
 constexpr std::size_t kBuildMotionsPerStep = 4096;  // between two looks at the clock (and texture uploads)
+constexpr float kProgressSteps = 50;  // the loading bar moves in 2 % steps
 constexpr double kStepBudgetMs = 30;  // work per frame while loading (the page keeps drawing)
 // Tapes with at least this many motions get a level-of-detail raster for zoomed-out views (below, drawing every
 // segment costs a CPU renderer less than a frame or two).
@@ -851,7 +852,7 @@ void App::draw_left_panel() {
             const std::string about =
                 building_ && first_build_  // (the segments are still being made: none to count yet)
                     ? fmt("%s, %zu lines, segments being made (%.0f %%)", size_text(doc_->bytes.size()).c_str(),
-                          doc_->line_count(), 100.0 * building_->progress())
+                          doc_->line_count(), 100.0 * std::floor(building_->progress() * kProgressSteps) / kProgressSteps)
                     : fmt("%s, %zu lines, %zu segments, loaded in %.2f s", size_text(doc_->bytes.size()).c_str(),
                           doc_->line_count(), buffers_.segment_count, load_seconds_);
             ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
@@ -1156,7 +1157,9 @@ void App::draw_messages() {
         ImGui::SetNextWindowSize(ImVec2(420, 0));
         ImGui::Begin("Loading", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove);
         ImGui::Text("Loading %s (%s): %s", loading_name_.c_str(), size_text(loading_bytes_).c_str(), load_stage());
-        ImGui::ProgressBar(load_progress(), ImVec2(-1, 0));
+        // In steps of kProgressSteps: a frame whose panels did not change is not drawn again (render()), and on a
+        // CPU renderer every frame drawn is time the browser's compositor takes from the loading.
+        ImGui::ProgressBar(std::floor(load_progress() * kProgressSteps) / kProgressSteps, ImVec2(-1, 0));
         ImGui::End();
     } else if (!doc_) {
         ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
