@@ -204,9 +204,7 @@ void Renderer::add_page(GpuPath& path, std::size_t first, std::size_t rows) {
     pg.seg_tex = new_texture();
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kTexWidth, h, 0, GL_RGBA, GL_FLOAT, nullptr);
     pg.kind_tex = new_texture();
-    const std::vector<std::uint8_t> zeros(static_cast<std::size_t>(kTexWidth) * rows, 0);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, kTexWidth, h, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, zeros.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, kTexWidth, h, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
     glBindTexture(GL_TEXTURE_2D, 0);
     path.pages.push_back(pg);
 }
