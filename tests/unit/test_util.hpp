@@ -151,6 +151,41 @@ inline void expect_same_result(const essi::CheckResult& a, const essi::CheckResu
     }
 }
 
+// How two records of one motion must agree: to the bit (the interpreter's stream, however it was delivered), or
+// as the viewer's compact document rebuilds it (feed and kerf kept as float, the block index not kept).
+enum class RecordMatch { Exact, ViewerDocument };
+
+// Every field of `got` against `want` (ASSERTs: the caller checks HasFatalFailure() to stop a loop).
+inline void expect_same_record(const essi::MotionRecord& got, const essi::MotionRecord& want, const std::string& at,
+                               RecordMatch how = RecordMatch::Exact) {
+    const bool exact = how == RecordMatch::Exact;
+    ASSERT_EQ(got.line, want.line) << at;
+    if (exact) {
+        ASSERT_EQ(got.block, want.block) << at;
+    }
+    ASSERT_EQ(got.kind, want.kind) << at;
+    ASSERT_EQ(got.curve, want.curve) << at;
+    ASSERT_EQ(got.tools, want.tools) << at;
+    ASSERT_EQ(got.head, want.head) << at;
+    ASSERT_EQ(got.kerf, want.kerf) << at;
+    ASSERT_EQ(got.ccw, want.ccw) << at;
+    for (const auto& [x, y] : {std::pair{got.start, want.start}, std::pair{got.end, want.end},
+                               std::pair{got.centre, want.centre}})
+        ASSERT_TRUE(same_bits(x.x, y.x) && same_bits(x.y, y.y)) << at;
+    for (const auto& [x, y] : {std::pair{got.radius, want.radius}, std::pair{got.end_radius, want.end_radius},
+                               std::pair{got.sweep, want.sweep}, std::pair{got.length_mm, want.length_mm}})
+        ASSERT_TRUE(same_bits(x, y)) << at;
+    const auto kept = [exact](double v) { return exact ? v : static_cast<double>(static_cast<float>(v)); };
+    ASSERT_TRUE(same_bits(got.feed_mm_min, kept(want.feed_mm_min))) << at;
+    ASSERT_TRUE(same_bits(got.kerf_mm, kept(want.kerf_mm))) << at;
+    if (want.curve == essi::CurveKind::Parabola) {
+        const essi::ParabolaGeom &g = got.parabola, &w = want.parabola;
+        ASSERT_TRUE(same_bits(g.vertex.x, w.vertex.x) && same_bits(g.vertex.y, w.vertex.y) && same_bits(g.t0, w.t0) &&
+                    same_bits(g.t1, w.t1) && same_bits(g.p, w.p))
+            << at;
+    }
+}
+
 #define EXPECT_POINT_NEAR(p, ex, ey, tol)                 \
     do {                                                  \
         const essi::Point essi_pt_ = (p);                 \

@@ -12,19 +12,16 @@
 #include "essi/interp.hpp"
 #include "essi/read.hpp"
 #include "paths.hpp"
+#include "test_util.hpp"
 
 using namespace essi;
+using essi_test::expect_same_record;
+using essi_test::RecordMatch;
 using essi::viewer::Document;
 using essi::viewer::DocumentLoader;
 using essi::viewer::LineBlocks;
 
 namespace {
-
-class Collect : public MotionSink {
-public:
-    std::vector<MotionRecord> records;
-    void on_motion(const MotionRecord& r) override { records.push_back(r); }
-};
 
 std::unique_ptr<Document> load(const std::string& bytes, const Profile& p) {
     DocumentLoader loader("tape", bytes, p);
@@ -39,32 +36,12 @@ void expect_same_records(const Document& doc, const std::vector<MotionRecord>& w
         const MotionRecord r = doc.record(i);
         const MotionRecord& w = want[i];
         const std::string at = what + " motion " + std::to_string(i) + " line " + std::to_string(w.line);
-        ASSERT_EQ(r.line, w.line) << at;
-        ASSERT_EQ(r.kind, w.kind) << at;
-        ASSERT_EQ(r.curve, w.curve) << at;
-        ASSERT_EQ(r.tools, w.tools) << at;
-        ASSERT_EQ(r.head, w.head) << at;
-        ASSERT_EQ(r.kerf, w.kerf) << at;
-        ASSERT_EQ(r.ccw, w.ccw) << at;
-        // Exactly (==, not near): the same doubles as the interpreter's.
-        ASSERT_EQ(r.start, w.start) << at;
-        ASSERT_EQ(r.end, w.end) << at;
+        expect_same_record(r, w, at, RecordMatch::ViewerDocument);  // exactly: the interpreter's doubles
+        if (::testing::Test::HasFatalFailure()) return;
         ASSERT_EQ(doc.start_of(i), w.start) << at;
         ASSERT_EQ(doc.end_of(i), w.end) << at;
-        ASSERT_EQ(r.centre, w.centre) << at;
         if (w.curve == CurveKind::Arc) {
             ASSERT_EQ(doc.arc_centre(i), w.centre) << at;
-        }
-        ASSERT_EQ(r.radius, w.radius) << at;
-        ASSERT_EQ(r.end_radius, w.end_radius) << at;
-        ASSERT_EQ(r.sweep, w.sweep) << at;
-        ASSERT_EQ(r.length_mm, w.length_mm) << at;
-        // Feed and kerf are kept as float (display only).
-        ASSERT_EQ(r.feed_mm_min, static_cast<double>(static_cast<float>(w.feed_mm_min))) << at;
-        ASSERT_EQ(r.kerf_mm, static_cast<double>(static_cast<float>(w.kerf_mm))) << at;
-        if (w.curve == CurveKind::Parabola) {
-            ASSERT_EQ(r.parabola.vertex, w.parabola.vertex) << at;
-            ASSERT_EQ(r.parabola.t1, w.parabola.t1) << at;
         }
     }
 }
@@ -97,10 +74,10 @@ void expect_same_blocks(const Document& doc, const Tape& want, const std::string
 void check_tape(const std::string& bytes, const Profile& p, const std::string& what) {
     const auto doc = load(bytes, p);
     const Tape tape = read_tape(bytes, p);
-    Collect sink;
+    essi_test::RecordingSink sink;
     std::vector<Diagnostic> diagnostics;
     interpret(tape, bytes, p, sink, diagnostics);
-    expect_same_records(*doc, sink.records, what);
+    expect_same_records(*doc, sink.motions, what);
     expect_same_blocks(*doc, tape, what);
     for (std::size_t i = 0; i < doc->motions.size(); ++i) {
         const std::size_t block = doc->block_of(i);
