@@ -31,7 +31,8 @@ struct CheckResult {
 // check_tape does, for callers that read on another thread or also want the motion stream.
 class TapeChecker {
 public:
-    // `also`, when given, receives every motion and event too (e.g. the viewer's GPU buffers).
+    // `also`, when given, receives every motion and event too (e.g. the viewer's document), its straight lines
+    // of head 1 as MotionSink::on_line (UnitLine: units and mm, no record).
     TapeChecker(std::string_view bytes, const Profile& profile, MotionSink* also = nullptr);
     ~TapeChecker();
     TapeChecker(const TapeChecker&) = delete;
