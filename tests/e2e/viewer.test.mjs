@@ -535,6 +535,53 @@ test('a 50 MB tape loads with a moving progress bar while the page keeps drawing
   await page.close();
 });
 
+// Drawing a zoomed-in view of a big tape takes SwiftShader seconds (about a million segments a second): the image
+// is filled over several frames (Renderer::kSegmentsPerFrame) and the page goes on drawing meanwhile.
+test('a zoomed-in view of a big tape fills over several frames while the page keeps drawing', async () => {
+  const name = generatedTape(14);  // about 1 M motions, 3.4 M segments
+  const page = await newPage();
+  await dropFromUrl(page, '/gen/' + name, name);
+  await page.waitForFunction((n) => { const s = essikit.state(); return s.name === n && s.status === 'ready' && !s.busy; },
+                             name, { timeout: 300000, polling: 200 });
+  const before = await page.evaluate(() => essikit.state());
+  const v = before.view;
+  // Every animation frame from the zoom (8x, at the centre) until the image is complete and no work is left.
+  const seen = await page.evaluate(async ([x, y, zoom]) => {
+    const out = [];
+    const t0 = performance.now();
+    essikit.setView(x, y, zoom);
+    let last = t0;
+    for (;;) {
+      await new Promise((r) => requestAnimationFrame(r));
+      const t = performance.now();
+      const s = essikit.state();
+      out.push({ gap: Math.round(t - last), pending: s.render.pending_segments, busy: s.busy, lod: s.lod.drawn });
+      last = t;
+      if ((out.length > 3 && s.render.pending_segments === 0 && !s.busy) || t - t0 > 240000) break;
+    }
+    return out;
+  }, [v.x_mm, v.y_mm, v.zoom * 8]);
+  const after = await page.evaluate(() => essikit.state());
+  const filling = seen.filter((f) => f.pending > 0);
+  const maxGap = Math.max(...seen.map((f) => f.gap));
+  console.log(`zoom 8x on ${after.segments} segments: ${seen.length} frames until complete, ${filling.length} of them ` +
+              `with segments still to draw (at most ${Math.max(...seen.map((f) => f.pending))}), longest frame gap ${maxGap} ms, ` +
+              `${after.render.filling_frames - before.render.filling_frames} filling frames`);
+  assert.equal(seen.at(-1).pending, 0, 'the zoomed-in image was not completed in 4 minutes');
+  assert.ok(seen.every((f) => !f.lod), 'the zoomed-in view was drawn from the level of detail');
+  assert.ok(filling.length >= 2, `the image was drawn in one frame (${JSON.stringify(seen.slice(0, 5))})`);
+  assert.ok(after.render.filling_frames - before.render.filling_frames >= 2, 'no frame went on filling the image');
+  assert.ok(maxGap < 4000, `the page froze for ${maxGap} ms`);
+  // The completed image shows the cuts: the cut colour in the drawing area.
+  await page.mouse.move(5, 890);
+  const at = await pixels(page, await page.screenshot({ path: path.join(shots, 'zoomed-big-tape.png') }));
+  const [ax, ay, aw, ah] = after.view.area;
+  let cut = 0;
+  for (let y = ay + 4; y < ay + ah - 4; y += 4) for (let x = ax + 4; x < ax + aw - 4; x += 4) if (near(at(x, y), CUT_RGB)) ++cut;
+  assert.ok(cut > 200, `only ${cut} cut-coloured samples in the zoomed-in drawing`);
+  await page.close();
+});
+
 // The budget of issue 3: the page's memory for a tape stays below 2 x its bytes + what the core's Tape of it holds
 // (tape_memory_bytes: 12 bytes a block, 4 a word). Checked on the viewer's own count and on the WASM heap: the
 // peak of malloc's footprint (what HEAPU8 must hold; it never shrinks) and HEAPU8's growth. Returns the state.

@@ -416,7 +416,7 @@ void App::render(bool keep_unchanged) {
     if (!graphics_ok_) return;
     const ImDrawData& ui = *ImGui::GetDrawData();
     const std::uint64_t hash = ui_hash(ui);
-    if (keep_unchanged && scene_ && scene_ == last_scene_ && hash == last_ui_hash_) {
+    if (keep_unchanged && scene_ && scene_ == last_scene_ && hash == last_ui_hash_ && !renderer_.filling()) {
         ++skipped_frames_;
         return;
     }
@@ -1161,6 +1161,14 @@ void App::draw_messages() {
         // CPU renderer every frame drawn is time the browser's compositor takes from the loading.
         ImGui::ProgressBar(std::floor(load_progress() * kProgressSteps) / kProgressSteps, ImVec2(-1, 0));
         ImGui::End();
+    } else if (doc_ && renderer_.filling()) {
+        // A zoomed-in view of a big tape is drawn over several frames (Renderer::kSegmentsPerFrame).
+        ImGui::SetNextWindowPos(ImVec2(centre.x, a.y + 8), ImGuiCond_Always, ImVec2(0.5f, 0.f));
+        ImGui::Begin("Drawing", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                             ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
+                                             ImGuiWindowFlags_NoInputs);
+        ImGui::Text("Drawing this view: %.1f M segments to go", renderer_.stats().pending_segments / 1e6);
+        ImGui::End();
     } else if (!doc_) {
         ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
         ImGui::Begin("Welcome", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
@@ -1354,7 +1362,8 @@ std::string App::state_json() const {
     j["inspector"] = std::move(insp);
     const RenderStats& rs = renderer_.stats();
     j["render"] = {{"frames", rs.frames}, {"full_redraws", rs.full_redraws}, {"partial_redraws", rs.partial_redraws},
-                   {"cached_frames", rs.cached_frames}, {"unchanged_frames", skipped_frames_}};
+                   {"cached_frames", rs.cached_frames}, {"filling_frames", rs.filling_frames},
+                   {"pending_segments", rs.pending_segments}, {"unchanged_frames", skipped_frames_}};
     j["help"] = show_help_;
     j["share_url"] = share_url_;
     j["message"] = message_;

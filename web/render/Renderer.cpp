@@ -237,6 +237,16 @@ void Renderer::append(GpuPath& path, PathBuffers& b) {
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, static_cast<GLint>(row0), static_cast<GLsizei>(width),
                         static_cast<GLsizei>(rows), GL_RED_INTEGER, GL_UNSIGNED_BYTE, b.staged_kinds.data());
         const std::size_t n = rows == 1 && width < kTexWidth ? width : rows * kTexWidth;
+        for (std::size_t k = 0; k < n; ++k) {  // the boxes of the groups these segments are in
+            const float* e = b.staged_ends.data() + 4 * k;
+            const std::size_t g = (first + k) / GpuPath::kCullGroup;
+            if (4 * g == path.group_boxes.size()) path.group_boxes.insert(path.group_boxes.end(), {e[0], e[1], e[0], e[1]});
+            float* box = path.group_boxes.data() + 4 * g;
+            box[0] = std::min({box[0], e[0], e[2]});
+            box[1] = std::min({box[1], e[1], e[3]});
+            box[2] = std::max({box[2], e[0], e[2]});
+            box[3] = std::max({box[3], e[1], e[3]});
+        }
         b.drop_staged(n);
         path.count += n;
         path.version = ++version_counter_;
@@ -251,6 +261,7 @@ void Renderer::release(GpuPath& path) {
         glDeleteTextures(1, &p.kind_tex);
     }
     path.pages.clear();
+    path.group_boxes.clear();
     path.count = 0;
     path.version = ++version_counter_;
 }
@@ -336,9 +347,8 @@ void Renderer::draw_lod(const Target& t, int mask) {
     glDrawArrays(GL_TRIANGLES, 0, 6);
 }
 
-// Segments [first, first + count) of `path`, a draw per page they touch (the path program is in use).
-void Renderer::draw_segments(const GpuPath& path, std::size_t first, std::size_t count) {
-    const std::size_t end = std::min(first + count, path.count);
+// A draw per page the run touches (the path program is in use).
+void Renderer::draw_run(const GpuPath& path, std::size_t first, std::size_t end) {
     for (const GpuPage& pg : path.pages) {
         const std::size_t a = std::max(first, pg.first);
         const std::size_t b = std::min(end, pg.first + pg.rows * kTexWidth);
@@ -350,6 +360,47 @@ void Renderer::draw_segments(const GpuPath& path, std::size_t first, std::size_t
         glUniform1i(glGetUniformLocation(path_program_, "u_first"), static_cast<GLint>(a - pg.first));
         glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>((b - a) * 6));
     }
+}
+
+std::size_t Renderer::draw_segments(const GpuPath& path, std::size_t first, std::size_t last, const Target* cull,
+                                    std::size_t budget) {
+    last = std::min(last, path.count);
+    if (first >= last) return last;
+    if (cull == nullptr && budget >= last - first) {
+        draw_run(path, first, last);
+        return last;
+    }
+    // What the target shows, in mm relative to the origin (px = origin_px + (x - cx, cy - y) x zoom), widened by
+    // the thickest line.
+    float x0 = -1e30f, y0 = -1e30f, x1 = 1e30f, y1 = 1e30f;
+    if (cull != nullptr && cull->zoom > 0) {
+        const float margin = kCullMarginPx * cull->scale / cull->zoom;
+        x0 = cull->cx - cull->ox / cull->zoom - margin;
+        x1 = cull->cx + (static_cast<float>(cull->w) - cull->ox) / cull->zoom + margin;
+        y0 = cull->cy - (static_cast<float>(cull->h) - cull->oy) / cull->zoom - margin;
+        y1 = cull->cy + cull->oy / cull->zoom + margin;
+    }
+    const auto meets = [&](std::size_t g) {
+        if (4 * g + 3 >= path.group_boxes.size()) return true;
+        const float* b = path.group_boxes.data() + 4 * g;
+        return b[0] <= x1 && b[2] >= x0 && b[1] <= y1 && b[3] >= y0;
+    };
+    // Runs of groups that meet the view, one draw (per page) each, until the budget is spent.
+    constexpr std::size_t G = GpuPath::kCullGroup;
+    std::size_t drawn = 0, i = first;
+    while (i < last && drawn < budget) {
+        const std::size_t group_end = std::min(last, (i / G + 1) * G);
+        if (!meets(i / G)) {
+            i = group_end;
+            continue;
+        }
+        std::size_t end = group_end;
+        while (end < last && drawn + (end - i) < budget && meets(end / G)) end = std::min(last, end + G);
+        draw_run(path, i, end);
+        drawn += end - i;
+        i = end;
+    }
+    return i;
 }
 
 void Renderer::draw_grid(const Target& t, double grid_step, Point world_origin) {
@@ -385,7 +436,7 @@ void Renderer::draw_selection(const Target& t, const GpuPath& path, const DrawOp
     glUniform4f(glGetUniformLocation(path_program_, "u_override"), kSelectionColor.r, kSelectionColor.g,
                 kSelectionColor.b, kSelectionColor.a);
     glUniform1f(glGetUniformLocation(path_program_, "u_extra_width"), 1.0f * t.scale);
-    draw_segments(path, o.selection_first, o.selection_count);
+    draw_segments(path, o.selection_first, o.selection_first + o.selection_count);
 }
 
 void Renderer::draw_markers(const Target& t, int marker_mask) {
@@ -458,20 +509,24 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
     const std::size_t limit = std::min(count, o.segment_limit);
     const int layer_mask = o.layer_mask & 0xF;
 
-    // The scene: grid, paths [from, limit), markers (when `full`), into target t.
+    // The scene into target t: the grid (when `full`), the paths [from, limit) that show in t until `budget`
+    // segments are drawn, then the markers once every path is in. Returns where the paths stopped.
     const bool lod = o.lod && lod_levels_ > 0;
-    auto draw_scene = [&](const Target& t, std::size_t from, bool full) {
+    auto draw_scene = [&](const Target& t, std::size_t from, bool full, std::size_t budget) -> std::size_t {
         if (full) draw_grid(t, grid_step, world_origin);
         if (lod) {  // the raster has the paths and the pierces; the start marker is drawn as usual
             draw_lod(t, layer_mask | ((o.marker_mask & 1) ? LodRaster::kPierceBit : 0));
             draw_markers(t, o.marker_mask & 2);
-            return;
+            return limit;
         }
+        std::size_t reached = limit;
         if (limit > from && layer_mask != 0) {  // every layer hidden: not one vertex to run
             begin_paths(t, layer_mask);
-            draw_segments(*path, from, limit - from);
+            reached = draw_segments(*path, from, limit, &t, budget);
         }
-        if (full) draw_markers(t, o.marker_mask);
+        if (reached == limit && (full || cache_markers_pending_)) draw_markers(t, o.marker_mask);
+        cache_markers_pending_ = reached < limit && (full || cache_markers_pending_);
+        return reached;
     };
 
     // The drawing area and its margin, in framebuffer pixels (top-left origin).
@@ -494,8 +549,9 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
         glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
         glClear(GL_COLOR_BUFFER_BIT);
         glDisable(GL_SCISSOR_TEST);
-        draw_scene(window, 0, true);
+        draw_scene(window, 0, true, ~std::size_t(0));  // (no image to fill over frames: all at once)
         ++stats_.full_redraws;
+        stats_.pending_segments = 0;
         cache_valid_ = false;
     } else {
         const SceneKey key{view.zoom, grid_step, world_origin, layer_mask, o.marker_mask, fb_w, fb_h, s, view.area, path,
@@ -518,24 +574,26 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
             glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
             glClear(GL_COLOR_BUFFER_BIT);
             const Target t{window.cx, window.cy, zoom, window.ox - cache_left_, window.oy - cache_top_, cache_w_, cache_h_, s};
-            draw_scene(t, 0, true);
-            cache_limit_ = limit;
+            cache_markers_pending_ = false;
+            cache_limit_ = draw_scene(t, 0, true, kSegmentsPerFrame);
             cache_valid_ = true;
             ++stats_.full_redraws;
         } else if (limit > cache_limit_ && !lod) {
-            // Playback moved forward: add the new segments to the image (drawn at the image's own view).
+            // The image is still being filled, or playback moved forward: add the next segments to the image
+            // (drawn at the image's own view).
             glBindFramebuffer(GL_FRAMEBUFFER, cache_fbo_);
             glViewport(0, 0, cache_w_, cache_h_);
             // The image's own mapping: its centre view (cache_cx_, cache_cy_) at the area's centre.
             const Target own{static_cast<float>(cache_cx_), static_cast<float>(cache_cy_), zoom,
                              static_cast<float>(view.ox() * s) - cache_left_, static_cast<float>(view.oy() * s) - cache_top_,
                              cache_w_, cache_h_, s};
-            draw_scene(own, cache_limit_, false);
-            cache_limit_ = limit;
-            ++stats_.partial_redraws;
+            const bool filling = cache_markers_pending_;
+            cache_limit_ = draw_scene(own, cache_limit_, false, kSegmentsPerFrame);
+            ++(filling ? stats_.filling_frames : stats_.partial_redraws);
         } else {
             ++stats_.cached_frames;
         }
+        stats_.pending_segments = lod || limit <= cache_limit_ ? 0 : limit - cache_limit_;
         // The window: the panels' colour, the image where it is now (it covers the drawing area), then the overlays.
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, fb_w, fb_h);

@@ -48,6 +48,8 @@ struct RenderStats {
     std::uint64_t full_redraws = 0;    // the whole scene drawn (into the image or the window)
     std::uint64_t partial_redraws = 0; // playback moved forward: only the new segments drawn into the image
     std::uint64_t cached_frames = 0;   // the image reused, moved by the pan
+    std::uint64_t filling_frames = 0;  // frames that went on drawing an image too big for one frame
+    std::size_t pending_segments = 0;  // segments of the current image still to draw (0: it is complete)
 };
 
 // Colours by MotionKind: rapid, travel, cut, mark (also used by the UI legend and the e2e test).
@@ -69,7 +71,11 @@ struct GpuPage {
 
 // A segment set on the GPU: [0, count) uploaded.
 struct GpuPath {
+    static constexpr std::size_t kCullGroup = 256;  // segments a box
     std::vector<GpuPage> pages;
+    // The box of every kCullGroup segments (min x, min y, max x, max y; mm relative to the document origin): a
+    // zoomed-in view draws only the groups that meet it.
+    std::vector<float> group_boxes;
     std::size_t count = 0;
     std::uint64_t version = 0;  // changes whenever its content does (the cached image depends on it)
     [[nodiscard]] std::size_t gpu_bytes() const;
@@ -80,6 +86,11 @@ public:
     static constexpr int kTexWidth = 4096;        // segments a texture row (GLES 3 guarantees 2048; WebGL2 4096+)
     static constexpr std::size_t kPageRows = 256;  // rows a page at most: 1 M segments, 17 MB
     static constexpr std::size_t kRowQuantum = 16; // page heights are multiples of this
+    // Segments drawn into the image a frame at most: SwiftShader draws about a million segments a second, so a
+    // zoomed-in view of a big tape fills its image over several frames instead of freezing the page (the
+    // pan, the zoom and the panels go on meanwhile; what is drawn so far shows).
+    static constexpr std::size_t kSegmentsPerFrame = 150000;
+    static constexpr float kCullMarginPx = 8;  // a group's box meets the view when it is this close (line widths)
 
     bool init();  // compiles the programs; false (and a message) when the GPU refuses them
     [[nodiscard]] const char* error() const { return error_; }
@@ -106,6 +117,8 @@ public:
     void draw_ui(const ImDrawData& data, int fb_w, int fb_h);
 
     [[nodiscard]] const RenderStats& stats() const { return stats_; }
+    // The image is still being filled: the next frames must be drawn even when nothing changed.
+    [[nodiscard]] bool filling() const { return stats_.pending_segments > 0; }
     void invalidate_cache() { cache_valid_ = false; }
 
 private:
@@ -129,7 +142,11 @@ private:
     };
     bool init_ui();
     void add_page(GpuPath& path, std::size_t first, std::size_t rows);
-    void draw_segments(const GpuPath& path, std::size_t first, std::size_t count);
+    void draw_run(const GpuPath& path, std::size_t first, std::size_t end);
+    // Segments [first, last) of `path`, those of the groups whose box meets `cull` (all when null), until about
+    // `budget` are drawn; returns where it stopped (`last` when it drew them all).
+    std::size_t draw_segments(const GpuPath& path, std::size_t first, std::size_t last, const Target* cull = nullptr,
+                              std::size_t budget = ~std::size_t(0));
     void draw_grid(const Target& t, double grid_step, Point world_origin);
     void begin_paths(const Target& t, int layer_mask);
     void draw_markers(const Target& t, int marker_mask);
@@ -150,6 +167,7 @@ private:
     bool cache_valid_ = false;
     SceneKey cache_key_;
     std::size_t cache_limit_ = 0;        // segments [0, limit) are in the image
+    bool cache_markers_pending_ = false; // the markers go on top once the image's segments are all in
     double cache_cx_ = 0, cache_cy_ = 0; // the view centre (mm) the image was drawn at
     float cache_left_ = 0, cache_top_ = 0;  // the image's top-left corner in window pixels, then
     std::uint64_t version_counter_ = 0, markers_version_ = 0;
