@@ -568,7 +568,9 @@ test('a zoomed-in view of a big tape fills over several frames while the page ke
               `with segments still to draw (at most ${Math.max(...seen.map((f) => f.pending))}), longest frame gap ${maxGap} ms, ` +
               `${after.render.filling_frames - before.render.filling_frames} filling frames`);
   assert.equal(seen.at(-1).pending, 0, 'the zoomed-in image was not completed in 4 minutes');
-  assert.ok(seen.every((f) => !f.lod), 'the zoomed-in view was drawn from the level of detail');
+  // The raster stands in only while the segments are made again at the zoom's tolerance (busy).
+  assert.ok(seen.every((f) => !f.lod || f.busy), 'the zoomed-in view was drawn from the level of detail');
+  assert.ok(!seen.at(-1).lod, 'the completed view is the level of detail');
   assert.ok(filling.length >= 2, `the image was drawn in one frame (${JSON.stringify(seen.slice(0, 5))})`);
   assert.ok(after.render.filling_frames - before.render.filling_frames >= 2, 'no frame went on filling the image');
   assert.ok(maxGap < 4000, `the page froze for ${maxGap} ms`);

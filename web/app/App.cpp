@@ -352,8 +352,10 @@ void App::frame() {
         o.panel_color = panel_color();
         // Zoomed out on a big tape: the level-of-detail raster instead of millions of sub-pixel segments (also
         // while the first build makes the exact segments: the raster is made before them).
+        // While a big tape's segments are made again at a new zoom's tolerance (seconds), the raster stands in for
+        // them: filling the image with the segments about to be replaced would only delay the new ones.
         o.lod = !playback_ && renderer_.has_lod() &&
-                renderer_.lod_cell_mm() * view_.zoom * o.framebuffer_scale <= Renderer::kLodMaxCellPx;
+                (renderer_.lod_cell_mm() * view_.zoom * o.framebuffer_scale <= Renderer::kLodMaxCellPx || remaking());
         lod_drawn_ = o.lod;
         // While the first build runs nothing else of the new tape is drawn (the frames stay cheap).
         o.marker_mask = first_build_ && !o.lod ? 0 : (show_pierces_ ? 1 : 0) | (show_start_ ? 2 : 0);
@@ -1161,13 +1163,18 @@ void App::draw_messages() {
         // CPU renderer every frame drawn is time the browser's compositor takes from the loading.
         ImGui::ProgressBar(std::floor(load_progress() * kProgressSteps) / kProgressSteps, ImVec2(-1, 0));
         ImGui::End();
-    } else if (doc_ && renderer_.filling()) {
-        // A zoomed-in view of a big tape is drawn over several frames (Renderer::kSegmentsPerFrame).
+    } else if (doc_ && (renderer_.filling() || remaking())) {
+        // A zoomed-in view of a big tape is drawn over several frames (Renderer::kSegmentsPerFrame), after its
+        // segments are made at the zoom's tolerance.
         ImGui::SetNextWindowPos(ImVec2(centre.x, a.y + 8), ImGuiCond_Always, ImVec2(0.5f, 0.f));
         ImGui::Begin("Drawing", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                              ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
                                              ImGuiWindowFlags_NoInputs);
-        ImGui::Text("Drawing this view: %.1f M segments to go", renderer_.stats().pending_segments / 1e6);
+        if (remaking())
+            ImGui::Text("Drawing this view: making the segments for this zoom (%.0f %%)",
+                        100.0 * std::floor(building_->progress() * kProgressSteps) / kProgressSteps);
+        else
+            ImGui::Text("Drawing this view: %.1f M segments to go", renderer_.stats().pending_segments / 1e6);
         ImGui::End();
     } else if (!doc_) {
         ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
