@@ -9,6 +9,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync, spawn } from 'node:child_process';
 import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
 import {
   webRoot, essiBin, genBin, chromiumPath, examplesDir, shots, CUT_RGB, freePort, startStaticServer, launch,
@@ -253,7 +254,10 @@ test('essi serve serves the viewer and the examples', async (t) => {
   } catch { /* not built or no serve command */ }
   if (!help.includes('serve')) return t.skip('essi serve is not available');
   const port = await freePort();
-  const proc = spawn(essiBin, ['serve', '--host', '127.0.0.1', '--port', String(port)], { stdio: ['ignore', 'pipe', 'pipe'] });
+  // Its share store in a folder of its own (by default it is ./essi-data, in whatever folder the tests run from).
+  const data = fs.mkdtempSync(path.join(os.tmpdir(), 'essi-serve-'));
+  const proc = spawn(essiBin, ['serve', '--host', '127.0.0.1', '--port', String(port), '--data', data],
+                     { stdio: ['ignore', 'pipe', 'pipe'] });
   try {
     const address = await new Promise((resolve, reject) => {
       let out = '';
@@ -279,6 +283,7 @@ test('essi serve serves the viewer and the examples', async (t) => {
     await page.close();
   } finally {
     proc.kill();
+    fs.rmSync(data, { recursive: true, force: true });
   }
 });
 
