@@ -31,7 +31,7 @@ constexpr double kPickRadiusPx = 6;
 constexpr double kSnapRadiusPx = 10;
 constexpr std::size_t kBuildMotionsPerFrame = 200000;  // tapes up to this size are drawn in the loading frame
 constexpr std::size_t kBuildMotionsPerStep = 4096;  // between two looks at the clock (and texture uploads)
-constexpr float kProgressSteps = 50;  // the loading bar moves in 2 % steps
+constexpr float kProgressSteps = 50;  // progress is shown in 2 % steps (stepped())
 constexpr double kStepBudgetMs = 30;  // work per frame while loading (the page keeps drawing)
 // Tapes with at least this many motions get a level-of-detail raster for zoomed-out views (below, drawing every
 // segment costs a CPU renderer less than a frame or two).
@@ -52,6 +52,10 @@ std::string hms(double seconds) {
     const long s = static_cast<long>(std::llround(seconds));
     return fmt("%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
 }
+
+// A progress (0..1) as shown: in steps of 1 / kProgressSteps, so that a frame whose panels did not change is not
+// drawn again (render()); on a CPU renderer every frame drawn is time the browser's compositor takes from the work.
+float stepped(float progress) { return std::floor(progress * kProgressSteps) / kProgressSteps; }
 
 // A file size as people read it: "840 bytes", "12.4 KB", "133.5 MB".
 std::string size_text(std::size_t bytes) {
@@ -854,7 +858,7 @@ void App::draw_left_panel() {
             const std::string about =
                 building_ && first_build_  // (the segments are still being made: none to count yet)
                     ? fmt("%s, %zu lines, segments being made (%.0f %%)", size_text(doc_->bytes.size()).c_str(),
-                          doc_->line_count(), 100.0 * std::floor(building_->progress() * kProgressSteps) / kProgressSteps)
+                          doc_->line_count(), 100.0 * stepped(building_->progress()))
                     : fmt("%s, %zu lines, %zu segments, loaded in %.2f s", size_text(doc_->bytes.size()).c_str(),
                           doc_->line_count(), buffers_.segment_count, load_seconds_);
             ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
@@ -1159,9 +1163,7 @@ void App::draw_messages() {
         ImGui::SetNextWindowSize(ImVec2(420, 0));
         ImGui::Begin("Loading", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove);
         ImGui::Text("Loading %s (%s): %s", loading_name_.c_str(), size_text(loading_bytes_).c_str(), load_stage());
-        // In steps of kProgressSteps: a frame whose panels did not change is not drawn again (render()), and on a
-        // CPU renderer every frame drawn is time the browser's compositor takes from the loading.
-        ImGui::ProgressBar(std::floor(load_progress() * kProgressSteps) / kProgressSteps, ImVec2(-1, 0));
+        ImGui::ProgressBar(stepped(load_progress()), ImVec2(-1, 0));
         ImGui::End();
     } else if (doc_ && (renderer_.filling() || remaking())) {
         // A zoomed-in view of a big tape is drawn over several frames (Renderer::kSegmentsPerFrame), after its
@@ -1172,7 +1174,7 @@ void App::draw_messages() {
                                              ImGuiWindowFlags_NoInputs);
         if (remaking())
             ImGui::Text("Drawing this view: making the segments for this zoom (%.0f %%)",
-                        100.0 * std::floor(building_->progress() * kProgressSteps) / kProgressSteps);
+                        100.0 * stepped(building_->progress()));
         else
             ImGui::Text("Drawing this view: %.1f M segments to go", renderer_.stats().pending_segments / 1e6);
         ImGui::End();

@@ -38,9 +38,9 @@ public:
     // With `keep_unchanged` (the browser shows the last frame until the canvas is drawn again) a frame that would
     // draw the same pixels as the last one draws nothing: no GPU work while nothing moves.
     void render(bool keep_unchanged);
-    // Loading or building work left to do (the browser loop also runs slices of it between frames).
     // The segments are being made again at a new zoom's tolerance (not the load's first build), over the overview.
     [[nodiscard]] bool remaking() const { return building_ != nullptr && !first_build_ && renderer_.has_lod(); }
+    // Loading or building work left to do (the browser loop also runs slices of it between frames).
     [[nodiscard]] bool has_background_work() const { return loader_ != nullptr || lod_building_ || building_ != nullptr; }
     // One slice (about kStepBudgetMs) of that work outside a frame; returns has_background_work().
     bool background_step();

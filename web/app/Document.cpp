@@ -25,6 +25,10 @@ std::string fmt(const char* format, auto... args) {
     return buf;
 }
 
+// Whether `next`, right after the line end `end` (a CR or LF), belongs to it: one line end is CR, LF, CR LF or
+// LF CR (as the reader has it).
+bool ends_line_with(char end, char next) { return (next ^ end) == ('\r' ^ '\n'); }
+
 }  // namespace
 
 std::string_view Document::line(std::size_t n) const {
@@ -35,7 +39,7 @@ std::string_view Document::line(std::size_t n) const {
         while (i < s.size() && s[i] != '\n' && s[i] != '\r') ++i;
         if (i >= s.size()) return {};
         const char c = s[i++];
-        if (i < s.size() && (s[i] == '\n' || s[i] == '\r') && s[i] != c) ++i;
+        if (i < s.size() && ends_line_with(c, s[i])) ++i;
     }
     std::size_t end = i;
     while (end < s.size() && s[end] != '\n' && s[end] != '\r') ++end;
@@ -323,9 +327,9 @@ public:
         Motion m = start_motion(r.line, r.kind, r.curve, r.tools, r.head, r.kerf, r.start, r.end, r.kerf_mm,
                                 r.feed_mm_min);
         // Compact when every point is whole units (always, but for positions beyond 32 bits), not a parabola, and
-        // (as the interpreter has it) the kerf is 0 when compensation is off.
+        // its kerf is what the flags say.
         UnitPoint start, centre;
-        bool compact = r.curve != CurveKind::Parabola && (r.kerf != KerfSide::Off || static_cast<float>(r.kerf_mm) == 0.f) &&
+        bool compact = r.curve != CurveKind::Parabola && kerf_in_flags(r.kerf, r.kerf_mm) &&
                        d.to_units(r.end, m.end_units) && d.to_units(r.start, start);
         if (compact && r.curve == CurveKind::Arc) compact = d.to_units(r.centre, centre);
         if (!compact) {
@@ -345,8 +349,8 @@ public:
     void on_line(const UnitLine& l) override {
         constexpr long long kMax = std::numeric_limits<std::int32_t>::max();
         const auto fits = [](long long v) { return v >= -kMax && v <= kMax; };
-        if (!lines_in_units_ || !(l.kerf != KerfSide::Off || static_cast<float>(l.kerf_mm) == 0.f) || !fits(l.start_x) ||
-            !fits(l.start_y) || !fits(l.end_x) || !fits(l.end_y)) {
+        if (!lines_in_units_ || !kerf_in_flags(l.kerf, l.kerf_mm) || !fits(l.start_x) || !fits(l.start_y) ||
+            !fits(l.end_x) || !fits(l.end_y)) {
             on_motion(record_of(l));
             return;
         }
@@ -366,6 +370,11 @@ public:
     }
 
 private:
+    // The compact form has no kerf value where compensation is off: a motion whose kerf is not 0 there (which the
+    // interpreter never makes) keeps its record.
+    static bool kerf_in_flags(KerfSide side, double kerf_mm) {
+        return side != KerfSide::Off || static_cast<float>(kerf_mm) == 0.f;
+    }
     // What every motion records: its kind, flags, whether it starts where the one before ended, the kerf and
     // feed when they change.
     Motion start_motion(std::uint32_t line, MotionKind kind, CurveKind curve, std::uint8_t tools, int head,
@@ -473,7 +482,7 @@ bool DocumentLoader::step(double budget_ms) {
                 }
                 const char c = p[i++];
                 if (c != '\n' && c != '\r') continue;
-                if (i < n) i += (p[i] ^ c) == ('\r' ^ '\n');  // the other of CR and LF belongs to this line end
+                if (i < n && ends_line_with(c, p[i])) ++i;
                 if (i < n) {
                     if (d.lines % Document::kLineIndexStride == 0) d.line_index.push_back(static_cast<std::uint32_t>(i));
                     ++d.lines;

@@ -157,8 +157,8 @@ void LodRaster::add_cells(Point a, Point b, std::uint8_t bit) {
     // Within one row or one column (a nest's straight edges, and most short segments): the run of cells from one
     // end's to the other's, without stepping.
     const double row = std::floor(a.y), column = std::floor(a.x);
-    if (row == std::floor(b.y) || column == std::floor(b.x)) {
-        const bool in_row = row == std::floor(b.y);
+    const bool in_row = row == std::floor(b.y);
+    if (in_row || column == std::floor(b.x)) {
         const double along0 = in_row ? std::floor(std::min(a.x, b.x)) : std::floor(std::min(a.y, b.y));
         const double along1 = in_row ? std::floor(std::max(a.x, b.x)) : std::floor(std::max(a.y, b.y));
         const double across = in_row ? row : column;

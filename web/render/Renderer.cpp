@@ -524,8 +524,9 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
             begin_paths(t, layer_mask);
             reached = draw_segments(*path, from, limit, &t, budget);
         }
-        if (reached == limit && (full || cache_markers_pending_)) draw_markers(t, o.marker_mask);
-        cache_markers_pending_ = reached < limit && (full || cache_markers_pending_);
+        const bool markers_due = full || cache_markers_pending_;  // (a fill of the image ends with them)
+        if (markers_due && reached == limit) draw_markers(t, o.marker_mask);
+        cache_markers_pending_ = markers_due && reached < limit;
         return reached;
     };
 
@@ -574,7 +575,6 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
             glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
             glClear(GL_COLOR_BUFFER_BIT);
             const Target t{window.cx, window.cy, zoom, window.ox - cache_left_, window.oy - cache_top_, cache_w_, cache_h_, s};
-            cache_markers_pending_ = false;
             cache_limit_ = draw_scene(t, 0, true, kSegmentsPerFrame);
             cache_valid_ = true;
             ++stats_.full_redraws;
