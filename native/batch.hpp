@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "essi/profile.hpp"
-#include "report_json.hpp"
+#include "essi/report_json.hpp"
 
 namespace essi::native {
 

@@ -30,7 +30,7 @@
 #include "thread_pool.hpp"
 #include "file_io.hpp"
 #include "pipelined_check.hpp"
-#include "report_json.hpp"
+#include "essi/report_json.hpp"
 #include "text_report.hpp"
 
 #ifndef ESSIKIT_VERSION
@@ -41,7 +41,7 @@ extern char** environ;
 
 namespace {
 
-using essi::native::FileReport;
+using essi::FileReport;
 
 constexpr int kExitOk = 0;
 constexpr int kExitTapeErrors = 1;
@@ -291,7 +291,7 @@ int run_stats(const std::vector<std::string>& paths, const std::string& format, 
     bool io_failed = false;
     const auto reports = check_files(paths, *profile, io_failed);
     if (format == "json") {
-        out(essi::native::stats_report_to_json(reports, profile->name).dump(kJsonIndent));
+        out(essi::stats_report_to_json(reports, profile->name).dump(kJsonIndent));
         out("\n");
     } else {
         bool first = true;

@@ -20,7 +20,7 @@
 #include "essi/profile.hpp"
 #include "essi/report.hpp"
 #include "pipelined_check.hpp"
-#include "report_json.hpp"
+#include "essi/report_json.hpp"
 #include "share_store.hpp"
 #include "sha256.hpp"
 

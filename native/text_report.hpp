@@ -8,7 +8,7 @@
 
 #include "essi/diagnostics.hpp"
 #include "essi/report.hpp"
-#include "report_json.hpp"
+#include "essi/report_json.hpp"
 
 namespace essi::native {
 

@@ -90,17 +90,6 @@ ByteCounts count_bytes(std::string_view s) {
     return n;
 }
 
-// The start of the next line after the line end at `end` (a CR or LF), when the byte after it is there to
-// read: one line end is CR, LF, CR LF or LF CR, so the other of CR and LF right after it belongs to it
-// (CR ^ LF: no branch).
-inline const unsigned char* past_line_end(const unsigned char* end) {
-    return end + 1 + ((end[1] ^ end[0]) == ('\r' ^ '\n'));
-}
-// The same as a position, for a line end at `end` < size that may be the last byte.
-inline std::uint32_t past_line_end(const unsigned char* data, std::uint32_t end, std::uint32_t size) {
-    return end + 1 < size ? static_cast<std::uint32_t>(past_line_end(data + end) - data) : end + 1;
-}
-
 // What the fast path read of one line of digits and signs.
 struct PlainLine {
     int lead_digits = 0;          // digits of the leading unsigned number (function code or head address)
@@ -166,7 +155,7 @@ template <bool bounded>
         ++n;
         p = after;
     }
-    if (p == first || (!(bounded && p == stop) && *p != '\n' && *p != '\r')) return false;  // not a plain line
+    if (p == first || (!(bounded && p == stop) && !is_line_end(static_cast<char>(*p)))) return false;  // not a plain line
     out.lead_digits = lead_digits;
     out.lead = lead;
     out.words = n;
@@ -350,7 +339,7 @@ bool Reader::read_chunk(Tape& chunk, std::size_t max_blocks) {
         // The line at `pos` needs the general path.
         std::uint32_t end = pos;
         line_begin_ = pos;
-        while (end < size && data[end] != '\n' && data[end] != '\r') ++end;
+        while (end < size && !is_line_end(data[end])) ++end;
         const std::uint32_t from = pos + skip_;
         skip_ = 0;
         if (ended_) after_end_line(from, end);
@@ -827,20 +816,5 @@ TapeReader& TapeReader::operator=(const TapeReader& other) {
 std::size_t TapeReader::state_bytes() { return sizeof(TapeReader) + sizeof(Reader); }
 
 bool TapeReader::read_chunk(Tape& chunk, std::size_t max_blocks) { return impl_->read_chunk(chunk, max_blocks); }
-
-std::uint32_t column_of(std::string_view bytes, std::uint32_t offset) {
-    std::uint32_t begin = offset;
-    while (begin > 0 && bytes[begin - 1] != '\n' && bytes[begin - 1] != '\r') --begin;
-    return offset - begin + 1;
-}
-
-std::string_view line_text(std::string_view bytes, std::uint32_t offset) {
-    if (offset > bytes.size()) return {};
-    std::size_t begin = offset;
-    while (begin > 0 && bytes[begin - 1] != '\n' && bytes[begin - 1] != '\r') --begin;
-    std::size_t end = offset;
-    while (end < bytes.size() && bytes[end] != '\n' && bytes[end] != '\r') ++end;
-    return bytes.substr(begin, end - begin);
-}
 
 }  // namespace essi

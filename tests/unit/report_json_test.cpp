@@ -1,17 +1,15 @@
-// The JSON report contract (docs/report-schema.json) as built by native/report_json.cpp.
-// native/report_json.cpp depends only on essi_core and nlohmann_json, so it builds in both runtimes; it is
-// compiled into this test directly (tests/CMakeLists.txt globs tests/unit/*.cpp and links essi_core only).
-// If report_json.cpp moves into a library the test links, replace this include with the header.
+// The JSON report contract (docs/report-schema.json) as built by core/report/report_json.cpp, which the CLI,
+// the server and the viewer's state() share.
 #include <cmath>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "../../native/report_json.cpp"  // NOLINT(bugprone-suspicious-include)
+#include "essi/report_json.hpp"
 
 namespace {
 
-using essi::native::FileReport;
+using essi::FileReport;
 
 essi::Diagnostic diag(essi::Severity s, essi::DiagCode c, std::uint32_t line, std::uint32_t col, const char* msg) {
     essi::Diagnostic d;
@@ -59,16 +57,16 @@ FileReport sample_bad() {
 }
 
 TEST(ReportJson, RoundsLengthsToSixDecimals) {
-    EXPECT_EQ(essi::native::kJsonLengthDecimals, 6);
-    EXPECT_DOUBLE_EQ(essi::native::round_for_json(1.23456789), 1.234568);
-    EXPECT_DOUBLE_EQ(essi::native::round_for_json(-2.0000004), -2.0);
-    const double z = essi::native::round_for_json(-0.0000001);
+    EXPECT_EQ(essi::kJsonLengthDecimals, 6);
+    EXPECT_DOUBLE_EQ(essi::round_for_json(1.23456789), 1.234568);
+    EXPECT_DOUBLE_EQ(essi::round_for_json(-2.0000004), -2.0);
+    const double z = essi::round_for_json(-0.0000001);
     EXPECT_EQ(z, 0.0);
     EXPECT_FALSE(std::signbit(z)) << "no -0 in reports";
 }
 
 TEST(ReportJson, StatsObject) {
-    const nlohmann::json j = essi::native::stats_to_json(sample_ok().result.stats);
+    const nlohmann::json j = essi::stats_to_json(sample_ok().result.stats);
     EXPECT_DOUBLE_EQ(j.at("cut_length_mm").get<double>(), 100.123457);
     EXPECT_DOUBLE_EQ(j.at("travel_length_mm").get<double>(), 20.0);
     EXPECT_TRUE(j.at("pierces").is_number_integer());
@@ -88,13 +86,13 @@ TEST(ReportJson, StatsObject) {
 }
 
 TEST(ReportJson, EmptyCutBoxIsNull) {
-    const nlohmann::json j = essi::native::stats_to_json(essi::Stats{});
+    const nlohmann::json j = essi::stats_to_json(essi::Stats{});
     EXPECT_TRUE(j.at("cut_bbox_mm").is_null());
 }
 
 TEST(ReportJson, WholeReport) {
     const std::vector<FileReport> files = {sample_ok(), sample_bad()};
-    const nlohmann::json j = essi::native::report_to_json(files, "woyda");
+    const nlohmann::json j = essi::report_to_json(files, "woyda");
     EXPECT_EQ(j.at("profile"), "woyda");
     ASSERT_EQ(j.at("files").size(), 2u);
 
@@ -126,7 +124,7 @@ TEST(ReportJson, WholeReport) {
 }
 
 TEST(ReportJson, EmptyReport) {
-    const nlohmann::json j = essi::native::report_to_json({}, "iso6582");
+    const nlohmann::json j = essi::report_to_json({}, "iso6582");
     EXPECT_TRUE(j.at("files").is_array());
     EXPECT_TRUE(j.at("files").empty());
     EXPECT_EQ(j.at("summary").at("files"), 0);
@@ -134,10 +132,10 @@ TEST(ReportJson, EmptyReport) {
 
 TEST(ReportJson, StatsReport) {
     const std::vector<FileReport> files = {sample_ok()};
-    const nlohmann::json j = essi::native::stats_report_to_json(files, "iso6582");
+    const nlohmann::json j = essi::stats_report_to_json(files, "iso6582");
     ASSERT_EQ(j.at("files").size(), 1u);
     EXPECT_EQ(j.at("files")[0].at("path"), "a.esi");
-    EXPECT_EQ(j.at("files")[0].at("stats"), essi::native::stats_to_json(files[0].result.stats));
+    EXPECT_EQ(j.at("files")[0].at("stats"), essi::stats_to_json(files[0].result.stats));
     EXPECT_FALSE(j.contains("summary"));
 }
 

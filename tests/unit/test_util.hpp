@@ -27,6 +27,38 @@ constexpr double kLenTol = 1e-6;     // mm, closed-form lengths
 constexpr double kAngTol = 1e-9;     // rad, sweeps
 constexpr double kTimeTol = 1e-6;    // s, time estimates
 
+// The lines of `s` by the line-end rule (CR, LF, CR LF, LF CR), written out the plain way: what the line index
+// and the reader must agree with. A line end at the very end starts no line.
+inline std::vector<std::string> split_lines(const std::string& s) {
+    std::vector<std::string> out;
+    std::string cur;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const char c = s[i];
+        if (c != '\n' && c != '\r') {
+            cur += c;
+            continue;
+        }
+        if (i + 1 < s.size() && (s[i + 1] == '\n' || s[i + 1] == '\r') && s[i + 1] != c) ++i;
+        out.push_back(cur);
+        cur.clear();
+    }
+    if (!cur.empty() || (out.empty() && !s.empty())) out.push_back(cur);
+    return out;
+}
+
+// A tape with every line ending, tabs and other control bytes, bytes above 0x7F, lines longer than 8 bytes and
+// empty ones, more lines than the line index's stride, and no line end after the last line.
+inline std::string tricky_lines_text() {
+    std::string text = "%\r\n3\r\nNEST \x01\x0d\tTAB\x0b\x0c\x80\xff LONGER THAN EIGHT BYTES\n4\n\n\r\r\n\r";
+    for (int k = 0; k < 300; ++k) {
+        text += "+" + std::to_string(k * 7) + "-" + std::to_string(k);
+        text += k % 4 == 0 ? "\r\n" : k % 4 == 1 ? "\n" : k % 4 == 2 ? "\n\r" : "\r";
+        if (k % 37 == 0) text += "7\t\x02\n";
+    }
+    text += "63";
+    return text;
+}
+
 // Records every motion and event in program order.
 class RecordingSink : public essi::MotionSink {
 public:

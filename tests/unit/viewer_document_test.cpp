@@ -17,6 +17,8 @@
 using namespace essi;
 using essi_test::expect_same_record;
 using essi_test::RecordMatch;
+using essi_test::split_lines;
+using essi_test::tricky_lines_text;
 using essi::viewer::Document;
 using essi::viewer::DocumentLoader;
 using essi::viewer::LineBlocks;
@@ -127,33 +129,9 @@ TEST(ViewerDocument, GeneratedTapeOfManyChunks) {
 }
 
 // The source lines, split one byte at a time: a line ends at CR, LF, CR LF or LF CR.
-std::vector<std::string> split_lines(const std::string& s) {
-    std::vector<std::string> out;
-    std::string cur;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        const char c = s[i];
-        if (c != '\n' && c != '\r') {
-            cur += c;
-            continue;
-        }
-        if (i + 1 < s.size() && (s[i + 1] == '\n' || s[i + 1] == '\r') && s[i + 1] != c) ++i;
-        out.push_back(cur);
-        cur.clear();
-    }
-    if (!cur.empty() || out.empty()) out.push_back(cur);
-    return out;
-}
-
 TEST(ViewerDocument, LinesAreTheTapesLines) {
-    // Every line ending, tabs and other control bytes (the line index skips 8 bytes at a time to the next byte
-    // below 0x0E), bytes above 0x7F, lines longer than 8 bytes and empty ones, more lines than the index stride.
-    std::string text = "%\r\n3\r\nNEST \x01\x0d\tTAB\x0b\x0c\x80\xff LONGER THAN EIGHT BYTES\n4\n\n\r\r\n\r";
-    for (int k = 0; k < 300; ++k) {
-        text += "+" + std::to_string(k * 7) + "-" + std::to_string(k);
-        text += k % 4 == 0 ? "\r\n" : k % 4 == 1 ? "\n" : k % 4 == 2 ? "\n\r" : "\r";
-        if (k % 37 == 0) text += "7\t\x02\n";
-    }
-    text += "63";  // no line end after the last line
+    // The document's lines are the line index's, built over the load's frames (essi/lines.hpp has the rule).
+    const std::string text = tricky_lines_text();
     for (const std::string& t : {text, text + "\n", bench::generate_nest_tape(100000, 2)}) {
         const auto doc = load(t, *builtin_profile("iso6582"));
         const auto want = split_lines(t);

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "essi/diagnostics.hpp"
+#include "essi/lines.hpp"
 #include "essi/profile.hpp"
 
 namespace essi {
@@ -222,10 +223,5 @@ public:
 private:
     std::unique_ptr<class Reader> impl_;
 };
-
-// 1-based column of a byte offset (counts bytes from the start of its line).
-[[nodiscard]] std::uint32_t column_of(std::string_view bytes, std::uint32_t offset);
-// The source text of the line holding `offset`, without its line end.
-[[nodiscard]] std::string_view line_text(std::string_view bytes, std::uint32_t offset);
 
 }  // namespace essi

@@ -1,8 +1,8 @@
-#include "report_json.hpp"
+#include "essi/report_json.hpp"
 
 #include <cmath>
 
-namespace essi::native {
+namespace essi {
 
 namespace {
 
@@ -116,4 +116,4 @@ nlohmann::json stats_report_to_json(std::span<const FileReport> files, std::stri
     return out;
 }
 
-}  // namespace essi::native
+}  // namespace essi

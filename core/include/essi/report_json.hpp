@@ -1,5 +1,6 @@
 // The JSON form of check results (the report contract documented in docs/report-schema.json).
-// Shared by the `essi` CLI and the server: no files, no I/O, only values in and a JSON value out.
+// Shared by the `essi` CLI, the server and the viewer's state(): no files, no I/O, only values in and a JSON
+// value out. The formats only the CLI writes (text, SARIF, JUnit, GitHub) live in native/.
 #pragma once
 
 #include <span>
@@ -11,7 +12,7 @@
 #include "essi/diagnostics.hpp"
 #include "essi/report.hpp"
 
-namespace essi::native {
+namespace essi {
 
 // Lengths, coordinates and times are written as doubles rounded to this many decimals
 // (1e-6 mm is far below any machine resolution; it keeps reports stable across platforms).
@@ -56,4 +57,4 @@ void limit_diagnostics(FileReport& file, std::size_t max);
 // The report of `essi stats --format json`: {"files":[{"path","stats"}],"profile":"name"}
 [[nodiscard]] nlohmann::json stats_report_to_json(std::span<const FileReport> files, std::string_view profile_name);
 
-}  // namespace essi::native
+}  // namespace essi

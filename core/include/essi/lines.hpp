@@ -1,0 +1,59 @@
+// Lines of a tape: the line-end rule (docs/semantics.md §1) and an index from line numbers to bytes. The reader
+// counts lines with the same rule, so a diagnostic's line is the line the index finds.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+namespace essi {
+
+// A line ends at CR, LF, CR LF or LF CR: the other of CR and LF right after a line end belongs to it.
+[[nodiscard]] constexpr bool is_line_end(char c) { return c == '\n' || c == '\r'; }
+// Whether `next`, right after the line end `end` (a CR or LF), belongs to it (CR ^ LF: no branch).
+[[nodiscard]] constexpr bool is_line_end_pair(char end, char next) { return (next ^ end) == ('\r' ^ '\n'); }
+// The start of the next line after the line end at `end`, when the byte after it is there to read.
+[[nodiscard]] inline const unsigned char* past_line_end(const unsigned char* end) {
+    return end + 1 + is_line_end_pair(static_cast<char>(end[0]), static_cast<char>(end[1]));
+}
+// The same as a position, for a line end at `end` < size that may be the last byte.
+[[nodiscard]] inline std::uint32_t past_line_end(const unsigned char* data, std::uint32_t end, std::uint32_t size) {
+    return end + 1 < size ? static_cast<std::uint32_t>(past_line_end(data + end) - data) : end + 1;
+}
+
+// 1-based column of a byte offset (counts bytes from the start of its line).
+[[nodiscard]] std::uint32_t column_of(std::string_view bytes, std::uint32_t offset);
+// The source text of the line holding `offset`, without its line end.
+[[nodiscard]] std::string_view line_text(std::string_view bytes, std::uint32_t offset);
+
+// Where each line of a tape starts, kept sparsely (one offset per kStride lines: 4 bytes per 64 lines), built
+// a slice at a time so that a caller with a frame budget can spread it over frames. A line end at the very end
+// of the bytes starts no line; empty bytes have no line.
+class LineIndex {
+public:
+    static constexpr std::size_t kStride = 64;
+
+    // Indexes up to `max_bytes` more of `bytes` (the same bytes on every call). Returns true when all are done.
+    bool build(std::string_view bytes, std::size_t max_bytes = static_cast<std::size_t>(-1));
+    [[nodiscard]] bool done(std::string_view bytes) const { return started_ && pos_ >= bytes.size(); }
+    // Bytes indexed so far.
+    [[nodiscard]] std::size_t position() const { return pos_; }
+
+    [[nodiscard]] std::size_t line_count() const { return lines_; }
+    // Lines that start with a sign ('+' or '-'): the motion blocks of a tape, near enough (a reservation hint).
+    [[nodiscard]] std::size_t signed_lines() const { return signed_lines_; }
+    // Line `n` (1-based) without its line end; empty when there is no such line.
+    [[nodiscard]] std::string_view line(std::string_view bytes, std::size_t n) const;
+    [[nodiscard]] std::size_t memory_bytes() const { return starts_.capacity() * sizeof(std::uint32_t); }
+    void shrink_to_fit() { starts_.shrink_to_fit(); }
+
+private:
+    std::vector<std::uint32_t> starts_;  // byte offset of line 1 + k * kStride
+    std::size_t lines_ = 0;
+    std::size_t signed_lines_ = 0;
+    std::size_t pos_ = 0;
+    bool started_ = false;
+};
+
+}  // namespace essi
