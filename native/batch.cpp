@@ -8,6 +8,7 @@
 #include <memory>
 #include <system_error>
 
+#include "essi/sniff.hpp"
 #include "file_io.hpp"
 #include "pipelined_check.hpp"
 #include "thread_pool.hpp"
@@ -39,54 +40,6 @@ std::vector<std::string> parse_extension_list(std::string_view list) {
     }
     flush();
     return out;
-}
-
-bool looks_like_essi(std::string_view head) {
-    if (head.find('\0') != std::string_view::npos) return false;
-    // Skip a UTF-8 BOM (a tape written by an editor).
-    if (head.size() >= 3 && head.substr(0, 3) == "\xEF\xBB\xBF") head.remove_prefix(3);
-    // A cut-off last line says nothing: drop it when the head is a full kSniffBytes.
-    if (head.size() >= kSniffBytes) {
-        const std::size_t nl = head.find_last_of("\r\n");
-        if (nl != std::string_view::npos) head = head.substr(0, nl + 1);
-    }
-    std::size_t lines = 0, good = 0;
-    bool digit_seen = false, in_comment = false;
-    std::size_t pos = 0;
-    while (pos < head.size()) {
-        std::size_t end = head.find_first_of("\r\n", pos);
-        if (end == std::string_view::npos) end = head.size();
-        std::string_view line = head.substr(pos, end - pos);
-        pos = end + 1;
-        // Trim spaces and tabs.
-        while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
-        while (!line.empty() && (line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
-        if (line.empty()) continue;
-        if (in_comment) {
-            if (line == "4") in_comment = false;
-            continue;
-        }
-        if (line == "3") {  // ignore ON: a comment section follows
-            in_comment = true;
-            ++lines;
-            ++good;
-            digit_seen = true;
-            continue;
-        }
-        ++lines;
-        if (line == "%" || line == "/") {
-            ++good;
-            continue;
-        }
-        const bool all_essi = std::all_of(line.begin(), line.end(), [](char c) {
-            return c == '+' || c == '-' || (c >= '0' && c <= '9') || c == ' ' || c == '\t';
-        });
-        if (all_essi) {
-            ++good;
-            if (std::any_of(line.begin(), line.end(), [](char c) { return c >= '0' && c <= '9'; })) digit_seen = true;
-        }
-    }
-    return lines >= 2 && digit_seen && good * 10 >= lines * 8;
 }
 
 bool sniff_tape_file(const std::string& path) {

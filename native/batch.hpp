@@ -19,14 +19,7 @@ namespace essi::native {
 // "esi,.NC txt" -> {".esi", ".nc", ".txt"} (commas or spaces, dot optional, lower-cased). Empty entries dropped.
 [[nodiscard]] std::vector<std::string> parse_extension_list(std::string_view list);
 
-// Bytes read from the start of a file to decide whether it looks like a tape.
-constexpr std::size_t kSniffBytes = 1024;
-
-// True when `head` (the first KB of a file) looks like an ESSI tape: no NUL byte, and outside 3/4 comment
-// sections at least 2 non-empty lines, of which at least 80 % hold only + - 0-9 (spaces, tabs allowed), or are
-// % or /, and at least one holds a digit.
-[[nodiscard]] bool looks_like_essi(std::string_view head);
-// looks_like_essi on the first kSniffBytes of the file; false when it cannot be read.
+// looks_like_essi (essi/sniff.hpp) on the first kSniffBytes of the file; false when it cannot be read.
 [[nodiscard]] bool sniff_tape_file(const std::string& path);
 
 struct ExpandOptions {

@@ -101,10 +101,7 @@ private:
     void diag(Severity s, DiagCode code, const Block& b, std::string message) {
         diags_.push_back({s, code, b.line, column_of(source_, b.offset), std::move(message)});
     }
-    [[nodiscard]] Point to_mm(IPoint p) const {
-        return {static_cast<double>(p.x) * profile_.unit_mm + profile_.setup_offset_x_mm,
-                static_cast<double>(p.y) * profile_.unit_mm + profile_.setup_offset_y_mm};
-    }
+    [[nodiscard]] Point to_mm(IPoint p) const { return units_to_mm(profile_, p.x, p.y); }
     void set_mapping(const AxisMapping& mapping) {
         mapping_ = mapping;
         mirrors_ = mapping.mirrors();

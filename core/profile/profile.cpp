@@ -2,6 +2,8 @@
 // non-throwing form and every key is type-checked before it is read.
 #include "essi/profile.hpp"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 namespace essi {
@@ -232,6 +234,16 @@ std::string profile_to_json(const Profile& p) {
         j["table"] = nullptr;
     }
     return j.dump(2, ' ', false, json::error_handler_t::replace);
+}
+
+bool mm_to_units(const Profile& p, Point mm, long long& x, long long& y) {
+    const double ux = std::round((mm.x - p.setup_offset_x_mm) / p.unit_mm);
+    const double uy = std::round((mm.y - p.setup_offset_y_mm) / p.unit_mm);
+    constexpr double kLimit = 9.0e18;  // below 2^63: the cast is defined
+    if (!(std::fabs(ux) < kLimit && std::fabs(uy) < kLimit)) return false;  // (NaN too)
+    x = static_cast<long long>(ux);
+    y = static_cast<long long>(uy);
+    return units_to_mm(p, x, y) == mm;
 }
 
 }  // namespace essi

@@ -71,18 +71,6 @@ TEST(Sha256, IdSyntax) {
     EXPECT_FALSE(is_sha256_hex(std::string(63, 'a') + "/"));
 }
 
-TEST(Sniff, TapesAndOtherFiles) {
-    EXPECT_TRUE(looks_like_essi("%\r\n3\r\nPART 12 - any text\r\n4\r\n39+3000\r\n+100+200\r\n7\r\n-100\r\n8\r\n63\r\n"));
-    EXPECT_TRUE(looks_like_essi("\xEF\xBB\xBF+100+200\n-50+0\n64\n"));
-    EXPECT_TRUE(looks_like_essi("+100+200\n+5+5 \n+1x\n0\n/\n"));  // one bad line of five is still a tape
-    EXPECT_FALSE(looks_like_essi("# README\nSome text\n"));
-    EXPECT_FALSE(looks_like_essi("{\"a\": 1}\n"));
-    EXPECT_FALSE(looks_like_essi("1 fn 39 value=30 tools=-\n2 fn 29 tools=-\n"));  // a trace
-    EXPECT_FALSE(looks_like_essi("123\n"));                                         // one line says nothing
-    EXPECT_FALSE(looks_like_essi(std::string("+1+2\n\0\n+3+4\n", 12)));
-    EXPECT_FALSE(looks_like_essi(""));
-}
-
 TEST(Expand, ExtensionsSniffingAndOrder) {
     const fs::path d = temp_dir("expand");
     write(d / "b.esi", "+1+1\n63\n");
@@ -159,19 +147,6 @@ TEST(Batch, SameResultsForAnyJobCountAndLimit) {
     });
     EXPECT_EQ(seen1, seen2);  // same order, same counts (omitted diagnostics still count)
     fs::remove_all(d);
-}
-
-TEST(Formats, LimitDiagnosticsCountsTheRest) {
-    FileReport f;
-    f.result.diagnostics = {diag(essi::Severity::Warning, essi::DiagCode::W109_WhitespaceSkipped, 1, 1, "w"),
-                            diag(essi::Severity::Error, essi::DiagCode::E101_InvalidCharacter, 2, 1, "e"),
-                            diag(essi::Severity::Error, essi::DiagCode::E101_InvalidCharacter, 3, 1, "e")};
-    limit_diagnostics(f, 1);
-    EXPECT_EQ(f.result.diagnostics.size(), 1u);
-    EXPECT_EQ(f.omitted(), 2u);
-    EXPECT_EQ(f.errors(), 2u);
-    EXPECT_EQ(f.warnings(), 1u);
-    EXPECT_FALSE(f.ok());
 }
 
 TEST(Formats, GithubCommands) {

@@ -1,6 +1,8 @@
 // Profiles: the built-ins, partial JSON over a base, errors as E402 diagnostics, JSON round trip.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <algorithm>
 #include <string>
 
@@ -184,4 +186,20 @@ TEST(ProfileJson, RoundTripEverySetting) {
     ProfileResult rw = parse_profile(profile_to_json(w));
     ASSERT_TRUE(rw.profile.has_value()) << dump(rw.diagnostics);
     expect_same(*rw.profile, w);
+}
+
+TEST(Profile, UnitsToMmAndBack) {
+    essi::Profile p = *essi::builtin_profile("iso6582");
+    p.setup_offset_x_mm = -12.5;
+    p.setup_offset_y_mm = 40;
+    const essi::Point mm = essi::units_to_mm(p, 1234, -56);
+    EXPECT_DOUBLE_EQ(mm.x, 1234 * 0.1 - 12.5);
+    EXPECT_DOUBLE_EQ(mm.y, -56 * 0.1 + 40);
+    long long x = 0, y = 0;
+    ASSERT_TRUE(essi::mm_to_units(p, mm, x, y));
+    EXPECT_EQ(x, 1234);
+    EXPECT_EQ(y, -56);
+    EXPECT_FALSE(essi::mm_to_units(p, {mm.x + 0.03, mm.y}, x, y));  // between two units
+    EXPECT_FALSE(essi::mm_to_units(p, {1e300, 0}, x, y));           // beyond any integer
+    EXPECT_FALSE(essi::mm_to_units(p, {std::nan(""), 0}, x, y));
 }

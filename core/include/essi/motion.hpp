@@ -29,6 +29,11 @@ enum ToolBits : std::uint8_t {
 constexpr std::uint8_t kCuttingTools = kToolOxygen | kToolLeftBevel | kToolRightBevel | kToolPlasma;
 constexpr std::uint8_t kMarkingTools = kToolPunch | kToolLineMarker | kToolFive;
 
+// A pierce: cutting starts, i.e. no cutting tool was on and one is now (docs/semantics.md §9).
+[[nodiscard]] constexpr bool starts_cutting(std::uint8_t tools_before, std::uint8_t tools_after) {
+    return (tools_before & kCuttingTools) == 0 && (tools_after & kCuttingTools) != 0;
+}
+
 enum class KerfSide : std::uint8_t { Off, Left, Right };
 
 // A parabola as a parametric curve: P(t) = vertex + t*u + t^2/(2*p) * n, t in [t0, t1].

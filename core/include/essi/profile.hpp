@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "essi/diagnostics.hpp"
+#include "essi/motion.hpp"
 
 namespace essi {
 
@@ -56,6 +57,15 @@ struct Profile {
     double setup_offset_x_mm = 0, setup_offset_y_mm = 0;  // setup zero offset (G54-like)
     std::optional<TableLimits> table;           // travel limits; none = unlimited
 };
+
+// Unit increments (machine axes, from the program start) to machine millimetres: units x unit_mm + the setup
+// offset (docs/semantics.md §3, §11). The one formula for the interpreter's positions and the viewer's motions.
+[[nodiscard]] inline Point units_to_mm(const Profile& p, long long x, long long y) {
+    return {static_cast<double>(x) * p.unit_mm + p.setup_offset_x_mm, static_cast<double>(y) * p.unit_mm + p.setup_offset_y_mm};
+}
+// The unit increments whose units_to_mm is exactly `mm`: false when there are none (a point that is not on the
+// unit grid, or too far for a long long).
+[[nodiscard]] bool mm_to_units(const Profile& p, Point mm, long long& x, long long& y);
 
 // The built-in profiles by name ("iso6582", "woyda"); nullopt for other names.
 [[nodiscard]] std::optional<Profile> builtin_profile(std::string_view name);

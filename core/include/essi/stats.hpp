@@ -54,9 +54,7 @@ public:
     // What on_event counts of an event: the interpreter calls it directly, without making the event.
     void count_event(EventKind kind, double value, std::uint8_t tools_after) {
         if (kind == EventKind::Dwell) stats_.estimated_time_s += value;
-        const bool was_cutting = (tools_ & kCuttingTools) != 0;
-        const bool cutting = (tools_after & kCuttingTools) != 0;
-        if (!was_cutting && cutting) {
+        if (starts_cutting(tools_, tools_after)) {
             ++stats_.pierces;
             stats_.estimated_time_s += profile_.pierce_time_s;
         }
