@@ -2,6 +2,8 @@
 // explanations are the sentence a machine operator would use.
 #include "essi/functions.hpp"
 
+#include "essi/function_codes.hpp"
+
 #include <cstdio>
 
 namespace essi {
@@ -135,11 +137,11 @@ std::optional<FunctionInfo> woyda_row(int code) {
 }  // namespace
 
 std::optional<FunctionInfo> function_info(int code, Dialect dialect) {
-    if (code < 0 || code > 999) return std::nullopt;
+    if (code < 0 || code >= fn::kCodeCount) return std::nullopt;
     if (dialect == Dialect::Woyda) {
         if (auto w = woyda_row(code)) return w;
     }
-    if (code > 115) {
+    if (code > fn::kLastIsoCode) {
         FunctionInfo f = row(code, "Unknown", "not a function of ISO 6582 (0-115) or of this dialect");
         f.assigned = false;
         return f;
@@ -156,23 +158,23 @@ std::string describe_function(int code, bool has_value, long value, const Profil
     char buf[64];
     if (has_value) {
         switch (code) {
-            case 29:
-            case 30: {
+            case fn::kKerfLeft:
+            case fn::kKerfRight: {
                 const double width = value * profile.unit_mm;
                 std::snprintf(buf, sizeof buf, ", %.3g mm", width);
                 s += buf;
                 break;
             }
-            case 39: s += ", " + std::to_string(value) + " mm/min"; break;
-            case 41: s += ", " + std::to_string(value) + " s"; break;
-            case 136: {
+            case fn::kFeed: s += ", " + std::to_string(value) + " mm/min"; break;
+            case fn::kDwell: s += ", " + std::to_string(value) + " s"; break;
+            case fn::kWoydaBurnerSpacing: {
                 std::snprintf(buf, sizeof buf, ", %.4g mm", value * profile.unit_mm);
                 s += buf;
                 break;
             }
             default: s += ", value " + std::to_string(value); break;
         }
-    } else if (code == 29 || code == 30) {
+    } else if (code == fn::kKerfLeft || code == fn::kKerfRight) {
         std::snprintf(buf, sizeof buf, ", %.3g mm (profile kerf)", profile.kerf_units * profile.unit_mm);
         s += buf;
     }

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "essi/function_codes.hpp"
 #include "essi/functions.hpp"
 #include "essi/geom.hpp"
 #include "essi/stats.hpp"
@@ -21,8 +22,6 @@ struct IPoint {
 };
 
 constexpr int kHeads = 2;
-constexpr int kFunctionReturnToZero = 62;  // Woyda
-constexpr int kBurnerCount = 135, kBurnerSpacing = 136;
 
 // An arc's radii and sweep from its start, end and centre in the tape frame (unit increments): one
 // formula for measure_motions (incremental, start (0,0)) and the interpreter (any mode).
@@ -112,7 +111,7 @@ private:
     void set_tools(std::uint8_t tools) { tools_ = tools; }
     void check_table(const MotionRecord& m, const Block& b);
 
-    static constexpr int kFunctionCodes = 1000;  // at most 3 digits
+    static constexpr int kFunctionCodes = fn::kCodeCount;
     enum : std::uint8_t { kAssigned = 1, kManufacturer = 2, kTakesNoValue = 4, kNeedsValue = 8 };
     std::array<std::uint8_t, kFunctionCodes> function_flags_{};
     [[nodiscard]] std::string function_name(int code) const {
@@ -199,13 +198,13 @@ void Machine::run(const Tape& chunk, std::span<const MotionMeasure> measures) {
         }
         if (b.kind == BlockKind::Comment || b.kind == BlockKind::Percent) continue;
         last = &b;
-        if (burner_count_ && !(b.has_code() && b.code == kBurnerSpacing && b.kind == BlockKind::FunctionValue)) {
+        if (burner_count_ && !(b.has_code() && b.code == fn::kWoydaBurnerSpacing && b.kind == BlockKind::FunctionValue)) {
             warn(DiagCode::W212_BurnerCountNotBeforeSpacing, *burner_count_,
                  "burner count (135) is not immediately followed by the burner spacing (136); expected 136+value next");
             burner_count_.reset();
         }
         const bool is_end = b.ends_program();  // the end still ends a skipped section
-        if (skipping_ && !is_end && !(b.kind == BlockKind::Function && b.code == 101)) continue;
+        if (skipping_ && !is_end && !(b.kind == BlockKind::Function && b.code == fn::kOptionalIgnoreOff)) continue;
         switch (b.kind) {
             case BlockKind::Invalid:
                 zero_offset_pending_ = false;
@@ -300,7 +299,7 @@ bool Machine::admit_function(const Block& b, bool& has_value, long long value) {
     if (!(flags & kAssigned)) {
         warn(DiagCode::W201_UnknownFunction, b,
              "machine function " + std::to_string(code) + " is " +
-                 (code > 115 ? "not defined by ISO 6582 (0-115) or by the " + profile_.name + " profile"
+                 (code > fn::kLastIsoCode ? "not defined by ISO 6582 (0-115) or by the " + profile_.name + " profile"
                              : std::string("unassigned in ISO 6582 Annex B")) +
                  "; it is ignored");
         return false;
@@ -397,79 +396,76 @@ void Machine::warn_macro_only(const Block& b) {
     const auto tool = [&](std::uint8_t bit, bool on) { set_tools(on ? (tools_ | bit) : (tools_ & ~bit)); };
 
     switch (code) {
-        case 0:
-        case 102: kind = EventKind::Stop; break;
-        case 5:
+        case fn::kProgramStop:
+        case fn::kOptionalStop: kind = EventKind::Stop; break;
+        case fn::kRapidOn:
             rapid_ = true;
             rapid_one_block_ = profile_.rapid_single_block;
             break;
-        case 6: rapid_ = false; break;
-        case 7: tool(kToolOxygen, true); break;
-        case 8: tool(kToolOxygen, false); break;
-        case 9: tool(kToolPunch, true); break;
-        case 10: tool(kToolPunch, false); break;
-        case 13: tool(kToolLeftBevel, true); break;
-        case 14: tool(kToolLeftBevel, false); break;
-        case 15: tool(kToolRightBevel, true); break;
-        case 16: tool(kToolRightBevel, false); break;
-        case 19: three_axis_ = true; break;
-        case 20: three_axis_ = false; break;
-        case 21: case 22: case 23: case 24: case 25: case 26: case 27: case 28:
-            set_mapping(axis_mapping(code));
-            break;
-        case 29: set_kerf(b, KerfSide::Left, has_value, value); break;
-        case 30: set_kerf(b, KerfSide::Right, has_value, value); break;
-        case 38: set_kerf(b, KerfSide::Off, has_value, value); break;
-        case 39:
+        case fn::kRapidOff: rapid_ = false; break;
+        case fn::kOxygenOn: tool(kToolOxygen, true); break;
+        case fn::kOxygenOff: tool(kToolOxygen, false); break;
+        case fn::kPunchMarkingOn: tool(kToolPunch, true); break;
+        case fn::kPunchMarkingOff: tool(kToolPunch, false); break;
+        case fn::kLeftBevelOn: tool(kToolLeftBevel, true); break;
+        case fn::kLeftBevelOff: tool(kToolLeftBevel, false); break;
+        case fn::kRightBevelOn: tool(kToolRightBevel, true); break;
+        case fn::kRightBevelOff: tool(kToolRightBevel, false); break;
+        case fn::kThreeAxisOn: three_axis_ = true; break;
+        case fn::kTwoAxisOn: three_axis_ = false; break;
+        case fn::kKerfLeft: set_kerf(b, KerfSide::Left, has_value, value); break;
+        case fn::kKerfRight: set_kerf(b, KerfSide::Right, has_value, value); break;
+        case fn::kKerfOff: set_kerf(b, KerfSide::Off, has_value, value); break;
+        case fn::kFeed:
             set_feed(b, has_value, value);
             event_value = feed_mm_min_;
             has_value = true;
             break;
-        case 41:
+        case fn::kDwell:
             kind = EventKind::Dwell;
             event_value = has_value ? static_cast<double>(value) : profile_.default_dwell_s;
             has_value = true;
             break;
-        case 43:  // Woyda: cutting oxygen off (preheat stays)
-            tool(kToolOxygen, false);
-            break;
-        case 53: tool(kToolPlasma, true); break;
-        case 54: tool(kToolPlasma, false); break;
-        case 63:
-        case 64:  // not an end code in this profile: still cancels the stored functions
+        case fn::kWoydaOxygenOff: tool(kToolOxygen, false); break;  // (the preheat stays)
+        case fn::kPlasmaOn: tool(kToolPlasma, true); break;
+        case fn::kPlasmaOff: tool(kToolPlasma, false); break;
+        case fn::kCancelFunctions:
+        case fn::kEndOfTape:  // not an end code in this profile: still cancels the stored functions
             set_tools(0);
             rapid_ = false;
             kerf_ = KerfSide::Off;
             kerf_offset_mm_ = 0;
             break;
-        case 67:
-        case 68:
+        case fn::kWoydaLoopEnd:
+        case fn::kWoydaLoopStart:
             warn_macro_only(b);
             return;
-        case 81: absolute_ = false; break;
-        case 82: absolute_ = true; break;
-        case 83: zero_offset(b); break;
-        case 100:
+        case fn::kIncremental: absolute_ = false; break;
+        case fn::kAbsolute: absolute_ = true; break;
+        case fn::kZeroOffset: zero_offset(b); break;
+        case fn::kOptionalIgnoreOn:
             open_optional_ = b;
             skipping_ = profile_.optional_ignore;
             break;
-        case 101:
+        case fn::kOptionalIgnoreOff:
             open_optional_.reset();
             skipping_ = false;
             break;
-        case 110: tool(kToolLineMarker, true); break;
-        case 111: tool(kToolLineMarker, false); break;
-        case 112: tool(kToolFive, true); break;
-        case 113: tool(kToolFive, false); break;
-        case kFunctionReturnToZero:
+        case fn::kLineMarkingOn: tool(kToolLineMarker, true); break;
+        case fn::kLineMarkingOff: tool(kToolLineMarker, false); break;
+        case fn::kToolFiveOn: tool(kToolFive, true); break;
+        case fn::kToolFiveOff: tool(kToolFive, false); break;
+        case fn::kWoydaProgramZero:
             if (profile_.dialect == Dialect::Woyda) {
                 return_to_zero(b, index);
                 return;
             }
             break;
-        case kBurnerCount: burner_count_ = b; break;
-        case kBurnerSpacing: burner_count_.reset(); break;
-        default: break;  // state-only functions: the event says what happened
+        case fn::kWoydaBurnerCount: burner_count_ = b; break;
+        case fn::kWoydaBurnerSpacing: burner_count_.reset(); break;
+        default:
+            if (code >= fn::kAxesNormal && code <= fn::kAxesMappingLast) set_mapping(axis_mapping(code));
+            break;  // state-only functions: the event says what happened
     }
     event(b, index, kind, has_value, event_value);
 }
@@ -544,7 +540,7 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
         e.line = b.line;
         e.block = static_cast<std::uint32_t>(index);
         e.kind = EventKind::ZeroOffset;
-        e.code = 83;
+        e.code = fn::kZeroOffset;
         const Point o = to_mm(origin_);
         e.x = o.x;
         e.y = o.y;
@@ -617,7 +613,7 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
 void Machine::curve_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre) {
     int head = 1;
     if (b.has_address()) {
-        if (b.code != 1 && b.code != 2) {
+        if (b.code != fn::kHeadOne && b.code != fn::kHeadTwo) {
             warn_bad_head(b);
             return;
         }

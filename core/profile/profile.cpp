@@ -17,7 +17,7 @@ Profile make_woyda() {
     Profile p;
     p.name = "woyda";
     p.dialect = Dialect::Woyda;
-    p.end_codes = {{63, 0}, {64, 0}, {-1, '/'}};
+    p.end_codes = {{fn::kCancelFunctions, 0}, {fn::kEndOfTape, 0}, {-1, '/'}};
     return p;
 }
 

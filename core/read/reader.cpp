@@ -10,14 +10,14 @@
 
 #include "essi/read.hpp"
 
+#include "essi/function_codes.hpp"
+
 namespace essi {
 namespace {
 
 constexpr std::size_t kMaxReadErrors = 100;    // then E115: reading stops (a binary file, most likely)
 constexpr int kMaxWordDigits = 9;              // significant digits of a dimension word or value
 constexpr int kMaxFunctionDigits = 3;          // ISO 6582 3.4.1
-constexpr int kIgnoreOnCode = 3;
-constexpr int kIgnoreOffCode = 4;
 // Words of a line read by the fast path; a line with more goes the general way (it is an error anyway).
 // The fast path makes room for this many words before it reads a line.
 constexpr int kMaxPlainWords = 8;
@@ -225,7 +225,7 @@ private:
     [[nodiscard]] bool is_end_mark(char mark) const;
     [[nodiscard]] std::uint32_t column(std::uint32_t offset) const { return offset - line_begin_ + 1; }
 
-    static constexpr int kFunctionCodes = 1000;
+    static constexpr int kFunctionCodes = fn::kCodeCount;
     std::array<bool, kFunctionCodes> end_function_{};  // the profile's end codes, by function code
 
     std::string_view src_;
@@ -412,8 +412,8 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
         return pl.lead_digits == 0 && (pl.words == 2 || pl.words == 5 || pl.words == 6);
     };
     const auto is_function = [this](const PlainLine& pl) {
-        return pl.words == 0 && pl.lead_digits <= kMaxFunctionDigits && pl.lead != kIgnoreOnCode &&
-               pl.lead != kIgnoreOffCode && !end_function_[pl.lead];
+        return pl.words == 0 && pl.lead_digits <= kMaxFunctionDigits && pl.lead != fn::kIgnoreOn &&
+               pl.lead != fn::kIgnoreOff && !end_function_[pl.lead];
     };
     // Writes the block of a common line (its words are already in place); the room has been made. One block
     // either way; only its last three fields differ (selected, not branched on).
@@ -517,7 +517,7 @@ void Reader::read_ignored_line(std::uint32_t begin, std::uint32_t end) {
     const std::string_view t = trim(text);
     if (t == "4") {
         in_ignore_ = false;
-        push_block(begin + static_cast<std::uint32_t>(text.find('4')), BlockKind::Function, kIgnoreOffCode, 0);
+        push_block(begin + static_cast<std::uint32_t>(text.find('4')), BlockKind::Function, fn::kIgnoreOff, 0);
         return;
     }
     if (!t.empty()) push_block(begin, BlockKind::Comment, Block::kNoCode, 0);
@@ -705,11 +705,11 @@ void Reader::classify(std::uint32_t first, const LineParse& lp, std::size_t word
         const auto code = static_cast<std::uint16_t>(lp.lead_value);
         if (lp.words == 0) {
             push_block(first, BlockKind::Function, code, 0);
-            if (code == kIgnoreOnCode) {
+            if (code == fn::kIgnoreOn) {
                 in_ignore_ = true;
                 ignore_line_ = line_;
                 ignore_column_ = column(first);
-            } else if (code == kIgnoreOffCode) {
+            } else if (code == fn::kIgnoreOff) {
                 report(Severity::Warning, DiagCode::W111_StrayIgnoreOff, first,
                        "ignore OFF (4) without an ignore ON (3) before it; expected 3 to open the ignored section");
             } else if (is_end_function(code)) {

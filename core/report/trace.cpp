@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "essi/function_codes.hpp"
 #include "essi/functions.hpp"
 #include "essi/geom.hpp"
 #include "essi/interp.hpp"
@@ -111,7 +112,7 @@ std::string trace_line(const MachineEvent& e, Dialect dialect) {
             std::snprintf(buf, sizeof buf, " dwell %.3f s", e.value);
             s += buf;
             break;
-        case EventKind::Stop: s += e.code == 0 ? " stop 0 programmed" : " stop 102 optional"; break;
+        case EventKind::Stop: s += e.code == fn::kProgramStop ? " stop 0 programmed" : " stop 102 optional"; break;
         case EventKind::End: s += e.code ? " end " + std::to_string(e.code) : std::string(" end"); break;
         case EventKind::ZeroOffset:
             std::snprintf(buf, sizeof buf, " origin (%.3f,%.3f)", tidy(e.x), tidy(e.y));

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "essi/diagnostics.hpp"
+#include "essi/function_codes.hpp"
 #include "essi/motion.hpp"
 
 namespace essi {
@@ -35,7 +36,7 @@ struct Profile {
     // Reading
     double unit_mm = 0.1;                       // one unit increment in mm (ISO A.6)
     WhitespacePolicy whitespace = WhitespacePolicy::Skip;
-    std::vector<EndCode> end_codes = {{63, 0}, {64, 0}, {-1, '/'}};
+    std::vector<EndCode> end_codes = {{fn::kCancelFunctions, 0}, {fn::kEndOfTape, 0}, {-1, '/'}};
 
     // Geometry
     double arc_tolerance_units = 2.0;           // |r_end - r_start| allowed, in unit increments (§5)
