@@ -83,6 +83,36 @@ Point parabola_point(const ParabolaGeom& g, double t) {
     return {g.vertex.x + t * g.u.x + s * g.n.x, g.vertex.y + t * g.u.y + s * g.n.y};
 }
 
+ParabolaPiece parabola_from_words(Point start, Point end, double xp, double yp, bool axis_parallel_y, bool absolute) {
+    ParabolaPiece piece;
+    ParabolaGeom& g = piece.curve;
+    const double sx = start.x, sy = start.y, ex = end.x, ey = end.y;
+    if (axis_parallel_y) {  // y - y_v = (x - x_a)^2 / (2 YP)
+        const double xa = (absolute ? 0 : sx) + xp;
+        const double yv = sy - (sx - xa) * (sx - xa) / (2 * yp);
+        g.vertex = {xa, yv};
+        g.u = {1, 0};
+        g.n = {0, yp > 0 ? 1.0 : -1.0};
+        g.t0 = sx - xa;
+        g.t1 = ex - xa;
+        piece.residual = ey - (yv + g.t1 * g.t1 / (2 * yp));
+        g.p = std::abs(yp);
+    } else {  // the roles of X and Y swapped
+        const double ya = (absolute ? 0 : sy) + yp;
+        const double xv = sx - (sy - ya) * (sy - ya) / (2 * xp);
+        g.vertex = {xv, ya};
+        g.u = {0, 1};
+        g.n = {xp > 0 ? 1.0 : -1.0, 0};
+        g.t0 = sy - ya;
+        g.t1 = ey - ya;
+        piece.residual = ex - (xv + g.t1 * g.t1 / (2 * xp));
+        g.p = std::abs(xp);
+    }
+    return piece;
+}
+
+bool parabola_turns_ccw(const ParabolaGeom& g) { return (g.u.x * g.n.y - g.u.y * g.n.x) * (g.t1 - g.t0) > 0; }
+
 double parabola_length(const ParabolaGeom& g) {
     return std::abs(parabola_arc_integral(g.t1, g.p) - parabola_arc_integral(g.t0, g.p));
 }

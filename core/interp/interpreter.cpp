@@ -45,11 +45,12 @@ namespace detail {
 
 class Machine {
 public:
-    // `also`: one more sink beside the statistics (only when `sink` is a StatsSink).
-    Machine(std::string_view source, const Profile& profile, MotionSink& sink, MotionSink* also,
+    // The sinks, chosen by the caller: either one `sink` that gets everything through its virtual calls, or the
+    // statistics (fed directly, their calls inlined) and, when given, one more sink `also`.
+    Machine(std::string_view source, const Profile& profile, MotionSink* sink, StatsSink* stats, MotionSink* also,
             std::vector<Diagnostic>& diagnostics)
-        : source_(source), profile_(profile), sink_(sink), stats_(dynamic_cast<StatsSink*>(&sink)),
-          also_(stats_ ? also : nullptr), diags_(diagnostics) {
+        : source_(source), profile_(profile), sink_(sink), stats_(stats), also_(stats ? also : nullptr),
+          diags_(diagnostics) {
         feed_mm_min_ = profile_.feed_mm_min;
         // The function table, flattened once per run: half the blocks of a tape are functions.
         for (int code = 0; code < kFunctionCodes; ++code) {
@@ -79,6 +80,11 @@ private:
     [[gnu::noinline]] bool zero_offset_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w);
     void curve_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre);
     void emit(MotionRecord& m, const Block& b, std::size_t index);
+    struct MotionState {
+        MotionKind kind;
+        double feed_mm_min;  // the speed of the time estimate
+    };
+    [[nodiscard]] MotionState begin_motion(const Block& b);
     [[nodiscard]] MotionKind motion_kind() const;
     [[nodiscard]] double motion_feed() const;
     [[nodiscard]] KerfSide motion_kerf() const;
@@ -121,28 +127,27 @@ private:
 
     std::string_view source_;
     const Profile& profile_;
-    MotionSink& sink_;
-    // The sink when it is the statistics (what a check runs): called directly, its calls inlined.
+    // The one sink of interpret() (a trace, a test): everything through its virtual calls. Null when checking.
+    MotionSink* const sink_;
+    // The statistics of a check: called directly, their calls inlined. Null when there is one `sink_`.
     StatsSink* const stats_;
     // The one more sink of a check (the viewer's document): given the lines of head 1 as UnitLines.
     MotionSink* const also_;
     std::vector<Diagnostic>& diags_;
-    void send(const MotionRecord& m) {
+    // A motion or an event to the sinks: the statistics, then the one more sink; or the one sink.
+    template <class Item>
+    void send(const Item& item) {
         if (stats_) {
-            stats_->on_motion(m);
-            if (also_) also_->on_motion(m);
+            deliver(*stats_, item);
+            if (also_) deliver(*also_, item);
         } else {
-            sink_.on_motion(m);
+            deliver(*sink_, item);
         }
     }
-    void send(const MachineEvent& e) {
-        if (stats_) {
-            stats_->on_event(e);
-            if (also_) also_->on_event(e);
-        } else {
-            sink_.on_event(e);
-        }
-    }
+    static void deliver(StatsSink& s, const MotionRecord& m) { s.on_motion(m); }
+    static void deliver(StatsSink& s, const MachineEvent& e) { s.on_event(e); }
+    static void deliver(MotionSink& s, const MotionRecord& m) { s.on_motion(m); }
+    static void deliver(MotionSink& s, const MachineEvent& e) { s.on_event(e); }
 
     // Machine state
     IPoint pos_[kHeads];            // per head, machine axes, unit increments
@@ -282,7 +287,7 @@ void Machine::send_event(const Block& b, std::size_t index, EventKind kind, bool
     e.has_value = has_value;
     e.value = value;
     e.tools_after = tools_;
-    (stats_ ? *also_ : sink_).on_event(e);  // (the statistics counted it: event())
+    deliver(stats_ ? *also_ : *sink_, e);  // (the statistics counted it: event())
 }
 
 // The checks a function block must pass before it takes effect (rarely failed: kept out of the common path).
@@ -477,16 +482,24 @@ void Machine::warn_rapid_while_cutting(const Block& b) {
 }
 
 inline void Machine::emit(MotionRecord& m, const Block& b, std::size_t index) {
+    const MotionState state = begin_motion(b);
     m.line = b.line;
     m.block = static_cast<std::uint32_t>(index);
     m.tools = tools_;
-    m.kind = motion_kind();
-    m.feed_mm_min = motion_feed();
+    m.kind = state.kind;
+    m.feed_mm_min = state.feed_mm_min;
     m.kerf = motion_kerf();
     m.kerf_mm = kerf_offset_mm_;
-    after_motion(b);
     if (profile_.table) check_table(m, b);
     send(m);
+}
+
+// What the machine's state makes of the motion of `b`, and what the motion does to the state: every motion,
+// with its record (emit) or without (a checked straight line), passes here once.
+[[gnu::always_inline]] inline Machine::MotionState Machine::begin_motion(const Block& b) {
+    const MotionState state{motion_kind(), motion_feed()};
+    after_motion(b);
+    return state;
 }
 
 // What the tools and rapid make of a motion, and the speed its time is estimated at.
@@ -566,17 +579,16 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
         const IPoint end{base.x + d.x, base.y + d.y};
         const double length_mm = units_length(end.x - cur.x, end.y - cur.y) * profile_.unit_mm;
         if (stats_ && !profile_.table) {
-            // Checked: what the statistics count of a line, without its record; the one more sink's UnitLine.
-            const MotionKind kind = motion_kind();
-            const double feed = motion_feed();
-            after_motion(b);
+            // Checked: what the statistics count of a line (StatsSink::add_line, as on_motion does for its
+            // record), without making the record; the one more sink's UnitLine.
+            const MotionState state = begin_motion(b);
             const Point start_mm = to_mm(cur), end_mm = to_mm(end);
-            stats_->add_line(kind, /*head*/ 1, start_mm, end_mm, length_mm, feed);
+            stats_->add_line(state.kind, /*head*/ 1, start_mm, end_mm, length_mm, state.feed_mm_min);
             if (also_) {
                 UnitLine l;
                 l.line = b.line;
                 l.block = static_cast<std::uint32_t>(index);
-                l.kind = kind;
+                l.kind = state.kind;
                 l.tools = tools_;
                 l.kerf = motion_kerf();
                 l.start_x = cur.x;
@@ -586,7 +598,7 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
                 l.start = start_mm;
                 l.end = end_mm;
                 l.length_mm = length_mm;
-                l.feed_mm_min = feed;
+                l.feed_mm_min = state.feed_mm_min;
                 l.kerf_mm = kerf_offset_mm_;
                 also_->on_line(l);
             }
@@ -691,45 +703,23 @@ bool Machine::parabola_motion(MotionRecord& m, const Block& b, std::span<const s
     const double XP = w[2], YP = w[3];
     const bool axis_parallel_y = b.tp_positive();
     const double p_signed = axis_parallel_y ? YP : XP;
-    const double sx = static_cast<double>(s_t.x), sy = static_cast<double>(s_t.y);
-    const double ex = static_cast<double>(e_t.x), ey = static_cast<double>(e_t.y);
     if (p_signed == 0) {
         warn(DiagCode::E304_ParabolaZeroCurvature, b,
              std::string("the parabola's radius of curvature at the vertex (") + (axis_parallel_y ? "YP" : "XP") +
                  ") is 0; expected a non-zero radius");
         return false;
     }
-    ParabolaGeom g;  // tape frame, units
-    double residual = 0;
-    if (axis_parallel_y) {
-        const double xa = (absolute_ ? 0 : sx) + XP;
-        const double yv = sy - (sx - xa) * (sx - xa) / (2 * YP);
-        g.vertex = {xa, yv};
-        g.u = {1, 0};
-        g.n = {0, YP > 0 ? 1.0 : -1.0};
-        g.t0 = sx - xa;
-        g.t1 = ex - xa;
-        residual = ey - (yv + g.t1 * g.t1 / (2 * YP));
-    } else {
-        const double ya = (absolute_ ? 0 : sy) + YP;
-        const double xv = sx - (sy - ya) * (sy - ya) / (2 * XP);
-        g.vertex = {xv, ya};
-        g.u = {0, 1};
-        g.n = {XP > 0 ? 1.0 : -1.0, 0};
-        g.t0 = sy - ya;
-        g.t1 = ey - ya;
-        residual = ex - (xv + g.t1 * g.t1 / (2 * XP));
-    }
-    g.p = std::abs(p_signed);
-    if (std::abs(residual) > tol_units) {
+    const auto to_point = [](IPoint q) { return Point{static_cast<double>(q.x), static_cast<double>(q.y)}; };
+    const ParabolaPiece piece = parabola_from_words(to_point(s_t), to_point(e_t), XP, YP, axis_parallel_y, absolute_);
+    const ParabolaGeom& g = piece.curve;  // tape frame, units
+    if (std::abs(piece.residual) > tol_units) {
         warn(DiagCode::E303_ParabolaEndNotOnCurve, b,
-             "the parabola's end point is " + mm_text(std::abs(residual) * unit) +
+             "the parabola's end point is " + mm_text(std::abs(piece.residual) * unit) +
                  " off its curve (measured along the axis); expected at most " + mm_text(tol_units * unit) +
                  " (arc_tolerance)");
     }
     if (g.t1 != g.t0) {
-        const double turn = (g.u.x * g.n.y - g.u.y * g.n.x) * (g.t1 - g.t0);
-        const bool ccw = turn > 0;
+        const bool ccw = parabola_turns_ccw(g);
         if (ccw != b.tc_positive()) {
             warn(DiagCode::W305_ParabolaDirection, b,
                  std::string("TC says ") + (b.tc_positive() ? "counter-clockwise (+)" : "clockwise (-)") +
@@ -798,10 +788,10 @@ AxisMapping axis_mapping(int function_code) {
 
 Interpreter::Interpreter(std::string_view source, const Profile& profile, MotionSink& sink,
                          std::vector<Diagnostic>& diagnostics)
-    : machine_(std::make_unique<detail::Machine>(source, profile, sink, nullptr, diagnostics)) {}
+    : machine_(std::make_unique<detail::Machine>(source, profile, &sink, nullptr, nullptr, diagnostics)) {}
 Interpreter::Interpreter(std::string_view source, const Profile& profile, StatsSink& stats, MotionSink* also,
                          std::vector<Diagnostic>& diagnostics)
-    : machine_(std::make_unique<detail::Machine>(source, profile, stats, also, diagnostics)) {}
+    : machine_(std::make_unique<detail::Machine>(source, profile, nullptr, &stats, also, diagnostics)) {}
 Interpreter::~Interpreter() = default;
 void Interpreter::run(const Tape& chunk, std::span<const MotionMeasure> measures) { machine_->run(chunk, measures); }
 

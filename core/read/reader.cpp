@@ -155,7 +155,7 @@ template <bool bounded>
         ++n;
         p = after;
     }
-    if (p == first || (!(bounded && p == stop) && !is_line_end(static_cast<char>(*p)))) return false;  // not a plain line
+    if (p == first || (!(bounded && p == stop) && *p != '\n' && *p != '\r')) return false;  // not a plain line (two compares: is_line_end's form costs 2 % here)
     out.lead_digits = lead_digits;
     out.lead = lead;
     out.words = n;

@@ -48,6 +48,19 @@ struct Box {
 // the end equals the start.
 [[nodiscard]] double arc_sweep(Point start, Point end, Point centre, bool ccw, bool full_circle);
 
+// A parabola block's curve (docs/semantics.md §6), worked out in the block's own frame (the tape's axes, unit
+// increments): from its start and end, XP and YP, TP (true: the axis is parallel to Y) and whether XP/YP count
+// from the frame's origin (absolute) or from the start. `p_signed` (YP or XP, the radius of curvature at the
+// vertex) must not be 0. `residual` is how far the end lies off the curve, measured along the axis.
+struct ParabolaPiece {
+    ParabolaGeom curve;
+    double residual = 0;
+};
+[[nodiscard]] ParabolaPiece parabola_from_words(Point start, Point end, double xp, double yp, bool axis_parallel_y,
+                                                bool absolute);
+// Whether the piece turns counter-clockwise as t goes from t0 to t1 (t1 != t0).
+[[nodiscard]] bool parabola_turns_ccw(const ParabolaGeom& g);
+
 // Closed-form length of a parabola piece.
 [[nodiscard]] double parabola_length(const ParabolaGeom& g);
 // Point of a parabola at parameter t.
