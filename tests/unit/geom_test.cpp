@@ -510,3 +510,28 @@ TEST(GeomPointAt, LineArcParabola) {
     EXPECT_POINT_NEAR(point_at(p, 0.0), 0.0, 0.0, 1e-9);
     EXPECT_POINT_NEAR(point_at(p, 1.0), 20.0, 0.0, 1e-9);
 }
+
+TEST(Parabola, FromWords) {
+    // Axis parallel to Y (TP +), XP = 10 from the start, YP = 5: y = (x - 10)^2 / 10 - 10 through (0,0) and (20,0).
+    const essi::ParabolaPiece y_axis = essi::parabola_from_words({0, 0}, {20, 0}, 10, 5, true, false);
+    EXPECT_DOUBLE_EQ(y_axis.curve.vertex.x, 10);
+    EXPECT_DOUBLE_EQ(y_axis.curve.vertex.y, -10);
+    EXPECT_DOUBLE_EQ(y_axis.curve.t0, -10);
+    EXPECT_DOUBLE_EQ(y_axis.curve.t1, 10);
+    EXPECT_DOUBLE_EQ(y_axis.curve.p, 5);
+    EXPECT_DOUBLE_EQ(y_axis.residual, 0);
+    EXPECT_TRUE(essi::parabola_turns_ccw(y_axis.curve));  // opening up, travelled left to right
+    // The same words in absolute mode count XP from the origin, and an end 3 units off the curve.
+    const essi::ParabolaPiece absolute = essi::parabola_from_words({4, 0}, {16, 3}, 10, 5, true, true);
+    EXPECT_DOUBLE_EQ(absolute.curve.vertex.x, 10);
+    EXPECT_DOUBLE_EQ(absolute.curve.vertex.y, -3.6);
+    EXPECT_DOUBLE_EQ(absolute.residual, 3);
+    // Axis parallel to X (TP -), XP = -5 opens towards -x: from (0,0) out to the vertex (10,-10) and back to
+    // (0,-20) it turns clockwise.
+    const essi::ParabolaPiece x_axis = essi::parabola_from_words({0, 0}, {0, -20}, -5, -10, false, false);
+    EXPECT_DOUBLE_EQ(x_axis.curve.vertex.x, 10);
+    EXPECT_DOUBLE_EQ(x_axis.curve.vertex.y, -10);
+    EXPECT_DOUBLE_EQ(x_axis.curve.n.x, -1);
+    EXPECT_DOUBLE_EQ(x_axis.residual, 0);
+    EXPECT_FALSE(essi::parabola_turns_ccw(x_axis.curve));
+}
