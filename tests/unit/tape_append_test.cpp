@@ -116,3 +116,36 @@ TEST(TapeAppend, EveryExampleTape) {
     }
     EXPECT_GT(n, 3u);
 }
+
+namespace {
+
+TEST(TapeReader, ACopyGoesOnFromWhereTheOriginalIs) {
+    // The viewer keeps a copy of the reader before each chunk to read that chunk again: the copy (BlockReader's
+    // clone) must read exactly what the original reads from there on.
+    const std::string bytes = essi::bench::generate_nest_tape(60000, 4) + "\n3\nNOTE\n4\n+1+1\n63\n%\n";
+    const Profile p = *builtin_profile("iso6582");
+    TapeReader reader(bytes, p);
+    Tape chunk;
+    ASSERT_TRUE(reader.read_chunk(chunk, 500));
+    ASSERT_TRUE(reader.read_chunk(chunk, 500));
+    TapeReader copy = reader;
+    EXPECT_EQ(copy.state_bytes(), reader.state_bytes());
+    EXPECT_GT(reader.state_bytes(), sizeof(TapeReader));
+    Tape from_original, from_copy;
+    while (reader.read_chunk(chunk, 700)) from_original.append(chunk);
+    while (copy.read_chunk(chunk, 300)) from_copy.append(chunk);
+    ASSERT_GT(from_original.size(), 1000u);
+    expect_same(from_original, from_copy, "after two chunks");
+}
+
+TEST(TapeReader, TheEssiFrontEndIsTheDefault) {
+    const std::string bytes = "%\n7\n+100+0\n+0+100+0+50-\n8\n63\n";
+    const Profile p = *builtin_profile("iso6582");
+    expect_same(read_tape(bytes, p, InputFormat::Essi), read_tape(bytes, p), "whole");
+    Tape chunk, appended;
+    const auto front_end = make_block_reader(InputFormat::Essi, bytes, p);
+    while (front_end->read_chunk(chunk, 2)) appended.append(chunk);
+    expect_same(appended, read_tape(bytes, p), "chunks of 2");
+}
+
+}  // namespace

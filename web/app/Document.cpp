@@ -232,7 +232,7 @@ std::vector<std::pair<const char*, std::size_t>> Document::memory_parts() const 
         {"pierces", pierces.capacity() * sizeof(std::uint32_t)},
         {"diagnostics", diagnostics.capacity() * sizeof(Diagnostic)},
         {"line_index", line_index.capacity() * sizeof(std::uint32_t)},
-        {"read_chunks", chunks.capacity() * sizeof(ReadChunk) + chunks.size() * TapeReader::state_bytes() +
+        {"read_chunks", chunks.capacity() * sizeof(ReadChunk) + (chunks.empty() ? 0 : chunks.size() * chunks.front().reader.state_bytes()) +
                             reread_.memory_bytes()},
     };
 }

@@ -1,5 +1,5 @@
 // Phase 1, read: bytes -> blocks, each with its source position. No machine semantics beyond
-// "what words does this block hold" (ESSI-SEMANTICS §1-2).
+// "what words does this block hold" (docs/semantics.md §1-2). One front end per input format (BlockReader).
 //
 // Memory: a block is 12 bytes plus 4 bytes per signed word, stored contiguously; the word index of a
 // block is kept sparsely (one entry per kWordIndexStride blocks), so a tape of straight lines costs
@@ -189,8 +189,7 @@ public:
     };
 
 private:
-    friend class Reader;
-    friend class TapeReader;
+    friend class BlockReader;  // the front ends write the arrays (BlockReader's accessors)
     detail::PodArray<Block> blocks_;
     detail::PodArray<std::int32_t> words_;
     detail::PodArray<std::uint32_t> word_index_;  // first word of block k*kWordIndexStride
@@ -201,14 +200,53 @@ private:
     bool has_end_ = false;
 };
 
+// The formats a tape can be written in. Each has its front end in core/read/ (one file each, a BlockReader):
+// ESSI (essi_reader.cpp).
+enum class InputFormat : std::uint8_t { Essi };
+
+// A front end: bytes -> blocks with their positions (byte offset, line), a chunk at a time, every problem a
+// diagnostic (never an exception). The blocks mean the same whatever format they were read from: the interpreter
+// runs them without knowing the format, so a format is added by a BlockReader beside the others and a value of
+// InputFormat, and nothing after the read changes.
+class BlockReader {
+public:
+    virtual ~BlockReader() = default;
+    // Empties `chunk` and reads up to `max_blocks` more blocks into it, with the diagnostics found meanwhile.
+    // Returns false when the tape is done (nothing was read). Chunks come in tape order; after the last, the
+    // chunks appended together are what reading the whole tape at once gives.
+    virtual bool read_chunk(Tape& chunk, std::size_t max_blocks) = 0;
+    // Reserves in `tape` the room the whole tape needs (a cheap pass over the bytes), before one read_chunk of
+    // everything.
+    virtual void reserve_whole(Tape& tape) const = 0;
+    // A copy that goes on from where this one is.
+    [[nodiscard]] virtual std::unique_ptr<BlockReader> clone() const = 0;
+    // The bytes this reader holds (what keeping a copy costs).
+    [[nodiscard]] virtual std::size_t state_bytes() const = 0;
+
+protected:
+    // What a front end writes into a Tape.
+    static detail::PodArray<Block>& blocks_of(Tape& t) { return t.blocks_; }
+    static detail::PodArray<std::int32_t>& words_of(Tape& t) { return t.words_; }
+    static detail::PodArray<std::uint32_t>& word_index_of(Tape& t) { return t.word_index_; }
+    static std::vector<Diagnostic>& diagnostics_of(Tape& t) { return t.diagnostics_; }
+    static std::size_t& end_block_of(Tape& t) { return t.end_block_; }
+    static std::size_t& first_block_of(Tape& t) { return t.first_block_; }
+    static std::size_t& program_blocks_of(Tape& t) { return t.program_blocks_; }
+    static bool& has_end_of(Tape& t) { return t.has_end_; }
+};
+
+// The front end of `format` for `bytes` (which must outlive it).
+[[nodiscard]] std::unique_ptr<BlockReader> make_block_reader(InputFormat format, std::string_view bytes,
+                                                             const Profile& profile);
+
 // Reads a tape. Never throws; every problem is a diagnostic in the result.
-[[nodiscard]] Tape read_tape(std::string_view bytes, const Profile& profile);
+[[nodiscard]] Tape read_tape(std::string_view bytes, const Profile& profile, InputFormat format = InputFormat::Essi);
 
 // Reads a tape a chunk of blocks at a time, so that a checker can interpret each chunk while it is
 // still in cache, and never holds the whole tape (the same reader as read_tape; the same results).
 class TapeReader {
 public:
-    TapeReader(std::string_view bytes, const Profile& profile);
+    TapeReader(std::string_view bytes, const Profile& profile, InputFormat format = InputFormat::Essi);
     ~TapeReader();
     TapeReader(TapeReader&&) noexcept;
     TapeReader& operator=(TapeReader&&) noexcept;
@@ -216,12 +254,12 @@ public:
     TapeReader(const TapeReader& other);
     TapeReader& operator=(const TapeReader& other);
     // The bytes a reader holds (what keeping a copy costs).
-    [[nodiscard]] static std::size_t state_bytes();
+    [[nodiscard]] std::size_t state_bytes() const;
     // Empties `chunk` and reads up to `max_blocks` more blocks into it, with the diagnostics found
     // meanwhile. Returns false when the tape is done (nothing was read).
     bool read_chunk(Tape& chunk, std::size_t max_blocks);
 private:
-    std::unique_ptr<class Reader> impl_;
+    std::unique_ptr<BlockReader> impl_;
 };
 
 }  // namespace essi

@@ -181,18 +181,20 @@ std::string_view trim(std::string_view s) {
 
 }  // namespace
 
-class Reader {
+class EssiReader final : public BlockReader {
 public:
-    Reader(std::string_view bytes, const Profile& profile) : src_(bytes), profile_(profile) {
+    EssiReader(std::string_view bytes, const Profile& profile) : src_(bytes), profile_(profile) {
         for (const EndCode& e : profile.end_codes)
             if (e.function >= 0 && e.function < kFunctionCodes) end_function_[e.function] = true;
     }
 
     // Reads up to `max_blocks` more blocks into `chunk` (emptied first). Returns false once the whole
     // tape has been read and the last diagnostics given.
-    bool read_chunk(Tape& chunk, std::size_t max_blocks);
+    bool read_chunk(Tape& chunk, std::size_t max_blocks) override;
     // Reserves the exact room the whole tape needs in `tape` (one cheap counting pass).
-    void reserve_whole(Tape& tape) const;
+    void reserve_whole(Tape& tape) const override;
+    [[nodiscard]] std::unique_ptr<BlockReader> clone() const override { return std::make_unique<EssiReader>(*this); }
+    [[nodiscard]] std::size_t state_bytes() const override { return sizeof(EssiReader); }
 
 private:
     // One line's parse, before classification.
@@ -216,9 +218,9 @@ private:
     void mark_program_end() {
         ended_ = true;
         end_line_ = line_;
-        tape().blocks_.back().packed |= Block::kProgramEnd;
-        tape().has_end_ = true;
-        tape().end_block_ = tape().blocks_.size();
+        blocks_of(tape()).back().packed |= Block::kProgramEnd;
+        has_end_of(tape()) = true;
+        end_block_of(tape()) = blocks_of(tape()).size();
     }
     void report(Severity sev, DiagCode code, std::uint32_t offset, std::string message);
     [[nodiscard]] bool is_end_function(long long code) const;
@@ -255,29 +257,29 @@ private:
     std::uint32_t last_line_ = 0;
 };
 
-void Reader::report(Severity sev, DiagCode code, std::uint32_t offset, std::string message) {
+void EssiReader::report(Severity sev, DiagCode code, std::uint32_t offset, std::string message) {
     if (stopped_) return;
-    tape().diagnostics_.push_back({sev, code, line_, column(offset), std::move(message)});
+    diagnostics_of(tape()).push_back({sev, code, line_, column(offset), std::move(message)});
     if (sev == Severity::Error && ++errors_ >= kMaxReadErrors) {
-        tape().diagnostics_.push_back({Severity::Error, DiagCode::E115_TooManyErrors, line_, column(offset),
+        diagnostics_of(tape()).push_back({Severity::Error, DiagCode::E115_TooManyErrors, line_, column(offset),
                                       "reading stopped after " + std::to_string(kMaxReadErrors) +
                                           " errors; this does not look like an ESSI tape (expected lines of + - 0-9)"});
         stopped_ = true;
     }
 }
 
-bool Reader::is_end_function(long long code) const {
+bool EssiReader::is_end_function(long long code) const {
     return code >= 0 && code < kFunctionCodes && end_function_[static_cast<std::size_t>(code)];
 }
 
-bool Reader::is_end_mark(char mark) const {
+bool EssiReader::is_end_mark(char mark) const {
     return std::any_of(profile_.end_codes.begin(), profile_.end_codes.end(),
                        [&](const EndCode& e) { return e.function < 0 && e.mark == mark; });
 }
 
-void Reader::push_block(std::uint32_t offset, BlockKind kind, std::uint16_t code, std::uint8_t packed) {
+void EssiReader::push_block(std::uint32_t offset, BlockKind kind, std::uint16_t code, std::uint8_t packed) {
     if (percent_line_ != 0 && kind != BlockKind::Comment) [[unlikely]] {
-        tape().diagnostics_.push_back({Severity::Warning, DiagCode::W112_MisplacedPercent, percent_line_, percent_column_,
+        diagnostics_of(tape()).push_back({Severity::Warning, DiagCode::W112_MisplacedPercent, percent_line_, percent_column_,
                                       "a % mark in the middle of the program is ignored; % belongs before the first "
                                       "block or after the end"});
         percent_line_ = 0;
@@ -285,37 +287,37 @@ void Reader::push_block(std::uint32_t offset, BlockKind kind, std::uint16_t code
     Tape& t = *chunk_;
     if (kind == BlockKind::Comment) ++chunk_comments_;
     if (chunk_blocks_ % Tape::kWordIndexStride == 0)
-        t.word_index_.push_back(static_cast<std::uint32_t>(t.words_.size()) - (packed & Block::kWordCountMask));
-    t.blocks_.push_back(Block{offset, line_, code, kind, packed});
+        word_index_of(t).push_back(static_cast<std::uint32_t>(words_of(t).size()) - (packed & Block::kWordCountMask));
+    blocks_of(t).push_back(Block{offset, line_, code, kind, packed});
     ++chunk_blocks_;
     last_line_ = line_;
 }
 
-void Reader::reserve_whole(Tape& tape) const {
+void EssiReader::reserve_whole(Tape& tape) const {
     // A block per line, a word per sign: no reallocation while reading, no slack to give back.
     const ByteCounts n = count_bytes(src_);
-    tape.blocks_.reserve(std::max(n.lf, n.cr) + 1);
-    tape.words_.reserve(n.signs + kMaxPlainWords);  // the fast path's room for the last line
-    tape.word_index_.reserve(tape.blocks_.capacity() / Tape::kWordIndexStride + 1);
+    blocks_of(tape).reserve(std::max(n.lf, n.cr) + 1);
+    words_of(tape).reserve(n.signs + kMaxPlainWords);  // the fast path's room for the last line
+    word_index_of(tape).reserve(blocks_of(tape).capacity() / Tape::kWordIndexStride + 1);
 }
 
-bool Reader::read_chunk(Tape& chunk, std::size_t max_blocks) {
+bool EssiReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     if (finished_) return false;
     chunk_ = &chunk;
-    chunk.blocks_.clear();
-    chunk.words_.clear();
-    chunk.word_index_.clear();
-    chunk.diagnostics_.clear();
-    chunk.first_block_ = total_blocks_;
+    blocks_of(chunk).clear();
+    words_of(chunk).clear();
+    word_index_of(chunk).clear();
+    diagnostics_of(chunk).clear();
+    first_block_of(chunk) = total_blocks_;
     chunk_blocks_ = 0;
     chunk_comments_ = 0;
-    chunk.has_end_ = false;
+    has_end_of(chunk) = false;
     const bool ended_before = ended_;
 
     if (!started_) {
         started_ = true;
         if (src_.size() > std::numeric_limits<std::uint32_t>::max()) {
-            chunk.diagnostics_.push_back({Severity::Error, DiagCode::E117_TapeTooLarge, 0, 0,
+            diagnostics_of(chunk).push_back({Severity::Error, DiagCode::E117_TapeTooLarge, 0, 0,
                                           "the tape has " + std::to_string(src_.size()) +
                                               " bytes; essikit reads tapes of at most 4 GiB"});
             stopped_ = true;
@@ -353,29 +355,29 @@ bool Reader::read_chunk(Tape& chunk, std::size_t max_blocks) {
         ++line_;
     }
     pos_ = pos;
-    total_blocks_ += chunk.blocks_.size();
+    total_blocks_ += blocks_of(chunk).size();
     // Blocks of this chunk that belong to the program: all of them, up to the end block, none after it.
-    if (ended_before) chunk.end_block_ = 0;
-    else if (!ended_) chunk.end_block_ = chunk.blocks_.size();
+    if (ended_before) end_block_of(chunk) = 0;
+    else if (!ended_) end_block_of(chunk) = blocks_of(chunk).size();
     // (when the end was found in this chunk, classify() set end_block_)
     // Comment blocks come only before the end (after it nothing but % is kept).
-    chunk.program_blocks_ = chunk.end_block_ - (ended_before ? 0 : chunk_comments_);
+    program_blocks_of(chunk) = end_block_of(chunk) - (ended_before ? 0 : chunk_comments_);
 
     const bool input_done = pos >= size || stopped_ || after_end_seen_;
     if (!input_done) return true;
     finished_ = true;
     if (stopped_) return true;
     if (in_ignore_) {
-        chunk.diagnostics_.push_back({Severity::Error, DiagCode::E107_UnclosedIgnore, ignore_line_, ignore_column_,
+        diagnostics_of(chunk).push_back({Severity::Error, DiagCode::E107_UnclosedIgnore, ignore_line_, ignore_column_,
                                       "ignore ON (3) is never switched off: expected a block 4 (ignore OFF) "
                                       "after it; everything after line " + std::to_string(ignore_line_) +
                                           " is ignored"});
     }
     if (total_blocks_ == 0) {
-        chunk.diagnostics_.push_back({Severity::Error, DiagCode::E113_EmptyTape, 1, 1,
+        diagnostics_of(chunk).push_back({Severity::Error, DiagCode::E113_EmptyTape, 1, 1,
                                       "the tape holds no block; expected ESSI blocks such as 7, +100+0, 63"});
     } else if (!ended_) {
-        chunk.diagnostics_.push_back({Severity::Warning, DiagCode::W114_NoProgramEnd, last_line_, 1,
+        diagnostics_of(chunk).push_back({Severity::Warning, DiagCode::W114_NoProgramEnd, last_line_, 1,
                                       "the tape ends without an end of program; expected 63, 64 or / as the last block"});
     }
     return true;
@@ -386,7 +388,7 @@ bool Reader::read_chunk(Tape& chunk, std::size_t max_blocks) {
 // changes (the end, an ignore section), the chunk is full or the bytes end. Returns the start of the
 // first line it did not read (line_ is that line's number), or `size`. Locals only in the loop, so that
 // the compiler keeps them in registers; a line's words are written straight into room made once a line.
-std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, std::size_t max_blocks) {
+std::uint32_t EssiReader::read_plain_lines(std::uint32_t pos, std::uint32_t size, std::size_t max_blocks) {
     const auto* const base = reinterpret_cast<const unsigned char*>(src_.data());
     const unsigned char* const stop = base + size;
     Tape& t = *chunk_;
@@ -400,10 +402,10 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
     Block *bp = nullptr, *b_room_end = nullptr;
     std::int32_t *wp = nullptr, *w_room_end = nullptr;
     const auto take_pointers = [&] {
-        bp = t.blocks_.data() + t.blocks_.size();
-        b_room_end = t.blocks_.end_of_room();
-        wp = t.words_.data() + t.words_.size();
-        w_room_end = t.words_.end_of_room();
+        bp = blocks_of(t).data() + blocks_of(t).size();
+        b_room_end = blocks_of(t).end_of_room();
+        wp = words_of(t).data() + words_of(t).size();
+        w_room_end = words_of(t).end_of_room();
     };
     take_pointers();
     // The two common shapes go straight in as blocks; every other line is classified in full. A motion: two,
@@ -418,7 +420,7 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
     // Writes the block of a common line (its words are already in place); the room has been made. One block
     // either way; only its last three fields differ (selected, not branched on).
     const auto put_block = [&](const PlainLine& pl, bool motion, std::uint32_t offset) {
-        if (blocks % Tape::kWordIndexStride == 0) t.word_index_.push_back(static_cast<std::uint32_t>(wp - t.words_.data()));
+        if (blocks % Tape::kWordIndexStride == 0) word_index_of(t).push_back(static_cast<std::uint32_t>(wp - words_of(t).data()));
         Block& b = *bp++;
         b.offset = offset;
         b.line = line;
@@ -454,9 +456,9 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
             // Its first line was not common: the loop below reads it.
         }
         if (w_room_end - wp < kMaxPlainWords) [[unlikely]] {
-            t.words_.commit_to(wp);
-            wp = t.words_.room(kMaxPlainWords);
-            w_room_end = t.words_.end_of_room();
+            words_of(t).commit_to(wp);
+            wp = words_of(t).room(kMaxPlainWords);
+            w_room_end = words_of(t).end_of_room();
         }
         const unsigned char* const first = base + pos;
         PlainLine pl;
@@ -470,16 +472,16 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
         const bool motion = is_motion(pl);
         if (started && (motion || is_function(pl))) {
             if (bp == b_room_end) [[unlikely]] {
-                t.blocks_.commit_to(bp);
-                bp = t.blocks_.room(1);
-                b_room_end = t.blocks_.end_of_room();
+                blocks_of(t).commit_to(bp);
+                bp = blocks_of(t).room(1);
+                b_room_end = blocks_of(t).end_of_room();
             }
             put_block(pl, motion, offset);
         } else {
             // Rare shapes (the first block, a function value, a head address, an end code, 3/4, wrong word
             // counts): classify() with the reader's state brought up to date; it may change that state.
-            t.blocks_.commit_to(bp);
-            t.words_.commit_to(wp + n);
+            blocks_of(t).commit_to(bp);
+            words_of(t).commit_to(wp + n);
             line_ = line;
             line_begin_ = offset;
             chunk_blocks_ = blocks;
@@ -489,7 +491,7 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
             lp.words = n;
             lp.sign_flags = pl.sign_flags;
             lp.blank = false;
-            classify(offset, lp, t.words_.size() - static_cast<std::size_t>(n));
+            classify(offset, lp, words_of(t).size() - static_cast<std::size_t>(n));
             blocks = chunk_blocks_;
             started = program_started_;
             state_changed = ended_ || in_ignore_ || stopped_ || percent_line_ != 0;
@@ -504,15 +506,15 @@ std::uint32_t Reader::read_plain_lines(std::uint32_t pos, std::uint32_t size, st
         ++line;
         if (state_changed) break;
     }
-    t.blocks_.commit_to(bp);
-    t.words_.commit_to(wp);
-    if (blocks != blocks_before) last_line_ = t.blocks_.back().line;
+    blocks_of(t).commit_to(bp);
+    words_of(t).commit_to(wp);
+    if (blocks != blocks_before) last_line_ = blocks_of(t).back().line;
     line_ = line;
     chunk_blocks_ = blocks;
     return pos;
 }
 
-void Reader::read_ignored_line(std::uint32_t begin, std::uint32_t end) {
+void EssiReader::read_ignored_line(std::uint32_t begin, std::uint32_t end) {
     const std::string_view text = src_.substr(begin, end - begin);
     const std::string_view t = trim(text);
     if (t == "4") {
@@ -523,7 +525,7 @@ void Reader::read_ignored_line(std::uint32_t begin, std::uint32_t end) {
     if (!t.empty()) push_block(begin, BlockKind::Comment, Block::kNoCode, 0);
 }
 
-void Reader::after_end_line(std::uint32_t begin, std::uint32_t end) {
+void EssiReader::after_end_line(std::uint32_t begin, std::uint32_t end) {
     const std::string_view t = trim(src_.substr(begin, end - begin));
     if (t.empty()) return;
     if (t == "%") {  // a rewind-stop mark after the program is accepted (kept, but not part of the program)
@@ -541,7 +543,7 @@ void Reader::after_end_line(std::uint32_t begin, std::uint32_t end) {
 
 // Parses the characters of a line into the leading number and words (appended to the tape's words).
 // Returns false (with a diagnostic) when the line cannot be a block.
-bool Reader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& lp) {
+bool EssiReader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& lp) {
     const auto* data = reinterpret_cast<const unsigned char*>(src_.data());
     bool in_word = false;
     int word_digits = 0;           // significant digits of the current word
@@ -560,7 +562,7 @@ bool Reader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& lp) 
         ++lp.words;
         if (lp.words == 5 && word_negative) lp.sign_flags |= Block::kTcNegative;
         if (lp.words == 6 && word_negative) lp.sign_flags |= Block::kTpNegative;
-        tape().words_.push_back(static_cast<std::int32_t>(word_negative ? -word_value : word_value));
+        words_of(tape()).push_back(static_cast<std::int32_t>(word_negative ? -word_value : word_value));
         return true;
     };
     for (std::uint32_t i = begin; i < end; ++i) {
@@ -652,12 +654,12 @@ misplaced_mark:
     return false;
 }
 
-void Reader::read_line(std::uint32_t begin, std::uint32_t end) {
+void EssiReader::read_line(std::uint32_t begin, std::uint32_t end) {
     if (begin == end) return;  // empty block
-    const std::size_t words_before = tape().words_.size();
+    const std::size_t words_before = words_of(tape()).size();
     LineParse lp;
     if (!parse_words(begin, end, lp)) {
-        tape().words_.truncate(words_before);
+        words_of(tape()).truncate(words_before);
         push_block(begin, BlockKind::Invalid, Block::kNoCode, 0);
         program_started_ = true;
         return;
@@ -669,11 +671,11 @@ void Reader::read_line(std::uint32_t begin, std::uint32_t end) {
 }
 
 // Turns a parsed line into a block: its kind by the leading number and the count of signed words.
-void Reader::classify(std::uint32_t first, const LineParse& lp, std::size_t words_before) {
+void EssiReader::classify(std::uint32_t first, const LineParse& lp, std::size_t words_before) {
 
     auto fail = [&](DiagCode code, std::string message) {
         report(Severity::Error, code, first, std::move(message));
-        tape().words_.truncate(words_before);
+        words_of(tape()).truncate(words_before);
         push_block(first, BlockKind::Invalid, Block::kNoCode, 0);
         program_started_ = true;
     };
@@ -738,83 +740,8 @@ void Reader::classify(std::uint32_t first, const LineParse& lp, std::size_t word
                                        "; expected 2 (line DX DY), 5 (arc DX DY XC YC TC) or 6 (parabola DX DY XP YP TC TP)");
 }
 
-// ---- Tape ----
-
-std::span<const std::int32_t> Tape::words(std::size_t i) const {
-    const std::size_t group = i / kWordIndexStride;
-    std::size_t w = word_index_[group];
-    for (std::size_t k = group * kWordIndexStride; k < i; ++k) w += blocks_[k].word_count();
-    return {words_.data() + w, static_cast<std::size_t>(blocks_[i].word_count())};
+std::unique_ptr<BlockReader> make_essi_reader(std::string_view bytes, const Profile& profile) {
+    return std::make_unique<EssiReader>(bytes, profile);
 }
-
-std::span<const std::int32_t> Tape::WordCursor::next(std::size_t i) {
-    while (block_ < i) word_ += tape_->blocks_[block_++].word_count();
-    return {tape_->words_.data() + word_, static_cast<std::size_t>(tape_->blocks_[i].word_count())};
-}
-
-bool Tape::has_errors() const {
-    return std::any_of(diagnostics_.begin(), diagnostics_.end(),
-                       [](const Diagnostic& d) { return d.severity == Severity::Error; });
-}
-
-std::size_t Tape::memory_bytes() const {
-    return blocks_.capacity() * sizeof(Block) + words_.capacity() * sizeof(std::int32_t) +
-           word_index_.capacity() * sizeof(std::uint32_t);
-}
-
-void Tape::append(const Tape& chunk) {
-    if (blocks_.empty()) first_block_ = chunk.first_block_;
-    const std::size_t before = blocks_.size();
-    const bool ended_before = has_end_;
-    blocks_.append(chunk.blocks_.data(), chunk.blocks_.size());
-    // The sparse word index of the whole: one entry per kWordIndexStride blocks, counted from block 0.
-    std::size_t w = words_.size();
-    for (std::size_t k = 0; k < chunk.blocks_.size(); ++k) {
-        if ((before + k) % kWordIndexStride == 0) word_index_.push_back(static_cast<std::uint32_t>(w));
-        w += chunk.blocks_[k].word_count();
-    }
-    words_.append(chunk.words_.data(), chunk.words_.size());
-    diagnostics_.insert(diagnostics_.end(), chunk.diagnostics_.begin(), chunk.diagnostics_.end());
-    // Program blocks: those up to the end block (a chunk after the end has end_block() == 0).
-    if (!ended_before) end_block_ = before + chunk.end_block_;
-    program_blocks_ += chunk.program_blocks_;
-    has_end_ = has_end_ || chunk.has_end_;
-}
-
-void Tape::reserve(std::size_t blocks, std::size_t words) {
-    blocks_.reserve(blocks);
-    words_.reserve(words);
-    word_index_.reserve(blocks / kWordIndexStride + 1);
-}
-
-void Tape::shrink_to_fit() {
-    blocks_.shrink_to_fit();
-    words_.shrink_to_fit();
-    word_index_.shrink_to_fit();
-    diagnostics_.shrink_to_fit();
-}
-
-Tape read_tape(std::string_view bytes, const Profile& profile) {
-    Tape tape;
-    Reader reader(bytes, profile);
-    reader.reserve_whole(tape);
-    (void)reader.read_chunk(tape, std::numeric_limits<std::size_t>::max());
-    return tape;
-}
-
-// ---- TapeReader: the same reader, a chunk at a time ----
-
-TapeReader::TapeReader(std::string_view bytes, const Profile& profile) : impl_(std::make_unique<Reader>(bytes, profile)) {}
-TapeReader::~TapeReader() = default;
-TapeReader::TapeReader(TapeReader&&) noexcept = default;
-TapeReader& TapeReader::operator=(TapeReader&&) noexcept = default;
-TapeReader::TapeReader(const TapeReader& other) : impl_(std::make_unique<Reader>(*other.impl_)) {}
-TapeReader& TapeReader::operator=(const TapeReader& other) {
-    if (this != &other) impl_ = std::make_unique<Reader>(*other.impl_);
-    return *this;
-}
-std::size_t TapeReader::state_bytes() { return sizeof(TapeReader) + sizeof(Reader); }
-
-bool TapeReader::read_chunk(Tape& chunk, std::size_t max_blocks) { return impl_->read_chunk(chunk, max_blocks); }
 
 }  // namespace essi

@@ -1,0 +1,39 @@
+// Reading a tape whole or a chunk at a time, through the front end of its format (essi/read.hpp).
+#include <limits>
+
+#include "essi/read.hpp"
+
+namespace essi {
+
+std::unique_ptr<BlockReader> make_essi_reader(std::string_view bytes, const Profile& profile);  // essi_reader.cpp
+
+std::unique_ptr<BlockReader> make_block_reader(InputFormat format, std::string_view bytes, const Profile& profile) {
+    switch (format) {
+        case InputFormat::Essi: break;
+    }
+    return make_essi_reader(bytes, profile);
+}
+
+Tape read_tape(std::string_view bytes, const Profile& profile, InputFormat format) {
+    Tape tape;
+    const auto reader = make_block_reader(format, bytes, profile);
+    reader->reserve_whole(tape);
+    (void)reader->read_chunk(tape, std::numeric_limits<std::size_t>::max());
+    return tape;
+}
+
+TapeReader::TapeReader(std::string_view bytes, const Profile& profile, InputFormat format)
+    : impl_(make_block_reader(format, bytes, profile)) {}
+TapeReader::~TapeReader() = default;
+TapeReader::TapeReader(TapeReader&&) noexcept = default;
+TapeReader& TapeReader::operator=(TapeReader&&) noexcept = default;
+TapeReader::TapeReader(const TapeReader& other) : impl_(other.impl_->clone()) {}
+TapeReader& TapeReader::operator=(const TapeReader& other) {
+    if (this != &other) impl_ = other.impl_->clone();
+    return *this;
+}
+std::size_t TapeReader::state_bytes() const { return sizeof(TapeReader) + impl_->state_bytes(); }
+
+bool TapeReader::read_chunk(Tape& chunk, std::size_t max_blocks) { return impl_->read_chunk(chunk, max_blocks); }
+
+}  // namespace essi
