@@ -11,7 +11,7 @@ SHELL := /bin/bash
 JOBS ?= 2
 FUZZ_SECONDS ?= 60
 
-# TOOLCHAIN.md: every emcc link at -O1+ needs Debian's acorn module on NODE_PATH.
+# docs/toolchain.md: every emcc link at -O1+ needs Debian's acorn module on NODE_PATH.
 export NODE_PATH := /usr/share/nodejs
 
 .PHONY: all setup native wasm test run bench fuzz clean

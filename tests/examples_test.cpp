@@ -1,6 +1,6 @@
 // Golden tests over examples/: every examples/NAME.esi is checked against
 //   NAME.expected.json  — ok, the multiset of (code, line) diagnostics, and statistics whose numbers were
-//                         computed by hand from ESSI-SEMANTICS.md (not taken from the core's output);
+//                         computed by hand from docs/semantics.md (not taken from the core's output);
 //   NAME.trace          — the golden output of essi::trace_tape (good tapes only).
 //
 // The tape list is read from the directory at run time (natively the source tree, in WASM the preloaded

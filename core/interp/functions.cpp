@@ -71,7 +71,7 @@ FunctionInfo iso_row(int code) {
         case 35: return row(35, "Slave head set I (inside)", "selects slave head set I");
         case 36: return row(36, "Slave head set II (outside)", "selects slave head set II");
         case 38: return row(38, "Kerf compensation OFF", "cancels 29 and 30");
-        // 39 and 41 carry a value in the Woyda extension that every dialect here accepts (ESSI-SEMANTICS §2).
+        // 39 and 41 carry a value in the Woyda extension that every dialect here accepts (docs/semantics.md §2).
         case 39: return with_value(row(39, "Programmed feed", "sets the cutting feed"), FunctionValue::Optional, "mm/min");
         case 41: return with_value(row(41, "Dwell", "waits, to improve corners of thick plates"), FunctionValue::Optional, "s");
         case 42: return row(42, "Burner bridge", "burners off for a fixed distance along the next contour, then on again");

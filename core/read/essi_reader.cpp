@@ -1,4 +1,4 @@
-// Phase 1, read: bytes -> blocks (ESSI-SEMANTICS §1-2). One pass over the bytes, no allocation per block
+// Phase 1, read: bytes -> blocks (docs/semantics.md §1-2). One pass over the bytes, no allocation per block
 // beyond the two growing arrays. The reader knows characters and word counts, not what a function does,
 // except for the three things that change how the following bytes are read: 3/4 ignore sections, the
 // end of the program, and the % mark.

@@ -1,5 +1,5 @@
 // Phase 3 (geom): arcs, full circles, the end-point tolerance, exact bounding boxes, parabolas with
-// closed-form lengths, flattening (ESSI-SEMANTICS §5, §6). Expectations worked out by hand.
+// closed-form lengths, flattening (docs/semantics.md §5, §6). Expectations worked out by hand.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -48,7 +48,7 @@ TEST(ProfileBuiltin, Iso6582Defaults) {
     ASSERT_TRUE(p.has_value());
     EXPECT_EQ(p->name, "iso6582");
     EXPECT_EQ(p->dialect, Dialect::Iso6582);
-    // the defaults of ESSI-SEMANTICS
+    // the defaults of docs/semantics.md
     EXPECT_DOUBLE_EQ(p->unit_mm, 0.1);
     EXPECT_EQ(p->whitespace, WhitespacePolicy::Skip);
     EXPECT_DOUBLE_EQ(p->arc_tolerance_units, 2.0);

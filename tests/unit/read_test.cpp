@@ -1,4 +1,4 @@
-// Phase 1 (read): characters, line ends, words and block types (ESSI-SEMANTICS §1-§2).
+// Phase 1 (read): characters, line ends, words and block types (docs/semantics.md §1-§2).
 // Every expectation is worked out by hand from the rules, never copied from the reader's output.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Phase 5 (report): statistics and check results of small tapes (ESSI-SEMANTICS §9). Lengths, times and
+// Phase 5 (report): statistics and check results of small tapes (docs/semantics.md §9). Lengths, times and
 // boxes are worked out by hand. Default profile: feed 1000 mm/min, rapid 10000 mm/min, pierce 2 s, dwell 1 s.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Machine + dialect profiles. Every choice ESSI leaves open (ESSI-SEMANTICS.md) is a setting here, with the
+// Machine + dialect profiles. Every choice ESSI leaves open (docs/semantics.md) is a setting here, with the
 // default the semantics page gives. Profiles are JSON; two are built in: "iso6582" (default) and "woyda".
 #pragma once
 

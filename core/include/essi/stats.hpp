@@ -1,4 +1,4 @@
-// The statistics of ESSI-SEMANTICS §9, accumulated from the motion stream. Defined here, inline, because
+// The statistics of docs/semantics.md §9, accumulated from the motion stream. Defined here, inline, because
 // the interpreter feeds them directly (not through the MotionSink's virtual calls) when they are its only
 // sink: a call per motion and per function block of every tape that is checked.
 #pragma once
