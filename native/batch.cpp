@@ -68,8 +68,8 @@ std::vector<std::string> expand_paths(const std::vector<std::string>& args, cons
             std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
             const bool known =
                 std::find(options.extensions.begin(), options.extensions.end(), ext) != options.extensions.end();
-            // Sniff only files whose extension says nothing: no extension, or one that is not a known text
-            // or data format is still worth a look (the first KB decides).
+            // A file without a tape extension, whatever its extension (or none), is taken when its first KB
+            // looks like a tape (essi/sniff.hpp); --no-sniff turns that off.
             if (known || (options.sniff && sniff_tape_file(it->path().string()))) found.push_back(it->path().string());
         }
         if (ec) errors.push_back("cannot read " + path + ": " + ec.message());

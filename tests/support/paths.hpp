@@ -5,10 +5,10 @@
 //   wasm:   the same folders preloaded into the Emscripten file system (--preload-file):
 //           examples/ at /examples, ../shared/corpus/essiconv at /corpus (only when it existed at configure).
 //
-// This header is the one place in tests/ allowed to say `#ifdef __EMSCRIPTEN__`.
+// This header is where tests/ chooses its data folders by runtime; elsewhere `__EMSCRIPTEN__` only selects what
+// cannot run under node (threads, files written to disk, timers of the benchmarks).
 #pragma once
 
-#include <cstdio>
 #include <fstream>
 #include <optional>
 #include <sstream>
