@@ -30,15 +30,6 @@ void append(std::string& s, const char* fmt, double a) {
     s += buf;
 }
 
-const char* kerf_text(KerfSide k) {
-    switch (k) {
-        case KerfSide::Off: return "off";
-        case KerfSide::Left: return "left";
-        case KerfSide::Right: return "right";
-    }
-    return "?";
-}
-
 // Buffers lines and hands them to the writer in chunks of about kTraceChunkBytes.
 class TraceSink : public MotionSink {
 public:
@@ -89,7 +80,7 @@ std::string trace_line(const MotionRecord& m) {
     append(s, " feed=%.0f", m.feed_mm_min);
     if (m.kerf != KerfSide::Off) {
         s += " kerf=";
-        s += kerf_text(m.kerf);
+        s += kerf_side_name(m.kerf);
         append(s, ":%.3f", m.kerf_mm);
     }
     return s;

@@ -118,6 +118,7 @@ public:
 
 [[nodiscard]] const char* motion_kind_name(MotionKind k);   // "rapid", "travel", "cut", "mark"
 [[nodiscard]] const char* curve_kind_name(CurveKind k);     // "line", "arc", "parabola"
+[[nodiscard]] const char* kerf_side_name(KerfSide k);       // "off", "left", "right"
 [[nodiscard]] std::string tools_text(std::uint8_t tools);    // "oxygen+punch", "-" for none
 
 }  // namespace essi
