@@ -1,5 +1,5 @@
-// The machine function table (ISO 6582 Annex B, Woyda NBS300/400 extensions). Names follow the standard;
-// explanations are the sentence a machine operator would use.
+// What every machine function means, per dialect (essi/functions.hpp): one table, ISO 6582 Annex B and the Woyda
+// NBS300/400 extensions.
 #include "essi/functions.hpp"
 
 #include "essi/function_codes.hpp"
@@ -65,8 +65,10 @@ constexpr FunctionRow kFunctionRows[] = {
     {26, Dialect::Iso6582, "+Y -X (rotate -90)", "machine x = +Y, y = -X"},
     {27, Dialect::Iso6582, "+Y +X (mirror)", "machine x = +Y, y = +X; arcs change direction"},
     {28, Dialect::Iso6582, "-Y +X (rotate +90)", "machine x = -Y, y = +X"},
-    {29, Dialect::Iso6582, "Left kerf compensation ON", "kerf compensation left of the direction of travel", FunctionValue::Optional, "unit increments"},
-    {30, Dialect::Iso6582, "Right kerf compensation ON", "kerf compensation right of the direction of travel", FunctionValue::Optional, "unit increments"},
+    {29, Dialect::Iso6582, "Left kerf compensation ON", "kerf compensation left of the direction of travel",
+      FunctionValue::Optional, "unit increments"},
+    {30, Dialect::Iso6582, "Right kerf compensation ON", "kerf compensation right of the direction of travel",
+      FunctionValue::Optional, "unit increments"},
     {31, Dialect::Iso6582, "Left hand (portal side)", "selects the heads on the portal side"},
     {32, Dialect::Iso6582, "Right hand (cantilever) side", "selects the heads on the cantilever side"},
     {33, Dialect::Iso6582, "Master head set I (inside)", "selects master head set I"},
@@ -110,8 +112,10 @@ constexpr FunctionRow kFunctionRows[] = {
     {66, Dialect::Woyda, "Repeat start", "blocks before 66 run only on the first pass of an automatic repeat (Woyda)"},
     {67, Dialect::Woyda, "End of program loop", "defined only in Woyda macro files"},
     {68, Dialect::Woyda, "Start of program loop", "defined only in Woyda macro files"},
-    {135, Dialect::Woyda, "Burner count", "number of burners to use; must stand right before 136 (Woyda)", FunctionValue::Required, "burners"},
-    {136, Dialect::Woyda, "Burner spacing", "distance between the active burner carriages (Woyda)", FunctionValue::Required, "unit increments"},
+    {135, Dialect::Woyda, "Burner count", "number of burners to use; must stand right before 136 (Woyda)",
+      FunctionValue::Required, "burners"},
+    {136, Dialect::Woyda, "Burner spacing", "distance between the active burner carriages (Woyda)",
+      FunctionValue::Required, "unit increments"},
 };
 
 FunctionInfo info_of(const FunctionRow& r) {
