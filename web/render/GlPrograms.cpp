@@ -14,29 +14,45 @@ namespace {
 
 std::string g_error;
 
-// Logs a compile or link error and keeps it for program_error().
-void fail(const char* what, const char* name, const char* log) {
+// Whether `object` (a shader or a program) compiled or linked: `status` through `get`; otherwise its info log
+// (through `get_log`) is logged and kept for program_error().
+bool succeeded(GLuint object, GLenum status, void (*get)(GLuint, GLenum, GLint*),
+               void (*get_log)(GLuint, GLsizei, GLsizei*, GLchar*), const char* what, const char* name) {
+    GLint ok = 0;
+    get(object, status, &ok);
+    if (ok) return true;
+    char log[2048];
+    get_log(object, sizeof log, nullptr, log);
     g_error = std::string(what) + " " + name + ": " + log;
     std::fprintf(stderr, "essi_viewer: %s\n", g_error.c_str());
+    return false;
 }
 
 GLuint compile(GLenum type, const char* src, const char* name) {
     GLuint s = glCreateShader(type);
     glShaderSource(s, 1, &src, nullptr);
     glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[2048];
-        glGetShaderInfoLog(s, sizeof log, nullptr, log);
-        fail("shader", name, log);
-        glDeleteShader(s);
-        return 0;
-    }
-    return s;
+    if (succeeded(s, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, "shader", name)) return s;
+    glDeleteShader(s);
+    return 0;
 }
 
-void set_color(int location, const Rgba& c) { glUniform4f(location, c.r, c.g, c.b, c.a); }
+// Start-up only: the uniforms of one program (in use from here on), found by name, and those whose value never
+// changes set.
+class Setup {
+public:
+    explicit Setup(unsigned program) : program_(program) { glUseProgram(program); }
+    int operator()(const char* name) const { return glGetUniformLocation(program_, name); }
+    [[nodiscard]] SceneProgram scene() const { return {program_, TargetUniforms::of(program_)}; }
+    void set(const char* name, int v) const { glUniform1i((*this)(name), v); }
+    void set(const char* name, const Rgba& c) const { glUniform4f((*this)(name), c.r, c.g, c.b, c.a); }
+    void set(const char* name, const Rgba* colors, std::size_t n) const {
+        glUniform4fv((*this)(name), static_cast<GLsizei>(n), &colors->r);
+    }
+
+private:
+    unsigned program_;
+};
 
 }  // namespace
 
@@ -50,15 +66,7 @@ unsigned link_program(const char* vs_src, const char* fs_src, const char* name) 
     glLinkProgram(p);
     glDeleteShader(vs);
     glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[2048];
-        glGetProgramInfoLog(p, sizeof log, nullptr, log);
-        fail("program", name, log);
-        return 0;
-    }
-    return p;
+    return succeeded(p, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, "program", name) ? p : 0;
 }
 
 const char* program_error() { return g_error.c_str(); }
@@ -74,11 +82,9 @@ unsigned new_texture() {
     return t;
 }
 
-void TargetUniforms::find(unsigned p) {
-    center = glGetUniformLocation(p, "u_center");
-    zoom = glGetUniformLocation(p, "u_zoom");
-    origin_px = glGetUniformLocation(p, "u_origin_px");
-    viewport = glGetUniformLocation(p, "u_viewport");
+TargetUniforms TargetUniforms::of(unsigned p) {
+    return {glGetUniformLocation(p, "u_center"), glGetUniformLocation(p, "u_zoom"),
+            glGetUniformLocation(p, "u_origin_px"), glGetUniformLocation(p, "u_viewport")};
 }
 
 void TargetUniforms::set(float cx, float cy, float zoom_px, float ox, float oy, int w, int h) const {
@@ -89,59 +95,42 @@ void TargetUniforms::set(float cx, float cy, float zoom_px, float ox, float oy, 
 }
 
 bool ScenePrograms::init(int tex_width) {
-    path.id = link_program(shaders::path_vert_glsl, shaders::path_frag_glsl, "path");
-    grid.id = link_program(shaders::grid_vert_glsl, shaders::grid_frag_glsl, "grid");
-    marker.id = link_program(shaders::marker_vert_glsl, shaders::marker_frag_glsl, "marker");
-    if (!path.id || !grid.id || !marker.id) return false;
-    blit.id = link_program(shaders::blit_vert_glsl, shaders::blit_frag_glsl, "blit");
-    lod.id = link_program(shaders::blit_vert_glsl, shaders::lod_frag_glsl, "lod");
-    if (!blit.id || !lod.id) return false;
+    const unsigned path_id = link_program(shaders::path_vert_glsl, shaders::path_frag_glsl, "path");
+    const unsigned grid_id = link_program(shaders::grid_vert_glsl, shaders::grid_frag_glsl, "grid");
+    const unsigned marker_id = link_program(shaders::marker_vert_glsl, shaders::marker_frag_glsl, "marker");
+    if (!path_id || !grid_id || !marker_id) return false;
+    const unsigned blit_id = link_program(shaders::blit_vert_glsl, shaders::blit_frag_glsl, "blit");
+    const unsigned lod_id = link_program(shaders::blit_vert_glsl, shaders::lod_frag_glsl, "lod");
+    if (!blit_id || !lod_id) return false;
 
-    glUseProgram(path.id);
-    path.target.find(path.id);
-    path.half_width = glGetUniformLocation(path.id, "u_half_width");
-    path.layer_mask = glGetUniformLocation(path.id, "u_layer_mask");
-    path.override_color = glGetUniformLocation(path.id, "u_override");
-    path.extra_width = glGetUniformLocation(path.id, "u_extra_width");
-    path.first = glGetUniformLocation(path.id, "u_first");
-    glUniform4fv(glGetUniformLocation(path.id, "u_colors"), kMotionKinds, &kKindColors[0].r);
-    glUniform1i(glGetUniformLocation(path.id, "u_segs"), 0);   // texture unit 0: the end points
-    glUniform1i(glGetUniformLocation(path.id, "u_kinds"), 1);  // unit 1: the kinds
-    glUniform1i(glGetUniformLocation(path.id, "u_tex_width"), tex_width);
+    const Setup p(path_id);
+    path = {p.scene(), p("u_half_width"), p("u_layer_mask"), p("u_override"), p("u_extra_width"), p("u_first")};
+    p.set("u_colors", kKindColors.data(), kMotionKinds);
+    p.set("u_segs", 0);   // texture unit 0: the end points
+    p.set("u_kinds", 1);  // unit 1: the kinds
+    p.set("u_tex_width", tex_width);
 
-    glUseProgram(grid.id);
-    grid.target.find(grid.id);
-    grid.world_origin = glGetUniformLocation(grid.id, "u_world_origin");
-    grid.step = glGetUniformLocation(grid.id, "u_step");
-    set_color(glGetUniformLocation(grid.id, "u_minor"), kGridMinor);
-    set_color(glGetUniformLocation(grid.id, "u_major"), kGridMajor);
-    set_color(glGetUniformLocation(grid.id, "u_axis"), kGridAxis);
+    const Setup g(grid_id);
+    grid = {g.scene(), g("u_world_origin"), g("u_step")};
+    g.set("u_minor", kGridMinor);
+    g.set("u_major", kGridMajor);
+    g.set("u_axis", kGridAxis);
 
-    glUseProgram(marker.id);
-    marker.target.find(marker.id);
-    marker.radius_px = glGetUniformLocation(marker.id, "u_radius_px");
-    marker.type_mask = glGetUniformLocation(marker.id, "u_type_mask");
-    marker.use_single = glGetUniformLocation(marker.id, "u_use_single");
-    marker.single = glGetUniformLocation(marker.id, "u_single");
-    glUniform4fv(glGetUniformLocation(marker.id, "u_colors"), kMarkerTypes, &kMarkerColors[0].r);
-    glUniform1i(glGetUniformLocation(marker.id, "u_markers"), 0);
-    glUniform1i(glGetUniformLocation(marker.id, "u_tex_width"), tex_width);
+    const Setup m(marker_id);
+    marker = {m.scene(), m("u_radius_px"), m("u_type_mask"), m("u_use_single"), m("u_single")};
+    m.set("u_colors", kMarkerColors.data(), kMarkerTypes);
+    m.set("u_markers", 0);
+    m.set("u_tex_width", tex_width);
 
-    glUseProgram(lod.id);
-    lod.target.find(lod.id);
-    lod.rect = glGetUniformLocation(lod.id, "u_rect");
-    lod.level = glGetUniformLocation(lod.id, "u_level");
-    lod.cell = glGetUniformLocation(lod.id, "u_cell");
-    lod.min = glGetUniformLocation(lod.id, "u_min");
-    lod.mask = glGetUniformLocation(lod.id, "u_mask");
-    glUniform1i(glGetUniformLocation(lod.id, "u_lod"), 0);
-    glUniform4fv(glGetUniformLocation(lod.id, "u_colors"), kMotionKinds, &kKindColors[0].r);
-    set_color(glGetUniformLocation(lod.id, "u_pierce"), marker_color(MarkerType::Pierce));
+    const Setup l(lod_id);
+    lod = {l.scene(), l("u_rect"), l("u_level"), l("u_cell"), l("u_min"), l("u_mask")};
+    l.set("u_lod", 0);
+    l.set("u_colors", kKindColors.data(), kMotionKinds);
+    l.set("u_pierce", marker_color(MarkerType::Pierce));
 
-    glUseProgram(blit.id);
-    blit.rect = glGetUniformLocation(blit.id, "u_rect");
-    blit.viewport = glGetUniformLocation(blit.id, "u_viewport");
-    glUniform1i(glGetUniformLocation(blit.id, "u_image"), 0);
+    const Setup b(blit_id);
+    blit = {blit_id, b("u_rect"), b("u_viewport")};
+    b.set("u_image", 0);
     glUseProgram(0);
     return true;
 }

@@ -18,38 +18,31 @@ namespace essi::viewer {
 // u_origin_px of a u_viewport target, u_zoom pixels a mm.
 struct TargetUniforms {
     int center = -1, zoom = -1, origin_px = -1, viewport = -1;
-    void find(unsigned program);
+    [[nodiscard]] static TargetUniforms of(unsigned program);
     void set(float cx, float cy, float zoom_px, float ox, float oy, int w, int h) const;
 };
 
-// shaders/path.*: the segments as thick lines.
-struct PathProgram {
+// A program that draws into a view's target; the programs below add their own uniforms' locations.
+struct SceneProgram {
     unsigned id = 0;
     TargetUniforms target;
+};
+// shaders/path.*: the segments as thick lines.
+struct PathProgram : SceneProgram {
     int half_width = -1, layer_mask = -1, override_color = -1, extra_width = -1, first = -1;
 };
-
 // shaders/grid.*: the grid under the drawing.
-struct GridProgram {
-    unsigned id = 0;
-    TargetUniforms target;
+struct GridProgram : SceneProgram {
     int world_origin = -1, step = -1;
 };
-
 // shaders/marker.*: pierces, the start point and the playback tool.
-struct MarkerProgram {
-    unsigned id = 0;
-    TargetUniforms target;
+struct MarkerProgram : SceneProgram {
     int radius_px = -1, type_mask = -1, use_single = -1, single = -1;
 };
-
 // shaders/blit.vert + lod.frag: the level-of-detail raster as one rectangle.
-struct LodProgram {
-    unsigned id = 0;
-    TargetUniforms target;
+struct LodProgram : SceneProgram {
     int rect = -1, level = -1, cell = -1, min = -1, mask = -1;
 };
-
 // shaders/blit.*: the cached image drawn into the window.
 struct BlitProgram {
     unsigned id = 0;
