@@ -199,7 +199,6 @@ void App::select_line(std::uint32_t line, bool reveal) {
     selection_.line = line;
     selection_.motion = npos;
     selection_.scroll_source = true;
-    selection_.scroll_diagnostics = true;
     const auto [a, b] = d->motions_of_line(line);
     if (a >= b) return;
     selection_.motion = a;
@@ -226,7 +225,6 @@ void App::select_motion(std::size_t motion) {
     selection_.motion = motion;
     selection_.line = d->motions[motion].line;
     selection_.scroll_source = true;
-    selection_.scroll_diagnostics = true;
 }
 
 // ---------------------------------------------------------------------------------------------------------

@@ -11,7 +11,6 @@ struct Selection {
     std::uint32_t line = 0;        // 0: none
     std::size_t motion = npos;     // npos: none
     bool scroll_source = false;    // the source panel brings the line into view (once)
-    bool scroll_diagnostics = false;
 
     void clear() {
         motion = npos;
