@@ -1,4 +1,5 @@
-// The C functions behind window.essikit (index.html calls them with ccall/cwrap).
+// The C functions behind window.essikit: index.html calls them as Module._essi_* (or through ccall when they take
+// a string); essi_heap is for the tests and benchmarks. (essi_background_slice is in MainLoopEmscripten.cpp.)
 #include <emscripten.h>
 #include <malloc.h>
 
