@@ -1,18 +1,24 @@
-// The viewer's UI, written once for the browser and the desktop: loading with progress, the drawing area
-// (pan, zoom, fit, pick, measure, playback) and the panels (source, diagnostics, inspector, statistics,
-// layers). The platform layer (web/platform) owns the window and the loop and calls frame().
+// The viewer's UI, written once for the browser and the desktop. App owns the parts and wires them:
+//   LoadController  loading and the rebuilds of the drawing         SceneAssembly  what the renderer draws
+//   Input           picking, snapping, measuring, the shortcuts     Playback       the playback position
+//   panels/         the toolbar, side panels, overlays and windows  Automation.cpp window.essikit's state
+// The platform layer (web/platform) owns the window and the loop and calls frame() and render().
 #pragma once
 
 #include <cstddef>
-#include <memory>
 #include <optional>
 #include <string>
-#include <string_view>
 
 #include "app/Document.hpp"
+#include "app/Input.hpp"
+#include "app/Layers.hpp"
+#include "app/LoadController.hpp"
+#include "app/Playback.hpp"
+#include "app/SceneAssembly.hpp"
+#include "app/Selection.hpp"
 #include "app/View.hpp"
-#include "render/PathBuffers.hpp"
 #include "render/Renderer.hpp"
+#include "render/UiRenderer.hpp"
 
 struct GLFWwindow;
 
@@ -23,9 +29,19 @@ struct ViewRequest {
     std::uint32_t line = 0;         // selected line (0: none)
 };
 
+// The windows and messages over the drawing.
+struct UiState {
+    bool help = false;
+    std::string message;        // a short message in the toolbar, shown until message_until
+    double message_until = 0;
+    std::string share_url;      // the last share link (or why there is none)
+    bool share_popup = false;
+    std::string banner;         // a problem with the whole file ("not an ESSI tape ...")
+};
+
 class App {
 public:
-    static constexpr std::size_t npos = ~std::size_t(0);
+    static constexpr std::size_t npos = Selection::npos;
 
     explicit App(GLFWwindow* window);
     ~App();
@@ -38,18 +54,21 @@ public:
     // With `keep_unchanged` (the browser shows the last frame until the canvas is drawn again) a frame that would
     // draw the same pixels as the last one draws nothing: no GPU work while nothing moves.
     void render(bool keep_unchanged);
-    // The segments are being made again at a new zoom's tolerance (not the load's first build), over the overview.
-    [[nodiscard]] bool remaking() const { return building_ != nullptr && !first_build_ && renderer_.has_lod(); }
     // Loading or building work left to do (the browser loop also runs slices of it between frames).
-    [[nodiscard]] bool has_background_work() const { return loader_ != nullptr || lod_building_ || building_ != nullptr; }
-    // One slice (about kStepBudgetMs) of that work outside a frame; returns has_background_work().
+    [[nodiscard]] bool has_background_work() const { return load_.has_work(); }
+    // One slice (about LoadController::kStepBudgetMs) of that work outside a frame; returns has_background_work().
     bool background_step();
+
+    // --- Actions (the panels, the shortcuts, the platform and window.essikit) ---
     // Starts loading a tape (bytes as read from the file). `view`, when given, replaces the fit at the end.
     void load(std::string name, std::string bytes, std::optional<ViewRequest> view = std::nullopt);
+    void set_profile(const std::string& name);  // loads the tape again with another profile, keeping the view
     void set_view(double x, double y, double zoom);   // machine mm, px/mm; kept until a load completes
     void select_line(std::uint32_t line, bool reveal = true);
-    void set_layer(int kind, bool visible);
-    void share() { start_share(); }  // the Share button
+    void select_motion(std::size_t motion);
+    void set_layer(int layer, bool visible);  // window.essikit.setLayer: 0-3 MotionKind, 4 pierces, 5 start
+    void fit();
+    void share();  // the Share button and S
     void share_done(bool ok, std::string text);
     void notify(std::string text);  // a short message in the toolbar (copied, paste ignored, ...)
 
@@ -58,115 +77,48 @@ public:
     // One motion as JSON (for tests and embedding): {"index","line","kind","curve","start","end","segments"}.
     [[nodiscard]] std::string motion_json(std::size_t i) const;
 
-    [[nodiscard]] const Document* document() const { return doc_.get(); }
+    // --- The parts (read and changed by the panels and the input) ---
+    [[nodiscard]] const Document* document() const { return load_.document(); }
+    [[nodiscard]] const LoadController& loads() const { return load_; }
+    [[nodiscard]] const Renderer& renderer() const { return renderer_; }
+    [[nodiscard]] bool graphics_ok() const { return graphics_ok_; }
+    // The last frame drew the tape (its segments, or its level of detail while they are made).
+    [[nodiscard]] bool tape_drawn() const { return scene_.tape_drawn(); }
+    [[nodiscard]] const std::string& profile_name() const { return profile_name_; }
+    [[nodiscard]] View& view() { return view_; }
+    [[nodiscard]] Layers& layers() { return layers_; }
+    [[nodiscard]] Playback& playback() { return playback_; }
+    [[nodiscard]] Selection& selection() { return selection_; }
+    [[nodiscard]] Input& input() { return input_; }
+    [[nodiscard]] UiState& ui() { return ui_; }
+    // The document's origin (GPU and view coordinates are relative to it).
+    [[nodiscard]] Point origin() const { return document() ? document()->origin : Point{}; }
+    // "c=X,Y,ZOOM&l=LINE": the view and the selection in a share link.
+    [[nodiscard]] std::string view_query() const;
 
 private:
     void step_loading();
-    void finish_loading();
-    void maybe_rebuild();
-    [[nodiscard]] bool loading() const;  // reading, or making the first drawing of a tape
-    [[nodiscard]] float load_progress() const;
-    [[nodiscard]] const char* load_stage() const;
-    void draw_toolbar();
-    void draw_left_panel();
-    void draw_right_panel();
-    void draw_source();
-    void draw_inspector();
-    void draw_overlays();
-    void draw_help();
-    void draw_messages();
-    void handle_canvas_input();
-    void handle_shortcuts();
-    void fit();
-    void select_motion(std::size_t motion);
-    void start_share();
-    [[nodiscard]] std::size_t pick(double sx, double sy) const;
-    [[nodiscard]] Point snap(double sx, double sy, bool* snapped) const;
+    void document_loaded();
+    void apply_pending_view(const Document& d);
     [[nodiscard]] double desired_tolerance() const;
-    [[nodiscard]] std::size_t playback_limit_motions() const;
-    [[nodiscard]] std::pair<std::size_t, std::size_t> selection_segments() const;
-    [[nodiscard]] int layer_mask() const;
-    [[nodiscard]] std::string view_query() const;
-
-    // Everything the scene's pixels depend on (what frame() hands to render()).
-    struct SceneFrame {
-        View view;
-        int fb_w = 0, fb_h = 0;
-        DrawOptions options;
-        double grid_step = 0;
-        Point origin;
-        const GpuPath* path = nullptr;
-        std::uint64_t path_version = 0;
-        bool operator==(const SceneFrame&) const = default;
-    };
+    [[nodiscard]] float framebuffer_scale() const;
+    void draw_panels();
 
     GLFWwindow* window_ = nullptr;
     Renderer renderer_;
-    std::optional<SceneFrame> scene_;       // this frame's (none: nothing to draw)
-    std::optional<SceneFrame> last_scene_;  // the last frame drawn
-    std::uint64_t last_ui_hash_ = 0;
-    std::uint64_t skipped_frames_ = 0;      // frames that drew nothing (the same pixels as the last)
+    UiRenderer ui_renderer_;
     bool graphics_ok_ = false;
-
-    // Loading
-    std::unique_ptr<DocumentLoader> loader_;
-    std::optional<ViewRequest> pending_view_;
-    std::string loading_name_;
-    std::size_t loading_bytes_ = 0;
-    int frames_since_load_start_ = 0;
-    double load_started_ = 0;
-    double load_seconds_ = 0;
-
-    // The document and its drawing
-    std::unique_ptr<Document> doc_;
-    PathBuffers buffers_;           // the drawn set's motion -> segment map (its segments are on the GPU only)
-    GpuPath gpu_;                   // the drawn segments
-    std::unique_ptr<PathBuffers> building_;  // being built (first build or a rebuild at a new tolerance)
-    GpuPath gpu_building_;          // its segments, uploaded as they are made
-    LodRaster lod_;                 // zoomed-out drawing of big tapes, made before the first build
-    bool lod_building_ = false;     // lod_ is being made (the first build waits for it; a finer one waits for builds)
-    int lod_cells_ = 0;             // cells on the longer side of the level of detail being made or drawn
-    int lod_full_cells_ = 0;        // the tape's own (LodRaster::cells_for)
-    bool lod_drawn_ = false;        // the last frame drew it
-    bool tape_drawn_ = false;       // the last frame drew the tape (its segments or its level of detail)
-    double shown_seconds_ = 0;      // from the start of the load to the first frame that drew the tape
-    bool first_build_ = false;
+    LoadController load_{renderer_};
+    SceneAssembly scene_;
+    std::optional<ViewRequest> pending_view_;  // set_view / select_line before the document is there
     std::string profile_name_ = "iso6582";
-    std::string banner_;            // a problem with the whole file ("not an ESSI tape ...")
 
-    // View and interaction
     View view_;
-    bool dragging_ = false;
-    bool press_in_canvas_ = false;
-    float press_x_ = 0, press_y_ = 0;
-    std::uint32_t selected_line_ = 0;
-    std::size_t selected_motion_ = npos;
-    bool scroll_source_ = false;
-    bool scroll_diagnostics_ = false;
-
-    // Layers
-    bool show_kind_[4] = {true, true, true, true};
-    bool show_pierces_ = true;
-    bool show_start_ = true;
-    bool show_grid_ = true;
-
-    // Playback
-    bool playback_ = false;   // limit the drawing to the playback position
-    bool playing_ = false;
-    double play_pos_ = 0;     // in motions
-    float play_speed_ = 20;   // motions per second
-
-    // Measure
-    bool measure_mode_ = false;
-    int measure_count_ = 0;
-    Point measure_a_, measure_b_;  // machine mm
-
-    // Windows and messages
-    bool show_help_ = false;
-    std::string message_;
-    double message_until_ = 0;
-    std::string share_url_;
-    bool share_popup_ = false;
+    Layers layers_;
+    Playback playback_;
+    Selection selection_;
+    Input input_;
+    UiState ui_;
 };
 
 }  // namespace essi::viewer

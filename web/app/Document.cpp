@@ -248,6 +248,13 @@ std::size_t Document::core_tape_bytes() const {
            (blocks / Tape::kWordIndexStride + 1) * sizeof(std::uint32_t);
 }
 
+namespace {
+// describe_motion: a sweep this close (radians) to a whole turn is called a full circle, and an end radius this
+// close (mm) to the start radius is not mentioned (rounding in the interpreter's numbers, not a spiral).
+constexpr double kFullTurnTolerance = 1e-9;
+constexpr double kSameRadiusMm = 1e-9;
+}  // namespace
+
 std::string describe_motion(const MotionRecord& m) {
     std::string s = motion_kind_name(m.kind);
     switch (m.curve) {
@@ -256,11 +263,11 @@ std::string describe_motion(const MotionRecord& m) {
                      m.length_mm);
             break;
         case CurveKind::Arc: {
-            const bool full = std::fabs(std::fabs(m.sweep) - 2 * kPi) < 1e-9;
+            const bool full = std::fabs(std::fabs(m.sweep) - 2 * kPi) < kFullTurnTolerance;
             s += fmt(" %s %s r=%.3f mm, centre (%.3f, %.3f), from (%.3f, %.3f) to (%.3f, %.3f), sweep %.3f°, %.3f mm",
                      full ? "full circle" : "arc", m.ccw ? "CCW" : "CW", m.radius, m.centre.x, m.centre.y, m.start.x,
                      m.start.y, m.end.x, m.end.y, m.sweep * 180.0 / kPi, m.length_mm);
-            if (std::fabs(m.end_radius - m.radius) > 1e-9)
+            if (std::fabs(m.end_radius - m.radius) > kSameRadiusMm)
                 s += fmt(" (end radius %.3f mm)", m.end_radius);
             break;
         }
@@ -454,7 +461,7 @@ void shrink_if_loose(std::vector<T>& v) {
 bool DocumentLoader::step(double budget_ms) {
     Document& d = *doc_;
     const double until = now_ms() + budget_ms;
-    if (stage_ == 0) {  // the sparse line index
+    if (stage_ == Stage::IndexLines) {  // the sparse line index
         const std::string& s = d.bytes;
         if (index_pos_ == 0) {
             d.line_index.clear();
@@ -493,7 +500,7 @@ bool DocumentLoader::step(double budget_ms) {
         }
         index_pos_ = i;
         if (index_pos_ < n) return false;
-        stage_ = 1;
+        stage_ = Stage::ReadAndCheck;
         // Room for the motion stream at once (lines that start with a sign are motions, near enough): no late
         // reserve has to copy hundreds of MB in one slice. grow() covers the few motions this misses.
         d.motions.reserve(motion_lines_ + motion_lines_ / kMotionReserveSlack + 16);
@@ -504,11 +511,11 @@ bool DocumentLoader::step(double budget_ms) {
         checker_ = std::make_unique<TapeChecker>(d.bytes, d.profile, sink_.get());
         if (now_ms() > until) return false;
     }
-    if (stage_ == 1) {  // read and check, a chunk at a time
+    if (stage_ == Stage::ReadAndCheck) {  // read and check, a chunk at a time
         for (;;) {
             TapeReader before = *reader_;  // kept with the chunk: the inspector reads it again from there
             if (!reader_->read_chunk(chunk_, Document::kReadChunkBlocks)) {
-                stage_ = 2;
+                stage_ = Stage::Finish;
                 break;
             }
             if (chunk_.size() > 0) {
@@ -529,7 +536,7 @@ bool DocumentLoader::step(double budget_ms) {
             if (now_ms() > until) return false;
         }
     }
-    if (stage_ == 2) {
+    if (stage_ == Stage::Finish) {
         CheckResult r = checker_->finish();
         d.stats = r.stats;
         d.diagnostics = std::move(r.diagnostics);
@@ -547,7 +554,7 @@ bool DocumentLoader::step(double budget_ms) {
         d.chunks.shrink_to_fit();
         if (!d.bbox.empty)
             d.origin = {std::round((d.bbox.min_x + d.bbox.max_x) / 2), std::round((d.bbox.min_y + d.bbox.max_y) / 2)};
-        stage_ = 3;
+        stage_ = Stage::Done;
     }
     return true;
 }
@@ -555,16 +562,16 @@ bool DocumentLoader::step(double budget_ms) {
 float DocumentLoader::progress() const {
     const double n = static_cast<double>(std::max<std::size_t>(doc_ ? doc_->bytes.size() : 1, 1));
     switch (stage_) {
-        case 0: return static_cast<float>(0.1 * static_cast<double>(index_pos_) / n);
-        case 1: return static_cast<float>(0.1 + 0.6 * static_cast<double>(read_pos_) / n);
+        case Stage::IndexLines: return static_cast<float>(0.1 * static_cast<double>(index_pos_) / n);
+        case Stage::ReadAndCheck: return static_cast<float>(0.1 + 0.6 * static_cast<double>(read_pos_) / n);
         default: return 0.7f;
     }
 }
 
 const char* DocumentLoader::stage() const {
     switch (stage_) {
-        case 0: return "indexing lines";
-        case 1: return "reading and checking";
+        case Stage::IndexLines: return "indexing lines";
+        case Stage::ReadAndCheck: return "reading and checking";
         default: return "building the drawing";
     }
 }

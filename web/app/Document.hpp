@@ -175,7 +175,8 @@ private:
     std::unique_ptr<TapeReader> reader_;
     std::unique_ptr<TapeChecker> checker_;
     Tape chunk_;
-    int stage_ = 0;
+    enum class Stage { IndexLines, ReadAndCheck, Finish, Done };
+    Stage stage_ = Stage::IndexLines;
     std::size_t index_pos_ = 0;
     std::size_t motion_lines_ = 0;  // lines starting with + or -: the motion stream's size, near enough
     static constexpr std::size_t kMotionReserveSlack = 64;  // 1/64 more for addressed motions ("1+100+0")

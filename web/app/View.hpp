@@ -30,7 +30,7 @@ struct View {
             zoom = 1;
             return;
         }
-        const double w = std::max(b.max_x - b.min_x, 1e-3), h = std::max(b.max_y - b.min_y, 1e-3);
+        const double w = std::max(b.max_x - b.min_x, kMinFitSizeMm), h = std::max(b.max_y - b.min_y, kMinFitSizeMm);
         const double aw = std::max(area.w - 2 * margin_px, 10.f), ah = std::max(area.h - 2 * margin_px, 10.f);
         zoom = std::clamp(std::min(aw / w, ah / h), kMinZoom, kMaxZoom);
         cx = (b.min_x + b.max_x) / 2 - origin.x;
@@ -50,6 +50,20 @@ struct View {
 
     static constexpr double kMinZoom = 1e-4;  // px/mm
     static constexpr double kMaxZoom = 1e4;
+    // fit() treats a box thinner than this (a line, a point) as this wide: its zoom stays finite.
+    static constexpr double kMinFitSizeMm = 1e-3;
 };
+
+// Grid step (mm) so that minor lines are at least `px` apart: 1, 2, 5 x 10^k.
+inline double grid_step(double zoom, double px = 12) {
+    const double raw = px / zoom;
+    const double e = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double m : {1.0, 2.0, 5.0, 10.0})
+        if (m * e >= raw) return m * e;
+    return 10 * e;
+}
+
+// The grid step of a scene without the grid: wider than any drawing, so no line shows.
+inline constexpr double kNoGrid = 1e30;
 
 }  // namespace essi::viewer

@@ -1,8 +1,8 @@
-// The C functions behind window.essikit (index.html calls them with ccall/cwrap).
+// The C functions behind window.essikit: index.html calls them as Module._essi_* (or through ccall when they take
+// a string); essi_heap is for the tests and benchmarks. (essi_background_slice is in MainLoopEmscripten.cpp.)
 #include <emscripten.h>
 #include <malloc.h>
 
-#include <cstdint>
 #include <string>
 
 #include "app/App.hpp"
@@ -11,15 +11,8 @@ using essi::viewer::App;
 
 extern "C" {
 
-// Loads `len` bytes as a tape called `name` (the page copies the file into the heap and frees it after).
-EMSCRIPTEN_KEEPALIVE void essi_load(const char* name, const std::uint8_t* data, int len) {
-    if (App* app = App::instance())
-        app->load(name, std::string(reinterpret_cast<const char*>(data), static_cast<std::size_t>(len > 0 ? len : 0)));
-}
-
-// The state as JSON; valid until the next call.
-// Big files without a second copy: the page asks for a buffer of `len` bytes, writes the file into it and
-// commits it (the buffer becomes the document's bytes).
+// Loading without a second copy: the page asks for a buffer of `len` bytes (essi_load_buffer), writes the file
+// into it and commits it under its name (essi_load_commit): the buffer becomes the document's bytes.
 namespace {
 std::string g_pending;
 }
@@ -39,6 +32,7 @@ EMSCRIPTEN_KEEPALIVE void essi_load_commit(const char* name) {
     g_pending = std::string();
 }
 
+// The state as JSON (App::state_json); valid until the next call.
 EMSCRIPTEN_KEEPALIVE const char* essi_state() {
     static std::string s;
     App* app = App::instance();
@@ -58,6 +52,7 @@ EMSCRIPTEN_KEEPALIVE const char* essi_heap() {
     return s.c_str();
 }
 
+// One motion as JSON (App::motion_json), "null" past the end; valid until the next call.
 EMSCRIPTEN_KEEPALIVE const char* essi_motion(int index) {
     static std::string s;
     App* app = App::instance();
@@ -74,9 +69,9 @@ EMSCRIPTEN_KEEPALIVE void essi_select_line(int line) {
     if (App* app = App::instance()) app->select_line(static_cast<std::uint32_t>(line > 0 ? line : 0));
 }
 
-// kind: 0 rapid, 1 travel, 2 cut, 3 mark, 4 pierces, 5 start
-EMSCRIPTEN_KEEPALIVE void essi_set_layer(int kind, int visible) {
-    if (App* app = App::instance()) app->set_layer(kind, visible != 0);
+// layer: 0 rapid, 1 travel, 2 cut, 3 mark (essi::MotionKind), 4 pierces, 5 start
+EMSCRIPTEN_KEEPALIVE void essi_set_layer(int layer, int visible) {
+    if (App* app = App::instance()) app->set_layer(layer, visible != 0);
 }
 
 // Makes a share link as the Share button does; the page's essikitShare finishes it.

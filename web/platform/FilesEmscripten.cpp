@@ -1,6 +1,6 @@
 // Browser files: the page (index.html) opens its <input type=file> in the click on the Open button (whose
 // place this file tells it) or on Ctrl+O, inside the user's gesture as browsers require; drops and pastes
-// are handled by the page too, which passes the bytes to essi_load (ApiEmscripten.cpp).
+// are handled by the page too, which writes the bytes into essi_load_buffer and commits them (ApiEmscripten.cpp).
 #include <emscripten.h>
 
 #include "app/App.hpp"

@@ -56,35 +56,30 @@ bool write_screenshot(const std::string& path, int w, int h) {
     return static_cast<bool>(out);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    using namespace essi::viewer;
-    Options opt;
+// The command line; false for a usage error.
+bool parse(int argc, char** argv, Options& opt) {
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool has_value = i + 1 < argc;
         if (a == "--frames" && has_value) {
             char* end = nullptr;
             opt.frames = std::strtol(argv[++i], &end, 10);
-            if (*end != '\0' || opt.frames < 1) return usage();
+            if (*end != '\0' || opt.frames < 1) return false;
         } else if (a == "--screenshot" && has_value) {
             opt.screenshot = argv[++i];
         } else if (a == "--state" && has_value) {
             opt.state = argv[++i];
         } else if (a == "--help" || a == "-h" || (a.size() > 1 && a[0] == '-') || !opt.tape.empty()) {
-            return usage();
+            return false;
         } else {
             opt.tape = a;
         }
     }
-    if ((!opt.screenshot.empty() || !opt.state.empty()) && opt.frames < 0) return usage();
-    int status = 0;
-    glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "essi_viewer: GLFW error %d: %s\n", code, text); });
-    if (!glfwInit()) {
-        std::fprintf(stderr, "essi_viewer: cannot initialise GLFW (no display?)\n");
-        return 2;
-    }
+    return (opt.screenshot.empty() && opt.state.empty()) || opt.frames >= 0;
+}
+
+// A window with an OpenGL ES 3.0 context, current; null (and a message) when there is none.
+GLFWwindow* open_window() {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
@@ -96,58 +91,84 @@ int main(int argc, char** argv) {
     }
     if (window == nullptr) {
         std::fprintf(stderr, "essi_viewer: cannot open a window with an OpenGL ES 3.0 context\n");
-        glfwTerminate();
-        return 2;
+        return nullptr;
     }
     glfwMakeContextCurrent(window);
     glfwSwapInterval(1);
+    return window;
+}
 
+// The last frame's screenshot and state, as --screenshot and --state ask; 0, or 1 when one cannot be written.
+int write_outputs(const Options& opt, GLFWwindow* window, const essi::viewer::App& app) {
+    int status = 0;
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window, &w, &h);
+    if (!opt.screenshot.empty() && !write_screenshot(opt.screenshot, w, h)) {
+        std::fprintf(stderr, "essi_viewer: cannot write %s\n", opt.screenshot.c_str());
+        status = 1;
+    }
+    if (!opt.state.empty()) {
+        std::ofstream out(opt.state, std::ios::binary);
+        out << app.state_json() << "\n";
+        if (!out) {
+            std::fprintf(stderr, "essi_viewer: cannot write %s\n", opt.state.c_str());
+            status = 1;
+        }
+    }
+    return status;
+}
+
+// Loads the tape and runs the frames; the exit status.
+int run(const Options& opt, GLFWwindow* window) {
+    using namespace essi::viewer;
+    App app(window);
+    if (!app.init_graphics()) std::fprintf(stderr, "essi_viewer: the drawing programs did not compile\n");
+    platform::install_drop_handler(window);
+    if (!opt.tape.empty()) {
+        std::string bytes;
+        if (!platform::read_file(opt.tape, bytes)) {
+            std::fprintf(stderr, "essi_viewer: cannot read %s\n", opt.tape.c_str());
+            return 2;
+        }
+        app.load(opt.tape, std::move(bytes));
+    }
+    long frames_left = opt.frames;  // counted once the loading and the drawing's build are done
+    while (!glfwWindowShouldClose(window)) {
+        glfwPollEvents();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        app.frame();
+        ImGui::Render();
+        app.render(false);  // (after a swap the back buffer must be drawn again)
+        if (frames_left > 0 && !app.has_background_work() && --frames_left == 0) {
+            const int status = write_outputs(opt, window, app);
+            glfwSwapBuffers(window);
+            return status;
+        }
+        glfwSwapBuffers(window);
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Options opt;
+    if (!parse(argc, argv, opt)) return usage();
+    glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "essi_viewer: GLFW error %d: %s\n", code, text); });
+    if (!glfwInit()) {
+        std::fprintf(stderr, "essi_viewer: cannot initialise GLFW (no display?)\n");
+        return 2;
+    }
+    GLFWwindow* window = open_window();
+    if (window == nullptr) {
+        glfwTerminate();
+        return 2;
+    }
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui_ImplGlfw_InitForOpenGL(window, true);
-
-    {
-        App app(window);
-        if (!app.init_graphics()) std::fprintf(stderr, "essi_viewer: the drawing programs did not compile\n");
-        platform::install_drop_handler(window);
-        if (!opt.tape.empty()) {
-            std::string bytes;
-            if (platform::read_file(opt.tape, bytes)) {
-                app.load(opt.tape, std::move(bytes));
-            } else {
-                std::fprintf(stderr, "essi_viewer: cannot read %s\n", opt.tape.c_str());
-                status = 2;
-            }
-        }
-        long frames_left = opt.frames;  // counted once the loading and the drawing's build are done
-        while (status == 0 && !glfwWindowShouldClose(window)) {
-            glfwPollEvents();
-            ImGui_ImplGlfw_NewFrame();
-            ImGui::NewFrame();
-            app.frame();
-            ImGui::Render();
-            app.render(false);  // (after a swap the back buffer must be drawn again)
-            if (frames_left > 0 && !app.has_background_work() && --frames_left == 0) {
-                int w = 0, h = 0;
-                glfwGetFramebufferSize(window, &w, &h);
-                if (!opt.screenshot.empty() && !write_screenshot(opt.screenshot, w, h)) {
-                    std::fprintf(stderr, "essi_viewer: cannot write %s\n", opt.screenshot.c_str());
-                    status = 1;
-                }
-                if (!opt.state.empty()) {
-                    std::ofstream out(opt.state, std::ios::binary);
-                    out << app.state_json() << "\n";
-                    if (!out) {
-                        std::fprintf(stderr, "essi_viewer: cannot write %s\n", opt.state.c_str());
-                        status = 1;
-                    }
-                }
-                glfwSwapBuffers(window);
-                break;
-            }
-            glfwSwapBuffers(window);
-        }
-    }
+    const int status = run(opt, window);
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
     glfwDestroyWindow(window);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "essi/interp.hpp"
+#include "render/Palette.hpp"
 
 namespace essi::viewer {
 
@@ -47,7 +48,7 @@ bool LodRaster::step(std::size_t max_motions) {
     // are flattened from their record.
     for (; next_ < stop; ++next_) {
         const Motion& m = doc.motions[next_];
-        const auto bit = static_cast<std::uint8_t>(1u << (static_cast<unsigned>(m.kind) & 3));
+        const auto bit = static_cast<std::uint8_t>(kind_bit(m.kind));
         const bool kept = (m.flags & Motion::kFlagKept) != 0;
         bool start_in_units = !(m.flags & Motion::kFlagJump) && last_in_units_;
         UnitPoint su = last_end_;

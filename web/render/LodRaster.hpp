@@ -14,6 +14,7 @@
 
 #include "app/Document.hpp"
 #include "essi/geom.hpp"
+#include "render/Palette.hpp"
 
 namespace essi::viewer {
 
@@ -26,7 +27,7 @@ public:
     // which keeps the page's memory peak within its budget (docs/performance.md) and still covers a fitted view
     // of this window size at a cell a pixel; from ~520 000 motions (square tapes) it is the full kMaxCells.
     static constexpr double kCellsPerMotion = 8;
-    static constexpr std::uint8_t kPierceBit = 16;  // bits 0-3: MotionKind
+    static constexpr std::uint8_t kPierceBit = 1 << kMotionKinds;  // bits 0-3: MotionKind (kind_bit)
     // The chord tolerance of the arcs rasterised, in cells.
     static constexpr double kChordCells = 0.25;
     // Each level is held in strips of whole rows of about this many bytes, not one block: at the end of a load the

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "essi/geom.hpp"
+#include "render/Palette.hpp"
 
 namespace essi::viewer {
 
@@ -20,11 +21,13 @@ void PathBuffers::begin(const Document& doc, double tol) {
     markers.reserve(doc.pierces.size() + 1);
     for (const std::uint32_t i : doc.pierces) {
         const Point p = doc.start_of(i);
-        markers.push_back({static_cast<float>(p.x - doc.origin.x), static_cast<float>(p.y - doc.origin.y), 0.f});
+        markers.push_back({static_cast<float>(p.x - doc.origin.x), static_cast<float>(p.y - doc.origin.y),
+                           static_cast<float>(MarkerType::Pierce)});
     }
     if (!doc.motions.empty()) {
         const Point s = doc.start_of(0);
-        markers.push_back({static_cast<float>(s.x - doc.origin.x), static_cast<float>(s.y - doc.origin.y), 1.f});
+        markers.push_back({static_cast<float>(s.x - doc.origin.x), static_cast<float>(s.y - doc.origin.y),
+                           static_cast<float>(MarkerType::Start)});
     }
 }
 
@@ -82,11 +85,6 @@ void PathBuffers::drop_staged(std::size_t n) {
 void PathBuffers::release_staging() {
     staged_ends = std::vector<float>();  // (`= {}` would keep the capacity)
     staged_kinds = std::vector<std::uint8_t>();
-}
-
-std::size_t PathBuffers::motion_of_segment(std::size_t s) const {
-    auto it = std::upper_bound(first_segment.begin(), first_segment.end(), static_cast<std::uint32_t>(s));
-    return static_cast<std::size_t>(it - first_segment.begin()) - 1;
 }
 
 std::size_t PathBuffers::memory_bytes() const {

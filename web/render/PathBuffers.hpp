@@ -14,10 +14,8 @@ namespace essi::viewer {
 
 struct MarkerInstance {
     float x, y;
-    float type;  // 0 pierce, 1 start, 2 tool
+    float type;  // MarkerType (render/Palette.hpp), as the marker texture holds it
 };
-
-enum class MarkerType { Pierce = 0, Start = 1, Tool = 2 };
 
 class PathBuffers {
 public:
@@ -42,8 +40,6 @@ public:
     void drop_staged(std::size_t n);           // the first n staged segments are on the GPU
     void release_staging();                    // frees the staging area (the build is complete)
 
-    // Motion index of segment s.
-    [[nodiscard]] std::size_t motion_of_segment(std::size_t s) const;
     [[nodiscard]] std::size_t memory_bytes() const;
 
 private:

@@ -10,33 +10,26 @@
 // leaves its margin (a CPU renderer such as SwiftShader needs seconds for a million segments).
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "app/View.hpp"
 #include "render/LodRaster.hpp"
+#include "render/GlPrograms.hpp"
 #include "render/PathBuffers.hpp"
-
-struct ImDrawData;
+#include "render/Palette.hpp"
 
 namespace essi::viewer {
 
-struct Rgba {
-    float r, g, b, a;
-    bool operator==(const Rgba&) const = default;
-};
-
 struct DrawOptions {
-    int layer_mask = 0xF;          // bit per MotionKind
-    int marker_mask = 0x7;         // bit per MarkerType
+    int layer_mask = kAllKindsMask;     // a bit per MotionKind (kind_bit)
+    int marker_mask = kAllMarkersMask;  // a bit per MarkerType (marker_bit)
     std::size_t segment_limit = ~std::size_t(0);  // playback: draw segments [0, limit)
     std::size_t selection_first = 0, selection_count = 0;  // segments drawn highlighted
     bool has_tool = false;         // playback: the tool marker
     Point tool;                    // relative to the document origin
     float framebuffer_scale = 1;
-    bool use_cache = true;         // false: draw everything into the window every frame
     bool lod = false;              // draw the level-of-detail raster instead of the segments (and pierces)
     Rgba panel_color = {0, 0, 0, 1};  // the window around the drawing area (the panels draw no background)
     bool operator==(const DrawOptions&) const = default;
@@ -51,16 +44,6 @@ struct RenderStats {
     std::uint64_t filling_frames = 0;  // frames that went on drawing an image too big for one frame
     std::size_t pending_segments = 0;  // segments of the current image still to draw (0: it is complete)
 };
-
-// Colours by MotionKind: rapid, travel, cut, mark (also used by the UI legend and the e2e test).
-inline constexpr std::array<Rgba, 4> kKindColors = {{
-    {0.42f, 0.55f, 0.75f, 0.75f},  // rapid: blue-grey
-    {0.55f, 0.62f, 0.70f, 0.75f},  // travel: grey
-    {1.00f, 0.55f, 0.10f, 1.00f},  // cut: orange #ff8c1a
-    {0.85f, 0.35f, 0.95f, 1.00f},  // mark: violet
-}};
-inline constexpr Rgba kBackground = {0.11f, 0.12f, 0.14f, 1.f};
-inline constexpr Rgba kSelectionColor = {0.25f, 0.95f, 1.0f, 1.f};
 
 // One page of segments: RGBA32F x0 y0 x1 y1 and R8UI kind, kTexWidth segments a row.
 struct GpuPage {
@@ -92,13 +75,11 @@ public:
     static constexpr std::size_t kSegmentsPerFrame = 150000;
     static constexpr float kCullMarginPx = 8;  // a group's box meets the view when it is this close (line widths)
 
-    bool init();  // compiles the programs; false (and a message) when the GPU refuses them
-    [[nodiscard]] const char* error() const { return error_; }
+    bool init();  // compiles the programs and finds their uniforms; false (program_error()) when the GPU refuses them
     // Moves the whole rows staged in `b` to `path` (and the last, partial row once `b` is complete).
     void append(GpuPath& path, PathBuffers& b);
     void release(GpuPath& path);
     void upload_markers(const std::vector<MarkerInstance>& markers);
-    void clear_markers() { marker_count_ = 0; }
     void upload_lod(const LodRaster& lod);  // a finished raster, every level
     void clear_lod();
     [[nodiscard]] bool has_lod() const { return lod_levels_ > 0; }
@@ -111,15 +92,9 @@ public:
     void draw(const View& view, int fb_w, int fb_h, const DrawOptions& options, double grid_step_mm, Point world_origin,
               const GpuPath* path);
 
-    // The panels: Dear ImGui's draw data over the scene, with the font atlas made in init(). Sets the GL state it
-    // needs and reads none back: every glGet of a WebGL context waits for the GPU process to finish the frame's
-    // drawing (ImGui's own backend saves and restores the state that way: 30-70 ms a frame on SwiftShader).
-    void draw_ui(const ImDrawData& data, int fb_w, int fb_h);
-
     [[nodiscard]] const RenderStats& stats() const { return stats_; }
     // The image is still being filled: the next frames must be drawn even when nothing changed.
     [[nodiscard]] bool filling() const { return stats_.pending_segments > 0; }
-    void invalidate_cache() { cache_valid_ = false; }
 
 private:
     // Where a pass draws: the view mapped into a target of w x h pixels, u_center drawn at (ox, oy).
@@ -127,6 +102,22 @@ private:
         float cx, cy, zoom, ox, oy;
         int w, h;
         float scale;
+    };
+    // One draw() call: its arguments and what follows from them.
+    struct Frame {
+        const View& view;
+        int fb_w, fb_h;
+        const DrawOptions& o;
+        double grid_step;
+        Point world_origin;
+        const GpuPath* path;
+        float scale;               // framebuffer pixels a window pixel
+        Target window;             // the view in the window's framebuffer
+        std::size_t limit;         // segments [0, limit) are drawn (playback)
+        int layer_mask;
+        bool lod;                  // the raster instead of the segments
+        float ax, ay, aw, ah;      // the drawing area in framebuffer pixels (top-left origin)
+        int mx, my;                // the image's margin on each side
     };
     // The state the cached image was drawn for (a pan is not part of it).
     struct SceneKey {
@@ -140,8 +131,8 @@ private:
         bool lod = false;
         bool operator==(const SceneKey&) const = default;
     };
-    bool init_ui();
     void add_page(GpuPath& path, std::size_t first, std::size_t rows);
+    void add_group_boxes(GpuPath& path, const float* ends, std::size_t first, std::size_t n);
     void draw_run(const GpuPath& path, std::size_t first, std::size_t end);
     // Segments [first, last) of `path`, those of the groups whose box meets `cull` (all when null), until about
     // `budget` are drawn; returns where it stopped (`last` when it drew them all).
@@ -154,8 +145,16 @@ private:
     void draw_tool(const Target& t, const DrawOptions& o);
     void draw_lod(const Target& t, int mask);
     bool ensure_cache(int w, int h);
+    // The scene into target t: the grid (when `full`), the paths [from, f.limit) that show in t until `budget`
+    // segments are drawn, then the markers once every path is in. Returns where the paths stopped.
+    std::size_t draw_scene(const Frame& f, const Target& t, std::size_t from, bool full, std::size_t budget);
+    void scissor_area(const Frame& f) const;
+    void clear_window(const Frame& f) const;  // the panels' colour
+    void draw_uncached(const Frame& f);       // everything into the window (no image: the GPU refused it)
+    void update_image(const Frame& f);        // draws the image again, or adds to it, when needed
+    void blit_image(const Frame& f);          // the image into the window, moved by the pan
 
-    unsigned blit_program_ = 0, lod_program_ = 0;
+    ScenePrograms programs_;
     unsigned lod_tex_ = 0;
     int lod_levels_ = 0;
     double lod_cell_ = 1;
@@ -173,12 +172,9 @@ private:
     std::uint64_t version_counter_ = 0, markers_version_ = 0;
     RenderStats stats_;
 
-    unsigned path_program_ = 0, grid_program_ = 0, marker_program_ = 0;
     unsigned empty_vao_ = 0;     // the programs pull their data by gl_VertexID: no attributes
-    unsigned ui_program_ = 0, ui_vao_ = 0, ui_vertices_ = 0, ui_indices_ = 0, font_tex_ = 0;
     unsigned marker_tex_ = 0;    // RGBA32F x y type, kTexWidth a row
     std::size_t marker_count_ = 0;
-    const char* error_ = "";
 };
 
 }  // namespace essi::viewer

@@ -1,0 +1,202 @@
+// window.essikit's side of the viewer (web/platform/ApiEmscripten.cpp calls these): the state as JSON, a motion as
+// JSON, and the layer switches by number. The JSON's content is what tests/e2e and docs/viewer.md rely on.
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "app/App.hpp"
+#include "essi/diagnostics.hpp"
+#include "essi/geom.hpp"
+
+namespace essi::viewer {
+
+namespace {
+
+// setLayer's numbers after the four MotionKinds.
+constexpr int kLayerPierces = 4;
+constexpr int kLayerStart = 5;
+
+using nlohmann::json;
+
+json box_json(const Box& b) {
+    if (b.empty) return nullptr;
+    return {{"min_x", b.min_x}, {"min_y", b.min_y}, {"max_x", b.max_x}, {"max_y", b.max_y}};
+}
+
+json stats_json(const Stats& s) {
+    return {
+        {"cut_length_mm", s.cut_length_mm},
+        {"mark_length_mm", s.mark_length_mm},
+        {"travel_length_mm", s.travel_length_mm},
+        {"rapid_length_mm", s.rapid_length_mm},
+        {"pierces", s.pierces},
+        {"blocks", s.blocks},
+        {"motions", s.motions},
+        {"estimated_time_s", s.estimated_time_s},
+        {"cut_bbox_mm", box_json(s.cut_bbox)},
+        {"end_position_mm", {{"x", s.end_position.x}, {"y", s.end_position.y}}},
+    };
+}
+
+json diagnostics_json(const std::vector<Diagnostic>& diagnostics) {
+    json diags = json::array();
+    for (const Diagnostic& d : diagnostics)
+        diags.push_back({{"severity", std::string(severity_name(d.severity))}, {"code", code_name(d.code)},
+                         {"line", d.line}, {"column", d.column}, {"message", d.message}});
+    return diags;
+}
+
+// The document's part of the state: statistics, diagnostics, sizes, memory, level of detail.
+void add_document(json& j, const Document& doc, const LoadController& load, const Renderer& renderer,
+                  bool lod_drawn) {
+    j["stats"] = stats_json(doc.stats);
+    j["diagnostics"] = diagnostics_json(doc.diagnostics);
+    j["ok"] = !doc.has_errors();
+    j["bytes"] = doc.bytes.size();
+    j["lines"] = doc.line_count();
+    j["motions"] = doc.motions.size();
+    j["segments"] = load.buffers().segment_count;
+    j["pierce_markers"] = doc.pierces.size();
+    j["bbox_mm"] = box_json(doc.bbox);
+    j["memory_bytes"] = doc.memory_bytes() + load.segment_index_bytes();
+    json parts = json::object();
+    for (const auto& [part, n] : doc.memory_parts()) parts[part] = n;
+    parts["segment_index"] = load.segment_index_bytes();
+    j["memory_parts"] = std::move(parts);
+    j["gpu_bytes"] = load.gpu_bytes() + renderer.lod_gpu_bytes();
+    j["lod"] = {{"available", renderer.has_lod()}, {"drawn", lod_drawn}, {"cell_mm", renderer.lod_cell_mm()}};
+    j["tape_memory_bytes"] = doc.core_tape_bytes();
+    j["blocks_read"] = doc.blocks;
+    j["kept_records"] = doc.kept.size();
+    j["load_seconds"] = load.load_seconds();
+    j["chord_tolerance_mm"] = load.buffers().tolerance();
+}
+
+// What the Playback panel shows: the motion at the scrubber, its line, the tools and where the tool is.
+json playback_json(const Playback& playback, const Document* doc) {
+    json p = {{"active", playback.active}, {"playing", playback.playing}, {"position", playback.position}};
+    if (!playback.active || !doc || doc->motions.empty()) return p;
+    const std::size_t n = doc->motions.size();
+    const Playback::At at = playback.at(n);
+    const Motion& m = doc->motions[at.motion];
+    const Point tool = point_at(doc->record(at.motion), at.fraction);
+    p["motion"] = at.motion;
+    p["line"] = m.line;
+    p["kind"] = motion_kind_name(m.kind);
+    p["tools"] = tools_text(m.tools);
+    p["feed_mm_min"] = doc->feed_of(at.motion);
+    p["tool_mm"] = {tool.x, tool.y};
+    p["drawn_motions"] = playback.limit(n);
+    return p;
+}
+
+json measure_json(const Measure& m) {
+    json j = {{"active", m.active}, {"points", m.points}};
+    if (m.points >= 1) j["a_mm"] = {m.a.x, m.a.y};
+    if (m.points == 2) {
+        j["b_mm"] = {m.b.x, m.b.y};
+        j["distance_mm"] = std::hypot(m.b.x - m.a.x, m.b.y - m.a.y);
+        j["dx_mm"] = m.b.x - m.a.x;
+        j["dy_mm"] = m.b.y - m.a.y;
+    }
+    return j;
+}
+
+// The block inspector's sentences for the selected line (blocks, then motions).
+json inspector_json(const Document* doc, std::uint32_t line) {
+    json insp = json::array();
+    if (!doc || line == 0) return insp;
+    const LineBlocks blocks = doc->blocks_of_line(line);
+    for (std::size_t b = blocks.first; b < blocks.last; ++b) insp.push_back(describe_block(*blocks.chunk, b, doc->profile));
+    const auto [m0, m1] = doc->motions_of_line(line);
+    for (std::size_t m = m0; m < m1 && m < m0 + 8; ++m) insp.push_back(describe_motion(doc->record(m)));
+    return insp;
+}
+
+json render_json(const RenderStats& rs, std::uint64_t unchanged_frames) {
+    return {{"frames", rs.frames}, {"full_redraws", rs.full_redraws}, {"partial_redraws", rs.partial_redraws},
+            {"cached_frames", rs.cached_frames}, {"filling_frames", rs.filling_frames},
+            {"pending_segments", rs.pending_segments}, {"unchanged_frames", unchanged_frames}};
+}
+
+json selection_json(const Selection& s) {
+    if (s.line == 0) return nullptr;
+    return {{"line", s.line}, {"motion", s.motion == Selection::npos ? json(nullptr) : json(s.motion)}};
+}
+
+json layers_json(const Layers& l) {
+    return {{"rapid", l.kind(MotionKind::Rapid)}, {"travel", l.kind(MotionKind::Travel)},
+            {"cut", l.kind(MotionKind::Cut)},     {"mark", l.kind(MotionKind::Mark)},
+            {"pierces", l.pierces},               {"start", l.start},
+            {"grid", l.grid}};
+}
+
+}  // namespace
+
+std::string App::state_json() const {
+    json j;
+    const Document* doc = document();
+    j["status"] = load_.loading() ? "loading" : doc ? "ready" : "empty";
+    if (load_.loading()) {
+        j["progress"] = load_.progress();
+        j["stage"] = load_.stage();
+    }
+    // The last frame drew the tape (its segments, or its level of detail while the segments are made), and how
+    // long after the start of the load the first such frame came.
+    j["drawn"] = scene_.tape_drawn();
+    // Work left after "ready" too: the finer level of detail of a big tape, a rebuild at another tolerance.
+    j["busy"] = has_background_work();
+    j["shown_seconds"] = load_.shown_seconds();
+    j["name"] = doc ? doc->name : (load_.reading() ? load_.loading_name() : "");
+    j["profile"] = profile_name_;
+    if (doc) {
+        add_document(j, *doc, load_, renderer_, scene_.lod_drawn());
+        j["banner"] = ui_.banner;
+    }
+    j["selection"] = selection_json(selection_);
+    const Point o = origin();
+    // Screen position of machine point (x, y): px = origin_px.x + (x - x_mm) * zoom, py = origin_px.y - (y - y_mm) * zoom
+    j["view"] = {{"x_mm", view_.cx + o.x},
+                 {"y_mm", view_.cy + o.y},
+                 {"zoom", view_.zoom},
+                 {"origin_px", {view_.ox(), view_.oy()}},
+                 {"area", {view_.area.x, view_.area.y, view_.area.w, view_.area.h}},
+                 {"query", view_query()}};
+    j["layers"] = layers_json(layers_);
+    j["playback"] = playback_json(playback_, doc);
+    j["measure"] = measure_json(input_.measure);
+    j["inspector"] = inspector_json(doc, selection_.line);
+    j["render"] = render_json(renderer_.stats(), scene_.skipped_frames());
+    j["help"] = ui_.help;
+    j["share_url"] = ui_.share_url;
+    j["message"] = ui_.message;
+    j["kind_colors"] = json::array();
+    for (const Rgba& c : kKindColors)
+        j["kind_colors"].push_back({std::lround(c.r * 255), std::lround(c.g * 255), std::lround(c.b * 255)});
+    return j.dump();
+}
+
+std::string App::motion_json(std::size_t i) const {
+    const Document* doc = document();
+    if (!doc || i >= doc->motions.size()) return "null";
+    const MotionRecord r = doc->record(i);
+    json j = {{"index", i},
+              {"line", r.line},
+              {"block", doc->block_of(i)},
+              {"kind", motion_kind_name(r.kind)},
+              {"curve", curve_kind_name(r.curve)},
+              {"start", {r.start.x, r.start.y}},
+              {"end", {r.end.x, r.end.y}},
+              {"mid", {point_at(r, 0.5).x, point_at(r, 0.5).y}},
+              {"length_mm", r.length_mm},
+              {"centre", r.curve == CurveKind::Arc ? json{r.centre.x, r.centre.y} : json(nullptr)},
+              {"text", describe_motion(r)}};
+    return j.dump();
+}
+
+void App::set_layer(int layer, bool visible) {
+    if (layer >= 0 && layer < static_cast<int>(kMotionKinds)) layers_.kinds[static_cast<std::size_t>(layer)] = visible;
+    if (layer == kLayerPierces) layers_.pierces = visible;
+    if (layer == kLayerStart) layers_.start = visible;
+}
+
+}  // namespace essi::viewer

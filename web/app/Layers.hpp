@@ -1,0 +1,33 @@
+// What is drawn: the motion kinds (indexed by essi::MotionKind), the pierce and start markers, the grid.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "essi/motion.hpp"
+#include "render/Palette.hpp"
+
+namespace essi::viewer {
+
+struct Layers {
+    std::array<bool, kMotionKinds> kinds = {true, true, true, true};  // by MotionKind
+    bool pierces = true;
+    bool start = true;
+    bool grid = true;
+
+    [[nodiscard]] bool& kind(MotionKind k) { return kinds[static_cast<std::size_t>(k)]; }
+    [[nodiscard]] bool kind(MotionKind k) const { return kinds[static_cast<std::size_t>(k)]; }
+    // A bit per visible MotionKind (DrawOptions::layer_mask).
+    [[nodiscard]] int kind_mask() const {
+        int m = 0;
+        for (std::size_t k = 0; k < kMotionKinds; ++k)
+            if (kinds[k]) m |= kind_bit(static_cast<MotionKind>(k));
+        return m;
+    }
+    // A bit per visible MarkerType drawn from the marker texture (DrawOptions::marker_mask).
+    [[nodiscard]] int marker_mask() const {
+        return (pierces ? marker_bit(MarkerType::Pierce) : 0) | (start ? marker_bit(MarkerType::Start) : 0);
+    }
+};
+
+}  // namespace essi::viewer

@@ -1,0 +1,105 @@
+// Loading and the rebuild policy: reads a tape in slices (DocumentLoader), then makes its drawing in slices too
+// — a big tape's level of detail first (with the cells the view needs), then its segments, uploaded as they are
+// made, then the finer level of detail — and makes the segments again when the zoom moves far enough from the
+// chord tolerance they were made at. Every slice takes about kStepBudgetMs; the document is not drawn until its
+// segments are complete.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "app/Document.hpp"
+#include "render/LodRaster.hpp"
+#include "render/PathBuffers.hpp"
+#include "render/Renderer.hpp"
+
+namespace essi::viewer {
+
+class LoadController {
+public:
+    static constexpr double kStepBudgetMs = 30;  // work per frame while loading (the page keeps drawing)
+
+    // Where the work of a load is (what the progress bar says).
+    enum class Phase {
+        Idle,      // nothing to do, or only work after the load (a rebuild, the finer level of detail)
+        Reading,   // the DocumentLoader: line index, reading and checking
+        Overview,  // the first level of detail of a big tape
+        Segments,  // the first build of the segments
+    };
+
+    explicit LoadController(Renderer& renderer) : renderer_(renderer) {}
+    void set_graphics(bool ok) { graphics_ok_ = ok; }
+
+    // Starts reading a tape (the document before it stays drawn until this one is read).
+    void start(std::string name, std::string bytes, const Profile& profile);
+    // One slice of work. True when a new document has just been read: the caller sets the view, then calls
+    // begin_drawing().
+    [[nodiscard]] bool step();
+    // Makes the new document's drawing at `tolerance` mm; the view's zoom (px/mm, once fitted or as requested) and
+    // the framebuffer scale size its first level of detail.
+    void begin_drawing(double tolerance, double zoom, double framebuffer_scale);
+    // The segments again at `tolerance` when the drawn ones are too coarse (zoomed in 2x) or too fine (out 16x).
+    void maybe_rebuild(double tolerance);
+    // The last frame drew the tape: the first such frame after a load gives shown_seconds().
+    void note_drawn(bool drawn);
+
+    [[nodiscard]] Phase phase() const;
+    [[nodiscard]] bool loading() const { return phase() != Phase::Idle; }  // reading, or the first drawing
+    [[nodiscard]] float progress() const;
+    [[nodiscard]] const char* stage() const;
+    // Loading or building work left to do (the browser loop also runs slices of it between frames).
+    [[nodiscard]] bool has_work() const { return loader_ != nullptr || lod_building_ || building_ != nullptr; }
+    // The slice may run outside a frame (not before the first frame of a load has shown the progress bar).
+    [[nodiscard]] bool may_step_outside_frame() const { return !(loader_ && frames_since_start_ == 0); }
+    // The segments are being made again at a new zoom's tolerance (not the load's first build), over the overview.
+    [[nodiscard]] bool remaking() const { return building_ != nullptr && !first_build_ && renderer_.has_lod(); }
+    [[nodiscard]] bool first_build() const { return first_build_; }
+    [[nodiscard]] bool reading() const { return loader_ != nullptr; }
+
+    [[nodiscard]] const Document* document() const { return doc_.get(); }
+    [[nodiscard]] const PathBuffers& buffers() const { return buffers_; }
+    [[nodiscard]] const PathBuffers* building() const { return building_.get(); }
+    // The segments to draw: none while the first build runs (nothing of a new tape is drawn until it is complete).
+    [[nodiscard]] const GpuPath* drawn_path() const { return first_build_ ? nullptr : &gpu_; }
+    [[nodiscard]] std::size_t gpu_bytes() const { return gpu_.gpu_bytes() + gpu_building_.gpu_bytes(); }
+    [[nodiscard]] std::size_t segment_index_bytes() const {
+        return buffers_.memory_bytes() + (building_ ? building_->memory_bytes() : 0);
+    }
+    [[nodiscard]] const std::string& loading_name() const { return loading_name_; }
+    [[nodiscard]] std::size_t loading_bytes() const { return loading_bytes_; }
+    [[nodiscard]] double load_seconds() const { return load_seconds_; }
+    [[nodiscard]] double shown_seconds() const { return shown_seconds_; }
+
+private:
+    void step_overview(double until);
+    void step_segments(double until);
+    void segments_done();
+    void begin_overview(double zoom, double framebuffer_scale);
+
+    Renderer& renderer_;
+    bool graphics_ok_ = false;
+
+    // Reading
+    std::unique_ptr<DocumentLoader> loader_;
+    std::string loading_name_;
+    std::size_t loading_bytes_ = 0;
+    int frames_since_start_ = 0;
+    double started_ = 0;
+    double load_seconds_ = 0;
+    double shown_seconds_ = 0;      // from the start of the load to the first frame that drew the tape
+
+    // The document and its drawing
+    std::unique_ptr<Document> doc_;
+    PathBuffers buffers_;           // the drawn set's motion -> segment map (its segments are on the GPU only)
+    GpuPath gpu_;                   // the drawn segments
+    std::unique_ptr<PathBuffers> building_;  // being built (first build or a rebuild at a new tolerance)
+    GpuPath gpu_building_;          // its segments, uploaded as they are made
+    bool first_build_ = false;
+    LodRaster lod_;                 // zoomed-out drawing of big tapes, made before the first build
+    bool lod_building_ = false;     // lod_ is being made (the first build waits for it; a finer one waits for builds)
+    int lod_cells_ = 0;             // cells on the longer side of the level of detail being made or drawn
+    int lod_full_cells_ = 0;        // the tape's own (LodRaster::cells_for)
+};
+
+}  // namespace essi::viewer

@@ -1,0 +1,129 @@
+// Drawn over the drawing area every frame: the grid's labels and scale bar, the direction of the selected motions,
+// and the measure (its points, its line and its window).
+#include <algorithm>
+#include <cmath>
+
+#include "app/App.hpp"
+#include "app/panels/Panels.hpp"
+#include "app/panels/UiText.hpp"
+#include "essi/geom.hpp"
+
+namespace essi::viewer::panels {
+
+namespace {
+
+constexpr ImU32 kLabelColor = IM_COL32(150, 160, 170, 160);
+constexpr ImU32 kScaleBarColor = IM_COL32(230, 230, 230, 220);
+constexpr ImU32 kMeasureColor = IM_COL32(255, 255, 0, 255);
+constexpr std::size_t kMaxArrows = 64;  // direction arrows drawn on a selected line at most
+constexpr float kArrowPx = 9;
+constexpr double kArrowAt = 0.5, kArrowAhead = 0.01;  // the arrow's place along the motion, its direction's look-ahead
+// A label this close to 0 (a share of the step) is 0: no "-0" from rounding.
+constexpr double kZeroLabelShare = 1e-6;
+// A motion whose middle moves less than this (pixels) kArrowAhead further along gets no arrow (no direction).
+constexpr double kMinArrowPx = 1e-9;
+
+ImVec2 to_im(Point p) { return ImVec2(static_cast<float>(p.x), static_cast<float>(p.y)); }
+
+// Labels on the major grid lines along the bottom and left edges, and a scale bar of one major step.
+void grid_labels(ImDrawList* dl, const View& view, Point o) {
+    const Rect& a = view.area;
+    const double step = grid_step(view.zoom) * 10;
+    const Point w0 = view.to_world(a.x, a.y + a.h), w1 = view.to_world(a.x + a.w, a.y);
+    const int decimals = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step)));
+    const auto label = [&](double v) { return fmt("%.*f", decimals, std::fabs(v) < step * kZeroLabelShare ? 0.0 : v); };
+    for (double gx = std::ceil((w0.x + o.x) / step) * step; gx <= w1.x + o.x; gx += step) {
+        const Point s = view.to_screen({gx - o.x, 0});
+        dl->AddText(ImVec2(static_cast<float>(s.x) + 3, a.y + a.h - 18), kLabelColor, label(gx).c_str());
+    }
+    for (double gy = std::ceil((w0.y + o.y) / step) * step; gy <= w1.y + o.y; gy += step) {
+        const Point s = view.to_screen({0, gy - o.y});
+        dl->AddText(ImVec2(a.x + 4, static_cast<float>(s.y) - 16), kLabelColor, label(gy).c_str());
+    }
+    const float bar = static_cast<float>(step * view.zoom);
+    const ImVec2 p(a.x + a.w - bar - 20, a.y + a.h - 30);
+    dl->AddLine(p, ImVec2(p.x + bar, p.y), kScaleBarColor, 2);
+    dl->AddLine(p, ImVec2(p.x, p.y - 5), kScaleBarColor, 2);
+    dl->AddLine(ImVec2(p.x + bar, p.y), ImVec2(p.x + bar, p.y - 5), kScaleBarColor, 2);
+    dl->AddText(ImVec2(p.x + bar / 2 - 20, p.y - 20), kScaleBarColor, fmt("%g mm", step).c_str());
+}
+
+// An arrow at the middle of each selected motion, pointing the way it runs.
+void selection_arrows(ImDrawList* dl, const Document& doc, const Selection& sel, const View& view) {
+    const Point o = doc.origin;
+    auto [m0, m1] = doc.motions_of_line(sel.line);
+    if (sel.motion != Selection::npos && (sel.motion < m0 || sel.motion >= m1)) {
+        m0 = sel.motion;
+        m1 = sel.motion + 1;
+    }
+    for (std::size_t m = m0; m < m1 && m < m0 + kMaxArrows; ++m) {
+        const MotionRecord r = doc.record(m);
+        const Point p = point_at(r, kArrowAt), q = point_at(r, std::min(1.0, kArrowAt + kArrowAhead));
+        const Point ps = view.to_screen({p.x - o.x, p.y - o.y});
+        const Point qs = view.to_screen({q.x - o.x, q.y - o.y});
+        double dx = qs.x - ps.x, dy = qs.y - ps.y;
+        const double len = std::hypot(dx, dy);
+        if (len < kMinArrowPx) continue;
+        dx /= len;
+        dy /= len;
+        const double s = kArrowPx;
+        const ImVec2 tip(static_cast<float>(ps.x + dx * s), static_cast<float>(ps.y + dy * s));
+        const ImVec2 l(static_cast<float>(ps.x - dx * s - dy * s * 0.7), static_cast<float>(ps.y - dy * s + dx * s * 0.7));
+        const ImVec2 rr(static_cast<float>(ps.x - dx * s + dy * s * 0.7), static_cast<float>(ps.y - dy * s - dx * s * 0.7));
+        dl->AddTriangleFilled(tip, l, rr, to_u32(kSelectionColor));
+    }
+}
+
+void measure_window(const Measure& m, Point b, const Rect& a) {
+    ImGui::SetNextWindowPos(ImVec2(a.x + 10, a.y + 10));
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    ImGui::Begin("Measure", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                                         ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing);
+    if (m.points == 0) {
+        ImGui::TextUnformatted("Click the first point (snaps to end points and arc centres).");
+    } else {
+        const double dx = b.x - m.a.x, dy = b.y - m.a.y;
+        ImGui::Text("A (%.3f, %.3f)", m.a.x, m.a.y);
+        ImGui::Text("B (%.3f, %.3f)%s", b.x, b.y, m.points == 2 ? "" : "  (click to fix)");
+        ImGui::Text("distance %.3f mm", std::hypot(dx, dy));
+        ImGui::Text("dx %.3f mm   dy %.3f mm", dx, dy);
+    }
+    ImGui::TextDisabled("Esc or M: leave the measure mode");
+    ImGui::End();
+}
+
+// The snapped point under the mouse, the line from A to B (or to the mouse), and the numbers.
+void measure(ImDrawList* dl, const Document* doc, const Measure& m, const View& view, Point o) {
+    const ImGuiIO& io = ImGui::GetIO();
+    bool snapped = false;
+    const Point hover = snap(doc, view, io.MousePos.x, io.MousePos.y, &snapped);
+    const ImVec2 hs = to_im(view.to_screen({hover.x - o.x, hover.y - o.y}));
+    if (snapped) dl->AddCircle(hs, 7, kMeasureColor, 16, 2);
+    const Point b = m.points == 2 ? m.b : hover;
+    if (m.points >= 1) {
+        const ImVec2 as = to_im(view.to_screen({m.a.x - o.x, m.a.y - o.y}));
+        const ImVec2 bs = to_im(view.to_screen({b.x - o.x, b.y - o.y}));
+        dl->AddLine(as, bs, kMeasureColor, 1.5f);
+        dl->AddCircleFilled(as, 3.5f, kMeasureColor);
+        dl->AddCircleFilled(bs, 3.5f, kMeasureColor);
+    }
+    measure_window(m, b, view.area);
+}
+
+}  // namespace
+
+void overlays(App& app) {
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    const View& view = app.view();
+    const Rect& a = view.area;
+    dl->PushClipRect(ImVec2(a.x, a.y), ImVec2(a.x + a.w, a.y + a.h), true);
+    const Document* doc = app.document();
+    const Point o = app.origin();
+    if (app.layers().grid) grid_labels(dl, view, o);
+    const Selection& sel = app.selection();
+    if (doc && (sel.motion != Selection::npos || sel.line > 0)) selection_arrows(dl, *doc, sel, view);
+    if (app.input().measure.active) measure(dl, doc, app.input().measure, view, o);
+    dl->PopClipRect();
+}
+
+}  // namespace essi::viewer::panels

@@ -1,0 +1,155 @@
+// The left panel: the tape's statistics, the layers, the playback and the diagnostics.
+#include <algorithm>
+#include <cmath>
+
+#include "app/App.hpp"
+#include "app/panels/Panels.hpp"
+#include "app/panels/UiText.hpp"
+
+namespace essi::viewer::panels {
+
+namespace {
+
+void stats_row(const char* name, const std::string& value) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(name);
+    ImGui::TableNextColumn();
+    ImGui::TextWrapped("%s", value.c_str());
+}
+
+void stats_table(const Document& doc) {
+    const Stats& s = doc.stats;
+    if (!ImGui::BeginTable("stats", 2)) return;
+    // The names as wide as the longest; the values in the rest, wrapped (the boxes do not fit a line).
+    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
+    stats_row("cut", fmt("%.3f mm", s.cut_length_mm));
+    stats_row("mark", fmt("%.3f mm", s.mark_length_mm));
+    stats_row("travel", fmt("%.3f mm", s.travel_length_mm));
+    stats_row("  of it rapid", fmt("%.3f mm", s.rapid_length_mm));
+    stats_row("pierces", fmt("%llu", s.pierces));
+    stats_row("blocks", fmt("%llu", s.blocks));
+    stats_row("motions", fmt("%llu", s.motions));
+    stats_row("time", hms(s.estimated_time_s));
+    const Box& c = s.cut_bbox;
+    if (!c.empty) {
+        stats_row("cut extent", fmt("%.1f x %.1f mm", c.max_x - c.min_x, c.max_y - c.min_y));
+        stats_row("cut box", fmt("(%.1f, %.1f) - (%.1f, %.1f)", c.min_x, c.min_y, c.max_x, c.max_y));
+    }
+    const Box& m = s.motion_bbox;
+    if (!m.empty) stats_row("motion box", fmt("(%.1f, %.1f) - (%.1f, %.1f)", m.min_x, m.min_y, m.max_x, m.max_y));
+    stats_row("end", fmt("(%.3f, %.3f)", s.end_position.x, s.end_position.y));
+    stats_row("profile", doc.profile.name);
+    ImGui::EndTable();
+}
+
+void statistics(const App& app) {
+    const Document* doc = app.document();
+    if (!doc) {
+        ImGui::TextDisabled("No tape loaded.");
+        return;
+    }
+    stats_table(*doc);
+    const LoadController& load = app.loads();
+    const PathBuffers* building = load.building();
+    const std::string about =
+        building && load.first_build()  // (the segments are still being made: none to count yet)
+            ? fmt("%s, %zu lines, segments being made (%.0f %%)", size_text(doc->bytes.size()).c_str(),
+                  doc->line_count(), 100.0 * stepped(building->progress()))
+            : fmt("%s, %zu lines, %zu segments, loaded in %.2f s", size_text(doc->bytes.size()).c_str(),
+                  doc->line_count(), load.buffers().segment_count, load.load_seconds());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", about.c_str());
+    ImGui::PopStyleColor();
+}
+
+void layers(Layers& layers) {
+    int col = 0;
+    for (MotionKind k : {MotionKind::Cut, MotionKind::Mark, MotionKind::Travel, MotionKind::Rapid}) {
+        if (col++ % 2 == 1) ImGui::SameLine(150);
+        ImGui::ColorButton(fmt("##c%d", static_cast<int>(k)).c_str(), opaque(kind_color(k)), ImGuiColorEditFlags_NoTooltip,
+                           ImVec2(14, 14));
+        ImGui::SameLine();
+        ImGui::Checkbox(motion_kind_name(k), &layers.kind(k));
+    }
+    ImGui::Checkbox("pierces", &layers.pierces);
+    ImGui::SameLine();
+    ImGui::Checkbox("start", &layers.start);
+    ImGui::SameLine();
+    ImGui::Checkbox("grid", &layers.grid);
+}
+
+void playback(App& app) {
+    const Document* doc = app.document();
+    if (!doc || doc->motions.empty()) {
+        ImGui::TextDisabled("No motion.");
+        return;
+    }
+    Playback& p = app.playback();
+    const std::size_t n = doc->motions.size();
+    if (ImGui::Button(p.playing ? "Pause" : "Play")) p.toggle(n);
+    ImGui::SameLine();
+    if (ImGui::Button("<")) p.step_back();
+    ImGui::SameLine();
+    if (ImGui::Button(">")) p.step_forward(n);
+    ImGui::SameLine();
+    if (ImGui::Button("All")) p.show_all(n);
+    int pos = static_cast<int>(std::floor(p.position));
+    ImGui::SetNextItemWidth(-1);
+    if (ImGui::SliderInt("##pos", &pos, 0, static_cast<int>(n), "motion %d")) p.seek(pos);
+    ImGui::SetNextItemWidth(-1);
+    ImGui::SliderFloat("##speed", &p.speed, 1, 100000, "%.0f motions/s", ImGuiSliderFlags_Logarithmic);
+    if (!p.active) return;
+    const std::size_t cur = p.at(n).motion;
+    const Motion& m = doc->motions[cur];
+    ImGui::Text("line %u: %s %s", m.line, motion_kind_name(m.kind), curve_kind_name(m.curve));
+    ImGui::Text("tools %s, %.0f mm/min", tools_text(m.tools).c_str(), doc->feed_of(cur));
+    if (ImGui::SmallButton("show line")) app.select_line(m.line, false);
+}
+
+void diagnostics(App& app) {
+    const Document* doc = app.document();
+    if (!doc) {
+        ImGui::TextDisabled("-");
+        return;
+    }
+    if (doc->diagnostics.empty()) {
+        ImGui::TextColored(to_vec4(kOkColor), "No problems found.");
+        return;
+    }
+    ImGui::BeginChild("diaglist", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
+    ImGuiListClipper clipper;
+    clipper.Begin(static_cast<int>(doc->diagnostics.size()));
+    while (clipper.Step()) {
+        for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+            const Diagnostic& d = doc->diagnostics[static_cast<std::size_t>(i)];
+            ImGui::PushID(i);
+            ImGui::PushStyleColor(ImGuiCol_Text, severity_color(d.severity));
+            const std::string label = fmt("%s line %u:%u", code_name(d.code).c_str(), d.line, d.column);
+            if (ImGui::Selectable(label.c_str(), d.line != 0 && d.line == app.selection().line)) app.select_line(d.line);
+            ImGui::PopStyleColor();
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", d.message.c_str());
+            ImGui::SameLine();
+            ImGui::TextWrapped("%s", d.message.c_str());
+            ImGui::PopID();
+        }
+    }
+    ImGui::EndChild();
+}
+
+}  // namespace
+
+void tape_panel(App& app) {
+    ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(0, kToolbarHeight));
+    ImGui::SetNextWindowSize(ImVec2(kLeftWidth, io.DisplaySize.y - kToolbarHeight));
+    ImGui::Begin("Tape", nullptr, kPanelFlags | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) statistics(app);
+    if (ImGui::CollapsingHeader("Layers", ImGuiTreeNodeFlags_DefaultOpen)) layers(app.layers());
+    if (ImGui::CollapsingHeader("Playback", ImGuiTreeNodeFlags_DefaultOpen)) playback(app);
+    if (ImGui::CollapsingHeader("Diagnostics", ImGuiTreeNodeFlags_DefaultOpen)) diagnostics(app);
+    ImGui::End();
+}
+
+}  // namespace essi::viewer::panels

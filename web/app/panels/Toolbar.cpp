@@ -1,0 +1,73 @@
+// The toolbar: Open, Paste, Share, Fit, Measure, Help, the profile, the tape's name and verdict, the message.
+#include <GLFW/glfw3.h>
+
+#include "app/App.hpp"
+#include "app/panels/Panels.hpp"
+#include "app/panels/UiText.hpp"
+#include "essi/profile.hpp"
+#include "platform/Platform.hpp"
+
+namespace essi::viewer::panels {
+
+namespace {
+
+void open_button(App& app) {
+    if (ImGui::Button("Open...")) platform::open_file_dialog(app);
+    platform::open_button_at(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                             ImGui::GetItemRectSize().y);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Open a tape (Ctrl+O). You can also drop a file or paste text (Ctrl+V).");
+}
+
+void profile_combo(App& app) {
+    ImGui::SetNextItemWidth(110);
+    if (ImGui::BeginCombo("##profile", app.profile_name().c_str())) {
+        for (const std::string& n : builtin_profile_names()) {
+            if (ImGui::Selectable(n.c_str(), n == app.profile_name()) && n != app.profile_name()) app.set_profile(n);
+        }
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Machine and dialect profile");
+}
+
+// The tape's name and "ok" or its error and warning counts.
+void verdict(const Document& doc) {
+    const std::size_t e = doc.count(Severity::Error), w = doc.count(Severity::Warning);
+    ImGui::TextUnformatted(doc.name.c_str());
+    ImGui::SameLine();
+    if (e == 0 && w == 0) ImGui::TextColored(to_vec4(kOkColor), "ok");
+    else if (e == 0) ImGui::TextColored(severity_color(Severity::Warning), "ok, %zu warning%s", w, w == 1 ? "" : "s");
+    else ImGui::TextColored(severity_color(Severity::Error), "%zu error%s, %zu warning%s", e, e == 1 ? "" : "s", w, w == 1 ? "" : "s");
+}
+
+}  // namespace
+
+void toolbar(App& app) {
+    ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, kToolbarHeight));
+    ImGui::Begin("##toolbar", nullptr, kPanelFlags | ImGuiWindowFlags_NoDecoration);
+    open_button(app);
+    ImGui::SameLine();
+    if (ImGui::Button("Paste")) platform::paste(app);
+    ImGui::SameLine();
+    if (ImGui::Button("Share link")) app.share();
+    ImGui::SameLine();
+    if (ImGui::Button("Fit (F)")) app.fit();
+    ImGui::SameLine();
+    Measure& measure = app.input().measure;
+    if (ImGui::Checkbox("Measure (M)", &measure.active)) measure.points = 0;
+    ImGui::SameLine();
+    if (ImGui::Button("Help (H)")) app.ui().help = !app.ui().help;
+    ImGui::SameLine();
+    profile_combo(app);
+    ImGui::SameLine();
+    if (const Document* doc = app.document()) verdict(*doc);
+    const UiState& ui = app.ui();
+    if (!ui.message.empty() && glfwGetTime() < ui.message_until) {
+        ImGui::SameLine();
+        ImGui::TextColored(to_vec4(kMessageColor), "  %s", ui.message.c_str());
+    }
+    ImGui::End();
+}
+
+}  // namespace essi::viewer::panels

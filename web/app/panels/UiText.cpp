@@ -1,0 +1,64 @@
+#include "app/panels/UiText.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "app/panels/Panels.hpp"
+
+namespace essi::viewer {
+
+namespace {
+constexpr float kProgressSteps = 50;  // progress is shown in 2 % steps (stepped())
+}
+
+std::string hms(double seconds) {
+    const long s = static_cast<long>(std::llround(seconds));
+    return fmt("%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
+}
+
+std::string size_text(std::size_t bytes) {
+    if (bytes < 1024) return fmt("%zu bytes", bytes);
+    if (bytes < 1024 * 1024) return fmt("%.1f KB", static_cast<double>(bytes) / 1024.0);
+    return fmt("%.1f MB", static_cast<double>(bytes) / 1048576.0);
+}
+
+std::string printable(std::string_view s, std::size_t max) {
+    std::string out;
+    out.reserve(std::min(s.size(), max));
+    for (std::size_t i = 0; i < s.size() && i < max; ++i) {
+        const unsigned char c = static_cast<unsigned char>(s[i]);
+        out.push_back(c == '\t' ? ' ' : (c < 0x20 || c >= 0x7F) ? '?' : static_cast<char>(c));
+    }
+    if (s.size() > max) out += " ...";
+    return out;
+}
+
+float stepped(float progress) { return std::floor(progress * kProgressSteps) / kProgressSteps; }
+
+ImVec4 severity_color(Severity s) {
+    switch (s) {
+        case Severity::Error: return ImVec4(1.0f, 0.4f, 0.35f, 1);
+        case Severity::Warning: return ImVec4(1.0f, 0.8f, 0.3f, 1);
+        default: return ImVec4(0.6f, 0.8f, 1.0f, 1);
+    }
+}
+
+namespace panels {
+
+Rect drawing_area(float w, float h) {
+    return Rect{kLeftWidth, kToolbarHeight, std::max(w - kLeftWidth - kRightWidth, 50.f), std::max(h - kToolbarHeight, 50.f)};
+}
+
+// ImGui's window background blended over the drawing's background, in the 8-bit steps the GPU blends in (the
+// same pixels).
+Rgba panel_color() {
+    const auto byte = [](float v) { return std::round(std::clamp(v, 0.f, 1.f) * 255.f) / 255.f; };
+    const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+    const float a = byte(bg.w);
+    const auto over = [&](float top, float below) { return byte(top) * a + byte(below) * (1 - a); };
+    return {over(bg.x, kBackground.r), over(bg.y, kBackground.g), over(bg.z, kBackground.b), 1.f};
+}
+
+}  // namespace panels
+
+}  // namespace essi::viewer

@@ -1,0 +1,52 @@
+// The viewer's colours, in one place: motion kinds, markers, the selection, the background and the grid. The
+// renderer's programs, the level of detail, the panels' legends and state().kind_colors all read them here.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "essi/motion.hpp"
+
+namespace essi::viewer {
+
+struct Rgba {
+    float r, g, b, a;
+    bool operator==(const Rgba&) const = default;
+};
+
+inline constexpr std::size_t kMotionKinds = 4;  // MotionKind: Rapid, Travel, Cut, Mark
+inline constexpr int kAllKindsMask = (1 << kMotionKinds) - 1;
+[[nodiscard]] constexpr int kind_bit(MotionKind k) { return 1 << static_cast<int>(k); }
+
+// Colours by MotionKind: rapid, travel, cut, mark (also used by the UI legend and the e2e test).
+inline constexpr std::array<Rgba, kMotionKinds> kKindColors = {{
+    {0.42f, 0.55f, 0.75f, 0.75f},  // rapid: blue-grey
+    {0.55f, 0.62f, 0.70f, 0.75f},  // travel: grey
+    {1.00f, 0.55f, 0.10f, 1.00f},  // cut: orange #ff8c1a
+    {0.85f, 0.35f, 0.95f, 1.00f},  // mark: violet
+}};
+[[nodiscard]] constexpr const Rgba& kind_color(MotionKind k) { return kKindColors[static_cast<std::size_t>(k)]; }
+
+// The point markers (the marker program's `type`, a texel's third value).
+enum class MarkerType { Pierce = 0, Start = 1, Tool = 2 };
+inline constexpr std::size_t kMarkerTypes = 3;
+// Marker masks (DrawOptions::marker_mask, the shader's u_type_mask): a bit per MarkerType.
+[[nodiscard]] constexpr int marker_bit(MarkerType t) { return 1 << static_cast<int>(t); }
+inline constexpr int kAllMarkersMask = (1 << kMarkerTypes) - 1;
+
+// Colours by MarkerType.
+inline constexpr std::array<Rgba, kMarkerTypes> kMarkerColors = {{
+    {1.0f, 0.25f, 0.2f, 1.0f},  // pierce: red ring (and the pierce cells of the level of detail)
+    {0.3f, 0.95f, 0.4f, 1.0f},  // start: green disc
+    {1.0f, 1.0f, 1.0f, 1.0f},   // tool: white ring + cross
+}};
+[[nodiscard]] constexpr const Rgba& marker_color(MarkerType t) { return kMarkerColors[static_cast<std::size_t>(t)]; }
+
+inline constexpr Rgba kBackground = {0.11f, 0.12f, 0.14f, 1.f};
+inline constexpr Rgba kSelectionColor = {0.25f, 0.95f, 1.0f, 1.f};
+// The grid's lines (the grid program).
+inline constexpr Rgba kGridMinor = {0.5f, 0.55f, 0.6f, 0.10f};
+inline constexpr Rgba kGridMajor = {0.5f, 0.55f, 0.6f, 0.25f};
+inline constexpr Rgba kGridAxis = {0.6f, 0.8f, 0.6f, 0.45f};
+
+}  // namespace essi::viewer
