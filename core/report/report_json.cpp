@@ -48,6 +48,22 @@ nlohmann::json diagnostic_to_json(const Diagnostic& d) {
     return j;
 }
 
+nlohmann::json diagnostics_to_json(std::span<const Diagnostic> diagnostics) {
+    nlohmann::json diags = nlohmann::json::array();
+    for (const Diagnostic& d : diagnostics) diags.push_back(diagnostic_to_json(d));
+    return diags;
+}
+
+nlohmann::json box_to_json(const Box& b) {
+    if (b.empty) return nullptr;
+    return {
+        {"min_x", round_for_json(b.min_x)},
+        {"min_y", round_for_json(b.min_y)},
+        {"max_x", round_for_json(b.max_x)},
+        {"max_y", round_for_json(b.max_y)},
+    };
+}
+
 nlohmann::json stats_to_json(const Stats& s) {
     nlohmann::json j = nlohmann::json::object();
     j["cut_length_mm"] = round_for_json(s.cut_length_mm);
@@ -58,16 +74,7 @@ nlohmann::json stats_to_json(const Stats& s) {
     j["blocks"] = s.blocks;
     j["motions"] = s.motions;
     j["estimated_time_s"] = round_for_json(s.estimated_time_s);
-    if (s.cut_bbox.empty) {
-        j["cut_bbox_mm"] = nullptr;
-    } else {
-        j["cut_bbox_mm"] = {
-            {"min_x", round_for_json(s.cut_bbox.min_x)},
-            {"min_y", round_for_json(s.cut_bbox.min_y)},
-            {"max_x", round_for_json(s.cut_bbox.max_x)},
-            {"max_y", round_for_json(s.cut_bbox.max_y)},
-        };
-    }
+    j["cut_bbox_mm"] = box_to_json(s.cut_bbox);
     j["end_position_mm"] = point_to_json(s.end_position);
     return j;
 }
@@ -76,9 +83,7 @@ nlohmann::json file_report_to_json(const FileReport& file) {
     nlohmann::json j = nlohmann::json::object();
     j["path"] = file.path;
     j["ok"] = file.ok();
-    nlohmann::json diags = nlohmann::json::array();
-    for (const Diagnostic& d : file.result.diagnostics) diags.push_back(diagnostic_to_json(d));
-    j["diagnostics"] = std::move(diags);
+    j["diagnostics"] = diagnostics_to_json(file.result.diagnostics);
     j["stats"] = stats_to_json(file.result.stats);
     if (file.omitted() > 0) j["diagnostics_omitted"] = file.omitted();
     return j;

@@ -9,6 +9,7 @@
 #include "app/panels/UiText.hpp"
 #include "essi/geom.hpp"
 #include "essi/profile.hpp"
+#include "essi/sniff.hpp"
 #include "platform/Platform.hpp"
 
 namespace essi::viewer {
@@ -21,21 +22,10 @@ constexpr double kMessageSeconds = 4;  // a toolbar message shows this long
 // Share links longer than this are refused (browsers and chat programs cut long URLs).
 constexpr std::size_t kMaxShareTapeBytes = 4u << 20;
 
-bool looks_binary(std::string_view bytes) {
-    const std::size_t n = std::min<std::size_t>(bytes.size(), 4096);
-    std::size_t bad = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const unsigned char c = static_cast<unsigned char>(bytes[i]);
-        if (c == 0) return true;
-        if (c < 0x09 || (c > 0x0D && c < 0x20)) ++bad;
-    }
-    return n > 0 && bad * 20 > n;
-}
-
 // A problem with the whole file, shown over the drawing area ("" when there is none).
 std::string banner_for(const Document& d) {
     if (d.bytes.empty()) return "The file is empty: there is nothing to draw.";
-    if (looks_binary(d.bytes))
+    if (looks_binary(d.bytes))  // essi/sniff.hpp
         return "This is a binary file, not an ESSI tape (ESSI tapes are text: + - digits and line ends).";
     if (d.motions.empty() && d.has_errors())
         return fmt("This does not look like an ESSI tape: %zu errors and no motion. The first: line %u: %s",

@@ -6,6 +6,7 @@
 #include "app/App.hpp"
 #include "essi/diagnostics.hpp"
 #include "essi/geom.hpp"
+#include "essi/report_json.hpp"
 
 namespace essi::viewer {
 
@@ -17,46 +18,18 @@ constexpr int kLayerStart = 5;
 
 using nlohmann::json;
 
-json box_json(const Box& b) {
-    if (b.empty) return nullptr;
-    return {{"min_x", b.min_x}, {"min_y", b.min_y}, {"max_x", b.max_x}, {"max_y", b.max_y}};
-}
-
-json stats_json(const Stats& s) {
-    return {
-        {"cut_length_mm", s.cut_length_mm},
-        {"mark_length_mm", s.mark_length_mm},
-        {"travel_length_mm", s.travel_length_mm},
-        {"rapid_length_mm", s.rapid_length_mm},
-        {"pierces", s.pierces},
-        {"blocks", s.blocks},
-        {"motions", s.motions},
-        {"estimated_time_s", s.estimated_time_s},
-        {"cut_bbox_mm", box_json(s.cut_bbox)},
-        {"end_position_mm", {{"x", s.end_position.x}, {"y", s.end_position.y}}},
-    };
-}
-
-json diagnostics_json(const std::vector<Diagnostic>& diagnostics) {
-    json diags = json::array();
-    for (const Diagnostic& d : diagnostics)
-        diags.push_back({{"severity", std::string(severity_name(d.severity))}, {"code", code_name(d.code)},
-                         {"line", d.line}, {"column", d.column}, {"message", d.message}});
-    return diags;
-}
-
 // The document's part of the state: statistics, diagnostics, sizes, memory, level of detail.
 void add_document(json& j, const Document& doc, const LoadController& load, const Renderer& renderer,
                   bool lod_drawn) {
-    j["stats"] = stats_json(doc.stats);
-    j["diagnostics"] = diagnostics_json(doc.diagnostics);
+    j["stats"] = stats_to_json(doc.stats);  // the report's own writer (essi/report_json.hpp)
+    j["diagnostics"] = diagnostics_to_json(doc.diagnostics);
     j["ok"] = !doc.has_errors();
     j["bytes"] = doc.bytes.size();
     j["lines"] = doc.line_count();
     j["motions"] = doc.motions.size();
     j["segments"] = load.buffers().segment_count;
     j["pierce_markers"] = doc.pierces.size();
-    j["bbox_mm"] = box_json(doc.bbox);
+    j["bbox_mm"] = box_to_json(doc.bbox);
     j["memory_bytes"] = doc.memory_bytes() + load.segment_index_bytes();
     json parts = json::object();
     for (const auto& [part, n] : doc.memory_parts()) parts[part] = n;
@@ -124,10 +97,9 @@ json selection_json(const Selection& s) {
 }
 
 json layers_json(const Layers& l) {
-    return {{"rapid", l.kind(MotionKind::Rapid)}, {"travel", l.kind(MotionKind::Travel)},
-            {"cut", l.kind(MotionKind::Cut)},     {"mark", l.kind(MotionKind::Mark)},
-            {"pierces", l.pierces},               {"start", l.start},
-            {"grid", l.grid}};
+    json j = {{"pierces", l.pierces}, {"start", l.start}, {"grid", l.grid}};
+    for (std::size_t k = 0; k < kMotionKinds; ++k) j[motion_kind_name(static_cast<MotionKind>(k))] = l.kinds[k];
+    return j;
 }
 
 }  // namespace

@@ -25,26 +25,9 @@ std::string fmt(const char* format, auto... args) {
     return buf;
 }
 
-// Whether `next`, right after the line end `end` (a CR or LF), belongs to it: one line end is CR, LF, CR LF or
-// LF CR (as the reader has it).
-bool ends_line_with(char end, char next) { return (next ^ end) == ('\r' ^ '\n'); }
-
 }  // namespace
 
-std::string_view Document::line(std::size_t n) const {
-    if (n == 0 || n > lines) return {};
-    const std::string& s = bytes;
-    std::size_t i = line_index[(n - 1) / kLineIndexStride];
-    for (std::size_t skip = (n - 1) % kLineIndexStride; skip > 0; --skip) {
-        while (i < s.size() && s[i] != '\n' && s[i] != '\r') ++i;
-        if (i >= s.size()) return {};
-        const char c = s[i++];
-        if (i < s.size() && ends_line_with(c, s[i])) ++i;
-    }
-    std::size_t end = i;
-    while (end < s.size() && s[end] != '\n' && s[end] != '\r') ++end;
-    return std::string_view(s).substr(i, end - i);
-}
+std::string_view Document::line(std::size_t n) const { return line_index.line(bytes, n); }
 
 void RankIndex::reserve(std::size_t n) {
     bits_.reserve(n / 64 + 1);
@@ -73,18 +56,13 @@ std::size_t RankIndex::memory_bytes() const {
     return bits_.capacity() * sizeof(std::uint64_t) + before_.capacity() * sizeof(std::uint32_t);
 }
 
-Point Document::point_mm(UnitPoint u) const {
-    return {static_cast<double>(u.x) * profile.unit_mm + profile.setup_offset_x_mm,
-            static_cast<double>(u.y) * profile.unit_mm + profile.setup_offset_y_mm};
-}
-
 bool Document::to_units(Point mm, UnitPoint& out) const {
-    const double x = std::round((mm.x - profile.setup_offset_x_mm) / profile.unit_mm);
-    const double y = std::round((mm.y - profile.setup_offset_y_mm) / profile.unit_mm);
-    constexpr double kMax = std::numeric_limits<std::int32_t>::max();
-    if (!(std::fabs(x) <= kMax && std::fabs(y) <= kMax)) return false;  // (NaN too)
+    long long x = 0, y = 0;
+    if (!mm_to_units(profile, mm, x, y)) return false;
+    constexpr long long kMax = std::numeric_limits<std::int32_t>::max();
+    if (x < -kMax || x > kMax || y < -kMax || y > kMax) return false;  // beyond what a Motion holds
     out = {static_cast<std::int32_t>(x), static_cast<std::int32_t>(y)};
-    return point_mm(out) == mm;  // exactly the interpreter's number, or the record is kept whole
+    return true;
 }
 
 const MotionRecord& Document::kept_record(std::size_t i) const {
@@ -231,7 +209,7 @@ std::vector<std::pair<const char*, std::size_t>> Document::memory_parts() const 
                         feeds.capacity() * sizeof(feeds[0])},
         {"pierces", pierces.capacity() * sizeof(std::uint32_t)},
         {"diagnostics", diagnostics.capacity() * sizeof(Diagnostic)},
-        {"line_index", line_index.capacity() * sizeof(std::uint32_t)},
+        {"line_index", line_index.memory_bytes()},
         {"read_chunks", chunks.capacity() * sizeof(ReadChunk) + (chunks.empty() ? 0 : chunks.size() * chunks.front().reader.state_bytes()) +
                             reread_.memory_bytes()},
     };
@@ -282,7 +260,7 @@ std::string describe_motion(const MotionRecord& m) {
     s += "; tools " + tools_text(m.tools);
     if (m.head == 2) s += ", head 2";
     if (m.kerf != KerfSide::Off)
-        s += fmt(", kerf %s %.3f mm", m.kerf == KerfSide::Left ? "left" : "right", m.kerf_mm);
+        s += fmt(", kerf %s %.3f mm", kerf_side_name(m.kerf), m.kerf_mm);
     s += fmt(", %.0f mm/min", m.feed_mm_min);
     return s;
 }
@@ -297,7 +275,7 @@ std::string describe_block(const Tape& tape, std::size_t i, const Profile& profi
             return describe_function(b.code, true, w.empty() ? 0 : static_cast<long>(w[0]), profile);
         }
         case BlockKind::Motion: {
-            // The words by their names (ESSI-SEMANTICS §2): TC and TP count by their sign only.
+            // The words by their names (docs/semantics.md §2): TC and TP count by their sign only.
             const auto w = tape.words(i);
             static constexpr const char* kLine[] = {"DX", "DY"};
             static constexpr const char* kArc[] = {"DX", "DY", "XC", "YC"};
@@ -369,10 +347,9 @@ public:
     }
 
     void on_event(const MachineEvent& e) override {
-        const bool was_on = (tools_ & kCuttingTools) != 0;
-        const bool now_on = (e.tools_after & kCuttingTools) != 0;
-        if (!was_on && now_on) pierce_pending_ = true;
-        if (!now_on) pierce_pending_ = false;
+        // The pierce is drawn at the first cutting motion after cutting starts (the statistics' rule).
+        if (starts_cutting(tools_, e.tools_after)) pierce_pending_ = true;
+        if ((e.tools_after & kCuttingTools) == 0) pierce_pending_ = false;
         tools_ = e.tools_after;
     }
 
@@ -436,9 +413,6 @@ DocumentLoader::DocumentLoader(std::string name, std::string bytes, Profile prof
 DocumentLoader::~DocumentLoader() = default;
 
 namespace {
-// A byte repeated in every byte of a 64-bit word.
-constexpr std::uint64_t kBytesOf(std::uint8_t b) { return 0x0101010101010101ull * b; }
-
 // Grows `v` ahead of need to the size projected from the share of the tape read so far (no doubling: a
 // 10 M motion stream must not cost twice its size).
 template <class T>
@@ -461,49 +435,15 @@ void shrink_if_loose(std::vector<T>& v) {
 bool DocumentLoader::step(double budget_ms) {
     Document& d = *doc_;
     const double until = now_ms() + budget_ms;
-    if (stage_ == Stage::IndexLines) {  // the sparse line index
-        const std::string& s = d.bytes;
-        if (index_pos_ == 0) {
-            d.line_index.clear();
-            d.line_index.push_back(0);
-            d.lines = s.empty() ? 0 : 1;
-            motion_lines_ = !s.empty() && (s[0] == '+' || s[0] == '-');
-        }
-        const char* p = s.data();
-        const std::size_t n = s.size();
-        std::size_t i = index_pos_;
-        while (i < n) {
-            const std::size_t stop = std::min(n, i + (std::size_t(2) << 20));
-            while (i < stop) {
-                // Eight bytes at a time to the next control character (a byte below 0x0E: CR, LF, and rarely a
-                // tab or worse): the lowest flagged byte is always one (the others may be borrows of it).
-                if (i + 8 <= n) {
-                    std::uint64_t w;
-                    std::memcpy(&w, p + i, 8);
-                    const std::uint64_t below = (w - kBytesOf(0x0E)) & ~w & kBytesOf(0x80);
-                    if (below == 0) {
-                        i += 8;
-                        continue;
-                    }
-                    i += static_cast<std::size_t>(std::countr_zero(below)) / 8;  // (little-endian: WASM, x86, ARM)
-                }
-                const char c = p[i++];
-                if (c != '\n' && c != '\r') continue;
-                if (i < n && ends_line_with(c, p[i])) ++i;
-                if (i < n) {
-                    if (d.lines % Document::kLineIndexStride == 0) d.line_index.push_back(static_cast<std::uint32_t>(i));
-                    ++d.lines;
-                    motion_lines_ += p[i] == '+' || p[i] == '-';
-                }
-            }
-            if (now_ms() > until) break;
-        }
-        index_pos_ = i;
-        if (index_pos_ < n) return false;
+    if (stage_ == Stage::IndexLines) {  // the sparse line index, 2 MB at a time until the slice's time is up
+        constexpr std::size_t kIndexBytesPerTry = std::size_t(2) << 20;
+        while (!d.line_index.build(d.bytes, kIndexBytesPerTry))
+            if (now_ms() > until) return false;
+        const std::size_t motion_lines = d.line_index.signed_lines();  // the motion stream's size, near enough
         stage_ = Stage::ReadAndCheck;
         // Room for the motion stream at once (lines that start with a sign are motions, near enough): no late
         // reserve has to copy hundreds of MB in one slice. grow() covers the few motions this misses.
-        d.motions.reserve(motion_lines_ + motion_lines_ / kMotionReserveSlack + 16);
+        d.motions.reserve(motion_lines + motion_lines / kMotionReserveSlack + 16);
         d.arc_rank.reserve(d.motions.capacity());
         sink_ = std::make_unique<Sink>(d);
         reader_ = std::make_unique<TapeReader>(d.bytes, d.profile);
@@ -562,7 +502,7 @@ bool DocumentLoader::step(double budget_ms) {
 float DocumentLoader::progress() const {
     const double n = static_cast<double>(std::max<std::size_t>(doc_ ? doc_->bytes.size() : 1, 1));
     switch (stage_) {
-        case Stage::IndexLines: return static_cast<float>(0.1 * static_cast<double>(index_pos_) / n);
+        case Stage::IndexLines: return static_cast<float>(0.1 * static_cast<double>(doc_ ? doc_->line_index.position() : 0) / n);
         case Stage::ReadAndCheck: return static_cast<float>(0.1 + 0.6 * static_cast<double>(read_pos_) / n);
         default: return 0.7f;
     }

@@ -12,6 +12,7 @@
 
 #include "essi/diagnostics.hpp"
 #include "essi/geom.hpp"
+#include "essi/lines.hpp"
 #include "essi/motion.hpp"
 #include "essi/profile.hpp"
 #include "essi/read.hpp"
@@ -96,15 +97,13 @@ struct Document {
     // (first motion, mm/min) whenever the feed changes, over the motions without kFlagRapidFeed
     std::vector<std::pair<std::uint32_t, float>> feeds;
     std::vector<std::uint32_t> pierces;   // motions that start where a cutting tool came on (display only)
-    std::vector<std::uint32_t> line_index;  // byte offset of line 1 + k * kLineIndexStride
+    LineIndex line_index;                 // where each line starts (the core's rule, essi/lines.hpp)
     std::vector<ReadChunk> chunks;        // the reader before each chunk of kReadChunkBlocks blocks
-    std::size_t lines = 0;
     std::size_t blocks = 0, block_words = 0;  // what the reader read (all chunks)
     std::size_t curves = 0;               // arcs and parabolas (the drawing depends on the zoom)
     Box bbox;                             // all motion
     Point origin;                         // GPU coordinates are relative to this (float precision)
 
-    static constexpr std::size_t kLineIndexStride = 64;
     // Blocks per TapeReader chunk: a few ms in the browser; the chunk, read again for the inspector, ~150 KB.
     static constexpr std::size_t kReadChunkBlocks = 8192;
 
@@ -112,10 +111,10 @@ struct Document {
     Document(const Document&) = delete;
     Document& operator=(const Document&) = delete;
 
-    [[nodiscard]] std::size_t line_count() const { return lines; }
+    [[nodiscard]] std::size_t line_count() const { return line_index.line_count(); }
     [[nodiscard]] std::string_view line(std::size_t line_1based) const;
-    // Millimetres of a position in units, as the interpreter computes them.
-    [[nodiscard]] Point point_mm(UnitPoint u) const;
+    // Millimetres of a position in units, as the interpreter computes them (essi::units_to_mm).
+    [[nodiscard]] Point point_mm(UnitPoint u) const { return units_to_mm(profile, u.x, u.y); }
     // The units of a position in mm, when it is a whole number of them within 32 bits (false otherwise).
     [[nodiscard]] bool to_units(Point mm, UnitPoint& out) const;
     [[nodiscard]] Point end_of(std::size_t i) const;
@@ -177,8 +176,6 @@ private:
     Tape chunk_;
     enum class Stage { IndexLines, ReadAndCheck, Finish, Done };
     Stage stage_ = Stage::IndexLines;
-    std::size_t index_pos_ = 0;
-    std::size_t motion_lines_ = 0;  // lines starting with + or -: the motion stream's size, near enough
     static constexpr std::size_t kMotionReserveSlack = 64;  // 1/64 more for addressed motions ("1+100+0")
     std::size_t read_pos_ = 0;  // byte offset reached by the reader
 };

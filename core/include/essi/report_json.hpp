@@ -44,6 +44,12 @@ void limit_diagnostics(FileReport& file, std::size_t max);
 // {"severity","code","line","column","message"}
 [[nodiscard]] nlohmann::json diagnostic_to_json(const Diagnostic& d);
 
+// [diagnostic_to_json of each]
+[[nodiscard]] nlohmann::json diagnostics_to_json(std::span<const Diagnostic> diagnostics);
+
+// {"min_x","min_y","max_x","max_y"}, or null for an empty box
+[[nodiscard]] nlohmann::json box_to_json(const Box& b);
+
 // {"cut_length_mm", ..., "cut_bbox_mm": {...} or null, "end_position_mm": {"x","y"}}
 [[nodiscard]] nlohmann::json stats_to_json(const Stats& s);
 
