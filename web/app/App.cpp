@@ -109,10 +109,7 @@ void App::apply_pending_view(const Document& d) {
     pending_view_.reset();
 }
 
-double App::desired_tolerance() const {
-    // A quarter pixel at the current zoom, never finer than the core allows.
-    return std::max(0.25 / view_.zoom, kMinChordTolerance);
-}
+double App::desired_tolerance() const { return view_.chord_tolerance_mm(); }
 
 float App::framebuffer_scale() const {
     const float s = ImGui::GetIO().DisplayFramebufferScale.x;

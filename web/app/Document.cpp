@@ -8,6 +8,7 @@
 #include <cstring>
 #include <limits>
 
+#include "app/Format.hpp"
 #include "essi/functions.hpp"
 #include "essi/interp.hpp"
 
@@ -17,12 +18,6 @@ namespace {
 
 double now_ms() {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-std::string fmt(const char* format, auto... args) {
-    char buf[512];
-    std::snprintf(buf, sizeof buf, format, args...);
-    return buf;
 }
 
 }  // namespace

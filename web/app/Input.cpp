@@ -83,7 +83,7 @@ std::size_t pick(const Document& d, const View& view, std::size_t limit, int kin
             continue;
         }
         pts.clear();
-        flatten(d.record(i), std::max(0.25 / view.zoom, kMinChordTolerance), pts, true);
+        flatten(d.record(i), view.chord_tolerance_mm(), pts, true);
         double dist = HUGE_VAL;
         for (std::size_t k = 1; k < pts.size(); ++k)
             dist = std::min(dist, seg_distance(p.x, p.y, pts[k - 1].x, pts[k - 1].y, pts[k].x, pts[k].y));

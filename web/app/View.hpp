@@ -46,7 +46,13 @@ struct View {
         cy += before.y - after.y;
     }
 
+    // The chord tolerance that draws the curves smooth at this zoom: a quarter pixel, never finer than the core
+    // allows.
+    [[nodiscard]] double chord_tolerance_mm() const { return std::max(kChordPixels / zoom, kMinChordTolerance); }
+
     bool operator==(const View&) const = default;
+
+    static constexpr double kChordPixels = 0.25;
 
     static constexpr double kMinZoom = 1e-4;  // px/mm
     static constexpr double kMaxZoom = 1e4;

@@ -8,18 +8,11 @@
 #include <string>
 #include <string_view>
 
+#include "app/Format.hpp"
 #include "essi/diagnostics.hpp"
 #include "render/Palette.hpp"
 
 namespace essi::viewer {
-
-// printf into a std::string (at most 1023 characters).
-template <class... Args>
-std::string fmt(const char* format, Args... args) {
-    char buf[1024];
-    std::snprintf(buf, sizeof buf, format, args...);
-    return buf;
-}
 
 // "1:02:03" (hours, minutes, seconds).
 [[nodiscard]] std::string hms(double seconds);
