@@ -95,9 +95,16 @@ struct PlainLine {
     int lead_digits = 0;          // digits of the leading unsigned number (function code or head address)
     std::uint32_t lead = 0;       // its value
     int words = 0;                // signed words written
-    std::uint8_t sign_flags = 0;  // Block::kTcNegative / kTpNegative
+    std::uint32_t negative = 0;   // bit k: word k has a '-' sign
     const unsigned char* line_end = nullptr;  // the line's CR or LF, or the end of the bytes
 };
+
+// The Block sign flags of a line's words from its mask of negative words: words 5 (TC) and 6 (TP) have their
+// flags at bits 4 and 5, where the mask has them.
+constexpr std::uint8_t sign_flags_of(std::uint32_t negative) {
+    static_assert(Block::kTcNegative == 1u << 4 && Block::kTpNegative == 1u << 5);
+    return static_cast<std::uint8_t>(negative & (Block::kTcNegative | Block::kTpNegative));
+}
 
 // The bytes read_plain_line may look at from a line's start when it is not told where the bytes end: the
 // leading number and kMaxPlainWords words of at most kMaxWordDigits + 1 digits each are read before it gives up.
@@ -159,9 +166,7 @@ template <bool bounded>
     out.lead_digits = lead_digits;
     out.lead = lead;
     out.words = n;
-    // Words 5 (TC) and 6 (TP) have their signs' flags at bits 4 and 5, where `negative` has them.
-    static_assert(Block::kTcNegative == 1u << 4 && Block::kTpNegative == 1u << 5);
-    out.sign_flags = static_cast<std::uint8_t>(negative & (Block::kTcNegative | Block::kTpNegative));
+    out.negative = negative;
     out.line_end = p;
     return true;
 }
@@ -203,6 +208,7 @@ private:
         long long lead_value = 0;
         int words = 0;
         std::uint8_t sign_flags = 0;  // Block::kTcNegative / kTpNegative
+        bool value_negative = false;  // the first signed word has a '-' (a function's value must have '+')
         bool blank = true;
         int mark = 0;                 // '%', '/' or '=' when the block is that mark
     };
@@ -426,7 +432,7 @@ std::uint32_t EssiReader::read_plain_lines(std::uint32_t pos, std::uint32_t size
         b.line = line;
         b.code = motion ? Block::kNoCode : static_cast<std::uint16_t>(pl.lead);
         b.kind = motion ? BlockKind::Motion : BlockKind::Function;
-        b.packed = motion ? static_cast<std::uint8_t>(pl.words | pl.sign_flags) : std::uint8_t{0};
+        b.packed = motion ? static_cast<std::uint8_t>(pl.words | sign_flags_of(pl.negative)) : std::uint8_t{0};
         ++blocks;
         wp += pl.words;
     };
@@ -489,7 +495,8 @@ std::uint32_t EssiReader::read_plain_lines(std::uint32_t pos, std::uint32_t size
             lp.lead_digits = pl.lead_digits;
             lp.lead_value = lead;
             lp.words = n;
-            lp.sign_flags = pl.sign_flags;
+            lp.sign_flags = sign_flags_of(pl.negative);
+            lp.value_negative = (pl.negative & 1) != 0;
             lp.blank = false;
             classify(offset, lp, words_of(t).size() - static_cast<std::size_t>(n));
             blocks = chunk_blocks_;
@@ -560,6 +567,7 @@ bool EssiReader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& 
             return false;
         }
         ++lp.words;
+        if (lp.words == 1 && word_negative) lp.value_negative = true;
         if (lp.words == 5 && word_negative) lp.sign_flags |= Block::kTcNegative;
         if (lp.words == 6 && word_negative) lp.sign_flags |= Block::kTpNegative;
         words_of(tape()).push_back(static_cast<std::int32_t>(word_negative ? -word_value : word_value));
@@ -720,6 +728,13 @@ void EssiReader::classify(std::uint32_t first, const LineParse& lp, std::size_t 
             return;
         }
         if (lp.words == 1) {
+            if (lp.value_negative) {
+                fail(DiagCode::E118_FunctionValueSign,
+                     "the value of machine function " + std::to_string(code) +
+                         " is written after a '-'; a function and its value are separated by a '+' (" +
+                         std::to_string(code) + "+value), and no function takes a negative value");
+                return;
+            }
             push_block(first, BlockKind::FunctionValue, code, word_count);
             return;
         }

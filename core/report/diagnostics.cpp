@@ -30,6 +30,7 @@ constexpr std::array kCodes = {
     CodeRow{DiagCode::E115_TooManyErrors, "Reading stopped after too many errors; the file is probably not an ESSI tape."},
     CodeRow{DiagCode::E116_MisplacedMark, "A % or / mark shares its block with other characters."},
     CodeRow{DiagCode::E117_TapeTooLarge, "The tape is larger than 4 GiB."},
+    CodeRow{DiagCode::E118_FunctionValueSign, "A machine function's value is written after a '-'; it must follow a '+'."},
     CodeRow{DiagCode::W201_UnknownFunction, "An unassigned or unknown machine function; it is ignored."},
     CodeRow{DiagCode::W202_FunctionValueIgnored, "A value given to a machine function that takes none; the value is ignored."},
     CodeRow{DiagCode::E203_FunctionValueMissing, "A machine function that needs a value has none."},
@@ -70,6 +71,7 @@ bool is_error_code(DiagCode code) {
         case DiagCode::E107_UnclosedIgnore: case DiagCode::E108_WhitespaceStrict:
         case DiagCode::E113_EmptyTape: case DiagCode::E115_TooManyErrors:
         case DiagCode::E116_MisplacedMark: case DiagCode::E117_TapeTooLarge:
+        case DiagCode::E118_FunctionValueSign:
         case DiagCode::E203_FunctionValueMissing: case DiagCode::E206_BadHeadAddress:
         case DiagCode::E207_ZeroOffsetBlock: case DiagCode::E301_ArcEndNotOnCircle:
         case DiagCode::E302_ArcZeroRadius: case DiagCode::E303_ParabolaEndNotOnCurve:

@@ -296,6 +296,27 @@ TEST(ReadWords, FunctionWithValue) {
     }
 }
 
+TEST(ReadWords, FunctionValueAfterMinusE118) {
+    // The fast path (a plain line) and the general path (a trailing blank) alike; "-0" has a sign too.
+    Tape t = rd("7\n41-50\n29-20 \n39-0\n41+5\n8\n64\n");
+    EXPECT_EQ(count_code(t.diagnostics(), DiagCode::E118_FunctionValueSign), 3u) << dump(t.diagnostics());
+    for (std::size_t i : {1u, 2u, 3u}) EXPECT_EQ(t.block(i).kind, BlockKind::Invalid) << i;
+    EXPECT_EQ(t.block(4).kind, BlockKind::FunctionValue);
+    const Diagnostic* d = find_code(t.diagnostics(), DiagCode::E118_FunctionValueSign);
+    ASSERT_NE(d, nullptr);
+    EXPECT_EQ(d->severity, Severity::Error);
+    EXPECT_EQ(d->line, 2u);
+    EXPECT_EQ(d->column, 1u);
+    EXPECT_NE(d->message.find("41+value"), std::string::npos) << d->message;
+}
+
+TEST(ReadWords, NegativeDwellNoLongerMakesTheTimeNegative) {
+    // Before E118, 41-50 was a dwell of -50 s: the estimate went below zero.
+    const essi::CheckResult r = essi::check_tape("7\n+100+0\n41-50\n8\n64\n", *builtin_profile("iso6582"));
+    EXPECT_GT(r.stats.estimated_time_s, 0.0);
+    EXPECT_FALSE(r.ok());
+}
+
 TEST(ReadWords, HeadAddresses) {
     Tape t = rd("19\n1+100+200\n2+100+0+50+0-\n2+1+2+3+4+-\n20\n64\n");
     ASSERT_EQ(t.size(), 6u) << dump(t.diagnostics());

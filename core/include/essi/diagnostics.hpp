@@ -33,6 +33,7 @@ enum class DiagCode : std::uint16_t {
     E115_TooManyErrors = 115,      // reading stopped after too many errors (binary file?)
     E116_MisplacedMark = 116,      // % or / with other characters in the same block
     E117_TapeTooLarge = 117,       // more than 4 GiB: positions would not fit
+    E118_FunctionValueSign = 118,  // a machine function's value after a '-' (41-50): the value follows a '+' 
 
     // --- interp ---
     W201_UnknownFunction = 201,       // unassigned or unknown machine function
