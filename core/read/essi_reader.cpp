@@ -178,6 +178,14 @@ std::string describe_byte(unsigned char c) {
     return buf;
 }
 
+// What a message quotes of the input: all of a short text, the start of a long one (a message never grows with
+// the input).
+constexpr std::size_t kExcerptChars = 12;
+std::string excerpt(std::string_view text) {
+    if (text.size() <= kExcerptChars) return std::string(text);
+    return std::string(text.substr(0, kExcerptChars)) + "...";
+}
+
 std::string_view trim(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
     while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
@@ -204,7 +212,7 @@ public:
 private:
     // One line's parse, before classification.
     struct LineParse {
-        int lead_digits = 0;          // digits of the leading unsigned number as written
+        std::size_t lead_digits = 0;  // digits of the leading unsigned number as written (a line may hold 4 G)
         long long lead_value = 0;
         int words = 0;
         std::uint8_t sign_flags = 0;  // Block::kTcNegative / kTpNegative
@@ -492,7 +500,7 @@ std::uint32_t EssiReader::read_plain_lines(std::uint32_t pos, std::uint32_t size
             line_begin_ = offset;
             chunk_blocks_ = blocks;
             LineParse lp;
-            lp.lead_digits = pl.lead_digits;
+            lp.lead_digits = static_cast<std::size_t>(pl.lead_digits);
             lp.lead_value = lead;
             lp.words = n;
             lp.sign_flags = sign_flags_of(pl.negative);
@@ -553,7 +561,7 @@ void EssiReader::after_end_line(std::uint32_t begin, std::uint32_t end) {
 bool EssiReader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& lp) {
     const auto* data = reinterpret_cast<const unsigned char*>(src_.data());
     bool in_word = false;
-    int word_digits = 0;           // significant digits of the current word
+    std::size_t word_digits = 0;   // significant digits of the current word (a line may hold 4 G)
     long long word_value = 0;
     bool word_negative = false;
     std::uint32_t space_at = end;  // first skipped blank; warned about only if the line parses
@@ -708,7 +716,7 @@ void EssiReader::classify(std::uint32_t first, const LineParse& lp, std::size_t 
     if (lp.lead_digits > 0) {
         if (lp.lead_digits > kMaxFunctionDigits) {
             fail(DiagCode::E103_FunctionCodeTooLong,
-                 "machine function " + std::string(src_.substr(first, lp.lead_digits)) + " has " +
+                 "machine function " + excerpt(src_.substr(first, lp.lead_digits)) + " has " +
                      std::to_string(lp.lead_digits) + " digits; expected at most 3 (ISO 6582 3.4.1)");
             return;
         }

@@ -1,0 +1,39 @@
+// Hostile input that only a native test can afford: inputs of gigabytes (the WASM build has no room for them).
+// Each case fails on the code before its fix.
+#include <cstdint>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "../unit/test_util.hpp"
+#include "essi/report.hpp"
+
+namespace {
+
+using essi::DiagCode;
+using essi_test::count_code;
+
+// More digits than an int counts: 2^31 + 3. The digit counters of the reader overflowed (UBSan: signed integer
+// overflow), and the word then read as its first nine digits: a tape that was "ok" with a wrong coordinate.
+constexpr std::size_t kGiantDigits = (std::size_t(1) << 31) + 3;
+
+TEST(HostileInput, AWordOfTwoBillionDigitsIsE104NotAWrongCoordinate) {
+    std::string tape = "+";
+    tape.append(kGiantDigits, '7');
+    tape += "+0\n64\n";
+    const essi::CheckResult r = essi::check_tape(tape, *essi::builtin_profile("iso6582"));
+    EXPECT_EQ(count_code(r.diagnostics, DiagCode::E104_NumberTooLarge), 1u);
+    EXPECT_FALSE(r.ok());
+    EXPECT_EQ(r.stats.motions, 0u);
+    for (const essi::Diagnostic& d : r.diagnostics) EXPECT_LT(d.message.size(), 300u) << d.message.substr(0, 300);
+
+    // The same digits as a leading number: a function code of more than 3 digits (E103, was E105), and its
+    // message quotes the start of the number, not 2 GB of it.
+    tape[0] = '1';
+    const essi::CheckResult f = essi::check_tape(tape, *essi::builtin_profile("iso6582"));
+    EXPECT_EQ(count_code(f.diagnostics, DiagCode::E103_FunctionCodeTooLong), 1u);
+    EXPECT_EQ(count_code(f.diagnostics, DiagCode::E105_WordCount), 0u);
+    for (const essi::Diagnostic& d : f.diagnostics) EXPECT_LT(d.message.size(), 300u) << d.message.substr(0, 300);
+}
+
+}  // namespace
