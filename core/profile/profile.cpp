@@ -3,6 +3,7 @@
 #include "essi/profile.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include <nlohmann/json.hpp>
 
@@ -45,8 +46,35 @@ std::optional<EndCode> parse_end_code(const json& j) {
 }
 
 // Reads the keys of `j` into `p`; each problem becomes one message in `errors`.
+// The values a profile key may take: wide enough for any machine, narrow enough that no length, time or position
+// computed from them overflows to infinity (a unit of 1e308 mm made "inf" reports that were "ok").
+struct Range {
+    double min, max;
+};
+constexpr Range kUnitRange{1e-9, 1000};             // mm per unit increment
+constexpr Range kUnitsRange{0, 1e9};                // tolerances and kerf, in unit increments
+constexpr Range kChordRange{1e-6, 1000};            // mm
+constexpr Range kSecondsRange{0, 1e6};              // dwell and pierce time, s
+constexpr Range kSpeedRange{1e-9, 1e9};             // mm/min
+constexpr Range kPositionRange{-1e9, 1e9};          // mm: offsets and table limits
+
+std::string number_text(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+// A key as an error message quotes it: at most kMaxKeyChars of it.
+constexpr std::size_t kMaxKeyChars = 40;
+std::string key_excerpt(const std::string& key) {
+    if (key.size() <= kMaxKeyChars) return key;
+    std::size_t n = kMaxKeyChars;
+    while (n > 0 && (static_cast<unsigned char>(key[n]) & 0xC0) == 0x80) --n;  // not inside a UTF-8 character
+    return key.substr(0, n) + "...";
+}
+
 void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
-    auto number = [&](const char* key, double& out, double min_value) {
+    auto number = [&](const char* key, double& out, Range range) {
         auto it = j.find(key);
         if (it == j.end()) return;
         if (!it->is_number()) {
@@ -54,8 +82,9 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
             return;
         }
         const double v = it->get<double>();
-        if (!(v >= min_value)) {
-            errors.push_back(std::string("\"") + key + "\" must be at least " + std::to_string(min_value));
+        if (!(v >= range.min && v <= range.max)) {  // (NaN and infinities too)
+            errors.push_back(std::string("\"") + key + "\" must be between " + number_text(range.min) + " and " +
+                             number_text(range.max) + "; found " + number_text(v));
             return;
         }
         out = v;
@@ -89,7 +118,7 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
         else errors.push_back("\"name\" must be a string");
     }
     choice("dialect", p.dialect, {{"iso6582", Dialect::Iso6582}, {"woyda", Dialect::Woyda}});
-    number("unit_mm", p.unit_mm, 1e-9);
+    number("unit_mm", p.unit_mm, kUnitRange);
     choice("whitespace", p.whitespace, {{"skip", WhitespacePolicy::Skip}, {"strict", WhitespacePolicy::Strict}});
     if (auto it = j.find("end_codes"); it != j.end()) {
         if (!it->is_array()) {
@@ -108,18 +137,18 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
             if (!codes.empty() || it->empty()) p.end_codes = codes;
         }
     }
-    number("arc_tolerance", p.arc_tolerance_units, 0);
-    number("chord_tolerance_mm", p.chord_tolerance_mm, 1e-6);
+    number("arc_tolerance", p.arc_tolerance_units, kUnitsRange);
+    number("chord_tolerance_mm", p.chord_tolerance_mm, kChordRange);
     boolean("optional_ignore", p.optional_ignore);
     boolean("rapid_single_block", p.rapid_single_block);
     choice("kerf_value", p.kerf_value, {{"width", KerfValueMeaning::Width}, {"offset", KerfValueMeaning::Offset}});
-    number("kerf", p.kerf_units, 0);
-    number("default_dwell_s", p.default_dwell_s, 0);
-    number("feed_mm_min", p.feed_mm_min, 1e-9);
-    number("rapid_mm_min", p.rapid_mm_min, 1e-9);
-    number("pierce_time_s", p.pierce_time_s, 0);
-    number("setup_offset_x_mm", p.setup_offset_x_mm, -1e12);
-    number("setup_offset_y_mm", p.setup_offset_y_mm, -1e12);
+    number("kerf", p.kerf_units, kUnitsRange);
+    number("default_dwell_s", p.default_dwell_s, kSecondsRange);
+    number("feed_mm_min", p.feed_mm_min, kSpeedRange);
+    number("rapid_mm_min", p.rapid_mm_min, kSpeedRange);
+    number("pierce_time_s", p.pierce_time_s, kSecondsRange);
+    number("setup_offset_x_mm", p.setup_offset_x_mm, kPositionRange);
+    number("setup_offset_y_mm", p.setup_offset_y_mm, kPositionRange);
     if (auto it = j.find("table"); it != j.end()) {
         if (it->is_null()) {
             p.table.reset();
@@ -130,8 +159,10 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
             bool good = true;
             for (int i = 0; i < 4; ++i) {
                 auto f = it->find(keys[i]);
-                if (f == it->end() || !f->is_number()) {
-                    errors.push_back(std::string("\"table\" needs a number \"") + keys[i] + "\"");
+                if (f == it->end() || !f->is_number() ||
+                    !(f->get<double>() >= kPositionRange.min && f->get<double>() <= kPositionRange.max)) {
+                    errors.push_back(std::string("\"table\" needs a number \"") + keys[i] + "\" between " +
+                                     number_text(kPositionRange.min) + " and " + number_text(kPositionRange.max));
                     good = false;
                 } else {
                     *fields[i] = f->get<double>();
@@ -153,7 +184,7 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
     for (auto it = j.begin(); it != j.end(); ++it) {
         bool known = false;
         for (const char* k : kKnownKeys) known = known || it.key() == k;
-        if (!known) errors.push_back("unknown key \"" + it.key() + "\"");
+        if (!known) errors.push_back("unknown key \"" + key_excerpt(it.key()) + "\"");
     }
 }
 

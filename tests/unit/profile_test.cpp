@@ -136,6 +136,41 @@ TEST(ProfileParse, MalformedJsonE402NeverThrows) {
     }
 }
 
+TEST(ProfileParse, ValuesBeyondTheirRangeAreErrorsNamingKeyAndRange) {
+    // A unit of 1e308 mm gave "inf" lengths and a report that said "ok".
+    struct Case {
+        const char* json;
+        const char* key;
+    } cases[] = {{R"({"unit_mm": 1e308})", "\"unit_mm\" must be between"},
+                 {R"({"feed_mm_min": 1e300})", "\"feed_mm_min\" must be between"},
+                 {R"({"rapid_mm_min": -5})", "\"rapid_mm_min\" must be between"},
+                 {R"({"pierce_time_s": 1e20})", "\"pierce_time_s\" must be between"},
+                 {R"({"kerf": 1e300})", "\"kerf\" must be between"},
+                 {R"({"setup_offset_x_mm": 1e300})", "\"setup_offset_x_mm\" must be between"},
+                 {R"({"table": {"min_x_mm": -1e300, "min_y_mm": 0, "max_x_mm": 10, "max_y_mm": 10}})",
+                  "\"table\" needs a number \"min_x_mm\" between"}};
+    for (const Case& c : cases) {
+        const ProfileResult r = parse_profile(c.json);
+        EXPECT_FALSE(r.profile.has_value()) << c.json;
+        ASSERT_EQ(r.diagnostics.size(), 1u) << c.json;
+        EXPECT_NE(r.diagnostics[0].message.find(c.key), std::string::npos) << r.diagnostics[0].message;
+    }
+    // The largest allowed values still give finite numbers.
+    const ProfileResult big = parse_profile(R"({"unit_mm": 1000, "feed_mm_min": 1e9})");
+    ASSERT_TRUE(big.profile.has_value());
+    const essi::CheckResult checked = essi::check_tape("7\n+999999999+999999999\n8\n64\n", *big.profile);
+    EXPECT_TRUE(std::isfinite(checked.stats.cut_length_mm));
+    EXPECT_TRUE(std::isfinite(checked.stats.estimated_time_s));
+}
+
+TEST(ProfileParse, AnUnknownKeyIsQuotedShort) {
+    const std::string key(100000, 'k');
+    const ProfileResult r = parse_profile("{\"" + key + "\": 1}");
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_LT(r.diagnostics[0].message.size(), 100u);
+    EXPECT_NE(r.diagnostics[0].message.find("unknown key \"kkkk"), std::string::npos);
+}
+
 TEST(ProfileParse, SettingsTakeEffect) {
     ProfileResult r = parse_profile(R"({"feed_mm_min": 600, "pierce_time_s": 0, "rapid_mm_min": 6000})");
     ASSERT_TRUE(r.profile.has_value()) << dump(r.diagnostics);
