@@ -81,10 +81,10 @@ std::string text_file_block(const BatchItem& item, bool quiet) {
     std::string text;
     for (const Diagnostic& d : r.result.diagnostics) {
         if (quiet && d.severity == Severity::Note) continue;
-        text += diagnostic_line(r.path, d);
+        text += diagnostic_line(r.display_path(), d);
         text += '\n';
     }
-    if (r.omitted() > 0) text += r.path + ": note: " + omitted_text(r) + "\n";
+    if (r.omitted() > 0) text += r.display_path() + ": note: " + omitted_text(r) + "\n";
     if (!quiet) {
         text += file_stats_line(r);
         text += '\n';
@@ -114,9 +114,9 @@ std::string github_escape_property(std::string_view s) { return github_escape(s,
 
 std::string github_file_block(const BatchItem& item) {
     const FileReport& r = item.report;
-    const std::string file = github_escape_property(r.path);
+    const std::string file = github_escape_property(r.display_path());
     if (!item.read_ok)
-        return "::error file=" + file + ",title=essi::" + github_escape_data("cannot read " + r.path + ": " + item.error) +
+        return "::error file=" + file + ",title=essi::" + github_escape_data("cannot read " + r.display_path() + ": " + item.error) +
                "\n";
     std::string out;
     for (const Diagnostic& d : r.result.diagnostics) {
@@ -175,17 +175,17 @@ std::string junit_report(std::span<const BatchItem> items, std::string_view prof
          "\"/>\n      <property name=\"essi.version\" value=\"" ESSIKIT_VERSION "\"/>\n    </properties>\n";
     for (const BatchItem& it : items) {
         const FileReport& r = it.report;
-        const std::string path = xml_escape(r.path);
+        const std::string path = xml_escape(r.display_path());
         x += "    <testcase classname=\"essi.check\" name=\"" + path + "\" file=\"" + path + "\" time=\"" +
              fmt_time(it.seconds) + "\"";
         if (!it.read_ok) {
-            x += ">\n      <error type=\"io\" message=\"" + xml_escape("cannot read " + r.path + ": " + it.error) +
+            x += ">\n      <error type=\"io\" message=\"" + xml_escape("cannot read " + r.display_path() + ": " + it.error) +
                  "\"/>\n    </testcase>\n";
             continue;
         }
         std::string diags;
-        for (const Diagnostic& d : r.result.diagnostics) diags += diagnostic_line(r.path, d) + "\n";
-        if (r.omitted() > 0) diags += r.path + ": note: " + omitted_text(r) + "\n";
+        for (const Diagnostic& d : r.result.diagnostics) diags += diagnostic_line(r.display_path(), d) + "\n";
+        if (r.omitted() > 0) diags += r.display_path() + ": note: " + omitted_text(r) + "\n";
         const std::string stats = file_stats_line(r);
         if (file_fails(r, fail_on)) {
             std::string type;
@@ -207,9 +207,8 @@ std::string junit_report(std::span<const BatchItem> items, std::string_view prof
 
 // --- SARIF -----------------------------------------------------------------------------------------------
 std::string path_to_uri(std::string_view path) {
+    // Percent-encoded byte by byte: a backslash is a character of a Linux file name (%5C), not a separator.
     std::string p(path);
-    for (char& c : p)
-        if (c == '\\') c = '/';
     while (p.size() > 2 && p.compare(0, 2, "./") == 0) p.erase(0, 2);
     std::string out;
     if (!p.empty() && p[0] == '/') out = "file://";
@@ -259,12 +258,12 @@ nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view p
     bool all_read = true;
     for (const BatchItem& it : items) {
         const FileReport& r = it.report;
-        const std::string uri = path_to_uri(r.path);
+        const std::string uri = path_to_uri(r.path);  // the bytes as given, percent-encoded
         nlohmann::json artifact = {{"artifactLocation", {{"uri", uri}}}};
         if (!it.read_ok) {
             all_read = false;
             notifications.push_back({{"level", "error"},
-                                     {"message", {{"text", "cannot read " + r.path + ": " + it.error}}},
+                                     {"message", {{"text", "cannot read " + r.display_path() + ": " + it.error}}},
                                      {"locations", {{{"physicalLocation", artifact}}}}});
             continue;
         }
@@ -284,7 +283,7 @@ nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view p
         }
         if (r.omitted() > 0)
             notifications.push_back({{"level", "note"},
-                                     {"message", {{"text", r.path + ": " + omitted_text(r)}}},
+                                     {"message", {{"text", r.display_path() + ": " + omitted_text(r)}}},
                                      {"locations", {{{"physicalLocation", artifact}}}}});
     }
     const std::string base = docs_base(docs_url);

@@ -72,7 +72,7 @@ std::optional<essi::Profile> resolve_profile(const std::string& arg) {
 
     const essi::native::ReadResult file = essi::native::read_whole_file(name);
     if (!file.ok) {
-        err("essi: unknown profile '" + name + "': not a built-in profile (" +
+        err("essi: unknown profile '" + essi::display_text(name) + "': not a built-in profile (" +
             join(essi::builtin_profile_names(), ", ") + ") and cannot read it as a file: " + file.error + "\n");
         return std::nullopt;
     }
@@ -106,7 +106,7 @@ std::vector<FileReport> check_files(const std::vector<std::string>& args, const 
     for (const std::string& path : paths) {
         essi::native::ReadResult file = essi::native::read_whole_file(path);
         if (!file.ok) {
-            err("essi: cannot read " + path + ": " + file.error + "\n");
+            err("essi: cannot read " + essi::display_text(path) + ": " + file.error + "\n");
             io_failed = true;
             continue;
         }
@@ -165,7 +165,7 @@ int run_check(const std::vector<std::string>& paths, const CheckOptions& o) {
     check_batch(files, *profile, batch, [&](BatchItem&& item) {
         totals.add(item, fail_on);
         if (!item.read_ok) {
-            err("essi: cannot read " + item.report.path + ": " + item.error + "\n");
+            err("essi: cannot read " + item.report.display_path() + ": " + item.error + "\n");
             io_failed = true;
         }
         if (o.format == "text") {
@@ -237,11 +237,11 @@ int run_render(const RenderCliOptions& o) {
     if (!profile) return kExitUsage;
     const essi::native::ReadResult file = essi::native::read_whole_file(o.path);
     if (!file.ok) {
-        err("essi: cannot read " + o.path + ": " + file.error + "\n");
+        err("essi: cannot read " + essi::display_text(o.path) + ": " + file.error + "\n");
         return kExitUsage;
     }
     essi::native::RenderOptions options;
-    options.title = o.path == "-" ? std::string("-") : std::filesystem::path(o.path).filename().string();
+    options.title = o.path == "-" ? std::string("-") : essi::display_text(std::filesystem::path(o.path).filename().string());
     options.width_px = o.width;
     options.show_travel = !o.no_travel;
     const essi::native::RenderResult r = essi::native::render_svg(file.bytes, *profile, options);
@@ -280,8 +280,8 @@ void report_errors_briefly(const std::vector<FileReport>& reports) {
     for (const FileReport& r : reports) {
         const std::size_t n = r.result.count(essi::Severity::Error);
         if (n > 0)
-            err("essi: " + r.path + " has " + std::to_string(n) + (n == 1 ? " error" : " errors") +
-                " (see essi check " + r.path + ")\n");
+            err("essi: " + r.display_path() + " has " + std::to_string(n) + (n == 1 ? " error" : " errors") +
+                " (see essi check " + r.display_path() + ")\n");
     }
 }
 
@@ -310,7 +310,7 @@ int run_trace(const std::string& path, const std::string& profile_arg) {
     if (!profile) return kExitUsage;
     const essi::native::ReadResult file = essi::native::read_whole_file(path);
     if (!file.ok) {
-        err("essi: cannot read " + path + ": " + file.error + "\n");
+        err("essi: cannot read " + essi::display_text(path) + ": " + file.error + "\n");
         return kExitUsage;
     }
     // The trace of a big tape is hundreds of MB: it is streamed in chunks, never held whole.

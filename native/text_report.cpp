@@ -71,7 +71,7 @@ std::string diagnostic_line(std::string_view path, const Diagnostic& d) {
 
 std::string file_stats_line(const FileReport& file) {
     const Stats& st = file.result.stats;
-    std::string s = file.path;
+    std::string s = file.display_path();
     s += ": ";
     s += verdict(file);
     s += "; cut " + mm(st.cut_length_mm);
@@ -104,7 +104,7 @@ std::string summary_line(std::span<const FileReport> files, std::string_view pro
 std::string stats_block(const FileReport& file) {
     const Stats& st = file.result.stats;
     std::vector<std::pair<std::string, std::string>> rows;
-    rows.emplace_back("file", file.path);
+    rows.emplace_back("file", file.display_path());
     rows.emplace_back("cut length", mm(st.cut_length_mm));
     rows.emplace_back("mark length", mm(st.mark_length_mm));
     rows.emplace_back("travel length", mm(st.travel_length_mm));

@@ -81,7 +81,7 @@ nlohmann::json stats_to_json(const Stats& s) {
 
 nlohmann::json file_report_to_json(const FileReport& file) {
     nlohmann::json j = nlohmann::json::object();
-    j["path"] = file.path;
+    j["path"] = file.display_path();
     j["ok"] = file.ok();
     j["diagnostics"] = diagnostics_to_json(file.result.diagnostics);
     j["stats"] = stats_to_json(file.result.stats);
@@ -114,7 +114,7 @@ nlohmann::json stats_report_to_json(std::span<const FileReport> files, std::stri
     nlohmann::json out = nlohmann::json::object();
     nlohmann::json arr = nlohmann::json::array();
     for (const FileReport& f : files) {
-        arr.push_back({{"path", f.path}, {"stats", stats_to_json(f.result.stats)}});
+        arr.push_back({{"path", f.display_path()}, {"stats", stats_to_json(f.result.stats)}});
     }
     out["files"] = std::move(arr);
     out["profile"] = std::string(profile_name);

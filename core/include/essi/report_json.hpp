@@ -11,6 +11,7 @@
 
 #include "essi/diagnostics.hpp"
 #include "essi/report.hpp"
+#include "essi/text.hpp"
 
 namespace essi {
 
@@ -32,6 +33,9 @@ struct FileReport {
     std::size_t omitted_warnings = 0;
     std::size_t omitted_notes = 0;
 
+    // The path as every report writes it: valid UTF-8 without control characters (essi/text.hpp). `path`
+    // keeps the bytes as given (a SARIF URI is made from them).
+    [[nodiscard]] std::string display_path() const { return display_text(path); }
     [[nodiscard]] std::size_t omitted() const { return omitted_errors + omitted_warnings + omitted_notes; }
     [[nodiscard]] std::size_t errors() const { return result.count(Severity::Error) + omitted_errors; }
     [[nodiscard]] std::size_t warnings() const { return result.count(Severity::Warning) + omitted_warnings; }

@@ -1,0 +1,20 @@
+// Text that goes into a report, a terminal or a markup file: valid UTF-8 and no control characters, whatever
+// bytes it was made from (a file name on Linux is any bytes but NUL and '/').
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace essi {
+
+// The length of the valid UTF-8 character at s[i] (1-4), or 0 when the bytes there are not one (a stray
+// continuation byte, an overlong form, a surrogate, beyond U+10FFFF, cut off).
+[[nodiscard]] std::size_t utf8_char_length(std::string_view s, std::size_t i);
+[[nodiscard]] bool is_valid_utf8(std::string_view s);
+
+// `s` as text that is safe to print anywhere: valid UTF-8 characters are kept, every other byte and every control
+// character (below U+0020, and DEL) is written as \xNN. Text that is already safe comes back unchanged.
+[[nodiscard]] std::string display_text(std::string_view s);
+
+}  // namespace essi

@@ -1,0 +1,62 @@
+// Safe text for reports (essi/text.hpp).
+#include "essi/text.hpp"
+
+#include <cstdint>
+
+namespace essi {
+
+namespace {
+
+bool is_continuation(unsigned char c) { return (c & 0xC0) == 0x80; }
+
+}  // namespace
+
+std::size_t utf8_char_length(std::string_view s, std::size_t i) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+    const unsigned char c = byte(i);
+    if (c < 0x80) return 1;
+    std::size_t n = 0;
+    std::uint32_t code = 0, min = 0;
+    if ((c & 0xE0) == 0xC0) n = 2, code = c & 0x1F, min = 0x80;
+    else if ((c & 0xF0) == 0xE0) n = 3, code = c & 0x0F, min = 0x800;
+    else if ((c & 0xF8) == 0xF0) n = 4, code = c & 0x07, min = 0x10000;
+    else return 0;
+    if (i + n > s.size()) return 0;
+    for (std::size_t k = 1; k < n; ++k) {
+        if (!is_continuation(byte(i + k))) return 0;
+        code = (code << 6) | (byte(i + k) & 0x3F);
+    }
+    const bool surrogate = code >= 0xD800 && code <= 0xDFFF;
+    return code < min || surrogate || code > 0x10FFFF ? 0 : n;
+}
+
+bool is_valid_utf8(std::string_view s) {
+    for (std::size_t i = 0; i < s.size();) {
+        const std::size_t n = utf8_char_length(s, i);
+        if (n == 0) return false;
+        i += n;
+    }
+    return true;
+}
+
+std::string display_text(std::string_view s) {
+    static constexpr char kHex[] = "0123456789ABCDEF";
+    std::string out;
+    out.reserve(s.size());
+    for (std::size_t i = 0; i < s.size();) {
+        const auto c = static_cast<unsigned char>(s[i]);
+        const std::size_t n = c < 0x20 || c == 0x7F ? 0 : utf8_char_length(s, i);
+        if (n == 0) {
+            out += "\\x";
+            out += kHex[c >> 4];
+            out += kHex[c & 15];
+            ++i;
+            continue;
+        }
+        out.append(s.substr(i, n));
+        i += n;
+    }
+    return out;
+}
+
+}  // namespace essi
