@@ -1,0 +1,34 @@
+// Safe text for reports (essi/text.hpp): UTF-8 validation and \xNN for what is not printable text.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "essi/text.hpp"
+
+namespace {
+
+using essi::display_text;
+using essi::is_valid_utf8;
+
+TEST(Text, ValidUtf8) {
+    EXPECT_TRUE(is_valid_utf8("plain ASCII"));
+    EXPECT_TRUE(is_valid_utf8("\xC3\x9C" "ber \xE4\xB8\xAD\xE6\x96\x87 \xF0\x9F\x94\xA5"));  // Ü, 中文, an emoji
+    EXPECT_FALSE(is_valid_utf8("\xFF"));
+    EXPECT_FALSE(is_valid_utf8("\xC3"));              // cut off
+    EXPECT_FALSE(is_valid_utf8("\xC0\xAF"));          // overlong '/'
+    EXPECT_FALSE(is_valid_utf8("\xED\xA0\x80"));      // a surrogate
+    EXPECT_FALSE(is_valid_utf8("\xF4\x90\x80\x80"));  // beyond U+10FFFF
+    EXPECT_FALSE(is_valid_utf8("\x80"));              // a stray continuation byte
+}
+
+TEST(Text, DisplayTextKeepsTextAndNamesTheRest) {
+    EXPECT_EQ(display_text("tapes/PR002.esi"), "tapes/PR002.esi");
+    EXPECT_EQ(display_text("Z\xC3\xBC" "ge/\xE9\x92\xA2\xE6\x9D\xBF.esi"), "Z\xC3\xBC" "ge/\xE9\x92\xA2\xE6\x9D\xBF.esi");
+    EXPECT_EQ(display_text("bad\xFF\xFE.esi"), "bad\\xFF\\xFE.esi");
+    EXPECT_EQ(display_text("a\x1B[31m\x7F\tb\n"), "a\\x1B[31m\\x7F\\x09b\\x0A");
+    EXPECT_EQ(display_text(std::string("nul\0x", 5)), "nul\\x00x");
+    EXPECT_EQ(display_text("\xE4\xB8"), "\\xE4\\xB8");  // a character cut off: its bytes
+    EXPECT_TRUE(is_valid_utf8(display_text("\xC0\xAF\xED\xA0\x80\x80")));
+}
+
+}  // namespace
