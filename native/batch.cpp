@@ -88,7 +88,7 @@ void check_batch(const std::vector<std::string>& files, const Profile& profile, 
         const auto t0 = std::chrono::steady_clock::now();
         BatchItem& item = items[i];
         item.report.path = files[i];
-        ReadResult file = read_whole_file(files[i]);
+        ReadResult file = read_whole_file(files[i], options.max_size);
         if (!file.ok) {
             item.error = file.error;
         } else {

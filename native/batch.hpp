@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "essi/profile.hpp"
+#include "file_io.hpp"
 #include "essi/report_json.hpp"
 
 namespace essi::native {
@@ -43,6 +44,7 @@ struct BatchItem {
 struct BatchOptions {
     unsigned jobs = 1;  // worker threads
     std::size_t max_diagnostics = std::numeric_limits<std::size_t>::max();  // per file
+    std::uint64_t max_size = kDefaultMaxInputBytes;  // per file (--max-size)
 };
 
 // Reads and checks `files` on options.jobs threads and calls emit for each, on the calling thread, in the

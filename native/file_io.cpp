@@ -1,6 +1,7 @@
 #include "file_io.hpp"
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <new>
@@ -16,10 +17,16 @@ namespace {
 
 constexpr std::size_t kReadChunkBytes = 1 << 16;
 
-// Reads what is left of `f` in chunks (for streams whose size is unknown).
-bool read_chunks(std::FILE* f, std::string& out, std::string& error) {
+// Reads what is left of `f` in chunks (for streams whose size is unknown), at most `max_bytes` in all.
+bool read_chunks(std::FILE* f, std::string& out, std::string& error, std::uint64_t max_bytes) {
     std::size_t used = out.size();
     for (;;) {
+        if (used > max_bytes) {
+            out.clear();
+            out.shrink_to_fit();
+            error = too_large_text(used, max_bytes, false);
+            return false;
+        }
         out.resize(used + kReadChunkBytes);
         const std::size_t n = std::fread(out.data() + used, 1, kReadChunkBytes, f);
         used += n;
@@ -30,16 +37,36 @@ bool read_chunks(std::FILE* f, std::string& out, std::string& error) {
         error = std::strerror(errno);
         return false;
     }
+    if (used > max_bytes) {
+        out.clear();
+        error = too_large_text(used, max_bytes, false);
+        return false;
+    }
     return true;
+}
+
+std::string size_text(std::uint64_t bytes) {
+    char buf[48];
+    if (bytes >= (1ull << 30) && bytes % (1ull << 30) == 0) std::snprintf(buf, sizeof buf, "%lluGB", static_cast<unsigned long long>(bytes >> 30));
+    else if (bytes >= (1ull << 20) && bytes % (1ull << 20) == 0) std::snprintf(buf, sizeof buf, "%lluMB", static_cast<unsigned long long>(bytes >> 20));
+    else if (bytes >= (1ull << 10) && bytes % (1ull << 10) == 0) std::snprintf(buf, sizeof buf, "%lluKB", static_cast<unsigned long long>(bytes >> 10));
+    else std::snprintf(buf, sizeof buf, "%llu", static_cast<unsigned long long>(bytes));
+    return buf;
 }
 
 }  // namespace
 
-ReadResult read_whole_file(const std::string& path) {
+std::string too_large_text(std::uint64_t size, std::uint64_t max_bytes, bool size_known) {
+    const std::string limit = "--max-size " + size_text(max_bytes) + " (" + std::to_string(max_bytes) + " bytes)";
+    return (size_known ? "the file has " + std::to_string(size) + " bytes, more than " : "the input is larger than ") +
+           limit + "; raise --max-size to read it";
+}
+
+ReadResult read_whole_file(const std::string& path, std::uint64_t max_bytes) {
     ReadResult r;
     try {
         if (path == "-") {
-            r.ok = read_chunks(stdin, r.owned, r.error);
+            r.ok = read_chunks(stdin, r.owned, r.error, max_bytes);
             r.bytes = r.owned;
             return r;
         }
@@ -50,6 +77,10 @@ ReadResult read_whole_file(const std::string& path) {
         }
         if (S_ISDIR(st.st_mode)) {
             r.error = std::strerror(EISDIR);
+            return r;
+        }
+        if (S_ISREG(st.st_mode) && static_cast<std::uint64_t>(st.st_size) > max_bytes) {
+            r.error = too_large_text(static_cast<std::uint64_t>(st.st_size), max_bytes, true);  // not mapped
             return r;
         }
         if (S_ISREG(st.st_mode) && st.st_size > 0) {
@@ -91,11 +122,11 @@ ReadResult read_whole_file(const std::string& path) {
                 const int c = std::fgetc(f);
                 if (c != EOF) {
                     r.owned.push_back(static_cast<char>(c));
-                    ok = read_chunks(f, r.owned, r.error);
+                    ok = read_chunks(f, r.owned, r.error, max_bytes);
                 }
             }
         } else {
-            ok = read_chunks(f, r.owned, r.error);
+            ok = read_chunks(f, r.owned, r.error, max_bytes);
         }
         std::fclose(f);
         r.ok = ok;

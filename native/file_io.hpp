@@ -1,6 +1,7 @@
 // Reading whole files into memory for the CLI (and later the server). Core never touches files.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -17,8 +18,19 @@ struct ReadResult {
     std::shared_ptr<const void> mapping;  // unmaps on destruction
 };
 
+// The largest input the CLI reads by default (`--max-size`): far above any real tape, far below the memory of
+// the machines it runs on. Memory of `essi check` is about the input plus a constant (docs/security.md).
+constexpr std::uint64_t kDefaultMaxInputBytes = 1ull << 30;  // 1 GiB
+// Profile files are small: a larger one is not a profile.
+constexpr std::uint64_t kMaxProfileBytes = 1ull << 20;       // 1 MiB
+
 // Reads the whole file at `path` with one read when its size is known (regular files), in chunks
-// otherwise (pipes, devices). "-" reads standard input. Never throws.
-[[nodiscard]] ReadResult read_whole_file(const std::string& path);
+// otherwise (pipes, devices). "-" reads standard input. Never throws. A file of more than `max_bytes` is not
+// read (a regular file is not even mapped): ok is false and the error says the size and the limit; a stream
+// is read up to the limit and then refused the same way.
+[[nodiscard]] ReadResult read_whole_file(const std::string& path, std::uint64_t max_bytes = kDefaultMaxInputBytes);
+
+// "the file has more than 1 GiB (--max-size 1GB)": the error of a file beyond `max_bytes`.
+[[nodiscard]] std::string too_large_text(std::uint64_t size, std::uint64_t max_bytes, bool size_known);
 
 }  // namespace essi::native

@@ -70,7 +70,7 @@ std::optional<essi::Profile> resolve_profile(const std::string& arg) {
     const std::string name = arg.empty() ? std::string("iso6582") : arg;
     if (auto p = essi::builtin_profile(name)) return p;
 
-    const essi::native::ReadResult file = essi::native::read_whole_file(name);
+    const essi::native::ReadResult file = essi::native::read_whole_file(name, essi::native::kMaxProfileBytes);
     if (!file.ok) {
         err("essi: unknown profile '" + essi::display_text(name) + "': not a built-in profile (" +
             join(essi::builtin_profile_names(), ", ") + ") and cannot read it as a file: " + file.error + "\n");
@@ -99,12 +99,12 @@ std::vector<std::string> expand_paths(const std::vector<std::string>& paths, boo
 // Reads and checks every path (directories: the tape files below them). Unreadable files are reported on
 // stderr and skipped (io_failed set).
 std::vector<FileReport> check_files(const std::vector<std::string>& args, const essi::Profile& profile,
-                                    bool& io_failed) {
+                                    std::uint64_t max_size, bool& io_failed) {
     const std::vector<std::string> paths = expand_paths(args, io_failed);
     std::vector<FileReport> reports;
     reports.reserve(paths.size());
     for (const std::string& path : paths) {
-        essi::native::ReadResult file = essi::native::read_whole_file(path);
+        essi::native::ReadResult file = essi::native::read_whole_file(path, max_size);
         if (!file.ok) {
             err("essi: cannot read " + essi::display_text(path) + ": " + file.error + "\n");
             io_failed = true;
@@ -140,6 +140,7 @@ struct CheckOptions {
     long long max_diagnostics = -1;  // -1 = all
     bool quiet = false;
     std::string docs_url = std::string(essi::native::kDefaultDocsUrl);
+    std::uint64_t max_size = essi::native::kDefaultMaxInputBytes;
 };
 
 int run_check(const std::vector<std::string>& paths, const CheckOptions& o) {
@@ -157,6 +158,7 @@ int run_check(const std::vector<std::string>& paths, const CheckOptions& o) {
     BatchOptions batch;
     batch.jobs = o.jobs == 0 ? hardware_jobs() : o.jobs;
     if (o.max_diagnostics >= 0) batch.max_diagnostics = static_cast<std::size_t>(o.max_diagnostics);
+    batch.max_size = o.max_size;
     const FailOn fail_on = o.fail_on == "warning" ? FailOn::Warning : o.fail_on == "never" ? FailOn::Never : FailOn::Error;
 
     BatchTotals totals;
@@ -230,12 +232,13 @@ struct RenderCliOptions {
     bool png = false;
     bool no_travel = false;
     double width = 1200;
+    std::uint64_t max_size = essi::native::kDefaultMaxInputBytes;
 };
 
 int run_render(const RenderCliOptions& o) {
     const auto profile = resolve_profile(o.profile);
     if (!profile) return kExitUsage;
-    const essi::native::ReadResult file = essi::native::read_whole_file(o.path);
+    const essi::native::ReadResult file = essi::native::read_whole_file(o.path, o.max_size);
     if (!file.ok) {
         err("essi: cannot read " + essi::display_text(o.path) + ": " + file.error + "\n");
         return kExitUsage;
@@ -285,11 +288,12 @@ void report_errors_briefly(const std::vector<FileReport>& reports) {
     }
 }
 
-int run_stats(const std::vector<std::string>& paths, const std::string& format, const std::string& profile_arg) {
+int run_stats(const std::vector<std::string>& paths, const std::string& format, const std::string& profile_arg,
+              std::uint64_t max_size) {
     const auto profile = resolve_profile(profile_arg);
     if (!profile) return kExitUsage;
     bool io_failed = false;
-    const auto reports = check_files(paths, *profile, io_failed);
+    const auto reports = check_files(paths, *profile, max_size, io_failed);
     if (format == "json") {
         out(essi::stats_report_to_json(reports, profile->name).dump(kJsonIndent));
         out("\n");
@@ -305,10 +309,10 @@ int run_stats(const std::vector<std::string>& paths, const std::string& format, 
     return finish(io_failed ? kExitUsage : any_errors(reports) ? kExitTapeErrors : kExitOk);
 }
 
-int run_trace(const std::string& path, const std::string& profile_arg) {
+int run_trace(const std::string& path, const std::string& profile_arg, std::uint64_t max_size) {
     const auto profile = resolve_profile(profile_arg);
     if (!profile) return kExitUsage;
-    const essi::native::ReadResult file = essi::native::read_whole_file(path);
+    const essi::native::ReadResult file = essi::native::read_whole_file(path, max_size);
     if (!file.ok) {
         err("essi: cannot read " + essi::display_text(path) + ": " + file.error + "\n");
         return kExitUsage;
@@ -347,6 +351,13 @@ int main(int argc, char** argv) {
     std::vector<std::string> paths;
     std::string trace_path;
     std::string show_arg;
+    std::uint64_t max_size = essi::native::kDefaultMaxInputBytes;  // stats and trace (check and render: their options)
+    const auto add_max_size_option = [](CLI::App* sub, std::uint64_t& value) {
+        sub->add_option("--max-size", value,
+                        "Largest input read, file or standard input (suffixes KB MB GB: 1024-based; default 1GB)")
+            ->transform(CLI::AsSizeValue(false))
+            ->type_name("SIZE");
+    };
 
     const auto add_profile_option = [&](CLI::App* sub) {
         sub->add_option("--profile", profile_arg,
@@ -389,20 +400,24 @@ int main(int argc, char** argv) {
     check->add_option("--docs-url", check_opts.docs_url,
                       "Base URL of the docs/ folder for SARIF help links (helpUri = URL/diagnostics.md#e301)")
         ->capture_default_str();
+    add_max_size_option(check, check_opts.max_size);
     check->add_option("PATH", paths, "Tape files or directories ('-' reads standard input)")->required();
 
     CLI::App* stats = app.add_subcommand("stats", "Statistics of tapes: lengths, pierces, time, extent");
     add_format_option(stats);
     add_profile_option(stats);
+    add_max_size_option(stats, max_size);
     stats->add_option("PATH", paths, "Tape files ('-' reads standard input)")->required();
 
     CLI::App* trace = app.add_subcommand("trace", "Print the motion stream of a tape, one record a line");
     add_profile_option(trace);
+    add_max_size_option(trace, max_size);
     trace->add_option("PATH", trace_path, "Tape file ('-' reads standard input)")->required();
 
     RenderCliOptions render_opts;
     CLI::App* render = app.add_subcommand("render", "Draw a tape as SVG (or PNG): motion, pierces, errors, a legend");
     render->add_option("PATH", render_opts.path, "Tape file ('-' reads standard input)")->required();
+    add_max_size_option(render, render_opts.max_size);
     render->add_option("-o,--output", render_opts.output, "Output file ('-' = stdout; default NAME.svg)");
     render->add_option("--profile", render_opts.profile, "Built-in profile name or JSON profile file")
         ->type_name("NAME|FILE");
@@ -446,8 +461,8 @@ int main(int argc, char** argv) {
     }
 
     if (*check) return run_check(paths, check_opts);
-    if (*stats) return run_stats(paths, format, profile_arg);
-    if (*trace) return run_trace(trace_path, profile_arg);
+    if (*stats) return run_stats(paths, format, profile_arg, max_size);
+    if (*trace) return run_trace(trace_path, profile_arg, max_size);
     if (*render) return run_render(render_opts);
     if (*show) return run_profile_show(show_arg);
     if (*list) return run_profile_list();
