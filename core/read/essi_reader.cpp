@@ -21,6 +21,7 @@ constexpr int kMaxFunctionDigits = 3;          // ISO 6582 3.4.1
 // Words of a line read by the fast path; a line with more goes the general way (it is an error anyway).
 // The fast path makes room for this many words before it reads a line.
 constexpr int kMaxPlainWords = 8;
+constexpr std::size_t kMaxBlockWords = 6;       // a parabola's DX DY XP YP TC TP: the most a block holds
 
 enum CharClass : std::uint8_t { kOther, kDigit, kPlus, kMinus, kSpace, kLineEnd, kPercent, kSlash, kEquals, kHigh };
 
@@ -308,10 +309,12 @@ void EssiReader::push_block(std::uint32_t offset, BlockKind kind, std::uint16_t 
 }
 
 void EssiReader::reserve_whole(Tape& tape) const {
-    // A block per line, a word per sign: no reallocation while reading, no slack to give back.
+    // A block per line, a word per sign (but at most kMaxBlockWords a block are kept), and the fast path's room
+    // for the last line: no reallocation while reading, no slack to give back.
     const ByteCounts n = count_bytes(src_);
-    blocks_of(tape).reserve(std::max(n.lf, n.cr) + 1);
-    words_of(tape).reserve(n.signs + kMaxPlainWords);  // the fast path's room for the last line
+    const std::size_t blocks = std::max(n.lf, n.cr) + 1;
+    blocks_of(tape).reserve(blocks);
+    words_of(tape).reserve(std::min(n.signs, kMaxBlockWords * blocks) + kMaxPlainWords);
     word_index_of(tape).reserve(blocks_of(tape).capacity() / Tape::kWordIndexStride + 1);
 }
 
@@ -575,6 +578,9 @@ bool EssiReader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& 
             return false;
         }
         ++lp.words;
+        // A block holds at most kMaxBlockWords words: the ones after them are only counted (for the error), so
+        // that a line of a billion '+' costs no memory per '+'.
+        if (lp.words > kMaxBlockWords) return true;
         if (lp.words == 1 && word_negative) lp.value_negative = true;
         if (lp.words == 5 && word_negative) lp.sign_flags |= Block::kTcNegative;
         if (lp.words == 6 && word_negative) lp.sign_flags |= Block::kTpNegative;

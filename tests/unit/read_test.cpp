@@ -317,6 +317,20 @@ TEST(ReadWords, NegativeDwellNoLongerMakesTheTimeNegative) {
     EXPECT_FALSE(r.ok());
 }
 
+TEST(ReadWords, ALineOfSignsCostsNoMemoryPerSign) {
+    // A line of a million '+' is one block of a million words (E105): the reader kept every word (4 bytes each,
+    // and as much again reserved by read_tape), about 5 bytes of memory per byte of input.
+    const std::string line(1000000, '+');
+    const Tape t = rd("7\n" + line + "\n8\n64\n");
+    EXPECT_EQ(count_code(t.diagnostics(), DiagCode::E105_WordCount), 1u) << dump(t.diagnostics());
+    EXPECT_NE(t.diagnostics().front().message.find("1000000 signed words"), std::string::npos);
+    EXPECT_LT(t.memory_bytes(), 4096u);
+    TapeReader reader(line + "+1+1\n", *builtin_profile("iso6582"));  // a chunk at a time, as a check reads
+    Tape chunk;
+    ASSERT_TRUE(reader.read_chunk(chunk, 100));
+    EXPECT_LT(chunk.memory_bytes(), 4096u);
+}
+
 TEST(ReadWords, HeadAddresses) {
     Tape t = rd("19\n1+100+200\n2+100+0+50+0-\n2+1+2+3+4+-\n20\n64\n");
     ASSERT_EQ(t.size(), 6u) << dump(t.diagnostics());
