@@ -2,10 +2,11 @@
 # (Debian packages, ImGui and Google Benchmark sources) and returns in a second when everything is there.
 #
 #   make run     build both runtimes (CLI + browser viewer) and start `essi serve` on http://127.0.0.1:8080/
-#   make test    build both runtimes and run the whole suite natively and under node (WASM) + browser e2e
+#   make test    build both runtimes and run the whole suite natively and under node (WASM) + browser e2e, and the
+#                unit suite once more built with ASan + UBSan (build/sanitize)
 #   make native  build/native/bin/essi (+ tests, bench)      make wasm   build/wasm/bin/*.js, build/wasm/web/
 #   make bench   the core benchmarks natively and under node, then the viewer's browser benchmark
-#   make fuzz    libFuzzer for 60 s (clang++-14)
+#   make fuzz    each libFuzzer target for 60 s (clang++-14; FUZZ_SECONDS, FUZZ_TARGETS)
 #   make clean   remove build/
 SHELL := /bin/bash
 JOBS ?= 2
@@ -14,7 +15,7 @@ FUZZ_SECONDS ?= 60
 # docs/toolchain.md: every emcc link at -O1+ needs Debian's acorn module on NODE_PATH.
 export NODE_PATH := /usr/share/nodejs
 
-.PHONY: all setup native wasm test run bench fuzz clean
+.PHONY: all setup native wasm sanitize test run bench fuzz clean
 
 all: native
 
@@ -29,9 +30,14 @@ wasm: setup
 	cmake --preset wasm
 	cmake --build --preset wasm -j$(JOBS)
 
-# Runs both ctest presets (the second even if the first fails), prints both summaries, and ends with one
-# combined line in ctest's format; fails if either run failed.
-test: setup native wasm
+# The unit suite and the fuzz corpus replay with AddressSanitizer + UndefinedBehaviorSanitizer.
+sanitize: setup
+	cmake --preset sanitize
+	cmake --build --preset sanitize -j$(JOBS)
+
+# Runs the three ctest presets (each even if one before failed), prints their summaries, and ends with one
+# combined line in ctest's format; fails if any run failed.
+test: setup native wasm sanitize
 	@scripts/ctest-both
 
 # Builds the CLI and the viewer, then serves the viewer (build/wasm/web) and examples/ until Ctrl+C.
@@ -60,14 +66,22 @@ bench: setup
 	cmake --build --preset wasm -j$(JOBS) --target essi_viewer
 	node tests/e2e/bench.mjs
 
-# libFuzzer + ASan + UBSan. New inputs go to build/fuzz/corpus (the saved corpus tests/fuzz/corpus is
-# read only); crashes are written to build/fuzz/artifacts/. Promote interesting inputs by hand.
+# libFuzzer + ASan + UBSan, each target (tests/fuzz/fuzz_NAME.cpp) for FUZZ_SECONDS. New inputs go to
+# build/fuzz/corpus/NAME (the saved corpus tests/fuzz/corpus/NAME is read only); crashes are written to
+# build/fuzz/artifacts/. The ESSI target reads long inputs (whole generated tapes are in its corpus) with a
+# dictionary of ESSI tokens. Promote interesting inputs by hand.
+FUZZ_TARGETS ?= read_interp profile
 fuzz: setup
 	cmake --preset fuzz
 	cmake --build --preset fuzz -j$(JOBS)
-	mkdir -p build/fuzz/corpus build/fuzz/artifacts
-	build/fuzz/bin/essi_fuzz -max_total_time=$(FUZZ_SECONDS) -max_len=4096 -timeout=10 \
-	  -artifact_prefix=build/fuzz/artifacts/ build/fuzz/corpus tests/fuzz/corpus
+	@for t in $(FUZZ_TARGETS); do \
+	  mkdir -p build/fuzz/corpus/$$t build/fuzz/artifacts; \
+	  dict=""; [ -f tests/fuzz/$$t.dict ] && dict="-dict=tests/fuzz/$$t.dict"; \
+	  len=4096; [ $$t = read_interp ] && len=131072; \
+	  echo "== essi_fuzz_$$t ($(FUZZ_SECONDS) s, max_len $$len)"; \
+	  build/fuzz/bin/essi_fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -max_len=$$len -timeout=10 $$dict \
+	    -artifact_prefix=build/fuzz/artifacts/$$t- build/fuzz/corpus/$$t tests/fuzz/corpus/$$t || exit 1; \
+	done
 
 clean:
 	rm -rf build

@@ -1,7 +1,9 @@
 // Fuzz target: the whole pipeline (read -> interp -> check -> stats) through essi::check_tape, once with
 // each built-in profile. Built two ways (tests/CMakeLists.txt):
-//   essi_fuzz         libFuzzer + ASan + UBSan (clang++-14, `make fuzz`)
-//   essi_fuzz_replay  replay_main.cpp feeds it every file of tests/fuzz/corpus (ctest `fuzz_replay`)
+//   essi_fuzz_read_interp         libFuzzer + ASan + UBSan (clang++-14, `make fuzz`, with read_interp.dict and
+//                                 inputs up to 128 KB: the corpus holds whole generated tapes)
+//   essi_fuzz_replay_read_interp  replay_main.cpp feeds it every file of tests/fuzz/corpus/read_interp (ctest
+//                                 `fuzz_replay_read_interp`)
 //
 // Besides "does not crash, does not throw", it checks the contract of CheckResult (report.hpp) and aborts
 // when it is broken, so both the fuzzer and the replay report it.

@@ -1,7 +1,7 @@
 // Replays a saved fuzz corpus without libFuzzer: every regular file of every folder given on the command
 // line (or a single file) goes through LLVMFuzzerTestOneInput, in name order. Built natively (with ASan +
-// UBSan when ESSI_REPLAY_SANITIZE is on) and with em++ (corpus preloaded at /fuzz_corpus), and registered
-// with ctest as `fuzz_replay`.
+// UBSan when ESSI_REPLAY_SANITIZE is on) and with em++ (corpus preloaded at /fuzz_corpus), once per target,
+// and registered with ctest as `fuzz_replay_NAME`.
 //
 // Exit code: 0 when every input ran; a crash, sanitizer report, uncaught exception or broken invariant
 // aborts the process (non-zero); 1 when no input was found (an empty corpus must not pass silently).

@@ -325,7 +325,8 @@ TEST(ReadWords, ALineOfSignsCostsNoMemoryPerSign) {
     EXPECT_EQ(count_code(t.diagnostics(), DiagCode::E105_WordCount), 1u) << dump(t.diagnostics());
     EXPECT_NE(t.diagnostics().front().message.find("1000000 signed words"), std::string::npos);
     EXPECT_LT(t.memory_bytes(), 4096u);
-    TapeReader reader(line + "+1+1\n", *builtin_profile("iso6582"));  // a chunk at a time, as a check reads
+    const std::string bytes = line + "+1+1\n";
+    TapeReader reader(bytes, *builtin_profile("iso6582"));  // a chunk at a time, as a check reads
     Tape chunk;
     ASSERT_TRUE(reader.read_chunk(chunk, 100));
     EXPECT_LT(chunk.memory_bytes(), 4096u);
