@@ -451,7 +451,37 @@ int main(int argc, char** argv) {
         ->transform(CLI::AsSizeValue(false))
         ->type_name("SIZE")
         ->capture_default_str();
-    serve->add_option("--threads", serve_opts.threads, "Request threads (default: cpp-httplib's)")->check(CLI::Range(0, 1024));
+    serve->add_option("--threads", serve_opts.threads, "Requests handled at once (each connection waits in its own thread)")
+        ->check(CLI::Range(1, 1024))
+        ->capture_default_str();
+    serve->add_option("--allowed-host", serve_opts.allowed_hosts,
+                      "A Host name served besides localhost, 127.0.0.1, ::1 and --host (repeatable; DNS rebinding)")
+        ->type_name("NAME");
+    const std::map<std::string, std::int64_t> seconds_per{{"s", 1}, {"m", 60}, {"h", 3600}, {"d", 86400}};
+    serve->add_option("--share-ttl", serve_opts.share_ttl_s, "How long a share lives (suffixes s m h d; default 30d)")
+        ->transform(CLI::AsNumberWithUnit(seconds_per, CLI::AsNumberWithUnit::CASE_SENSITIVE))
+        ->check(CLI::PositiveNumber)
+        ->type_name("DURATION");
+    serve->add_option("--max-store", serve_opts.max_store, "Largest total size of the stored shares (default 1GB; oldest go first)")
+        ->transform(CLI::AsSizeValue(false))
+        ->type_name("SIZE");
+    serve->add_option("--share-rate", serve_opts.share_rate, "Uploads per minute per client address (0: no limit)")
+        ->capture_default_str();
+    serve->add_option("--max-connections", serve_opts.max_connections, "Connections open at once (more wait to be accepted)")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    serve->add_option("--max-client-connections", serve_opts.max_client_connections,
+                      "Connections open at once from one client address (more get 429)")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    serve->add_option("--request-timeout", serve_opts.request_timeout_s,
+                      "Seconds a client has to send a request (plus 1 s per 64 KB of body)")
+        ->check(CLI::Range(1, 3600))
+        ->capture_default_str();
+    serve->add_option("--max-large-requests", serve_opts.max_large_requests,
+                      "Requests with a body over 1 MB handled at once (bounds the server's memory)")
+        ->check(CLI::Range(1, 1024))
+        ->capture_default_str();
 
     try {
         app.parse(argc, argv);
