@@ -7,6 +7,8 @@
 #include <httplib.h>
 #endif
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -120,6 +122,10 @@ int run_serve(const ServeOptions& o) {
         return 2;
     }
 
+    // Buffers over 1 MB (request bodies) are mmapped and given back when freed. Without this glibc raises its mmap
+    // threshold after the first free and keeps such buffers in each thread's arena: the RSS then grows with the
+    // number of threads that ever held a large body, not with the number of large bodies at once.
+    mallopt(M_MMAP_THRESHOLD, static_cast<int>(kLargeBody));
     HardenedServer server(connection_limits(o));
     server.set_payload_max_length(static_cast<std::size_t>(o.max_body));
     server.set_tcp_nodelay(true);  // no 40 ms Nagle + delayed-ACK stall between the headers and the body
