@@ -42,6 +42,17 @@ bool viewer_built(const std::string& web_root) {
     return fs::exists(fs::path(web_root) / "index.html", ec) && fs::exists(fs::path(web_root) / "essi_viewer.wasm", ec);
 }
 
+// A request path for the log: control and non-ASCII bytes as \xNN (no log injection), at most 200 bytes.
+std::string loggable(const std::string& s) {
+    std::string out;
+    for (unsigned char c : s.substr(0, 200)) {
+        char hex[5];
+        std::snprintf(hex, sizeof hex, "\\x%02x", c);
+        out += c >= 0x20 && c < 0x7f ? std::string(1, static_cast<char>(c)) : std::string(hex);
+    }
+    return out;
+}
+
 ConnectionLimits connection_limits(const ServeOptions& o) {
     ConnectionLimits l;
     l.max_connections = std::max<std::size_t>(o.max_connections, 1);
@@ -77,7 +88,7 @@ void add_policies(HardenedServer& server, const ServeOptions& o) {
             what = e.what();
         } catch (...) {
         }
-        std::fprintf(stderr, "essi serve: %s %s: internal error: %s\n", req.method.c_str(), req.path.c_str(), what.c_str());
+        std::fprintf(stderr, "essi serve: %s %s: internal error: %s\n", req.method.c_str(), loggable(req.path).c_str(), what.c_str());
         res.headers.clear();
         json_error(res, 500, "internal error");
     });
@@ -87,7 +98,7 @@ void add_policies(HardenedServer& server, const ServeOptions& o) {
         json_error(res, s, s == 404 ? "not found" : s == 400 ? "bad request" : s == 413 ? "request too large" : "HTTP error " + std::to_string(s));
     });
     server.set_logger([](const httplib::Request& req, const httplib::Response& res) {
-        if (res.status >= 400) std::fprintf(stderr, "essi serve: %s %s -> %d\n", req.method.c_str(), req.path.c_str(), res.status);
+        if (res.status >= 400) std::fprintf(stderr, "essi serve: %s %s -> %d\n", loggable(req.method).c_str(), loggable(req.path).c_str(), res.status);
     });
 }
 
