@@ -72,12 +72,21 @@ HostPolicy host_policy(const ServeOptions& o) {
 // Checks before routing, the headers of every response, and errors without a body as JSON (a handler's
 // exception becomes a generic 500: its text stays in the server's log, never in the response).
 void add_policies(HardenedServer& server, const ServeOptions& o) {
-    server.set_request_guard([hosts = host_policy(o)](const httplib::Request& req, httplib::Response& res) {
+    // The error response of a refused request (its body, if any, is not read), or 0.
+    const auto refuse = [hosts = host_policy(o)](const httplib::Request& req, httplib::Response& res) {
         const Refusal r = check_request(req, hosts);
-        if (r.status == 0) return httplib::Server::HandlerResponse::Unhandled;
+        if (r.status == 0) return 0;
         json_error(res, r.status, r.message);
-        close_connection_after_response();  // its body (if any) is not read
-        return httplib::Server::HandlerResponse::Handled;
+        close_connection_after_response();
+        return r.status;
+    };
+    server.set_request_guard([refuse](const httplib::Request& req, httplib::Response& res) {
+        return refuse(req, res) ? httplib::Server::HandlerResponse::Handled : httplib::Server::HandlerResponse::Unhandled;
+    });
+    // `Expect: 100-continue` (curl, bodies over 1 MB): refused before the client sends the body.
+    server.set_expect_100_continue_handler([refuse](const httplib::Request& req, httplib::Response& res) {
+        const int status = refuse(req, res);
+        return status ? status : 100;
     });
     server.set_response_finisher([](const httplib::Request&, httplib::Response& res) { add_security_headers(res); });
     server.set_exception_handler([](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
@@ -146,6 +155,7 @@ int run_serve(const ServeOptions& o) {
 
     const int bound = bind_server(server, o);
     if (bound == 0) return 2;
+    server.widen_backlog();
     const std::string shown = o.host.find(':') != std::string::npos ? "[" + o.host + "]" : o.host;
     std::printf("essi serve: http://%s:%d/  (viewer %s, examples %s, data %s; Ctrl+C stops)\n", shown.c_str(), bound,
                 o.web_root.c_str(), o.examples_dir.empty() ? "-" : o.examples_dir.c_str(), store->path().c_str());

@@ -190,6 +190,10 @@ void HardenedServer::serve_connection(socket_t sock) {
     }
 }
 
+void HardenedServer::widen_backlog() {
+    if (svr_sock_ != INVALID_SOCKET) ::listen(svr_sock_, SOMAXCONN);
+}
+
 void close_connection_after_response() { t_close_after = true; }
 
 void exclusive_socket_options(socket_t sock) {

@@ -37,6 +37,9 @@ public:
     void set_request_guard(HandlerWithResponse guard) { guard_ = std::move(guard); }
     // Runs on every response just before it is written (headers common to all responses).
     void set_response_finisher(Handler finisher) { finisher_ = std::move(finisher); }
+    // After bind: a listen backlog of SOMAXCONN instead of cpp-httplib 0.11's 5, so that a burst of connections
+    // waits in the kernel's queue instead of having its SYNs dropped (each retried only after 1 s, then 3 s).
+    void widen_backlog();
 
 private:
     bool process_and_close_socket(socket_t sock) override;

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """`essi serve` with 8 request threads against 64 slow clients (headers sent a byte at a time, from 32 loopback
 addresses) and one greedy client (40 idle connections from one address): a normal client still gets
-GET /api/health answered in under a second, the slow clients are cut off after --request-timeout, and the
-greedy client's connections beyond --max-client-connections get 429. Loopback only; stops by itself (60 s alarm).
+GET /api/health answered in under a second, the slow clients are cut off after --request-timeout (so are a slow
+body and, after 5 s, an idle kept-alive connection), and the greedy client's connections beyond --max-client-connections get 429. Loopback only; stops by itself (60 s alarm).
 Usage: slow_clients.py PATH/TO/essi"""
 import signal
 import socket
@@ -54,6 +54,16 @@ def closed_by_server(s):
         return True
 
 
+def at_eof(s):
+    """True once the server closed `s` (data still arriving is read and ignored)."""
+    try:
+        return s.recv(4096) == b""
+    except BlockingIOError:
+        return False
+    except OSError:
+        return True
+
+
 def count_429(socks, wait_s):
     """How many of `socks` got a 429 within `wait_s` seconds."""
     got = set()
@@ -69,6 +79,35 @@ def count_429(socks, wait_s):
                 pass
         time.sleep(0.05)
     return len(got)
+
+
+def idle_and_slow_body(port, report):
+    """A kept-alive connection left idle and a body sent at 500 B/s: both closed by the server in time."""
+    idle = socket.create_connection(("127.0.0.1", port), timeout=2)
+    idle.sendall(f"GET /api/health HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\n\r\n".encode())
+    answer = idle.recv(4096)
+    body = socket.create_connection(("127.0.0.1", port), timeout=2)
+    body.sendall((f"POST /api/check HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nContent-Type: application/octet-stream\r\n"
+                  f"Content-Length: 1000000\r\n\r\n").encode())
+    for s in (idle, body):
+        s.setblocking(False)
+    t0 = time.monotonic()
+    closed = {}
+    while time.monotonic() - t0 < 8 and len(closed) < 2:
+        try:
+            body.send(b"+100+0\n" * 14)
+        except OSError:
+            pass
+        for name, s in (("idle", idle), ("slow body", body)):
+            if name not in closed and at_eof(s):
+                closed[name] = time.monotonic() - t0
+        time.sleep(0.2)
+    report.check(answer.startswith(b"HTTP/1.1 200") and 4.0 < closed.get("idle", 99) < 6.5,
+                 f"idle kept-alive connection closed after {closed.get('idle', -1):.1f} s (keep-alive 5 s)")
+    report.check(TIMEOUT_S - 0.5 < closed.get("slow body", 99) < TIMEOUT_S + 1.5,
+                 f"body at 500 B/s cut off after {closed.get('slow body', -1):.1f} s (--request-timeout {TIMEOUT_S})")
+    idle.close()
+    body.close()
 
 
 def main(essi):
@@ -95,8 +134,12 @@ def main(essi):
         report.check(cut == SLOW_CLIENTS, f"{cut}/{SLOW_CLIENTS} slow clients cut off after --request-timeout {TIMEOUT_S} s")
         for s in slow:
             s.close()
-        greedy = [socket.create_connection(("127.0.0.1", port), timeout=2, source_address=("127.0.0.200", 0))
+        idle_and_slow_body(port, report)
+        t0 = time.monotonic()
+        greedy = [socket.create_connection(("127.0.0.1", port), timeout=5, source_address=("127.0.0.200", 0))
                   for _ in range(GREEDY)]
+        connect_s = time.monotonic() - t0
+        report.check(connect_s < 1.0, f"{GREEDY} connections in a burst accepted in {connect_s:.3f} s (listen backlog)")
         for s in greedy:
             s.setblocking(False)
         refused = count_429(greedy, 2.0)
