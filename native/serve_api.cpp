@@ -111,8 +111,12 @@ void share_tape(ShareStore& store, httplib::Response& res, const std::string& bo
 // Runs `handle` on the body read within the limits (a large body waits for a slot first).
 template <class Handle>
 void with_body(ApiContext& ctx, const httplib::Request& req, httplib::Response& res, const Reader& reader, Handle handle) {
+    BodyReading reading;  // no worker slot while waiting for a large-body slot or for the client's bytes
     SemaphoreHold hold(is_large(req) ? &ctx.large_bodies : nullptr);
-    if (auto body = read_body(req, res, reader, ctx.max_body)) handle(*body);
+    reading.start_clock();
+    std::optional<std::string> body = read_body(req, res, reader, ctx.max_body);
+    reading.done();
+    if (body) handle(*body);
 }
 
 bool valid_id(const std::string& id, httplib::Response& res) {

@@ -140,8 +140,9 @@ void refuse(socket_t sock) {
     [[maybe_unused]] const ssize_t n = send(sock, kBusy.data(), kBusy.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
 }
 
-thread_local bool t_holds_worker = false;
 thread_local bool t_close_after = false;
+thread_local Semaphore* t_worker = nullptr;        // the worker slot this thread holds, if any
+thread_local DeadlineStream* t_stream = nullptr;   // the connection this thread serves
 
 }  // namespace
 
@@ -152,8 +153,8 @@ HardenedServer::HardenedServer(const ConnectionLimits& limits)
     set_keep_alive_timeout(limits.keep_alive_timeout_s);
     set_socket_options(exclusive_socket_options);
     set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-        if (!t_holds_worker) workers_.acquire();
-        t_holds_worker = true;
+        if (!t_worker) workers_.acquire();
+        t_worker = &workers_;
         return guard_ ? guard_(req, res) : HandlerResponse::Unhandled;
     });
     set_post_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
@@ -176,6 +177,7 @@ bool HardenedServer::process_and_close_socket(socket_t sock) {
 
 void HardenedServer::serve_connection(socket_t sock) {
     DeadlineStream strm(sock, limits_);
+    t_stream = &strm;
     for (std::size_t left = keep_alive_max_count_; left > 0 && svr_sock_ != INVALID_SOCKET; --left) {
         // The first request may take request_timeout_s to begin, the next ones keep_alive_timeout_s.
         const int wait_s = left == keep_alive_max_count_ ? limits_.request_timeout_s : limits_.keep_alive_timeout_s;
@@ -184,10 +186,27 @@ void HardenedServer::serve_connection(socket_t sock) {
         t_close_after = false;
         bool closed = false;
         const bool ok = process_request(strm, left == 1, closed, nullptr);
-        if (t_holds_worker) workers_.release();
-        t_holds_worker = false;
+        if (t_worker) t_worker->release();
+        t_worker = nullptr;
         if (!ok || closed || t_close_after) break;
     }
+    t_stream = nullptr;
+}
+
+BodyReading::BodyReading() : worker_(t_worker) {
+    if (worker_) worker_->release();
+    t_worker = nullptr;
+}
+
+void BodyReading::start_clock() {
+    if (t_stream) t_stream->begin_request();
+}
+
+void BodyReading::done() {
+    if (!worker_) return;
+    worker_->acquire();
+    t_worker = worker_;
+    worker_ = nullptr;
 }
 
 void HardenedServer::widen_backlog() {

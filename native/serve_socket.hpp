@@ -4,8 +4,8 @@
 //   - a request must arrive within request_timeout_s plus 1 s per kMinRateBytesPerSecond bytes sent (a minimum
 //     rate, like Apache's mod_reqtimeout): a client sending its headers a byte at a time is cut off.
 //   - at most max_client_connections connections per client address; the next one gets a 429 and is closed.
-//   - at most `threads` requests are handled at once (the body of a POST is read inside its handler, so this
-//     also bounds the bodies held in memory), see Server::gate().
+//   - at most `threads` requests are handled at once; a handler gives its slot back while it waits for and
+//     reads its body (BodyReading), so slow uploads do not hold them.
 //   - the listening socket has SO_REUSEADDR but never SO_REUSEPORT: a port in use is an error at start-up.
 #pragma once
 
@@ -53,6 +53,22 @@ private:
 
 // Ends the connection after the current response (a request refused before its body was read).
 void close_connection_after_response();
+
+// While a handler waits for and reads its body, the request gives its worker slot back (a slow upload must not
+// hold one of the `threads`); start_clock() restarts the request's deadline once the handler is ready to read
+// (time spent waiting for a slot is not the client's); done() (or the destructor) takes a worker slot again.
+class BodyReading {
+public:
+    BodyReading();
+    ~BodyReading() { done(); }
+    void start_clock();
+    void done();
+    BodyReading(const BodyReading&) = delete;
+    BodyReading& operator=(const BodyReading&) = delete;
+
+private:
+    Semaphore* worker_;
+};
 
 // The `socket_options` of the listening socket: SO_REUSEADDR only (no SO_REUSEPORT).
 void exclusive_socket_options(socket_t sock);

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""`essi serve` with 8 request threads against 64 slow clients (headers sent a byte at a time, from 32 loopback
-addresses) and one greedy client (40 idle connections from one address): a normal client still gets
+"""`essi serve` with 8 request threads against 64 slow clients (48 send their headers a byte at a time, 16 their
+body; from 32 loopback addresses) and one greedy client (40 idle connections from one address): a normal client still gets
 GET /api/health answered in under a second, the slow clients are cut off after --request-timeout (so are a slow
 body and, after 5 s, an idle kept-alive connection), and the greedy client's connections beyond --max-client-connections get 429. Loopback only; stops by itself (60 s alarm).
 Usage: slow_clients.py PATH/TO/essi"""
@@ -17,10 +17,16 @@ PER_CLIENT = 16
 TIMEOUT_S = 3
 
 
+SLOW_BODIES = 16  # of the slow clients: whole headers of a POST at once, then the body a byte at a time
+
+
 def open_slow(port, n):
     socks = []
     for i in range(n):
         s = socket.create_connection(("127.0.0.1", port), timeout=2, source_address=(f"127.0.0.{2 + i % 32}", 0))
+        if i < SLOW_BODIES:
+            s.sendall(f"POST /api/check HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nContent-Type: application/octet-stream\r\n"
+                      f"Content-Length: 100000\r\n\r\n".encode())
         s.setblocking(False)
         socks.append(s)
     return socks
