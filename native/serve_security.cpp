@@ -43,7 +43,9 @@ bool params_clean(const httplib::Request& req) {
 bool host_allowed(const httplib::Request& req, const HostPolicy& hosts) {
     const std::string name = host_name(req.get_header_value("Host"));
     static const std::set<std::string> kLoopback = {"localhost", "127.0.0.1", "::1"};
-    if (kLoopback.count(name) || name == lower(hosts.bound_host) || name == lower(req.local_addr)) return true;
+    std::string local = lower(req.local_addr);
+    if (local.rfind("::ffff:", 0) == 0) local.erase(0, 7);  // an IPv4 client of a dual-stack socket
+    if (kLoopback.count(name) || name == lower(hosts.bound_host) || name == local) return true;
     return std::find(hosts.allowed.begin(), hosts.allowed.end(), name) != hosts.allowed.end();
 }
 
