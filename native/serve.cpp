@@ -100,6 +100,7 @@ void add_policies(HardenedServer& server, const ServeOptions& o) {
         std::fprintf(stderr, "essi serve: %s %s: internal error: %s\n", req.method.c_str(), loggable(req.path).c_str(), what.c_str());
         res.headers.clear();
         json_error(res, 500, "internal error");
+        close_connection_after_response();  // the request's body may be unread
     });
     server.set_error_handler([](const httplib::Request&, httplib::Response& res) {
         if (!res.body.empty()) return;

@@ -76,6 +76,19 @@ expect "build tree file: 404" 404 '"error":"not found"' -- "$url/cmake_install.c
 grep -q "$root" "$tmp/body" && fail "build tree leaked the source path" || pass "no source path leaked"
 expect "build tree folder: 404" 404 '"error"' -- "$url/CMakeFiles/secret.txt"
 
+# --- an exception in a handler: a generic 500, its text only in the log --------------------------------------------
+# With a --max-body of 2 PB, a declared Content-Length of 1 PB makes reserving the body throw std::bad_alloc.
+stop_server
+start_server huge --data "$tmp/data" --max-body 2251799813685248
+exec 3<>"/dev/tcp/127.0.0.1/${url##*:}"
+printf 'POST /api/check HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/octet-stream\r\nContent-Length: 1125899906842624\r\n\r\n' >&3
+timeout 10 cat <&3 > "$tmp/raw"; exec 3<&-
+head -1 "$tmp/raw" | grep -q '^HTTP/1.1 500' && grep -q '{"error":"internal error","status":500}' "$tmp/raw" && pass "exception: generic JSON 500" || fail "exception: $(head -c 300 "$tmp/raw")"
+grep -qi 'bad_alloc\|EXCEPTION_WHAT' "$tmp/raw" && fail "exception text leaked to the client" || pass "exception text not in the response"
+grep -q 'internal error: std::bad_alloc' "$tmp/huge.err" && pass "exception text in the log" || fail "exception not logged"
+expect "server still answers after the exception" 200 '"ok":true' -- "$url/api/health"
+port="${url##*:}"
+
 # --- a busy port is an error at start-up ---------------------------------------------------------------------------
 "$essi" serve --host 127.0.0.1 --port "$port" --web-root "$tmp/web" --data "$tmp/data2" > "$tmp/second.out" 2> "$tmp/second.err" &
 second=$!
