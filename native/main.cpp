@@ -447,11 +447,32 @@ int main(int argc, char** argv) {
     serve->add_option("--data", serve_opts.data_dir,
                       "Folder of the share store (SQLite); default $XDG_DATA_HOME/essikit, else ./essi-data")
         ->type_name("DIR");
-    serve->add_option("--max-body", serve_opts.max_body, "Largest request body in bytes (suffixes KB MB GB: 1024-based)")
-        ->transform(CLI::AsSizeValue(false))
-        ->type_name("SIZE")
+    const auto size_option = [serve](const char* name, std::uint64_t& value, const char* help) {
+        serve->add_option(name, value, help)->transform(CLI::AsSizeValue(false))->type_name("SIZE")->capture_default_str();
+    };
+    size_option("--max-body", serve_opts.max_body, "Largest request body in bytes (suffixes KB MB GB: 1024-based)");
+    size_option("--max-store", serve_opts.max_store, "Largest total size of the stored shares (oldest go first)");
+    const auto limit_option = [serve](const char* name, auto& value, int max, const char* help) {
+        serve->add_option(name, value, help)->check(CLI::Range(1, max))->capture_default_str();
+    };
+    limit_option("--threads", serve_opts.threads, 1024, "Requests handled at once (each connection waits in its own thread)");
+    limit_option("--max-connections", serve_opts.max_connections, 100000, "Connections open at once (more wait to be accepted)");
+    limit_option("--max-client-connections", serve_opts.max_client_connections, 100000,
+                 "Connections open at once from one client address (more get 429)");
+    limit_option("--request-timeout", serve_opts.request_timeout_s, 3600,
+                 "Seconds a client has to send a request (plus 1 s per 64 KB of body)");
+    limit_option("--max-large-requests", serve_opts.max_large_requests, 1024,
+                 "Requests with a body over 1 MB handled at once (bounds the server's memory)");
+    serve->add_option("--allowed-host", serve_opts.allowed_hosts,
+                      "A Host name served besides localhost, 127.0.0.1, ::1 and --host (repeatable; DNS rebinding)")
+        ->type_name("NAME");
+    const std::map<std::string, std::int64_t> seconds_per{{"s", 1}, {"m", 60}, {"h", 3600}, {"d", 86400}};
+    serve->add_option("--share-ttl", serve_opts.share_ttl_s, "How long a share lives (suffixes s m h d; default 30d)")
+        ->transform(CLI::AsNumberWithUnit(seconds_per, CLI::AsNumberWithUnit::CASE_SENSITIVE))
+        ->check(CLI::PositiveNumber)
+        ->type_name("DURATION");
+    serve->add_option("--share-rate", serve_opts.share_rate, "Uploads per minute per client address (0: no limit)")
         ->capture_default_str();
-    serve->add_option("--threads", serve_opts.threads, "Request threads (default: cpp-httplib's)")->check(CLI::Range(0, 1024));
 
     try {
         app.parse(argc, argv);

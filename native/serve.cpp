@@ -7,25 +7,22 @@
 #include <httplib.h>
 #endif
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <system_error>
-#include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "essi/profile.hpp"
-#include "essi/report.hpp"
-#include "pipelined_check.hpp"
-#include "essi/report_json.hpp"
 #include "share_store.hpp"
-#include "sha256.hpp"
 
-#ifndef ESSIKIT_VERSION
-#define ESSIKIT_VERSION "0.1.0"
+#if defined(ESSI_HAVE_HTTPLIB)
+#include "serve_api.hpp"
+#include "serve_security.hpp"
+#include "serve_socket.hpp"
+#include "serve_static.hpp"
 #endif
 
 namespace essi::native {
@@ -40,28 +37,98 @@ int run_serve(const ServeOptions&) {
 #else
 namespace {
 
-// Names of the example tapes (*.esi), sorted.
-std::vector<std::string> example_names(const std::string& dir) {
-    std::vector<std::string> names;
+bool viewer_built(const std::string& web_root) {
     std::error_code ec;
-    if (dir.empty() || !fs::is_directory(dir, ec)) return names;
-    for (const auto& e : fs::directory_iterator(dir, ec)) {
-        if (e.is_regular_file(ec) && e.path().extension() == ".esi") names.push_back(e.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
+    return fs::exists(fs::path(web_root) / "index.html", ec) && fs::exists(fs::path(web_root) / "essi_viewer.wasm", ec);
 }
 
-void json_error(httplib::Response& res, int status, const std::string& message) {
-    res.status = status;
-    res.set_content(nlohmann::json{{"error", message}, {"status", status}}.dump(), "application/json");
+// A request path for the log: control and non-ASCII bytes as \xNN (no log injection), at most 200 bytes.
+std::string loggable(const std::string& s) {
+    std::string out;
+    for (unsigned char c : s.substr(0, 200)) {
+        char hex[5];
+        std::snprintf(hex, sizeof hex, "\\x%02x", c);
+        out += c >= 0x20 && c < 0x7f ? std::string(1, static_cast<char>(c)) : std::string(hex);
+    }
+    return out;
+}
+
+ConnectionLimits connection_limits(const ServeOptions& o) {
+    ConnectionLimits l;
+    l.max_connections = std::max<std::size_t>(o.max_connections, 1);
+    l.max_client_connections = std::max<std::size_t>(o.max_client_connections, 1);
+    l.threads = static_cast<std::size_t>(std::max(o.threads, 1));
+    l.request_timeout_s = std::max(o.request_timeout_s, 1);
+    return l;
+}
+
+HostPolicy host_policy(const ServeOptions& o) {
+    HostPolicy p;
+    p.bound_host = o.host;
+    for (const std::string& h : o.allowed_hosts) p.allowed.push_back(host_name(h));
+    return p;
+}
+
+// Checks before routing, the headers of every response, and errors without a body as JSON (a handler's
+// exception becomes a generic 500: its text stays in the server's log, never in the response).
+void add_policies(HardenedServer& server, const ServeOptions& o) {
+    // The error response of a refused request (its body, if any, is not read), or 0.
+    const auto refuse = [hosts = host_policy(o)](const httplib::Request& req, httplib::Response& res) {
+        const Refusal r = check_request(req, hosts);
+        if (r.status == 0) return 0;
+        json_error(res, r.status, r.message);
+        close_connection_after_response();
+        return r.status;
+    };
+    server.set_request_guard([refuse](const httplib::Request& req, httplib::Response& res) {
+        return refuse(req, res) ? httplib::Server::HandlerResponse::Handled : httplib::Server::HandlerResponse::Unhandled;
+    });
+    // `Expect: 100-continue` (curl, bodies over 1 MB): refused before the client sends the body.
+    server.set_expect_100_continue_handler([refuse](const httplib::Request& req, httplib::Response& res) {
+        const int status = refuse(req, res);
+        return status ? status : 100;
+    });
+    server.set_response_finisher([](const httplib::Request&, httplib::Response& res) { add_security_headers(res); });
+    server.set_exception_handler([](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
+        std::string what = "unknown exception";
+        try {
+            std::rethrow_exception(ep);
+        } catch (const std::exception& e) {
+            what = e.what();
+        } catch (...) {
+        }
+        std::fprintf(stderr, "essi serve: %s %s: internal error: %s\n", req.method.c_str(), loggable(req.path).c_str(), what.c_str());
+        res.headers.clear();
+        json_error(res, 500, "internal error");
+        close_connection_after_response();  // the request's body may be unread
+    });
+    server.set_error_handler([](const httplib::Request&, httplib::Response& res) {
+        if (!res.body.empty()) return;
+        const int s = res.status;
+        json_error(res, s, s == 404 ? "not found" : s == 400 ? "bad request" : s == 413 ? "request too large" : "HTTP error " + std::to_string(s));
+    });
+    server.set_logger([](const httplib::Request& req, const httplib::Response& res) {
+        if (res.status >= 400) std::fprintf(stderr, "essi serve: %s %s -> %d\n", loggable(req.method).c_str(), loggable(req.path).c_str(), res.status);
+    });
+}
+
+// Binds --host:--port (0: a free port); the bound port, or 0 with a message on stderr.
+int bind_server(HardenedServer& server, const ServeOptions& o) {
+    if (o.port == 0) {
+        const int bound = server.bind_to_any_port(o.host.c_str());
+        if (bound > 0) return bound;
+        std::fprintf(stderr, "essi serve: cannot listen on %s\n", o.host.c_str());
+        return 0;
+    }
+    if (server.bind_to_port(o.host.c_str(), o.port)) return o.port;
+    std::fprintf(stderr, "essi serve: cannot listen on %s:%d (in use by another process? try --port)\n", o.host.c_str(), o.port);
+    return 0;
 }
 
 }  // namespace
 
 int run_serve(const ServeOptions& o) {
-    std::error_code ec;
-    if (!fs::exists(fs::path(o.web_root) / "index.html", ec) || !fs::exists(fs::path(o.web_root) / "essi_viewer.wasm", ec)) {
+    if (!viewer_built(o.web_root)) {
         std::fprintf(stderr,
                      "essi serve: the viewer is not built in %s (build it with: emcmake cmake --preset wasm && "
                      "cmake --build --preset wasm --target essi_viewer, or make run)\n",
@@ -70,158 +137,26 @@ int run_serve(const ServeOptions& o) {
     }
     const std::string data_dir = o.data_dir.empty() ? default_data_dir() : o.data_dir;
     std::string store_error;
-    std::shared_ptr<ShareStore> store = ShareStore::open(data_dir, store_error);
+    std::shared_ptr<ShareStore> store = ShareStore::open(data_dir, store_error, StoreLimits{o.share_ttl_s, o.max_store});
     if (!store) {
         std::fprintf(stderr, "essi serve: %s\n", store_error.c_str());
         return 2;
     }
 
-    httplib::Server server;
-    if (o.threads > 0) {
-        const int n = o.threads;
-        server.new_task_queue = [n] { return new httplib::ThreadPool(static_cast<size_t>(n)); };
-    }
-    server.set_payload_max_length(static_cast<size_t>(o.max_body));
+    // Buffers over 1 MB (request bodies) are mmapped and given back when freed. Without this glibc raises its mmap
+    // threshold after the first free and keeps such buffers in each thread's arena: the RSS then grows with the
+    // number of threads that ever held a large body, not with the number of large bodies at once.
+    mallopt(M_MMAP_THRESHOLD, static_cast<int>(kLargeBody));
+    HardenedServer server(connection_limits(o));
+    server.set_payload_max_length(static_cast<std::size_t>(o.max_body));
     server.set_tcp_nodelay(true);  // no 40 ms Nagle + delayed-ACK stall between the headers and the body
-    server.set_file_extension_and_mimetype_mapping("wasm", "application/wasm");
-    server.set_file_extension_and_mimetype_mapping("js", "text/javascript");
-    server.set_file_extension_and_mimetype_mapping("esi", "text/plain; charset=us-ascii");
-    server.set_file_extension_and_mimetype_mapping("json", "application/json");
-    // Always revalidate: a rebuilt viewer must not be mixed with a cached one.
-    server.set_default_headers({{"Cache-Control", "no-cache"}, {"X-Content-Type-Options", "nosniff"}});
+    add_policies(server, o);
+    add_api_routes(server, std::make_shared<ApiContext>(store, o.max_body, std::max<std::size_t>(o.max_large_requests, 1), o.share_rate));
+    add_static_routes(server, StaticFiles{o.web_root, o.examples_dir, o.share_store_js});
 
-    // ---- API ----------------------------------------------------------------------------------------------
-    const std::uint64_t max_body = o.max_body;
-    server.Get("/api/health", [max_body](const httplib::Request&, httplib::Response& res) {
-        res.set_content(nlohmann::json{{"ok", true},
-                                       {"version", ESSIKIT_VERSION},
-                                       {"max_body", max_body},
-                                       {"profiles", builtin_profile_names()}}
-                            .dump(),
-                        "application/json");
-    });
-    server.Post("/api/check", [](const httplib::Request& req, httplib::Response& res) {
-        const std::string name = req.has_param("profile") ? req.get_param_value("profile") : std::string("iso6582");
-        // Built-in profiles only: a request never names a file on the server.
-        const auto profile = builtin_profile(name);
-        if (!profile) {
-            std::string known;
-            for (const std::string& n : builtin_profile_names()) known += (known.empty() ? "" : ", ") + n;
-            json_error(res, 400, "unknown profile '" + name + "'; expected one of: " + known);
-            return;
-        }
-        FileReport report;
-        report.path = req.has_param("name") ? req.get_param_value("name") : std::string("-");
-        report.result = check_tape_pipelined(req.body, *profile);
-        const FileReport one[] = {std::move(report)};
-        res.set_content(report_to_json(one, profile->name).dump(2) + "\n", "application/json");
-    });
-    server.Post("/api/share", [store](const httplib::Request& req, httplib::Response& res) {
-        if (req.body.empty()) {
-            json_error(res, 400, "empty body: POST the tape's bytes");
-            return;
-        }
-        const ShareStore::PutResult put = store->put(req.body);
-        if (!put.ok) {
-            json_error(res, 500, "cannot store the tape: " + put.error);
-            return;
-        }
-        res.status = put.created ? 201 : 200;
-        res.set_header("Location", "/api/share/" + put.id);
-        res.set_content(nlohmann::json{{"id", put.id},
-                                       {"url", "/#share=" + put.id},
-                                       {"api_url", "/api/share/" + put.id},
-                                       {"size", req.body.size()},
-                                       {"created", put.created}}
-                            .dump(),
-                        "application/json");
-    });
-    server.Get(R"(/api/share/([^/]*))", [store](const httplib::Request& req, httplib::Response& res) {
-        const std::string id = req.matches[1];
-        if (!is_sha256_hex(id)) {
-            json_error(res, 400, "bad share id '" + id + "': expected 64 lower-case hex digits (SHA-256)");
-            return;
-        }
-        auto tape = store->get(id);
-        if (!tape) {
-            json_error(res, 404, "no shared tape " + id);
-            return;
-        }
-        res.set_header("Cache-Control", "public, max-age=31536000, immutable");  // content-addressed
-        res.set_content(std::move(*tape), "text/plain; charset=us-ascii");
-    });
-    // Wrong methods and unknown API paths: JSON errors, never the viewer's files.
-    const auto method_not_allowed = [](const char* allowed) {
-        return [allowed](const httplib::Request& req, httplib::Response& res) {
-            res.set_header("Allow", allowed);
-            json_error(res, 405, req.method + " is not allowed on " + req.path + "; use " + allowed);
-        };
-    };
-    server.Get("/api/check", method_not_allowed("POST"));
-    server.Put("/api/check", method_not_allowed("POST"));
-    server.Delete("/api/check", method_not_allowed("POST"));
-    server.Get("/api/share", method_not_allowed("POST"));
-    server.Post(R"(/api/share/.*)", method_not_allowed("GET"));
-    server.Delete(R"(/api/share/.*)", method_not_allowed("GET"));
-    server.Get(R"(/api/.*)", [](const httplib::Request& req, httplib::Response& res) {
-        json_error(res, 404, "no API endpoint " + req.path);
-    });
-    server.Post(R"(/.*)", [](const httplib::Request& req, httplib::Response& res) {
-        json_error(res, 404, "no API endpoint " + req.path);
-    });
-
-    // ---- static files -------------------------------------------------------------------------------------
-    const std::string examples_dir = o.examples_dir;
-    server.Get("/examples/index.json", [examples_dir](const httplib::Request&, httplib::Response& res) {
-        res.set_content(nlohmann::json(example_names(examples_dir)).dump(), "application/json");
-    });
-    if (!examples_dir.empty() && fs::is_directory(examples_dir, ec)) server.set_mount_point("/examples", examples_dir);
-    if (!server.set_mount_point("/", o.web_root)) {
-        std::fprintf(stderr, "essi serve: cannot serve %s\n", o.web_root.c_str());
-        return 2;
-    }
-
-    const std::string share_js = o.share_store_js;
-    server.Get("/share_store.js", [share_js](const httplib::Request&, httplib::Response& res) {
-        std::FILE* f = share_js.empty() ? nullptr : std::fopen(share_js.c_str(), "rb");
-        if (!f) {
-            json_error(res, 404, "not found");
-            return;
-        }
-        std::string text;
-        char buf[8192];
-        for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
-        std::fclose(f);
-        res.set_content(std::move(text), "text/javascript");
-    });
-
-    // Errors without a body (404 of a missing file, 413 of a too big body, 400 of a bad request): JSON.
-    server.set_error_handler([max_body](const httplib::Request&, httplib::Response& res) {
-        if (!res.body.empty()) return;
-        std::string msg;
-        switch (res.status) {
-            case 413: msg = "request body too large: the limit is " + std::to_string(max_body) + " bytes (--max-body)"; break;
-            case 404: msg = "not found"; break;
-            case 400: msg = "bad request"; break;
-            default: msg = "HTTP error " + std::to_string(res.status); break;
-        }
-        json_error(res, res.status, msg);
-    });
-    server.set_logger([](const httplib::Request& req, const httplib::Response& res) {
-        if (res.status >= 400) std::fprintf(stderr, "essi serve: %s %s -> %d\n", req.method.c_str(), req.path.c_str(), res.status);
-    });
-
-    int bound = o.port;
-    if (o.port == 0) {
-        bound = server.bind_to_any_port(o.host.c_str());
-        if (bound <= 0) {
-            std::fprintf(stderr, "essi serve: cannot listen on %s\n", o.host.c_str());
-            return 2;
-        }
-    } else if (!server.bind_to_port(o.host.c_str(), o.port)) {
-        std::fprintf(stderr, "essi serve: cannot listen on %s:%d (in use? try --port)\n", o.host.c_str(), o.port);
-        return 2;
-    }
+    const int bound = bind_server(server, o);
+    if (bound == 0) return 2;
+    server.widen_backlog();
     const std::string shown = o.host.find(':') != std::string::npos ? "[" + o.host + "]" : o.host;
     std::printf("essi serve: http://%s:%d/  (viewer %s, examples %s, data %s; Ctrl+C stops)\n", shown.c_str(), bound,
                 o.web_root.c_str(), o.examples_dir.empty() ? "-" : o.examples_dir.c_str(), store->path().c_str());

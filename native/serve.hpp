@@ -1,17 +1,22 @@
 // `essi serve`: a small HTTP server (cpp-httplib) for the browser viewer, the example tapes and an API:
-//   POST /api/check?profile=NAME[&name=FILE]   body: a tape -> the JSON report of `essi check --format json`
-//   POST /api/share                            body: a tape -> {"id","url","size","created"} (stored by SHA-256)
-//   GET  /api/share/ID                         the stored tape (404 JSON error when unknown)
-//   GET  /api/health                           {"ok":true,"version","max_body","profiles":[...]}
+//   POST   /api/check?profile=NAME[&name=FILE]  body: a tape -> the JSON report of `essi check --format json`
+//   POST   /api/share                           body: a tape -> {"id","url","size","created","delete_token",...}
+//   GET    /api/share/ID                        the stored tape (404 JSON error when unknown or expired)
+//   DELETE /api/share/ID                        with X-Delete-Token (or ?token=): 204; wrong token 403
+//   GET    /api/health                          {"ok":true,"version","max_body","profiles":[...]}
+// The limits against hostile clients and pages are in serve_socket.hpp, serve_security.hpp and docs/security.md.
 // Native only: sockets never enter core/ or the WASM build.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace essi::native {
 
 constexpr std::uint64_t kDefaultMaxBody = 64ull << 20;  // 64 MiB
+constexpr std::uint64_t kLargeBody = 1ull << 20;        // bodies over 1 MiB count against max_large_requests
 
 struct ServeOptions {
     std::string host = "127.0.0.1";
@@ -22,12 +27,20 @@ struct ServeOptions {
                                      // web root has none (older viewer builds copy only index.html)
     std::string data_dir;            // the share store (SQLite); "" = default_data_dir()
     std::uint64_t max_body = kDefaultMaxBody;
-    int threads = 0;                 // request threads; 0 = cpp-httplib's default
+    int threads = 8;                         // requests handled at once
+    std::vector<std::string> allowed_hosts;  // --allowed-host: Host names served besides loopback and --host
+    std::int64_t share_ttl_s = 30ll * 24 * 3600;
+    std::uint64_t max_store = 1ull << 30;
+    unsigned share_rate = 30;                // uploads per minute per client address (0 = no limit)
+    std::size_t max_connections = 256;
+    std::size_t max_client_connections = 32;
+    int request_timeout_s = 10;
+    std::size_t max_large_requests = 2;      // requests with a body over kLargeBody handled at once
 };
 
 // Serves until the process is stopped. Prints "essi serve: http://HOST:PORT/ ..." on stdout once listening.
 // Returns 2 (with a message on stderr) when the viewer is not built, the store cannot be opened or the address
-// cannot be bound.
+// cannot be bound (also when another process listens on the port).
 int run_serve(const ServeOptions& options);
 
 }  // namespace essi::native

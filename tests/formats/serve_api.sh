@@ -68,7 +68,7 @@ expect "check ok tape" 200 '"ok": true' -- --data-binary @"$tape" "$url/api/chec
 expect "check bad tape: E301" 200 '"code": "E301"' -- --data-binary @"$bad" "$url/api/check?profile=iso6582&name=bad.esi"
 expect "check names the file" 200 '"path": "bad.esi"' -- --data-binary @"$bad" "$url/api/check?name=bad.esi"
 expect "check woyda profile" 200 '"profile": "woyda"' -- --data-binary @"$tape" "$url/api/check?profile=woyda"
-expect "check empty body: E113" 200 '"code": "E113"' -- -X POST -H 'Content-Length: 0' "$url/api/check"
+expect "check empty body: E113" 200 '"code": "E113"' -- -X POST -H 'Content-Length: 0' -H 'Content-Type: application/octet-stream' "$url/api/check"
 expect "check unknown profile: 400" 400 '"error":"unknown profile' -- --data-binary @"$tape" "$url/api/check?profile=nope"
 expect "check profile is never a file: 400" 400 'unknown profile' -- --data-binary @"$tape" "$url/api/check?profile=/etc/passwd"
 expect "check GET: 405" 405 '"error"' -- "$url/api/check"
@@ -97,10 +97,11 @@ expect "share unknown id: 404" 404 '"error":"no shared tape' -- "$url/api/share/
 expect "share bad id: 400" 400 '"error":"bad share id' -- "$url/api/share/abc"
 expect "share upper-case id: 400" 400 '"error"' -- "$url/api/share/$(tr a-f A-F <<<"$id")"
 expect "share id with traversal: JSON 404" 404 '"error"' -- --path-as-is "$url/api/share/..%2f..%2fsecret.txt"
-expect "share empty body: 400" 400 '"error"' -- -X POST -H 'Content-Length: 0' "$url/api/share"
+expect "share empty body: 400" 400 '"error"' -- -X POST -H 'Content-Length: 0' -H 'Content-Type: application/octet-stream' "$url/api/share"
 expect "share body over --max-body: 413" 413 '"error":"request body too large' -- --data-binary @"$tmp/big.esi" "$url/api/share"
 expect "share GET list: 405" 405 '"error"' -- "$url/api/share"
-expect "share DELETE: 405" 405 '"error"' -- -X DELETE "$url/api/share/$id"
+expect "share DELETE without token: 403" 403 '"error"' -- -X DELETE "$url/api/share/$id"
+expect "share POST to an id: 405" 405 '"error"' -- -H 'Content-Type: application/octet-stream' --data-binary x "$url/api/share/$id"
 expect "bad request line: 400" 400 '' -- -X 'GET /x' "$url/"
 
 # Persistence: a new server on the same data folder still has the tape.

@@ -1,0 +1,206 @@
+#include "serve_api.hpp"
+
+#if defined(ESSI_HAVE_HTTPLIB)
+#include <cstdlib>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "essi/profile.hpp"
+#include "essi/report.hpp"
+#include "essi/report_json.hpp"
+#include "pipelined_check.hpp"
+#include "serve.hpp"
+#include "serve_socket.hpp"
+#include "sha256.hpp"
+
+#ifndef ESSIKIT_VERSION
+#define ESSIKIT_VERSION "0.1.0"
+#endif
+
+namespace essi::native {
+
+namespace {
+
+using Reader = httplib::ContentReader;
+
+std::string dump(const nlohmann::json& j, int indent = -1) {
+    return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+// The Content-Length the client declared; nullopt for a chunked body (size unknown until read).
+std::optional<std::uint64_t> declared_length(const httplib::Request& req) {
+    if (!req.has_header("Content-Length")) return std::nullopt;
+    return std::strtoull(req.get_header_value("Content-Length").c_str(), nullptr, 10);
+}
+
+void too_large(httplib::Response& res, std::uint64_t max_body) {
+    json_error(res, 413, "request body too large: the limit is " + std::to_string(max_body) + " bytes (--max-body)");
+    close_connection_after_response();
+}
+
+// Whether the body may be large: then it waits for one of the max_large_requests slots.
+bool is_large(const httplib::Request& req) {
+    const auto n = declared_length(req);
+    return !n || *n > kLargeBody;
+}
+
+// The body, read here (not parsed); nullopt with the error response set when it is over max_body or cut short.
+std::optional<std::string> read_body(const httplib::Request& req, httplib::Response& res, const Reader& reader,
+                                     std::uint64_t max_body) {
+    const auto n = declared_length(req);
+    if (n && *n > max_body) {
+        too_large(res, max_body);
+        return std::nullopt;
+    }
+    std::string body;
+    if (n) body.reserve(static_cast<std::size_t>(*n));
+    bool over = false;
+    const bool ok = reader([&](const char* data, std::size_t len) {
+        over = body.size() + len > max_body;
+        if (!over) body.append(data, len);
+        return !over;
+    });
+    if (over || res.status == 413) {
+        too_large(res, max_body);
+        return std::nullopt;
+    }
+    if (!ok) {
+        json_error(res, 400, "the request body was cut short");
+        close_connection_after_response();
+        return std::nullopt;
+    }
+    return body;
+}
+
+std::string param_or(const httplib::Request& req, const char* key, const char* fallback) {
+    return req.has_param(key) ? req.get_param_value(key) : std::string(fallback);
+}
+
+void check_tape(const httplib::Request& req, httplib::Response& res, const std::string& body) {
+    const std::string name = param_or(req, "profile", "iso6582");
+    // Built-in profiles only: a request never names a file on the server.
+    const auto profile = builtin_profile(name);
+    if (!profile) {
+        std::string known;
+        for (const std::string& n : builtin_profile_names()) known += (known.empty() ? "" : ", ") + n;
+        json_error(res, 400, "unknown profile '" + name + "'; expected one of: " + known);
+        return;
+    }
+    FileReport report;
+    report.path = param_or(req, "name", "-");
+    report.result = check_tape_pipelined(body, *profile);
+    const FileReport one[] = {std::move(report)};
+    res.set_content(dump(report_to_json(one, profile->name), 2) + "\n", "application/json");
+}
+
+void share_tape(ShareStore& store, httplib::Response& res, const std::string& body) {
+    if (body.empty()) return json_error(res, 400, "empty body: POST the tape's bytes");
+    const ShareStore::PutResult put = store.put(body);
+    if (put.too_large) return json_error(res, 507, put.error);
+    if (!put.ok) return json_error(res, 500, "cannot store the tape");
+    res.status = put.created ? 201 : 200;
+    res.set_header("Location", "/api/share/" + put.id);
+    nlohmann::json j{{"id", put.id},           {"url", "/#share=" + put.id}, {"api_url", "/api/share/" + put.id},
+                     {"size", body.size()},    {"created", put.created},     {"expires_unix", put.expires_unix}};
+    if (put.created) j["delete_token"] = put.delete_token;
+    res.set_content(dump(j), "application/json");
+}
+
+// Runs `handle` on the body read within the limits (a large body waits for a slot first).
+template <class Handle>
+void with_body(ApiContext& ctx, const httplib::Request& req, httplib::Response& res, const Reader& reader, Handle handle) {
+    BodyReading reading;  // no worker slot while waiting for a large-body slot or for the client's bytes
+    SemaphoreHold hold(is_large(req) ? &ctx.large_bodies : nullptr);
+    reading.start_clock();
+    std::optional<std::string> body = read_body(req, res, reader, ctx.max_body);
+    reading.done();
+    if (body) handle(*body);
+}
+
+bool valid_id(const std::string& id, httplib::Response& res) {
+    if (is_sha256_hex(id)) return true;
+    json_error(res, 400, "bad share id '" + id + "': expected 64 lower-case hex digits (SHA-256)");
+    return false;
+}
+
+void get_share(ShareStore& store, const httplib::Request& req, httplib::Response& res) {
+    const std::string id = req.matches[1];
+    if (!valid_id(id, res)) return;
+    auto tape = store.get(id);
+    if (!tape) return json_error(res, 404, "no shared tape " + id + " (never stored, expired or deleted)");
+    res.set_header("Cache-Control", "private, no-cache");  // content-addressed, but it can expire or be deleted
+    res.set_content(std::move(*tape), "text/plain; charset=us-ascii");
+}
+
+void delete_share(ShareStore& store, const httplib::Request& req, httplib::Response& res) {
+    const std::string id = req.matches[1];
+    if (!valid_id(id, res)) return;
+    const std::string token = req.has_header("X-Delete-Token") ? req.get_header_value("X-Delete-Token") : param_or(req, "token", "");
+    switch (store.remove(id, token)) {
+        case ShareStore::Removal::removed: res.status = 204; return;
+        case ShareStore::Removal::missing: return json_error(res, 404, "no shared tape " + id);
+        case ShareStore::Removal::wrong_token: return json_error(res, 403, "wrong or missing delete token (X-Delete-Token)");
+        case ShareStore::Removal::failed: return json_error(res, 500, "cannot delete the tape");
+    }
+}
+
+void add_method_errors(httplib::Server& server) {
+    const auto not_allowed = [](const char* allowed) {
+        return [allowed](const httplib::Request& req, httplib::Response& res) {
+            res.set_header("Allow", allowed);
+            json_error(res, 405, req.method + " is not allowed on " + req.path + "; use " + allowed);
+            close_connection_after_response();
+        };
+    };
+    const auto no_endpoint = [](const httplib::Request& req, httplib::Response& res) {
+        json_error(res, 404, "no API endpoint " + req.path);
+        close_connection_after_response();
+    };
+    const auto ignore_body = [](auto handler) {
+        return [handler](const httplib::Request& req, httplib::Response& res, const Reader&) { handler(req, res); };
+    };
+    server.Get("/api/check", not_allowed("POST"));
+    server.Put("/api/check", ignore_body(not_allowed("POST")));
+    server.Delete("/api/check", ignore_body(not_allowed("POST")));
+    server.Get("/api/share", not_allowed("POST"));
+    server.Post(R"(/api/share/.*)", ignore_body(not_allowed("GET, DELETE")));
+    server.Get(R"(/api/.*)", no_endpoint);
+    server.Post(R"(/.*)", ignore_body(no_endpoint));
+}
+
+}  // namespace
+
+void json_error(httplib::Response& res, int status, const std::string& message) {
+    res.status = status;
+    res.set_content(dump(nlohmann::json{{"error", message}, {"status", status}}), "application/json");
+}
+
+void add_api_routes(httplib::Server& server, const std::shared_ptr<ApiContext>& ctx) {
+    server.Get("/api/health", [ctx](const httplib::Request&, httplib::Response& res) {
+        res.set_content(dump({{"ok", true}, {"version", ESSIKIT_VERSION}, {"max_body", ctx->max_body},
+                              {"profiles", builtin_profile_names()}}),
+                        "application/json");
+    });
+    server.Post("/api/check", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
+        with_body(*ctx, req, res, reader, [&](const std::string& body) { check_tape(req, res, body); });
+    });
+    server.Post("/api/share", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
+        if (const unsigned wait = ctx->share_rate.try_take(req.remote_addr)) {
+            res.set_header("Retry-After", std::to_string(wait));
+            json_error(res, 429, "too many shares from this address (--share-rate); retry in " + std::to_string(wait) + " s");
+            return close_connection_after_response();
+        }
+        with_body(*ctx, req, res, reader, [&](const std::string& body) { share_tape(*ctx->store, res, body); });
+    });
+    server.Get(R"(/api/share/([^/]*))", [ctx](const httplib::Request& req, httplib::Response& res) { get_share(*ctx->store, req, res); });
+    server.Delete(R"(/api/share/([^/]*))", [ctx](const httplib::Request& req, httplib::Response& res, const Reader&) {
+        delete_share(*ctx->store, req, res);
+        close_connection_after_response();  // a DELETE body (if any) is not read
+    });
+    add_method_errors(server);
+}
+
+}  // namespace essi::native
+#endif

@@ -1,0 +1,72 @@
+// Counters behind `essi serve`'s limits on hostile clients (native only, no HTTP in here):
+//   ClientSlots  connections open at once, in all and per client address (--max-connections,
+//                --max-client-connections)
+//   Semaphore    a counting semaphore: requests handled at once (--threads), large bodies at once
+//                (--max-large-requests)
+//   RateLimit    uploads per minute per client address (--share-rate)
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <map>
+#include <mutex>
+#include <string>
+
+namespace essi::native {
+
+class ClientSlots {
+public:
+    ClientSlots(std::size_t max_total, std::size_t max_per_client) : max_total_(max_total), max_per_client_(max_per_client) {}
+    // Takes a slot for `client`; false (nothing taken) when either limit is reached.
+    bool enter(const std::string& client);
+    void leave(const std::string& client);
+
+private:
+    std::mutex mutex_;
+    std::map<std::string, std::size_t> per_client_;
+    std::size_t total_ = 0;
+    std::size_t max_total_;
+    std::size_t max_per_client_;
+};
+
+class Semaphore {
+public:
+    explicit Semaphore(std::size_t count) : free_(count) {}
+    void acquire();
+    void release();
+
+private:
+    std::mutex mutex_;
+    std::condition_variable cv_;
+    std::size_t free_;
+};
+
+// Holds a Semaphore for a scope (nothing when `sem` is null).
+class SemaphoreHold {
+public:
+    explicit SemaphoreHold(Semaphore* sem) : sem_(sem) { if (sem_) sem_->acquire(); }
+    ~SemaphoreHold() { if (sem_) sem_->release(); }
+    SemaphoreHold(const SemaphoreHold&) = delete;
+    SemaphoreHold& operator=(const SemaphoreHold&) = delete;
+
+private:
+    Semaphore* sem_;
+};
+
+// At most `per_minute` events per client in any 60 s window (0 = no limit).
+class RateLimit {
+public:
+    using Clock = std::chrono::steady_clock;
+    explicit RateLimit(unsigned per_minute) : per_minute_(per_minute) {}
+    // 0 when the event is allowed (and counted), else the seconds until it would be.
+    unsigned try_take(const std::string& client, Clock::time_point now = Clock::now());
+
+private:
+    std::mutex mutex_;
+    std::map<std::string, std::deque<Clock::time_point>> events_;
+    unsigned per_minute_;
+};
+
+}  // namespace essi::native

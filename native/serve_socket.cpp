@@ -1,0 +1,224 @@
+#include "serve_socket.hpp"
+
+#if defined(ESSI_HAVE_HTTPLIB)
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+namespace essi::native {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string address_of(const sockaddr_storage& sa, int& port) {
+    char buf[INET6_ADDRSTRLEN] = "";
+    if (sa.ss_family == AF_INET) {
+        const auto* in = reinterpret_cast<const sockaddr_in*>(&sa);
+        inet_ntop(AF_INET, &in->sin_addr, buf, sizeof buf);
+        port = ntohs(in->sin_port);
+    } else if (sa.ss_family == AF_INET6) {
+        const auto* in6 = reinterpret_cast<const sockaddr_in6*>(&sa);
+        inet_ntop(AF_INET6, &in6->sin6_addr, buf, sizeof buf);
+        port = ntohs(in6->sin6_port);
+    }
+    return buf;
+}
+
+struct Endpoint {
+    std::string ip;
+    int port = -1;
+};
+
+Endpoint endpoint(socket_t sock, bool peer) {
+    sockaddr_storage sa{};
+    socklen_t len = sizeof sa;
+    Endpoint e;
+    const int rc = peer ? getpeername(sock, reinterpret_cast<sockaddr*>(&sa), &len)
+                        : getsockname(sock, reinterpret_cast<sockaddr*>(&sa), &len);
+    if (rc == 0) e.ip = address_of(sa, e.port);
+    return e;
+}
+
+bool wait_for(socket_t sock, short events, int timeout_ms) {
+    if (timeout_ms <= 0) return false;
+    pollfd p{sock, events, 0};
+    int rc;
+    while ((rc = poll(&p, 1, timeout_ms)) < 0 && errno == EINTR) {
+    }
+    return rc > 0;
+}
+
+// A socket stream whose reads share one deadline per request (see the header); writes have their own timeout.
+class DeadlineStream : public httplib::Stream {
+public:
+    DeadlineStream(socket_t sock, const ConnectionLimits& limits)
+        : sock_(sock), limits_(limits), remote_(endpoint(sock, true)), local_(endpoint(sock, false)) {}
+    void begin_request() {
+        start_ = Clock::now();
+        bytes_ = 0;
+    }
+    bool is_readable() const override { return wait_for(sock_, POLLIN, remaining_ms()); }
+    bool is_writable() const override { return wait_for(sock_, POLLOUT, kWriteTimeoutMs); }
+    ssize_t read(char* ptr, size_t size) override {
+        if (!is_readable()) return -1;
+        ssize_t n;
+        while ((n = recv(sock_, ptr, size, 0)) < 0 && errno == EINTR) {
+        }
+        if (n > 0) bytes_ += static_cast<std::size_t>(n);
+        return n;
+    }
+    ssize_t write(const char* ptr, size_t size) override {
+        if (!is_writable()) return -1;
+        ssize_t n;
+        while ((n = send(sock_, ptr, size, MSG_NOSIGNAL)) < 0 && errno == EINTR) {
+        }
+        return n;
+    }
+    void get_remote_ip_and_port(std::string& ip, int& port) const override { ip = remote_.ip, port = remote_.port; }
+    void get_local_ip_and_port(std::string& ip, int& port) const override { ip = local_.ip, port = local_.port; }
+    socket_t socket() const override { return sock_; }
+    const std::string& remote_ip() const { return remote_.ip; }
+
+private:
+    static constexpr int kWriteTimeoutMs = 10000;
+    int remaining_ms() const {
+        const double allowed_s = limits_.request_timeout_s + static_cast<double>(bytes_) / kMinRateBytesPerSecond;
+        const auto deadline = start_ + std::chrono::milliseconds(static_cast<long long>(allowed_s * 1000));
+        return static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count());
+    }
+    socket_t sock_;
+    const ConnectionLimits& limits_;
+    Endpoint remote_, local_;
+    Clock::time_point start_ = Clock::now();
+    std::size_t bytes_ = 0;
+};
+
+// One thread per connection, at most `max` at once: enqueue() waits for a free one, which stops the accept
+// loop (the kernel's backlog holds the next connections) instead of queueing sockets without bound.
+class ConnectionThreads : public httplib::TaskQueue {
+public:
+    explicit ConnectionThreads(std::size_t max) : max_(max) {}
+    void enqueue(std::function<void()> fn) override {
+        std::unique_lock lock(mutex_);
+        cv_.wait(lock, [this] { return running_ < max_; });
+        ++running_;
+        std::thread([this, fn = std::move(fn)] {
+            fn();
+            std::lock_guard done(mutex_);
+            --running_;
+            cv_.notify_all();
+        }).detach();
+    }
+    void shutdown() override {
+        std::unique_lock lock(mutex_);
+        cv_.wait(lock, [this] { return running_ == 0; });
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable cv_;
+    std::size_t running_ = 0;
+    std::size_t max_;
+};
+
+void refuse(socket_t sock) {
+    static const std::string kBody = R"({"error":"too many connections from this address; retry later","status":429})";
+    static const std::string kBusy =
+        "HTTP/1.1 429 Too Many Requests\r\nContent-Type: application/json\r\nRetry-After: 1\r\nConnection: close\r\n"
+        "Content-Length: " + std::to_string(kBody.size()) + "\r\n\r\n" + kBody;
+    [[maybe_unused]] const ssize_t n = send(sock, kBusy.data(), kBusy.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
+}
+
+thread_local bool t_close_after = false;
+thread_local Semaphore* t_worker = nullptr;        // the worker slot this thread holds, if any
+thread_local DeadlineStream* t_stream = nullptr;   // the connection this thread serves
+
+}  // namespace
+
+HardenedServer::HardenedServer(const ConnectionLimits& limits)
+    : limits_(limits), slots_(limits.max_connections, limits.max_client_connections), workers_(limits.threads) {
+    const std::size_t max = limits.max_connections;
+    new_task_queue = [max] { return new ConnectionThreads(max); };
+    set_keep_alive_timeout(limits.keep_alive_timeout_s);
+    set_socket_options(exclusive_socket_options);
+    set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+        if (!t_worker) workers_.acquire();
+        t_worker = &workers_;
+        return guard_ ? guard_(req, res) : HandlerResponse::Unhandled;
+    });
+    set_post_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+        if (finisher_) finisher_(req, res);
+    });
+}
+
+bool HardenedServer::process_and_close_socket(socket_t sock) {
+    const std::string client = endpoint(sock, true).ip;
+    if (slots_.enter(client)) {
+        serve_connection(sock);
+        slots_.leave(client);
+    } else {
+        refuse(sock);
+    }
+    shutdown(sock, SHUT_RDWR);
+    close(sock);
+    return true;
+}
+
+void HardenedServer::serve_connection(socket_t sock) {
+    DeadlineStream strm(sock, limits_);
+    t_stream = &strm;
+    for (std::size_t left = keep_alive_max_count_; left > 0 && svr_sock_ != INVALID_SOCKET; --left) {
+        // The first request may take request_timeout_s to begin, the next ones keep_alive_timeout_s.
+        const int wait_s = left == keep_alive_max_count_ ? limits_.request_timeout_s : limits_.keep_alive_timeout_s;
+        if (!wait_for(sock, POLLIN, wait_s * 1000)) break;
+        strm.begin_request();
+        t_close_after = false;
+        bool closed = false;
+        const bool ok = process_request(strm, left == 1, closed, nullptr);
+        if (t_worker) t_worker->release();
+        t_worker = nullptr;
+        if (!ok || closed || t_close_after) break;
+    }
+    t_stream = nullptr;
+}
+
+BodyReading::BodyReading() : worker_(t_worker) {
+    if (worker_) worker_->release();
+    t_worker = nullptr;
+}
+
+void BodyReading::start_clock() {
+    if (t_stream) t_stream->begin_request();
+}
+
+void BodyReading::done() {
+    if (!worker_) return;
+    worker_->acquire();
+    t_worker = worker_;
+    worker_ = nullptr;
+}
+
+void HardenedServer::widen_backlog() {
+    if (svr_sock_ != INVALID_SOCKET) ::listen(svr_sock_, SOMAXCONN);
+}
+
+void close_connection_after_response() { t_close_after = true; }
+
+void exclusive_socket_options(socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+}
+
+}  // namespace essi::native
+#endif

@@ -1,0 +1,77 @@
+// The connection layer of `essi serve` (cpp-httplib 0.11): what a slow, idle or greedy client can hold.
+//   - every connection has its own thread (ConnectionThreads), at most max_connections at once; more wait in
+//     the kernel's accept queue. A slow client therefore blocks only its own thread, never the others.
+//   - a request must arrive within request_timeout_s plus 1 s per kMinRateBytesPerSecond bytes sent (a minimum
+//     rate, like Apache's mod_reqtimeout): a client sending its headers a byte at a time is cut off.
+//   - at most max_client_connections connections per client address; the next one gets a 429 and is closed.
+//   - at most `threads` requests are handled at once; a handler gives its slot back while it waits for and
+//     reads its body (BodyReading), so slow uploads do not hold them.
+//   - the listening socket has SO_REUSEADDR but never SO_REUSEPORT: a port in use is an error at start-up.
+#pragma once
+
+#if defined(ESSI_HAVE_HTTPLIB)
+#include <httplib.h>
+
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "serve_limits.hpp"
+
+namespace essi::native {
+
+struct ConnectionLimits {
+    std::size_t max_connections = 256;
+    std::size_t max_client_connections = 32;
+    std::size_t threads = 8;
+    int request_timeout_s = 10;
+    int keep_alive_timeout_s = 5;
+};
+
+inline constexpr double kMinRateBytesPerSecond = 64.0 * 1024;
+
+class HardenedServer : public httplib::Server {
+public:
+    explicit HardenedServer(const ConnectionLimits& limits);
+    // Runs before routing, on the request's thread, after taking one of the `threads` slots.
+    void set_request_guard(HandlerWithResponse guard) { guard_ = std::move(guard); }
+    // Runs on every response just before it is written (headers common to all responses).
+    void set_response_finisher(Handler finisher) { finisher_ = std::move(finisher); }
+    // After bind: a listen backlog of SOMAXCONN instead of cpp-httplib 0.11's 5, so that a burst of connections
+    // waits in the kernel's queue instead of having its SYNs dropped (each retried only after 1 s, then 3 s).
+    void widen_backlog();
+
+private:
+    bool process_and_close_socket(socket_t sock) override;
+    void serve_connection(socket_t sock);
+    ConnectionLimits limits_;
+    ClientSlots slots_;
+    Semaphore workers_;
+    HandlerWithResponse guard_;
+    Handler finisher_;
+};
+
+// Ends the connection after the current response (a request refused before its body was read).
+void close_connection_after_response();
+
+// While a handler waits for and reads its body, the request gives its worker slot back (a slow upload must not
+// hold one of the `threads`); start_clock() restarts the request's deadline once the handler is ready to read
+// (time spent waiting for a slot is not the client's); done() (or the destructor) takes a worker slot again.
+class BodyReading {
+public:
+    BodyReading();
+    ~BodyReading() { done(); }
+    void start_clock();
+    void done();
+    BodyReading(const BodyReading&) = delete;
+    BodyReading& operator=(const BodyReading&) = delete;
+
+private:
+    Semaphore* worker_;
+};
+
+// The `socket_options` of the listening socket: SO_REUSEADDR only (no SO_REUSEPORT).
+void exclusive_socket_options(socket_t sock);
+
+}  // namespace essi::native
+#endif

@@ -1,0 +1,108 @@
+#include "serve_static.hpp"
+
+#if defined(ESSI_HAVE_HTTPLIB)
+#include <httplib.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <system_error>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "serve_security.hpp"
+
+namespace essi::native {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Served {
+    const char* name;
+    const char* type;
+};
+constexpr Served kViewerFiles[] = {
+    {"index.html", "text/html; charset=utf-8"},    {"essi_viewer.js", "text/javascript"},
+    {"essi_viewer.wasm", "application/wasm"},      {"essi_viewer.data", "application/octet-stream"},
+    {"share_store.js", "text/javascript"},         {"favicon.ico", "image/x-icon"},
+};
+
+void not_found(httplib::Response& res) {
+    res.status = 404;
+    res.set_content(R"({"error":"not found","status":404})", "application/json");
+}
+
+// Streams the regular file `path` (404 when it is not one).
+void send_file(const fs::path& path, const char* type, httplib::Response& res) {
+    std::error_code ec;
+    const auto size = fs::is_regular_file(path, ec) ? fs::file_size(path, ec) : 0;
+    std::shared_ptr<std::FILE> f(ec ? nullptr : std::fopen(path.c_str(), "rb"), [](std::FILE* p) { if (p) std::fclose(p); });
+    if (!f || ec) return not_found(res);
+    res.set_content_provider(static_cast<std::size_t>(size), type, [f](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+        std::vector<char> buf(std::min<std::size_t>(length, 64 * 1024));
+        if (std::fseek(f.get(), static_cast<long>(offset), SEEK_SET) != 0) return false;
+        const std::size_t n = std::fread(buf.data(), 1, buf.size(), f.get());
+        return n > 0 && sink.write(buf.data(), n);
+    });
+}
+
+std::string read_small_file(const fs::path& path) {
+    std::string text;
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), std::fclose);
+    char buf[8192];
+    for (std::size_t n; f && (n = std::fread(buf, 1, sizeof buf, f.get())) > 0;) text.append(buf, n);
+    return text;
+}
+
+// The page itself: read whole (12 KB) to send the CSP that allows exactly its inline scripts and styles.
+void send_index(const fs::path& path, httplib::Response& res) {
+    std::string html = read_small_file(path);
+    if (html.empty()) return not_found(res);
+    res.set_header("Content-Security-Policy", viewer_csp(html));
+    res.set_content(std::move(html), "text/html; charset=utf-8");
+}
+
+void send_viewer_file(const StaticFiles& files, const std::string& name, httplib::Response& res) {
+    const auto it = std::find_if(std::begin(kViewerFiles), std::end(kViewerFiles), [&](const Served& s) { return name == s.name; });
+    if (it == std::end(kViewerFiles)) return not_found(res);
+    fs::path path = fs::path(files.web_root) / name;
+    std::error_code ec;
+    if (name == "share_store.js" && !fs::exists(path, ec) && !files.share_store_js.empty()) path = files.share_store_js;
+    if (name == "index.html") return send_index(path, res);
+    send_file(path, it->type, res);
+}
+
+std::vector<std::string> example_names(const std::string& dir) {
+    std::vector<std::string> names;
+    std::error_code ec;
+    if (dir.empty() || !fs::is_directory(dir, ec)) return names;
+    for (const auto& e : fs::directory_iterator(dir, ec)) {
+        if (e.is_regular_file(ec) && e.path().extension() == ".esi") names.push_back(e.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+}  // namespace
+
+void add_static_routes(httplib::Server& server, const StaticFiles& files) {
+    server.Get("/", [files](const httplib::Request&, httplib::Response& res) { send_viewer_file(files, "index.html", res); });
+    server.Get(R"(/([A-Za-z0-9_.-]+))", [files](const httplib::Request& req, httplib::Response& res) {
+        send_viewer_file(files, req.matches[1], res);
+    });
+    server.Get("/examples/index.json", [files](const httplib::Request&, httplib::Response& res) {
+        res.set_content(nlohmann::json(example_names(files.examples_dir)).dump(), "application/json");
+    });
+    // An example is served only when it is one of the listed names: no path is ever built from the request.
+    server.Get(R"(/examples/([A-Za-z0-9_.-]+\.esi))", [files](const httplib::Request& req, httplib::Response& res) {
+        const std::vector<std::string> names = example_names(files.examples_dir);
+        if (std::find(names.begin(), names.end(), req.matches[1].str()) == names.end()) return not_found(res);
+        send_file(fs::path(files.examples_dir) / req.matches[1].str(), "text/plain; charset=us-ascii", res);
+    });
+}
+
+}  // namespace essi::native
+#endif

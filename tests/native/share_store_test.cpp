@@ -1,0 +1,110 @@
+// The share store's limits (native/share_store.cpp): delete tokens, expiry, the size bound, and stores made
+// before delete tokens existed.
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include "serve_limits.hpp"
+#include "sha256.hpp"
+#include "share_store.hpp"
+
+namespace fs = std::filesystem;
+using namespace essi::native;
+
+namespace {
+
+fs::path fresh_dir(const std::string& name) {
+    fs::path p = fs::temp_directory_path() / ("essi_store_test_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(p);
+    return p;
+}
+
+std::unique_ptr<ShareStore> open_store(const fs::path& dir, StoreLimits limits = {}) {
+    std::string error;
+    auto store = ShareStore::open(dir.string(), error, limits);
+    EXPECT_TRUE(store) << error;
+    return store;
+}
+
+}  // namespace
+
+TEST(ShareStoreLimits, DeleteNeedsTheUploadersToken) {
+    const fs::path d = fresh_dir("token");
+    auto store = open_store(d);
+    const auto put = store->put("+100+0\n63\n");
+    ASSERT_TRUE(put.ok) << put.error;
+    ASSERT_EQ(put.delete_token.size(), 64u);
+    EXPECT_TRUE(store->put("+100+0\n63\n").delete_token.empty());  // a second uploader gets no token
+    EXPECT_EQ(store->remove(put.id, ""), ShareStore::Removal::wrong_token);
+    EXPECT_EQ(store->remove(put.id, sha256_hex("guess")), ShareStore::Removal::wrong_token);
+    EXPECT_EQ(store->remove(put.id, put.delete_token), ShareStore::Removal::removed);
+    EXPECT_FALSE(store->get(put.id));
+    EXPECT_EQ(store->remove(put.id, put.delete_token), ShareStore::Removal::missing);
+    fs::remove_all(d);
+}
+
+TEST(ShareStoreLimits, ExpiredSharesAreGoneAndDeleted) {
+    const fs::path d = fresh_dir("ttl");
+    auto store = open_store(d, StoreLimits{0, 1u << 20});  // every share expires at once
+    const auto put = store->put("tape");
+    ASSERT_TRUE(put.ok);
+    EXPECT_FALSE(store->get(put.id));
+    EXPECT_TRUE(store->put("tape").created);  // stored anew, with a new token
+    fs::remove_all(d);
+}
+
+TEST(ShareStoreLimits, OldestGoFirstOverMaxBytes) {
+    const fs::path d = fresh_dir("evict");
+    auto store = open_store(d, StoreLimits{3600, 10});
+    const auto a = store->put("aaaaaa");
+    const auto b = store->put("bbbbbb");
+    ASSERT_TRUE(a.ok && b.ok);
+    EXPECT_FALSE(store->get(a.id));
+    EXPECT_EQ(*store->get(b.id), "bbbbbb");
+    const auto huge = store->put("ccccccccccc");
+    EXPECT_FALSE(huge.ok);
+    EXPECT_TRUE(huge.too_large);
+    EXPECT_TRUE(store->get(b.id));
+    fs::remove_all(d);
+}
+
+TEST(ShareStoreLimits, OpensAStoreWithoutTokens) {
+    const fs::path d = fresh_dir("old");
+    fs::create_directories(d);
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open((d / "shares.sqlite3").c_str(), &db), SQLITE_OK);
+    const std::string id = sha256_hex("old");
+    const std::string sql = "CREATE TABLE shares (id TEXT PRIMARY KEY NOT NULL, size INTEGER NOT NULL, created_unix INTEGER "
+                            "NOT NULL, content BLOB NOT NULL); INSERT INTO shares VALUES ('" + id + "', 3, strftime('%s','now'), 'old');";
+    ASSERT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr), SQLITE_OK);
+    sqlite3_close(db);
+    auto store = open_store(d);
+    ASSERT_TRUE(store);
+    EXPECT_EQ(*store->get(id), "old");
+    EXPECT_EQ(store->remove(id, "anything"), ShareStore::Removal::wrong_token);
+    fs::remove_all(d);
+}
+
+TEST(ServeLimits, RateLimitPerClientPerMinute) {
+    RateLimit rate(2);
+    const auto t0 = RateLimit::Clock::now();
+    EXPECT_EQ(rate.try_take("a", t0), 0u);
+    EXPECT_EQ(rate.try_take("a", t0), 0u);
+    EXPECT_EQ(rate.try_take("a", t0 + std::chrono::seconds(10)), 50u);
+    EXPECT_EQ(rate.try_take("b", t0), 0u);  // another client
+    EXPECT_EQ(rate.try_take("a", t0 + std::chrono::seconds(61)), 0u);
+}
+
+TEST(ServeLimits, ClientSlots) {
+    ClientSlots slots(3, 2);
+    EXPECT_TRUE(slots.enter("a"));
+    EXPECT_TRUE(slots.enter("a"));
+    EXPECT_FALSE(slots.enter("a"));
+    EXPECT_TRUE(slots.enter("b"));
+    EXPECT_FALSE(slots.enter("c"));  // 3 in all
+    slots.leave("a");
+    EXPECT_TRUE(slots.enter("c"));
+}
