@@ -187,7 +187,7 @@ void add_api_routes(httplib::Server& server, const std::shared_ptr<ApiContext>& 
         with_body(*ctx, req, res, reader, [&](const std::string& body) { check_tape(req, res, body); });
     });
     server.Post("/api/share", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
-        if (const unsigned wait = ctx->share_rate.try_take(req.remote_addr)) {
+        if (const unsigned wait = ctx->share_rate.try_take(client_key(req.remote_addr))) {
             res.set_header("Retry-After", std::to_string(wait));
             json_error(res, 429, "too many shares from this address (--share-rate); retry in " + std::to_string(wait) + " s");
             return close_connection_after_response();

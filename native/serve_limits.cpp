@@ -1,6 +1,18 @@
 #include "serve_limits.hpp"
 
+#include <arpa/inet.h>
+
 namespace essi::native {
+
+std::string client_key(const std::string& ip) {
+    in6_addr a{};
+    if (ip.find(':') == std::string::npos || inet_pton(AF_INET6, ip.c_str(), &a) != 1) return ip;
+    if (IN6_IS_ADDR_V4MAPPED(&a)) return ip.substr(ip.rfind(':') + 1);
+    for (int i = 8; i < 16; ++i) a.s6_addr[i] = 0;
+    char buf[INET6_ADDRSTRLEN] = "";
+    inet_ntop(AF_INET6, &a, buf, sizeof buf);
+    return std::string(buf) + "/64";
+}
 
 bool ClientSlots::enter(const std::string& client) {
     std::lock_guard lock(mutex_);

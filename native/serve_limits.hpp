@@ -16,6 +16,10 @@
 
 namespace essi::native {
 
+// The key a client's limits are counted under: its IPv4 address, or the /64 network of an IPv6 address (one
+// host commonly owns a whole /64); an IPv4-mapped IPv6 address counts as its IPv4 address.
+[[nodiscard]] std::string client_key(const std::string& ip);
+
 class ClientSlots {
 public:
     ClientSlots(std::size_t max_total, std::size_t max_per_client) : max_total_(max_total), max_per_client_(max_per_client) {}

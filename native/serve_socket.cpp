@@ -163,7 +163,7 @@ HardenedServer::HardenedServer(const ConnectionLimits& limits)
 }
 
 bool HardenedServer::process_and_close_socket(socket_t sock) {
-    const std::string client = endpoint(sock, true).ip;
+    const std::string client = client_key(endpoint(sock, true).ip);
     if (slots_.enter(client)) {
         serve_connection(sock);
         slots_.leave(client);

@@ -108,3 +108,11 @@ TEST(ServeLimits, ClientSlots) {
     slots.leave("a");
     EXPECT_TRUE(slots.enter("c"));
 }
+
+TEST(ServeLimits, ClientKeyGroupsIpv6By64) {
+    EXPECT_EQ(client_key("192.0.2.7"), "192.0.2.7");
+    EXPECT_EQ(client_key("::ffff:192.0.2.7"), "192.0.2.7");
+    EXPECT_EQ(client_key("2001:db8:1:2:aaaa:bbbb:cccc:dddd"), "2001:db8:1:2::/64");
+    EXPECT_EQ(client_key("2001:db8:1:2::1"), client_key("2001:db8:1:2:ffff::9"));
+    EXPECT_NE(client_key("2001:db8:1:2::1"), client_key("2001:db8:1:3::1"));
+}
