@@ -165,7 +165,9 @@ TEST(Formats, GithubCommands) {
 TEST(Formats, UrisAndXml) {
     EXPECT_EQ(path_to_uri("./dir/a b#1.esi"), "dir/a%20b%231.esi");
     EXPECT_EQ(path_to_uri("/abs/x.esi"), "file:///abs/x.esi");
-    EXPECT_EQ(path_to_uri("dir\\x.esi"), "dir/x.esi");
+    // A backslash is a character of a Linux file name, not a separator: percent-encoded like any other byte.
+    EXPECT_EQ(path_to_uri("dir\\x.esi"), "dir%5Cx.esi");
+    EXPECT_EQ(path_to_uri("bad\xFF.esi"), "bad%FF.esi");
     EXPECT_EQ(xml_escape("<a href=\"x\">'&'\x01</a>"), "&lt;a href=&quot;x&quot;&gt;&apos;&amp;&apos;?&lt;/a&gt;");
 }
 
