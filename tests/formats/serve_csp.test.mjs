@@ -4,28 +4,8 @@
 // Needs the wasm build's viewer; skipped without it.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
-import fs from 'node:fs';
-import path from 'node:path';
 import { chromium } from 'playwright-core';
-import { essiBin, chromiumPath, sourceDir, tempDir } from './support.mjs';
-
-const webRoot = process.env.ESSI_WEB_ROOT || path.join(sourceDir, 'build/wasm/web');
-const haveViewer = fs.existsSync(path.join(webRoot, 'essi_viewer.wasm'));
-const args = ['--no-sandbox', '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'];
-
-function startServer(dataDir) {
-  return new Promise((resolve, reject) => {
-    const p = spawn(essiBin, ['serve', '--port', '0', '--web-root', webRoot, '--data', dataDir], { stdio: ['ignore', 'pipe', 'pipe'] });
-    let out = '';
-    p.stdout.on('data', (d) => {
-      out += d;
-      const m = out.match(/http:\/\/127\.0\.0\.1:\d+/);
-      if (m) resolve({ proc: p, url: m[0] });
-    });
-    p.on('exit', (code) => reject(new Error('essi serve exited with ' + code)));
-  });
-}
+import { chromiumPath, chromiumArgs as args, haveViewer, startServer, tempDir } from './support.mjs';
 
 test('the viewer runs under the CSP and is cross-origin isolated', { skip: !haveViewer && 'viewer not built (build/wasm/web)', timeout: 240000 }, async () => {
   const { proc, url } = await startServer(tempDir('csp'));

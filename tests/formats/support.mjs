@@ -1,5 +1,5 @@
 // Shared helpers of the format tests: where essi is, running it, temp folders.
-import { spawnSync } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -28,3 +28,22 @@ export function write(file, text) {
 
 export const goodTape = '39+3000\n+0+1000\n7\n+1000+0\n+0+1000+0+500-\n8\n+5+5\n63\n';
 export const badTape = '+100+0\n7\n+1x\n+100+0+0+500+\n8\n63\n';
+
+// The viewer's build and Chromium for the tests that run it under `essi serve`.
+export const webRoot = process.env.ESSI_WEB_ROOT || path.join(sourceDir, 'build/wasm/web');
+export const haveViewer = fs.existsSync(path.join(webRoot, 'essi_viewer.wasm'));
+export const chromiumArgs = ['--no-sandbox', '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'];
+
+// Starts `essi serve` on a free loopback port with the viewer and a share store in `dataDir`: {proc, url}.
+export function startServer(dataDir) {
+  return new Promise((resolve, reject) => {
+    const p = spawn(essiBin, ['serve', '--port', '0', '--web-root', webRoot, '--data', dataDir], { stdio: ['ignore', 'pipe', 'pipe'] });
+    let out = '';
+    p.stdout.on('data', (d) => {
+      out += d;
+      const m = out.match(/http:\/\/127\.0\.0\.1:\d+/);
+      if (m) resolve({ proc: p, url: m[0] });
+    });
+    p.on('exit', (code) => reject(new Error('essi serve exited with ' + code)));
+  });
+}
