@@ -6,6 +6,7 @@
 #include <regex>
 #include <set>
 
+#include "essi/text.hpp"
 #include "sha256.hpp"
 
 namespace essi::native {
@@ -16,23 +17,6 @@ std::string lower(std::string_view s) {
     std::string out(s);
     std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return out;
-}
-
-// Length of the UTF-8 sequence at s[i] (1..4), 0 when it is not a valid one.
-std::size_t utf8_length(std::string_view s, std::size_t i) {
-    const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[i + k]); };
-    const unsigned char c = b(0);
-    if (c < 0x80) return 1;
-    const std::size_t n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC2 ? 2 : 0;
-    if (n == 0 || c > 0xF4 || i + n > s.size()) return 0;
-    for (std::size_t k = 1; k < n; ++k) {
-        if ((b(k) & 0xC0) != 0x80) return 0;
-    }
-    if (c == 0xE0 && b(1) < 0xA0) return 0;   // overlong
-    if (c == 0xED && b(1) >= 0xA0) return 0;  // surrogate
-    if (c == 0xF0 && b(1) < 0x90) return 0;   // overlong
-    if (c == 0xF4 && b(1) >= 0x90) return 0;  // over U+10FFFF
-    return n;
 }
 
 bool params_clean(const httplib::Request& req) {
@@ -117,13 +101,7 @@ std::string handler_hashes(const std::string& html) {
 }  // namespace
 
 bool is_clean_text(std::string_view s) {
-    for (std::size_t i = 0; i < s.size();) {
-        if (s[i] == '\0') return false;
-        const std::size_t n = utf8_length(s, i);
-        if (n == 0) return false;
-        i += n;
-    }
-    return true;
+    return s.find('\0') == std::string_view::npos && is_valid_utf8(s);  // (essi/text.hpp)
 }
 
 std::string host_name(std::string_view host_header) {
