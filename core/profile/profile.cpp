@@ -1,6 +1,7 @@
 // Built-in profiles and the JSON form of a profile. Parsing never throws: nlohmann::json is used in its
 // non-throwing form and every key is type-checked before it is read.
 #include "essi/profile.hpp"
+#include "essi/text.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -64,14 +65,8 @@ std::string number_text(double v) {
     return buf;
 }
 
-// A key as an error message quotes it: at most kMaxKeyChars of it.
+// The bytes of a key that an error message quotes (essi::excerpt).
 constexpr std::size_t kMaxKeyChars = 40;
-std::string key_excerpt(const std::string& key) {
-    if (key.size() <= kMaxKeyChars) return key;
-    std::size_t n = kMaxKeyChars;
-    while (n > 0 && (static_cast<unsigned char>(key[n]) & 0xC0) == 0x80) --n;  // not inside a UTF-8 character
-    return key.substr(0, n) + "...";
-}
 
 void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
     auto number = [&](const char* key, double& out, Range range) {
@@ -184,7 +179,7 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
     for (auto it = j.begin(); it != j.end(); ++it) {
         bool known = false;
         for (const char* k : kKnownKeys) known = known || it.key() == k;
-        if (!known) errors.push_back("unknown key \"" + key_excerpt(it.key()) + "\"");
+        if (!known) errors.push_back("unknown key \"" + excerpt(it.key(), kMaxKeyChars) + "\"");
     }
 }
 

@@ -11,6 +11,7 @@
 #include "essi/read.hpp"
 
 #include "essi/function_codes.hpp"
+#include "essi/text.hpp"
 
 namespace essi {
 namespace {
@@ -180,13 +181,8 @@ std::string describe_byte(unsigned char c) {
     return buf;
 }
 
-// What a message quotes of the input: all of a short text, the start of a long one (a message never grows with
-// the input).
-constexpr std::size_t kExcerptChars = 12;
-std::string excerpt(std::string_view text) {
-    if (text.size() <= kExcerptChars) return std::string(text);
-    return std::string(text.substr(0, kExcerptChars)) + "...";
-}
+// The digits a message quotes of a number (essi::excerpt).
+constexpr std::size_t kExcerptDigits = 12;
 
 std::string_view trim(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
@@ -723,7 +719,7 @@ void EssiReader::classify(std::uint32_t first, const LineParse& lp, std::size_t 
     if (lp.lead_digits > 0) {
         if (lp.lead_digits > kMaxFunctionDigits) {
             fail(DiagCode::E103_FunctionCodeTooLong,
-                 "machine function " + excerpt(src_.substr(first, lp.lead_digits)) + " has " +
+                 "machine function " + excerpt(src_.substr(first, lp.lead_digits), kExcerptDigits) + " has " +
                      std::to_string(lp.lead_digits) + " digits; expected at most 3 (ISO 6582 3.4.1)");
             return;
         }

@@ -39,6 +39,13 @@ bool is_valid_utf8(std::string_view s) {
     return true;
 }
 
+std::string excerpt(std::string_view text, std::size_t max_bytes) {
+    if (text.size() <= max_bytes) return std::string(text);
+    std::size_t n = max_bytes;
+    while (n > 0 && is_continuation(static_cast<unsigned char>(text[n]))) --n;  // not inside a UTF-8 character
+    return std::string(text.substr(0, n)) + "...";
+}
+
 std::string display_text(std::string_view s) {
     static constexpr char kHex[] = "0123456789ABCDEF";
     std::string out;

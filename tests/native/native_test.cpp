@@ -20,6 +20,7 @@
 #include "render_svg.hpp"
 #include "sha256.hpp"
 #include "share_store.hpp"
+#include "temp_dir.hpp"
 #include "thread_pool.hpp"
 
 namespace fs = std::filesystem;
@@ -27,12 +28,6 @@ using namespace essi::native;
 
 namespace {
 
-fs::path temp_dir(const std::string& name) {
-    fs::path p = fs::temp_directory_path() / ("essi_native_test_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-}
 
 void write(const fs::path& p, const std::string& s) {
     fs::create_directories(p.parent_path());

@@ -10,17 +10,13 @@
 #include "serve_limits.hpp"
 #include "sha256.hpp"
 #include "share_store.hpp"
+#include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace essi::native;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-    fs::path p = fs::temp_directory_path() / ("essi_store_test_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(p);
-    return p;
-}
 
 std::unique_ptr<ShareStore> open_store(const fs::path& dir, StoreLimits limits = {}) {
     std::string error;
@@ -32,7 +28,7 @@ std::unique_ptr<ShareStore> open_store(const fs::path& dir, StoreLimits limits =
 }  // namespace
 
 TEST(ShareStoreLimits, DeleteNeedsTheUploadersToken) {
-    const fs::path d = fresh_dir("token");
+    const fs::path d = temp_dir("token");
     auto store = open_store(d);
     const auto put = store->put("+100+0\n63\n");
     ASSERT_TRUE(put.ok) << put.error;
@@ -47,7 +43,7 @@ TEST(ShareStoreLimits, DeleteNeedsTheUploadersToken) {
 }
 
 TEST(ShareStoreLimits, ExpiredSharesAreGoneAndDeleted) {
-    const fs::path d = fresh_dir("ttl");
+    const fs::path d = temp_dir("ttl");
     auto store = open_store(d, StoreLimits{0, 1u << 20});  // every share expires at once
     const auto put = store->put("tape");
     ASSERT_TRUE(put.ok);
@@ -57,7 +53,7 @@ TEST(ShareStoreLimits, ExpiredSharesAreGoneAndDeleted) {
 }
 
 TEST(ShareStoreLimits, OldestGoFirstOverMaxBytes) {
-    const fs::path d = fresh_dir("evict");
+    const fs::path d = temp_dir("evict");
     auto store = open_store(d, StoreLimits{3600, 10});
     const auto a = store->put("aaaaaa");
     const auto b = store->put("bbbbbb");
@@ -72,7 +68,7 @@ TEST(ShareStoreLimits, OldestGoFirstOverMaxBytes) {
 }
 
 TEST(ShareStoreLimits, OpensAStoreWithoutTokens) {
-    const fs::path d = fresh_dir("old");
+    const fs::path d = temp_dir("old");
     fs::create_directories(d);
     sqlite3* db = nullptr;
     ASSERT_EQ(sqlite3_open((d / "shares.sqlite3").c_str(), &db), SQLITE_OK);

@@ -31,4 +31,11 @@ TEST(Text, DisplayTextKeepsTextAndNamesTheRest) {
     EXPECT_TRUE(is_valid_utf8(display_text("\xC0\xAF\xED\xA0\x80\x80")));
 }
 
+TEST(Text, ExcerptQuotesTheStartAtACharacterBoundary) {
+    EXPECT_EQ(essi::excerpt("12345", 12), "12345");
+    EXPECT_EQ(essi::excerpt("123456789012345", 12), "123456789012...");
+    EXPECT_EQ(essi::excerpt("ab\xE4\xB8\xAD" "cd", 3), "ab...");  // not inside the 3-byte character
+    EXPECT_EQ(essi::excerpt("ab\xE4\xB8\xAD" "cd", 5), "ab\xE4\xB8\xAD...");
+}
+
 }  // namespace

@@ -17,4 +17,8 @@ namespace essi {
 // character (below U+0020, and DEL) is written as \xNN. Text that is already safe comes back unchanged.
 [[nodiscard]] std::string display_text(std::string_view s);
 
+// What a message quotes of input text: all of it when it has at most `max_bytes` bytes, else its start (cut at a
+// character boundary) and "...", so that a message never grows with the input.
+[[nodiscard]] std::string excerpt(std::string_view text, std::size_t max_bytes);
+
 }  // namespace essi
