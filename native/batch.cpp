@@ -79,7 +79,7 @@ std::vector<std::string> expand_paths(const std::vector<std::string>& args, cons
     return files;
 }
 
-void check_batch(const std::vector<std::string>& files, const Profile& profile, const BatchOptions& options,
+void check_batch(const std::vector<std::string>& files, const TapeRequest& request, const BatchOptions& options,
                  const std::function<void(BatchItem&&)>& emit) {
     std::vector<BatchItem> items(files.size());
     // A pipelined check needs a second thread: use it when there is a core to spare for it.
@@ -93,7 +93,8 @@ void check_batch(const std::vector<std::string>& files, const Profile& profile, 
             item.error = file.error;
         } else {
             item.read_ok = true;
-            item.report.result = pipelined ? check_tape_pipelined(file.bytes, profile) : check_tape(file.bytes, profile);
+            const TapeSetup setup = request.setup(file.bytes);
+            item.report.result = pipelined ? check_tape_pipelined(file.bytes, setup) : check_tape(file.bytes, setup);
             limit_diagnostics(item.report, options.max_diagnostics);
         }
         item.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "essi/profile.hpp"
+#include "tape_request.hpp"
 #include "file_io.hpp"
 #include "essi/report_json.hpp"
 
@@ -50,7 +51,7 @@ struct BatchOptions {
 // Reads and checks `files` on options.jobs threads and calls emit for each, on the calling thread, in the
 // order of `files`. A single big tape (or jobs >= 2) uses the two-thread check_tape_pipelined; with jobs == 1
 // everything runs on the calling thread.
-void check_batch(const std::vector<std::string>& files, const Profile& profile, const BatchOptions& options,
+void check_batch(const std::vector<std::string>& files, const TapeRequest& request, const BatchOptions& options,
                  const std::function<void(BatchItem&&)>& emit);
 
 }  // namespace essi::native

@@ -26,6 +26,7 @@
 #include "batch.hpp"
 #include "formats.hpp"
 #include "render_svg.hpp"
+#include "tape_request.hpp"
 #include "serve.hpp"
 #include "thread_pool.hpp"
 #include "file_io.hpp"
@@ -85,6 +86,23 @@ std::optional<essi::Profile> resolve_profile(const std::string& arg) {
     return parsed.profile;
 }
 
+// --profile and --input: "auto" leaves the choice to each tape's content (essi/dialect.hpp).
+std::optional<essi::native::TapeRequest> resolve_request(const std::string& profile_arg, const std::string& input_arg) {
+    essi::native::TapeRequest r;
+    if (!essi::native::parse_input_format(input_arg, r.input)) {
+        err("essi: unknown --input '" + essi::display_text(input_arg) + "'; expected essi, eia or auto\n");
+        return std::nullopt;
+    }
+    if (profile_arg == "auto") {
+        r.profile_name = "auto";
+        return r;
+    }
+    r.profile = resolve_profile(profile_arg);
+    if (!r.profile) return std::nullopt;
+    r.profile_name = r.profile->name;
+    return r;
+}
+
 std::vector<std::string> expand_paths(const std::vector<std::string>& paths, bool& io_failed,
                                       const essi::native::ExpandOptions& options = {}) {
     std::vector<std::string> errors;
@@ -98,7 +116,7 @@ std::vector<std::string> expand_paths(const std::vector<std::string>& paths, boo
 
 // Reads and checks every path (directories: the tape files below them). Unreadable files are reported on
 // stderr and skipped (io_failed set).
-std::vector<FileReport> check_files(const std::vector<std::string>& args, const essi::Profile& profile,
+std::vector<FileReport> check_files(const std::vector<std::string>& args, const essi::native::TapeRequest& request,
                                     std::uint64_t max_size, bool& io_failed) {
     const std::vector<std::string> paths = expand_paths(args, io_failed);
     std::vector<FileReport> reports;
@@ -110,7 +128,7 @@ std::vector<FileReport> check_files(const std::vector<std::string>& args, const 
             io_failed = true;
             continue;
         }
-        reports.push_back({path, essi::native::check_tape_pipelined(file.bytes, profile)});
+        reports.push_back({path, essi::native::check_tape_pipelined(file.bytes, request.setup(file.bytes))});
         // The bytes go out of scope here: only one tape is in memory at a time.
     }
     return reports;
@@ -133,6 +151,7 @@ int finish(int code) {
 struct CheckOptions {
     std::string format = "text";
     std::string profile;
+    std::string input = "auto";
     std::string ext;             // --ext LIST ("" = the defaults)
     bool no_sniff = false;
     unsigned jobs = 0;           // 0 = all cores
@@ -146,8 +165,9 @@ struct CheckOptions {
 int run_check(const std::vector<std::string>& paths, const CheckOptions& o) {
     using namespace essi::native;
     const auto t0 = std::chrono::steady_clock::now();
-    const auto profile = resolve_profile(o.profile);
-    if (!profile) return kExitUsage;
+    const auto request = resolve_request(o.profile, o.input);
+    if (!request) return kExitUsage;
+    const std::string& profile_name = request->profile_name;
     bool io_failed = false;
 
     ExpandOptions expand;
@@ -164,7 +184,7 @@ int run_check(const std::vector<std::string>& paths, const CheckOptions& o) {
     BatchTotals totals;
     std::vector<BatchItem> kept;       // json, junit, sarif: the whole report is written at the end
     const bool streamed = o.format == "text" || o.format == "github";
-    check_batch(files, *profile, batch, [&](BatchItem&& item) {
+    check_batch(files, *request, batch, [&](BatchItem&& item) {
         totals.add(item, fail_on);
         if (!item.read_ok) {
             err("essi: cannot read " + item.report.display_path() + ": " + item.error + "\n");
@@ -185,15 +205,15 @@ int run_check(const std::vector<std::string>& paths, const CheckOptions& o) {
         reports.reserve(kept.size());
         for (BatchItem& it : kept)
             if (it.read_ok) reports.push_back(std::move(it.report));
-        out(report_to_json(reports, profile->name).dump(kJsonIndent));
+        out(report_to_json(reports, profile_name).dump(kJsonIndent));
         out("\n");
     } else if (o.format == "junit") {
-        out(junit_report(kept, profile->name, seconds, fail_on));
+        out(junit_report(kept, profile_name, seconds, fail_on));
     } else if (o.format == "sarif") {
-        out(sarif_report(kept, profile->name, o.docs_url).dump(kJsonIndent));
+        out(sarif_report(kept, profile_name, o.docs_url).dump(kJsonIndent));
         out("\n");
     }
-    const std::string summary = batch_summary_line(totals, profile->name, seconds) + "\n";
+    const std::string summary = batch_summary_line(totals, profile_name, seconds) + "\n";
     if (streamed) out(summary);
     else if (!o.quiet) err(summary);
 
@@ -229,6 +249,7 @@ struct RenderCliOptions {
     std::string path;
     std::string output;
     std::string profile;
+    std::string input = "auto";
     bool png = false;
     bool no_travel = false;
     double width = 1200;
@@ -236,8 +257,8 @@ struct RenderCliOptions {
 };
 
 int run_render(const RenderCliOptions& o) {
-    const auto profile = resolve_profile(o.profile);
-    if (!profile) return kExitUsage;
+    const auto request = resolve_request(o.profile, o.input);
+    if (!request) return kExitUsage;
     const essi::native::ReadResult file = essi::native::read_whole_file(o.path, o.max_size);
     if (!file.ok) {
         err("essi: cannot read " + essi::display_text(o.path) + ": " + file.error + "\n");
@@ -247,7 +268,8 @@ int run_render(const RenderCliOptions& o) {
     options.title = o.path == "-" ? std::string("-") : essi::display_text(std::filesystem::path(o.path).filename().string());
     options.width_px = o.width;
     options.show_travel = !o.no_travel;
-    const essi::native::RenderResult r = essi::native::render_svg(file.bytes, *profile, options);
+    const essi::TapeSetup setup = request->setup(file.bytes);
+    const essi::native::RenderResult r = essi::native::render_svg(file.bytes, setup.profile, options, setup.format);
     std::string output = o.output;
     const bool png = o.png || (output.size() > 4 && output.compare(output.size() - 4, 4, ".png") == 0);
     if (output.empty()) {
@@ -289,13 +311,13 @@ void report_errors_briefly(const std::vector<FileReport>& reports) {
 }
 
 int run_stats(const std::vector<std::string>& paths, const std::string& format, const std::string& profile_arg,
-              std::uint64_t max_size) {
-    const auto profile = resolve_profile(profile_arg);
-    if (!profile) return kExitUsage;
+              const std::string& input_arg, std::uint64_t max_size) {
+    const auto request = resolve_request(profile_arg, input_arg);
+    if (!request) return kExitUsage;
     bool io_failed = false;
-    const auto reports = check_files(paths, *profile, max_size, io_failed);
+    const auto reports = check_files(paths, *request, max_size, io_failed);
     if (format == "json") {
-        out(essi::stats_report_to_json(reports, profile->name).dump(kJsonIndent));
+        out(essi::stats_report_to_json(reports, request->profile_name).dump(kJsonIndent));
         out("\n");
     } else {
         bool first = true;
@@ -309,17 +331,19 @@ int run_stats(const std::vector<std::string>& paths, const std::string& format, 
     return finish(io_failed ? kExitUsage : any_errors(reports) ? kExitTapeErrors : kExitOk);
 }
 
-int run_trace(const std::string& path, const std::string& profile_arg, std::uint64_t max_size) {
-    const auto profile = resolve_profile(profile_arg);
-    if (!profile) return kExitUsage;
+int run_trace(const std::string& path, const std::string& profile_arg, const std::string& input_arg,
+              std::uint64_t max_size) {
+    const auto request = resolve_request(profile_arg, input_arg);
+    if (!request) return kExitUsage;
     const essi::native::ReadResult file = essi::native::read_whole_file(path, max_size);
     if (!file.ok) {
         err("essi: cannot read " + essi::display_text(path) + ": " + file.error + "\n");
         return kExitUsage;
     }
     // The trace of a big tape is hundreds of MB: it is streamed in chunks, never held whole.
+    const essi::TapeSetup setup = request->setup(file.bytes);
     const auto diagnostics =
-        essi::trace_tape(file.bytes, *profile, [](std::string_view piece) { out(piece); });
+        essi::trace_tape(file.bytes, setup.profile, [](std::string_view piece) { out(piece); }, setup.format);
     const bool errors = std::any_of(diagnostics.begin(), diagnostics.end(),
                                     [](const essi::Diagnostic& d) { return d.severity == essi::Severity::Error; });
     return finish(errors ? kExitTapeErrors : kExitOk);
@@ -348,6 +372,7 @@ int main(int argc, char** argv) {
 
     std::string format = "text";
     std::string profile_arg;
+    std::string input_arg = "auto";
     std::vector<std::string> paths;
     std::string trace_path;
     std::string show_arg;
@@ -359,10 +384,19 @@ int main(int argc, char** argv) {
             ->type_name("SIZE");
     };
 
+    constexpr const char* kProfileHelp =
+        "Built-in profile name (see `essi profile list`), a JSON profile file, or auto (the dialect the tape's "
+        "evidence shows); default iso6582";
+    constexpr const char* kInputHelp = "Tape format: essi, eia, or auto (from the content; the default)";
+    const auto add_input_option = [](CLI::App* sub, std::string& value) {
+        sub->add_option("--input", value, kInputHelp)
+            ->check(CLI::IsMember({"essi", "eia", "auto"}))
+            ->type_name("essi|eia|auto")
+            ->capture_default_str();
+    };
     const auto add_profile_option = [&](CLI::App* sub) {
-        sub->add_option("--profile", profile_arg,
-                        "Built-in profile name (see `essi profile list`) or a JSON profile file; default iso6582")
-            ->type_name("NAME|FILE");
+        sub->add_option("--profile", profile_arg, kProfileHelp)->type_name("NAME|FILE|auto");
+        add_input_option(sub, input_arg);
     };
     const auto add_format_option = [&](CLI::App* sub) {
         sub->add_option("--format", format, "Output format: text or json")
@@ -377,9 +411,8 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"text", "json", "junit", "sarif", "github"}))
         ->type_name("text|json|junit|sarif|github")
         ->capture_default_str();
-    check->add_option("--profile", check_opts.profile,
-                      "Built-in profile name (see `essi profile list`) or a JSON profile file; default iso6582")
-        ->type_name("NAME|FILE");
+    check->add_option("--profile", check_opts.profile, kProfileHelp)->type_name("NAME|FILE|auto");
+    add_input_option(check, check_opts.input);
     check->add_option("--ext", check_opts.ext,
                       "File extensions that count in directories (default: .esi,.essi,.ess,.nc,.txt)")
         ->type_name("LIST");
@@ -419,8 +452,8 @@ int main(int argc, char** argv) {
     render->add_option("PATH", render_opts.path, "Tape file ('-' reads standard input)")->required();
     add_max_size_option(render, render_opts.max_size);
     render->add_option("-o,--output", render_opts.output, "Output file ('-' = stdout; default NAME.svg)");
-    render->add_option("--profile", render_opts.profile, "Built-in profile name or JSON profile file")
-        ->type_name("NAME|FILE");
+    render->add_option("--profile", render_opts.profile, kProfileHelp)->type_name("NAME|FILE|auto");
+    add_input_option(render, render_opts.input);
     render->add_flag("--png", render_opts.png, "Write PNG (through rsvg-convert; also when OUT ends in .png)");
     render->add_flag("--no-travel", render_opts.no_travel, "Leave out travel and rapid motion");
     render->add_option("--width", render_opts.width, "Width of the picture in pixels")
@@ -482,8 +515,8 @@ int main(int argc, char** argv) {
     }
 
     if (*check) return run_check(paths, check_opts);
-    if (*stats) return run_stats(paths, format, profile_arg, max_size);
-    if (*trace) return run_trace(trace_path, profile_arg, max_size);
+    if (*stats) return run_stats(paths, format, profile_arg, input_arg, max_size);
+    if (*trace) return run_trace(trace_path, profile_arg, input_arg, max_size);
     if (*render) return run_render(render_opts);
     if (*show) return run_profile_show(show_arg);
     if (*list) return run_profile_list();

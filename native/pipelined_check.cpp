@@ -6,8 +6,14 @@
 
 namespace essi::native {
 
-CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile) {
-    if (bytes.size() < kPipelineMinBytes) return check_tape(bytes, profile);
+CheckResult check_tape_pipelined(std::string_view bytes, const TapeSetup& setup) {
+    CheckResult r = check_tape_pipelined(bytes, setup.profile, setup.format);
+    record_setup(r, setup);
+    return r;
+}
+
+CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile, InputFormat format) {
+    if (bytes.size() < kPipelineMinBytes) return check_tape(bytes, profile, format);
 
     // A ring of chunks: the reader fills slot k, the checker empties it, in order. A slot changes hands through
     // its atomic `full` flag (C++20 wait/notify: a short spin, then a futex), so a thread that is only a little
@@ -21,7 +27,7 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile)
     std::array<Slot, kPipelineChunks> slots;
 
     std::thread reader_thread([&] {
-        TapeReader reader(bytes, profile);
+        TapeReader reader(bytes, profile, format);
         for (std::size_t k = 0;; ++k) {
             Slot& slot = slots[k % slots.size()];
             slot.full.wait(true, std::memory_order_acquire);
@@ -52,7 +58,10 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile)
         if (last) break;
     }
     reader_thread.join();
-    return checker.finish();
+    CheckResult r = checker.finish();
+    r.input = format;
+    r.profile = profile.name;
+    return r;
 }
 
 }  // namespace essi::native

@@ -14,6 +14,9 @@ constexpr std::size_t kPipelineMinBytes = 1u << 20;
 constexpr std::size_t kPipelineChunkBlocks = 16384;
 constexpr int kPipelineChunks = 4;
 
-[[nodiscard]] CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile);
+[[nodiscard]] CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
+                                               InputFormat format = InputFormat::Essi);
+// The check of a tape as `setup` reads it (check_tape(bytes, setup) on two cores).
+[[nodiscard]] CheckResult check_tape_pipelined(std::string_view bytes, const TapeSetup& setup);
 
 }  // namespace essi::native

@@ -84,10 +84,10 @@ private:
 
 }  // namespace
 
-RenderResult render_svg(std::string_view bytes, const Profile& profile, const RenderOptions& options) {
+RenderResult render_svg(std::string_view bytes, const Profile& profile, const RenderOptions& options, InputFormat format) {
     RenderResult out;
     // Pass 1: the check (diagnostics, stats, extent).
-    out.result = check_tape(bytes, profile);
+    out.result = check_tape(bytes, profile, format);
     const Stats& st = out.result.stats;
     Box box = st.motion_bbox;
     box.add(st.cut_bbox);
@@ -100,7 +100,7 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     SvgSink sink(tolerance);
     {
         TapeChecker checker(bytes, profile, &sink);
-        TapeReader reader(bytes, profile);
+        TapeReader reader(bytes, profile, format);
         Tape chunk;
         while (reader.read_chunk(chunk, kCheckChunkBlocks)) checker.check_chunk(chunk);
         (void)checker.finish();

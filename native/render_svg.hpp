@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "essi/profile.hpp"
+#include "essi/read.hpp"
 #include "essi/report.hpp"
 
 namespace essi::native {
@@ -33,6 +34,7 @@ struct RenderResult {
 
 // Checks the tape and draws it. Arcs and parabolas are flattened to polylines within a tolerance of
 // 1/4000 of the drawing's extent (at least the profile's chord tolerance).
-[[nodiscard]] RenderResult render_svg(std::string_view bytes, const Profile& profile, const RenderOptions& options);
+[[nodiscard]] RenderResult render_svg(std::string_view bytes, const Profile& profile, const RenderOptions& options,
+                                      InputFormat format = InputFormat::Essi);
 
 }  // namespace essi::native

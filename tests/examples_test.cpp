@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "essi/diagnostics.hpp"
+#include "essi/dialect.hpp"
 #include "essi/profile.hpp"
 #include "essi/report.hpp"
 #include "essi/trace.hpp"
@@ -58,7 +59,7 @@ std::vector<std::string> example_names() {
     for (const auto& entry : fs::directory_iterator(examples_dir(), ec)) {
         if (!entry.is_regular_file()) continue;
         const fs::path& p = entry.path();
-        if (p.extension() == ".esi") names.push_back(p.stem().string());
+        if (p.extension() == ".esi" || p.extension() == ".eia") names.push_back(p.stem().string());
     }
     std::sort(names.begin(), names.end());
     return names;
@@ -121,7 +122,7 @@ TEST_P(ExampleTape, MatchesExpectedAndTrace) {
     const std::string name = GetParam();
     SCOPED_TRACE(name);
 
-    const std::string tape_path = path_of(name, ".esi");
+    const std::string tape_path = file_exists(path_of(name, ".esi")) ? path_of(name, ".esi") : path_of(name, ".eia");
     const std::string expected_path = path_of(name, ".expected.json");
     const std::string trace_path = path_of(name, ".trace");
     ASSERT_TRUE(file_exists(expected_path)) << "missing " << expected_path;
@@ -138,7 +139,12 @@ TEST_P(ExampleTape, MatchesExpectedAndTrace) {
     const auto profile = essi::builtin_profile(profile_name);
     ASSERT_TRUE(profile.has_value()) << "unknown profile " << profile_name;
 
-    const essi::CheckResult result = essi::check_tape(bytes, *profile);
+    // The format from the content; `--profile auto` names the example's dialect.
+    const essi::InputFormat format = essi::detect_input_format(bytes);
+    EXPECT_EQ(essi::input_format_name(format), expected.value("input", std::string("essi")));
+    const essi::DialectGuess guess = essi::guess_dialect(bytes, format);
+    EXPECT_EQ(guess.profile, profile_name) << "--profile auto chooses " << guess.profile;
+    const essi::CheckResult result = essi::check_tape(bytes, *profile, format);
 
     // --- ok and diagnostics: the multiset of (code, line) ---
     ASSERT_TRUE(expected.contains("ok") && expected["ok"].is_boolean());
@@ -201,7 +207,7 @@ TEST_P(ExampleTape, MatchesExpectedAndTrace) {
 
     // --- trace golden (good tapes) ---
     if (!expected_ok) return;
-    const std::string trace = essi::trace_tape(bytes, *profile);
+    const std::string trace = essi::trace_tape(bytes, *profile, format);
     if (update_golden()) {
         std::ofstream out(trace_path, std::ios::binary | std::ios::trunc);
         ASSERT_TRUE(out) << "cannot write " << trace_path;
@@ -237,7 +243,7 @@ TEST(ExamplesDir, HasTapesAndNoOrphans) {
             if (file.size() > suffix.size() && file.ends_with(suffix)) {
                 const std::string stem = file.substr(0, file.size() - suffix.size());
                 EXPECT_TRUE(std::binary_search(names.begin(), names.end(), stem))
-                    << file << " has no " << stem << ".esi beside it";
+                    << file << " has no " << stem << ".esi or .eia beside it";
             }
         }
     }

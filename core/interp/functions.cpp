@@ -71,7 +71,28 @@ FunctionInfo iso_row(int code) {
     return unassigned(code);
 }
 
+// The ranges of the values functions take (E216): wide enough for any machine, narrow enough to catch a value
+// in the wrong unit (a feed in mm/s, a kerf in micrometres).
+struct RangeRow {
+    int code;
+    FunctionValueRange range;
+};
+constexpr RangeRow kValueRanges[] = {
+    {fn::kFeed, {0, 100000, false}},             // mm/min (0: W209, the profile's feed)
+    {fn::kDwell, {0, 3600, false}},              // s
+    {fn::kKerfLeft, {0, 100, true}},             // mm
+    {fn::kKerfRight, {0, 100, true}},
+    {fn::kWoydaBurnerCount, {1, 32, false}},     // burners
+    {fn::kWoydaBurnerSpacing, {0, 100000, true}},  // mm
+};
+
 }  // namespace
+
+std::optional<FunctionValueRange> function_value_range(int code) {
+    for (const RangeRow& r : kValueRanges)
+        if (r.code == code) return r.range;
+    return std::nullopt;
+}
 
 std::optional<FunctionInfo> function_info(int code, Dialect dialect) {
     if (code < 0 || code >= fn::kCodeCount) return std::nullopt;

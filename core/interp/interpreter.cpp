@@ -13,6 +13,7 @@
 #include "essi/functions.hpp"
 #include "essi/geom.hpp"
 #include "essi/stats.hpp"
+#include "essi/text.hpp"
 
 namespace essi {
 namespace {
@@ -68,10 +69,11 @@ public:
     void finish();
 
 private:
-    void function(const Block& b, std::size_t index, bool has_value, long long value);
-    [[gnu::noinline]] bool admit_function(const Block& b, bool& has_value, long long value);
-    void set_kerf(const Block& b, KerfSide side, bool has_value, long long value);
-    [[gnu::noinline]] void set_feed(const Block& b, bool has_value, long long value);
+    void function(const Block& b, std::size_t index, bool has_value, double value);
+    [[gnu::noinline]] bool admit_function(const Block& b, bool& has_value, double value);
+    bool value_in_range(const Block& b, double value);
+    void set_kerf(const Block& b, KerfSide side, bool has_value, double value);
+    [[gnu::noinline]] void set_feed(const Block& b, bool has_value, double value);
     [[gnu::noinline]] void zero_offset(const Block& b);
     [[gnu::noinline]] void return_to_zero(const Block& b, std::size_t index);
     [[nodiscard]] std::uint8_t function_flags(int code) const { return code < kFunctionCodes ? function_flags_[code] : 0; }
@@ -228,7 +230,7 @@ void Machine::run(const Tape& chunk, std::span<const MotionMeasure> measures) {
                 function(b, i, false, 0);
                 break;
             case BlockKind::FunctionValue:
-                function(b, i, true, w[0]);
+                function(b, i, true, b.function_value(w[0]));
                 break;
             case BlockKind::Motion:
                 motion(b, i, w, pre);
@@ -292,7 +294,7 @@ void Machine::send_event(const Block& b, std::size_t index, EventKind kind, bool
 
 // The checks a function block must pass before it takes effect (rarely failed: kept out of the common path).
 // Returns false when the block is ignored; may clear `has_value` (a value the function does not take).
-bool Machine::admit_function(const Block& b, bool& has_value, long long value) {
+bool Machine::admit_function(const Block& b, bool& has_value, double value) {
     const int code = b.code;
     if (zero_offset_pending_) {
         warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
@@ -319,7 +321,7 @@ bool Machine::admit_function(const Block& b, bool& has_value, long long value) {
     if (has_value && (flags & kTakesNoValue)) {
         warn(DiagCode::W202_FunctionValueIgnored, b,
              "machine function " + std::to_string(code) + " (" + function_name(code) +
-                 ") takes no value; the value " + std::to_string(value) + " is ignored");
+                 ") takes no value; the value " + number_text(value) + " is ignored");
         has_value = false;
     }
     if (!has_value && (flags & kNeedsValue)) {
@@ -331,32 +333,47 @@ bool Machine::admit_function(const Block& b, bool& has_value, long long value) {
     return true;
 }
 
+bool Machine::value_in_range(const Block& b, double value) {
+    const auto range = function_value_range(b.code);
+    if (!range) return true;
+    const double scale = range->in_mm ? profile_.unit_mm : 1.0;
+    if (value * scale >= range->min && value * scale <= range->max) return true;
+    const auto info = function_info(b.code, profile_.dialect);
+    warn(DiagCode::E216_FunctionValueRange, b,
+         "the value " + number_text(value) + " of machine function " + std::to_string(b.code) + " (" + function_name(b.code) +
+             ") is outside " + number_text(range->min) + " to " + number_text(range->max) + " " +
+             (range->in_mm ? std::string("mm") : std::string(info ? info->value_unit : "")) +
+             (range->in_mm ? " (" + number_text(value * scale) + " mm at " + number_text(profile_.unit_mm) + " mm a unit)" : "") +
+             "; the block is ignored");
+    return false;
+}
+
 void Machine::warn_kerf_while_cutting(const Block& b, KerfSide side) {
     warn(DiagCode::W204_KerfWhileCutting, b,
          "kerf compensation switched " + std::string(side == KerfSide::Off ? "off" : "on") +
              " while a cutting tool is on; expected it before the pierce (7, 53 ...) or after the tool is off");
 }
 
-void Machine::set_kerf(const Block& b, KerfSide side, bool has_value, long long value) {
+void Machine::set_kerf(const Block& b, KerfSide side, bool has_value, double value) {
     if (tools_ & kCuttingTools) [[unlikely]] warn_kerf_while_cutting(b, side);
     kerf_ = side;
     if (side == KerfSide::Off) {
         kerf_offset_mm_ = 0;
         return;
     }
-    const double units = has_value ? static_cast<double>(value) : profile_.kerf_units;
+    const double units = has_value ? value : profile_.kerf_units;
     const double mm = units * profile_.unit_mm;
     kerf_offset_mm_ = profile_.kerf_value == KerfValueMeaning::Width ? mm / 2 : mm;
 }
 
-void Machine::set_feed(const Block& b, bool has_value, long long value) {
+void Machine::set_feed(const Block& b, bool has_value, double value) {
     if (has_value && value <= 0) {
         warn(DiagCode::W209_ZeroFeed, b,
-             "programmed feed " + std::to_string(value) + " mm/min cannot move the machine; the time estimate uses the profile's feed of " +
+             "programmed feed " + number_text(value) + " mm/min cannot move the machine; the time estimate uses the profile's feed of " +
                  std::to_string(static_cast<long long>(profile_.feed_mm_min)) + " mm/min");
         feed_mm_min_ = profile_.feed_mm_min;
     } else {
-        feed_mm_min_ = has_value ? static_cast<double>(value) : profile_.feed_mm_min;
+        feed_mm_min_ = has_value ? value : profile_.feed_mm_min;
     }
 }
 
@@ -389,14 +406,15 @@ void Machine::warn_macro_only(const Block& b) {
 }
 
 // Inlined into run(): half the blocks of a tape are functions (a call and its frame cost more than most of them).
-[[gnu::always_inline]] inline void Machine::function(const Block& b, std::size_t index, bool has_value, long long value) {
+[[gnu::always_inline]] inline void Machine::function(const Block& b, std::size_t index, bool has_value, double value) {
     const int code = b.code;
     // One test for the common case: nothing pending, an assigned function with a value only if it takes one.
     const std::uint8_t refused = kManufacturer | (has_value ? kTakesNoValue : kNeedsValue);
     if (zero_offset_pending_ || (function_flags(code) & (kAssigned | refused)) != kAssigned) [[unlikely]] {
         if (!admit_function(b, has_value, value)) return;
     }
-    double event_value = static_cast<double>(value);
+    if (has_value && !value_in_range(b, value)) [[unlikely]] return;
+    double event_value = value;
     EventKind kind = EventKind::Function;
     const auto tool = [&](std::uint8_t bit, bool on) { set_tools(on ? (tools_ | bit) : (tools_ & ~bit)); };
 
@@ -428,18 +446,20 @@ void Machine::warn_macro_only(const Block& b) {
             break;
         case fn::kDwell:
             kind = EventKind::Dwell;
-            event_value = has_value ? static_cast<double>(value) : profile_.default_dwell_s;
+            event_value = has_value ? value : profile_.default_dwell_s;
             has_value = true;
             break;
         case fn::kWoydaOxygenOff: tool(kToolOxygen, false); break;  // (the preheat stays)
         case fn::kPlasmaOn: tool(kToolPlasma, true); break;
         case fn::kPlasmaOff: tool(kToolPlasma, false); break;
         case fn::kCancelFunctions:
-        case fn::kEndOfTape:  // not an end code in this profile: still cancels the stored functions
+        case fn::kEndOfTape:  // not an end code in this profile: cancels the stored functions (ISO Annex B)
             set_tools(0);
             rapid_ = false;
             kerf_ = KerfSide::Off;
             kerf_offset_mm_ = 0;
+            set_mapping(axis_mapping(fn::kAxesNormal));
+            absolute_ = false;
             break;
         case fn::kWoydaLoopEnd:
         case fn::kWoydaLoopStart:

@@ -4,7 +4,9 @@
 #include "essi/text.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <functional>
 
 #include <nlohmann/json.hpp>
 
@@ -12,16 +14,18 @@ namespace essi {
 namespace {
 
 using nlohmann::json;
+using ordered_json = nlohmann::ordered_json;  // profile_to_json keeps the keys in the order of the struct
 
-Profile make_iso6582() { return Profile{}; }
-
-Profile make_woyda() {
-    Profile p;
-    p.name = "woyda";
-    p.dialect = Dialect::Woyda;
-    p.end_codes = {{fn::kCancelFunctions, 0}, {fn::kEndOfTape, 0}, {-1, '/'}};
-    return p;
-}
+// The built-in profiles' JSON text, compiled in from builtin/NAME.json (core/CMakeLists.txt).
+struct BuiltinProfile {
+    std::string_view name;
+    std::string_view json;
+};
+constexpr BuiltinProfile kBuiltinProfiles[] = {
+#include "builtin_profiles.inc"
+};
+// The default profile, listed first.
+constexpr std::string_view kDefaultProfile = "iso6582";
 
 std::string end_code_text(const EndCode& e) {
     if (e.function >= 0) return std::to_string(e.function);
@@ -46,6 +50,131 @@ std::optional<EndCode> parse_end_code(const json& j) {
     return EndCode{v, 0};
 }
 
+// The bytes of a key that an error message quotes (essi::excerpt).
+constexpr std::size_t kMaxKeyChars = 40;
+
+// "M70", "G04": a letter and a number of at most 3 digits.
+std::optional<EiaWord> parse_eia_word(const json& j) {
+    if (!j.is_string()) return std::nullopt;
+    const auto& s = j.get_ref<const std::string&>();
+    if (s.size() < 2 || s.size() > 4 || s[0] < 'A' || s[0] > 'Z') return std::nullopt;
+    int v = 0;
+    for (std::size_t i = 1; i < s.size(); ++i) {
+        if (s[i] < '0' || s[i] > '9') return std::nullopt;
+        v = v * 10 + (s[i] - '0');
+    }
+    return EiaWord{s[0], v};
+}
+
+std::string eia_word_text(const EiaWord& w) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%c%02d", w.letter, w.number);
+    return buf;
+}
+
+// The "eia" object of a profile (docs/semantics.md §10); keys absent keep their values.
+void apply_eia_keys(const json& j, EiaDialect& e, std::vector<std::string>& errors) {
+    if (!j.is_object()) {
+        errors.push_back("\"eia\" must be an object (letters, codes, dwell_unit_s ...)");
+        return;
+    }
+    auto fail = [&](const std::string& key, const char* expected) {
+        errors.push_back("\"eia." + key + "\" must be " + expected);
+    };
+    for (const char* key : {"strict_order", "one_function_per_block"}) {
+        auto it = j.find(key);
+        if (it == j.end()) continue;
+        if (!it->is_boolean()) fail(key, "true or false");
+        else (std::string_view(key) == "strict_order" ? e.strict_order : e.one_function_per_block) = it->get<bool>();
+    }
+    if (auto it = j.find("letters"); it != j.end()) {
+        const bool ok = it->is_string() && !it->get_ref<const std::string&>().empty() &&
+                        std::all_of(it->get_ref<const std::string&>().begin(), it->get_ref<const std::string&>().end(),
+                                    [](char c) { return c >= 'A' && c <= 'Z'; });
+        if (ok) e.letters = it->get<std::string>();
+        else fail("letters", "the address letters in their order, e.g. \"NGXYIJFM\"");
+    }
+    for (const char* key : {"rapid_motion", "position_preset"}) {
+        auto it = j.find(key);
+        if (it == j.end()) continue;
+        int& out = std::string_view(key) == "rapid_motion" ? e.rapid_motion_g : e.position_preset_g;
+        if (it->is_null()) {
+            out = -1;
+        } else if (auto w = parse_eia_word(*it); w && w->letter == 'G') {
+            out = w->number;
+        } else {
+            fail(key, "null or a G word such as \"G00\"");
+        }
+    }
+    if (auto it = j.find("dwell_letter"); it != j.end()) {
+        if (it->is_string() && it->get_ref<const std::string&>().size() == 1 &&
+                 it->get_ref<const std::string&>()[0] >= 'A' && it->get_ref<const std::string&>()[0] <= 'Z')
+            e.dwell_letter = it->get_ref<const std::string&>()[0];
+        else fail("dwell_letter", "one capital letter, e.g. \"X\"");
+    }
+    if (auto it = j.find("dwell_unit_s"); it != j.end()) {
+        if (it->is_number() && it->get<double>() >= 1e-6 && it->get<double>() <= 3600) e.dwell_unit_s = it->get<double>();
+        else fail("dwell_unit_s", "a number between 1e-06 and 3600 (0.001: milliseconds)");
+    }
+    for (const char* key : {"inch", "mm"}) {
+        auto it = j.find(key);
+        if (it == j.end()) continue;
+        std::vector<EiaWord> words;
+        bool ok = it->is_array();
+        if (ok)
+            for (const auto& w : *it) {
+                auto word = parse_eia_word(w);
+                ok = ok && word.has_value();
+                if (word) words.push_back(*word);
+            }
+        if (ok) (std::string_view(key) == "inch" ? e.inch_words : e.mm_words) = std::move(words);
+        else fail(key, "an array of words such as [\"G20\", \"G70\"]");
+    }
+    if (auto it = j.find("codes"); it != j.end()) {
+        std::vector<EiaCode> codes;
+        bool ok = it->is_array();
+        if (ok)
+            for (const auto& row : *it) {
+                const bool pair = row.is_array() && row.size() == 2 && row[1].is_number_integer() &&
+                                  row[1].get<long long>() >= 0 && row[1].get<long long>() < fn::kCodeCount;
+                auto word = pair ? parse_eia_word(row[0]) : std::nullopt;
+                if (!word || (word->letter != 'G' && word->letter != 'M')) {
+                    ok = false;
+                    break;
+                }
+                codes.push_back({*word, static_cast<int>(row[1].get<long long>())});
+            }
+        if (ok) e.codes = std::move(codes);
+        else fail("codes", "an array of [word, function] pairs such as [[\"M70\", 7], [\"G91\", 81]]");
+    }
+    static constexpr const char* kKnownEiaKeys[] = {"letters", "strict_order", "one_function_per_block",
+                                                    "rapid_motion", "position_preset", "dwell_letter",
+                                                    "dwell_unit_s", "inch", "mm", "codes"};
+    for (auto it = j.begin(); it != j.end(); ++it) {
+        const bool known = std::any_of(std::begin(kKnownEiaKeys), std::end(kKnownEiaKeys),
+                                       [&](const char* k) { return it.key() == k; });
+        if (!known) errors.push_back("unknown key \"eia." + excerpt(it.key(), kMaxKeyChars) + "\"");
+    }
+}
+
+ordered_json eia_to_json(const EiaDialect& e) {
+    ordered_json words_inch = ordered_json::array(), words_mm = ordered_json::array(), codes = ordered_json::array();
+    for (const auto& w : e.inch_words) words_inch.push_back(eia_word_text(w));
+    for (const auto& w : e.mm_words) words_mm.push_back(eia_word_text(w));
+    for (const auto& c : e.codes) codes.push_back(ordered_json::array({eia_word_text(c.word), c.function}));
+    const auto g_or_null = [](int g) { return g < 0 ? ordered_json(nullptr) : ordered_json(eia_word_text({'G', g})); };
+    return {{"letters", e.letters},
+            {"strict_order", e.strict_order},
+            {"one_function_per_block", e.one_function_per_block},
+            {"rapid_motion", g_or_null(e.rapid_motion_g)},
+            {"position_preset", g_or_null(e.position_preset_g)},
+            {"dwell_letter", std::string(1, e.dwell_letter)},
+            {"dwell_unit_s", e.dwell_unit_s},
+            {"inch", words_inch},
+            {"mm", words_mm},
+            {"codes", codes}};
+}
+
 // Reads the keys of `j` into `p`; each problem becomes one message in `errors`.
 // The values a profile key may take: wide enough for any machine, narrow enough that no length, time or position
 // computed from them overflows to infinity (a unit of 1e308 mm made "inf" reports that were "ok").
@@ -59,14 +188,7 @@ constexpr Range kSecondsRange{0, 1e6};              // dwell and pierce time, s
 constexpr Range kSpeedRange{1e-9, 1e9};             // mm/min
 constexpr Range kPositionRange{-1e9, 1e9};          // mm: offsets and table limits
 
-std::string number_text(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
 
-// The bytes of a key that an error message quotes (essi::excerpt).
-constexpr std::size_t kMaxKeyChars = 40;
 
 void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
     auto number = [&](const char* key, double& out, Range range) {
@@ -112,7 +234,8 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
         if (it->is_string()) p.name = it->get<std::string>();
         else errors.push_back("\"name\" must be a string");
     }
-    choice("dialect", p.dialect, {{"iso6582", Dialect::Iso6582}, {"woyda", Dialect::Woyda}});
+    choice("dialect", p.dialect,
+           {{"iso6582", Dialect::Iso6582}, {"woyda", Dialect::Woyda}, {"hypertherm", Dialect::Hypertherm}});
     number("unit_mm", p.unit_mm, kUnitRange);
     choice("whitespace", p.whitespace, {{"skip", WhitespacePolicy::Skip}, {"strict", WhitespacePolicy::Strict}});
     if (auto it = j.find("end_codes"); it != j.end()) {
@@ -132,6 +255,7 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
             if (!codes.empty() || it->empty()) p.end_codes = codes;
         }
     }
+    boolean("end_at_data_end", p.end_at_data_end);
     number("arc_tolerance", p.arc_tolerance_units, kUnitsRange);
     number("chord_tolerance_mm", p.chord_tolerance_mm, kChordRange);
     boolean("optional_ignore", p.optional_ignore);
@@ -172,10 +296,12 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
             errors.push_back("\"table\" must be null or an object with min_x_mm, min_y_mm, max_x_mm, max_y_mm");
         }
     }
+    if (auto it = j.find("eia"); it != j.end()) apply_eia_keys(*it, p.eia, errors);
     static constexpr const char* kKnownKeys[] = {
-        "name", "base", "dialect", "unit_mm", "whitespace", "end_codes", "arc_tolerance", "chord_tolerance_mm",
+        "name", "base", "dialect", "unit_mm", "whitespace", "end_codes", "end_at_data_end", "arc_tolerance",
+        "chord_tolerance_mm",
         "optional_ignore", "rapid_single_block", "kerf_value", "kerf", "default_dwell_s", "feed_mm_min",
-        "rapid_mm_min", "pierce_time_s", "setup_offset_x_mm", "setup_offset_y_mm", "table"};
+        "rapid_mm_min", "pierce_time_s", "setup_offset_x_mm", "setup_offset_y_mm", "table", "eia"};
     for (auto it = j.begin(); it != j.end(); ++it) {
         bool known = false;
         for (const char* k : kKnownKeys) known = known || it.key() == k;
@@ -185,19 +311,42 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
 
 }  // namespace
 
-std::optional<Profile> builtin_profile(std::string_view name) {
-    if (name == "iso6582") return make_iso6582();
-    if (name == "woyda") return make_woyda();
-    return std::nullopt;
+std::string end_codes_text(const Profile& p) {
+    std::string s;
+    for (std::size_t i = 0; i < p.end_codes.size(); ++i) {
+        if (i > 0) s += i + 1 == p.end_codes.size() ? " or " : ", ";
+        s += end_code_text(p.end_codes[i]);
+    }
+    return s.empty() ? "the end of the data" : s;
 }
 
-std::vector<std::string> builtin_profile_names() { return {"iso6582", "woyda"}; }
+std::string_view builtin_profile_json(std::string_view name) {
+    for (const BuiltinProfile& b : kBuiltinProfiles)
+        if (b.name == name) return b.json;
+    return {};
+}
 
-ProfileResult parse_profile(std::string_view json_text) {
+std::vector<std::string> builtin_profile_names() {
+    std::vector<std::string> names{std::string(kDefaultProfile)};
+    for (const BuiltinProfile& b : kBuiltinProfiles)
+        if (b.name != kDefaultProfile) names.emplace_back(b.name);
+    return names;
+}
+
+namespace {
+
+std::string builtin_names_text() {
+    std::string s;
+    for (const auto& n : builtin_profile_names()) s += (s.empty() ? "" : ", ") + n;
+    return s;
+}
+
+// Parses profile JSON onto its base: the built-in named by "base", else `no_base` (the default profile for a
+// user's file; Profile{} for the default profile's own file, which sets every key).
+ProfileResult parse_onto(std::string_view json_text, const std::function<std::optional<Profile>()>& no_base) {
     ProfileResult result;
     auto bad = [&](std::string message) {
-        result.diagnostics.push_back(
-            {Severity::Error, DiagCode::E402_BadProfile, 0, 0, std::move(message)});
+        result.diagnostics.push_back({Severity::Error, DiagCode::E402_BadProfile, 0, 0, std::move(message)});
     };
     const json j = json::parse(json_text.begin(), json_text.end(), nullptr, /*allow_exceptions=*/false);
     if (j.is_discarded()) {
@@ -208,18 +357,21 @@ ProfileResult parse_profile(std::string_view json_text) {
         bad("expected a JSON object of settings");
         return result;
     }
-    std::string base = "iso6582";
+    std::string base(kDefaultProfile);
+    std::optional<Profile> profile;
     if (auto it = j.find("base"); it != j.end()) {
         if (!it->is_string()) {
-            bad("\"base\" must be the name of a built-in profile (iso6582, woyda)");
+            bad("\"base\" must be the name of a built-in profile (" + builtin_names_text() + ")");
             return result;
         }
         base = it->get<std::string>();
-    }
-    auto profile = builtin_profile(base);
-    if (!profile) {
-        bad("unknown base profile \"" + base + "\"; expected iso6582 or woyda");
-        return result;
+        profile = builtin_profile(base);
+        if (!profile) {
+            bad("unknown base profile \"" + excerpt(base, kMaxKeyChars) + "\"; expected one of " + builtin_names_text());
+            return result;
+        }
+    } else {
+        profile = no_base();
     }
     if (j.find("name") == j.end()) profile->name = base + "+custom";
     std::vector<std::string> errors;
@@ -229,18 +381,32 @@ ProfileResult parse_profile(std::string_view json_text) {
     return result;
 }
 
+}  // namespace
+
+std::optional<Profile> builtin_profile(std::string_view name) {
+    const std::string_view text = builtin_profile_json(name);
+    if (text.empty()) return std::nullopt;
+    // (every built-in parses: profile_test checks each)
+    return parse_onto(text, [] { return std::optional<Profile>(Profile{}); }).profile;
+}
+
+ProfileResult parse_profile(std::string_view json_text) {
+    return parse_onto(json_text, [] { return builtin_profile(kDefaultProfile); });
+}
+
 std::string profile_to_json(const Profile& p) {
-    json j;
+    ordered_json j;
     j["name"] = p.name;
-    j["dialect"] = p.dialect == Dialect::Woyda ? "woyda" : "iso6582";
+    j["dialect"] = p.dialect == Dialect::Woyda ? "woyda" : p.dialect == Dialect::Hypertherm ? "hypertherm" : "iso6582";
     j["unit_mm"] = p.unit_mm;
     j["whitespace"] = p.whitespace == WhitespacePolicy::Strict ? "strict" : "skip";
-    json ends = json::array();
+    ordered_json ends = ordered_json::array();
     for (const auto& e : p.end_codes) {
         if (e.function >= 0) ends.push_back(e.function);
         else ends.push_back(end_code_text(e));
     }
     j["end_codes"] = ends;
+    j["end_at_data_end"] = p.end_at_data_end;
     j["arc_tolerance"] = p.arc_tolerance_units;
     j["chord_tolerance_mm"] = p.chord_tolerance_mm;
     j["optional_ignore"] = p.optional_ignore;
@@ -259,7 +425,8 @@ std::string profile_to_json(const Profile& p) {
     } else {
         j["table"] = nullptr;
     }
-    return j.dump(2, ' ', false, json::error_handler_t::replace);
+    j["eia"] = eia_to_json(p.eia);
+    return j.dump(2, ' ', false, ordered_json::error_handler_t::replace);
 }
 
 bool mm_to_units(const Profile& p, Point mm, long long& x, long long& y) {

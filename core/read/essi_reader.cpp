@@ -387,13 +387,7 @@ bool EssiReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
                                       "after it; everything after line " + std::to_string(ignore_line_) +
                                           " is ignored"});
     }
-    if (total_blocks_ == 0) {
-        diagnostics_of(chunk).push_back({Severity::Error, DiagCode::E113_EmptyTape, 1, 1,
-                                      "the tape holds no block; expected ESSI blocks such as 7, +100+0, 63"});
-    } else if (!ended_) {
-        diagnostics_of(chunk).push_back({Severity::Warning, DiagCode::W114_NoProgramEnd, last_line_, 1,
-                                      "the tape ends without an end of program; expected 63, 64 or / as the last block"});
-    }
+    report_tape_end(chunk, profile_, total_blocks_, ended_, last_line_);
     return true;
 }
 
@@ -577,7 +571,7 @@ bool EssiReader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& 
         ++lp.words;
         // A block holds at most kMaxBlockWords words: the ones after them are only counted (for the error), so
         // that a line of a billion '+' costs no memory per '+'.
-        if (lp.words > kMaxBlockWords) return true;
+        if (static_cast<std::size_t>(lp.words) > kMaxBlockWords) return true;
         if (lp.words == 1 && word_negative) lp.value_negative = true;
         if (lp.words == 5 && word_negative) lp.sign_flags |= Block::kTcNegative;
         if (lp.words == 6 && word_negative) lp.sign_flags |= Block::kTpNegative;

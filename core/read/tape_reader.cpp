@@ -6,12 +6,29 @@
 namespace essi {
 
 std::unique_ptr<BlockReader> make_essi_reader(std::string_view bytes, const Profile& profile);  // essi_reader.cpp
+std::unique_ptr<BlockReader> make_eia_reader(std::string_view bytes, const Profile& profile);   // eia_reader.cpp
+
+const char* input_format_name(InputFormat f) { return f == InputFormat::Eia ? "eia" : "essi"; }
 
 std::unique_ptr<BlockReader> make_block_reader(InputFormat format, std::string_view bytes, const Profile& profile) {
     switch (format) {
         case InputFormat::Essi: break;
+        case InputFormat::Eia: return make_eia_reader(bytes, profile);
     }
     return make_essi_reader(bytes, profile);
+}
+
+void BlockReader::report_tape_end(Tape& chunk, const Profile& profile, std::size_t total_blocks, bool ended,
+                                  std::uint32_t last_line) {
+    if (total_blocks == 0) {
+        chunk.diagnostics_.push_back({Severity::Error, DiagCode::E113_EmptyTape, 1, 1,
+                                      "the tape holds no block; expected blocks such as 7, +100+0, 64 (ESSI) or "
+                                      "G01 X100 Y0 (EIA)"});
+    } else if (!ended && !profile.end_at_data_end) {
+        chunk.diagnostics_.push_back({Severity::Warning, DiagCode::W114_NoProgramEnd, last_line, 1,
+                                      "the tape ends without an end of program; expected " + end_codes_text(profile) +
+                                          " as the last block"});
+    }
 }
 
 Tape read_tape(std::string_view bytes, const Profile& profile, InputFormat format) {

@@ -27,6 +27,16 @@ constexpr std::array kCodes = {
     CodeRow{DiagCode::W112_MisplacedPercent, "A % mark in the middle of the program; it is ignored."},
     CodeRow{DiagCode::E113_EmptyTape, "The tape holds no block."},
     CodeRow{DiagCode::W114_NoProgramEnd, "The tape ends without an end of program code."},
+    CodeRow{DiagCode::E119_EiaUnknownLetter, "An EIA block holds a letter or character that the dialect's EIA blocks do not have."},
+    CodeRow{DiagCode::E120_EiaLetterOrder, "An EIA block has its letters out of the dialect's order (Woyda: N G X Y I J F M) or one letter twice."},
+    CodeRow{DiagCode::E121_EiaFunctionsInBlock, "An EIA block holds more than one of G, M and F where the dialect allows only one (Woyda)."},
+    CodeRow{DiagCode::E122_EiaBadNumber, "An EIA letter is not followed by a number, or the number is malformed or too large."},
+    CodeRow{DiagCode::E123_EiaArcWithoutDirection, "An EIA block gives an arc centre (I, J) while neither G02 nor G03 is in force."},
+    CodeRow{DiagCode::W124_EiaUnknownCode, "A G or M word that the dialect's EIA table does not have; it is ignored."},
+    CodeRow{DiagCode::W125_EiaRounded, "EIA coordinates finer than the profile's unit; they were rounded to it."},
+    CodeRow{DiagCode::E126_EiaUnclosedComment, "An EIA comment '(' is not closed by ')' on its line."},
+    CodeRow{DiagCode::E216_FunctionValueRange, "A machine function's value is outside the range the function allows."},
+    CodeRow{DiagCode::N403_OtherDialect, "The tape's evidence points to another dialect than the profile's (a note: --profile auto chooses by it)."},
     CodeRow{DiagCode::E115_TooManyErrors, "Reading stopped after too many errors; the file is probably not an ESSI tape."},
     CodeRow{DiagCode::E116_MisplacedMark, "A % or / mark shares its block with other characters."},
     CodeRow{DiagCode::E117_TapeTooLarge, "The tape is larger than 4 GiB."},
@@ -71,7 +81,10 @@ bool is_error_code(DiagCode code) {
         case DiagCode::E107_UnclosedIgnore: case DiagCode::E108_WhitespaceStrict:
         case DiagCode::E113_EmptyTape: case DiagCode::E115_TooManyErrors:
         case DiagCode::E116_MisplacedMark: case DiagCode::E117_TapeTooLarge:
-        case DiagCode::E118_FunctionValueSign:
+        case DiagCode::E118_FunctionValueSign: case DiagCode::E119_EiaUnknownLetter:
+        case DiagCode::E120_EiaLetterOrder: case DiagCode::E121_EiaFunctionsInBlock:
+        case DiagCode::E122_EiaBadNumber: case DiagCode::E123_EiaArcWithoutDirection:
+        case DiagCode::E126_EiaUnclosedComment: case DiagCode::E216_FunctionValueRange:
         case DiagCode::E203_FunctionValueMissing: case DiagCode::E206_BadHeadAddress:
         case DiagCode::E207_ZeroOffsetBlock: case DiagCode::E301_ArcEndNotOnCircle:
         case DiagCode::E302_ArcZeroRadius: case DiagCode::E303_ParabolaEndNotOnCurve:
@@ -85,14 +98,21 @@ bool is_error_code(DiagCode code) {
 
 }  // namespace
 
+namespace {
+// Codes whose default severity is a note: the ones named N... in the enum.
+bool is_note_code(DiagCode code) { return code == DiagCode::N403_OtherDialect; }
+}  // namespace
+
 std::string code_name(DiagCode code) {
     const int n = static_cast<int>(code);
-    std::string s(1, is_error_code(code) ? 'E' : 'W');
+    std::string s(1, is_error_code(code) ? 'E' : is_note_code(code) ? 'N' : 'W');
     s += std::to_string(n);
     return s;
 }
 
-Severity default_severity(DiagCode code) { return is_error_code(code) ? Severity::Error : Severity::Warning; }
+Severity default_severity(DiagCode code) {
+    return is_error_code(code) ? Severity::Error : is_note_code(code) ? Severity::Note : Severity::Warning;
+}
 
 std::string_view severity_name(Severity s) {
     switch (s) {

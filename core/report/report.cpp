@@ -44,14 +44,34 @@ CheckResult TapeChecker::finish() {
     return std::move(result_);
 }
 
-CheckResult check_tape(std::string_view bytes, const Profile& profile) {
+CheckResult check_tape(std::string_view bytes, const Profile& profile, InputFormat format) {
     // A chunk at a time: each chunk is interpreted while it is still in cache, and the whole tape is
     // never held (a 100 MB tape would cost some 200 MB of blocks).
     TapeChecker checker(bytes, profile);
-    TapeReader reader(bytes, profile);
+    TapeReader reader(bytes, profile, format);
     Tape chunk;
     while (reader.read_chunk(chunk, kCheckChunkBlocks)) checker.check_chunk(chunk);
-    return checker.finish();
+    CheckResult r = checker.finish();
+    r.input = format;
+    r.profile = profile.name;
+    return r;
+}
+
+void record_setup(CheckResult& result, const TapeSetup& setup) {
+    result.input = setup.format;
+    result.profile = setup.profile.name;
+    result.auto_profile = setup.auto_profile;
+    if (setup.auto_profile) result.dialect_evidence = setup.evidence;
+    if (setup.note) {
+        result.diagnostics.push_back(*setup.note);
+        sort_diagnostics(result.diagnostics);
+    }
+}
+
+CheckResult check_tape(std::string_view bytes, const TapeSetup& setup) {
+    CheckResult r = check_tape(bytes, setup.profile, setup.format);
+    record_setup(r, setup);
+    return r;
 }
 
 }  // namespace essi

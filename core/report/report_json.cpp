@@ -83,6 +83,11 @@ nlohmann::json file_report_to_json(const FileReport& file) {
     nlohmann::json j = nlohmann::json::object();
     j["path"] = file.display_path();
     j["ok"] = file.ok();
+    j["input"] = input_format_name(file.result.input);
+    if (file.result.auto_profile) {
+        j["profile"] = file.result.profile;
+        j["dialect_evidence"] = file.result.dialect_evidence;
+    }
     j["diagnostics"] = diagnostics_to_json(file.result.diagnostics);
     j["stats"] = stats_to_json(file.result.stats);
     if (file.omitted() > 0) j["diagnostics_omitted"] = file.omitted();

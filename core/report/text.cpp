@@ -1,6 +1,8 @@
 // Safe text for reports (essi/text.hpp).
 #include "essi/text.hpp"
 
+#include <cstdio>
+
 #include <cstdint>
 
 namespace essi {
@@ -64,6 +66,12 @@ std::string display_text(std::string_view s) {
         i += n;
     }
     return out;
+}
+
+std::string number_text(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
 }
 
 }  // namespace essi

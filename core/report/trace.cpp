@@ -118,8 +118,9 @@ std::string trace_line(const MachineEvent& e, Dialect dialect) {
     return s;
 }
 
-std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profile, const TraceWriter& write) {
-    const Tape tape = read_tape(bytes, profile);
+std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profile, const TraceWriter& write,
+                                   InputFormat format) {
+    const Tape tape = read_tape(bytes, profile, format);
     std::vector<Diagnostic> diagnostics = tape.diagnostics();
     TraceSink sink(write, profile.dialect);
     interpret(tape, bytes, profile, sink, diagnostics);
@@ -132,9 +133,9 @@ std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profil
     return diagnostics;
 }
 
-std::string trace_tape(std::string_view bytes, const Profile& profile) {
+std::string trace_tape(std::string_view bytes, const Profile& profile, InputFormat format) {
     std::string out;
-    (void)trace_tape(bytes, profile, [&](std::string_view piece) { out += piece; });
+    (void)trace_tape(bytes, profile, [&](std::string_view piece) { out += piece; }, format);
     return out;
 }
 

@@ -131,12 +131,13 @@ TEST(Batch, SameResultsForAnyJobCountAndLimit) {
     const auto files = expand_paths({d.string()}, ExpandOptions{}, errors);
     ASSERT_EQ(files.size(), 20u);
     std::vector<std::string> seen1, seen2;
+    const TapeRequest iso_request{std::nullopt, essi::builtin_profile("iso6582"), "iso6582"};
     BatchOptions o;
     o.jobs = 1;
-    check_batch(files, *essi::builtin_profile("iso6582"), o, [&](BatchItem&& it) { seen1.push_back(it.report.path + ":" + std::to_string(it.report.errors())); });
+    check_batch(files, iso_request, o, [&](BatchItem&& it) { seen1.push_back(it.report.path + ":" + std::to_string(it.report.errors())); });
     o.jobs = 4;
     o.max_diagnostics = 1;
-    check_batch(files, *essi::builtin_profile("iso6582"), o, [&](BatchItem&& it) {
+    check_batch(files, iso_request, o, [&](BatchItem&& it) {
         EXPECT_LE(it.report.result.diagnostics.size(), 1u);
         seen2.push_back(it.report.path + ":" + std::to_string(it.report.errors()));
     });

@@ -13,10 +13,12 @@ namespace {
 
 // Every code the header declares (ESSI diagnostics.hpp), by number.
 const int kAllNumbers[] = {101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113, 114,
-                           115, 116, 117, 118, 201, 202, 203, 204, 205, 206, 207, 208, 209, 210, 211,
-                           212, 213, 214, 215, 301, 302, 303, 304, 305, 306, 401, 402};
-const std::set<int> kWarnings = {109, 110, 111, 112, 114, 201, 202, 204, 205, 208,
+                           115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 201, 202, 203,
+                           204, 205, 206, 207, 208, 209, 210, 211, 212, 213, 214, 215, 216, 301, 302,
+                           303, 304, 305, 306, 401, 402, 403};
+const std::set<int> kWarnings = {109, 110, 111, 112, 114, 124, 125, 201, 202, 204, 205, 208,
                                  209, 210, 211, 212, 213, 214, 215, 305};
+const std::set<int> kNotes = {403};
 
 }  // namespace
 
@@ -42,9 +44,9 @@ TEST(Diagnostics, SeverityByLetter) {
         const std::string name = code_name(code);
         ASSERT_EQ(name.size(), 4u) << n;
         EXPECT_EQ(name.substr(1), std::to_string(n));
-        const bool warning = kWarnings.count(n) > 0;
-        EXPECT_EQ(name[0], warning ? 'W' : 'E') << n;
-        EXPECT_EQ(default_severity(code), warning ? Severity::Warning : Severity::Error) << name;
+        const bool warning = kWarnings.count(n) > 0, note = kNotes.count(n) > 0;
+        EXPECT_EQ(name[0], warning ? 'W' : note ? 'N' : 'E') << n;
+        EXPECT_EQ(default_severity(code), warning ? Severity::Warning : note ? Severity::Note : Severity::Error) << name;
     }
 }
 

@@ -463,26 +463,42 @@ TEST(InterpStops, ProgrammedAndOptionalStop) {
 }
 
 TEST(InterpStops, EndCodes) {
+    const Profile woyda = *builtin_profile("woyda");
     for (const char* end : {"63", "64"}) {
-        auto r = run(std::string("+100+0\n") + end + "\n");
+        auto r = run(std::string("+100+0\n") + end + "\n", woyda);
         auto ends = r.sink.events_of(EventKind::End);
         ASSERT_EQ(ends.size(), 1u) << end;
         EXPECT_EQ(ends[0].code, std::stoi(end));
         EXPECT_EQ(ends[0].line, 2u);
     }
-    auto s = run("+100+0\n/\n");
+    auto s = run("+100+0\n/\n", woyda);
     auto ends = s.sink.events_of(EventKind::End);
     ASSERT_EQ(ends.size(), 1u) << s.dump();
     EXPECT_EQ(ends[0].line, 2u);
     EXPECT_TRUE(s.diags.empty()) << s.dump();
 }
 
+// ISO 6582 Annex B: 63 cancels the stored functions and the program goes on; the tape ends at 64 or at the end
+// of its data, without a warning (docs/semantics.md §1).
+TEST(InterpStops, Iso63CancelsAndTheProgramGoesOn) {
+    auto r = run("29\n7\n5\n+100+0\n63\n+100+0\n");
+    ASSERT_EQ(r.motions().size(), 2u) << r.dump();
+    EXPECT_EQ(r.motions()[1].tools, 0);          // 63 switched the oxygen off
+    EXPECT_EQ(r.motions()[1].kerf, KerfSide::Off);
+    EXPECT_EQ(r.motions()[1].kind, MotionKind::Travel);  // and rapid traverse
+    EXPECT_TRUE(r.sink.events_of(EventKind::End).empty()) << r.dump();
+    ASSERT_NE(r.sink.event_with_code(EventKind::Function, 63), nullptr);
+    EXPECT_FALSE(r.has(DiagCode::W114_NoProgramEnd)) << r.dump();
+    EXPECT_FALSE(r.has(DiagCode::W110_ContentAfterEnd)) << r.dump();
+}
+
 TEST(InterpStops, NothingExecutedAfterEnd) {
-    auto r = run("+100+0\n63\n+100+0\n7\n");
+    const Profile woyda = *builtin_profile("woyda");
+    auto r = run("+100+0\n63\n+100+0\n7\n", woyda);
     ASSERT_EQ(r.motions().size(), 1u) << r.dump();
     EXPECT_EQ(r.sink.event_with_code(EventKind::Function, 7), nullptr);
     EXPECT_TRUE(r.has(DiagCode::W110_ContentAfterEnd)) << r.dump();
-    auto s = run("+100+0\n/\n+100+0\n");
+    auto s = run("+100+0\n/\n+100+0\n", woyda);
     EXPECT_EQ(s.motions().size(), 1u);
 }
 

@@ -40,7 +40,7 @@ void expect_identical(std::string_view text, const std::string& what) {
 TEST(MeasureMotions, OneEntryPerArcInBlockOrder) {
     const Profile p;
     // a line (no entry), an arc (quarter, ccw), a function, a parabola (no entry), a cw full circle, then the end
-    const Tape t = read_tape("7\n+300+400\n+100+100+0+100+\n8\n+100+50+0+40++\n+0+0+0-50-\n63\n+0+0+0-5-\n", p);
+    const Tape t = read_tape("7\n+300+400\n+100+100+0+100+\n8\n+100+50+0+40++\n+0+0+0-50-\n64\n+0+0+0-5-\n", p);
     std::vector<MotionMeasure> m;
     measure_motions(t, m);
     ASSERT_EQ(m.size(), 2u);

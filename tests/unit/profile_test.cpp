@@ -62,9 +62,10 @@ TEST(ProfileBuiltin, Iso6582Defaults) {
     const auto has_end = [&](EndCode e) {
         return std::find(p->end_codes.begin(), p->end_codes.end(), e) != p->end_codes.end();
     };
-    EXPECT_TRUE(has_end({63, 0}));
+    EXPECT_FALSE(has_end({63, 0}));  // ISO: 63 cancels the stored functions, 64 ends the tape
     EXPECT_TRUE(has_end({64, 0}));
-    EXPECT_TRUE(has_end({-1, '/'}));
+    EXPECT_FALSE(has_end({-1, '/'}));  // Woyda's
+    EXPECT_TRUE(p->end_at_data_end);
     expect_same(*p, Profile{});
 }
 

@@ -132,8 +132,13 @@ TEST(ReadMarks, PercentAtStartAndAfterEnd) {
     EXPECT_TRUE(t.diagnostics().empty()) << dump(t.diagnostics());
 }
 
+const Profile& woyda() {
+    static const Profile p = *builtin_profile("woyda");
+    return p;
+}
+
 TEST(ReadMarks, SlashEndsTheProgram) {
-    Tape t = rd("7\n+100+0\n8\n/\n");
+    Tape t = rd("7\n+100+0\n8\n/\n", woyda());
     ASSERT_EQ(t.size(), 4u) << dump(t.diagnostics());
     EXPECT_EQ(t.block(3).kind, BlockKind::EndMark);
     EXPECT_EQ(t.block(3).line, 4u);
@@ -145,20 +150,31 @@ TEST(ReadMarks, SlashEndsTheProgram) {
 
 TEST(ReadMarks, Code63And64End) {
     for (const char* src : {"7\n8\n63\n", "7\n8\n64\n"}) {
-        Tape t = rd(src);
+        Tape t = rd(src, woyda());
         EXPECT_TRUE(t.has_program_end()) << src;
         EXPECT_EQ(t.end_block(), 3u) << src;
         EXPECT_TRUE(t.diagnostics().empty()) << dump(t.diagnostics());
     }
 }
 
+TEST(ReadMarks, IsoEndsAt64OrTheEndOfTheData) {
+    Tape t = rd("7\n8\n63\n+100+0\n");
+    EXPECT_FALSE(t.has_program_end());
+    EXPECT_EQ(t.end_block(), 4u);
+    EXPECT_TRUE(t.diagnostics().empty()) << dump(t.diagnostics());  // no W114: the data ends the tape (ISO)
+    EXPECT_TRUE(rd("7\n8\n64\n").has_program_end());
+    // '/' is Woyda's end mark: not an ESSI character under ISO
+    EXPECT_TRUE(has_code(rd("7\n8\n/\n").diagnostics(), DiagCode::E101_InvalidCharacter));
+}
+
 TEST(ReadMarks, NoEndW114) {
-    Tape t = rd("7\n+100+0\n8\n");
+    Tape t = rd("7\n+100+0\n8\n", woyda());
     EXPECT_FALSE(t.has_program_end());
     EXPECT_EQ(t.end_block(), t.size());
     const Diagnostic* d = find_code(t.diagnostics(), DiagCode::W114_NoProgramEnd);
     ASSERT_NE(d, nullptr) << dump(t.diagnostics());
     EXPECT_EQ(d->severity, Severity::Warning);
+    EXPECT_NE(d->message.find("expected 63, 64 or / as the last block"), std::string::npos) << d->message;
     EXPECT_FALSE(t.has_errors());
 }
 
@@ -174,7 +190,7 @@ TEST(ReadMarks, ContentAfterEndW110) {
 }
 
 TEST(ReadMarks, ContentAfterSlashW110) {
-    Tape t = rd("7\n8\n/\n9\n");
+    Tape t = rd("7\n8\n/\n9\n", woyda());
     EXPECT_EQ(t.end_block(), 3u);
     ASSERT_TRUE(has_code(t.diagnostics(), DiagCode::W110_ContentAfterEnd)) << dump(t.diagnostics());
     EXPECT_EQ(find_code(t.diagnostics(), DiagCode::W110_ContentAfterEnd)->line, 4u);

@@ -77,7 +77,7 @@ TEST(TapeAppend, EmptyTapeStaysEmpty) {
 TEST(TapeAppend, SmallTapeAnyChunkSize) {
     const Profile p;
     const std::string text = "3\r\nheader\r\n4\r\n39+1000\r\n5\r\n+100+0\r\n6\r\n29\r\n7\r\n+100+0\r\n+0+100-50+0+\r\n"
-                             "8\r\n38\r\n63\r\n+1+1\r\n";
+                             "8\r\n38\r\n64\r\n+1+1\r\n";
     const Tape whole = read_tape(text, p);
     ASSERT_TRUE(whole.has_program_end());
     ASSERT_LT(whole.end_block(), whole.size() + 1);

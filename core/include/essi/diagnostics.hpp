@@ -13,7 +13,7 @@ namespace essi {
 enum class Severity : std::uint8_t { Note, Warning, Error };
 
 // Stable diagnostic codes. The number never changes once released; the letter says the default
-// severity (E error, W warning). 1xx: reading, 2xx: interpreting, 3xx: geometry, 4xx: machine/profile.
+// severity (E error, W warning, N note). 1xx: reading, 2xx: interpreting, 3xx: geometry, 4xx: machine/profile.
 enum class DiagCode : std::uint16_t {
     // --- read ---
     E101_InvalidCharacter = 101,   // a byte that is not + - 0-9 (or a block end) outside a 3/4 section
@@ -34,6 +34,15 @@ enum class DiagCode : std::uint16_t {
     E116_MisplacedMark = 116,      // % or / with other characters in the same block
     E117_TapeTooLarge = 117,       // more than 4 GiB: positions would not fit
     E118_FunctionValueSign = 118,  // a machine function's value after a '-' (41-50): the value follows a '+' 
+    // EIA (RS-274) tapes (core/read/eia_reader.cpp)
+    E119_EiaUnknownLetter = 119,   // a letter or character the dialect's EIA blocks do not have
+    E120_EiaLetterOrder = 120,     // letters out of the dialect's order (N G X Y I J F M), or one letter twice
+    E121_EiaFunctionsInBlock = 121,// more than one of G, M and F in a block where the dialect allows one (Woyda)
+    E122_EiaBadNumber = 122,       // a letter without a number, or a malformed or too large number
+    E123_EiaArcWithoutDirection = 123, // I/J while neither G02 nor G03 is in force
+    W124_EiaUnknownCode = 124,     // a G or M word the dialect's EIA table does not have: ignored
+    W125_EiaRounded = 125,         // coordinates finer than the profile's unit, rounded to it
+    E126_EiaUnclosedComment = 126, // '(' without ')' on its line
 
     // --- interp ---
     W201_UnknownFunction = 201,       // unassigned or unknown machine function
@@ -51,6 +60,7 @@ enum class DiagCode : std::uint16_t {
     W213_MacroOnlyFunction = 213,     // 67/68 loops exist only in Woyda macro files
     W214_UnclosedOptionalIgnore = 214,// 100 without 101
     W215_ZeroOffsetInIncremental = 215, // 83 while 81 is in force: takes effect with the next absolute move
+    E216_FunctionValueRange = 216,    // a machine function's value outside the range the function allows
 
     // --- geometry ---
     E301_ArcEndNotOnCircle = 301,     // |r_end - r_start| > arc_tolerance
@@ -63,6 +73,7 @@ enum class DiagCode : std::uint16_t {
     // --- machine / profile ---
     E401_LeavesTable = 401,           // motion beyond the profile's table travel limits
     E402_BadProfile = 402,            // a profile that cannot be read
+    N403_OtherDialect = 403,          // the tape's evidence points to another dialect than the profile's
 };
 
 struct Diagnostic {

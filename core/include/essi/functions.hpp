@@ -27,6 +27,14 @@ struct FunctionInfo {
     bool drawing_machine = false;  // 70-74, 76-79, 84-86, 89-90, 93-98: for drawing machines
 };
 
+// The values a function with a value allows, in the unit it is written in (mm/min, s, unit increments, count):
+// beyond them a value is an error (E216). `in_mm`: the range is in mm and the value in unit increments.
+struct FunctionValueRange {
+    double min = 0, max = 0;
+    bool in_mm = false;
+};
+[[nodiscard]] std::optional<FunctionValueRange> function_value_range(int code);
+
 // The meaning of `code` in `dialect`; nullopt for codes beyond the table (> 999 cannot be read anyway).
 [[nodiscard]] std::optional<FunctionInfo> function_info(int code, Dialect dialect);
 

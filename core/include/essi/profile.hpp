@@ -1,5 +1,6 @@
 // Machine + dialect profiles. Every choice ESSI leaves open (docs/semantics.md) is a setting here, with the
-// default the semantics page gives. Profiles are JSON; two are built in: "iso6582" (default) and "woyda".
+// default the semantics page gives. Profiles are JSON; the built-in ones are JSON files too
+// (core/profile/builtin/: iso6582 (default), woyda, hypertherm, din66025), compiled in.
 #pragma once
 
 #include <array>
@@ -14,7 +15,8 @@
 
 namespace essi {
 
-enum class Dialect : std::uint8_t { Iso6582, Woyda };
+// The machine function table a profile reads function codes with (core/interp/function_table.def).
+enum class Dialect : std::uint8_t { Iso6582, Woyda, Hypertherm };
 enum class WhitespacePolicy : std::uint8_t { Skip, Strict };
 enum class KerfValueMeaning : std::uint8_t { Width, Offset };
 
@@ -23,6 +25,35 @@ struct EndCode {
     int function = -1;   // >= 0: a machine function
     char mark = 0;       // '/' or '=' when function < 0
     friend bool operator==(const EndCode&, const EndCode&) = default;
+};
+
+// An EIA (RS-274) word with a fixed meaning in a dialect: its letter and number ("M70", "G91").
+struct EiaWord {
+    char letter = 'M';
+    int number = 0;
+    friend bool operator==(const EiaWord&, const EiaWord&) = default;
+};
+// One row of a dialect's EIA table: the word and the ESSI machine function it stands for (docs/semantics.md §10).
+struct EiaCode {
+    EiaWord word;
+    int function = 0;
+    friend bool operator==(const EiaCode&, const EiaCode&) = default;
+};
+
+// How a dialect writes its EIA tapes (docs/semantics.md §10). G01, G02 and G03 mean the same everywhere; every
+// other word is in `codes`, so that what differs between dialects is this data, not code.
+struct EiaDialect {
+    std::string letters = "NGXYIJFM";     // the address letters a block may hold, in their order
+    bool strict_order = true;             // letters out of that order are an error (Woyda)
+    bool one_function_per_block = true;   // at most one of G, M and F in a block (Woyda)
+    int rapid_motion_g = -1;              // G number of a rapid motion mode (G00: modal until G01-G03); -1 none
+    int position_preset_g = -1;           // G number that sets the current position (DIN G92 X Y); -1 none
+    char dwell_letter = 'X';              // the letter of the dwell's time (G04 X)
+    double dwell_unit_s = 0.001;          // the dwell's time unit (Woyda: milliseconds)
+    std::vector<EiaWord> inch_words;      // words that switch coordinates to inches (G20, G70)
+    std::vector<EiaWord> mm_words;        // words that switch them back to millimetres (G21, G71)
+    std::vector<EiaCode> codes;           // EIA word <-> ESSI function; the first row of a function is its word
+    friend bool operator==(const EiaDialect&, const EiaDialect&) = default;
 };
 
 struct TableLimits {
@@ -36,7 +67,8 @@ struct Profile {
     // Reading
     double unit_mm = 0.1;                       // one unit increment in mm (ISO A.6)
     WhitespacePolicy whitespace = WhitespacePolicy::Skip;
-    std::vector<EndCode> end_codes = {{fn::kCancelFunctions, 0}, {fn::kEndOfTape, 0}, {-1, '/'}};
+    std::vector<EndCode> end_codes = {{fn::kEndOfTape, 0}};
+    bool end_at_data_end = true;                // the end of the data ends the program without a warning (ISO)
 
     // Geometry
     double arc_tolerance_units = 2.0;           // |r_end - r_start| allowed, in unit increments (§5)
@@ -54,6 +86,9 @@ struct Profile {
     double rapid_mm_min = 10000.0;              // rapid traverse speed
     double pierce_time_s = 2.0;                 // added once per pierce
 
+    // EIA tapes (§10): the dialect's words and rules (default: the Woyda table)
+    EiaDialect eia;
+
     // Machine placement (§11)
     double setup_offset_x_mm = 0, setup_offset_y_mm = 0;  // setup zero offset (G54-like)
     std::optional<TableLimits> table;           // travel limits; none = unlimited
@@ -68,9 +103,14 @@ struct Profile {
 // unit grid, or too far for a long long).
 [[nodiscard]] bool mm_to_units(const Profile& p, Point mm, long long& x, long long& y);
 
-// The built-in profiles by name ("iso6582", "woyda"); nullopt for other names.
+// The profile's end codes in words, for messages: "63, 64 or /"; "the end of the data" when there are none.
+[[nodiscard]] std::string end_codes_text(const Profile& p);
+
+// The built-in profiles by name ("iso6582", "woyda", "hypertherm", "din66025"); nullopt for other names.
 [[nodiscard]] std::optional<Profile> builtin_profile(std::string_view name);
 [[nodiscard]] std::vector<std::string> builtin_profile_names();
+// The JSON text a built-in profile is made from (what users copy and edit); empty for other names.
+[[nodiscard]] std::string_view builtin_profile_json(std::string_view name);
 
 // Parses a profile from JSON text. Keys absent from the text keep the values of the profile named by its
 // "base" key (default "iso6582"). Errors are returned as diagnostics (E402) with line 0, never thrown.

@@ -120,8 +120,8 @@ struct Block {
     std::uint32_t line = 0;        // 1-based line (every CR, LF, CR LF or LF CR counts one)
     std::uint16_t code = 0;
     BlockKind kind = BlockKind::Invalid;
-    // low 4 bits: number of signed words (0-6); bit 4: sign of word 5 (TC) is '-';
-    // bit 5: sign of word 6 (TP) is '-'; bit 6: block had a head address; bit 7: end of program
+    // low 4 bits: number of signed words (0-6); bit 4: sign of word 5 (TC) is '-' (a FunctionValue: its word is
+    // in thousandths); bit 5: sign of word 6 (TP) is '-'; bit 6: block had a head address; bit 7: end of program
     std::uint8_t packed = 0;
 
     static constexpr std::uint16_t kNoCode = 0xFFFF;
@@ -130,6 +130,8 @@ struct Block {
     static constexpr std::uint8_t kTpNegative = 0x20;
     static constexpr std::uint8_t kHasAddress = 0x40;
     static constexpr std::uint8_t kProgramEnd = 0x80;  // this block ends the program (63, 64, / ...)
+    // A FunctionValue whose word is the value in thousandths (an EIA dwell of 500 ms is 41 with 0.5 s: word 500).
+    static constexpr std::uint8_t kValueThousandths = 0x10;
 
     [[nodiscard]] int word_count() const { return packed & kWordCountMask; }
     [[nodiscard]] bool has_code() const { return code != kNoCode; }
@@ -139,6 +141,10 @@ struct Block {
     [[nodiscard]] bool tc_positive() const { return (packed & kTcNegative) == 0; }
     // TP (word 6): true = '+' = axis parallel to the transverse (Y) axis
     [[nodiscard]] bool tp_positive() const { return (packed & kTpNegative) == 0; }
+    // A FunctionValue's value from its word.
+    [[nodiscard]] double function_value(std::int32_t word) const {
+        return (packed & kValueThousandths) != 0 ? word / 1000.0 : static_cast<double>(word);
+    }
 };
 static_assert(sizeof(Block) == 12, "Block must stay compact");
 
@@ -201,8 +207,9 @@ private:
 };
 
 // The formats a tape can be written in. Each has its front end in core/read/ (one file each, a BlockReader):
-// ESSI (essi_reader.cpp).
-enum class InputFormat : std::uint8_t { Essi };
+// ESSI (essi_reader.cpp), EIA RS-274 (eia_reader.cpp).
+enum class InputFormat : std::uint8_t { Essi, Eia };
+[[nodiscard]] const char* input_format_name(InputFormat f);  // "essi", "eia"
 
 // A front end: bytes -> blocks with their positions (byte offset, line), a chunk at a time, every problem a
 // diagnostic (never an exception). The blocks mean the same whatever format they were read from: the interpreter
@@ -233,6 +240,10 @@ protected:
     static std::size_t& first_block_of(Tape& t) { return t.first_block_; }
     static std::size_t& program_blocks_of(Tape& t) { return t.program_blocks_; }
     static bool& has_end_of(Tape& t) { return t.has_end_; }
+    // The closing diagnostics every front end gives at the end of the bytes: E113 when the tape held no block,
+    // W114 when it has no end of program (unless the profile ends it at the end of the data).
+    static void report_tape_end(Tape& chunk, const Profile& profile, std::size_t total_blocks, bool ended,
+                                std::uint32_t last_line);
 };
 
 // The front end of `format` for `bytes` (which must outlive it).

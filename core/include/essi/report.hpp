@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "essi/diagnostics.hpp"
+#include "essi/dialect.hpp"
 #include "essi/geom.hpp"
 #include "essi/interp.hpp"
 #include "essi/read.hpp"
@@ -21,11 +22,23 @@ namespace essi {
 struct CheckResult {
     Stats stats;
     std::vector<Diagnostic> diagnostics;  // sorted by line, column
+    // How the tape was read (check_tape with a TapeSetup): its format, the profile, and for a profile chosen by
+    // the evidence (--profile auto) that evidence.
+    InputFormat input = InputFormat::Essi;
+    std::string profile;
+    bool auto_profile = false;
+    std::vector<std::string> dialect_evidence;
     [[nodiscard]] bool ok() const;  // no error
     [[nodiscard]] std::size_t count(Severity s) const;
 };
 
-[[nodiscard]] CheckResult check_tape(std::string_view bytes, const Profile& profile);
+[[nodiscard]] CheckResult check_tape(std::string_view bytes, const Profile& profile,
+                                     InputFormat format = InputFormat::Essi);
+// The check of a tape as `setup` reads it (essi/dialect.hpp: format and profile given or found), with the
+// setup's note (N403) among the diagnostics and the setup in the result.
+[[nodiscard]] CheckResult check_tape(std::string_view bytes, const TapeSetup& setup);
+// The result's record of `setup` (format, profile, evidence, note): for callers that run their own TapeChecker.
+void record_setup(CheckResult& result, const TapeSetup& setup);
 
 // The check pipeline, fed a chunk of blocks at a time (from a TapeReader, in tape order): what
 // check_tape does, for callers that read on another thread or also want the motion stream.

@@ -21,4 +21,7 @@ namespace essi {
 // character boundary) and "...", so that a message never grows with the input.
 [[nodiscard]] std::string excerpt(std::string_view text, std::size_t max_bytes);
 
+// A number as a message writes it: up to 6 significant digits, no trailing zeros ("1400", "0.5", "1e+09").
+[[nodiscard]] std::string number_text(double v);
+
 }  // namespace essi

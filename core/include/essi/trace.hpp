@@ -10,6 +10,7 @@
 
 #include "essi/motion.hpp"
 #include "essi/profile.hpp"
+#include "essi/read.hpp"
 
 namespace essi {
 
@@ -24,9 +25,11 @@ using TraceWriter = std::function<void(std::string_view)>;
 
 // Streams the trace of a tape to `write`: events and motions in program order, then the diagnostics as
 // "# E301 line 7 col 1: ...". Returns the diagnostics (sorted), so a caller can tell whether it had errors.
-std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profile, const TraceWriter& write);
+std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profile, const TraceWriter& write,
+                                   InputFormat format = InputFormat::Essi);
 
 // The whole trace as one string (small tapes, golden tests).
-[[nodiscard]] std::string trace_tape(std::string_view bytes, const Profile& profile);
+[[nodiscard]] std::string trace_tape(std::string_view bytes, const Profile& profile,
+                                     InputFormat format = InputFormat::Essi);
 
 }  // namespace essi

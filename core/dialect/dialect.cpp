@@ -1,0 +1,214 @@
+// Input format and dialect from a tape's content (essi/dialect.hpp). The evidence rules are a table: a token
+// pattern, the dialect it points to, and what it says; adding a dialect's sign is a row, not a branch.
+#include "essi/dialect.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include "essi/lines.hpp"
+#include "essi/text.hpp"
+
+namespace essi {
+namespace {
+
+constexpr std::size_t kScanBytes = 1 << 20;      // the evidence is read from the first MiB
+constexpr std::size_t kEvidencePerDialect = 3;   // what a report lists of each dialect's evidence
+constexpr std::size_t kQuoteChars = 24;
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+    return s;
+}
+
+bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+
+// Calls f(line number, trimmed text) for each non-empty line of the scanned head.
+template <class F>
+void for_each_line(std::string_view bytes, F&& f) {
+    const std::string_view head = bytes.substr(0, kScanBytes);
+    std::size_t pos = 0;
+    std::uint32_t line = 1;
+    while (pos < head.size()) {
+        std::size_t end = pos;
+        while (end < head.size() && !is_line_end(head[end])) ++end;
+        const std::string_view t = trim(head.substr(pos, end - pos));
+        if (!t.empty() && !f(line, t)) return;
+        if (end >= head.size()) break;
+        pos = past_line_end(reinterpret_cast<const unsigned char*>(head.data()), static_cast<std::uint32_t>(end),
+                            static_cast<std::uint32_t>(head.size()));
+        ++line;
+    }
+}
+
+// One sign of a dialect: an ESSI block ("/", "135+", "43") or an EIA word ("G05", "M70"), what it means.
+struct Sign {
+    std::string_view token;
+    std::string_view dialect;
+    std::string_view meaning;
+};
+
+// ESSI: a function code alone ("43"), with a value ("135+"), or a mark ("/").
+constexpr std::array kEssiSigns = {
+    Sign{"/", "woyda", "ends the program"},
+    Sign{"135+", "woyda", "sets the burner count"},
+    Sign{"136+", "woyda", "sets the burner spacing"},
+    Sign{"43", "woyda", "cutting oxygen off (Woyda)"},
+    Sign{"62", "woyda", "program zero (Woyda)"},
+    Sign{"66", "woyda", "repeat start (Woyda)"},
+    Sign{"11+", "hypertherm", "selects a marker offset (Hypertherm)"},
+    Sign{"12+", "hypertherm", "cancels a marker offset (Hypertherm)"},
+};
+
+// EIA words.
+constexpr std::array kEiaSigns = {
+    Sign{"G05", "woyda", "rapid traverse on (Woyda)"},
+    Sign{"G06", "woyda", "rapid traverse off (Woyda)"},
+    Sign{"M70", "woyda", "cutting on (Woyda)"},
+    Sign{"M71", "woyda", "cutting off (Woyda)"},
+    Sign{"M22", "woyda", "plasma on (Woyda)"},
+    Sign{"M67", "woyda", "kerf left (Woyda)"},
+    Sign{"M68", "woyda", "kerf right (Woyda)"},
+    Sign{"G90", "din66025", "absolute dimensions (DIN 66025)"},
+    Sign{"G71", "din66025", "millimetres (DIN 66025)"},
+    Sign{"G70", "din66025", "inches (DIN 66025)"},
+    Sign{"M03", "din66025", "tool on (DIN 66025)"},
+    Sign{"M05", "din66025", "tool off (DIN 66025)"},
+    Sign{"G21", "hypertherm", "millimetres (Hypertherm)"},
+    Sign{"G20", "hypertherm", "inches (Hypertherm)"},
+    Sign{"M07", "hypertherm", "cut on (Hypertherm)"},
+    Sign{"M08", "hypertherm", "cut off (Hypertherm)"},
+};
+
+struct Tally {
+    std::string_view dialect;
+    std::size_t signs = 0;               // distinct signs seen
+    std::vector<std::string> evidence;
+};
+
+struct Evidence {
+    std::vector<Tally> tallies;
+    std::vector<std::string_view> seen;  // tokens already counted (each sign counts once)
+    void add(const Sign& s, std::uint32_t line, std::string_view quote) {
+        if (std::find(seen.begin(), seen.end(), s.token) != seen.end()) return;
+        seen.push_back(s.token);
+        auto it = std::find_if(tallies.begin(), tallies.end(), [&](const Tally& t) { return t.dialect == s.dialect; });
+        if (it == tallies.end()) it = tallies.insert(tallies.end(), Tally{s.dialect, 0, {}});
+        ++it->signs;
+        if (it->evidence.size() < kEvidencePerDialect)
+            it->evidence.push_back(std::string(s.dialect) + ": `" + excerpt(quote, kQuoteChars) + "` " +
+                                   std::string(s.meaning) + " at line " + std::to_string(line));
+    }
+};
+
+// The ESSI token of a line for kEssiSigns: "/", "135+" (a function with a value), "43" (a function alone).
+std::string essi_token(std::string_view t) {
+    if (t == "/") return "/";
+    std::size_t digits = 0;
+    while (digits < t.size() && t[digits] >= '0' && t[digits] <= '9') ++digits;
+    if (digits == 0 || digits > 3) return {};
+    if (digits == t.size()) return std::string(t);
+    if (t[digits] == '+' && t.find_first_of("+-", digits + 1) == std::string_view::npos) return std::string(t.substr(0, digits + 1));
+    return {};
+}
+
+void scan_essi(std::string_view bytes, Evidence& ev) {
+    bool comment = false, after_63 = false;
+    std::uint32_t line_63 = 0;
+    for_each_line(bytes, [&](std::uint32_t line, std::string_view t) {
+        if (comment) {
+            comment = t != "4";
+            return true;
+        }
+        if (t == "3") {
+            comment = true;
+            return true;
+        }
+        if (after_63 && (t.front() == '+' || t.front() == '-')) {
+            static constexpr Sign kGoesOn{"63 ...", "iso6582", "cancels the functions and the program goes on"};
+            ev.add(kGoesOn, line_63, "63");
+            after_63 = false;
+        }
+        if (t == "63") {
+            after_63 = true;
+            line_63 = line;
+        }
+        const std::string token = essi_token(t);
+        for (const Sign& s : kEssiSigns)
+            if (token == s.token) ev.add(s, line, t);
+        return true;
+    });
+}
+
+void scan_eia(std::string_view bytes, Evidence& ev) {
+    for_each_line(bytes, [&](std::uint32_t line, std::string_view t) {
+        bool comment = false;
+        for (std::size_t i = 0; i < t.size(); ++i) {
+            if (t[i] == '(') comment = true;
+            if (t[i] == ')') comment = false;
+            if (comment || !is_letter(t[i]) || (t[i] != 'G' && t[i] != 'M' && t[i] != 'g' && t[i] != 'm')) continue;
+            std::size_t j = i + 1;
+            while (j < t.size() && t[j] >= '0' && t[j] <= '9') ++j;
+            if (j == i + 1 || j - i - 1 > 3) continue;
+            const int n = std::stoi(std::string(t.substr(i + 1, j - i - 1)));
+            char word[8];
+            std::snprintf(word, sizeof word, "%c%02d", t[i] == 'g' || t[i] == 'G' ? 'G' : 'M', n);
+            for (const Sign& s : kEiaSigns)
+                if (s.token == word) ev.add(s, line, word);
+        }
+        return true;
+    });
+}
+
+}  // namespace
+
+InputFormat detect_input_format(std::string_view bytes) {
+    InputFormat found = InputFormat::Essi;
+    for_each_line(bytes, [&](std::uint32_t, std::string_view t) {
+        if (t == "%" || t.front() == '(' || t.front() == ';') return true;  // marks and comments say nothing
+        found = is_letter(t.front()) ? InputFormat::Eia : InputFormat::Essi;
+        return false;
+    });
+    return found;
+}
+
+DialectGuess guess_dialect(std::string_view bytes, InputFormat format) {
+    Evidence ev;
+    if (format == InputFormat::Eia) scan_eia(bytes, ev);
+    else scan_essi(bytes, ev);
+    DialectGuess g;
+    g.profile = format == InputFormat::Eia ? "woyda" : "iso6582";
+    std::stable_sort(ev.tallies.begin(), ev.tallies.end(), [](const Tally& a, const Tally& b) { return a.signs > b.signs; });
+    if (!ev.tallies.empty()) {
+        g.profile = std::string(ev.tallies[0].dialect);
+        g.clear = ev.tallies.size() == 1 || ev.tallies[0].signs > ev.tallies[1].signs;
+        for (const Tally& t : ev.tallies) g.evidence.insert(g.evidence.end(), t.evidence.begin(), t.evidence.end());
+    }
+    return g;
+}
+
+TapeSetup setup_tape(std::string_view bytes, std::optional<InputFormat> format, const std::optional<Profile>& profile) {
+    TapeSetup s;
+    s.format = format ? *format : detect_input_format(bytes);
+    DialectGuess guess = guess_dialect(bytes, s.format);
+    s.evidence = guess.evidence;
+    if (!profile) {
+        s.auto_profile = true;
+        s.profile = *builtin_profile(guess.profile);
+        return s;
+    }
+    s.profile = *profile;
+    // A custom profile is named after its base ("woyda+custom") unless it names itself.
+    const std::string_view base = std::string_view(profile->name).substr(0, profile->name.find('+'));
+    if (guess.clear && base != guess.profile) {
+        std::string why;
+        for (const auto& e : guess.evidence)
+            if (e.rfind(guess.profile + ":", 0) == 0) why += (why.empty() ? "" : "; ") + e;
+        s.note = Diagnostic{Severity::Note, DiagCode::N403_OtherDialect, 1, 1,
+                            "this tape looks like " + guess.profile + " (" + why + "), not " + profile->name +
+                                "; try --profile " + guess.profile + " or --profile auto"};
+    }
+    return s;
+}
+
+}  // namespace essi

@@ -1,0 +1,579 @@
+// Phase 1, read, for EIA (RS-274) tapes (docs/semantics.md §10): bytes -> the same blocks an ESSI tape gives, so
+// that the interpreter, the statistics and every report run them unchanged. An EIA block ("N10 G02 X50 Y0 I25 J0")
+// becomes the ESSI blocks it stands for, by the profile's EIA table (Profile::eia): its G and M words the machine
+// functions they map to (M70 -> 7, G91 -> 81), F a feed (39+v), G04 a dwell (41+v), its X Y I J one motion block
+// in unit increments. What the reader keeps of the machine is only what EIA leaves out and ESSI needs spelled out:
+// the modal arc direction (G02/G03), the rapid mode of G00, absolute mode and the programmed position (a missing X
+// or Y in absolute mode stays where it is; I/J are relative to the block's start in both modes).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+
+#include "essi/function_codes.hpp"
+#include "essi/read.hpp"
+#include "essi/text.hpp"
+
+namespace essi {
+namespace {
+
+constexpr std::size_t kMaxReadErrors = 100;    // then E115: reading stops
+constexpr int kMaxNumberDigits = 12;           // digits of a number (before and after the point together)
+constexpr std::size_t kExcerptChars = 16;      // what a message quotes of a word
+constexpr double kMmPerInch = 25.4;
+constexpr double kOnGrid = 1e-6;               // a value this close to a whole unit increment is on the grid
+
+enum class ArcMode : std::uint8_t { None, Clockwise, CounterClockwise };
+
+// RS-274 motion words: the same in every dialect.
+constexpr int kGLine = 1;
+constexpr int kGArcCw = 2;
+constexpr int kGArcCcw = 3;
+
+// One address word: its letter, where it starts, and its number as written (mantissa x 10^-decimals).
+struct Word {
+    char letter = 0;
+    std::uint32_t offset = 0;
+    long long mantissa = 0;
+    int decimals = 0;
+    [[nodiscard]] double value() const { return static_cast<double>(mantissa) / std::pow(10.0, decimals); }
+    [[nodiscard]] bool is_integer() const { return decimals == 0 || mantissa % static_cast<long long>(std::pow(10, decimals)) == 0; }
+    [[nodiscard]] int integer() const { return static_cast<int>(value()); }
+};
+
+struct LineDiagnostic {
+    Severity severity;
+    DiagCode code;
+    std::uint32_t offset;
+    std::string message;
+};
+
+// The blocks and diagnostics one line gives, before they are committed to the chunk.
+struct LineResult {
+    struct Out {
+        std::uint32_t offset;
+        BlockKind kind;
+        std::uint16_t code;
+        std::uint8_t packed;
+        int words;
+        std::int32_t w[5];
+    };
+    std::vector<Out> blocks;
+    std::vector<LineDiagnostic> diagnostics;
+};
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+    return s;
+}
+
+std::string word_text(char letter, int number) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%c%02d", letter, number);
+    return buf;
+}
+
+}  // namespace
+
+class EiaReader final : public BlockReader {
+public:
+    EiaReader(std::string_view bytes, const Profile& profile) : src_(bytes), profile_(profile) {}
+
+    bool read_chunk(Tape& chunk, std::size_t max_blocks) override;
+    void reserve_whole(Tape& tape) const override;
+    [[nodiscard]] std::unique_ptr<BlockReader> clone() const override { return std::make_unique<EiaReader>(*this); }
+    [[nodiscard]] std::size_t state_bytes() const override { return sizeof(EiaReader); }
+
+private:
+    // The machine state the reader keeps (see the file's comment), changed only by committed lines.
+    struct State {
+        ArcMode arc = ArcMode::None;
+        bool rapid = false;      // G00 (rapid_motion_g) in force
+        bool absolute = false;   // the function 82 is in force
+        bool inch = false;
+        long long x = 0, y = 0;  // programmed position, unit increments
+    };
+
+    void read_line(std::uint32_t begin, std::uint32_t end, LineResult& out, State& st) const;
+    bool parse_words(std::uint32_t begin, std::uint32_t end, std::vector<Word>& words, LineResult& out) const;
+    bool check_order(const std::vector<Word>& words, LineResult& out) const;
+    void translate(const std::vector<Word>& words, LineResult& out, State& st) const;
+    void motion(const std::vector<Word>& words, std::uint32_t offset, bool preset, LineResult& out, State& st) const;
+    [[nodiscard]] std::optional<long long> units(const Word& w, const State& st, LineResult& out) const;
+    [[nodiscard]] const EiaCode* code_of(char letter, int number) const;
+    void function(std::uint32_t offset, int code, LineResult& out) const;
+    void function_value(std::uint32_t offset, int code, double value, LineResult& out) const;
+    void commit(const LineResult& r);
+    void push_block(const LineResult::Out& o);
+    void report(Severity sev, DiagCode code, std::uint32_t offset, std::string message);
+    [[nodiscard]] bool is_end_function(int code) const {
+        return std::any_of(profile_.end_codes.begin(), profile_.end_codes.end(),
+                           [&](const EndCode& e) { return e.function == code; });
+    }
+    [[nodiscard]] bool is_end_mark(char mark) const {
+        return std::any_of(profile_.end_codes.begin(), profile_.end_codes.end(),
+                           [&](const EndCode& e) { return e.function < 0 && e.mark == mark; });
+    }
+    [[nodiscard]] std::uint32_t column(std::uint32_t offset) const { return offset - line_begin_ + 1; }
+
+    std::string_view src_;
+    const Profile& profile_;
+    Tape* chunk_ = nullptr;
+    State state_;
+    std::uint32_t pos_ = 0;
+    std::uint32_t line_ = 1;
+    std::uint32_t line_begin_ = 0;
+    std::uint32_t last_line_ = 0;
+    std::uint32_t end_line_ = 0;
+    std::size_t total_blocks_ = 0, chunk_blocks_ = 0, chunk_comments_ = 0;
+    std::size_t errors_ = 0;
+    bool started_ = false, finished_ = false, stopped_ = false, ended_ = false, after_end_seen_ = false;
+    bool program_started_ = false;
+    std::uint32_t percent_line_ = 0, percent_column_ = 0;  // a % in the program, reported if a block follows
+    // Coordinates rounded to the unit (W125, one warning for the tape at the first).
+    std::size_t rounded_ = 0;
+    std::uint32_t rounded_line_ = 0, rounded_column_ = 0;
+};
+
+void EiaReader::report(Severity sev, DiagCode code, std::uint32_t offset, std::string message) {
+    if (stopped_) return;
+    diagnostics_of(*chunk_).push_back({sev, code, line_, column(offset), std::move(message)});
+    if (sev == Severity::Error && ++errors_ >= kMaxReadErrors) {
+        diagnostics_of(*chunk_).push_back({Severity::Error, DiagCode::E115_TooManyErrors, line_, column(offset),
+                                           "reading stopped after " + std::to_string(kMaxReadErrors) +
+                                               " errors; this does not look like an EIA tape (expected blocks such "
+                                               "as N10 G01 X100 Y0)"});
+        stopped_ = true;
+    }
+}
+
+void EiaReader::reserve_whole(Tape& tape) const {
+    const std::size_t lines = static_cast<std::size_t>(std::count(src_.begin(), src_.end(), '\n')) + 1;
+    blocks_of(tape).reserve(lines);
+    words_of(tape).reserve(2 * lines);
+    word_index_of(tape).reserve(lines / Tape::kWordIndexStride + 1);
+}
+
+// Letters and their numbers; comments "( ... )" are skipped. False (with the error) when the line cannot be read.
+bool EiaReader::parse_words(std::uint32_t begin, std::uint32_t end, std::vector<Word>& words, LineResult& out) const {
+    std::uint32_t p = begin;
+    const auto error = [&](DiagCode code, std::uint32_t at, std::string message) {
+        out.diagnostics.push_back({Severity::Error, code, at, std::move(message)});
+        return false;
+    };
+    while (p < end) {
+        const auto c = static_cast<unsigned char>(src_[p]);
+        if (c == ' ' || c == '\t') {
+            ++p;
+            continue;
+        }
+        if (c == '(') {
+            const std::size_t close = src_.substr(0, end).find(')', p);
+            if (close == std::string_view::npos)
+                return error(DiagCode::E126_EiaUnclosedComment, p, "comment '(' is not closed on its line; expected ')'");
+            p = static_cast<std::uint32_t>(close) + 1;
+            continue;
+        }
+        const char letter = static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+        if (letter < 'A' || letter > 'Z' || profile_.eia.letters.find(letter) == std::string::npos) {
+            const std::string found = c >= 0x80 || c < 0x20 ? [&] {
+                char buf[16];
+                std::snprintf(buf, sizeof buf, "byte 0x%02X", c);
+                return std::string(buf);
+            }() : "'" + std::string(1, static_cast<char>(c)) + "'";
+            std::string expected;
+            for (char l : profile_.eia.letters) expected += (expected.empty() ? "" : " ") + std::string(1, l);
+            return error(DiagCode::E119_EiaUnknownLetter, p,
+                         "unexpected " + found + " in an EIA block; expected the letters " + expected + " (" +
+                             profile_.name + "), each followed by a number, or a comment in ( )");
+        }
+        Word w;
+        w.letter = letter;
+        w.offset = p++;
+        bool negative = false;
+        if (p < end && (src_[p] == '+' || src_[p] == '-')) negative = src_[p++] == '-';
+        int digits = 0;
+        bool point = false;
+        const std::uint32_t number_start = p;
+        while (p < end && ((src_[p] >= '0' && src_[p] <= '9') || (src_[p] == '.' && !point))) {
+            if (src_[p] == '.') {
+                point = true;
+            } else {
+                if (++digits > kMaxNumberDigits)
+                    return error(DiagCode::E122_EiaBadNumber, w.offset,
+                                 std::string("the number after ") + letter + " has more than " +
+                                     std::to_string(kMaxNumberDigits) + " digits: " +
+                                     excerpt(src_.substr(number_start, end - number_start), kExcerptChars));
+                w.mantissa = w.mantissa * 10 + (src_[p] - '0');
+                if (point) ++w.decimals;
+            }
+            ++p;
+        }
+        if (digits == 0)
+            return error(DiagCode::E122_EiaBadNumber, w.offset,
+                         std::string("letter ") + letter + " is not followed by a number; expected e.g. " + letter +
+                             (letter == 'G' || letter == 'M' ? "01" : "12.5"));
+        if (negative) w.mantissa = -w.mantissa;
+        words.push_back(w);
+    }
+    return true;
+}
+
+// The dialect's order rules: letters in the order of Profile::eia.letters (when strict) and coordinates, N and F
+// at most once; at most one of G, M and F (when the dialect says so).
+bool EiaReader::check_order(const std::vector<Word>& words, LineResult& out) const {
+    const EiaDialect& e = profile_.eia;
+    std::size_t last = 0;
+    const Word* function_word = nullptr;
+    for (std::size_t k = 0; k < words.size(); ++k) {
+        const Word& w = words[k];
+        const std::size_t rank = e.letters.find(w.letter);
+        const bool repeatable = w.letter == 'G' || w.letter == 'M';
+        const bool twice = std::any_of(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(k),
+                                       [&](const Word& o) { return o.letter == w.letter; });
+        if (twice && (!repeatable || e.strict_order)) {
+            out.diagnostics.push_back({Severity::Error, DiagCode::E120_EiaLetterOrder, w.offset,
+                                       std::string(1, w.letter) + " appears twice in one block; expected it once"});
+            return false;
+        }
+        if (e.strict_order && k > 0 && rank < last) {
+            std::string order;
+            for (char l : e.letters) order += (order.empty() ? "" : " ") + std::string(1, l);
+            out.diagnostics.push_back({Severity::Error, DiagCode::E120_EiaLetterOrder, w.offset,
+                                       std::string(1, w.letter) + " after " + words[k - 1].letter +
+                                           ": the letters of a block come in the order " + order + " (" +
+                                           profile_.name + ")"});
+            return false;
+        }
+        last = std::max(last, rank);
+        const bool is_function = w.letter == 'G' || w.letter == 'M' || w.letter == 'F';
+        if (is_function && e.one_function_per_block) {
+            if (function_word != nullptr) {
+                out.diagnostics.push_back({Severity::Error, DiagCode::E121_EiaFunctionsInBlock, w.offset,
+                                           "a block may hold only one of G, M and F (" + profile_.name + "); found " +
+                                               std::string(1, function_word->letter) + " and " + w.letter +
+                                               ": put each on a line of its own"});
+                return false;
+            }
+            function_word = &w;
+        }
+    }
+    return true;
+}
+
+const EiaCode* EiaReader::code_of(char letter, int number) const {
+    for (const EiaCode& c : profile_.eia.codes)
+        if (c.word.letter == letter && c.word.number == number) return &c;
+    return nullptr;
+}
+
+// A coordinate in unit increments: mm (or inches after G20/G70) divided by the unit; rounded (W125) when it is
+// finer than the unit, an error when it does not fit a word.
+std::optional<long long> EiaReader::units(const Word& w, const State& st, LineResult& out) const {
+    const double mm = w.value() * (st.inch ? kMmPerInch : 1.0);
+    const double exact = mm / profile_.unit_mm;
+    if (!(std::fabs(exact) <= static_cast<double>(std::numeric_limits<std::int32_t>::max()))) {
+        out.diagnostics.push_back({Severity::Error, DiagCode::E122_EiaBadNumber, w.offset,
+                                   std::string(1, w.letter) + " is too large: more than 2^31 unit increments of " +
+                                       excerpt(std::to_string(profile_.unit_mm), 8) + " mm"});
+        return std::nullopt;
+    }
+    const double rounded = std::round(exact);
+    if (std::fabs(exact - rounded) > kOnGrid) {
+        out.diagnostics.push_back({Severity::Warning, DiagCode::W125_EiaRounded, w.offset, ""});  // (counted)
+    }
+    return static_cast<long long>(rounded);
+}
+
+void EiaReader::function(std::uint32_t offset, int code, LineResult& out) const {
+    out.blocks.push_back({offset, BlockKind::Function, static_cast<std::uint16_t>(code), 0, 0, {}});
+}
+
+void EiaReader::function_value(std::uint32_t offset, int code, double value, LineResult& out) const {
+    const double thousandths = std::round(value * 1000.0);
+    if (!(std::fabs(thousandths) <= static_cast<double>(std::numeric_limits<std::int32_t>::max()))) {
+        out.diagnostics.push_back({Severity::Error, DiagCode::E122_EiaBadNumber, offset,
+                                   "the value of function " + std::to_string(code) + " is too large"});
+        return;
+    }
+    LineResult::Out o{offset, BlockKind::FunctionValue, static_cast<std::uint16_t>(code), Block::kValueThousandths, 1, {}};
+    o.w[0] = static_cast<std::int32_t>(thousandths);
+    o.packed |= 1;  // one word
+    out.blocks.push_back(o);
+}
+
+// X Y I J of a block: one motion block (or, with the position preset word, a zero offset: 83 and its block).
+void EiaReader::motion(const std::vector<Word>& words, std::uint32_t offset, bool preset, LineResult& out,
+                       State& st) const {
+    const Word *x = nullptr, *y = nullptr, *i = nullptr, *j = nullptr;
+    for (const Word& w : words) {
+        if (w.letter == 'X') x = &w;
+        if (w.letter == 'Y') y = &w;
+        if (w.letter == 'I') i = &w;
+        if (w.letter == 'J') j = &w;
+    }
+    const auto value = [&](const Word* w, long long otherwise) -> std::optional<long long> {
+        return w ? units(*w, st, out) : std::optional<long long>(otherwise);
+    };
+    const bool relative = !st.absolute && !preset;
+    const auto ex = value(x, relative ? 0 : st.x), ey = value(y, relative ? 0 : st.y);
+    const auto ci = value(i, 0), cj = value(j, 0);
+    if (!ex || !ey || !ci || !cj) return;
+    const long long end_x = relative ? st.x + *ex : *ex, end_y = relative ? st.y + *ey : *ey;
+    if (preset) {
+        // The position becomes (X, Y): the origin moves by (position - preset), relative to the current one (83).
+        LineResult::Out o{offset, BlockKind::Motion, Block::kNoCode, 2, 2, {}};
+        o.w[0] = static_cast<std::int32_t>(std::clamp<long long>(st.x - end_x, INT32_MIN, INT32_MAX));
+        o.w[1] = static_cast<std::int32_t>(std::clamp<long long>(st.y - end_y, INT32_MIN, INT32_MAX));
+        function(offset, fn::kZeroOffset, out);
+        out.blocks.push_back(o);
+        st.x = end_x;
+        st.y = end_y;
+        return;
+    }
+    const bool arc = i != nullptr || j != nullptr;
+    if (arc && st.arc == ArcMode::None) {
+        out.diagnostics.push_back({Severity::Error, DiagCode::E123_EiaArcWithoutDirection, (i ? i : j)->offset,
+                                   "an arc centre (I, J) while neither G02 nor G03 is in force; expected G02 "
+                                   "(clockwise) or G03 (counter-clockwise) in this block or before it"});
+        return;
+    }
+    LineResult::Out o{offset, BlockKind::Motion, Block::kNoCode, 0, arc ? 5 : 2, {}};
+    // ESSI words: relative to the start (81) or absolute (82); the centre likewise, from I/J relative to the start.
+    o.w[0] = static_cast<std::int32_t>(st.absolute ? end_x : end_x - st.x);
+    o.w[1] = static_cast<std::int32_t>(st.absolute ? end_y : end_y - st.y);
+    if (arc) {
+        o.w[2] = static_cast<std::int32_t>(st.absolute ? st.x + *ci : *ci);
+        o.w[3] = static_cast<std::int32_t>(st.absolute ? st.y + *cj : *cj);
+        o.w[4] = 0;
+        if (st.arc == ArcMode::Clockwise) o.packed |= Block::kTcNegative;  // TC '-': clockwise (ISO A.7)
+    }
+    o.packed |= static_cast<std::uint8_t>(o.words);
+    out.blocks.push_back(o);
+    st.x = end_x;
+    st.y = end_y;
+}
+
+// One EIA block's words -> its ESSI blocks, in the order a controller runs them: G modes, F, M functions, the
+// motion, then stops and the end.
+void EiaReader::translate(const std::vector<Word>& words, LineResult& out, State& st) const {
+    const EiaDialect& e = profile_.eia;
+    bool dwell = false, preset = false;
+    std::uint32_t dwell_offset = 0;
+    std::vector<std::pair<std::uint32_t, int>> after;  // stops and end codes: after the motion
+    const auto set_rapid = [&](bool on, std::uint32_t offset) {
+        if (e.rapid_motion_g < 0 || st.rapid == on) return;
+        function(offset, on ? fn::kRapidOn : fn::kRapidOff, out);
+        st.rapid = on;
+    };
+    for (const Word& w : words) {
+        if (w.letter != 'G' && w.letter != 'M' && w.letter != 'F') continue;
+        if (w.letter == 'F') {
+            function_value(w.offset, fn::kFeed, w.value() * (st.inch ? kMmPerInch : 1.0), out);
+            continue;
+        }
+        const int n = w.integer();
+        const auto is_word = [&](const std::vector<EiaWord>& list) {
+            return std::any_of(list.begin(), list.end(), [&](const EiaWord& x) { return x.letter == w.letter && x.number == n; });
+        };
+        if (!w.is_integer() || w.mantissa < 0) {
+            out.diagnostics.push_back({Severity::Warning, DiagCode::W124_EiaUnknownCode, w.offset,
+                                       std::string(1, w.letter) + excerpt(src_.substr(w.offset + 1, 8), 8) +
+                                           " is not a " + w.letter + " code; it is ignored"});
+        } else if (w.letter == 'G' && (n == kGLine || n == kGArcCw || n == kGArcCcw)) {
+            set_rapid(false, w.offset);
+            st.arc = n == kGLine ? ArcMode::None : n == kGArcCw ? ArcMode::Clockwise : ArcMode::CounterClockwise;
+        } else if (w.letter == 'G' && n == e.rapid_motion_g) {
+            set_rapid(true, w.offset);
+            st.arc = ArcMode::None;
+        } else if (w.letter == 'G' && n == e.position_preset_g) {
+            preset = true;
+        } else if (is_word(e.inch_words) || is_word(e.mm_words)) {
+            st.inch = is_word(e.inch_words);
+        } else if (const EiaCode* c = code_of(w.letter, n)) {
+            if (c->function == fn::kDwell) {
+                dwell = true;
+                dwell_offset = w.offset;
+            } else if (c->function == fn::kProgramStop || c->function == fn::kOptionalStop || is_end_function(c->function)) {
+                after.emplace_back(w.offset, c->function);
+            } else {
+                if (c->function == fn::kAbsolute) st.absolute = true;
+                if (c->function == fn::kIncremental) st.absolute = false;
+                function(w.offset, c->function, out);
+            }
+        } else {
+            out.diagnostics.push_back({Severity::Warning, DiagCode::W124_EiaUnknownCode, w.offset,
+                                       word_text(w.letter, n) + " is not in the EIA table of the " + profile_.name +
+                                           " profile; it is ignored"});
+        }
+    }
+    if (dwell) {
+        const auto t = std::find_if(words.begin(), words.end(), [&](const Word& w) { return w.letter == e.dwell_letter; });
+        if (t == words.end()) function(dwell_offset, fn::kDwell, out);  // the profile's dwell
+        else function_value(dwell_offset, fn::kDwell, t->value() * e.dwell_unit_s, out);
+    }
+    const auto motion_word = std::find_if(words.begin(), words.end(), [&](const Word& w) {
+        const bool is_axis = w.letter == 'X' || w.letter == 'Y' || w.letter == 'I' || w.letter == 'J';
+        return is_axis && !(dwell && w.letter == e.dwell_letter);
+    });
+    if (motion_word != words.end()) {
+        std::vector<Word> axes;
+        for (const Word& w : words)
+            if ((w.letter == 'X' || w.letter == 'Y' || w.letter == 'I' || w.letter == 'J') && !(dwell && w.letter == e.dwell_letter))
+                axes.push_back(w);
+        motion(axes, motion_word->offset, preset, out, st);
+    }
+    for (const auto& [offset, code] : after) function(offset, code, out);
+}
+
+void EiaReader::read_line(std::uint32_t begin, std::uint32_t end, LineResult& out, State& st) const {
+    std::vector<Word> words;
+    if (!parse_words(begin, end, words, out) || words.empty()) return;
+    if (!check_order(words, out)) return;
+    translate(words, out, st);
+}
+
+void EiaReader::push_block(const LineResult::Out& o) {
+    Tape& t = *chunk_;
+    if (percent_line_ != 0 && o.kind != BlockKind::Comment) {
+        diagnostics_of(t).push_back({Severity::Warning, DiagCode::W112_MisplacedPercent, percent_line_, percent_column_,
+                                     "a % mark in the middle of the program is ignored; % belongs before the first "
+                                     "block or after the end"});
+        percent_line_ = 0;
+    }
+    if (o.kind == BlockKind::Comment) ++chunk_comments_;
+    if (chunk_blocks_ % Tape::kWordIndexStride == 0) word_index_of(t).push_back(static_cast<std::uint32_t>(words_of(t).size()));
+    blocks_of(t).push_back(Block{o.offset, line_, o.code, o.kind, o.packed});
+    for (int k = 0; k < o.words; ++k) words_of(t).push_back(o.w[k]);
+    ++chunk_blocks_;
+    last_line_ = line_;
+    if (o.kind != BlockKind::Percent && o.kind != BlockKind::Comment) program_started_ = true;
+}
+
+void EiaReader::commit(const LineResult& r) {
+    for (const LineDiagnostic& d : r.diagnostics) {
+        if (d.code == DiagCode::W125_EiaRounded) {
+            if (rounded_++ == 0) {
+                rounded_line_ = line_;
+                rounded_column_ = column(d.offset);
+            }
+            continue;
+        }
+        report(d.severity, d.code, d.offset, d.message);
+    }
+    for (const LineResult::Out& o : r.blocks) {
+        if (ended_) break;
+        push_block(o);
+        if (o.kind == BlockKind::Function && is_end_function(o.code)) {
+            ended_ = true;
+            end_line_ = line_;
+            blocks_of(*chunk_).back().packed |= Block::kProgramEnd;
+            has_end_of(*chunk_) = true;
+            end_block_of(*chunk_) = blocks_of(*chunk_).size();
+        }
+    }
+}
+
+bool EiaReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
+    if (finished_) return false;
+    chunk_ = &chunk;
+    blocks_of(chunk).clear();
+    words_of(chunk).clear();
+    word_index_of(chunk).clear();
+    diagnostics_of(chunk).clear();
+    first_block_of(chunk) = total_blocks_;
+    chunk_blocks_ = 0;
+    chunk_comments_ = 0;
+    has_end_of(chunk) = false;
+    const bool ended_before = ended_;
+    if (!started_) {
+        started_ = true;
+        if (src_.size() > std::numeric_limits<std::uint32_t>::max()) {
+            diagnostics_of(chunk).push_back({Severity::Error, DiagCode::E117_TapeTooLarge, 0, 0,
+                                             "the tape has " + std::to_string(src_.size()) +
+                                                 " bytes; essikit reads tapes of at most 4 GiB"});
+            stopped_ = true;
+        }
+    }
+    const auto size = static_cast<std::uint32_t>(std::min<std::size_t>(src_.size(), std::numeric_limits<std::uint32_t>::max()));
+    std::uint32_t pos = pos_;
+    LineResult r;
+    while (pos < size && !stopped_ && !after_end_seen_) {
+        std::uint32_t end = pos;
+        while (end < size && !is_line_end(src_[end])) ++end;
+        line_begin_ = pos;
+        const std::string_view text = trim(src_.substr(pos, end - pos));
+        const auto text_at = static_cast<std::uint32_t>(text.empty() ? pos : text.data() - src_.data());
+        r.blocks.clear();
+        r.diagnostics.clear();
+        State st = state_;
+        if (text.empty()) {
+        } else if (text == "%") {
+            r.blocks.push_back({text_at, BlockKind::Percent, Block::kNoCode, 0, 0, {}});
+        } else if (ended_) {
+            report(Severity::Warning, DiagCode::W110_ContentAfterEnd, text_at,
+                   "content after the end of the program (line " + std::to_string(end_line_) + "); it is not executed");
+            after_end_seen_ = true;
+            break;
+        } else if (text.size() == 1 && is_end_mark(text[0])) {
+            r.blocks.push_back({text_at, BlockKind::EndMark, Block::kNoCode, 0, 0, {}});
+        } else if (text.front() == '(' && text.back() == ')' && text.find(')') == text.size() - 1) {
+            r.blocks.push_back({text_at, BlockKind::Comment, Block::kNoCode, 0, 0, {}});
+        } else {
+            read_line(pos, end, r, st);
+        }
+        // A line's blocks go into one chunk: stop before a line that does not fit (it is read again next time).
+        if (chunk_blocks_ > 0 && chunk_blocks_ + r.blocks.size() > max_blocks) break;
+        if (r.blocks.size() == 1 && r.blocks[0].kind == BlockKind::Percent) {
+            push_block(r.blocks[0]);
+            if (program_started_ && !ended_) {
+                percent_line_ = line_;
+                percent_column_ = column(text_at);
+            }
+        } else {
+            if (!r.blocks.empty() && r.blocks[0].kind == BlockKind::EndMark) {
+                push_block(r.blocks[0]);
+                ended_ = true;
+                end_line_ = line_;
+                blocks_of(chunk).back().packed |= Block::kProgramEnd;
+                has_end_of(chunk) = true;
+                end_block_of(chunk) = blocks_of(chunk).size();
+            } else {
+                commit(r);
+            }
+            state_ = st;
+        }
+        if (end >= size) {
+            pos = size;
+            break;
+        }
+        pos = past_line_end(reinterpret_cast<const unsigned char*>(src_.data()), end, size);
+        ++line_;
+    }
+    pos_ = pos;
+    total_blocks_ += blocks_of(chunk).size();
+    if (ended_before) end_block_of(chunk) = 0;
+    else if (!ended_) end_block_of(chunk) = blocks_of(chunk).size();
+    program_blocks_of(chunk) = end_block_of(chunk) - (ended_before ? 0 : chunk_comments_);
+    const bool input_done = pos >= size || stopped_ || after_end_seen_;
+    if (!input_done) return true;
+    finished_ = true;
+    if (stopped_) return true;
+    if (rounded_ > 0) {
+        diagnostics_of(chunk).push_back(
+            {Severity::Warning, DiagCode::W125_EiaRounded, rounded_line_, rounded_column_,
+             std::to_string(rounded_) + " coordinate" + (rounded_ == 1 ? " is" : "s are") + " finer than the unit of " +
+                 excerpt(std::to_string(profile_.unit_mm), 8) + " mm of the " + profile_.name +
+                 " profile and were rounded to it (the first here); choose a profile with a finer unit_mm"});
+    }
+    report_tape_end(chunk, profile_, total_blocks_, ended_, last_line_);
+    return true;
+}
+
+std::unique_ptr<BlockReader> make_eia_reader(std::string_view bytes, const Profile& profile) {
+    return std::make_unique<EiaReader>(bytes, profile);
+}
+
+}  // namespace essi
