@@ -93,8 +93,8 @@ std::optional<essi::native::TapeRequest> resolve_request(const std::string& prof
         err("essi: unknown --input '" + essi::display_text(input_arg) + "'; expected essi, eia or auto\n");
         return std::nullopt;
     }
-    if (profile_arg == "auto") {
-        r.profile_name = "auto";
+    if (profile_arg == essi::kAutoProfile) {
+        r.profile_name = std::string(essi::kAutoProfile);
         return r;
     }
     r.profile = resolve_profile(profile_arg);

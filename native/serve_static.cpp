@@ -80,7 +80,8 @@ std::vector<std::string> example_names(const std::string& dir) {
     std::error_code ec;
     if (dir.empty() || !fs::is_directory(dir, ec)) return names;
     for (const auto& e : fs::directory_iterator(dir, ec)) {
-        if (e.is_regular_file(ec) && e.path().extension() == ".esi") names.push_back(e.path().filename().string());
+        const std::string ext = e.path().extension().string();
+        if (e.is_regular_file(ec) && (ext == ".esi" || ext == ".eia")) names.push_back(e.path().filename().string());
     }
     std::sort(names.begin(), names.end());
     return names;
@@ -97,7 +98,7 @@ void add_static_routes(httplib::Server& server, const StaticFiles& files) {
         res.set_content(nlohmann::json(example_names(files.examples_dir)).dump(), "application/json");
     });
     // An example is served only when it is one of the listed names: no path is ever built from the request.
-    server.Get(R"(/examples/([A-Za-z0-9_.-]+\.esi))", [files](const httplib::Request& req, httplib::Response& res) {
+    server.Get(R"(/examples/([A-Za-z0-9_.-]+\.(esi|eia)))", [files](const httplib::Request& req, httplib::Response& res) {
         const std::vector<std::string> names = example_names(files.examples_dir);
         if (std::find(names.begin(), names.end(), req.matches[1].str()) == names.end()) return not_found(res);
         send_file(fs::path(files.examples_dir) / req.matches[1].str(), "text/plain; charset=us-ascii", res);

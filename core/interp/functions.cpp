@@ -3,6 +3,7 @@
 #include "essi/functions.hpp"
 
 #include "essi/function_codes.hpp"
+#include "essi/text.hpp"
 
 #include <cstdio>
 
@@ -107,7 +108,7 @@ std::optional<FunctionInfo> function_info(int code, Dialect dialect) {
     return iso_row(code);
 }
 
-std::string describe_function(int code, bool has_value, long value, const Profile& profile) {
+std::string describe_function(int code, bool has_value, double value, const Profile& profile) {
     const auto info = function_info(code, profile.dialect);
     std::string s = "function " + std::to_string(code) + ": ";
     if (!info) return s + "not a machine function";
@@ -123,14 +124,14 @@ std::string describe_function(int code, bool has_value, long value, const Profil
                 s += buf;
                 break;
             }
-            case fn::kFeed: s += ", " + std::to_string(value) + " mm/min"; break;
-            case fn::kDwell: s += ", " + std::to_string(value) + " s"; break;
+            case fn::kFeed: s += ", " + number_text(value) + " mm/min"; break;
+            case fn::kDwell: s += ", " + number_text(value) + " s"; break;
             case fn::kWoydaBurnerSpacing: {
                 std::snprintf(buf, sizeof buf, ", %.4g mm", value * profile.unit_mm);
                 s += buf;
                 break;
             }
-            default: s += ", value " + std::to_string(value); break;
+            default: s += ", value " + number_text(value); break;
         }
     } else if (code == fn::kKerfLeft || code == fn::kKerfRight) {
         std::snprintf(buf, sizeof buf, ", %.3g mm (profile kerf)", profile.kerf_units * profile.unit_mm);

@@ -19,7 +19,7 @@ import {
 let server, baseUrl, browser;
 
 function examples() {
-  return fs.readdirSync(examplesDir).filter((f) => f.endsWith('.esi')).sort();
+  return fs.readdirSync(examplesDir).filter((f) => f.endsWith('.esi') || f.endsWith('.eia')).sort();
 }
 
 // The CLI's verdict for one tape: {stats, diagnostics}. Falls back to the example's .expected.json golden
@@ -29,14 +29,15 @@ function cliReport(file) {
   if (fs.existsSync(essiBin)) {
     let out;
     try {
-      out = execFileSync(essiBin, ['check', '--format', 'json', full], { encoding: 'utf8' });
+      // The viewer reads with --profile auto by default (the dialect the tape's evidence shows).
+      out = execFileSync(essiBin, ['check', '--format', 'json', '--profile', 'auto', full], { encoding: 'utf8' });
     } catch (e) {
       out = e.stdout;  // exit 1 when the tape has errors
     }
     const report = JSON.parse(out);
     return { source: 'essi check', ...report.files[0] };
   }
-  const golden = path.join(examplesDir, file.replace(/\.esi$/, '.expected.json'));
+  const golden = path.join(examplesDir, file.replace(/\.(esi|eia)$/, '.expected.json'));
   return { source: path.basename(golden), ...JSON.parse(fs.readFileSync(golden, 'utf8')) };
 }
 
@@ -126,8 +127,36 @@ test('every example tape dropped on the page has the statistics and diagnostics 
     assertStatsEqual(state.stats, cli.stats, `${file} (vs ${cli.source})`);
     assert.deepEqual(state.diagnostics.map((d) => [d.severity, d.code, d.line, d.column]),
                      cli.diagnostics.map((d) => [d.severity, d.code, d.line, d.column]), `${file}: diagnostics`);
-    await page.screenshot({ path: path.join(shots, file.replace(/\.esi$/, '.png')) });
+    await page.screenshot({ path: path.join(shots, file.replace(/\.(esi|eia)$/, '.png')) });
   }
+  await page.close();
+});
+
+test('the viewer reads with the dialect the tape shows, says why, and switches in one click', async () => {
+  const page = await newPage();
+  let state = await dropFile(page, 'woyda_end_slash.esi', fs.readFileSync(path.join(examplesDir, 'woyda_end_slash.esi')));
+  assert.equal(state.profile, 'auto');
+  assert.equal(state.input, 'essi');
+  assert.equal(state.dialect, 'woyda');
+  assert.deepEqual(state.dialect_evidence, cliReport('woyda_end_slash.esi').dialect_evidence);
+  assert.ok(state.dialect_evidence.some((e) => e.includes('`/` ends the program at line 29')), state.dialect_evidence.join('; '));
+  assert.equal(state.ok, true);
+  // The ISO reading: '/' is no ESSI character there, and the note says the tape looks like woyda.
+  state = await page.evaluate(() => essikit.setProfile('iso6582'));
+  assert.equal(state.profile, 'iso6582');
+  assert.equal(state.dialect, 'iso6582');
+  assert.equal(state.ok, false);
+  const note = state.diagnostics.find((d) => d.code === 'N403');
+  assert.ok(note && note.severity === 'note' && note.message.includes('--profile woyda'), JSON.stringify(state.diagnostics));
+  state = await page.evaluate(() => essikit.setProfile('auto'));
+  assert.equal(state.dialect, 'woyda');
+  assert.equal(state.ok, true);
+  // An EIA tape loads like an ESSI one.
+  state = await dropFile(page, 'din66025_plate.eia', fs.readFileSync(path.join(examplesDir, 'din66025_plate.eia')));
+  assert.equal(state.input, 'eia');
+  assert.equal(state.dialect, 'din66025');
+  assert.ok(Math.abs(state.stats.cut_length_mm - 694.247780) < 1e-5, state.stats.cut_length_mm);
+  await page.screenshot({ path: path.join(shots, 'dialect-din66025.png') });
   await page.close();
 });
 
@@ -145,7 +174,7 @@ test('a bad tape shows its diagnostics with their lines', async () => {
     await page.evaluate((l) => essikit.selectLine(l), first.line);
     const after = await page.evaluate(() => essikit.state());
     assert.equal(after.selection.line, first.line);
-    await page.screenshot({ path: path.join(shots, `diagnostics-${file.replace(/\.esi$/, '')}.png`) });
+    await page.screenshot({ path: path.join(shots, `diagnostics-${file.replace(/\.(esi|eia)$/, '')}.png`) });
   }
   // Not a tape at all: a clear message, never a blank page.
   const png = Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0, 0, 0, 13, 0x49, 0x48, 0x44, 0x52, 0, 1, 2, 3]);

@@ -26,7 +26,9 @@ using essi::viewer::LineBlocks;
 namespace {
 
 std::unique_ptr<Document> load(const std::string& bytes, const Profile& p) {
-    DocumentLoader loader("tape", bytes, p);
+    essi::TapeSetup setup;  // an ESSI tape read with `p`
+    setup.profile = p;
+    DocumentLoader loader("tape", bytes, std::move(setup));
     while (!loader.step(1e9)) {
     }
     return loader.take();

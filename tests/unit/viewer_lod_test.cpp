@@ -22,7 +22,9 @@ using essi::viewer::LodRaster;
 namespace {
 
 std::unique_ptr<Document> load(const std::string& bytes) {
-    DocumentLoader loader("tape", bytes, *builtin_profile("iso6582"));
+    essi::TapeSetup setup;  // an ESSI tape, iso6582
+    setup.profile = *builtin_profile("iso6582");
+    DocumentLoader loader("tape", bytes, std::move(setup));
     while (!loader.step(1e9)) {
     }
     return loader.take();

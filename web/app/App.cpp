@@ -60,9 +60,11 @@ bool App::init_graphics() {
 // Loading
 // ---------------------------------------------------------------------------------------------------------
 void App::load(std::string name, std::string bytes, std::optional<ViewRequest> view) {
-    auto profile = builtin_profile(profile_name_);
-    if (!profile) profile = builtin_profile("iso6582");
-    load_.start(std::move(name), std::move(bytes), *profile);
+    // "auto": the dialect the tape's evidence shows (essi/dialect.hpp), as `essi check --profile auto`.
+    std::optional<Profile> profile;
+    if (profile_name_ != kAutoProfile) profile = builtin_profile(profile_name_);
+    TapeSetup setup = setup_tape(bytes, std::nullopt, profile);
+    load_.start(std::move(name), std::move(bytes), std::move(setup));
     pending_view_ = view;
     playback_.stop();
     input_.measure.points = 0;

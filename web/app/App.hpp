@@ -111,7 +111,7 @@ private:
     LoadController load_{renderer_};
     SceneAssembly scene_;
     std::optional<ViewRequest> pending_view_;  // set_view / select_line before the document is there
-    std::string profile_name_ = "iso6582";
+    std::string profile_name_ = std::string(kAutoProfile);  // a built-in profile, or "auto" (the default)
 
     View view_;
     Layers layers_;

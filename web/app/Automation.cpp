@@ -119,7 +119,12 @@ std::string App::state_json() const {
     j["busy"] = has_background_work();
     j["shown_seconds"] = load_.shown_seconds();
     j["name"] = doc ? doc->name : (load_.reading() ? load_.loading_name() : "");
-    j["profile"] = profile_name_;
+    j["profile"] = profile_name_;  // as asked: a built-in name or "auto"
+    if (doc) {  // how the tape is read (as `essi check --format json` says it)
+        j["input"] = input_format_name(doc->setup.format);
+        j["dialect"] = doc->profile.name;
+        j["dialect_evidence"] = doc->setup.evidence;
+    }
     if (doc) {
         add_document(j, *doc, load_, renderer_, scene_.lod_drawn());
         j["banner"] = ui_.banner;

@@ -267,7 +267,7 @@ std::string describe_block(const Tape& tape, std::size_t i, const Profile& profi
             return describe_function(b.code, false, 0, profile);
         case BlockKind::FunctionValue: {
             const auto w = tape.words(i);
-            return describe_function(b.code, true, w.empty() ? 0 : static_cast<long>(w[0]), profile);
+            return describe_function(b.code, true, w.empty() ? 0.0 : b.function_value(w[0]), profile);
         }
         case BlockKind::Motion: {
             // The words by their names (docs/semantics.md §2): TC and TP count by their sign only.
@@ -398,11 +398,12 @@ private:
     bool pierce_pending_ = false;
 };
 
-DocumentLoader::DocumentLoader(std::string name, std::string bytes, Profile profile)
+DocumentLoader::DocumentLoader(std::string name, std::string bytes, TapeSetup setup)
     : doc_(std::make_unique<Document>()) {
     doc_->name = std::move(name);
     doc_->bytes = std::move(bytes);
-    doc_->profile = std::move(profile);
+    doc_->profile = setup.profile;
+    doc_->setup = std::move(setup);
 }
 
 DocumentLoader::~DocumentLoader() = default;
@@ -441,7 +442,7 @@ bool DocumentLoader::step(double budget_ms) {
         d.motions.reserve(motion_lines + motion_lines / kMotionReserveSlack + 16);
         d.arc_rank.reserve(d.motions.capacity());
         sink_ = std::make_unique<Sink>(d);
-        reader_ = std::make_unique<TapeReader>(d.bytes, d.profile);
+        reader_ = std::make_unique<TapeReader>(d.bytes, d.profile, d.setup.format);
         chunk_.reserve(Document::kReadChunkBlocks, 2 * Document::kReadChunkBlocks);  // (no doubling steps)
         checker_ = std::make_unique<TapeChecker>(d.bytes, d.profile, sink_.get());
         if (now_ms() > until) return false;
@@ -473,6 +474,7 @@ bool DocumentLoader::step(double budget_ms) {
     }
     if (stage_ == Stage::Finish) {
         CheckResult r = checker_->finish();
+        record_setup(r, d.setup);  // (the note N403 among the diagnostics, as `essi check` has it)
         d.stats = r.stats;
         d.diagnostics = std::move(r.diagnostics);
         d.bbox = d.stats.motion_bbox;

@@ -14,6 +14,7 @@
 #include "essi/geom.hpp"
 #include "essi/lines.hpp"
 #include "essi/motion.hpp"
+#include "essi/dialect.hpp"
 #include "essi/profile.hpp"
 #include "essi/read.hpp"
 #include "essi/report.hpp"
@@ -85,6 +86,7 @@ struct Document {
     std::string name;
     std::string bytes;
     Profile profile;
+    TapeSetup setup;                      // how the tape is read: format, profile (given or auto), evidence, note
     std::vector<Diagnostic> diagnostics;  // sorted by line, column (as `essi check`)
     Stats stats;
     std::vector<Motion> motions;
@@ -160,7 +162,7 @@ private:
 // viewer's compact stream taken on the way (TapeChecker's `also` sink), the blocks appended to the Tape.
 class DocumentLoader {
 public:
-    DocumentLoader(std::string name, std::string bytes, Profile profile);
+    DocumentLoader(std::string name, std::string bytes, TapeSetup setup);
     ~DocumentLoader();
     // Runs for about budget_ms; returns true when the document is complete.
     bool step(double budget_ms = 12);

@@ -24,10 +24,10 @@ constexpr double kRebuildFiner = 16;
 
 }  // namespace
 
-void LoadController::start(std::string name, std::string bytes, const Profile& profile) {
+void LoadController::start(std::string name, std::string bytes, TapeSetup setup) {
     loading_name_ = name;
     loading_bytes_ = bytes.size();
-    loader_ = std::make_unique<DocumentLoader>(std::move(name), std::move(bytes), profile);
+    loader_ = std::make_unique<DocumentLoader>(std::move(name), std::move(bytes), std::move(setup));
     frames_since_start_ = 0;
     started_ = glfwGetTime();
 }

@@ -32,7 +32,7 @@ public:
     void set_graphics(bool ok) { graphics_ok_ = ok; }
 
     // Starts reading a tape (the document before it stays drawn until this one is read).
-    void start(std::string name, std::string bytes, const Profile& profile);
+    void start(std::string name, std::string bytes, TapeSetup setup);
     // One slice of work. True when a new document has just been read: the caller sets the view, then calls
     // begin_drawing().
     [[nodiscard]] bool step();

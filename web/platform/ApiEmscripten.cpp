@@ -74,6 +74,11 @@ EMSCRIPTEN_KEEPALIVE void essi_set_layer(int layer, int visible) {
     if (App* app = App::instance()) app->set_layer(layer, visible != 0);
 }
 
+// Reads the tape again with another profile: a built-in name or "auto".
+EMSCRIPTEN_KEEPALIVE void essi_set_profile(const char* name) {
+    if (App* app = App::instance()) app->set_profile(name ? name : "auto");
+}
+
 // Makes a share link as the Share button does; the page's essikitShare finishes it.
 EMSCRIPTEN_KEEPALIVE void essi_share() {
     if (App* app = App::instance()) app->share();

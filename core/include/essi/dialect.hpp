@@ -13,6 +13,9 @@
 
 namespace essi {
 
+// The profile name that asks for the dialect the tape's evidence shows (`--profile auto`, the viewer's default).
+constexpr std::string_view kAutoProfile = "auto";
+
 // EIA when the first block (after %, blank lines and comments) starts with an address letter, else ESSI.
 [[nodiscard]] InputFormat detect_input_format(std::string_view bytes);
 

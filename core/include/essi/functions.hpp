@@ -39,6 +39,6 @@ struct FunctionValueRange {
 [[nodiscard]] std::optional<FunctionInfo> function_info(int code, Dialect dialect);
 
 // A sentence that says what a function block does: "function 29: kerf compensation left, 2.0 mm".
-[[nodiscard]] std::string describe_function(int code, bool has_value, long value, const Profile& profile);
+[[nodiscard]] std::string describe_function(int code, bool has_value, double value, const Profile& profile);
 
 }  // namespace essi

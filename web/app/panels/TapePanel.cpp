@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "app/App.hpp"
+#include "essi/dialect.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
 
@@ -40,8 +41,35 @@ void stats_table(const Document& doc) {
     const Box& m = s.motion_bbox;
     if (!m.empty) stats_row("motion box", fmt("(%.1f, %.1f) - (%.1f, %.1f)", m.min_x, m.min_y, m.max_x, m.max_y));
     stats_row("end", fmt("(%.3f, %.3f)", s.end_position.x, s.end_position.y));
-    stats_row("profile", doc.profile.name);
     ImGui::EndTable();
+}
+
+// How the tape is read: its format, its dialect and why (the evidence of --profile auto), and one click to read it
+// with another dialect.
+void reading(App& app) {
+    const Document* doc = app.document();
+    if (!doc) {
+        ImGui::TextDisabled("No tape loaded.");
+        return;
+    }
+    const TapeSetup& s = doc->setup;
+    ImGui::Text("%s tape, profile %s%s", s.format == InputFormat::Eia ? "EIA (RS-274)" : "ESSI", s.profile.name.c_str(),
+                s.auto_profile ? " (auto)" : "");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    if (s.evidence.empty()) ImGui::TextWrapped("No dialect's codes in the tape: read as %s.", s.profile.name.c_str());
+    for (const std::string& e : s.evidence) ImGui::TextWrapped("%s", e.c_str());
+    ImGui::PopStyleColor();
+    ImGui::TextUnformatted("Read as:");
+    for (const std::string& n : builtin_profile_names()) {
+        if (n == s.profile.name) continue;
+        ImGui::SameLine();
+        if (ImGui::SmallButton(n.c_str())) app.set_profile(n);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Check the tape again with the %s profile", n.c_str());
+    }
+    if (app.profile_name() != kAutoProfile) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("auto")) app.set_profile(std::string(kAutoProfile));
+    }
 }
 
 void statistics(const App& app) {
@@ -145,6 +173,7 @@ void tape_panel(App& app) {
     ImGui::SetNextWindowPos(ImVec2(0, kToolbarHeight));
     ImGui::SetNextWindowSize(ImVec2(kLeftWidth, io.DisplaySize.y - kToolbarHeight));
     ImGui::Begin("Tape", nullptr, kPanelFlags | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    if (ImGui::CollapsingHeader("Reading", ImGuiTreeNodeFlags_DefaultOpen)) reading(app);
     if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) statistics(app);
     if (ImGui::CollapsingHeader("Layers", ImGuiTreeNodeFlags_DefaultOpen)) layers(app.layers());
     if (ImGui::CollapsingHeader("Playback", ImGuiTreeNodeFlags_DefaultOpen)) playback(app);

@@ -4,6 +4,7 @@
 #include "app/App.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
+#include "essi/dialect.hpp"
 #include "essi/profile.hpp"
 #include "platform/Platform.hpp"
 
@@ -20,13 +21,20 @@ void open_button(App& app) {
 
 void profile_combo(App& app) {
     ImGui::SetNextItemWidth(110);
-    if (ImGui::BeginCombo("##profile", app.profile_name().c_str())) {
-        for (const std::string& n : builtin_profile_names()) {
+    // "auto: woyda" while the tape's evidence chose the dialect
+    const Document* doc = app.document();
+    const std::string shown = app.profile_name() == kAutoProfile && doc ? "auto: " + doc->profile.name : app.profile_name();
+    ImGui::SetNextItemWidth(140);
+    if (ImGui::BeginCombo("##profile", shown.c_str())) {
+        std::vector<std::string> names{std::string(kAutoProfile)};
+        for (const std::string& n : builtin_profile_names()) names.push_back(n);
+        for (const std::string& n : names) {
             if (ImGui::Selectable(n.c_str(), n == app.profile_name()) && n != app.profile_name()) app.set_profile(n);
         }
         ImGui::EndCombo();
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Machine and dialect profile");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Machine and dialect profile; auto: the dialect the tape's codes show (see the Tape panel)");
 }
 
 // The tape's name and "ok" or its error and warning counts.
