@@ -1,4 +1,5 @@
 #include "serve_api.hpp"
+#include "tape_request.hpp"
 
 #if defined(ESSI_HAVE_HTTPLIB)
 #include <cstdlib>
@@ -78,21 +79,35 @@ std::string param_or(const httplib::Request& req, const char* key, const char* f
     return req.has_param(key) ? req.get_param_value(key) : std::string(fallback);
 }
 
-void check_tape(const httplib::Request& req, httplib::Response& res, const std::string& body) {
-    const std::string name = param_or(req, "profile", "iso6582");
-    // Built-in profiles only: a request never names a file on the server.
-    const auto profile = builtin_profile(name);
-    if (!profile) {
-        std::string known;
-        for (const std::string& n : builtin_profile_names()) known += (known.empty() ? "" : ", ") + n;
-        json_error(res, 400, "unknown profile '" + name + "'; expected one of: " + known);
-        return;
+// The reading a request asks for: ?profile=NAME|auto (built-in profiles only: a request never names a file on the
+// server) and ?input=essi|eia|auto, as the CLI's --profile and --input. nullopt with the 400 set when unknown.
+std::optional<TapeRequest> tape_request(const httplib::Request& req, httplib::Response& res) {
+    TapeRequest r;
+    r.profile_name = param_or(req, "profile", "iso6582");
+    if (r.profile_name != kAutoProfile) {
+        r.profile = builtin_profile(r.profile_name);
+        if (!r.profile) {
+            std::string known(kAutoProfile);
+            for (const std::string& n : builtin_profile_names()) known += ", " + n;
+            json_error(res, 400, "unknown profile '" + r.profile_name + "'; expected one of: " + known);
+            return std::nullopt;
+        }
     }
+    if (!parse_input_format(param_or(req, "input", "auto"), r.input)) {
+        json_error(res, 400, "unknown input '" + param_or(req, "input", "auto") + "'; expected essi, eia or auto");
+        return std::nullopt;
+    }
+    return r;
+}
+
+void check_tape(const httplib::Request& req, httplib::Response& res, const std::string& body) {
+    const auto request = tape_request(req, res);
+    if (!request) return;
     FileReport report;
     report.path = param_or(req, "name", "-");
-    report.result = check_tape_pipelined(body, *profile);
+    report.result = check_tape_pipelined(body, request->setup(body));
     const FileReport one[] = {std::move(report)};
-    res.set_content(dump(report_to_json(one, profile->name), 2) + "\n", "application/json");
+    res.set_content(dump(report_to_json(one, request->profile_name), 2) + "\n", "application/json");
 }
 
 void share_tape(ShareStore& store, httplib::Response& res, const std::string& body) {
