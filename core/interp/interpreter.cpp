@@ -169,6 +169,9 @@ private:
     bool skipping_ = false;          // inside 100 ... 101 with optional ignore on
     std::optional<Block> open_optional_;
     std::optional<Block> burner_count_;  // a 135 waiting for its 136
+    double burner_count_value_ = 1;      // its value
+    std::uint8_t torches_ = 1;           // torches cutting (135 + 136): each cut is made this many times
+    Point torch_step_;                   // mm between neighbouring torches (136, along profile.torch_direction)
     bool inside_table_ = true;
     std::optional<Block> last_block_;
     bool ended_ = false;
@@ -274,7 +277,7 @@ void Machine::finish() {
         tools_ = 0;
     }
     if (stats_) {  // the statistics: what they count, without making the event
-        stats_->count_event(kind, value, tools_);
+        stats_->count_event(kind, value, tools_, torches_);
         if (also_ == nullptr) return;
     }
     send_event(b, index, kind, has_value, value);
@@ -289,6 +292,7 @@ void Machine::send_event(const Block& b, std::size_t index, EventKind kind, bool
     e.has_value = has_value;
     e.value = value;
     e.tools_after = tools_;
+    e.torches_after = torches_;
     deliver(stats_ ? *also_ : *sink_, e);  // (the statistics counted it: event())
 }
 
@@ -460,6 +464,7 @@ void Machine::warn_macro_only(const Block& b) {
             kerf_offset_mm_ = 0;
             set_mapping(axis_mapping(fn::kAxesNormal));
             absolute_ = false;
+            torches_ = 1;
             break;
         case fn::kWoydaLoopEnd:
         case fn::kWoydaLoopStart:
@@ -486,8 +491,17 @@ void Machine::warn_macro_only(const Block& b) {
                 return;
             }
             break;
-        case fn::kWoydaBurnerCount: burner_count_ = b; break;
-        case fn::kWoydaBurnerSpacing: burner_count_.reset(); break;
+        case fn::kWoydaBurnerCount:
+            burner_count_ = b;
+            burner_count_value_ = value;
+            break;
+        case fn::kWoydaBurnerSpacing:
+            // (a 136 without its 135 got W212 in run(): the count stays)
+            if (burner_count_) torches_ = static_cast<std::uint8_t>(burner_count_value_);
+            torch_step_ = {profile_.torch_direction.x * value * profile_.unit_mm,
+                           profile_.torch_direction.y * value * profile_.unit_mm};
+            burner_count_.reset();
+            break;
         default:
             if (code >= fn::kAxesNormal && code <= fn::kAxesMappingLast) set_mapping(axis_mapping(code));
             break;  // state-only functions: the event says what happened
@@ -510,6 +524,9 @@ inline void Machine::emit(MotionRecord& m, const Block& b, std::size_t index) {
     m.feed_mm_min = state.feed_mm_min;
     m.kerf = motion_kerf();
     m.kerf_mm = kerf_offset_mm_;
+    // Several torches copy the cuts only (a travel is the carriage's, once)
+    m.torches = m.kind == MotionKind::Cut ? torches_ : 1;
+    m.torch_step = m.torches > 1 ? torch_step_ : Point{};
     if (profile_.table) check_table(m, b);
     send(m);
 }
@@ -598,7 +615,7 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
         const IPoint d = map(w[0], w[1]);
         const IPoint end{base.x + d.x, base.y + d.y};
         const double length_mm = units_length(end.x - cur.x, end.y - cur.y) * profile_.unit_mm;
-        if (stats_ && !profile_.table) {
+        if (stats_ && !profile_.table && (torches_ == 1 || (tools_ & kCuttingTools) == 0)) {
             // Checked: what the statistics count of a line (StatsSink::add_line, as on_motion does for its
             // record), without making the record; the one more sink's UnitLine.
             const MotionState state = begin_motion(b);

@@ -256,6 +256,14 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
         }
     }
     boolean("end_at_data_end", p.end_at_data_end);
+    if (auto it = j.find("torch_direction"); it != j.end()) {
+        const std::string d = it->is_string() ? it->get<std::string>() : std::string();
+        if (d == "+x") p.torch_direction = {1, 0};
+        else if (d == "-x") p.torch_direction = {-1, 0};
+        else if (d == "+y") p.torch_direction = {0, 1};
+        else if (d == "-y") p.torch_direction = {0, -1};
+        else errors.push_back("\"torch_direction\" must be one of \"+x\", \"-x\", \"+y\", \"-y\"");
+    }
     number("arc_tolerance", p.arc_tolerance_units, kUnitsRange);
     number("chord_tolerance_mm", p.chord_tolerance_mm, kChordRange);
     boolean("optional_ignore", p.optional_ignore);
@@ -299,7 +307,7 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
     if (auto it = j.find("eia"); it != j.end()) apply_eia_keys(*it, p.eia, errors);
     static constexpr const char* kKnownKeys[] = {
         "name", "base", "dialect", "unit_mm", "whitespace", "end_codes", "end_at_data_end", "arc_tolerance",
-        "chord_tolerance_mm",
+        "chord_tolerance_mm", "torch_direction",
         "optional_ignore", "rapid_single_block", "kerf_value", "kerf", "default_dwell_s", "feed_mm_min",
         "rapid_mm_min", "pierce_time_s", "setup_offset_x_mm", "setup_offset_y_mm", "table", "eia"};
     for (auto it = j.begin(); it != j.end(); ++it) {
@@ -417,6 +425,7 @@ std::string profile_to_json(const Profile& p) {
     j["feed_mm_min"] = p.feed_mm_min;
     j["rapid_mm_min"] = p.rapid_mm_min;
     j["pierce_time_s"] = p.pierce_time_s;
+    j["torch_direction"] = p.torch_direction.x > 0 ? "+x" : p.torch_direction.x < 0 ? "-x" : p.torch_direction.y < 0 ? "-y" : "+y";
     j["setup_offset_x_mm"] = p.setup_offset_x_mm;
     j["setup_offset_y_mm"] = p.setup_offset_y_mm;
     if (p.table) {

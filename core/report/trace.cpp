@@ -83,6 +83,10 @@ std::string trace_line(const MotionRecord& m) {
         s += kerf_side_name(m.kerf);
         append(s, ":%.3f", m.kerf_mm);
     }
+    if (m.torches > 1) {
+        s += " torches=" + std::to_string(m.torches);
+        append(s, " step=(%.3f,%.3f)", m.torch_step.x, m.torch_step.y);
+    }
     return s;
 }
 

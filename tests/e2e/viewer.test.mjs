@@ -157,6 +157,12 @@ test('the viewer reads with the dialect the tape shows, says why, and switches i
   assert.equal(state.dialect, 'din66025');
   assert.ok(Math.abs(state.stats.cut_length_mm - 694.247780) < 1e-5, state.stats.cut_length_mm);
   await page.screenshot({ path: path.join(shots, 'dialect-din66025.png') });
+  // Three torches: each of the 4 cuts is drawn 3 times, the 2 rapids once.
+  state = await dropFile(page, 'woyda_multi_torch.esi', fs.readFileSync(path.join(examplesDir, 'woyda_multi_torch.esi')));
+  assert.equal(state.dialect, 'woyda');
+  assert.equal(state.stats.pierces, 3);
+  assert.equal(state.segments, 4 * 3 + 2);
+  await page.screenshot({ path: path.join(shots, 'multi-torch.png') });
   await page.close();
 });
 

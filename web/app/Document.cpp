@@ -108,6 +108,12 @@ float Document::feed_of(std::size_t i) const {
     return value_at(feeds, i);
 }
 
+const MotionRecord* Document::torch_copies(std::size_t i) const {
+    if (!(motions[i].flags & Motion::kFlagKept)) return nullptr;
+    const MotionRecord& r = kept_record(i);
+    return r.torches > 1 ? &r : nullptr;
+}
+
 MotionRecord Document::record(std::size_t i) const {
     const Motion& m = motions[i];
     if (m.flags & Motion::kFlagKept) return kept_record(i);
@@ -309,7 +315,8 @@ public:
         // Compact when every point is whole units (always, but for positions beyond 32 bits), not a parabola, and
         // its kerf is what the flags say.
         UnitPoint start, centre;
-        bool compact = r.curve != CurveKind::Parabola && kerf_in_flags(r.kerf, r.kerf_mm) &&
+        // (a cut by several torches keeps its record: the drawing makes its copies from it)
+        bool compact = r.curve != CurveKind::Parabola && r.torches == 1 && kerf_in_flags(r.kerf, r.kerf_mm) &&
                        d.to_units(r.end, m.end_units) && d.to_units(r.start, start);
         if (compact && r.curve == CurveKind::Arc) compact = d.to_units(r.centre, centre);
         if (!compact) {

@@ -127,6 +127,8 @@ struct Document {
     [[nodiscard]] Point arc_centre(std::size_t i) const;
     // The full record of motion i (rebuilt from the compact form; `block` left 0: see block_of).
     [[nodiscard]] MotionRecord record(std::size_t i) const;
+    // Motion i when several torches cut it (its record: torches, torch_step), else null.
+    [[nodiscard]] const MotionRecord* torch_copies(std::size_t i) const;
     // The block of motion i (the motion block on its line).
     [[nodiscard]] std::size_t block_of(std::size_t i) const;
     // First motion whose line is >= line; motions.size() when none.

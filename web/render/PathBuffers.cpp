@@ -48,13 +48,22 @@ bool PathBuffers::step(std::size_t max_motions) {
         const Motion& m = doc.motions[next_];
         first_segment.push_back(static_cast<std::uint32_t>(segment_count));
         const auto kind = static_cast<std::uint8_t>(m.kind);
+        // A cut by several torches (kept: its record says how many) is drawn once per torch.
+        const MotionRecord* torches = doc.torch_copies(next_);
+        const int copies = torches ? torches->torches : 1;
         if (m.curve == CurveKind::Line) {
-            put(doc.start_of(next_), doc.end_of(next_), kind);
+            for (int c = 0; c < copies; ++c)
+                put(torch_copy(doc.start_of(next_), torches ? torches->torch_step : Point{}, c),
+                    torch_copy(doc.end_of(next_), torches ? torches->torch_step : Point{}, c), kind);
             continue;
         }
         scratch_.clear();
         flatten(doc.record(next_), tolerance_, scratch_, true);
-        for (std::size_t k = 1; k < scratch_.size(); ++k) put(scratch_[k - 1], scratch_[k], kind);
+        for (int c = 0; c < copies; ++c) {
+            const Point step = torches ? torches->torch_step : Point{};
+            for (std::size_t k = 1; k < scratch_.size(); ++k)
+                put(torch_copy(scratch_[k - 1], step, c), torch_copy(scratch_[k], step, c), kind);
+        }
     }
     if (next_ >= doc.motions.size()) {
         if (first_segment.size() == doc.motions.size()) first_segment.push_back(static_cast<std::uint32_t>(segment_count));

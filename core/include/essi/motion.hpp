@@ -65,7 +65,14 @@ struct MotionRecord {
     double length_mm = 0;         // closed-form length
     double feed_mm_min = 0;       // speed used for the time estimate (rapid speed for rapids)
     double kerf_mm = 0;           // kerf offset (half width) in force, 0 when off
+    // Multiple torches (Woyda 135+n, 136+d): a cut is made `torches` times, copy k offset by k x torch_step (mm);
+    // 1 for every motion that is not a cut.
+    std::uint8_t torches = 1;
+    Point torch_step;
 };
+
+// Where copy k of a motion cut by several torches lies: the motion moved by k x step.
+[[nodiscard]] constexpr Point torch_copy(Point p, Point step, int k) { return {p.x + k * step.x, p.y + k * step.y}; }
 
 // Everything that is not a motion but changes the machine or the estimate.
 enum class EventKind : std::uint8_t {
@@ -85,6 +92,7 @@ struct MachineEvent {
     double value = 0;           // the function's value as written (unit increments, mm/min, s ...)
     double x = 0, y = 0;        // ZeroOffset: the new origin
     std::uint8_t tools_after = 0;
+    std::uint8_t torches_after = 1;  // torches cutting after the event (a pierce pierces with each)
 };
 
 // A straight motion of head 1, what most of a tape is, as the interpreter has it: its points in mm and as

@@ -89,6 +89,10 @@ struct Profile {
     // EIA tapes (§10): the dialect's words and rules (default: the Woyda table)
     EiaDialect eia;
 
+    // Multiple torches (§9): the direction the torches' copies lie in, from the first torch (a unit vector along
+    // a machine axis; default +y, the transverse axis)
+    Point torch_direction{0, 1};
+
     // Machine placement (§11)
     double setup_offset_x_mm = 0, setup_offset_y_mm = 0;  // setup zero offset (G54-like)
     std::optional<TableLimits> table;           // travel limits; none = unlimited

@@ -29,6 +29,10 @@ public:
     explicit StatsSink(const Profile& profile) : profile_(profile) {}
 
     void on_motion(const MotionRecord& m) override {
+        if (m.torches > 1 && m.kind == MotionKind::Cut) [[unlikely]] {
+            add_torch_copies(m);
+            return;
+        }
         if (m.curve == CurveKind::Line) {
             add_line(m.kind, m.head, m.start, m.end, m.length_mm, m.feed_mm_min);
             return;
@@ -50,12 +54,13 @@ public:
         count_motion(kind, head, end, length_mm, feed_mm_min);
         add_box(Box::of(start, end), kind == MotionKind::Cut);  // a line's box is its end points
     }
-    void on_event(const MachineEvent& e) override { count_event(e.kind, e.value, e.tools_after); }
+    void on_event(const MachineEvent& e) override { count_event(e.kind, e.value, e.tools_after, e.torches_after); }
     // What on_event counts of an event: the interpreter calls it directly, without making the event.
-    void count_event(EventKind kind, double value, std::uint8_t tools_after) {
+    // Several torches pierce together: each pierce counts, the pierce time once.
+    void count_event(EventKind kind, double value, std::uint8_t tools_after, std::uint8_t torches = 1) {
         if (kind == EventKind::Dwell) stats_.estimated_time_s += value;
         if (starts_cutting(tools_, tools_after)) {
-            ++stats_.pierces;
+            stats_.pierces += torches;
             stats_.estimated_time_s += profile_.pierce_time_s;
         }
         tools_ = tools_after;
@@ -65,6 +70,17 @@ public:
     Stats& stats() { return stats_; }
 
 private:
+    // A cut made by several torches at once: its length once per torch, its time once, the box of every copy.
+    void add_torch_copies(const MotionRecord& m) {
+        ++stats_.motions;
+        stats_.cut_length_mm += m.length_mm * m.torches;
+        if (m.feed_mm_min > 0) stats_.estimated_time_s += m.length_mm / m.feed_mm_min * 60.0;
+        if (m.head == 1) stats_.end_position = m.end;
+        const Box b = m.curve == CurveKind::Line ? Box::of(m.start, m.end) : bounding_box(m);
+        const Point far = torch_copy({0, 0}, m.torch_step, m.torches - 1);
+        add_box(b, true);  // the copies lie between the first and the last
+        add_box(Box{b.min_x + far.x, b.min_y + far.y, b.max_x + far.x, b.max_y + far.y, false}, true);
+    }
     // Everything of a motion but its box: the count, the length by kind, the time, the end position.
     void count_motion(MotionKind kind, int head, Point end, double length_mm, double feed_mm_min) {
         ++stats_.motions;
