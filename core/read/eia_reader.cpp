@@ -23,6 +23,7 @@ constexpr int kMaxNumberDigits = 12;           // digits of a number (before and
 constexpr std::size_t kExcerptChars = 16;      // what a message quotes of a word
 constexpr double kMmPerInch = 25.4;
 constexpr double kOnGrid = 1e-6;               // a value this close to a whole unit increment is on the grid
+constexpr long long kMaxCodeNumber = 999;      // G and M numbers have at most 3 digits
 
 enum class ArcMode : std::uint8_t { None, Clockwise, CounterClockwise };
 
@@ -374,11 +375,12 @@ void EiaReader::translate(const std::vector<Word>& words, LineResult& out, State
             function_value(w.offset, fn::kFeed, w.value() * (st.inch ? kMmPerInch : 1.0), out);
             continue;
         }
-        const int n = w.integer();
+        const bool is_code = w.is_integer() && w.mantissa >= 0 && w.value() <= kMaxCodeNumber;
+        const int n = is_code ? w.integer() : -1;
         const auto is_word = [&](const std::vector<EiaWord>& list) {
             return std::any_of(list.begin(), list.end(), [&](const EiaWord& x) { return x.letter == w.letter && x.number == n; });
         };
-        if (!w.is_integer() || w.mantissa < 0) {
+        if (!is_code) {
             out.diagnostics.push_back({Severity::Warning, DiagCode::W124_EiaUnknownCode, w.offset,
                                        std::string(1, w.letter) + excerpt(src_.substr(w.offset + 1, 8), 8) +
                                            " is not a " + w.letter + " code; it is ignored"});
