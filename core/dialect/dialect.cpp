@@ -11,7 +11,10 @@
 namespace essi {
 namespace {
 
-constexpr std::size_t kScanBytes = 1 << 20;      // the evidence is read from the first MiB
+// The evidence is read from the tape's head and tail (a tape's dialect shows in its header and set-up, and in how
+// it ends), so that the scan costs the same for any size.
+constexpr std::size_t kHeadBytes = 64 << 10;
+constexpr std::size_t kTailBytes = 16 << 10;
 constexpr std::size_t kEvidencePerDialect = 3;   // what a report lists of each dialect's evidence
 constexpr std::size_t kQuoteChars = 24;
 
@@ -23,22 +26,51 @@ std::string_view trim(std::string_view s) {
 
 bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 
-// Calls f(line number, trimmed text) for each non-empty line of the scanned head.
+// Calls f(line number, trimmed text) for each non-empty line of `part`, whose first line is line `line`; stops
+// when f returns false (and returns false).
 template <class F>
-void for_each_line(std::string_view bytes, F&& f) {
-    const std::string_view head = bytes.substr(0, kScanBytes);
+bool for_each_line_of(std::string_view part, std::uint32_t line, F& f) {
     std::size_t pos = 0;
-    std::uint32_t line = 1;
-    while (pos < head.size()) {
+    while (pos < part.size()) {
         std::size_t end = pos;
-        while (end < head.size() && !is_line_end(head[end])) ++end;
-        const std::string_view t = trim(head.substr(pos, end - pos));
-        if (!t.empty() && !f(line, t)) return;
-        if (end >= head.size()) break;
-        pos = past_line_end(reinterpret_cast<const unsigned char*>(head.data()), static_cast<std::uint32_t>(end),
-                            static_cast<std::uint32_t>(head.size()));
+        while (end < part.size() && !is_line_end(part[end])) ++end;
+        const std::string_view t = trim(part.substr(pos, end - pos));
+        if (!t.empty() && !f(line, t)) return false;
+        if (end >= part.size()) break;
+        pos = past_line_end(reinterpret_cast<const unsigned char*>(part.data()), static_cast<std::uint32_t>(end),
+                            static_cast<std::uint32_t>(part.size()));
         ++line;
     }
+    return true;
+}
+
+// Where a tape's tail starts (the first whole line of its last kTailBytes), or npos for a short tape that is
+// scanned whole.
+std::size_t tail_start(std::string_view bytes) {
+    if (bytes.size() <= kHeadBytes + kTailBytes) return std::string_view::npos;
+    const std::size_t end = bytes.find_first_of("\r\n", bytes.size() - kTailBytes);
+    if (end == std::string_view::npos) return bytes.size();
+    return past_line_end(reinterpret_cast<const unsigned char*>(bytes.data()), static_cast<std::uint32_t>(end),
+                         static_cast<std::uint32_t>(bytes.size()));
+}
+
+// Line numbers of the tail's lines count from kTailLine: the true number is worked out (a pass over the middle of
+// the tape) only for the rare evidence found there.
+constexpr std::uint32_t kTailLine = 0x80000000u;
+
+// for_each_line_of over the head and the tail of a long tape (whole lines of each), or over the whole of a
+// short one.
+template <class F>
+void for_each_line(std::string_view bytes, F&& f) {
+    const std::size_t tail = tail_start(bytes);
+    if (tail == std::string_view::npos) {
+        for_each_line_of(bytes, 1, f);
+        return;
+    }
+    std::string_view head = bytes.substr(0, kHeadBytes);
+    head = head.substr(0, head.find_last_of("\r\n") + 1);  // (a cut-off line says nothing)
+    if (!for_each_line_of(head, 1, f)) return;
+    for_each_line_of(bytes.substr(tail), kTailLine, f);
 }
 
 // One sign of a dialect: an ESSI block ("/", "135+", "43") or an EIA word ("G05", "M70"), what it means.
@@ -80,10 +112,17 @@ constexpr std::array kEiaSigns = {
     Sign{"M08", "hypertherm", "cut off (Hypertherm)"},
 };
 
+// One sign found: where, and what the line says.
+struct Found {
+    const Sign* sign;
+    std::uint32_t line;  // kTailLine + k: line k of the tail
+    std::string quote;
+};
+
 struct Tally {
     std::string_view dialect;
-    std::size_t signs = 0;               // distinct signs seen
-    std::vector<std::string> evidence;
+    std::size_t signs = 0;  // distinct signs seen
+    std::vector<Found> found;
 };
 
 struct Evidence {
@@ -95,20 +134,31 @@ struct Evidence {
         auto it = std::find_if(tallies.begin(), tallies.end(), [&](const Tally& t) { return t.dialect == s.dialect; });
         if (it == tallies.end()) it = tallies.insert(tallies.end(), Tally{s.dialect, 0, {}});
         ++it->signs;
-        if (it->evidence.size() < kEvidencePerDialect)
-            it->evidence.push_back(std::string(s.dialect) + ": `" + excerpt(quote, kQuoteChars) + "` " +
-                                   std::string(s.meaning) + " at line " + std::to_string(line));
+        if (it->found.size() < kEvidencePerDialect) it->found.push_back({&s, line, excerpt(quote, kQuoteChars)});
     }
 };
 
-// The ESSI token of a line for kEssiSigns: "/", "135+" (a function with a value), "43" (a function alone).
-std::string essi_token(std::string_view t) {
-    if (t == "/") return "/";
+// "woyda: `/` ends the program at line 29", the tail's lines numbered from the start of the tape.
+std::string evidence_text(const Found& f, std::string_view bytes) {
+    std::uint32_t line = f.line;
+    if (line >= kTailLine) {
+        LineIndex index;  // (the lines before the tail: only for evidence found there)
+        index.build(bytes.substr(0, tail_start(bytes)));
+        line = line - kTailLine + static_cast<std::uint32_t>(index.line_count()) + 1;
+    }
+    return std::string(f.sign->dialect) + ": `" + f.quote + "` " + std::string(f.sign->meaning) + " at line " +
+           std::to_string(line);
+}
+
+// The ESSI token of a line for kEssiSigns: "/", "135+" (a function with a value), "43" (a function alone); empty
+// for the others (motions, most lines: they start with a sign).
+std::string_view essi_token(std::string_view t) {
+    if (t == "/") return t;
     std::size_t digits = 0;
     while (digits < t.size() && t[digits] >= '0' && t[digits] <= '9') ++digits;
     if (digits == 0 || digits > 3) return {};
-    if (digits == t.size()) return std::string(t);
-    if (t[digits] == '+' && t.find_first_of("+-", digits + 1) == std::string_view::npos) return std::string(t.substr(0, digits + 1));
+    if (digits == t.size()) return t;
+    if (t[digits] == '+' && t.find_first_of("+-", digits + 1) == std::string_view::npos) return t.substr(0, digits + 1);
     return {};
 }
 
@@ -125,7 +175,7 @@ void scan_essi(std::string_view bytes, Evidence& ev) {
             return true;
         }
         if (after_63 && (t.front() == '+' || t.front() == '-')) {
-            static constexpr Sign kGoesOn{"63 ...", "iso6582", "cancels the functions and the program goes on"};
+            static constexpr Sign kGoesOn{"63 ...", "iso6582", "cancels the functions and the program goes on"};  // (at the 63's line)
             ev.add(kGoesOn, line_63, "63");
             after_63 = false;
         }
@@ -133,7 +183,8 @@ void scan_essi(std::string_view bytes, Evidence& ev) {
             after_63 = true;
             line_63 = line;
         }
-        const std::string token = essi_token(t);
+        const std::string_view token = essi_token(t);
+        if (token.empty()) return true;
         for (const Sign& s : kEssiSigns)
             if (token == s.token) ev.add(s, line, t);
         return true;
@@ -182,7 +233,8 @@ DialectGuess guess_dialect(std::string_view bytes, InputFormat format) {
     if (!ev.tallies.empty()) {
         g.profile = std::string(ev.tallies[0].dialect);
         g.clear = ev.tallies.size() == 1 || ev.tallies[0].signs > ev.tallies[1].signs;
-        for (const Tally& t : ev.tallies) g.evidence.insert(g.evidence.end(), t.evidence.begin(), t.evidence.end());
+        for (const Tally& t : ev.tallies)
+            for (const Found& f : t.found) g.evidence.push_back(evidence_text(f, bytes));
     }
     return g;
 }

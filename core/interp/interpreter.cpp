@@ -515,7 +515,7 @@ void Machine::warn_rapid_while_cutting(const Block& b) {
              " is on; expected 6 (rapid OFF) before cutting");
 }
 
-inline void Machine::emit(MotionRecord& m, const Block& b, std::size_t index) {
+[[gnu::always_inline]] inline void Machine::emit(MotionRecord& m, const Block& b, std::size_t index) {
     const MotionState state = begin_motion(b);
     m.line = b.line;
     m.block = static_cast<std::uint32_t>(index);
@@ -525,8 +525,12 @@ inline void Machine::emit(MotionRecord& m, const Block& b, std::size_t index) {
     m.kerf = motion_kerf();
     m.kerf_mm = kerf_offset_mm_;
     // Several torches copy the cuts only (a travel is the carriage's, once)
-    m.torches = m.kind == MotionKind::Cut ? torches_ : 1;
-    m.torch_step = m.torches > 1 ? torch_step_ : Point{};
+    m.torches = 1;
+    m.torch_step = {};
+    if (torches_ > 1 && m.kind == MotionKind::Cut) [[unlikely]] {
+        m.torches = torches_;
+        m.torch_step = torch_step_;
+    }
     if (profile_.table) check_table(m, b);
     send(m);
 }

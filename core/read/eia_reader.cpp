@@ -6,8 +6,10 @@
 // the modal arc direction (G02/G03), the rapid mode of G00, absolute mode and the programmed position (a missing X
 // or Y in absolute mode stays where it is; I/J are relative to the block's start in both modes).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <optional>
 
@@ -20,10 +22,10 @@ namespace {
 
 constexpr std::size_t kMaxReadErrors = 100;    // then E115: reading stops
 constexpr int kMaxNumberDigits = 12;           // digits of a number (before and after the point together)
+constexpr long long kMaxCodeNumber = 999;      // G and M numbers have at most 3 digits
 constexpr std::size_t kExcerptChars = 16;      // what a message quotes of a word
 constexpr double kMmPerInch = 25.4;
 constexpr double kOnGrid = 1e-6;               // a value this close to a whole unit increment is on the grid
-constexpr long long kMaxCodeNumber = 999;      // G and M numbers have at most 3 digits
 
 enum class ArcMode : std::uint8_t { None, Clockwise, CounterClockwise };
 
@@ -32,16 +34,35 @@ constexpr int kGLine = 1;
 constexpr int kGArcCw = 2;
 constexpr int kGArcCcw = 3;
 
+// 10^k for the decimals a number may have (kMaxNumberDigits).
+constexpr std::array<long long, kMaxNumberDigits + 1> make_powers() {
+    std::array<long long, kMaxNumberDigits + 1> p{};
+    p[0] = 1;
+    for (int k = 1; k <= kMaxNumberDigits; ++k) p[k] = p[k - 1] * 10;
+    return p;
+}
+constexpr std::array<long long, kMaxNumberDigits + 1> kPowersOfTen = make_powers();
+
 // One address word: its letter, where it starts, and its number as written (mantissa x 10^-decimals).
 struct Word {
     char letter = 0;
     std::uint32_t offset = 0;
     long long mantissa = 0;
     int decimals = 0;
-    [[nodiscard]] double value() const { return static_cast<double>(mantissa) / std::pow(10.0, decimals); }
-    [[nodiscard]] bool is_integer() const { return decimals == 0 || mantissa % static_cast<long long>(std::pow(10, decimals)) == 0; }
-    [[nodiscard]] int integer() const { return static_cast<int>(value()); }
+    [[nodiscard]] double value() const {
+        return static_cast<double>(mantissa) / static_cast<double>(kPowersOfTen[static_cast<std::size_t>(decimals)]);
+    }
+    // The number as a G or M code: a whole number of at most 3 digits, else -1.
+    [[nodiscard]] int code_number() const {
+        if (decimals == 0) return mantissa >= 0 && mantissa <= kMaxCodeNumber ? static_cast<int>(mantissa) : -1;
+        const long long scale = kPowersOfTen[static_cast<std::size_t>(decimals)];
+        if (mantissa < 0 || mantissa % scale != 0 || mantissa / scale > kMaxCodeNumber) return -1;
+        return static_cast<int>(mantissa / scale);
+    }
 };
+
+// What a G number does in a dialect (EiaReader's table, from Profile::eia).
+enum class GRole : std::uint8_t { None, Line, ArcCw, ArcCcw, Rapid, Preset, Inch, Mm, Function };
 
 struct LineDiagnostic {
     Severity severity;
@@ -80,7 +101,7 @@ std::string word_text(char letter, int number) {
 
 class EiaReader final : public BlockReader {
 public:
-    EiaReader(std::string_view bytes, const Profile& profile) : src_(bytes), profile_(profile) {}
+    EiaReader(std::string_view bytes, const Profile& profile) : src_(bytes), profile_(profile) { make_tables(); }
 
     bool read_chunk(Tape& chunk, std::size_t max_blocks) override;
     void reserve_whole(Tape& tape) const override;
@@ -97,13 +118,24 @@ private:
         long long x = 0, y = 0;  // programmed position, unit increments
     };
 
-    void read_line(std::uint32_t begin, std::uint32_t end, LineResult& out, State& st) const;
+    // The axis words of a block (null when absent).
+    struct Axes {
+        const Word *x = nullptr, *y = nullptr, *i = nullptr, *j = nullptr;
+        [[nodiscard]] const Word* first() const;
+    };
+
+    void make_tables();
+    void read_line(std::uint32_t begin, std::uint32_t end, LineResult& out, State& st);
     bool parse_words(std::uint32_t begin, std::uint32_t end, std::vector<Word>& words, LineResult& out) const;
     bool check_order(const std::vector<Word>& words, LineResult& out) const;
     void translate(const std::vector<Word>& words, LineResult& out, State& st) const;
-    void motion(const std::vector<Word>& words, std::uint32_t offset, bool preset, LineResult& out, State& st) const;
-    [[nodiscard]] std::optional<long long> units(const Word& w, const State& st, LineResult& out) const;
-    [[nodiscard]] const EiaCode* code_of(char letter, int number) const;
+    void motion(const Axes& axes, bool preset, LineResult& out, State& st) const;
+    // The coordinate of `w` in unit increments into `u`; false (with the error) when it does not fit a word.
+    [[nodiscard]] bool units(const Word& w, const State& st, LineResult& out, long long& u) const;
+    // The ESSI function of G or M `number` in the dialect's table, or -1.
+    [[nodiscard]] int function_of(char letter, int number) const {
+        return (letter == 'G' ? g_function_ : m_function_)[static_cast<std::size_t>(number)];
+    }
     void function(std::uint32_t offset, int code, LineResult& out) const;
     void function_value(std::uint32_t offset, int code, double value, LineResult& out) const;
     void commit(const LineResult& r);
@@ -118,9 +150,24 @@ private:
                            [&](const EndCode& e) { return e.function < 0 && e.mark == mark; });
     }
     [[nodiscard]] std::uint32_t column(std::uint32_t offset) const { return offset - line_begin_ + 1; }
+    // The first CR or LF at or after `pos` (essi/lines.hpp's rule), or `size`.
+    [[nodiscard]] std::uint32_t line_end(std::uint32_t pos, std::uint32_t size) const {
+        const char* p = src_.data() + pos;
+        const auto* lf = static_cast<const char*>(std::memchr(p, '\n', size - pos));
+        const char* stop = lf ? lf : src_.data() + size;
+        const auto* cr = static_cast<const char*>(std::memchr(p, '\r', static_cast<std::size_t>(stop - p)));
+        return static_cast<std::uint32_t>((cr ? cr : stop) - src_.data());
+    }
 
     std::string_view src_;
     const Profile& profile_;
+    // The dialect's words by number (make_tables): the function of each G and M, the role of each G.
+    std::array<std::int16_t, kMaxCodeNumber + 1> g_function_{}, m_function_{};
+    std::array<GRole, kMaxCodeNumber + 1> g_role_{};
+    int unit_decimals_ = -1;            // unit_mm = 10^-unit_decimals_ (0-9), or -1 (another unit: in doubles)
+    std::array<std::int8_t, 256> letter_rank_{};  // a letter's place in eia.letters, -1 when not allowed
+    std::vector<Word> words_;           // the line's words (kept: no allocation a line)
+    LineResult line_out_;               // the line's blocks and diagnostics (likewise)
     Tape* chunk_ = nullptr;
     State state_;
     std::uint32_t pos_ = 0;
@@ -178,7 +225,7 @@ bool EiaReader::parse_words(std::uint32_t begin, std::uint32_t end, std::vector<
             continue;
         }
         const char letter = static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
-        if (letter < 'A' || letter > 'Z' || profile_.eia.letters.find(letter) == std::string::npos) {
+        if (letter_rank_[static_cast<unsigned char>(letter)] < 0) {
             const std::string found = c >= 0x80 || c < 0x20 ? [&] {
                 char buf[16];
                 std::snprintf(buf, sizeof buf, "byte 0x%02X", c);
@@ -226,14 +273,16 @@ bool EiaReader::parse_words(std::uint32_t begin, std::uint32_t end, std::vector<
 // at most once; at most one of G, M and F (when the dialect says so).
 bool EiaReader::check_order(const std::vector<Word>& words, LineResult& out) const {
     const EiaDialect& e = profile_.eia;
-    std::size_t last = 0;
+    int last = 0;
+    std::uint32_t seen = 0;  // bit (letter - 'A') for each letter of the block so far
     const Word* function_word = nullptr;
     for (std::size_t k = 0; k < words.size(); ++k) {
         const Word& w = words[k];
-        const std::size_t rank = e.letters.find(w.letter);
+        const int rank = letter_rank_[static_cast<unsigned char>(w.letter)];  // (parse_words let only allowed ones in)
         const bool repeatable = w.letter == 'G' || w.letter == 'M';
-        const bool twice = std::any_of(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(k),
-                                       [&](const Word& o) { return o.letter == w.letter; });
+        const std::uint32_t bit = 1u << (w.letter - 'A');
+        const bool twice = (seen & bit) != 0;
+        seen |= bit;
         if (twice && (!repeatable || e.strict_order)) {
             out.diagnostics.push_back({Severity::Error, DiagCode::E120_EiaLetterOrder, w.offset,
                                        std::string(1, w.letter) + " appears twice in one block; expected it once"});
@@ -264,28 +313,76 @@ bool EiaReader::check_order(const std::vector<Word>& words, LineResult& out) con
     return true;
 }
 
-const EiaCode* EiaReader::code_of(char letter, int number) const {
-    for (const EiaCode& c : profile_.eia.codes)
-        if (c.word.letter == letter && c.word.number == number) return &c;
-    return nullptr;
+void EiaReader::make_tables() {
+    for (int k = 0; k <= 9; ++k)
+        if (std::fabs(profile_.unit_mm * static_cast<double>(kPowersOfTen[static_cast<std::size_t>(k)]) - 1.0) < 1e-12) unit_decimals_ = k;
+    letter_rank_.fill(-1);
+    for (std::size_t k = 0; k < profile_.eia.letters.size() && k < 127; ++k)
+        letter_rank_[static_cast<unsigned char>(profile_.eia.letters[k])] = static_cast<std::int8_t>(k);
+    g_function_.fill(-1);
+    m_function_.fill(-1);
+    g_role_.fill(GRole::None);
+    const EiaDialect& e = profile_.eia;
+    for (auto it = e.codes.rbegin(); it != e.codes.rend(); ++it) {  // (the first row of a word wins)
+        if (it->word.number < 0 || it->word.number > kMaxCodeNumber) continue;
+        const auto n = static_cast<std::size_t>(it->word.number);
+        (it->word.letter == 'G' ? g_function_ : m_function_)[n] = static_cast<std::int16_t>(it->function);
+        if (it->word.letter == 'G') g_role_[n] = GRole::Function;
+    }
+    for (const EiaWord& w : e.inch_words)
+        if (w.letter == 'G' && w.number >= 0 && w.number <= kMaxCodeNumber) g_role_[static_cast<std::size_t>(w.number)] = GRole::Inch;
+    for (const EiaWord& w : e.mm_words)
+        if (w.letter == 'G' && w.number >= 0 && w.number <= kMaxCodeNumber) g_role_[static_cast<std::size_t>(w.number)] = GRole::Mm;
+    if (e.position_preset_g >= 0 && e.position_preset_g <= kMaxCodeNumber) g_role_[static_cast<std::size_t>(e.position_preset_g)] = GRole::Preset;
+    if (e.rapid_motion_g >= 0 && e.rapid_motion_g <= kMaxCodeNumber) g_role_[static_cast<std::size_t>(e.rapid_motion_g)] = GRole::Rapid;
+    g_role_[kGLine] = GRole::Line;  // RS-274's motions mean the same in every dialect
+    g_role_[kGArcCw] = GRole::ArcCw;
+    g_role_[kGArcCcw] = GRole::ArcCcw;
+}
+
+const Word* EiaReader::Axes::first() const {
+    const Word* f = nullptr;
+    for (const Word* w : {x, y, i, j})
+        if (w && (!f || w->offset < f->offset)) f = w;
+    return f;
 }
 
 // A coordinate in unit increments: mm (or inches after G20/G70) divided by the unit; rounded (W125) when it is
 // finer than the unit, an error when it does not fit a word.
-std::optional<long long> EiaReader::units(const Word& w, const State& st, LineResult& out) const {
+bool EiaReader::units(const Word& w, const State& st, LineResult& out, long long& result) const {
+    // The common case in whole numbers, exactly: mm with `decimals` decimals in a unit of 10^-unit_decimals_ mm.
+    if (unit_decimals_ >= 0 && !st.inch) {
+        const int shift = unit_decimals_ - w.decimals;
+        long long u = 0;
+        bool on_grid = true;
+        if (shift >= 0) {
+            u = w.mantissa * kPowersOfTen[static_cast<std::size_t>(shift)];  // (|mantissa| < 10^12, shift <= 9: fits)
+        } else {
+            const long long scale = kPowersOfTen[static_cast<std::size_t>(-shift)];
+            const long long q = w.mantissa / scale, r = w.mantissa % scale;
+            on_grid = r == 0;
+            u = q + (2 * (r < 0 ? -r : r) >= scale ? (r < 0 ? -1 : 1) : 0);  // half away from zero, as std::round
+        }
+        if (u >= -std::numeric_limits<std::int32_t>::max() && u <= std::numeric_limits<std::int32_t>::max()) {
+            if (!on_grid) out.diagnostics.push_back({Severity::Warning, DiagCode::W125_EiaRounded, w.offset, ""});
+            result = u;
+            return true;
+        }
+    }
     const double mm = w.value() * (st.inch ? kMmPerInch : 1.0);
     const double exact = mm / profile_.unit_mm;
     if (!(std::fabs(exact) <= static_cast<double>(std::numeric_limits<std::int32_t>::max()))) {
         out.diagnostics.push_back({Severity::Error, DiagCode::E122_EiaBadNumber, w.offset,
                                    std::string(1, w.letter) + " is too large: more than 2^31 unit increments of " +
                                        excerpt(std::to_string(profile_.unit_mm), 8) + " mm"});
-        return std::nullopt;
+        return false;
     }
     const double rounded = std::round(exact);
     if (std::fabs(exact - rounded) > kOnGrid) {
         out.diagnostics.push_back({Severity::Warning, DiagCode::W125_EiaRounded, w.offset, ""});  // (counted)
     }
-    return static_cast<long long>(rounded);
+    result = static_cast<long long>(rounded);
+    return true;
 }
 
 void EiaReader::function(std::uint32_t offset, int code, LineResult& out) const {
@@ -306,23 +403,13 @@ void EiaReader::function_value(std::uint32_t offset, int code, double value, Lin
 }
 
 // X Y I J of a block: one motion block (or, with the position preset word, a zero offset: 83 and its block).
-void EiaReader::motion(const std::vector<Word>& words, std::uint32_t offset, bool preset, LineResult& out,
-                       State& st) const {
-    const Word *x = nullptr, *y = nullptr, *i = nullptr, *j = nullptr;
-    for (const Word& w : words) {
-        if (w.letter == 'X') x = &w;
-        if (w.letter == 'Y') y = &w;
-        if (w.letter == 'I') i = &w;
-        if (w.letter == 'J') j = &w;
-    }
-    const auto value = [&](const Word* w, long long otherwise) -> std::optional<long long> {
-        return w ? units(*w, st, out) : std::optional<long long>(otherwise);
-    };
+void EiaReader::motion(const Axes& axes, bool preset, LineResult& out, State& st) const {
+    const std::uint32_t offset = axes.first()->offset;
     const bool relative = !st.absolute && !preset;
-    const auto ex = value(x, relative ? 0 : st.x), ey = value(y, relative ? 0 : st.y);
-    const auto ci = value(i, 0), cj = value(j, 0);
-    if (!ex || !ey || !ci || !cj) return;
-    const long long end_x = relative ? st.x + *ex : *ex, end_y = relative ? st.y + *ey : *ey;
+    long long ex = relative ? 0 : st.x, ey = relative ? 0 : st.y, ci = 0, cj = 0;
+    const auto value = [&](const Word* w, long long& u) { return w == nullptr || units(*w, st, out, u); };
+    if (!(value(axes.x, ex) & value(axes.y, ey) & value(axes.i, ci) & value(axes.j, cj))) return;  // (each reports)
+    const long long end_x = relative ? st.x + ex : ex, end_y = relative ? st.y + ey : ey;
     if (preset) {
         // The position becomes (X, Y): the origin moves by (position - preset), relative to the current one (83).
         LineResult::Out o{offset, BlockKind::Motion, Block::kNoCode, 2, 2, {}};
@@ -334,9 +421,9 @@ void EiaReader::motion(const std::vector<Word>& words, std::uint32_t offset, boo
         st.y = end_y;
         return;
     }
-    const bool arc = i != nullptr || j != nullptr;
+    const bool arc = axes.i != nullptr || axes.j != nullptr;
     if (arc && st.arc == ArcMode::None) {
-        out.diagnostics.push_back({Severity::Error, DiagCode::E123_EiaArcWithoutDirection, (i ? i : j)->offset,
+        out.diagnostics.push_back({Severity::Error, DiagCode::E123_EiaArcWithoutDirection, (axes.i ? axes.i : axes.j)->offset,
                                    "an arc centre (I, J) while neither G02 nor G03 is in force; expected G02 "
                                    "(clockwise) or G03 (counter-clockwise) in this block or before it"});
         return;
@@ -346,8 +433,8 @@ void EiaReader::motion(const std::vector<Word>& words, std::uint32_t offset, boo
     o.w[0] = static_cast<std::int32_t>(st.absolute ? end_x : end_x - st.x);
     o.w[1] = static_cast<std::int32_t>(st.absolute ? end_y : end_y - st.y);
     if (arc) {
-        o.w[2] = static_cast<std::int32_t>(st.absolute ? st.x + *ci : *ci);
-        o.w[3] = static_cast<std::int32_t>(st.absolute ? st.y + *cj : *cj);
+        o.w[2] = static_cast<std::int32_t>(st.absolute ? st.x + ci : ci);
+        o.w[3] = static_cast<std::int32_t>(st.absolute ? st.y + cj : cj);
         o.w[4] = 0;
         if (st.arc == ArcMode::Clockwise) o.packed |= Block::kTcNegative;  // TC '-': clockwise (ISO A.7)
     }
@@ -361,80 +448,88 @@ void EiaReader::motion(const std::vector<Word>& words, std::uint32_t offset, boo
 // motion, then stops and the end.
 void EiaReader::translate(const std::vector<Word>& words, LineResult& out, State& st) const {
     const EiaDialect& e = profile_.eia;
-    bool dwell = false, preset = false;
-    std::uint32_t dwell_offset = 0;
-    std::vector<std::pair<std::uint32_t, int>> after;  // stops and end codes: after the motion
+    const Word* dwell = nullptr;
+    bool preset = false;
+    std::uint32_t after_offset[2] = {};
+    int after_code[2] = {-1, -1};  // stops and end codes: after the motion (at most two kept)
     const auto set_rapid = [&](bool on, std::uint32_t offset) {
         if (e.rapid_motion_g < 0 || st.rapid == on) return;
         function(offset, on ? fn::kRapidOn : fn::kRapidOff, out);
         st.rapid = on;
     };
+    const auto unknown = [&](const Word& w, const std::string& what) {
+        out.diagnostics.push_back({Severity::Warning, DiagCode::W124_EiaUnknownCode, w.offset, what});
+    };
     for (const Word& w : words) {
-        if (w.letter != 'G' && w.letter != 'M' && w.letter != 'F') continue;
         if (w.letter == 'F') {
             function_value(w.offset, fn::kFeed, w.value() * (st.inch ? kMmPerInch : 1.0), out);
             continue;
         }
-        const bool is_code = w.is_integer() && w.mantissa >= 0 && w.value() <= kMaxCodeNumber;
-        const int n = is_code ? w.integer() : -1;
-        const auto is_word = [&](const std::vector<EiaWord>& list) {
-            return std::any_of(list.begin(), list.end(), [&](const EiaWord& x) { return x.letter == w.letter && x.number == n; });
-        };
-        if (!is_code) {
-            out.diagnostics.push_back({Severity::Warning, DiagCode::W124_EiaUnknownCode, w.offset,
-                                       std::string(1, w.letter) + excerpt(src_.substr(w.offset + 1, 8), 8) +
-                                           " is not a " + w.letter + " code; it is ignored"});
-        } else if (w.letter == 'G' && (n == kGLine || n == kGArcCw || n == kGArcCcw)) {
-            set_rapid(false, w.offset);
-            st.arc = n == kGLine ? ArcMode::None : n == kGArcCw ? ArcMode::Clockwise : ArcMode::CounterClockwise;
-        } else if (w.letter == 'G' && n == e.rapid_motion_g) {
-            set_rapid(true, w.offset);
-            st.arc = ArcMode::None;
-        } else if (w.letter == 'G' && n == e.position_preset_g) {
-            preset = true;
-        } else if (is_word(e.inch_words) || is_word(e.mm_words)) {
-            st.inch = is_word(e.inch_words);
-        } else if (const EiaCode* c = code_of(w.letter, n)) {
-            if (c->function == fn::kDwell) {
-                dwell = true;
-                dwell_offset = w.offset;
-            } else if (c->function == fn::kProgramStop || c->function == fn::kOptionalStop || is_end_function(c->function)) {
-                after.emplace_back(w.offset, c->function);
-            } else {
-                if (c->function == fn::kAbsolute) st.absolute = true;
-                if (c->function == fn::kIncremental) st.absolute = false;
-                function(w.offset, c->function, out);
+        if (w.letter != 'G' && w.letter != 'M') continue;
+        const int n = w.code_number();
+        if (n < 0) {
+            unknown(w, std::string(1, w.letter) + excerpt(src_.substr(w.offset + 1, 8), 8) + " is not a " + w.letter +
+                           " code; it is ignored");
+            continue;
+        }
+        const GRole role = w.letter == 'G' ? g_role_[static_cast<std::size_t>(n)] : GRole::Function;
+        switch (role) {
+            case GRole::Line:
+            case GRole::ArcCw:
+            case GRole::ArcCcw:
+                set_rapid(false, w.offset);
+                st.arc = role == GRole::Line ? ArcMode::None : role == GRole::ArcCw ? ArcMode::Clockwise : ArcMode::CounterClockwise;
+                break;
+            case GRole::Rapid:
+                set_rapid(true, w.offset);
+                st.arc = ArcMode::None;
+                break;
+            case GRole::Preset: preset = true; break;
+            case GRole::Inch: st.inch = true; break;
+            case GRole::Mm: st.inch = false; break;
+            case GRole::None: unknown(w, word_text(w.letter, n) + " is not in the EIA table of the " + profile_.name + " profile; it is ignored"); break;
+            case GRole::Function: {
+                const int f = function_of(w.letter, n);
+                if (f < 0) {
+                    unknown(w, word_text(w.letter, n) + " is not in the EIA table of the " + profile_.name + " profile; it is ignored");
+                } else if (f == fn::kDwell) {
+                    dwell = &w;
+                } else if (f == fn::kProgramStop || f == fn::kOptionalStop || is_end_function(f)) {
+                    const int k = after_code[0] < 0 ? 0 : 1;
+                    after_code[k] = f;
+                    after_offset[k] = w.offset;
+                } else {
+                    if (f == fn::kAbsolute) st.absolute = true;
+                    if (f == fn::kIncremental) st.absolute = false;
+                    function(w.offset, f, out);
+                }
+                break;
             }
-        } else {
-            out.diagnostics.push_back({Severity::Warning, DiagCode::W124_EiaUnknownCode, w.offset,
-                                       word_text(w.letter, n) + " is not in the EIA table of the " + profile_.name +
-                                           " profile; it is ignored"});
         }
     }
+    Axes axes;
+    const Word* dwell_time = nullptr;
+    for (const Word& w : words) {
+        if (dwell && w.letter == e.dwell_letter) dwell_time = &w;  // (G04 X: the time, not an axis)
+        else if (w.letter == 'X') axes.x = &w;
+        else if (w.letter == 'Y') axes.y = &w;
+        else if (w.letter == 'I') axes.i = &w;
+        else if (w.letter == 'J') axes.j = &w;
+    }
     if (dwell) {
-        const auto t = std::find_if(words.begin(), words.end(), [&](const Word& w) { return w.letter == e.dwell_letter; });
-        if (t == words.end()) function(dwell_offset, fn::kDwell, out);  // the profile's dwell
-        else function_value(dwell_offset, fn::kDwell, t->value() * e.dwell_unit_s, out);
+        if (dwell_time) function_value(dwell->offset, fn::kDwell, dwell_time->value() * e.dwell_unit_s, out);
+        else function(dwell->offset, fn::kDwell, out);  // the profile's dwell
     }
-    const auto motion_word = std::find_if(words.begin(), words.end(), [&](const Word& w) {
-        const bool is_axis = w.letter == 'X' || w.letter == 'Y' || w.letter == 'I' || w.letter == 'J';
-        return is_axis && !(dwell && w.letter == e.dwell_letter);
-    });
-    if (motion_word != words.end()) {
-        std::vector<Word> axes;
-        for (const Word& w : words)
-            if ((w.letter == 'X' || w.letter == 'Y' || w.letter == 'I' || w.letter == 'J') && !(dwell && w.letter == e.dwell_letter))
-                axes.push_back(w);
-        motion(axes, motion_word->offset, preset, out, st);
-    }
-    for (const auto& [offset, code] : after) function(offset, code, out);
+    if (axes.x || axes.y || axes.i || axes.j) motion(axes, preset, out, st);
+    for (int k = 0; k < 2; ++k)
+        if (after_code[k] >= 0) function(after_offset[k], after_code[k], out);
 }
 
-void EiaReader::read_line(std::uint32_t begin, std::uint32_t end, LineResult& out, State& st) const {
-    std::vector<Word> words;
-    if (!parse_words(begin, end, words, out) || words.empty()) return;
-    if (!check_order(words, out)) return;
-    translate(words, out, st);
+void EiaReader::read_line(std::uint32_t begin, std::uint32_t end, LineResult& out, State& st) {
+    words_.clear();
+    if (!parse_words(begin, end, words_, out) || words_.empty()) return;
+    if (!check_order(words_, out)) return;
+    translate(words_, out, st);
 }
 
 void EiaReader::push_block(const LineResult::Out& o) {
@@ -501,10 +596,9 @@ bool EiaReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     }
     const auto size = static_cast<std::uint32_t>(std::min<std::size_t>(src_.size(), std::numeric_limits<std::uint32_t>::max()));
     std::uint32_t pos = pos_;
-    LineResult r;
+    LineResult& r = line_out_;
     while (pos < size && !stopped_ && !after_end_seen_) {
-        std::uint32_t end = pos;
-        while (end < size && !is_line_end(src_[end])) ++end;
+        const std::uint32_t end = line_end(pos, size);
         line_begin_ = pos;
         const std::string_view text = trim(src_.substr(pos, end - pos));
         const auto text_at = static_cast<std::uint32_t>(text.empty() ? pos : text.data() - src_.data());

@@ -3,6 +3,8 @@
 //   read/<eol>     essi::read_tape               bytes -> blocks
 //   interp/<eol>   essi::interpret               blocks -> motion stream (a counting sink), tape read once
 //   check/<eol>    essi::check_tape              the whole pipeline on bytes (what `essi check` runs)
+//   read_eia       essi::read_tape of the EIA form of the tape (tests/bench/eia_generator.hpp, Woyda table, LF)
+//   check_eia      essi::check_tape of it
 //   wc_l/<eol>     `wc -l` on the same tape as a file: the floor (native only; a child process, timed
 //                  with std::chrono around std::system, reported as manual time)
 //
@@ -33,6 +35,7 @@
 #include "essi/profile.hpp"
 #include "essi/read.hpp"
 #include "essi/report.hpp"
+#include "eia_generator.hpp"
 #include "nest_generator.hpp"
 
 namespace {
@@ -73,6 +76,16 @@ const essi::Tape& read_once(LineEnding eol) {
     return *slot;
 }
 
+// The EIA tape (generated on first use) and the profile that reads it.
+const std::string& eia_bytes() {
+    static const std::string bytes = essi::bench::generate_eia_nest_tape(static_cast<std::size_t>(g_tape_mb * 1e6), kSeed);
+    return bytes;
+}
+const essi::Profile& woyda() {
+    static const essi::Profile p = *essi::builtin_profile("woyda");
+    return p;
+}
+
 void set_throughput(benchmark::State& state, std::size_t bytes) {
     const auto total = static_cast<double>(bytes) * static_cast<double>(state.iterations());
     state.SetBytesProcessed(static_cast<std::int64_t>(total));
@@ -110,6 +123,30 @@ void bm_read(benchmark::State& state, LineEnding eol) {
     const essi::Tape& tape = read_once(eol);
     tape_counters(state, tape);
     state.counters["errors"] = static_cast<double>(tape.has_errors() ? 1 : 0);
+}
+
+void bm_read_eia(benchmark::State& state) {
+    const std::string& bytes = eia_bytes();
+    for (auto _ : state) {
+        essi::Tape tape = essi::read_tape(bytes, woyda(), essi::InputFormat::Eia);
+        benchmark::DoNotOptimize(tape.size());
+    }
+    set_throughput(state, bytes.size());
+    const essi::Tape tape = essi::read_tape(bytes, woyda(), essi::InputFormat::Eia);
+    tape_counters(state, tape);
+    state.counters["errors"] = static_cast<double>(tape.has_errors() ? 1 : 0);
+}
+
+void bm_check_eia(benchmark::State& state) {
+    const std::string& bytes = eia_bytes();
+    std::size_t errors = 0;
+    for (auto _ : state) {
+        const essi::CheckResult r = essi::check_tape(bytes, woyda(), essi::InputFormat::Eia);
+        errors = r.count(essi::Severity::Error) + r.count(essi::Severity::Warning);
+        benchmark::DoNotOptimize(errors);
+    }
+    set_throughput(state, bytes.size());
+    state.counters["errors"] = static_cast<double>(errors);
 }
 
 void bm_interp(benchmark::State& state, LineEnding eol) {
@@ -224,6 +261,8 @@ int main(int argc, char** argv) {
             ->Unit(benchmark::kMillisecond)->UseManualTime();
 #endif
     }
+    benchmark::RegisterBenchmark("read_eia", bm_read_eia)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("check_eia", bm_check_eia)->Unit(benchmark::kMillisecond);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;
