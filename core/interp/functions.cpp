@@ -85,6 +85,8 @@ constexpr RangeRow kValueRanges[] = {
     {fn::kKerfRight, {0, 100, true}},
     {fn::kWoydaBurnerCount, {1, 32, false}},     // burners
     {fn::kWoydaBurnerSpacing, {0, 100000, true}},  // mm
+    {fn::kPunchMarkingOffsetOn, {1, 6, false}},    // Hypertherm 11+n: marker 1-6
+    {fn::kToolOffsetOff, {1, 6, false}},
 };
 
 }  // namespace
