@@ -566,9 +566,7 @@ void EiaReader::commit(const LineResult& r) {
         if (o.kind == BlockKind::Function && is_end_function(o.code)) {
             ended_ = true;
             end_line_ = line_;
-            blocks_of(*chunk_).back().packed |= Block::kProgramEnd;
-            has_end_of(*chunk_) = true;
-            end_block_of(*chunk_) = blocks_of(*chunk_).size();
+            mark_program_end(*chunk_);
         }
     }
 }
@@ -576,24 +574,11 @@ void EiaReader::commit(const LineResult& r) {
 bool EiaReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     if (finished_) return false;
     chunk_ = &chunk;
-    blocks_of(chunk).clear();
-    words_of(chunk).clear();
-    word_index_of(chunk).clear();
-    diagnostics_of(chunk).clear();
-    first_block_of(chunk) = total_blocks_;
     chunk_blocks_ = 0;
     chunk_comments_ = 0;
-    has_end_of(chunk) = false;
     const bool ended_before = ended_;
-    if (!started_) {
-        started_ = true;
-        if (src_.size() > std::numeric_limits<std::uint32_t>::max()) {
-            diagnostics_of(chunk).push_back({Severity::Error, DiagCode::E117_TapeTooLarge, 0, 0,
-                                             "the tape has " + std::to_string(src_.size()) +
-                                                 " bytes; essikit reads tapes of at most 4 GiB"});
-            stopped_ = true;
-        }
-    }
+    if (begin_chunk(chunk, total_blocks_, !started_, src_)) stopped_ = true;
+    started_ = true;
     const auto size = static_cast<std::uint32_t>(std::min<std::size_t>(src_.size(), std::numeric_limits<std::uint32_t>::max()));
     std::uint32_t pos = pos_;
     LineResult& r = line_out_;
@@ -633,9 +618,7 @@ bool EiaReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
                 push_block(r.blocks[0]);
                 ended_ = true;
                 end_line_ = line_;
-                blocks_of(chunk).back().packed |= Block::kProgramEnd;
-                has_end_of(chunk) = true;
-                end_block_of(chunk) = blocks_of(chunk).size();
+                mark_program_end(chunk);
             } else {
                 commit(r);
             }
@@ -650,9 +633,7 @@ bool EiaReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     }
     pos_ = pos;
     total_blocks_ += blocks_of(chunk).size();
-    if (ended_before) end_block_of(chunk) = 0;
-    else if (!ended_) end_block_of(chunk) = blocks_of(chunk).size();
-    program_blocks_of(chunk) = end_block_of(chunk) - (ended_before ? 0 : chunk_comments_);
+    finish_chunk(chunk, ended_before, ended_, chunk_comments_);
     const bool input_done = pos >= size || stopped_ || after_end_seen_;
     if (!input_done) return true;
     finished_ = true;

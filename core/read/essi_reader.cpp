@@ -230,9 +230,7 @@ private:
     void mark_program_end() {
         ended_ = true;
         end_line_ = line_;
-        blocks_of(tape()).back().packed |= Block::kProgramEnd;
-        has_end_of(tape()) = true;
-        end_block_of(tape()) = blocks_of(tape()).size();
+        BlockReader::mark_program_end(tape());
     }
     void report(Severity sev, DiagCode code, std::uint32_t offset, std::string message);
     [[nodiscard]] bool is_end_function(long long code) const;
@@ -318,24 +316,13 @@ void EssiReader::reserve_whole(Tape& tape) const {
 bool EssiReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     if (finished_) return false;
     chunk_ = &chunk;
-    blocks_of(chunk).clear();
-    words_of(chunk).clear();
-    word_index_of(chunk).clear();
-    diagnostics_of(chunk).clear();
-    first_block_of(chunk) = total_blocks_;
     chunk_blocks_ = 0;
     chunk_comments_ = 0;
-    has_end_of(chunk) = false;
     const bool ended_before = ended_;
-
+    if (begin_chunk(chunk, total_blocks_, !started_, src_)) stopped_ = true;
     if (!started_) {
         started_ = true;
-        if (src_.size() > std::numeric_limits<std::uint32_t>::max()) {
-            diagnostics_of(chunk).push_back({Severity::Error, DiagCode::E117_TapeTooLarge, 0, 0,
-                                          "the tape has " + std::to_string(src_.size()) +
-                                              " bytes; essikit reads tapes of at most 4 GiB"});
-            stopped_ = true;
-        } else if (src_.substr(0, 3) == "\xEF\xBB\xBF") {
+        if (!stopped_ && src_.substr(0, 3) == "\xEF\xBB\xBF") {
             report(Severity::Error, DiagCode::E102_NonAsciiByte, 0,
                    "the tape starts with a UTF-8 byte order mark (EF BB BF); ESSI tapes are plain ASCII: save the "
                    "file without a BOM");
@@ -370,12 +357,7 @@ bool EssiReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     }
     pos_ = pos;
     total_blocks_ += blocks_of(chunk).size();
-    // Blocks of this chunk that belong to the program: all of them, up to the end block, none after it.
-    if (ended_before) end_block_of(chunk) = 0;
-    else if (!ended_) end_block_of(chunk) = blocks_of(chunk).size();
-    // (when the end was found in this chunk, classify() set end_block_)
-    // Comment blocks come only before the end (after it nothing but % is kept).
-    program_blocks_of(chunk) = end_block_of(chunk) - (ended_before ? 0 : chunk_comments_);
+    finish_chunk(chunk, ended_before, ended_, chunk_comments_);
 
     const bool input_done = pos >= size || stopped_ || after_end_seen_;
     if (!input_done) return true;
