@@ -40,18 +40,15 @@
 
   // Opening a stored link: #share=ID[&c=X,Y,ZOOM][&l=LINE][&n=NAME].
   async function openShared() {
-    const p = new URLSearchParams(location.hash.slice(1));
-    const id = p.get('share');
-    if (!id || !api) return;
+    if (!api) return;
     await api.ready;
     try {
-      const res = await fetch('api/share/' + encodeURIComponent(id));
+      const link = window.essikitParseShare(location.hash);  // (the core's reading of the fragment)
+      if (!link.share) throw new Error(link.problems.join('; ') || 'no share id in the link');
+      const res = await fetch('api/share/' + link.share);
       if (!res.ok) throw new Error((await res.json().catch(() => ({}))).error || ('HTTP ' + res.status));
-      await api.load(p.get('n') || 'shared.esi', new Uint8Array(await res.arrayBuffer()));
-      const c = (p.get('c') || '').split(',').map(Number);
-      if (c.length === 3 && c.every(Number.isFinite) && c[2] > 0) api.setView(c[0], c[1], c[2]);
-      const line = parseInt(p.get('l') || '0', 10);
-      if (line > 0) api.selectLine(line);
+      await api.load(link.name || 'shared.esi', new Uint8Array(await res.arrayBuffer()));
+      window.essikitApplyShareView(link);
     } catch (e) {
       console.warn('share link: ' + e.message);
       await api.load('broken-link.txt', new Uint8Array(0));

@@ -408,7 +408,8 @@ void EiaReader::motion(const Axes& axes, bool preset, LineResult& out, State& st
     const bool relative = !st.absolute && !preset;
     long long ex = relative ? 0 : st.x, ey = relative ? 0 : st.y, ci = 0, cj = 0;
     const auto value = [&](const Word* w, long long& u) { return w == nullptr || units(*w, st, out, u); };
-    if (!(value(axes.x, ex) & value(axes.y, ey) & value(axes.i, ci) & value(axes.j, cj))) return;  // (each reports)
+    const bool x_ok = value(axes.x, ex), y_ok = value(axes.y, ey), i_ok = value(axes.i, ci), j_ok = value(axes.j, cj);
+    if (!(x_ok && y_ok && i_ok && j_ok)) return;  // (each reported its error)
     const long long end_x = relative ? st.x + ex : ex, end_y = relative ? st.y + ey : ey;
     if (preset) {
         // The position becomes (X, Y): the origin moves by (position - preset), relative to the current one (83).

@@ -9,6 +9,7 @@
 #include "app/panels/UiText.hpp"
 #include "essi/geom.hpp"
 #include "essi/profile.hpp"
+#include "essi/share_link.hpp"
 #include "essi/sniff.hpp"
 #include "platform/Platform.hpp"
 
@@ -226,7 +227,7 @@ void App::notify(std::string text) {
 
 std::string App::view_query() const {
     const Point o = origin();
-    return fmt("c=%.6g,%.6g,%.6g&l=%u", view_.cx + o.x, view_.cy + o.y, view_.zoom, selection_.line);
+    return share_view_query({view_.cx + o.x, view_.cy + o.y, view_.zoom}, selection_.line);
 }
 
 void App::share() {

@@ -5,7 +5,11 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "app/App.hpp"
+#include "essi/share_link.hpp"
+#include "essi/text.hpp"
 
 using essi::viewer::App;
 
@@ -78,6 +82,31 @@ EMSCRIPTEN_KEEPALIVE void essi_set_layer(int layer, int visible) {
 EMSCRIPTEN_KEEPALIVE void essi_set_profile(const char* name) {
     if (App* app = App::instance()) app->set_profile(name ? name : "auto");
 }
+
+// Reads a share link's fragment (essi/share_link.hpp) for the page: {name, line, view: [x, y, zoom] | null, share,
+// profile, problems: [...], packed_len}; the tape's packed (deflate-raw) bytes stay at essi_share_packed() until
+// the next call, for the page to inflate.
+namespace {
+std::string g_share_packed;
+std::string g_share_json;
+}
+
+EMSCRIPTEN_KEEPALIVE const char* essi_parse_share(const char* fragment) {
+    essi::ShareLink link = essi::parse_share_fragment(fragment ? fragment : "");
+    nlohmann::json j;
+    j["name"] = essi::display_text(link.name);
+    j["line"] = link.line;
+    j["view"] = link.view ? nlohmann::json::array({link.view->x, link.view->y, link.view->zoom}) : nlohmann::json();
+    j["share"] = link.store_id;
+    j["profile"] = link.profile;
+    j["problems"] = link.problems;
+    j["packed_len"] = link.packed.size();
+    g_share_packed = std::move(link.packed);
+    g_share_json = j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    return g_share_json.c_str();
+}
+
+EMSCRIPTEN_KEEPALIVE const char* essi_share_packed() { return g_share_packed.data(); }
 
 // Makes a share link as the Share button does; the page's essikitShare finishes it.
 EMSCRIPTEN_KEEPALIVE void essi_share() {

@@ -1,0 +1,47 @@
+// Share links (docs/viewer.md, "Share links"): the URL fragment that carries a tape and its view to another
+// browser. One decoder for the page's two kinds of link, `#c=X,Y,ZOOM&l=LINE&n=NAME&t=DATA` (the tape itself:
+// deflate-raw, base64url) and `#share=ID&c=...&l=...&n=NAME` (a tape in `essi serve`'s store), and the maker of the
+// view part. The page inflates DATA (the browser's DecompressionStream); everything else is read here.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace essi {
+
+struct ShareView {
+    double x = 0, y = 0;  // the view's centre, machine mm
+    double zoom = 0;      // pixels per mm, > 0
+};
+
+struct ShareLink {
+    std::optional<ShareView> view;      // c=X,Y,ZOOM (finite numbers, zoom > 0)
+    std::uint32_t line = 0;             // l=LINE: the selected line (0: none)
+    std::string name;                   // n=NAME, decoded (%XX and '+'); empty: none given
+    std::string store_id;               // share=ID: 64 lower-case hex digits (SHA-256)
+    std::string packed;                 // t=DATA, base64url-decoded: the deflate-raw bytes of the tape
+    std::string profile;                // p=NAME: the profile to read the tape with (letters, digits, _ . + -)
+    std::vector<std::string> problems;  // each field that could not be read, in words (the rest is still used)
+    [[nodiscard]] bool has_tape() const { return !packed.empty() || !store_id.empty(); }
+};
+
+// Fragments longer than this are refused whole (browsers take URLs of up to 2 MB).
+constexpr std::size_t kMaxShareFragmentBytes = 3'000'000;
+// A name longer than this is cut (at a character boundary) and reported.
+constexpr std::size_t kMaxShareNameBytes = 255;
+
+// Reads a fragment (with or without its leading '#'). Never throws; unknown keys are ignored (newer links).
+[[nodiscard]] ShareLink parse_share_fragment(std::string_view fragment);
+
+// "c=X,Y,ZOOM&l=LINE": the view part of a link.
+[[nodiscard]] std::string share_view_query(const ShareView& view, std::uint32_t line);
+
+// RFC 4648 base64url without padding, and its decoder (padding and line breaks refused: nullopt).
+[[nodiscard]] std::string base64url_encode(std::string_view bytes);
+[[nodiscard]] std::optional<std::string> base64url_decode(std::string_view text);
+
+}  // namespace essi

@@ -1,0 +1,83 @@
+// The share link fragment (essi/share_link.hpp): what the page's two kinds of link carry, read by the core.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "essi/share_link.hpp"
+
+using namespace essi;
+
+TEST(ShareLink, ReadsTheInlineLink) {
+    const std::string packed("\x01\x02\xFF\x00\x7F", 5);
+    const ShareLink l = parse_share_fragment("#c=12.5,-3,0.25&l=17&n=part+7%2Fa.esi&t=" + base64url_encode(packed) + "&p=woyda");
+    ASSERT_TRUE(l.view.has_value());
+    EXPECT_DOUBLE_EQ(l.view->x, 12.5);
+    EXPECT_DOUBLE_EQ(l.view->y, -3);
+    EXPECT_DOUBLE_EQ(l.view->zoom, 0.25);
+    EXPECT_EQ(l.line, 17u);
+    EXPECT_EQ(l.name, "part 7/a.esi");  // '+' a space, %2F a slash (as URLSearchParams)
+    EXPECT_EQ(l.packed, packed);
+    EXPECT_EQ(l.profile, "woyda");
+    EXPECT_TRUE(l.problems.empty());
+    EXPECT_TRUE(l.has_tape());
+}
+
+TEST(ShareLink, ReadsTheStoreLink) {
+    const std::string id(64, 'a');
+    const ShareLink l = parse_share_fragment("share=" + id + "&c=1,2,3&l=0&n=x.esi");
+    EXPECT_EQ(l.store_id, id);
+    EXPECT_TRUE(l.packed.empty());
+    EXPECT_TRUE(l.has_tape());
+    EXPECT_EQ(l.line, 0u);
+}
+
+TEST(ShareLink, EachBadFieldIsAProblemAndTheRestIsUsed) {
+    const ShareLink l = parse_share_fragment("c=1,2,0&l=-4&share=ABC&t=a$b&p=../x&n=ok.esi&future=1");
+    EXPECT_FALSE(l.view.has_value());  // zoom 0
+    EXPECT_EQ(l.line, 0u);
+    EXPECT_TRUE(l.store_id.empty());
+    EXPECT_TRUE(l.packed.empty());
+    EXPECT_TRUE(l.profile.empty());
+    EXPECT_EQ(l.name, "ok.esi");
+    ASSERT_EQ(l.problems.size(), 5u);  // c, l, share, t, p; the unknown key is ignored
+    EXPECT_EQ(l.problems[0].rfind("c: expected X,Y,ZOOM", 0), 0u) << l.problems[0];
+    EXPECT_NE(l.problems[3].find("base64url"), std::string::npos);
+    EXPECT_FALSE(l.has_tape());
+}
+
+TEST(ShareLink, LimitsAndHostileText) {
+    EXPECT_FALSE(parse_share_fragment(std::string(kMaxShareFragmentBytes + 1, 'a')).problems.empty());
+    const ShareLink longname = parse_share_fragment("n=" + std::string(1000, 'x'));
+    EXPECT_LE(longname.name.size(), kMaxShareNameBytes + 3);
+    EXPECT_EQ(longname.problems.size(), 1u);
+    // NaN, infinity and trailing text are no numbers; a quoted value is shown safely
+    EXPECT_FALSE(parse_share_fragment("c=nan,1,1").view.has_value());
+    EXPECT_FALSE(parse_share_fragment("c=1,inf,1").view.has_value());
+    EXPECT_FALSE(parse_share_fragment("c=1,2,3x").view.has_value());
+    const ShareLink ctl = parse_share_fragment("c=%01%FF");
+    ASSERT_EQ(ctl.problems.size(), 1u);
+    EXPECT_NE(ctl.problems[0].find("\\x01"), std::string::npos) << ctl.problems[0];
+}
+
+TEST(ShareLink, Base64UrlRoundTripsAndRefusesOtherAlphabets) {
+    for (std::size_t n = 0; n < 40; ++n) {
+        std::string bytes;
+        for (std::size_t i = 0; i < n; ++i) bytes += static_cast<char>((i * 37 + n) & 0xFF);
+        const std::string text = base64url_encode(bytes);
+        EXPECT_EQ(text.find_first_of("+/="), std::string::npos);
+        EXPECT_EQ(base64url_decode(text), bytes) << n;
+    }
+    EXPECT_EQ(base64url_encode("hello"), "aGVsbG8");
+    EXPECT_FALSE(base64url_decode("aGVsbG8=").has_value());  // padding
+    EXPECT_FALSE(base64url_decode("a+b/").has_value());      // standard base64's letters
+    EXPECT_FALSE(base64url_decode("abcde").has_value());     // a length no bytes have
+}
+
+TEST(ShareLink, ViewQueryReadsBack) {
+    const std::string q = share_view_query({1234.5, -0.125, 3.5}, 42);
+    EXPECT_EQ(q, "c=1234.5,-0.125,3.5&l=42");
+    const ShareLink l = parse_share_fragment(q);
+    ASSERT_TRUE(l.view.has_value());
+    EXPECT_DOUBLE_EQ(l.view->x, 1234.5);
+    EXPECT_EQ(l.line, 42u);
+}
