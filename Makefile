@@ -6,7 +6,7 @@
 #                unit suite once more built with ASan + UBSan (build/sanitize)
 #   make native  build/native/bin/essi (+ tests, bench)      make wasm   build/wasm/bin/*.js, build/wasm/web/
 #   make bench   the core benchmarks natively and under node, then the viewer's browser benchmark
-#   make fuzz    each libFuzzer target (read_interp, read_eia, profile, share_link) for 60 s (clang++-14; FUZZ_SECONDS, FUZZ_TARGETS)
+#   make fuzz    each libFuzzer target (read_interp, read_eia, profile, share_link, serve_request) for 60 s (clang++-14; FUZZ_SECONDS, FUZZ_TARGETS)
 #   make clean   remove build/
 SHELL := /bin/bash
 JOBS ?= 2
@@ -70,7 +70,7 @@ bench: setup
 # build/fuzz/corpus/NAME (the saved corpus tests/fuzz/corpus/NAME is read only); crashes are written to
 # build/fuzz/artifacts/. The ESSI target reads long inputs (whole generated tapes are in its corpus) with a
 # dictionary of ESSI tokens; the EIA target has its own (read_eia.dict). Promote interesting inputs by hand.
-FUZZ_TARGETS ?= read_interp read_eia profile share_link
+FUZZ_TARGETS ?= read_interp read_eia profile share_link serve_request
 fuzz: setup
 	cmake --preset fuzz
 	cmake --build --preset fuzz -j$(JOBS)

@@ -127,6 +127,15 @@ int bind_server(HardenedServer& server, const ServeOptions& o) {
 
 }  // namespace
 
+void configure_server(HardenedServer& server, const ServeOptions& o, std::shared_ptr<ShareStore> store) {
+    server.set_payload_max_length(static_cast<std::size_t>(o.max_body));
+    server.set_tcp_nodelay(true);  // no 40 ms Nagle + delayed-ACK stall between the headers and the body
+    add_policies(server, o);
+    add_api_routes(server, std::make_shared<ApiContext>(std::move(store), o.max_body,
+                                                        std::max<std::size_t>(o.max_large_requests, 1), o.share_rate));
+    add_static_routes(server, StaticFiles{o.web_root, o.examples_dir, o.share_store_js});
+}
+
 int run_serve(const ServeOptions& o) {
     if (!viewer_built(o.web_root)) {
         std::fprintf(stderr,
@@ -148,11 +157,7 @@ int run_serve(const ServeOptions& o) {
     // number of threads that ever held a large body, not with the number of large bodies at once.
     mallopt(M_MMAP_THRESHOLD, static_cast<int>(kLargeBody));
     HardenedServer server(connection_limits(o));
-    server.set_payload_max_length(static_cast<std::size_t>(o.max_body));
-    server.set_tcp_nodelay(true);  // no 40 ms Nagle + delayed-ACK stall between the headers and the body
-    add_policies(server, o);
-    add_api_routes(server, std::make_shared<ApiContext>(store, o.max_body, std::max<std::size_t>(o.max_large_requests, 1), o.share_rate));
-    add_static_routes(server, StaticFiles{o.web_root, o.examples_dir, o.share_store_js});
+    configure_server(server, o, store);
 
     const int bound = bind_server(server, o);
     if (bound == 0) return 2;

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,5 +43,13 @@ struct ServeOptions {
 // Returns 2 (with a message on stderr) when the viewer is not built, the store cannot be opened or the address
 // cannot be bound (also when another process listens on the port).
 int run_serve(const ServeOptions& options);
+
+#if defined(ESSI_HAVE_HTTPLIB)
+class HardenedServer;
+class ShareStore;
+// Sets `server` up as `essi serve` does: the request policies (Host, Origin, ...), the security headers, the JSON
+// errors, the API with `store`, and the static files (run_serve; the request-handling fuzz target).
+void configure_server(HardenedServer& server, const ServeOptions& options, std::shared_ptr<ShareStore> store);
+#endif
 
 }  // namespace essi::native

@@ -1,5 +1,7 @@
 #include "serve_socket.hpp"
 
+#include <cstring>
+
 #if defined(ESSI_HAVE_HTTPLIB)
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -207,6 +209,54 @@ void BodyReading::done() {
     worker_->acquire();
     t_worker = worker_;
     worker_ = nullptr;
+}
+
+namespace {
+// A connection in memory: reads `in`, appends what is written to `out`.
+class MemoryStream : public httplib::Stream {
+public:
+    MemoryStream(std::string_view in, std::string& out) : in_(in), out_(out) {}
+    bool is_readable() const override { return pos_ < in_.size(); }
+    bool is_writable() const override { return true; }
+    ssize_t read(char* ptr, size_t size) override {
+        const std::size_t n = std::min(size, in_.size() - pos_);
+        std::memcpy(ptr, in_.data() + pos_, n);
+        pos_ += n;
+        return static_cast<ssize_t>(n);
+    }
+    ssize_t write(const char* ptr, size_t size) override {
+        out_.append(ptr, size);
+        return static_cast<ssize_t>(size);
+    }
+    void get_remote_ip_and_port(std::string& ip, int& port) const override { ip = "127.0.0.1", port = 40000; }
+    void get_local_ip_and_port(std::string& ip, int& port) const override { ip = "127.0.0.1", port = 8080; }
+    socket_t socket() const override { return INVALID_SOCKET; }
+    [[nodiscard]] bool done() const { return pos_ >= in_.size(); }
+
+private:
+    std::string_view in_;
+    std::size_t pos_ = 0;
+    std::string& out_;
+};
+}  // namespace
+
+std::string HardenedServer::handle_bytes(std::string_view bytes) {
+    std::string out;
+    MemoryStream strm(bytes, out);
+    // cpp-httplib writes a streamed body (a static file) only while the server "runs", i.e. has a listening
+    // socket: a server that never listened is made to look running for the call (the number is never used).
+    const socket_t listening = svr_sock_;
+    if (listening == INVALID_SOCKET) svr_sock_ = 0;
+    for (std::size_t left = keep_alive_max_count_; left > 0 && !strm.done(); --left) {
+        t_close_after = false;
+        bool closed = false;
+        const bool ok = process_request(strm, left == 1, closed, nullptr);
+        if (t_worker) t_worker->release();
+        t_worker = nullptr;
+        if (!ok || closed || t_close_after) break;
+    }
+    svr_sock_ = listening;
+    return out;
 }
 
 void HardenedServer::widen_backlog() {

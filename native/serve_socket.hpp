@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "serve_limits.hpp"
 
@@ -40,6 +41,10 @@ public:
     // After bind: a listen backlog of SOMAXCONN instead of cpp-httplib 0.11's 5, so that a burst of connections
     // waits in the kernel's queue instead of having its SYNs dropped (each retried only after 1 s, then 3 s).
     void widen_backlog();
+    // Handles the requests in `bytes` as if a client at 127.0.0.1 had sent them on one connection (keep-alive: one
+    // after the other, until the bytes end or the server closes), without a socket, and returns what the server
+    // wrote back. For the request-handling fuzz target and tests: the same guard, routes and finisher.
+    std::string handle_bytes(std::string_view bytes);
 
 private:
     bool process_and_close_socket(socket_t sock) override;
