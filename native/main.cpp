@@ -21,6 +21,7 @@
 
 #include "essi/diagnostics.hpp"
 #include "essi/profile.hpp"
+#include "essi/write.hpp"
 #include "essi/report.hpp"
 #include "essi/trace.hpp"
 #include "batch.hpp"
@@ -310,6 +311,49 @@ void report_errors_briefly(const std::vector<FileReport>& reports) {
     }
 }
 
+struct ConvertCliOptions {
+    std::string path;
+    std::string output = "-";
+    std::string to;
+    std::string profile;
+    std::string to_profile;
+    std::string input = "auto";
+    bool absolute = false;
+    bool incremental = false;
+    std::uint64_t max_size = essi::native::kDefaultMaxInputBytes;
+};
+
+// essi convert: the tape read as --input/--profile say, run, and written in --to for --to-profile (default: the
+// profile it was read with). Warnings and errors on stderr; exit 1 when the tape has errors (the output is still
+// written: what the machine would run of it).
+int run_convert(const ConvertCliOptions& o) {
+    const auto request = resolve_request(o.profile, o.input);
+    if (!request) return kExitUsage;
+    const essi::native::ReadResult file = essi::native::read_whole_file(o.path, o.max_size);
+    if (!file.ok) {
+        err("essi: cannot read " + essi::display_text(o.path) + ": " + file.error + "\n");
+        return kExitUsage;
+    }
+    const essi::TapeSetup setup = request->setup(file.bytes);
+    essi::ConvertOptions options;
+    options.to = o.to == "eia" ? essi::OutputFormat::Eia : o.to == "gcode" ? essi::OutputFormat::Gcode : essi::OutputFormat::Essi;
+    options.absolute = o.absolute;
+    if (o.to_profile.empty()) {
+        options.target = setup.profile;
+    } else {
+        const auto target = resolve_profile(o.to_profile);
+        if (!target) return kExitUsage;
+        options.target = *target;
+    }
+    const essi::ConvertResult r = essi::convert_tape(file.bytes, setup, options);
+    for (const essi::Diagnostic& d : r.diagnostics) err(essi::native::diagnostic_line(o.path, d) + "\n");
+    if (!write_file(o.output, r.text)) {
+        err("essi convert: cannot write " + essi::display_text(o.output) + ": " + std::strerror(errno) + "\n");
+        return kExitUsage;
+    }
+    return finish(r.ok() ? kExitOk : kExitTapeErrors);
+}
+
 int run_stats(const std::vector<std::string>& paths, const std::string& format, const std::string& profile_arg,
               const std::string& input_arg, std::uint64_t max_size) {
     const auto request = resolve_request(profile_arg, input_arg);
@@ -332,7 +376,7 @@ int run_stats(const std::vector<std::string>& paths, const std::string& format, 
 }
 
 int run_trace(const std::string& path, const std::string& profile_arg, const std::string& input_arg,
-              std::uint64_t max_size) {
+              std::uint64_t max_size, int decimals) {
     const auto request = resolve_request(profile_arg, input_arg);
     if (!request) return kExitUsage;
     const essi::native::ReadResult file = essi::native::read_whole_file(path, max_size);
@@ -343,7 +387,7 @@ int run_trace(const std::string& path, const std::string& profile_arg, const std
     // The trace of a big tape is hundreds of MB: it is streamed in chunks, never held whole.
     const essi::TapeSetup setup = request->setup(file.bytes);
     const auto diagnostics =
-        essi::trace_tape(file.bytes, setup.profile, [](std::string_view piece) { out(piece); }, setup.format);
+        essi::trace_tape(file.bytes, setup.profile, [](std::string_view piece) { out(piece); }, setup.format, decimals);
     const bool errors = std::any_of(diagnostics.begin(), diagnostics.end(),
                                     [](const essi::Diagnostic& d) { return d.severity == essi::Severity::Error; });
     return finish(errors ? kExitTapeErrors : kExitOk);
@@ -444,8 +488,31 @@ int main(int argc, char** argv) {
 
     CLI::App* trace = app.add_subcommand("trace", "Print the motion stream of a tape, one record a line");
     add_profile_option(trace);
+    int trace_decimals = essi::kTraceDecimals;
+    trace->add_option("--decimals", trace_decimals, "Decimals of lengths and coordinates (default 3)")
+        ->check(CLI::Range(0, 9))
+        ->type_name("N");
     add_max_size_option(trace, max_size);
     trace->add_option("PATH", trace_path, "Tape file ('-' reads standard input)")->required();
+
+    ConvertCliOptions convert_opts;
+    CLI::App* convert = app.add_subcommand("convert", "Write a tape as ESSI, EIA (RS-274) or G-code for LinuxCNC");
+    convert->add_option("--to", convert_opts.to, "Target format")
+        ->required()
+        ->check(CLI::IsMember({"essi", "eia", "gcode"}))
+        ->type_name("essi|eia|gcode");
+    convert->add_option("--profile", convert_opts.profile, kProfileHelp)->type_name("NAME|FILE|auto");
+    convert->add_option("--to-profile", convert_opts.to_profile,
+                        "The dialect written (units, end code, EIA table): a built-in name or a JSON profile file; "
+                        "default: the profile the tape is read with")
+        ->type_name("NAME|FILE");
+    add_input_option(convert, convert_opts.input);
+    auto* absolute_flag = convert->add_flag("--absolute", convert_opts.absolute, "Absolute coordinates (82, G90)");
+    convert->add_flag("--incremental", convert_opts.incremental, "Incremental coordinates (81, G91; the default)")
+        ->excludes(absolute_flag);
+    add_max_size_option(convert, convert_opts.max_size);
+    convert->add_option("-o,--output", convert_opts.output, "Output file ('-' = stdout, the default)");
+    convert->add_option("FILE", convert_opts.path, "Tape file ('-' reads standard input)")->required();
 
     RenderCliOptions render_opts;
     CLI::App* render = app.add_subcommand("render", "Draw a tape as SVG (or PNG): motion, pierces, errors, a legend");
@@ -516,8 +583,9 @@ int main(int argc, char** argv) {
 
     if (*check) return run_check(paths, check_opts);
     if (*stats) return run_stats(paths, format, profile_arg, input_arg, max_size);
-    if (*trace) return run_trace(trace_path, profile_arg, input_arg, max_size);
+    if (*trace) return run_trace(trace_path, profile_arg, input_arg, max_size, trace_decimals);
     if (*render) return run_render(render_opts);
+    if (*convert) return run_convert(convert_opts);
     if (*show) return run_profile_show(show_arg);
     if (*list) return run_profile_list();
     if (*serve) return essi::native::run_serve(serve_opts);

@@ -16,17 +16,18 @@ namespace essi {
 namespace {
 
 // Prints -0.000 as 0.000.
-double tidy(double v) { return std::abs(v) < 5e-4 ? 0.0 : v; }
+double tidy(double v, int decimals) { return std::abs(v) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : v; }
 
-void append(std::string& s, const char* fmt, double a, double b) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, fmt, tidy(a), tidy(b));
+// `fmt` with "%.*f" for each number (written to `decimals`).
+void append(std::string& s, const char* fmt, int decimals, double a, double b) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, fmt, decimals, tidy(a, decimals), decimals, tidy(b, decimals));
     s += buf;
 }
 
-void append(std::string& s, const char* fmt, double a) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, fmt, tidy(a));
+void append(std::string& s, const char* fmt, int decimals, double a) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, fmt, decimals, tidy(a, decimals));
     s += buf;
 }
 
@@ -34,9 +35,9 @@ void append(std::string& s, const char* fmt, double a) {
 class TraceSink : public MotionSink {
 public:
     static constexpr std::size_t kTraceChunkBytes = 1 << 16;
-    TraceSink(const TraceWriter& write, Dialect dialect) : write_(write), dialect_(dialect) {}
+    TraceSink(const TraceWriter& write, Dialect dialect, int decimals) : write_(write), dialect_(dialect), decimals_(decimals) {}
     ~TraceSink() override { flush(); }
-    void on_motion(const MotionRecord& m) override { add(trace_line(m)); }
+    void on_motion(const MotionRecord& m) override { add(trace_line(m, decimals_)); }
     void on_event(const MachineEvent& e) override { add(trace_line(e, dialect_)); }
     void add(const std::string& line) {
         buffer_ += line;
@@ -50,42 +51,43 @@ public:
 private:
     const TraceWriter& write_;
     Dialect dialect_;
+    int decimals_;
     std::string buffer_;
 };
 
 }  // namespace
 
-std::string trace_line(const MotionRecord& m) {
+std::string trace_line(const MotionRecord& m, int d) {
     std::string s = std::to_string(m.line);
     s += ' ';
     s += motion_kind_name(m.kind);
     s += ' ';
     s += curve_kind_name(m.curve);
     if (m.head != 1) s += " head=" + std::to_string(m.head);
-    append(s, " (%.3f,%.3f)", m.start.x, m.start.y);
-    append(s, "->(%.3f,%.3f)", m.end.x, m.end.y);
+    append(s, " (%.*f,%.*f)", d, m.start.x, m.start.y);
+    append(s, "->(%.*f,%.*f)", d, m.end.x, m.end.y);
     if (m.curve == CurveKind::Arc) {
-        append(s, " c=(%.3f,%.3f)", m.centre.x, m.centre.y);
-        append(s, " r=%.3f", m.radius);
+        append(s, " c=(%.*f,%.*f)", d, m.centre.x, m.centre.y);
+        append(s, " r=%.*f", d, m.radius);
         s += m.ccw ? " ccw" : " cw";
-        append(s, " sweep=%.3f", m.sweep * 180.0 / kPi);
+        append(s, " sweep=%.*f", d, m.sweep * 180.0 / kPi);
     } else if (m.curve == CurveKind::Parabola) {
-        append(s, " v=(%.3f,%.3f)", m.parabola.vertex.x, m.parabola.vertex.y);
-        append(s, " axis=(%.0f,%.0f)", m.parabola.n.x, m.parabola.n.y);
-        append(s, " p=%.3f", m.parabola.p);
+        append(s, " v=(%.*f,%.*f)", d, m.parabola.vertex.x, m.parabola.vertex.y);
+        append(s, " axis=(%.*f,%.*f)", 0, m.parabola.n.x, m.parabola.n.y);
+        append(s, " p=%.*f", d, m.parabola.p);
         s += m.ccw ? " ccw" : " cw";
     }
-    append(s, " len=%.3f", m.length_mm);
+    append(s, " len=%.*f", d, m.length_mm);
     s += " tools=" + tools_text(m.tools);
-    append(s, " feed=%.0f", m.feed_mm_min);
+    append(s, " feed=%.*f", 0, m.feed_mm_min);
     if (m.kerf != KerfSide::Off) {
         s += " kerf=";
         s += kerf_side_name(m.kerf);
-        append(s, ":%.3f", m.kerf_mm);
+        append(s, ":%.*f", d, m.kerf_mm);
     }
     if (m.torches > 1) {
         s += " torches=" + std::to_string(m.torches);
-        append(s, " step=(%.3f,%.3f)", m.torch_step.x, m.torch_step.y);
+        append(s, " step=(%.*f,%.*f)", d, m.torch_step.x, m.torch_step.y);
     }
     return s;
 }
@@ -110,7 +112,7 @@ std::string trace_line(const MachineEvent& e, Dialect dialect) {
         case EventKind::Stop: s += e.code == fn::kProgramStop ? " stop 0 programmed" : " stop 102 optional"; break;
         case EventKind::End: s += e.code ? " end " + std::to_string(e.code) : std::string(" end"); break;
         case EventKind::ZeroOffset:
-            std::snprintf(buf, sizeof buf, " origin (%.3f,%.3f)", tidy(e.x), tidy(e.y));
+            std::snprintf(buf, sizeof buf, " origin (%.3f,%.3f)", tidy(e.x, kTraceDecimals), tidy(e.y, kTraceDecimals));
             s += buf;
             break;
     }
@@ -123,10 +125,10 @@ std::string trace_line(const MachineEvent& e, Dialect dialect) {
 }
 
 std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profile, const TraceWriter& write,
-                                   InputFormat format) {
+                                   InputFormat format, int decimals) {
     const Tape tape = read_tape(bytes, profile, format);
     std::vector<Diagnostic> diagnostics = tape.diagnostics();
-    TraceSink sink(write, profile.dialect);
+    TraceSink sink(write, profile.dialect, decimals);
     interpret(tape, bytes, profile, sink, diagnostics);
     sort_diagnostics(diagnostics);
     for (const auto& d : diagnostics) {

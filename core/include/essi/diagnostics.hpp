@@ -74,6 +74,12 @@ enum class DiagCode : std::uint16_t {
     E401_LeavesTable = 401,           // motion beyond the profile's table travel limits
     E402_BadProfile = 402,            // a profile that cannot be read
     N403_OtherDialect = 403,          // the tape's evidence points to another dialect than the profile's
+
+    // --- conversion (essi convert) ---
+    W501_NoCounterpart = 501,         // a function the target has no word for: kept as a comment or left out
+    W502_ParabolaAsArcs = 502,        // a parabola written as circular arcs within the chord tolerance
+    W503_RoundedToUnit = 503,         // a coordinate not on the target's unit grid, rounded to it
+    W504_ValueNotWritten = 504,       // a function's value the target cannot carry (or not exactly)
 };
 
 struct Diagnostic {

@@ -1,0 +1,188 @@
+// Conversions (essi/write.hpp): round trips on every example and real tape give the same motion stream, and the
+// writers' text on small tapes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "essi/dialect.hpp"
+#include "essi/write.hpp"
+#include "paths.hpp"
+#include "test_util.hpp"
+
+using namespace essi;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Stream {
+    std::vector<MotionRecord> motions;
+    bool errors = false;
+};
+
+// The motion stream of `text` read as `setup` says.
+Stream stream_of(const std::string& text, const TapeSetup& setup) {
+    Stream s;
+    essi_test::RecordingSink sink;
+    std::vector<Diagnostic> diags;
+    const Tape tape = read_tape(text, setup.profile, setup.format);
+    diags = tape.diagnostics();
+    interpret(tape, text, setup.profile, sink, diags);
+    s.motions = sink.motions;
+    for (const Diagnostic& d : diags) s.errors = s.errors || d.severity == Severity::Error;
+    return s;
+}
+
+TapeSetup setup_of(InputFormat f, const Profile& p) {
+    TapeSetup s;
+    s.format = f;
+    s.profile = p;
+    return s;
+}
+
+// Same kinds, tools, curves and end points (within `tol` mm; the same sense for arcs).
+void expect_same_stream(const Stream& a, const Stream& b, double tol, const std::string& what) {
+    SCOPED_TRACE(what);
+    ASSERT_EQ(a.motions.size(), b.motions.size());
+    for (std::size_t i = 0; i < a.motions.size(); ++i) {
+        const MotionRecord &x = a.motions[i], &y = b.motions[i];
+        ASSERT_EQ(x.kind, y.kind) << "motion " << i;
+        ASSERT_EQ(x.tools, y.tools) << "motion " << i;
+        ASSERT_EQ(x.curve, y.curve) << "motion " << i;
+        ASSERT_NEAR(x.end.x, y.end.x, tol) << "motion " << i;
+        ASSERT_NEAR(x.end.y, y.end.y, tol) << "motion " << i;
+        if (x.curve == CurveKind::Arc) {
+            ASSERT_EQ(x.ccw, y.ccw) << "motion " << i;
+            ASSERT_NEAR(x.centre.x, y.centre.x, tol) << "motion " << i;
+        }
+    }
+}
+
+// Every example and real tape without errors and without parabolas (those become arcs: W502), with its setup.
+std::vector<std::pair<std::string, std::string>> tapes() {
+    std::vector<std::pair<std::string, std::string>> out;
+    std::vector<std::string> dirs{examples_dir()};
+    if (const auto c = corpus_dir()) dirs.push_back(*c);
+    for (const std::string& dir : dirs) {
+        std::vector<std::string> names;
+        for (const auto& e : fs::directory_iterator(dir)) {
+            const std::string n = e.path().filename().string();
+            const std::string ext = e.path().extension().string();
+            if (e.is_regular_file() && n.rfind("bad_", 0) != 0 && ext != ".json" && ext != ".trace" && ext != ".md")
+                names.push_back(e.path().string());
+        }
+        std::sort(names.begin(), names.end());
+        for (const std::string& p : names) out.emplace_back(p, read_file(p));
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(Convert, EssiRoundTripsGiveTheSameMotionStream) {
+    for (const auto& [path, text] : tapes()) {
+        const TapeSetup source = setup_tape(text, std::nullopt, std::nullopt);
+        const Stream want = stream_of(text, source);
+        if (want.errors) continue;
+        bool parabola = false;
+        for (const MotionRecord& m : want.motions) parabola = parabola || m.curve == CurveKind::Parabola;
+        if (parabola) continue;  // (tested below: arcs within the tolerance)
+        for (bool absolute : {false, true}) {
+            ConvertOptions o;
+            o.to = OutputFormat::Essi;
+            o.target = source.profile;
+            o.absolute = absolute;
+            const ConvertResult essi = convert_tape(text, source, o);
+            const Stream back = stream_of(essi.text, setup_of(InputFormat::Essi, source.profile));
+            expect_same_stream(want, back, 1e-9, path + (absolute ? " -> ESSI absolute" : " -> ESSI incremental"));
+            // incremental -> absolute -> incremental
+            o.absolute = !absolute;
+            const ConvertResult again = convert_tape(essi.text, setup_of(InputFormat::Essi, source.profile), o);
+            expect_same_stream(want, stream_of(again.text, setup_of(InputFormat::Essi, source.profile)), 1e-9,
+                               path + " -> ESSI -> ESSI in the other mode");
+        }
+    }
+}
+
+TEST(Convert, EiaRoundTripsGiveTheSameMotionStream) {
+    std::size_t compared = 0;
+    for (const auto& [path, text] : tapes()) {
+        const TapeSetup source = setup_tape(text, std::nullopt, std::nullopt);
+        const Stream want = stream_of(text, source);
+        if (want.errors) continue;
+        bool parabola = false;
+        for (const MotionRecord& m : want.motions) parabola = parabola || m.curve == CurveKind::Parabola;
+        if (parabola) continue;
+        for (const char* dialect : {"woyda", "din66025"}) {
+            ConvertOptions o;
+            o.to = OutputFormat::Eia;
+            o.target = *builtin_profile(dialect);
+            const ConvertResult eia = convert_tape(text, source, o);
+            // (a function the dialect has no word for is a comment: the stream differs there, by design)
+            const bool complete = std::none_of(eia.diagnostics.begin(), eia.diagnostics.end(), [](const Diagnostic& d) {
+                return d.code == DiagCode::W501_NoCounterpart;
+            });
+            if (!complete) continue;
+            ++compared;
+            const Stream back = stream_of(eia.text, setup_of(InputFormat::Eia, o.target));
+            ASSERT_FALSE(back.errors) << path << " as " << dialect << " EIA:\n" << eia.text;
+            expect_same_stream(want, back, 1e-9, path + " -> EIA " + dialect);
+            // and back to ESSI in the source's dialect
+            ConvertOptions to_essi;
+            to_essi.target = source.profile;
+            const ConvertResult essi = convert_tape(eia.text, setup_of(InputFormat::Eia, o.target), to_essi);
+            expect_same_stream(want, stream_of(essi.text, setup_of(InputFormat::Essi, source.profile)), 1e-9,
+                               path + " -> EIA " + dialect + " -> ESSI");
+        }
+    }
+    EXPECT_GE(compared, 20u);  // (most tapes have a word for every function in both dialects)
+}
+
+TEST(Convert, WritersText) {
+    const Profile woyda = *builtin_profile("woyda");
+    const std::string tape = "39+600\n29\n7\n+1000+0\n+0+0+0+500+\n8\n38\n41+2\n45\n/\n";
+    ConvertOptions o;
+    o.target = woyda;
+    o.to = OutputFormat::Essi;
+    EXPECT_EQ(convert_tape(tape, setup_of(InputFormat::Essi, woyda), o).text,
+              "%\n39+600\n29\n7\n+1000+0\n+0+0+0+500+\n8\n38\n41+2\n45\n63\n");
+    o.to = OutputFormat::Eia;
+    const ConvertResult eia = convert_tape(tape, setup_of(InputFormat::Essi, woyda), o);
+    EXPECT_EQ(eia.text, "%\nG91\nF600\nM67\nM70\nG01 X100 Y0\nG03 X0 Y0 I0 J50\nM71\nM69\nG04 X2000\nM72\nM02\n");
+    o.to = OutputFormat::Gcode;
+    o.absolute = true;
+    const ConvertResult g = convert_tape(tape, setup_of(InputFormat::Essi, woyda), o);
+    EXPECT_EQ(g.text, "G17 G21 G40 G90 G91.1 G94\nG41.1 D2\nM3 $0 S1\nG1 X100 Y0 F600\nG3 X100 Y0 I0 J50\nM5 $0\nG40\n"
+                      "G4 P2\n(ESSI 45: Torch head lower)\nM2\n");
+    ASSERT_EQ(g.diagnostics.size(), 1u);  // 45 has no G-code counterpart
+    EXPECT_EQ(g.diagnostics[0].code, DiagCode::W501_NoCounterpart);
+    EXPECT_EQ(g.diagnostics[0].line, 9u);
+}
+
+TEST(Convert, ParabolasBecomeArcsWithinTheTolerance) {
+    const std::string text = read_file(examples_dir() + "/parabola.esi");
+    const TapeSetup source = setup_tape(text, std::nullopt, std::nullopt);
+    const Stream want = stream_of(text, source);
+    ConvertOptions o;
+    o.target = source.profile;
+    o.target.unit_mm = 0.001;  // (fine enough that the arcs' ends are not rounded off the curve)
+    const ConvertResult r = convert_tape(text, source, o);
+    std::size_t w502 = 0;
+    for (const Diagnostic& d : r.diagnostics) w502 += d.code == DiagCode::W502_ParabolaAsArcs;
+    EXPECT_EQ(w502, 3u);
+    const Stream back = stream_of(r.text, setup_of(InputFormat::Essi, o.target));
+    ASSERT_FALSE(back.errors);
+    // every motion that is not a parabola is there; each parabola's end is the end of one of the arcs
+    std::size_t k = 0;
+    for (const MotionRecord& m : want.motions) {
+        while (k < back.motions.size() && m.curve == CurveKind::Parabola &&
+               std::hypot(back.motions[k].end.x - m.end.x, back.motions[k].end.y - m.end.y) > 1e-3)
+            ++k;
+        ASSERT_LT(k, back.motions.size());
+        EXPECT_NEAR(back.motions[k].end.x, m.end.x, 1e-3);
+        EXPECT_NEAR(back.motions[k].end.y, m.end.y, 1e-3);
+        ++k;
+    }
+}
