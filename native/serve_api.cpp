@@ -11,6 +11,7 @@
 #include "essi/profile.hpp"
 #include "essi/report.hpp"
 #include "essi/report_json.hpp"
+#include "essi/write.hpp"
 #include "pipelined_check.hpp"
 #include "serve.hpp"
 #include "serve_socket.hpp"
@@ -110,6 +111,38 @@ void check_tape(const httplib::Request& req, httplib::Response& res, const std::
     res.set_content(dump(report_to_json(one, request->profile_name), 2) + "\n", "application/json");
 }
 
+// POST /api/convert?to=essi|eia|gcode&profile=P|auto&to_profile=Q&absolute=1&input=...&format=json: the
+// converted program as text/plain (the count of warnings in X-Essi-Warnings), or with format=json
+// {"text", "diagnostics"}; 422 with the diagnostics when the tape has errors (as `essi convert` exits 1).
+void convert(const httplib::Request& req, httplib::Response& res, const std::string& body) {
+    const auto request = tape_request(req, res);
+    if (!request) return;
+    const std::string to = param_or(req, "to", "");
+    ConvertOptions options;
+    if (to == "essi") options.to = OutputFormat::Essi;
+    else if (to == "eia") options.to = OutputFormat::Eia;
+    else if (to == "gcode") options.to = OutputFormat::Gcode;
+    else return json_error(res, 400, "to=" + std::string(to.empty() ? "(none)" : "'" + to + "'") + ": expected essi, eia or gcode");
+    const TapeSetup setup = request->setup(body);
+    options.target = setup.profile;
+    if (req.has_param("to_profile")) {
+        const auto target = builtin_profile(req.get_param_value("to_profile"));
+        if (!target) return json_error(res, 400, "unknown to_profile '" + req.get_param_value("to_profile") + "'");
+        options.target = *target;
+    }
+    options.absolute = param_or(req, "absolute", "0") == "1";
+    const ConvertResult r = convert_tape(body, setup, options);
+    const nlohmann::json diagnostics = diagnostics_to_json(r.diagnostics);
+    if (!r.ok()) {
+        res.status = 422;
+        return res.set_content(dump({{"error", "the tape has errors"}, {"diagnostics", diagnostics}}), "application/json");
+    }
+    if (param_or(req, "format", "text") == "json")
+        return res.set_content(dump({{"text", r.text}, {"diagnostics", diagnostics}}), "application/json");
+    res.set_header("X-Essi-Warnings", std::to_string(r.diagnostics.size()));
+    res.set_content(r.text, "text/plain; charset=us-ascii");
+}
+
 void share_tape(ShareStore& store, httplib::Response& res, const std::string& body) {
     if (body.empty()) return json_error(res, 400, "empty body: POST the tape's bytes");
     const ShareStore::PutResult put = store.put(body);
@@ -177,6 +210,7 @@ void add_method_errors(httplib::Server& server) {
         return [handler](const httplib::Request& req, httplib::Response& res, const Reader&) { handler(req, res); };
     };
     server.Get("/api/check", not_allowed("POST"));
+    server.Get("/api/convert", not_allowed("POST"));
     server.Put("/api/check", ignore_body(not_allowed("POST")));
     server.Delete("/api/check", ignore_body(not_allowed("POST")));
     server.Get("/api/share", not_allowed("POST"));
@@ -200,6 +234,9 @@ void add_api_routes(httplib::Server& server, const std::shared_ptr<ApiContext>& 
     });
     server.Post("/api/check", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
         with_body(*ctx, req, res, reader, [&](const std::string& body) { check_tape(req, res, body); });
+    });
+    server.Post("/api/convert", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
+        with_body(*ctx, req, res, reader, [&](const std::string& body) { convert(req, res, body); });
     });
     server.Post("/api/share", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
         if (const unsigned wait = ctx->share_rate.try_take(client_key(req.remote_addr))) {
