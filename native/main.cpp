@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "essi/diagnostics.hpp"
+#include "essi/dxf.hpp"
 #include "essi/profile.hpp"
 #include "essi/write.hpp"
 #include "essi/report.hpp"
@@ -249,6 +250,7 @@ bool run_program(const std::vector<std::string>& args) {
 struct RenderCliOptions {
     std::string path;
     std::string output;
+    std::string format;  // svg (default) or dxf; "" = by the output's extension
     std::string profile;
     std::string input = "auto";
     bool png = false;
@@ -270,6 +272,23 @@ int run_render(const RenderCliOptions& o) {
     options.width_px = o.width;
     options.show_travel = !o.no_travel;
     const essi::TapeSetup setup = request->setup(file.bytes);
+    const auto ends_with = [](const std::string& s, const char* ext) {
+        const std::size_t n = std::strlen(ext);
+        return s.size() > n && s.compare(s.size() - n, n, ext) == 0;
+    };
+    if (o.format == "dxf" || (o.format.empty() && ends_with(o.output, ".dxf"))) {
+        const essi::DxfResult dxf = essi::render_dxf(file.bytes, setup);
+        std::string output = o.output;
+        if (output.empty()) output = (o.path == "-" ? std::string("stdin") : std::filesystem::path(o.path).filename().string()) + ".dxf";
+        if (!write_file(output, dxf.text)) {
+            err("essi render: cannot write " + output + ": " + std::strerror(errno) + "\n");
+            return kExitUsage;
+        }
+        if (output != "-") err("essi render: wrote " + output + "\n");
+        const bool errors = std::any_of(dxf.diagnostics.begin(), dxf.diagnostics.end(),
+                                        [](const essi::Diagnostic& d) { return d.severity == essi::Severity::Error; });
+        return finish(errors ? kExitTapeErrors : kExitOk);
+    }
     const essi::native::RenderResult r = essi::native::render_svg(file.bytes, setup.profile, options, setup.format);
     std::string output = o.output;
     const bool png = o.png || (output.size() > 4 && output.compare(output.size() - 4, 4, ".png") == 0);
@@ -521,6 +540,9 @@ int main(int argc, char** argv) {
     render->add_option("-o,--output", render_opts.output, "Output file ('-' = stdout; default NAME.svg)");
     render->add_option("--profile", render_opts.profile, kProfileHelp)->type_name("NAME|FILE|auto");
     add_input_option(render, render_opts.input);
+    render->add_option("--format", render_opts.format, "svg (default) or dxf (R12: layers CUT, MARK, TRAVEL, DIAGNOSTICS; also when OUT ends in .dxf)")
+        ->check(CLI::IsMember({"svg", "dxf"}))
+        ->type_name("svg|dxf");
     render->add_flag("--png", render_opts.png, "Write PNG (through rsvg-convert; also when OUT ends in .png)");
     render->add_flag("--no-travel", render_opts.no_travel, "Leave out travel and rapid motion");
     render->add_option("--width", render_opts.width, "Width of the picture in pixels")
