@@ -163,6 +163,14 @@ test('the viewer reads with the dialect the tape shows, says why, and switches i
   assert.equal(state.stats.pierces, 3);
   assert.equal(state.segments, 4 * 3 + 2);
   await page.screenshot({ path: path.join(shots, 'multi-torch.png') });
+  // The Export menu's files are essi convert's and essi render's, byte for byte.
+  const tape = path.join(examplesDir, 'woyda_multi_torch.esi');
+  for (const [format, args] of [['gcode', ['convert', '--to', 'gcode', '--absolute']], ['eia', ['convert', '--to', 'eia']],
+                                ['essi', ['convert', '--to', 'essi']], ['dxf', ['render', '--format', 'dxf']]]) {
+    const page_text = await page.evaluate((f) => essikit.exportText(f), format);
+    const cli = execFileSync(essiBin, [...args, '--profile', 'auto', tape, '-o', '-'], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] });
+    assert.equal(page_text, cli, `export ${format}`);
+  }
   await page.close();
 });
 

@@ -10,6 +10,8 @@
 #include "essi/geom.hpp"
 #include "essi/profile.hpp"
 #include "essi/share_link.hpp"
+#include "essi/dxf.hpp"
+#include "essi/write.hpp"
 #include "essi/sniff.hpp"
 #include "platform/Platform.hpp"
 
@@ -228,6 +230,25 @@ void App::notify(std::string text) {
 std::string App::view_query() const {
     const Point o = origin();
     return share_view_query({view_.cx + o.x, view_.cy + o.y, view_.zoom}, selection_.line);
+}
+
+std::string App::export_text(const std::string& format) const {
+    const Document* d = document();
+    if (!d) return {};
+    if (format == "dxf") return render_dxf(d->bytes, d->setup).text;
+    ConvertOptions o;
+    o.to = format == "eia" ? OutputFormat::Eia : format == "gcode" ? OutputFormat::Gcode : OutputFormat::Essi;
+    o.target = d->profile;
+    o.absolute = format == "gcode";  // (G-code for LinuxCNC: absolute, as CAM posts write it)
+    return convert_tape(d->bytes, d->setup, o).text;
+}
+
+void App::export_file(const std::string& format) {
+    const Document* d = document();
+    if (!d) return notify("Load a tape first.");
+    const std::string stem = d->name.substr(0, d->name.find_last_of('.'));
+    const char* ext = format == "dxf" ? ".dxf" : format == "eia" ? ".eia" : format == "gcode" ? ".ngc" : ".esi";
+    platform::save_file(*this, stem + ext, export_text(format));
 }
 
 void App::share() {

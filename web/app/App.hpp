@@ -69,6 +69,10 @@ public:
     void set_layer(int layer, bool visible);  // window.essikit.setLayer: 0-3 MotionKind, 4 pierces, 5 start
     void fit();
     void share();  // the Share button and S
+    // The tape converted (`essi convert`: "essi", "eia", "gcode" in the profile it is read with) or drawn
+    // ("dxf"); empty without a tape. export_file saves it (a download in the browser).
+    [[nodiscard]] std::string export_text(const std::string& format) const;
+    void export_file(const std::string& format);
     void share_done(bool ok, std::string text);
     void notify(std::string text);  // a short message in the toolbar (copied, paste ignored, ...)
 

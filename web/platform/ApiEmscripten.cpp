@@ -108,6 +108,16 @@ EMSCRIPTEN_KEEPALIVE const char* essi_parse_share(const char* fragment) {
 
 EMSCRIPTEN_KEEPALIVE const char* essi_share_packed() { return g_share_packed.data(); }
 
+// The tape converted or drawn as the Export menu makes it ("essi", "eia", "gcode", "dxf"), for the page's tests.
+namespace {
+std::string g_export;
+}
+EMSCRIPTEN_KEEPALIVE const char* essi_export(const char* format) {
+    App* app = App::instance();
+    g_export = app ? app->export_text(format ? format : "") : std::string();
+    return g_export.c_str();
+}
+
 // Makes a share link as the Share button does; the page's essikitShare finishes it.
 EMSCRIPTEN_KEEPALIVE void essi_share() {
     if (App* app = App::instance()) app->share();

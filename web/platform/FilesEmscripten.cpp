@@ -28,4 +28,17 @@ void open_button_at(float x, float y, float width, float height) {
     }, x, y, width, height);
 }
 
+void save_file(App&, const std::string& name, const std::string& text) {
+    // (no commas inside the JavaScript: the EM_ASM macro would split its argument there)
+    EM_ASM({
+        const blob = new Blob([HEAPU8.slice($1, $1 + $2)], {type: 'application/octet-stream'});
+        const a = document.createElement('a');
+        a.href = URL.createObjectURL(blob);
+        a.download = UTF8ToString($0);
+        document.body.appendChild(a);
+        a.click();
+        setTimeout(function() { URL.revokeObjectURL(a.href); a.remove(); }, 1000);
+    }, name.c_str(), text.data(), static_cast<int>(text.size()));
+}
+
 }  // namespace essi::viewer::platform

@@ -52,4 +52,10 @@ void open_file_dialog(App& app) {
     else app.notify("Cannot read " + path);
 }
 
+void save_file(App& app, const std::string& name, const std::string& text) {
+    std::ofstream out(name, std::ios::binary);
+    out << text;
+    app.notify(out ? "Wrote " + name + " (in the current folder)." : "Cannot write " + name + ".");
+}
+
 }  // namespace essi::viewer::platform

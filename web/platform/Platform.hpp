@@ -23,6 +23,9 @@ void open_file_dialog(App& app);
 // the page opens the picker in the click event itself when it lands on this rectangle.
 void open_button_at(float x, float y, float width, float height);
 
+// Saves `text` as a file called `name`: the browser's download, or a file in the current folder natively.
+void save_file(App& app, const std::string& name, const std::string& text);
+
 // Copies text to the clipboard.
 void copy_text(const std::string& text);
 // Ctrl+V on the canvas: natively loads the clipboard's text; in the browser the page's paste event does it.

@@ -37,6 +37,18 @@ void profile_combo(App& app) {
         ImGui::SetTooltip("Machine and dialect profile; auto: the dialect the tape's codes show (see the Tape panel)");
 }
 
+// Downloads: the tape as ESSI, EIA or G-code (essi convert) and its drawing as DXF.
+void export_menu(App& app) {
+    if (ImGui::Button("Export...")) ImGui::OpenPopup("export");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Download the tape converted (ESSI, EIA, G-code for LinuxCNC) or drawn (DXF)");
+    if (!ImGui::BeginPopup("export")) return;
+    static constexpr std::pair<const char*, const char*> kFormats[] = {
+        {"ESSI (.esi)", "essi"}, {"EIA, RS-274 (.eia)", "eia"}, {"G-code for LinuxCNC (.ngc)", "gcode"}, {"DXF drawing (.dxf)", "dxf"}};
+    for (const auto& [label, format] : kFormats)
+        if (ImGui::Selectable(label)) app.export_file(format);
+    ImGui::EndPopup();
+}
+
 // The tape's name and "ok" or its error and warning counts.
 void verdict(const Document& doc) {
     const std::size_t e = doc.count(Severity::Error), w = doc.count(Severity::Warning);
@@ -59,6 +71,8 @@ void toolbar(App& app) {
     if (ImGui::Button("Paste")) platform::paste(app);
     ImGui::SameLine();
     if (ImGui::Button("Share link")) app.share();
+    ImGui::SameLine();
+    export_menu(app);
     ImGui::SameLine();
     if (ImGui::Button("Fit (F)")) app.fit();
     ImGui::SameLine();
