@@ -88,6 +88,13 @@ std::optional<essi::Profile> resolve_profile(const std::string& arg) {
     return parsed.profile;
 }
 
+// A tape file (or '-') within --max-size; the problem on stderr when it cannot be read.
+essi::native::ReadResult read_tape_file(const std::string& path, std::uint64_t max_size) {
+    essi::native::ReadResult file = essi::native::read_whole_file(path, max_size);
+    if (!file.ok) err("essi: cannot read " + essi::display_text(path) + ": " + file.error + "\n");
+    return file;
+}
+
 // --profile and --input: "auto" leaves the choice to each tape's content (essi/dialect.hpp).
 std::optional<essi::native::TapeRequest> resolve_request(const std::string& profile_arg, const std::string& input_arg) {
     essi::native::TapeRequest r;
@@ -262,11 +269,8 @@ struct RenderCliOptions {
 int run_render(const RenderCliOptions& o) {
     const auto request = resolve_request(o.profile, o.input);
     if (!request) return kExitUsage;
-    const essi::native::ReadResult file = essi::native::read_whole_file(o.path, o.max_size);
-    if (!file.ok) {
-        err("essi: cannot read " + essi::display_text(o.path) + ": " + file.error + "\n");
-        return kExitUsage;
-    }
+    const essi::native::ReadResult file = read_tape_file(o.path, o.max_size);
+    if (!file.ok) return kExitUsage;
     essi::native::RenderOptions options;
     options.title = o.path == "-" ? std::string("-") : essi::display_text(std::filesystem::path(o.path).filename().string());
     options.width_px = o.width;
@@ -348,11 +352,8 @@ struct ConvertCliOptions {
 int run_convert(const ConvertCliOptions& o) {
     const auto request = resolve_request(o.profile, o.input);
     if (!request) return kExitUsage;
-    const essi::native::ReadResult file = essi::native::read_whole_file(o.path, o.max_size);
-    if (!file.ok) {
-        err("essi: cannot read " + essi::display_text(o.path) + ": " + file.error + "\n");
-        return kExitUsage;
-    }
+    const essi::native::ReadResult file = read_tape_file(o.path, o.max_size);
+    if (!file.ok) return kExitUsage;
     const essi::TapeSetup setup = request->setup(file.bytes);
     essi::ConvertOptions options;
     options.to = o.to == "eia" ? essi::OutputFormat::Eia : o.to == "gcode" ? essi::OutputFormat::Gcode : essi::OutputFormat::Essi;
@@ -398,11 +399,8 @@ int run_trace(const std::string& path, const std::string& profile_arg, const std
               std::uint64_t max_size, int decimals) {
     const auto request = resolve_request(profile_arg, input_arg);
     if (!request) return kExitUsage;
-    const essi::native::ReadResult file = essi::native::read_whole_file(path, max_size);
-    if (!file.ok) {
-        err("essi: cannot read " + essi::display_text(path) + ": " + file.error + "\n");
-        return kExitUsage;
-    }
+    const essi::native::ReadResult file = read_tape_file(path, max_size);
+    if (!file.ok) return kExitUsage;
     // The trace of a big tape is hundreds of MB: it is streamed in chunks, never held whole.
     const essi::TapeSetup setup = request->setup(file.bytes);
     const auto diagnostics =

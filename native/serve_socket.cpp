@@ -185,14 +185,18 @@ void HardenedServer::serve_connection(socket_t sock) {
         const int wait_s = left == keep_alive_max_count_ ? limits_.request_timeout_s : limits_.keep_alive_timeout_s;
         if (!wait_for(sock, POLLIN, wait_s * 1000)) break;
         strm.begin_request();
-        t_close_after = false;
-        bool closed = false;
-        const bool ok = process_request(strm, left == 1, closed, nullptr);
-        if (t_worker) t_worker->release();
-        t_worker = nullptr;
-        if (!ok || closed || t_close_after) break;
+        if (!serve_request(strm, left == 1)) break;
     }
     t_stream = nullptr;
+}
+
+bool HardenedServer::serve_request(httplib::Stream& strm, bool last) {
+    t_close_after = false;
+    bool closed = false;
+    const bool ok = process_request(strm, last, closed, nullptr);
+    if (t_worker) t_worker->release();  // (the guard took a worker slot for the request)
+    t_worker = nullptr;
+    return ok && !closed && !t_close_after;
 }
 
 BodyReading::BodyReading() : worker_(t_worker) {
@@ -247,14 +251,8 @@ std::string HardenedServer::handle_bytes(std::string_view bytes) {
     // socket: a server that never listened is made to look running for the call (the number is never used).
     const socket_t listening = svr_sock_;
     if (listening == INVALID_SOCKET) svr_sock_ = 0;
-    for (std::size_t left = keep_alive_max_count_; left > 0 && !strm.done(); --left) {
-        t_close_after = false;
-        bool closed = false;
-        const bool ok = process_request(strm, left == 1, closed, nullptr);
-        if (t_worker) t_worker->release();
-        t_worker = nullptr;
-        if (!ok || closed || t_close_after) break;
-    }
+    for (std::size_t left = keep_alive_max_count_; left > 0 && !strm.done(); --left)
+        if (!serve_request(strm, left == 1)) break;
     svr_sock_ = listening;
     return out;
 }

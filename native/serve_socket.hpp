@@ -49,6 +49,8 @@ public:
 private:
     bool process_and_close_socket(socket_t sock) override;
     void serve_connection(socket_t sock);
+    // One request from `strm` (the last of the connection when `last`); false when the connection ends.
+    bool serve_request(httplib::Stream& strm, bool last);
     ConnectionLimits limits_;
     ClientSlots slots_;
     Semaphore workers_;

@@ -54,6 +54,7 @@ HardenedServer& server() {
         if (!store) fail("cannot open the share store", error);
         auto server = std::make_unique<HardenedServer>(essi::native::ConnectionLimits{});
         essi::native::configure_server(*server, o, store);
+        server->set_logger(httplib::Logger());  // (the log of every refused request would be most of the run's time)
         return server;
     }();
     return *s;
