@@ -13,8 +13,8 @@ namespace {
 
 // The evidence is read from the tape's head and tail (a tape's dialect shows in its header and set-up, and in how
 // it ends), so that the scan costs the same for any size.
-constexpr std::size_t kHeadBytes = 64 << 10;
-constexpr std::size_t kTailBytes = 16 << 10;
+constexpr std::size_t kHeadBytes = 16 << 10;
+constexpr std::size_t kTailBytes = 4 << 10;
 constexpr std::size_t kEvidencePerDialect = 3;   // what a report lists of each dialect's evidence
 constexpr std::size_t kQuoteChars = 24;
 

@@ -485,12 +485,9 @@ void Machine::warn_macro_only(const Block& b) {
         case fn::kLineMarkingOff: tool(kToolLineMarker, false); break;
         case fn::kToolFiveOn: tool(kToolFive, true); break;
         case fn::kToolFiveOff: tool(kToolFive, false); break;
-        case fn::kWoydaProgramZero:
-            if (profile_.dialect == Dialect::Woyda) {
-                return_to_zero(b, index);
-                return;
-            }
-            break;
+        case fn::kWoydaProgramZero:  // (only a dialect whose table assigns 62 gets here: ISO's 62 is W208 above)
+            return_to_zero(b, index);
+            return;
         case fn::kWoydaBurnerCount:
             burner_count_ = b;
             burner_count_value_ = value;
