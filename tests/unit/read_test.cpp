@@ -342,7 +342,8 @@ TEST(ReadWords, ALineOfSignsCostsNoMemoryPerSign) {
     EXPECT_NE(t.diagnostics().front().message.find("1000000 signed words"), std::string::npos);
     EXPECT_LT(t.memory_bytes(), 4096u);
     const std::string bytes = line + "+1+1\n";
-    TapeReader reader(bytes, *builtin_profile("iso6582"));  // a chunk at a time, as a check reads
+    const Profile iso = *builtin_profile("iso6582");  // (the reader keeps a reference: the profile must outlive it)
+    TapeReader reader(bytes, iso);                    // a chunk at a time, as a check reads
     Tape chunk;
     ASSERT_TRUE(reader.read_chunk(chunk, 100));
     EXPECT_LT(chunk.memory_bytes(), 4096u);

@@ -255,7 +255,7 @@ protected:
                                 std::uint32_t last_line);
 };
 
-// The front end of `format` for `bytes` (which must outlive it).
+// The front end of `format` for `bytes` and `profile` (both must outlive it: it keeps references).
 [[nodiscard]] std::unique_ptr<BlockReader> make_block_reader(InputFormat format, std::string_view bytes,
                                                              const Profile& profile);
 
@@ -263,7 +263,8 @@ protected:
 [[nodiscard]] Tape read_tape(std::string_view bytes, const Profile& profile, InputFormat format = InputFormat::Essi);
 
 // Reads a tape a chunk of blocks at a time, so that a checker can interpret each chunk while it is
-// still in cache, and never holds the whole tape (the same reader as read_tape; the same results).
+// still in cache, and never holds the whole tape (the same reader as read_tape; the same results). The bytes and
+// the profile must outlive the reader.
 class TapeReader {
 public:
     TapeReader(std::string_view bytes, const Profile& profile, InputFormat format = InputFormat::Essi);
