@@ -40,6 +40,33 @@ std::string mm_text(double v) {
     return buf;
 }
 
+// The function table flattened to one byte of flags per code, once per dialect and process: half the blocks of a
+// tape are functions, and a short tape (a server request, a fuzz input) must not pay for searching the table.
+constexpr int kFunctionCodes = fn::kCodeCount;
+enum : std::uint8_t { kAssigned = 1, kManufacturer = 2, kTakesNoValue = 4, kNeedsValue = 8 };
+using FunctionFlags = std::array<std::uint8_t, kFunctionCodes>;
+
+FunctionFlags flatten_functions(Dialect dialect) {
+    FunctionFlags flags{};
+    for (int code = 0; code < kFunctionCodes; ++code) {
+        const auto info = function_info(code, dialect);
+        std::uint8_t f = 0;
+        if (info && info->assigned) f |= kAssigned;
+        if (info && info->manufacturer) f |= kManufacturer;
+        if (info && info->value == FunctionValue::None) f |= kTakesNoValue;
+        if (info && info->value == FunctionValue::Required) f |= kNeedsValue;
+        flags[code] = f;
+    }
+    return flags;
+}
+
+const FunctionFlags& function_flags_of(Dialect dialect) {
+    static const std::array<FunctionFlags, 3> tables = {flatten_functions(Dialect::Iso6582),
+                                                         flatten_functions(Dialect::Woyda),
+                                                         flatten_functions(Dialect::Hypertherm)};
+    return tables[static_cast<std::size_t>(dialect)];
+}
+
 }  // namespace
 
 namespace detail {
@@ -51,18 +78,8 @@ public:
     Machine(std::string_view source, const Profile& profile, MotionSink* sink, StatsSink* stats, MotionSink* also,
             std::vector<Diagnostic>& diagnostics)
         : source_(source), profile_(profile), sink_(sink), stats_(stats), also_(stats ? also : nullptr),
-          diags_(diagnostics) {
+          diags_(diagnostics), function_flags_(function_flags_of(profile.dialect)) {
         feed_mm_min_ = profile_.feed_mm_min;
-        // The function table, flattened once per run: half the blocks of a tape are functions.
-        for (int code = 0; code < kFunctionCodes; ++code) {
-            const auto info = function_info(code, profile.dialect);
-            std::uint8_t f = 0;
-            if (info && info->assigned) f |= kAssigned;
-            if (info && info->manufacturer) f |= kManufacturer;
-            if (info && info->value == FunctionValue::None) f |= kTakesNoValue;
-            if (info && info->value == FunctionValue::Required) f |= kNeedsValue;
-            function_flags_[code] = f;
-        }
     }
 
     void run(const Tape& chunk, std::span<const MotionMeasure> measures);
@@ -119,9 +136,6 @@ private:
     void set_tools(std::uint8_t tools) { tools_ = tools; }
     void check_table(const MotionRecord& m, const Block& b);
 
-    static constexpr int kFunctionCodes = fn::kCodeCount;
-    enum : std::uint8_t { kAssigned = 1, kManufacturer = 2, kTakesNoValue = 4, kNeedsValue = 8 };
-    std::array<std::uint8_t, kFunctionCodes> function_flags_{};
     [[nodiscard]] std::string function_name(int code) const {
         const auto info = function_info(code, profile_.dialect);
         return info ? std::string(info->name) : std::string("?");
@@ -136,6 +150,7 @@ private:
     // The one more sink of a check (the viewer's document): given the lines of head 1 as UnitLines.
     MotionSink* const also_;
     std::vector<Diagnostic>& diags_;
+    const FunctionFlags& function_flags_;
     // A motion or an event to the sinks: the statistics, then the one more sink; or the one sink.
     template <class Item>
     void send(const Item& item) {
