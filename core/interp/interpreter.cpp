@@ -43,7 +43,7 @@ std::string mm_text(double v) {
 // The function table flattened to one byte of flags per code, once per dialect and process: half the blocks of a
 // tape are functions, and a short tape (a server request, a fuzz input) must not pay for searching the table.
 constexpr int kFunctionCodes = fn::kCodeCount;
-enum : std::uint8_t { kAssigned = 1, kManufacturer = 2, kTakesNoValue = 4, kNeedsValue = 8 };
+enum : std::uint8_t { kAssigned = 1, kManufacturer = 2, kTakesNoValue = 4, kNeedsValue = 8, kHasRange = 16 };
 using FunctionFlags = std::array<std::uint8_t, kFunctionCodes>;
 
 FunctionFlags flatten_functions(Dialect dialect) {
@@ -55,16 +55,27 @@ FunctionFlags flatten_functions(Dialect dialect) {
         if (info && info->manufacturer) f |= kManufacturer;
         if (info && info->value == FunctionValue::None) f |= kTakesNoValue;
         if (info && info->value == FunctionValue::Required) f |= kNeedsValue;
+        if (function_value_range(code)) f |= kHasRange;
         flags[code] = f;
     }
     return flags;
 }
 
+// Each dialect's table made the first time it is asked for (a process checks with one dialect, mostly).
 const FunctionFlags& function_flags_of(Dialect dialect) {
-    static const std::array<FunctionFlags, 3> tables = {flatten_functions(Dialect::Iso6582),
-                                                         flatten_functions(Dialect::Woyda),
-                                                         flatten_functions(Dialect::Hypertherm)};
-    return tables[static_cast<std::size_t>(dialect)];
+    switch (dialect) {
+        case Dialect::Woyda: {
+            static const FunctionFlags woyda = flatten_functions(Dialect::Woyda);
+            return woyda;
+        }
+        case Dialect::Hypertherm: {
+            static const FunctionFlags hypertherm = flatten_functions(Dialect::Hypertherm);
+            return hypertherm;
+        }
+        case Dialect::Iso6582: break;
+    }
+    static const FunctionFlags iso = flatten_functions(Dialect::Iso6582);
+    return iso;
 }
 
 }  // namespace
@@ -80,6 +91,7 @@ public:
         : source_(source), profile_(profile), sink_(sink), stats_(stats), also_(stats ? also : nullptr),
           diags_(diagnostics), function_flags_(function_flags_of(profile.dialect)) {
         feed_mm_min_ = profile_.feed_mm_min;
+        set_torches(1);
     }
 
     void run(const Tape& chunk, std::span<const MotionMeasure> measures);
@@ -186,6 +198,13 @@ private:
     std::optional<Block> burner_count_;  // a 135 waiting for its 136
     double burner_count_value_ = 1;      // its value
     std::uint8_t torches_ = 1;           // torches cutting (135 + 136): each cut is made this many times
+    // A check whose straight lines go to the statistics directly, without a record: no table to check and one
+    // torch (several torches copy the cuts: their records carry the copies). One test per line.
+    bool lines_direct_ = false;
+    void set_torches(std::uint8_t n) {
+        torches_ = n;
+        lines_direct_ = stats_ && !profile_.table && torches_ == 1;
+    }
     Point torch_step_;                   // mm between neighbouring torches (136, along profile.torch_direction)
     bool inside_table_ = true;
     std::optional<Block> last_block_;
@@ -432,7 +451,7 @@ void Machine::warn_macro_only(const Block& b) {
     if (zero_offset_pending_ || (function_flags(code) & (kAssigned | refused)) != kAssigned) [[unlikely]] {
         if (!admit_function(b, has_value, value)) return;
     }
-    if (has_value && !value_in_range(b, value)) [[unlikely]] return;
+    if (has_value && (function_flags(code) & kHasRange) && !value_in_range(b, value)) [[unlikely]] return;
     double event_value = value;
     EventKind kind = EventKind::Function;
     const auto tool = [&](std::uint8_t bit, bool on) { set_tools(on ? (tools_ | bit) : (tools_ & ~bit)); };
@@ -479,7 +498,7 @@ void Machine::warn_macro_only(const Block& b) {
             kerf_offset_mm_ = 0;
             set_mapping(axis_mapping(fn::kAxesNormal));
             absolute_ = false;
-            torches_ = 1;
+            set_torches(1);
             break;
         case fn::kWoydaLoopEnd:
         case fn::kWoydaLoopStart:
@@ -509,7 +528,7 @@ void Machine::warn_macro_only(const Block& b) {
             break;
         case fn::kWoydaBurnerSpacing:
             // (a 136 without its 135 got W212 in run(): the count stays)
-            if (burner_count_) torches_ = static_cast<std::uint8_t>(burner_count_value_);
+            if (burner_count_) set_torches(static_cast<std::uint8_t>(burner_count_value_));
             torch_step_ = {profile_.torch_direction.x * value * profile_.unit_mm,
                            profile_.torch_direction.y * value * profile_.unit_mm};
             burner_count_.reset();
@@ -631,7 +650,7 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
         const IPoint d = map(w[0], w[1]);
         const IPoint end{base.x + d.x, base.y + d.y};
         const double length_mm = units_length(end.x - cur.x, end.y - cur.y) * profile_.unit_mm;
-        if (stats_ && !profile_.table && (torches_ == 1 || (tools_ & kCuttingTools) == 0)) {
+        if (lines_direct_ || (stats_ && !profile_.table && (tools_ & kCuttingTools) == 0)) {
             // Checked: what the statistics count of a line (StatsSink::add_line, as on_motion does for its
             // record), without making the record; the one more sink's UnitLine.
             const MotionState state = begin_motion(b);
