@@ -1,0 +1,370 @@
+// The kerf-compensated path: offset pieces, corners (join, trim, gouge), entry and exit (essi/kerf.hpp).
+#include "essi/kerf.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include "essi/geom.hpp"
+
+namespace essi {
+namespace {
+
+Point operator+(Point a, Point b) { return {a.x + b.x, a.y + b.y}; }
+Point operator-(Point a, Point b) { return {a.x - b.x, a.y - b.y}; }
+Point operator*(double k, Point a) { return {k * a.x, k * a.y}; }
+double dot(Point a, Point b) { return a.x * b.x + a.y * b.y; }
+double cross(Point a, Point b) { return a.x * b.y - a.y * b.x; }
+double norm(Point a) { return std::hypot(a.x, a.y); }
+Point unit(Point a) {
+    const double n = norm(a);
+    return n > 0 ? Point{a.x / n, a.y / n} : Point{};
+}
+Point left_normal(Point t) { return {-t.y, t.x}; }
+
+// The direction of travel of an arc at a point of it.
+Point arc_tangent(Point p, Point centre, bool ccw) {
+    const Point r = unit(p - centre);
+    return ccw ? Point{-r.y, r.x} : Point{r.y, -r.x};
+}
+
+// A parabola's direction of travel at parameter t (t runs from t0 to t1).
+Point parabola_tangent(const ParabolaGeom& g, double t) {
+    const Point d = g.u + (t / g.p) * g.n;
+    return unit(g.t1 >= g.t0 ? d : -1.0 * d);
+}
+
+Point start_tangent(const MotionRecord& m) {
+    switch (m.curve) {
+        case CurveKind::Line: return unit(m.end - m.start);
+        case CurveKind::Arc: return arc_tangent(m.start, m.centre, m.ccw);
+        case CurveKind::Parabola: return parabola_tangent(m.parabola, m.parabola.t0);
+    }
+    return {};
+}
+Point end_tangent(const MotionRecord& m) {
+    switch (m.curve) {
+        case CurveKind::Line: return unit(m.end - m.start);
+        case CurveKind::Arc: return arc_tangent(m.end, m.centre, m.ccw);
+        case CurveKind::Parabola: return parabola_tangent(m.parabola, m.parabola.t1);
+    }
+    return {};
+}
+
+bool is_full_circle(const MotionRecord& m) { return m.curve == CurveKind::Arc && std::abs(m.sweep) > 2 * kPi - 1e-12; }
+
+// A piece's geometry after its start or end moved: radius, sweep and length again.
+void reshape(MotionRecord& r, bool full_circle = false) {
+    if (r.curve == CurveKind::Arc) {
+        r.radius = norm(r.start - r.centre);
+        r.end_radius = norm(r.end - r.centre);
+        r.sweep = norm(r.end - r.start) <= kKerfLengthEpsilon && !full_circle
+                      ? 0.0
+                      : arc_sweep(r.start, r.end, r.centre, r.ccw, full_circle);
+        r.length_mm = std::abs(r.sweep) * (r.radius + r.end_radius) / 2;
+    } else {
+        r.curve = CurveKind::Line;
+        r.length_mm = norm(r.end - r.start);
+    }
+}
+
+// The intersections of two pieces (lines and arcs of the compensated path), each taken as a whole line or circle.
+std::vector<Point> intersections(const MotionRecord& a, const MotionRecord& b) {
+    std::vector<Point> out;
+    const auto line_circle = [&](Point p, Point d, Point c, double r) {
+        // |p + s d - c| = r, d a unit vector
+        const Point f = p - c;
+        const double bq = dot(f, d), cq = dot(f, f) - r * r;
+        const double disc = bq * bq - cq;
+        if (disc < 0) return;
+        const double root = std::sqrt(disc);
+        out.push_back(p + (-bq - root) * d);
+        out.push_back(p + (-bq + root) * d);
+    };
+    const bool a_line = a.curve == CurveKind::Line, b_line = b.curve == CurveKind::Line;
+    if (a_line && b_line) {
+        const Point da = b.start - a.start;
+        const Point u = a.end - a.start, v = b.end - b.start;
+        const double den = cross(u, v);
+        if (den == 0) return out;
+        out.push_back(a.start + (cross(da, v) / den) * u);
+    } else if (a_line || b_line) {
+        const MotionRecord& l = a_line ? a : b;
+        const MotionRecord& c = a_line ? b : a;
+        line_circle(l.start, unit(l.end - l.start), c.centre, a_line ? c.radius : c.end_radius);
+    } else {
+        // circle a (its end radius) with circle b (its start radius)
+        const double r0 = a.end_radius, r1 = b.radius;
+        const Point d = b.centre - a.centre;
+        const double dist = norm(d);
+        if (dist == 0 || dist > r0 + r1 || dist < std::abs(r0 - r1)) return out;
+        const double along = (dist * dist + r0 * r0 - r1 * r1) / (2 * dist);
+        const double h = std::sqrt(std::max(0.0, r0 * r0 - along * along));
+        const Point e = (1 / dist) * d;
+        const Point m = a.centre + along * e;
+        out.push_back(m + h * left_normal(e));
+        out.push_back(m - h * left_normal(e));
+    }
+    return out;
+}
+
+// Whether moving the piece's start (or end) to `p` keeps it running forwards.
+bool runs_forward(const MotionRecord& r, Point new_start, Point new_end) {
+    if (r.curve == CurveKind::Line) return dot(new_end - new_start, r.end - r.start) >= -kKerfLengthEpsilon;
+    if (norm(new_end - new_start) <= kKerfLengthEpsilon) return true;
+    const double sweep = arc_sweep(new_start, new_end, r.centre, r.ccw, false);
+    return std::abs(sweep) <= std::abs(r.sweep) + 1e-9;
+}
+
+std::string mm(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f", v);
+    return buf;
+}
+
+}  // namespace
+
+KerfPath::KerfPath(MotionSink& out, double chord_tolerance_mm)
+    : out_(out), chord_tolerance_mm_(std::max(chord_tolerance_mm, kMinChordTolerance)) {}
+
+std::vector<KerfGouge> KerfPath::take_gouges() {
+    std::vector<KerfGouge> g;
+    g.swap(gouges_);
+    return g;
+}
+
+void KerfPath::emit(const MotionRecord& rec) {
+    out_.on_motion(rec);
+    torch_ = rec.end;
+    torch_known_ = true;
+}
+
+// The open piece is final: pass it on, then what came behind it (events, motions that go nowhere).
+void KerfPath::emit_open() {
+    emit(open_piece_.rec);
+    for (auto& item : held_) {
+        if (auto* e = std::get_if<MachineEvent>(&item)) {
+            out_.on_event(*e);
+        } else {
+            MotionRecord z = std::get<MotionRecord>(item);
+            z.start = z.end = torch_;
+            z.curve = CurveKind::Line;
+            z.length_mm = 0;
+            emit(z);
+        }
+    }
+    held_.clear();
+}
+
+void KerfPath::gouge(const MotionRecord& m, const std::string& why) {
+    gouges_.push_back({m.line, m.block, why});
+}
+
+void KerfPath::event(const MachineEvent& e) {
+    if (open_)
+        held_.emplace_back(e);
+    else
+        out_.on_event(e);
+}
+
+void KerfPath::finish() {
+    if (!open_) return;
+    emit_open();
+    open_ = false;
+}
+
+void KerfPath::motion(const MotionRecord& m) {
+    if (!torch_known_) {
+        torch_ = m.start;
+        torch_known_ = true;
+    }
+    const bool compensated = m.kerf != KerfSide::Off && m.kerf_mm > 0 && m.head == 1;
+    if (!compensated) {
+        if (open_) {
+            leave(m);
+        } else {
+            emit(m);
+        }
+        return;
+    }
+    const double side = m.kerf == KerfSide::Left ? 1.0 : -1.0;
+    if (m.length_mm <= kKerfLengthEpsilon && norm(m.end - m.start) <= kKerfLengthEpsilon) {
+        // A motion that goes nowhere stays where the torch is (it has no direction to offset along).
+        if (open_) {
+            held_.emplace_back(m);
+        } else {
+            MotionRecord z = m;
+            z.start = z.end = torch_;
+            z.curve = CurveKind::Line;
+            emit(z);
+        }
+        return;
+    }
+    if (open_ && (side != side_ || m.kerf_mm != radius_)) {
+        emit_open();  // a new side or width: the open piece ends as it stands, the next one enters anew
+        open_ = false;
+    }
+    side_ = side;
+    radius_ = m.kerf_mm;
+    if (open_)
+        follow(m);
+    else
+        enter(m);
+}
+
+// The compensated pieces of a programmed motion (its own geometry, before corners): one for a line or an arc,
+// the chords of the offset curve for a parabola.
+std::vector<KerfPath::Piece> KerfPath::offset_pieces(const MotionRecord& m) const {
+    std::vector<Piece> pieces;
+    const double off = offset_mm();
+    if (m.curve == CurveKind::Line) {
+        const Point t = unit(m.end - m.start);
+        const Point shift = off * left_normal(t);
+        Piece p{m, m.end, t};
+        p.rec.start = m.start + shift;
+        p.rec.end = m.end + shift;
+        pieces.push_back(p);
+    } else if (m.curve == CurveKind::Arc) {
+        // Left of a ccw arc is its centre: the radius shrinks; a cw arc's grows.
+        const double grow = m.ccw ? -off : off;
+        Piece p{m, m.end, end_tangent(m)};
+        const auto moved = [&](Point q) {
+            const double r = norm(q - m.centre);
+            const double k = r > 0 ? std::max(r + grow, 0.0) / r : 0.0;
+            return m.centre + k * (q - m.centre);
+        };
+        p.rec.start = moved(m.start);
+        p.rec.end = moved(m.end);
+        reshape(p.rec, is_full_circle(m));
+        pieces.push_back(p);
+    } else {
+        const ParabolaGeom& g = m.parabola;
+        const double step = std::sqrt(8 * chord_tolerance_mm_ * g.p);
+        const int n = std::clamp(static_cast<int>(std::ceil(std::abs(g.t1 - g.t0) / step)), 1, kMaxFlattenSegments);
+        const auto at = [&](int i) {
+            const double t = g.t0 + (g.t1 - g.t0) * i / n;
+            return parabola_point(g, t) + off * left_normal(parabola_tangent(g, t));
+        };
+        Point prev = at(0);
+        for (int i = 1; i <= n; ++i) {
+            const Point q = at(i);
+            Piece p{m, i == n ? m.end : parabola_point(g, g.t0 + (g.t1 - g.t0) * i / n), unit(q - prev)};
+            p.rec.curve = CurveKind::Line;
+            p.rec.start = prev;
+            p.rec.end = q;
+            reshape(p.rec);
+            pieces.push_back(p);
+            prev = q;
+        }
+        pieces.back().tangent_end = end_tangent(m);
+    }
+    return pieces;
+}
+
+// The first motion with compensation: from the torch to the compensated end of its own piece.
+void KerfPath::enter(const MotionRecord& m) {
+    std::vector<Piece> pieces = offset_pieces(m);
+    Piece& first = pieces.front();
+    if (m.curve == CurveKind::Line) {
+        const Point dir = unit(m.end - torch_);
+        const Point t = norm(m.end - torch_) > kKerfLengthEpsilon ? dir : unit(m.end - m.start);
+        first.rec.end = m.end + offset_mm() * left_normal(t);
+        first.tangent_end = t;
+    } else if (m.curve == CurveKind::Arc) {
+        // The end moves along its radius; the centre moves along the same line until it is as far from the
+        // torch as from the new end.
+        const Point u = unit(m.end - m.centre);
+        const double r_end = norm(first.rec.end - m.centre);
+        const Point ct = m.centre - torch_;
+        const double den = 2 * (dot(u, ct) + r_end);
+        const double s = den != 0 ? (r_end * r_end - dot(ct, ct)) / den : 0.0;
+        first.rec.centre = m.centre + s * u;
+        first.tangent_end = arc_tangent(first.rec.end, first.rec.centre, m.ccw);
+    }
+    first.rec.start = torch_;
+    reshape(first.rec);
+    for (std::size_t i = 0; i + 1 < pieces.size(); ++i) emit(pieces[i].rec);
+    open_piece_ = pieces.back();
+    open_ = true;
+}
+
+// A motion without compensation after compensated ones: from the compensated position to its programmed end.
+void KerfPath::leave(const MotionRecord& m) {
+    emit_open();
+    open_ = false;
+    MotionRecord exit = m;
+    if (m.curve == CurveKind::Parabola) {
+        MotionRecord link = m;
+        link.curve = CurveKind::Line;
+        link.start = torch_;
+        link.end = m.start;
+        reshape(link);
+        emit(link);
+        emit(m);
+        return;
+    }
+    exit.start = torch_;
+    reshape(exit, is_full_circle(m));
+    emit(exit);
+}
+
+// The next compensated motion: the corner between the open piece and this one, then this one's pieces.
+void KerfPath::follow(const MotionRecord& m) {
+    std::vector<Piece> pieces = offset_pieces(m);
+    turn_corner(pieces.front(), m);
+    for (std::size_t i = 0; i + 1 < pieces.size(); ++i) emit(pieces[i].rec);
+    open_piece_ = pieces.back();
+}
+
+void KerfPath::turn_corner(Piece& next, const MotionRecord& m) {
+    const Point ta = open_piece_.tangent_end, tb = start_tangent(m);
+    const double turn = std::atan2(cross(ta, tb), dot(ta, tb));  // + = left
+    const double convex = std::abs(turn) > kPi - kKerfCornerTolerance ? kPi : -side_ * turn;
+    if (convex > kKerfCornerTolerance) {
+        // Around the corner on an arc of the offset radius about the programmed corner.
+        emit_open();
+        MotionRecord join = m;
+        join.curve = CurveKind::Arc;
+        join.start = torch_;
+        join.end = next.rec.start;
+        join.centre = open_piece_.corner;
+        join.ccw = side_ < 0;
+        reshape(join);
+        emit(join);
+        return;
+    }
+    if (convex < -kKerfCornerTolerance && trim_concave(next, m)) return;
+    // Nearly straight on (or a gouge, reported): the next piece starts where the open one ends.
+    emit_open();
+    next.rec.start = torch_;
+    reshape(next.rec, is_full_circle(next.rec));
+}
+
+// A concave corner: both pieces end at their intersection nearest the corner. False (and a gouge) when they do
+// not meet, or when one of them would run backwards.
+bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
+    MotionRecord& a = open_piece_.rec;
+    const Point near = 0.5 * (a.end + next.rec.start);
+    std::optional<Point> best;
+    for (const Point& x : intersections(a, next.rec))
+        if (!best || norm(x - near) < norm(*best - near)) best = x;
+    if (!best) {
+        gouge(m, "the compensated path cannot turn into this corner: with a kerf offset of " + mm(radius_) +
+                     " mm the pieces before and after it do not meet");
+        return false;
+    }
+    if (!runs_forward(a, a.start, *best) || !runs_forward(next.rec, *best, next.rec.end)) {
+        gouge(m, "the torch cannot reach this concave corner without cutting into the contour (a gouge): the kerf "
+                 "offset of " + mm(radius_) + " mm is wider than the corner allows");
+        return false;
+    }
+    a.end = *best;
+    reshape(a);
+    emit_open();
+    next.rec.start = *best;
+    reshape(next.rec);
+    return true;
+}
+
+}  // namespace essi

@@ -1,0 +1,105 @@
+// Phase 3, geom: the kerf-compensated path (docs/semantics.md §8), the torch's path as a CNC tool-radius offset.
+//
+// KerfPath reads the programmed motion stream (every motion, in order) and writes the compensated one: motions
+// without compensation unchanged, the others offset by their `kerf_mm` to their `kerf` side. The rules are
+// LinuxCNC's G41/G42 (rs274ngc), so that its `rs274` can check them:
+//   - a line is shifted along its left or right normal; an arc keeps its centre and its radius grows or shrinks;
+//     a parabola is offset point by point within the chord tolerance (as lines);
+//   - at a convex corner the offset pieces are joined by an arc of the offset radius around the programmed
+//     corner; at a concave corner they are trimmed at their intersection; a corner that turns less than
+//     kKerfCornerTolerance is neither: the next piece starts where the last one ended;
+//   - a concave corner the torch cannot get into without cutting into the piece before or after it (the trimmed
+//     piece would run backwards, or the pieces do not meet) is a gouge (KerfGouge, E307 in the check);
+//   - entry: the first motion with compensation runs from where the torch is to the compensated end of its own
+//     piece (a line: its end shifted along the normal of the entry's own direction; an arc: to its end moved
+//     along the radius, about a centre on the same radius line that is equally far from both ends);
+//   - exit: the last compensated piece ends at its end shifted along its normal; the first motion without
+//     compensation runs from there to its programmed end.
+// Pieces carry the programmed motion's line, block, kind, tools, feed and kerf; a join arc carries those of
+// the motion after the corner. A compensated piece is final only once the next one is known (one piece of
+// look-ahead): events that come while a piece is open are passed on after it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "essi/motion.hpp"
+
+namespace essi {
+
+// Corners whose direction changes by less than this (radians) are neither joined nor trimmed (LinuxCNC's
+// TOLERANCE_CONCAVE_CORNER).
+constexpr double kKerfCornerTolerance = 0.05;
+// Lengths below this (mm) are zero for the compensated path (a trimmed piece may end where it starts).
+constexpr double kKerfLengthEpsilon = 1e-9;
+
+// A corner the torch cannot get into: the motion (line, block) whose piece the corner would make run backwards.
+struct KerfGouge {
+    std::uint32_t line = 0, block = 0;
+    std::string message;
+};
+
+class KerfPath {
+public:
+    // `out` gets the compensated stream. `chord_tolerance_mm` bounds the offset of parabolas (as lines).
+    KerfPath(MotionSink& out, double chord_tolerance_mm);
+
+    void motion(const MotionRecord& programmed);
+    void event(const MachineEvent& e);
+    // The end of the program: the open piece ends as it stands.
+    void finish();
+
+    // Whether a compensated piece is open (the next motion decides its end): while not, a motion without
+    // compensation passes unchanged.
+    [[nodiscard]] bool open() const { return open_; }
+    // The gouges found so far, in the order found; taking them empties the list.
+    [[nodiscard]] std::vector<KerfGouge> take_gouges();
+
+private:
+    // A compensated piece and what the next corner needs of it: the programmed end point (the corner) and the
+    // programmed direction of travel there.
+    struct Piece {
+        MotionRecord rec;
+        Point corner;
+        Point tangent_end;
+    };
+    void enter(const MotionRecord& m);
+    void leave(const MotionRecord& m);
+    void follow(const MotionRecord& m);
+    void turn_corner(Piece& next, const MotionRecord& m);
+    bool trim_concave(Piece& next, const MotionRecord& m);
+    void emit_open();
+    void emit(const MotionRecord& rec);
+    void gouge(const MotionRecord& m, const std::string& why);
+    [[nodiscard]] std::vector<Piece> offset_pieces(const MotionRecord& m) const;
+    [[nodiscard]] double offset_mm() const { return side_ * radius_; }
+
+    MotionSink& out_;
+    double chord_tolerance_mm_;
+    bool open_ = false;
+    Piece open_piece_;
+    double side_ = 1;    // +1: left of the direction of travel, -1: right
+    double radius_ = 0;  // the offset (mm)
+    Point torch_;        // where the last piece passed on ended
+    bool torch_known_ = false;
+    std::vector<std::variant<MotionRecord, MachineEvent>> held_;  // behind the open piece
+    std::vector<KerfGouge> gouges_;
+};
+
+// A MotionSink that passes the compensated stream of what it gets to `out` (for `essi trace --kerf` and the
+// tests): call finish() after the last motion.
+class KerfSink final : public MotionSink {
+public:
+    KerfSink(MotionSink& out, double chord_tolerance_mm) : path_(out, chord_tolerance_mm) {}
+    void on_motion(const MotionRecord& m) override { path_.motion(m); }
+    void on_event(const MachineEvent& e) override { path_.event(e); }
+    void finish() { path_.finish(); }
+    [[nodiscard]] std::vector<KerfGouge> take_gouges() { return path_.take_gouges(); }
+
+private:
+    KerfPath path_;
+};
+
+}  // namespace essi
