@@ -396,7 +396,7 @@ int run_stats(const std::vector<std::string>& paths, const std::string& format, 
 }
 
 int run_trace(const std::string& path, const std::string& profile_arg, const std::string& input_arg,
-              std::uint64_t max_size, int decimals) {
+              std::uint64_t max_size, int decimals, essi::TracePath trace_path) {
     const auto request = resolve_request(profile_arg, input_arg);
     if (!request) return kExitUsage;
     const essi::native::ReadResult file = read_tape_file(path, max_size);
@@ -404,7 +404,8 @@ int run_trace(const std::string& path, const std::string& profile_arg, const std
     // The trace of a big tape is hundreds of MB: it is streamed in chunks, never held whole.
     const essi::TapeSetup setup = request->setup(file.bytes);
     const auto diagnostics =
-        essi::trace_tape(file.bytes, setup.profile, [](std::string_view piece) { out(piece); }, setup.format, decimals);
+        essi::trace_tape(file.bytes, setup.profile, [](std::string_view piece) { out(piece); }, setup.format, decimals,
+                         trace_path);
     const bool errors = std::any_of(diagnostics.begin(), diagnostics.end(),
                                     [](const essi::Diagnostic& d) { return d.severity == essi::Severity::Error; });
     return finish(errors ? kExitTapeErrors : kExitOk);
@@ -509,6 +510,9 @@ int main(int argc, char** argv) {
     trace->add_option("--decimals", trace_decimals, "Decimals of lengths and coordinates (default 3)")
         ->check(CLI::Range(0, 9))
         ->type_name("N");
+    bool trace_kerf = false;
+    trace->add_flag("--kerf", trace_kerf,
+                    "The torch's path: the kerf-compensated motion stream (29/30/38), same record format");
     add_max_size_option(trace, max_size);
     trace->add_option("PATH", trace_path, "Tape file ('-' reads standard input)")->required();
 
@@ -603,7 +607,9 @@ int main(int argc, char** argv) {
 
     if (*check) return run_check(paths, check_opts);
     if (*stats) return run_stats(paths, format, profile_arg, input_arg, max_size);
-    if (*trace) return run_trace(trace_path, profile_arg, input_arg, max_size, trace_decimals);
+    if (*trace)
+        return run_trace(trace_path, profile_arg, input_arg, max_size, trace_decimals,
+                         trace_kerf ? essi::TracePath::Kerf : essi::TracePath::Programmed);
     if (*render) return run_render(render_opts);
     if (*convert) return run_convert(convert_opts);
     if (*show) return run_profile_show(show_arg);

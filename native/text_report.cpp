@@ -106,6 +106,7 @@ std::string stats_block(const FileReport& file) {
     std::vector<std::pair<std::string, std::string>> rows;
     rows.emplace_back("file", file.display_path());
     rows.emplace_back("cut length", mm(st.cut_length_mm));
+    rows.emplace_back("cut length compensated", mm(st.cut_length_compensated_mm));
     rows.emplace_back("mark length", mm(st.mark_length_mm));
     rows.emplace_back("travel length", mm(st.travel_length_mm));
     rows.emplace_back("rapid length", mm(st.rapid_length_mm));

@@ -204,8 +204,12 @@ TEST(Corpus, ExampleTxtAnnotationsAreErrorsOnTheirLines) {
 
 // PR7.esi, a 1275 x 620 mm plate, feed 39+30 (30 mm/min):
 //   ++200 (lead-in 20) -12750+0 (1275) +0+6200 (620) +12750+0 (1275) +0-6200 (620) +-200 (lead-out 20)
-//   cut = 20 + 1275 + 620 + 1275 + 620 + 20 = 3830 mm; box x -1275..0, y 0..640; ends at (0,0);
-//   time = 3830 / 30 * 60 + 1 pierce * 2 s = 7662 s.
+//   cut = 20 + 1275 + 620 + 1275 + 620 + 20 = 3830 mm; box x -1275..0, y 0..640; ends at (0,0).
+//   Kerf 29 (left, the profile's 2 mm: offset 1) round the plate clockwise, i.e. outside: the lead-in runs from
+//   (0,0) to the concave corner's trim point (-1,19) (sqrt(1 + 19^2)), the first side is 1 mm shorter (1274), the
+//   three convex corners add quarter circles of radius 1, the rest keep their length:
+//   compensated = sqrt(362) + 1274 + 620 + 1275 + 620 + 20 + 3 * pi / 2;
+//   time = compensated / 30 * 60 + 1 pierce * 2 s (along the torch's path).
 TEST(Corpus, PR7ExactStatistics) {
     REQUIRE_CORPUS(dir);
     const auto r = essi::check_tape(read_file(dir + "/PR7.esi"), iso());
@@ -222,7 +226,9 @@ TEST(Corpus, PR7ExactStatistics) {
     EXPECT_NEAR(s.cut_bbox.max_y, 640.0, kLengthTolMm);
     EXPECT_NEAR(s.end_position.x, 0.0, kLengthTolMm);
     EXPECT_NEAR(s.end_position.y, 0.0, kLengthTolMm);
-    EXPECT_NEAR(s.estimated_time_s, 7662.0, kTimeTolS);
+    const double compensated = std::sqrt(362.0) + 1274 + 620 + 1275 + 620 + 20 + 3 * essi::kPi / 2;
+    EXPECT_NEAR(s.cut_length_compensated_mm, compensated, kLengthTolMm);
+    EXPECT_NEAR(s.estimated_time_s, compensated / 30 * 60 + 2, kTimeTolS);
 }
 
 // 115_046.esi: -200+0 (20) -1700+0 (170) +0+250 (25) +1700+0 (170), now at (-20, 25);

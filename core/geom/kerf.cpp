@@ -117,6 +117,17 @@ bool runs_forward(const MotionRecord& r, Point new_start, Point new_end) {
     return std::abs(sweep) <= std::abs(r.sweep) + 1e-9;
 }
 
+// The centre of an entry arc that runs from `torch` to `end` (on the programmed arc's offset): on the line from
+// the programmed centre through `end`, as far from the torch as from `end`.
+Point entry_arc_centre(Point centre, Point end, Point torch) {
+    const Point u = unit(end - centre);
+    const double r_end = norm(end - centre);
+    const Point ct = centre - torch;
+    const double den = 2 * (dot(u, ct) + r_end);
+    const double s = den != 0 ? (r_end * r_end - dot(ct, ct)) / den : 0.0;
+    return centre + s * u;
+}
+
 std::string mm(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3f", v);
@@ -221,14 +232,14 @@ std::vector<KerfPath::Piece> KerfPath::offset_pieces(const MotionRecord& m) cons
     if (m.curve == CurveKind::Line) {
         const Point t = unit(m.end - m.start);
         const Point shift = off * left_normal(t);
-        Piece p{m, m.end, t};
+        Piece p{m, m.end, t, {}, false};
         p.rec.start = m.start + shift;
         p.rec.end = m.end + shift;
         pieces.push_back(p);
     } else if (m.curve == CurveKind::Arc) {
         // Left of a ccw arc is its centre: the radius shrinks; a cw arc's grows.
         const double grow = m.ccw ? -off : off;
-        Piece p{m, m.end, end_tangent(m)};
+        Piece p{m, m.end, end_tangent(m), {}, false};
         const auto moved = [&](Point q) {
             const double r = norm(q - m.centre);
             const double k = r > 0 ? std::max(r + grow, 0.0) / r : 0.0;
@@ -249,7 +260,7 @@ std::vector<KerfPath::Piece> KerfPath::offset_pieces(const MotionRecord& m) cons
         Point prev = at(0);
         for (int i = 1; i <= n; ++i) {
             const Point q = at(i);
-            Piece p{m, i == n ? m.end : parabola_point(g, g.t0 + (g.t1 - g.t0) * i / n), unit(q - prev)};
+            Piece p{m, i == n ? m.end : parabola_point(g, g.t0 + (g.t1 - g.t0) * i / n), unit(q - prev), {}, false};
             p.rec.curve = CurveKind::Line;
             p.rec.start = prev;
             p.rec.end = q;
@@ -259,6 +270,7 @@ std::vector<KerfPath::Piece> KerfPath::offset_pieces(const MotionRecord& m) cons
         }
         pieces.back().tangent_end = end_tangent(m);
     }
+    for (Piece& p : pieces) p.offset = p.rec;
     return pieces;
 }
 
@@ -274,14 +286,10 @@ void KerfPath::enter(const MotionRecord& m) {
     } else if (m.curve == CurveKind::Arc) {
         // The end moves along its radius; the centre moves along the same line until it is as far from the
         // torch as from the new end.
-        const Point u = unit(m.end - m.centre);
-        const double r_end = norm(first.rec.end - m.centre);
-        const Point ct = m.centre - torch_;
-        const double den = 2 * (dot(u, ct) + r_end);
-        const double s = den != 0 ? (r_end * r_end - dot(ct, ct)) / den : 0.0;
-        first.rec.centre = m.centre + s * u;
+        first.rec.centre = entry_arc_centre(m.centre, first.rec.end, torch_);
         first.tangent_end = arc_tangent(first.rec.end, first.rec.centre, m.ccw);
     }
+    first.entry = true;
     first.rec.start = torch_;
     reshape(first.rec);
     for (std::size_t i = 0; i + 1 < pieces.size(); ++i) emit(pieces[i].rec);
@@ -322,10 +330,11 @@ void KerfPath::turn_corner(Piece& next, const MotionRecord& m) {
     const double turn = std::atan2(cross(ta, tb), dot(ta, tb));  // + = left
     const double convex = std::abs(turn) > kPi - kKerfCornerTolerance ? kPi : -side_ * turn;
     if (convex > kKerfCornerTolerance) {
-        // Around the corner on an arc of the offset radius about the programmed corner.
+        // Around the corner on an arc of the offset radius about the programmed corner (a rapid goes straight to
+        // where the arc would end, as LinuxCNC's G0).
         emit_open();
         MotionRecord join = m;
-        join.curve = CurveKind::Arc;
+        join.curve = m.kind == MotionKind::Rapid ? CurveKind::Line : CurveKind::Arc;
         join.start = torch_;
         join.end = next.rec.start;
         join.centre = open_piece_.corner;
@@ -347,7 +356,7 @@ bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
     MotionRecord& a = open_piece_.rec;
     const Point near = 0.5 * (a.end + next.rec.start);
     std::optional<Point> best;
-    for (const Point& x : intersections(a, next.rec))
+    for (const Point& x : intersections(open_piece_.offset, next.rec))
         if (!best || norm(x - near) < norm(*best - near)) best = x;
     if (!best) {
         gouge(m, "the compensated path cannot turn into this corner: with a kerf offset of " + mm(radius_) +
@@ -360,6 +369,7 @@ bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
         return false;
     }
     a.end = *best;
+    if (open_piece_.entry && a.curve == CurveKind::Arc) a.centre = entry_arc_centre(open_piece_.offset.centre, a.end, a.start);
     reshape(a);
     emit_open();
     next.rec.start = *best;

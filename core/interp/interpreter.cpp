@@ -200,11 +200,23 @@ private:
     std::uint8_t torches_ = 1;           // torches cutting (135 + 136): each cut is made this many times
     // A check whose straight lines go to the statistics directly, without a record: no table to check and one
     // torch (several torches copy the cuts: their records carry the copies). One test per line.
+    // ... and no kerf compensation on or still open (those lines are pieces of the compensated path, §8).
     bool lines_direct_ = false;
+    bool travel_direct_ = false;  // the same with several torches: the lines that cut nothing
+    bool kerf_open_ = false;      // the statistics' compensated path has a piece open
     void set_torches(std::uint8_t n) {
         torches_ = n;
-        lines_direct_ = stats_ && !profile_.table && torches_ == 1;
+        update_direct_paths();
     }
+    void set_kerf_side(KerfSide side) {
+        kerf_ = side;
+        update_direct_paths();
+    }
+    void update_direct_paths() {
+        travel_direct_ = stats_ && !profile_.table && kerf_ == KerfSide::Off && !kerf_open_;
+        lines_direct_ = travel_direct_ && torches_ == 1;
+    }
+    [[gnu::noinline]] void after_kerf_record(const Block& b);
     Point torch_step_;                   // mm between neighbouring torches (136, along profile.torch_direction)
     bool inside_table_ = true;
     std::optional<Block> last_block_;
@@ -282,6 +294,7 @@ void Machine::run(const Tape& chunk, std::span<const MotionMeasure> measures) {
 
 // The checks that need the whole program: things opened and never closed, the state at the end.
 void Machine::finish() {
+    if (stats_) stats_->finish();
     if (zero_offset_pending_ && zero_offset_block_) {
         warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
              "zero offset (83) at the end of the program; expected a block of two signed words (the new origin) after it");
@@ -394,7 +407,7 @@ void Machine::warn_kerf_while_cutting(const Block& b, KerfSide side) {
 
 void Machine::set_kerf(const Block& b, KerfSide side, bool has_value, double value) {
     if (tools_ & kCuttingTools) [[unlikely]] warn_kerf_while_cutting(b, side);
-    kerf_ = side;
+    set_kerf_side(side);
     if (side == KerfSide::Off) {
         kerf_offset_mm_ = 0;
         return;
@@ -494,7 +507,7 @@ void Machine::warn_macro_only(const Block& b) {
         case fn::kEndOfTape:  // not an end code in this profile: cancels the stored functions (ISO Annex B)
             set_tools(0);
             rapid_ = false;
-            kerf_ = KerfSide::Off;
+            set_kerf_side(KerfSide::Off);
             kerf_offset_mm_ = 0;
             set_mapping(axis_mapping(fn::kAxesNormal));
             absolute_ = false;
@@ -564,6 +577,17 @@ void Machine::warn_rapid_while_cutting(const Block& b) {
     }
     if (profile_.table) check_table(m, b);
     send(m);
+    if (stats_ && (m.kerf != KerfSide::Off || kerf_open_)) after_kerf_record(b);
+}
+
+// A record of the compensated path went to the statistics: the gouge its corner made, if any, and whether a
+// piece is still open (while one is, lines come as records).
+void Machine::after_kerf_record(const Block& b) {
+    for (KerfGouge& g : stats_->take_gouges()) warn(DiagCode::E307_KerfGouge, b, std::move(g.message));
+    if (kerf_open_ != stats_->kerf_open()) {
+        kerf_open_ = stats_->kerf_open();
+        update_direct_paths();
+    }
 }
 
 // What the machine's state makes of the motion of `b`, and what the motion does to the state: every motion,
@@ -650,7 +674,7 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
         const IPoint d = map(w[0], w[1]);
         const IPoint end{base.x + d.x, base.y + d.y};
         const double length_mm = units_length(end.x - cur.x, end.y - cur.y) * profile_.unit_mm;
-        if (lines_direct_ || (stats_ && !profile_.table && (tools_ & kCuttingTools) == 0)) {
+        if (lines_direct_ || (travel_direct_ && (tools_ & kCuttingTools) == 0)) {
             // Checked: what the statistics count of a line (StatsSink::add_line, as on_motion does for its
             // record), without making the record; the one more sink's UnitLine.
             const MotionState state = begin_motion(b);

@@ -66,6 +66,7 @@ constexpr std::array kCodes = {
     CodeRow{DiagCode::E304_ParabolaZeroCurvature, "A parabola whose radius of curvature at the vertex is zero."},
     CodeRow{DiagCode::W305_ParabolaDirection, "A parabola's TC does not match the turning direction of the travelled piece."},
     CodeRow{DiagCode::E306_KerfRadiusNegative, "An arc whose radius would be zero or negative after the kerf offset."},
+    CodeRow{DiagCode::E307_KerfGouge, "A concave corner the kerf-compensated torch cannot get into without cutting into the contour (a gouge)."},
     CodeRow{DiagCode::E401_LeavesTable, "A motion leaves the table travel limits of the machine profile."},
     CodeRow{DiagCode::E402_BadProfile, "A machine profile that cannot be read."},
 };
@@ -92,7 +93,7 @@ bool is_error_code(DiagCode code) {
         case DiagCode::E203_FunctionValueMissing: case DiagCode::E206_BadHeadAddress:
         case DiagCode::E207_ZeroOffsetBlock: case DiagCode::E301_ArcEndNotOnCircle:
         case DiagCode::E302_ArcZeroRadius: case DiagCode::E303_ParabolaEndNotOnCurve:
-        case DiagCode::E304_ParabolaZeroCurvature: case DiagCode::E306_KerfRadiusNegative:
+        case DiagCode::E304_ParabolaZeroCurvature: case DiagCode::E306_KerfRadiusNegative: case DiagCode::E307_KerfGouge:
         case DiagCode::E401_LeavesTable: case DiagCode::E402_BadProfile:
             return true;
         default:

@@ -67,6 +67,7 @@ nlohmann::json box_to_json(const Box& b) {
 nlohmann::json stats_to_json(const Stats& s) {
     nlohmann::json j = nlohmann::json::object();
     j["cut_length_mm"] = round_for_json(s.cut_length_mm);
+    j["cut_length_compensated_mm"] = round_for_json(s.cut_length_compensated_mm);
     j["mark_length_mm"] = round_for_json(s.mark_length_mm);
     j["travel_length_mm"] = round_for_json(s.travel_length_mm);
     j["rapid_length_mm"] = round_for_json(s.rapid_length_mm);

@@ -2,6 +2,8 @@
 // model). Numbers are fixed to 3 decimals (micrometres) so golden files diff cleanly.
 #include "essi/trace.hpp"
 
+#include "essi/kerf.hpp"
+
 #include <cmath>
 #include <cstdio>
 
@@ -125,11 +127,19 @@ std::string trace_line(const MachineEvent& e, Dialect dialect) {
 }
 
 std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profile, const TraceWriter& write,
-                                   InputFormat format, int decimals) {
+                                   InputFormat format, int decimals, TracePath path) {
     const Tape tape = read_tape(bytes, profile, format);
     std::vector<Diagnostic> diagnostics = tape.diagnostics();
     TraceSink sink(write, profile.dialect, decimals);
-    interpret(tape, bytes, profile, sink, diagnostics);
+    if (path == TracePath::Kerf) {
+        KerfSink torch(sink, profile.chord_tolerance_mm);
+        interpret(tape, bytes, profile, torch, diagnostics);
+        torch.finish();
+        for (KerfGouge& g : torch.take_gouges())
+            diagnostics.push_back({Severity::Error, DiagCode::E307_KerfGouge, g.line, 1, std::move(g.message)});
+    } else {
+        interpret(tape, bytes, profile, sink, diagnostics);
+    }
     sort_diagnostics(diagnostics);
     for (const auto& d : diagnostics) {
         sink.add("# " + code_name(d.code) + " line " + std::to_string(d.line) + " col " + std::to_string(d.column) +

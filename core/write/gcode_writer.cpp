@@ -1,6 +1,8 @@
 // The G-code writer (essi/write.hpp): RS-274/NGC as LinuxCNC reads it (docs/conversions.md). G17 G21 G40 G90|G91
 // G91.1 G94 at the start; G0 for rapid motion, G1/G2/G3 with F for the rest; the cutting tools as QtPlasmaC's
-// M3 $0 S1 / M5 $0, the marking tools as M3 $1 S1 / M5 $1; kerf as G41.1/G42.1 D<kerf width> and G40; G4 P<s>;
+// M3 $0 S1 / M5 $0, the marking tools as M3 $1 S1 / M5 $1; kerf as G41.1/G42.1 D<kerf width> and G40, written before
+// the motion whose compensation differs from the last written (the side as the motion has it, after a mirror; G40
+// first when it was on: LinuxCNC does not switch sides while on); G4 P<s>;
 // M0, M1; M2 at the end; every other function a comment (W501). Coordinates in mm with 4 decimals.
 #include <cmath>
 
@@ -32,11 +34,22 @@ private:
         feed_ = m.feed_mm_min;
         return " F" + number_text(feed_);
     }
+    // The compensation the motion is made with (docs/semantics.md §8), written when it differs from the last.
+    void compensation(const MotionRecord& m) {
+        const KerfSide side = m.kerf_mm > 0 ? m.kerf : KerfSide::Off;
+        if (side == kerf_ && (side == KerfSide::Off || m.kerf_mm == kerf_mm_)) return;
+        if (kerf_ != KerfSide::Off) block("G40");
+        kerf_ = side;
+        kerf_mm_ = m.kerf_mm;
+        if (side != KerfSide::Off) block(std::string(side == KerfSide::Left ? "G41.1" : "G42.1") + " D" + number_text(2 * m.kerf_mm));
+    }
     void line(const MotionRecord& m, Units end) override {
+        compensation(m);
         if (m.kind == MotionKind::Rapid) block("G0 " + point(end));
         else block("G1 " + point(end) + feed(m));
     }
     void arc(const MotionRecord& m, Units end, Units centre) override {
+        compensation(m);
         const Units start = position();
         // LinuxCNC wants the end on the circle (within about a micrometre); an ESSI arc may miss it by the profile's
         // arc tolerance: then the centre goes to the nearest point of the chord's bisector.
@@ -63,16 +76,6 @@ private:
         if (mark_after != mark_before) block(mark_after ? "M3 $1 S1" : "M5 $1");
         return before != tools_;
     }
-    void kerf(const MachineEvent& e) {
-        if (e.code == fn::kKerfOff) {
-            block("G40");
-            return;
-        }
-        const double units = e.has_value ? e.value : source_.kerf_units;
-        const double mm = units * source_.unit_mm;
-        const double width = source_.kerf_value == KerfValueMeaning::Width ? mm : 2 * mm;
-        block(std::string(e.code == fn::kKerfLeft ? "G41.1" : "G42.1") + " D" + number_text(width));
-    }
     void function(const MachineEvent& e) override {
         if (tools(e)) return;
         switch (e.code) {
@@ -81,11 +84,11 @@ private:
             case fn::kFeed: return;  // (G0 and F on the motions)
             case fn::kKerfLeft:
             case fn::kKerfRight:
-            case fn::kKerfOff: kerf(e); return;
+            case fn::kKerfOff: return;  // (with the motions: compensation())
             case fn::kDwell: block("G4 P" + number_text(e.value)); return;
             case fn::kProgramStop: block("M0"); return;
             case fn::kCancelFunctions:
-            case fn::kEndOfTape: block("G40"); return;  // (no end here: the stored functions cancelled; tools above)
+            case fn::kEndOfTape: return;  // (no end here: the stored functions cancelled; tools above, kerf with the motions)
             case fn::kOptionalStop: block("M1"); return;
             default: break;
         }
@@ -95,6 +98,7 @@ private:
         comment(no_counterpart(e, "G-code"));
     }
     void end(const MachineEvent&) override {
+        if (kerf_ != KerfSide::Off) block("G40");
         if (tools_ & kCuttingTools) block("M5 $0");
         if (tools_ & kMarkingTools) block("M5 $1");
         block("M2");
@@ -102,6 +106,8 @@ private:
 
     double feed_ = -1;
     std::uint8_t tools_ = 0;
+    KerfSide kerf_ = KerfSide::Off;  // the compensation written last
+    double kerf_mm_ = 0;
 };
 
 }  // namespace

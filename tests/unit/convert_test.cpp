@@ -140,6 +140,20 @@ TEST(Convert, EiaRoundTripsGiveTheSameMotionStream) {
     EXPECT_GE(compared, 20u);  // (most tapes have a word for every function in both dialects)
 }
 
+// G-code's compensation is the motions' (docs/conversions.md): a mirror (22) puts the kerf of 29 on the right of
+// the machine's direction of travel (G42.1), a new side while one is on gets G40 first (LinuxCNC refuses G41 on G42).
+TEST(Convert, GcodeKerfSideAsTheMotionsHaveIt) {
+    const Profile iso = *builtin_profile("iso6582");
+    ConvertOptions o;
+    o.target = iso;
+    o.to = OutputFormat::Gcode;
+    o.absolute = true;
+    const std::string tape = "22\n29+20\n7\n+1000+0\n30+30\n+0+1000\n8\n38\n+100+0\n64\n";
+    const ConvertResult g = convert_tape(tape, setup_of(InputFormat::Essi, iso), o);
+    EXPECT_EQ(g.text, "G17 G21 G40 G90 G91.1 G94\nM3 $0 S1\nG42.1 D2\nG1 X100 Y0 F1000\nG40\nG41.1 D3\nG1 X100 Y-100\n"
+                      "M5 $0\nG40\nG1 X110 Y-100\nM2\n");
+}
+
 TEST(Convert, WritersText) {
     const Profile woyda = *builtin_profile("woyda");
     const std::string tape = "39+600\n29\n7\n+1000+0\n+0+0+0+500+\n8\n38\n41+2\n45\n/\n";
@@ -154,8 +168,8 @@ TEST(Convert, WritersText) {
     o.to = OutputFormat::Gcode;
     o.absolute = true;
     const ConvertResult g = convert_tape(tape, setup_of(InputFormat::Essi, woyda), o);
-    EXPECT_EQ(g.text, "G17 G21 G40 G90 G91.1 G94\nG41.1 D2\nM3 $0 S1\nG1 X100 Y0 F600\nG3 X100 Y0 I0 J50\nM5 $0\nG40\n"
-                      "G4 P2\n(ESSI 45: Torch head lower)\nM2\n");
+    EXPECT_EQ(g.text, "G17 G21 G40 G90 G91.1 G94\nM3 $0 S1\nG41.1 D2\nG1 X100 Y0 F600\nG3 X100 Y0 I0 J50\nM5 $0\n"
+                      "G4 P2\n(ESSI 45: Torch head lower)\nG40\nM2\n");
     ASSERT_EQ(g.diagnostics.size(), 1u);  // 45 has no G-code counterpart
     EXPECT_EQ(g.diagnostics[0].code, DiagCode::W501_NoCounterpart);
     EXPECT_EQ(g.diagnostics[0].line, 9u);

@@ -82,7 +82,8 @@ TEST(ReportJson, StatsObject) {
     EXPECT_DOUBLE_EQ(box.at("max_y").get<double>(), 40);
     EXPECT_DOUBLE_EQ(j.at("end_position_mm").at("x").get<double>(), 0);
     EXPECT_DOUBLE_EQ(j.at("end_position_mm").at("y").get<double>(), 3);
-    EXPECT_EQ(j.size(), 10u) << j.dump();
+    EXPECT_TRUE(j.at("cut_length_compensated_mm").is_number());
+    EXPECT_EQ(j.size(), 11u) << j.dump();
 }
 
 TEST(ReportJson, EmptyCutBoxIsNull) {

@@ -69,6 +69,7 @@ enum class DiagCode : std::uint16_t {
     E304_ParabolaZeroCurvature = 304, // radius of curvature at the vertex is zero
     W305_ParabolaDirection = 305,     // TC does not match the turning of the travelled piece
     E306_KerfRadiusNegative = 306,    // an arc whose radius would go negative under kerf offset
+    E307_KerfGouge = 307,             // a concave corner the compensated torch cannot get into
 
     // --- machine / profile ---
     E401_LeavesTable = 401,           // motion beyond the profile's table travel limits

@@ -6,7 +6,7 @@
 //   - a line is shifted along its left or right normal; an arc keeps its centre and its radius grows or shrinks;
 //     a parabola is offset point by point within the chord tolerance (as lines);
 //   - at a convex corner the offset pieces are joined by an arc of the offset radius around the programmed
-//     corner; at a concave corner they are trimmed at their intersection; a corner that turns less than
+//     corner (before a rapid: a straight line to where that arc ends); at a concave corner they are trimmed at their intersection; a corner that turns less than
 //     kKerfCornerTolerance is neither: the next piece starts where the last one ended;
 //   - a concave corner the torch cannot get into without cutting into the piece before or after it (the trimmed
 //     piece would run backwards, or the pieces do not meet) is a gouge (KerfGouge, E307 in the check);
@@ -58,12 +58,15 @@ public:
     [[nodiscard]] std::vector<KerfGouge> take_gouges();
 
 private:
-    // A compensated piece and what the next corner needs of it: the programmed end point (the corner) and the
-    // programmed direction of travel there.
+    // A compensated piece and what the next corner needs of it: the programmed end point (the corner), the
+    // programmed direction of travel there, and the offset of the programmed piece (a concave corner trims where
+    // that meets the next piece: for an entry, which starts at the torch, it is not the piece itself).
     struct Piece {
         MotionRecord rec;
         Point corner;
         Point tangent_end;
+        MotionRecord offset;
+        bool entry = false;
     };
     void enter(const MotionRecord& m);
     void leave(const MotionRecord& m);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "essi/geom.hpp"
+#include "essi/kerf.hpp"
 #include "essi/motion.hpp"
 #include "essi/profile.hpp"
 
@@ -11,33 +12,38 @@ namespace essi {
 
 struct Stats {
     double cut_length_mm = 0;
+    double cut_length_compensated_mm = 0;  // the torch's path while cutting (kerf compensation, §8)
     double mark_length_mm = 0;
     double travel_length_mm = 0;   // rapid and other tool-off motion
     double rapid_length_mm = 0;    // the rapid part of travel_length_mm
     unsigned long long pierces = 0;
     unsigned long long blocks = 0; // program blocks read (comment lines and empty lines excluded)
     unsigned long long motions = 0;
-    double estimated_time_s = 0;
+    double estimated_time_s = 0;   // along the compensated path
     Box cut_bbox;                  // empty when nothing is cut
     Box motion_bbox;               // all motion
     Point end_position;            // machine position at the end (head 1)
 };
 
-// Accumulates statistics from the motion stream.
+// Accumulates statistics from the motion stream. The programmed motions give the lengths and boxes; their
+// compensated path (a KerfPath inside, §8) gives the time and the compensated cut length. Call finish() after the
+// last motion.
 class StatsSink final : public MotionSink {
 public:
-    explicit StatsSink(const Profile& profile) : profile_(profile) {}
+    explicit StatsSink(const Profile& profile)
+        : profile_(profile), torch_path_(stats_), kerf_(torch_path_, profile.chord_tolerance_mm) {}
 
     void on_motion(const MotionRecord& m) override {
+        kerf_.motion(m);
         if (m.torches > 1 && m.kind == MotionKind::Cut) [[unlikely]] {
             add_torch_copies(m);
             return;
         }
         if (m.curve == CurveKind::Line) {
-            add_line(m.kind, m.head, m.start, m.end, m.length_mm, m.feed_mm_min);
+            add_programmed_line(m.kind, m.head, m.start, m.end, m.length_mm);
             return;
         }
-        count_motion(m.kind, m.head, m.end, m.length_mm, m.feed_mm_min);
+        count_motion(m.kind, m.head, m.end, m.length_mm);
         // The exact box of a curve costs more than a line's: computed once, used for both boxes. An arc
         // inside the boxes so far (its ends and its whole circle are) changes neither: its exact box (the
         // extremes inside the sweep) is needed only when it may reach further.
@@ -48,11 +54,11 @@ public:
         }
         add_box(bounding_box(m), cut);
     }
-    // A straight line (what on_motion counts of one): the interpreter calls it directly for the lines of a
-    // tape that is only checked, without making their records.
+    // A straight line without compensation while none is open (kerf_open() false): what on_motion counts of
+    // one. The interpreter calls it directly for the lines of a tape that is only checked, without their records.
     [[gnu::always_inline]] void add_line(MotionKind kind, int head, Point start, Point end, double length_mm, double feed_mm_min) {
-        count_motion(kind, head, end, length_mm, feed_mm_min);
-        add_box(Box::of(start, end), kind == MotionKind::Cut);  // a line's box is its end points
+        add_programmed_line(kind, head, start, end, length_mm);
+        TorchPath::add(stats_, kind, length_mm, feed_mm_min, 1);
     }
     void on_event(const MachineEvent& e) override { count_event(e.kind, e.value, e.tools_after, e.torches_after); }
     // What on_event counts of an event: the interpreter calls it directly, without making the event.
@@ -65,24 +71,49 @@ public:
         }
         tools_ = tools_after;
     }
+    // The end of the program: the compensated path's last piece.
+    void finish() { kerf_.finish(); }
+    // Whether a compensated piece is open: a line without compensation must then come as a record (it is the
+    // exit from compensation).
+    [[nodiscard]] bool kerf_open() const { return kerf_.open(); }
+    [[nodiscard]] std::vector<KerfGouge> take_gouges() { return kerf_.take_gouges(); }
 
     [[nodiscard]] const Stats& stats() const { return stats_; }
     Stats& stats() { return stats_; }
 
 private:
-    // A cut made by several torches at once: its length once per torch, its time once, the box of every copy.
+    // The compensated path: its time and its cut length (each torch's).
+    class TorchPath final : public MotionSink {
+    public:
+        explicit TorchPath(Stats& stats) : stats_(stats) {}
+        void on_motion(const MotionRecord& m) override {
+            add(stats_, m.kind, m.length_mm, m.feed_mm_min, m.kind == MotionKind::Cut ? m.torches : 1);
+        }
+        static void add(Stats& s, MotionKind kind, double length_mm, double feed_mm_min, int torches) {
+            if (kind == MotionKind::Cut) s.cut_length_compensated_mm += length_mm * torches;
+            if (feed_mm_min > 0) s.estimated_time_s += length_mm / feed_mm_min * 60.0;
+        }
+
+    private:
+        Stats& stats_;
+    };
+
+    // A cut made by several torches at once: its length once per torch, the box of every copy.
     void add_torch_copies(const MotionRecord& m) {
         ++stats_.motions;
         stats_.cut_length_mm += m.length_mm * m.torches;
-        if (m.feed_mm_min > 0) stats_.estimated_time_s += m.length_mm / m.feed_mm_min * 60.0;
         if (m.head == 1) stats_.end_position = m.end;
         const Box b = m.curve == CurveKind::Line ? Box::of(m.start, m.end) : bounding_box(m);
         const Point far = torch_copy({0, 0}, m.torch_step, m.torches - 1);
         add_box(b, true);  // the copies lie between the first and the last
         add_box(Box{b.min_x + far.x, b.min_y + far.y, b.max_x + far.x, b.max_y + far.y, false}, true);
     }
-    // Everything of a motion but its box: the count, the length by kind, the time, the end position.
-    void count_motion(MotionKind kind, int head, Point end, double length_mm, double feed_mm_min) {
+    [[gnu::always_inline]] void add_programmed_line(MotionKind kind, int head, Point start, Point end, double length_mm) {
+        count_motion(kind, head, end, length_mm);
+        add_box(Box::of(start, end), kind == MotionKind::Cut);  // a line's box is its end points
+    }
+    // Everything of a programmed motion but its box: the count, the length by kind, the end position.
+    void count_motion(MotionKind kind, int head, Point end, double length_mm) {
         ++stats_.motions;
         switch (kind) {
             case MotionKind::Cut: stats_.cut_length_mm += length_mm; break;
@@ -93,7 +124,6 @@ private:
                 break;
             case MotionKind::Travel: stats_.travel_length_mm += length_mm; break;
         }
-        if (feed_mm_min > 0) stats_.estimated_time_s += length_mm / feed_mm_min * 60.0;
         if (head == 1) stats_.end_position = end;
     }
     void add_box(const Box& box, bool cut) {
@@ -113,6 +143,8 @@ private:
     const Profile& profile_;
     Stats stats_;
     std::uint8_t tools_ = 0;  // tools on before the current event (pierce counting)
+    TorchPath torch_path_;
+    KerfPath kerf_;
 };
 
 }  // namespace essi

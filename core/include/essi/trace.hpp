@@ -1,6 +1,7 @@
 // The trace: the motion stream as text, one record a line, for `essi trace`, golden tests and people.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -27,10 +28,16 @@ constexpr int kTraceDecimals = 3;
 // Receives the trace a piece at a time (whole lines, each ending in '\n').
 using TraceWriter = std::function<void(std::string_view)>;
 
+// Which path the trace follows: the programmed one (the motion stream), or the torch's (the kerf-compensated
+// path, docs/semantics.md §8: `essi trace --kerf`).
+enum class TracePath : std::uint8_t { Programmed, Kerf };
+
 // Streams the trace of a tape to `write`: events and motions in program order, then the diagnostics as
 // "# E301 line 7 col 1: ...". Returns the diagnostics (sorted), so a caller can tell whether it had errors.
+// The kerf path adds its gouges (E307).
 std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profile, const TraceWriter& write,
-                                   InputFormat format = InputFormat::Essi, int decimals = kTraceDecimals);
+                                   InputFormat format = InputFormat::Essi, int decimals = kTraceDecimals,
+                                   TracePath path = TracePath::Programmed);
 
 // The whole trace as one string (small tapes, golden tests).
 [[nodiscard]] std::string trace_tape(std::string_view bytes, const Profile& profile,

@@ -26,6 +26,7 @@ void stats_table(const Document& doc) {
     ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
     ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
     stats_row("cut", fmt("%.3f mm", s.cut_length_mm));
+    stats_row("  compensated", fmt("%.3f mm", s.cut_length_compensated_mm));
     stats_row("mark", fmt("%.3f mm", s.mark_length_mm));
     stats_row("travel", fmt("%.3f mm", s.travel_length_mm));
     stats_row("  of it rapid", fmt("%.3f mm", s.rapid_length_mm));
