@@ -16,17 +16,35 @@ Point operator-(Point a, Point b) { return {a.x - b.x, a.y - b.y}; }
 Point operator*(double k, Point a) { return {k * a.x, k * a.y}; }
 double dot(Point a, Point b) { return a.x * b.x + a.y * b.y; }
 double cross(Point a, Point b) { return a.x * b.y - a.y * b.x; }
-double norm(Point a) { return std::hypot(a.x, a.y); }
+double norm(Point a) { return std::sqrt(a.x * a.x + a.y * a.y); }  // (hypot: much slower, no range needed)
 Point unit(Point a) {
     const double n = norm(a);
-    return n > 0 ? Point{a.x / n, a.y / n} : Point{};
+    if (!(n > 0)) return {};
+    const double k = 1 / n;
+    return {a.x * k, a.y * k};
 }
 Point left_normal(Point t) { return {-t.y, t.x}; }
+
+const double kCosCornerTolerance = std::cos(kKerfCornerTolerance);
+const double kSinCornerTolerance = std::sin(kKerfCornerTolerance);
 
 // The direction of travel of an arc at a point of it.
 Point arc_tangent(Point p, Point centre, bool ccw) {
     const Point r = unit(p - centre);
     return ccw ? Point{-r.y, r.x} : Point{r.y, -r.x};
+}
+// The same when the distance from the centre is known (a programmed arc's radii): no square root.
+Point arc_tangent(Point p, Point centre, bool ccw, double radius) {
+    if (!(radius > 0)) return arc_tangent(p, centre, ccw);
+    const double k = 1 / radius;
+    const Point r{(p.x - centre.x) * k, (p.y - centre.y) * k};
+    return ccw ? Point{-r.y, r.x} : Point{r.y, -r.x};
+}
+// A programmed line's direction from its known length.
+Point line_direction(const MotionRecord& m) {
+    if (!(m.length_mm > 0)) return unit(m.end - m.start);
+    const double k = 1 / m.length_mm;
+    return {(m.end.x - m.start.x) * k, (m.end.y - m.start.y) * k};
 }
 
 // A parabola's direction of travel at parameter t (t runs from t0 to t1).
@@ -35,18 +53,19 @@ Point parabola_tangent(const ParabolaGeom& g, double t) {
     return unit(g.t1 >= g.t0 ? d : -1.0 * d);
 }
 
+// The directions of travel at a programmed motion's ends.
 Point start_tangent(const MotionRecord& m) {
     switch (m.curve) {
-        case CurveKind::Line: return unit(m.end - m.start);
-        case CurveKind::Arc: return arc_tangent(m.start, m.centre, m.ccw);
+        case CurveKind::Line: return line_direction(m);
+        case CurveKind::Arc: return arc_tangent(m.start, m.centre, m.ccw, m.radius);
         case CurveKind::Parabola: return parabola_tangent(m.parabola, m.parabola.t0);
     }
     return {};
 }
 Point end_tangent(const MotionRecord& m) {
     switch (m.curve) {
-        case CurveKind::Line: return unit(m.end - m.start);
-        case CurveKind::Arc: return arc_tangent(m.end, m.centre, m.ccw);
+        case CurveKind::Line: return line_direction(m);
+        case CurveKind::Arc: return arc_tangent(m.end, m.centre, m.ccw, m.end_radius);
         case CurveKind::Parabola: return parabola_tangent(m.parabola, m.parabola.t1);
     }
     return {};
@@ -69,9 +88,18 @@ void reshape(MotionRecord& r, bool full_circle = false) {
     }
 }
 
+// Up to two points (no allocation: a concave corner is common).
+struct Points {
+    Point p[2];
+    int n = 0;
+    void push_back(Point q) { p[n++] = q; }
+    [[nodiscard]] const Point* begin() const { return p; }
+    [[nodiscard]] const Point* end() const { return p + n; }
+};
+
 // The intersections of two pieces (lines and arcs of the compensated path), each taken as a whole line or circle.
-std::vector<Point> intersections(const MotionRecord& a, const MotionRecord& b) {
-    std::vector<Point> out;
+Points intersections(const MotionRecord& a, const MotionRecord& b) {
+    Points out;
     const auto line_circle = [&](Point p, Point d, Point c, double r) {
         // |p + s d - c| = r, d a unit vector
         const Point f = p - c;
@@ -109,12 +137,34 @@ std::vector<Point> intersections(const MotionRecord& a, const MotionRecord& b) {
     return out;
 }
 
-// Whether moving the piece's start (or end) to `p` keeps it running forwards.
+// A monotone stand-in for the angle from direction `from` to direction `to`, counter-clockwise, in [0, 4)
+// (0 at `from`, 1 a quarter turn, 2 half, 3 three quarters): comparisons of angles without trigonometry.
+double pseudo_angle(Point from, Point to) {
+    const double x = dot(from, to), y = cross(from, to);
+    const double a = std::abs(x) + std::abs(y);
+    if (a == 0) return 0;
+    const double q = y / a;  // in [-1, 1]: the "diamond angle"
+    return x >= 0 ? (y >= 0 ? q : 4 + q) : 2 - q;
+}
+
+// Whether moving the piece's start or end keeps it running forwards (a trimmed line or arc that would run
+// backwards is a gouge): for an arc, the new ends must lie in the old ones' order along its sense.
 bool runs_forward(const MotionRecord& r, Point new_start, Point new_end) {
     if (r.curve == CurveKind::Line) return dot(new_end - new_start, r.end - r.start) >= -kKerfLengthEpsilon;
     if (norm(new_end - new_start) <= kKerfLengthEpsilon) return true;
-    const double sweep = arc_sweep(new_start, new_end, r.centre, r.ccw, false);
-    return std::abs(sweep) <= std::abs(r.sweep) + 1e-9;
+    // Where the new ends lie along the arc's sense, from its old start (pseudo-angles): a sub-arc of the old one
+    // runs forwards. (A full circle's old end is a whole turn on.)
+    const auto along = [&](Point q) {
+        const Point a = r.start - r.centre, b = q - r.centre;
+        return r.ccw ? pseudo_angle(a, b) : pseudo_angle(b, a);
+    };
+    const auto near = [](Point p, Point q) { return norm(p - q) <= kKerfLengthEpsilon; };
+    const bool full = std::abs(r.sweep) >= 2 * kPi - 1e-12;
+    const double old_end = full ? 4.0 : along(r.end);
+    const double s = near(new_start, r.start) ? 0.0 : along(new_start);
+    const double e = near(new_end, r.end) ? old_end : along(new_end);
+    constexpr double kSlack = 1e-12;
+    return s <= e + kSlack && e <= old_end + kSlack;
 }
 
 // The centre of an entry arc that runs from `torch` to `end` (on the programmed arc's offset): on the line from
@@ -153,7 +203,7 @@ void KerfPath::emit(const MotionRecord& rec) {
 
 // The open piece is final: pass it on, then what came behind it (events, motions that go nowhere).
 void KerfPath::emit_open() {
-    emit(open_piece_.rec);
+    emit(open_piece().rec);
     for (auto& item : held_) {
         if (auto* e = std::get_if<MachineEvent>(&item)) {
             out_.on_event(*e);
@@ -224,31 +274,31 @@ void KerfPath::motion(const MotionRecord& m) {
         enter(m);
 }
 
-// The compensated pieces of a programmed motion (its own geometry, before corners): one for a line or an arc,
-// the chords of the offset curve for a parabola.
-std::vector<KerfPath::Piece> KerfPath::offset_pieces(const MotionRecord& m) const {
-    std::vector<Piece> pieces;
+void KerfPath::offset_piece(const MotionRecord& m, Piece& p) {
+    chords_.clear();
     const double off = offset_mm();
+    p.rec = m;
+    p.corner = m.end;
     if (m.curve == CurveKind::Line) {
-        const Point t = unit(m.end - m.start);
+        const Point t = line_direction(m);
         const Point shift = off * left_normal(t);
-        Piece p{m, m.end, t, {}, false};
         p.rec.start = m.start + shift;
         p.rec.end = m.end + shift;
-        pieces.push_back(p);
+        p.tangent_end = p.tangent_start = t;
     } else if (m.curve == CurveKind::Arc) {
-        // Left of a ccw arc is its centre: the radius shrinks; a cw arc's grows.
+        // Left of a ccw arc is its centre: the radius shrinks; a cw arc's grows. The angles stay.
         const double grow = m.ccw ? -off : off;
-        Piece p{m, m.end, end_tangent(m), {}, false};
-        const auto moved = [&](Point q) {
-            const double r = norm(q - m.centre);
+        const auto moved = [&](Point q, double r) {
             const double k = r > 0 ? std::max(r + grow, 0.0) / r : 0.0;
             return m.centre + k * (q - m.centre);
         };
-        p.rec.start = moved(m.start);
-        p.rec.end = moved(m.end);
-        reshape(p.rec, is_full_circle(m));
-        pieces.push_back(p);
+        p.rec.start = moved(m.start, m.radius);
+        p.rec.end = moved(m.end, m.end_radius);
+        p.rec.radius = std::max(m.radius + grow, 0.0);
+        p.rec.end_radius = std::max(m.end_radius + grow, 0.0);
+        p.rec.length_mm = std::abs(m.sweep) * (p.rec.radius + p.rec.end_radius) / 2;
+        p.tangent_end = end_tangent(m);
+        p.tangent_start = start_tangent(m);
     } else {
         const ParabolaGeom& g = m.parabola;
         const double step = std::sqrt(8 * chord_tolerance_mm_ * g.p);
@@ -260,24 +310,37 @@ std::vector<KerfPath::Piece> KerfPath::offset_pieces(const MotionRecord& m) cons
         Point prev = at(0);
         for (int i = 1; i <= n; ++i) {
             const Point q = at(i);
-            Piece p{m, i == n ? m.end : parabola_point(g, g.t0 + (g.t1 - g.t0) * i / n), unit(q - prev), {}, false};
-            p.rec.curve = CurveKind::Line;
-            p.rec.start = prev;
-            p.rec.end = q;
-            reshape(p.rec);
-            pieces.push_back(p);
+            const Point chord = unit(q - prev);
+            Piece c{m, i == n ? m.end : parabola_point(g, g.t0 + (g.t1 - g.t0) * i / n), chord,
+                    i == 1 ? start_tangent(m) : chord};
+            c.rec.curve = CurveKind::Line;
+            c.rec.start = prev;
+            c.rec.end = q;
+            reshape(c.rec);
+            if (i == n) c.tangent_end = end_tangent(m);
+            if (i == 1)
+                p = c;
+            else
+                chords_.push_back(c);
             prev = q;
         }
-        pieces.back().tangent_end = end_tangent(m);
     }
-    for (Piece& p : pieces) p.offset = p.rec;
-    return pieces;
+}
+
+// The pieces offset_piece left in chords_ (a parabola's after the first) are final but the last, which stays open.
+void KerfPath::take_chords(Piece& first) {
+    open_index_ = 1 - open_index_;  // `first` (the next piece) is the open one now
+    if (chords_.empty()) return;
+    emit(first.rec);
+    for (std::size_t i = 0; i + 1 < chords_.size(); ++i) emit(chords_[i].rec);
+    open_piece() = chords_.back();
 }
 
 // The first motion with compensation: from the torch to the compensated end of its own piece.
 void KerfPath::enter(const MotionRecord& m) {
-    std::vector<Piece> pieces = offset_pieces(m);
-    Piece& first = pieces.front();
+    Piece& first = next_piece();
+    offset_piece(m, first);
+    entry_offset_ = first.rec;
     if (m.curve == CurveKind::Line) {
         const Point dir = unit(m.end - torch_);
         const Point t = norm(m.end - torch_) > kKerfLengthEpsilon ? dir : unit(m.end - m.start);
@@ -289,11 +352,10 @@ void KerfPath::enter(const MotionRecord& m) {
         first.rec.centre = entry_arc_centre(m.centre, first.rec.end, torch_);
         first.tangent_end = arc_tangent(first.rec.end, first.rec.centre, m.ccw);
     }
-    first.entry = true;
     first.rec.start = torch_;
     reshape(first.rec);
-    for (std::size_t i = 0; i + 1 < pieces.size(); ++i) emit(pieces[i].rec);
-    open_piece_ = pieces.back();
+    take_chords(first);
+    open_is_entry_ = chords_.empty();
     open_ = true;
 }
 
@@ -319,17 +381,23 @@ void KerfPath::leave(const MotionRecord& m) {
 
 // The next compensated motion: the corner between the open piece and this one, then this one's pieces.
 void KerfPath::follow(const MotionRecord& m) {
-    std::vector<Piece> pieces = offset_pieces(m);
-    turn_corner(pieces.front(), m);
-    for (std::size_t i = 0; i + 1 < pieces.size(); ++i) emit(pieces[i].rec);
-    open_piece_ = pieces.back();
+    Piece& next = next_piece();
+    offset_piece(m, next);
+    turn_corner(next, m);
+    take_chords(next);
+    open_is_entry_ = false;
 }
 
 void KerfPath::turn_corner(Piece& next, const MotionRecord& m) {
-    const Point ta = open_piece_.tangent_end, tb = start_tangent(m);
-    const double turn = std::atan2(cross(ta, tb), dot(ta, tb));  // + = left
-    const double convex = std::abs(turn) > kPi - kKerfCornerTolerance ? kPi : -side_ * turn;
-    if (convex > kKerfCornerTolerance) {
+    // The turn from the open piece's direction to the next one's, towards the torch's side (+: convex, the
+    // torch goes round the outside) against the tolerance, without trigonometry: for unit vectors, the angle
+    // atan2(s, c) exceeds kKerfCornerTolerance when s cos(tol) > c sin(tol).
+    const Point ta = open_piece().tangent_end, tb = next.tangent_start;
+    const double c = dot(ta, tb), s = -side_ * cross(ta, tb);
+    const bool reversal = c < -kCosCornerTolerance;  // (turns back: convex from either side)
+    const bool convex = reversal || s * kCosCornerTolerance > c * kSinCornerTolerance;
+    const bool concave = !reversal && -s * kCosCornerTolerance > c * kSinCornerTolerance;
+    if (convex) {
         // Around the corner on an arc of the offset radius about the programmed corner (a rapid goes straight to
         // where the arc would end, as LinuxCNC's G0).
         emit_open();
@@ -337,26 +405,29 @@ void KerfPath::turn_corner(Piece& next, const MotionRecord& m) {
         join.curve = m.kind == MotionKind::Rapid ? CurveKind::Line : CurveKind::Arc;
         join.start = torch_;
         join.end = next.rec.start;
-        join.centre = open_piece_.corner;
+        join.centre = open_piece().corner;
         join.ccw = side_ < 0;
         reshape(join);
         emit(join);
         return;
     }
-    if (convex < -kKerfCornerTolerance && trim_concave(next, m)) return;
-    // Nearly straight on (or a gouge, reported): the next piece starts where the open one ends.
+    if (concave && trim_concave(next, m)) return;
+    // Nearly straight on (or a gouge, reported): the next piece starts where the open one ends (tangent pieces
+    // meet already, up to rounding: their geometry stays).
     emit_open();
+    const Point gap = next.rec.start - torch_;
+    const bool moved = dot(gap, gap) > kKerfLengthEpsilon * kKerfLengthEpsilon;
     next.rec.start = torch_;
-    reshape(next.rec, is_full_circle(next.rec));
+    if (moved) reshape(next.rec, is_full_circle(next.rec));
 }
 
 // A concave corner: both pieces end at their intersection nearest the corner. False (and a gouge) when they do
 // not meet, or when one of them would run backwards.
 bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
-    MotionRecord& a = open_piece_.rec;
+    MotionRecord& a = open_piece().rec;
     const Point near = 0.5 * (a.end + next.rec.start);
     std::optional<Point> best;
-    for (const Point& x : intersections(open_piece_.offset, next.rec))
+    for (const Point& x : intersections(open_is_entry_ ? entry_offset_ : a, next.rec))
         if (!best || norm(x - near) < norm(*best - near)) best = x;
     if (!best) {
         gouge(m, "the compensated path cannot turn into this corner: with a kerf offset of " + mm(radius_) +
@@ -369,7 +440,7 @@ bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
         return false;
     }
     a.end = *best;
-    if (open_piece_.entry && a.curve == CurveKind::Arc) a.centre = entry_arc_centre(open_piece_.offset.centre, a.end, a.start);
+    if (open_is_entry_ && a.curve == CurveKind::Arc) a.centre = entry_arc_centre(entry_offset_.centre, a.end, a.start);
     reshape(a);
     emit_open();
     next.rec.start = *best;

@@ -577,7 +577,9 @@ void Machine::warn_rapid_while_cutting(const Block& b) {
     }
     if (profile_.table) check_table(m, b);
     send(m);
-    if (stats_ && (m.kerf != KerfSide::Off || kerf_open_)) after_kerf_record(b);
+    if (stats_ && (m.kerf != KerfSide::Off || kerf_open_) &&
+        (kerf_open_ != stats_->kerf_open() || stats_->has_gouges())) [[unlikely]]
+        after_kerf_record(b);
 }
 
 // A record of the compensated path went to the statistics: the gouge its corner made, if any, and whether a

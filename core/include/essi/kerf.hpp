@@ -54,19 +54,18 @@ public:
     // Whether a compensated piece is open (the next motion decides its end): while not, a motion without
     // compensation passes unchanged.
     [[nodiscard]] bool open() const { return open_; }
+    [[nodiscard]] bool has_gouges() const { return !gouges_.empty(); }
     // The gouges found so far, in the order found; taking them empties the list.
     [[nodiscard]] std::vector<KerfGouge> take_gouges();
 
 private:
-    // A compensated piece and what the next corner needs of it: the programmed end point (the corner), the
-    // programmed direction of travel there, and the offset of the programmed piece (a concave corner trims where
-    // that meets the next piece: for an entry, which starts at the torch, it is not the piece itself).
+    // A compensated piece and what the corners need of it: the programmed end point (the corner) and the
+    // programmed directions of travel at both ends.
     struct Piece {
         MotionRecord rec;
         Point corner;
         Point tangent_end;
-        MotionRecord offset;
-        bool entry = false;
+        Point tangent_start;  // the programmed direction of travel at the start
     };
     void enter(const MotionRecord& m);
     void leave(const MotionRecord& m);
@@ -76,13 +75,25 @@ private:
     void emit_open();
     void emit(const MotionRecord& rec);
     void gouge(const MotionRecord& m, const std::string& why);
-    [[nodiscard]] std::vector<Piece> offset_pieces(const MotionRecord& m) const;
+    // The compensated pieces of a programmed motion, before corners: one for a line or an arc (returned), the
+    // chords of the offset curve for a parabola (the first returned, the rest in chords_).
+    void offset_piece(const MotionRecord& m, Piece& p);
+    void take_chords(Piece& first);
     [[nodiscard]] double offset_mm() const { return side_ * radius_; }
 
     MotionSink& out_;
     double chord_tolerance_mm_;
     bool open_ = false;
-    Piece open_piece_;
+    // The open piece and the next one, in turn (no copies of pieces per motion).
+    Piece pieces_[2];
+    int open_index_ = 0;
+    Piece& open_piece() { return pieces_[open_index_]; }
+    Piece& next_piece() { return pieces_[1 - open_index_]; }
+    // The open piece is an entry (it starts at the torch): a concave corner after it trims where the offset of
+    // its programmed motion meets the next piece, not the entry itself.
+    bool open_is_entry_ = false;
+    MotionRecord entry_offset_;
+    std::vector<Piece> chords_;  // a parabola's chords after the first
     double side_ = 1;    // +1: left of the direction of travel, -1: right
     double radius_ = 0;  // the offset (mm)
     Point torch_;        // where the last piece passed on ended

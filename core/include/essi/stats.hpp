@@ -76,6 +76,7 @@ public:
     // Whether a compensated piece is open: a line without compensation must then come as a record (it is the
     // exit from compensation).
     [[nodiscard]] bool kerf_open() const { return kerf_.open(); }
+    [[nodiscard]] bool has_gouges() const { return kerf_.has_gouges(); }
     [[nodiscard]] std::vector<KerfGouge> take_gouges() { return kerf_.take_gouges(); }
 
     [[nodiscard]] const Stats& stats() const { return stats_; }
