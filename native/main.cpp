@@ -396,7 +396,7 @@ int run_stats(const std::vector<std::string>& paths, const std::string& format, 
 }
 
 int run_trace(const std::string& path, const std::string& profile_arg, const std::string& input_arg,
-              std::uint64_t max_size, int decimals, essi::TracePath trace_path) {
+              std::uint64_t max_size, int decimals, essi::TraceView view) {
     const auto request = resolve_request(profile_arg, input_arg);
     if (!request) return kExitUsage;
     const essi::native::ReadResult file = read_tape_file(path, max_size);
@@ -405,7 +405,7 @@ int run_trace(const std::string& path, const std::string& profile_arg, const std
     const essi::TapeSetup setup = request->setup(file.bytes);
     const auto diagnostics =
         essi::trace_tape(file.bytes, setup.profile, [](std::string_view piece) { out(piece); }, setup.format, decimals,
-                         trace_path);
+                         view);
     const bool errors = std::any_of(diagnostics.begin(), diagnostics.end(),
                                     [](const essi::Diagnostic& d) { return d.severity == essi::Severity::Error; });
     return finish(errors ? kExitTapeErrors : kExitOk);
@@ -510,9 +510,11 @@ int main(int argc, char** argv) {
     trace->add_option("--decimals", trace_decimals, "Decimals of lengths and coordinates (default 3)")
         ->check(CLI::Range(0, 9))
         ->type_name("N");
-    bool trace_kerf = false;
-    trace->add_flag("--kerf", trace_kerf,
+    essi::TraceView trace_view;
+    trace->add_flag("--kerf", trace_view.kerf,
                     "The torch's path: the kerf-compensated motion stream (29/30/38), same record format");
+    trace->add_flag("--machine", trace_view.machine,
+                    "Machine coordinates: zero offset + plate rotation . program - tool offset (the profile's placement)");
     add_max_size_option(trace, max_size);
     trace->add_option("PATH", trace_path, "Tape file ('-' reads standard input)")->required();
 
@@ -608,8 +610,7 @@ int main(int argc, char** argv) {
     if (*check) return run_check(paths, check_opts);
     if (*stats) return run_stats(paths, format, profile_arg, input_arg, max_size);
     if (*trace)
-        return run_trace(trace_path, profile_arg, input_arg, max_size, trace_decimals,
-                         trace_kerf ? essi::TracePath::Kerf : essi::TracePath::Programmed);
+        return run_trace(trace_path, profile_arg, input_arg, max_size, trace_decimals, trace_view);
     if (*render) return run_render(render_opts);
     if (*convert) return run_convert(convert_opts);
     if (*show) return run_profile_show(show_arg);

@@ -2,6 +2,7 @@
 // Positions are kept in integer unit increments (machine axes, relative to the program start), so
 // arcs and lines end exactly where the tape says and nothing drifts over millions of blocks.
 #include "essi/interp.hpp"
+#include "essi/placement.hpp"
 
 #include <array>
 #include <optional>
@@ -147,6 +148,7 @@ private:
     }
     void set_tools(std::uint8_t tools) { tools_ = tools; }
     void check_table(const MotionRecord& m, const Block& b);
+    void check_table_box(const Box& box, const Block& b, const char* what);
 
     [[nodiscard]] std::string function_name(int code) const {
         const auto info = function_info(code, profile_.dialect);
@@ -180,7 +182,9 @@ private:
 
     // Machine state
     IPoint pos_[kHeads];            // per head, machine axes, unit increments
-    IPoint origin_;                 // origin of absolute coordinates (83), machine axes
+    IPoint origin_;                 // origin of absolute coordinates (83), program axes
+    const Placement placement_{profile_};  // the program on the machine (§11)
+    Point tool_offset_;             // where the tool in use sits from the centre torch (11, 114; 12 cancels)
     AxisMapping mapping_;           // 21-28
     bool mirrors_ = false;          // mapping_.mirrors(), kept with it (asked for every motion)
     bool absolute_ = false;         // 82
@@ -217,6 +221,7 @@ private:
         lines_direct_ = travel_direct_ && torches_ == 1;
     }
     [[gnu::noinline]] void after_kerf_record(const Block& b);
+    void select_tool_offset(const Block& b, int code);
     Point torch_step_;                   // mm between neighbouring torches (136, along profile.torch_direction)
     bool inside_table_ = true;
     std::optional<Block> last_block_;
@@ -503,8 +508,12 @@ void Machine::warn_macro_only(const Block& b) {
         case fn::kWoydaOxygenOff: tool(kToolOxygen, false); break;  // (the preheat stays)
         case fn::kPlasmaOn: tool(kToolPlasma, true); break;
         case fn::kPlasmaOff: tool(kToolPlasma, false); break;
+        case fn::kPunchMarkingOffsetOn:
+        case fn::kLineMarkingOffsetOn:
+        case fn::kToolOffsetOff: select_tool_offset(b, code); break;
         case fn::kCancelFunctions:
         case fn::kEndOfTape:  // not an end code in this profile: cancels the stored functions (ISO Annex B)
+            select_tool_offset(b, code);
             set_tools(0);
             rapid_ = false;
             set_kerf_side(KerfSide::Off);
@@ -622,18 +631,33 @@ inline void Machine::after_motion(const Block& b) {
     }
 }
 
+// 11, 114, 12 (and a 63 that cancels): the tool offset changes and the carriage moves by it at once, so that the
+// tool is over the contour (§11); a carriage that leaves the table there is E401 at this block.
+void Machine::select_tool_offset(const Block& b, int code) {
+    const Point next = tool_offset_after(profile_, code, tool_offset_);
+    if (next == tool_offset_) return;
+    tool_offset_ = next;
+    if (stats_) stats_->set_tool_offset(next);
+    if (!profile_.table) return;
+    const Point at = placement_.machine(to_mm(pos_[0]), tool_offset_);
+    check_table_box(Box::of(at, at), b, "the tool offset moves the carriage off the table");
+}
+
 void Machine::check_table(const MotionRecord& m, const Block& b) {
     if (!profile_.table) return;
+    check_table_box(placement_.machine_box(m, tool_offset_), b, "this motion leaves the table");
+}
+
+void Machine::check_table_box(const Box& box, const Block& b, const char* what) {
     const TableLimits& t = *profile_.table;
-    const Box box = bounding_box(m);
     const bool inside = box.min_x >= t.min_x_mm && box.max_x <= t.max_x_mm && box.min_y >= t.min_y_mm &&
                         box.max_y <= t.max_y_mm;
     if (!inside && inside_table_) {
-        char buf[200];
+        char buf[320];
         std::snprintf(buf, sizeof buf,
-                      "this motion leaves the table: it reaches x %.3f..%.3f, y %.3f..%.3f mm; the table allows x "
+                      "%s: it reaches x %.3f..%.3f, y %.3f..%.3f mm (machine coordinates); the table allows x "
                       "%.3f..%.3f, y %.3f..%.3f mm",
-                      box.min_x, box.max_x, box.min_y, box.max_y, t.min_x_mm, t.max_x_mm, t.min_y_mm, t.max_y_mm);
+                      what, box.min_x, box.max_x, box.min_y, box.max_y, t.min_x_mm, t.max_x_mm, t.min_y_mm, t.max_y_mm);
         warn(DiagCode::E401_LeavesTable, b, buf);
     }
     inside_table_ = inside;

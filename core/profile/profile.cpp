@@ -187,6 +187,100 @@ constexpr Range kChordRange{1e-6, 1000};            // mm
 constexpr Range kSecondsRange{0, 1e6};              // dwell and pierce time, s
 constexpr Range kSpeedRange{1e-9, 1e9};             // mm/min
 constexpr Range kPositionRange{-1e9, 1e9};          // mm: offsets and table limits
+constexpr Range kRotationRange{-360, 360};          // degrees
+constexpr std::size_t kMaxZeroOffsets = 100;        // entries of zero_offsets
+
+// A point given as {"x_mm": ..., "y_mm": ...} (an offset): the error names `where`.
+bool parse_offset(const json& v, const std::string& where, Point& out, std::vector<std::string>& errors) {
+    const auto coordinate = [&](const char* key, double& to) {
+        const auto f = v.find(key);
+        if (f == v.end() || !f->is_number() ||
+            !(f->get<double>() >= kPositionRange.min && f->get<double>() <= kPositionRange.max)) {
+            errors.push_back(where + " needs a number \"" + key + "\" between " + number_text(kPositionRange.min) +
+                             " and " + number_text(kPositionRange.max));
+            return false;
+        }
+        to = f->get<double>();
+        return true;
+    };
+    if (!v.is_object()) {
+        errors.push_back(where + " must be an object such as {\"x_mm\": 10, \"y_mm\": 0}");
+        return false;
+    }
+    for (auto it = v.begin(); it != v.end(); ++it) {
+        if (it.key() != "x_mm" && it.key() != "y_mm") {
+            errors.push_back(where + ": unknown key \"" + excerpt(it.key(), kMaxKeyChars) + "\"; expected x_mm and y_mm");
+            return false;
+        }
+    }
+    Point p;
+    if (!coordinate("x_mm", p.x) || !coordinate("y_mm", p.y)) return false;
+    out = p;
+    return true;
+}
+
+// zero_offsets, zero_offset, plate_rotation_deg, tool_offsets and the older setup_offset_x_mm/_y_mm (the
+// default entry), docs/semantics.md §11.
+void apply_placement_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
+    for (const char* axis : {"setup_offset_x_mm", "setup_offset_y_mm"}) {
+        const auto it = j.find(axis);
+        if (it == j.end()) continue;
+        if (!it->is_number() || !(it->get<double>() >= kPositionRange.min && it->get<double>() <= kPositionRange.max)) {
+            errors.push_back(std::string("\"") + axis + "\" must be between " + number_text(kPositionRange.min) +
+                             " and " + number_text(kPositionRange.max) + " (a number, mm)");
+            continue;
+        }
+        Point& entry = p.zero_offsets[Profile::kDefaultZeroOffset];
+        (axis[13] == 'x' ? entry.x : entry.y) = it->get<double>();
+    }
+    if (const auto it = j.find("zero_offsets"); it != j.end()) {
+        if (!it->is_object()) {
+            errors.push_back("\"zero_offsets\" must be an object such as {\"G54\": {\"x_mm\": 0, \"y_mm\": 0}}");
+        } else {
+            for (auto e = it->begin(); e != it->end(); ++e) {
+                if (e.key().empty() || e.key().size() > kMaxKeyChars) {
+                    errors.push_back("\"zero_offsets\" names must have 1 to " + std::to_string(kMaxKeyChars) + " characters");
+                    continue;
+                }
+                Point offset;
+                if (parse_offset(e.value(), "\"zero_offsets\" entry \"" + e.key() + "\"", offset, errors))
+                    p.zero_offsets[e.key()] = offset;
+            }
+            if (p.zero_offsets.size() > kMaxZeroOffsets)
+                errors.push_back("\"zero_offsets\" has more than " + std::to_string(kMaxZeroOffsets) + " entries");
+        }
+    }
+    if (const auto it = j.find("zero_offset"); it != j.end()) {
+        if (!it->is_string()) errors.push_back("\"zero_offset\" must be the name of an entry of \"zero_offsets\"");
+        else p.zero_offset = it->get<std::string>();
+    }
+    if (p.zero_offsets.find(p.zero_offset) == p.zero_offsets.end()) {
+        std::string names;
+        int listed = 0;
+        for (const auto& [name, offset] : p.zero_offsets)
+            if (listed++ < 5) names += (names.empty() ? "\"" : ", \"") + name + "\"";
+        if (listed > 5) names += " ...";
+        errors.push_back("\"zero_offset\" names \"" + excerpt(p.zero_offset, kMaxKeyChars) +
+                         "\", which \"zero_offsets\" does not have; expected one of " + names);
+    }
+    if (const auto it = j.find("plate_rotation_deg"); it != j.end()) {
+        if (!it->is_number() || !(it->get<double>() >= kRotationRange.min && it->get<double>() <= kRotationRange.max))
+            errors.push_back("\"plate_rotation_deg\" must be a number between -360 and 360");
+        else
+            p.plate_rotation_deg = it->get<double>();
+    }
+    if (const auto it = j.find("tool_offsets"); it != j.end()) {
+        if (!it->is_object()) {
+            errors.push_back("\"tool_offsets\" must be an object such as {\"marker\": {\"x_mm\": 80, \"y_mm\": 0}}");
+            return;
+        }
+        for (auto e = it->begin(); e != it->end(); ++e) {
+            if (e.key() == "marker") parse_offset(e.value(), "\"tool_offsets.marker\"", p.marker_offset, errors);
+            else if (e.key() == "powder_marker") parse_offset(e.value(), "\"tool_offsets.powder_marker\"", p.powder_marker_offset, errors);
+            else errors.push_back("\"tool_offsets\": unknown key \"" + excerpt(e.key(), kMaxKeyChars) + "\"; expected marker, powder_marker");
+        }
+    }
+}
 
 
 
@@ -274,8 +368,7 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
     number("feed_mm_min", p.feed_mm_min, kSpeedRange);
     number("rapid_mm_min", p.rapid_mm_min, kSpeedRange);
     number("pierce_time_s", p.pierce_time_s, kSecondsRange);
-    number("setup_offset_x_mm", p.setup_offset_x_mm, kPositionRange);
-    number("setup_offset_y_mm", p.setup_offset_y_mm, kPositionRange);
+    apply_placement_keys(j, p, errors);
     if (auto it = j.find("table"); it != j.end()) {
         if (it->is_null()) {
             p.table.reset();
@@ -309,7 +402,8 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
         "name", "base", "dialect", "unit_mm", "whitespace", "end_codes", "end_at_data_end", "arc_tolerance",
         "chord_tolerance_mm", "torch_direction",
         "optional_ignore", "rapid_single_block", "kerf_value", "kerf", "default_dwell_s", "feed_mm_min",
-        "rapid_mm_min", "pierce_time_s", "setup_offset_x_mm", "setup_offset_y_mm", "table", "eia"};
+        "rapid_mm_min", "pierce_time_s", "setup_offset_x_mm", "setup_offset_y_mm", "zero_offsets", "zero_offset",
+        "plate_rotation_deg", "tool_offsets", "table", "eia"};
     for (auto it = j.begin(); it != j.end(); ++it) {
         bool known = false;
         for (const char* k : kKnownKeys) known = known || it.key() == k;
@@ -426,8 +520,13 @@ std::string profile_to_json(const Profile& p) {
     j["rapid_mm_min"] = p.rapid_mm_min;
     j["pierce_time_s"] = p.pierce_time_s;
     j["torch_direction"] = p.torch_direction.x > 0 ? "+x" : p.torch_direction.x < 0 ? "-x" : p.torch_direction.y < 0 ? "-y" : "+y";
-    j["setup_offset_x_mm"] = p.setup_offset_x_mm;
-    j["setup_offset_y_mm"] = p.setup_offset_y_mm;
+    const auto offset = [](Point o) { return ordered_json{{"x_mm", o.x}, {"y_mm", o.y}}; };
+    ordered_json zeros = ordered_json::object();
+    for (const auto& [name, o] : p.zero_offsets) zeros[name] = offset(o);
+    j["zero_offsets"] = zeros;
+    j["zero_offset"] = p.zero_offset;
+    j["plate_rotation_deg"] = p.plate_rotation_deg;
+    j["tool_offsets"] = {{"marker", offset(p.marker_offset)}, {"powder_marker", offset(p.powder_marker_offset)}};
     if (p.table) {
         j["table"] = {{"min_x_mm", p.table->min_x_mm}, {"min_y_mm", p.table->min_y_mm},
                       {"max_x_mm", p.table->max_x_mm}, {"max_y_mm", p.table->max_y_mm}};
@@ -439,8 +538,8 @@ std::string profile_to_json(const Profile& p) {
 }
 
 bool mm_to_units(const Profile& p, Point mm, long long& x, long long& y) {
-    const double ux = std::round((mm.x - p.setup_offset_x_mm) / p.unit_mm);
-    const double uy = std::round((mm.y - p.setup_offset_y_mm) / p.unit_mm);
+    const double ux = std::round(mm.x / p.unit_mm);
+    const double uy = std::round(mm.y / p.unit_mm);
     constexpr double kLimit = 9.0e18;  // below 2^63: the cast is defined
     if (!(std::fabs(ux) < kLimit && std::fabs(uy) < kLimit)) return false;  // (NaN too)
     x = static_cast<long long>(ux);

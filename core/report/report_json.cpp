@@ -76,6 +76,8 @@ nlohmann::json stats_to_json(const Stats& s) {
     j["motions"] = s.motions;
     j["estimated_time_s"] = round_for_json(s.estimated_time_s);
     j["cut_bbox_mm"] = box_to_json(s.cut_bbox);
+    j["machine_cut_bbox_mm"] = box_to_json(s.machine_cut_bbox);
+    j["machine_motion_bbox_mm"] = box_to_json(s.machine_motion_bbox);
     j["end_position_mm"] = point_to_json(s.end_position);
     return j;
 }

@@ -3,6 +3,7 @@
 #include "essi/trace.hpp"
 
 #include "essi/kerf.hpp"
+#include "essi/placement.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -127,18 +128,21 @@ std::string trace_line(const MachineEvent& e, Dialect dialect) {
 }
 
 std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profile, const TraceWriter& write,
-                                   InputFormat format, int decimals, TracePath path) {
+                                   InputFormat format, int decimals, TraceView view) {
     const Tape tape = read_tape(bytes, profile, format);
     std::vector<Diagnostic> diagnostics = tape.diagnostics();
     TraceSink sink(write, profile.dialect, decimals);
-    if (path == TracePath::Kerf) {
-        KerfSink torch(sink, profile.chord_tolerance_mm);
+    // The chain: (the kerf path ->) (the machine's coordinates ->) the trace.
+    MachineSink placed(sink, profile);
+    MotionSink& after_kerf = view.machine ? static_cast<MotionSink&>(placed) : sink;
+    if (view.kerf) {
+        KerfSink torch(after_kerf, profile.chord_tolerance_mm);
         interpret(tape, bytes, profile, torch, diagnostics);
         torch.finish();
         for (KerfGouge& g : torch.take_gouges())
             diagnostics.push_back({Severity::Error, DiagCode::E307_KerfGouge, g.line, 1, std::move(g.message)});
     } else {
-        interpret(tape, bytes, profile, sink, diagnostics);
+        interpret(tape, bytes, profile, after_kerf, diagnostics);
     }
     sort_diagnostics(diagnostics);
     for (const auto& d : diagnostics) {

@@ -37,8 +37,8 @@ ProgramWriter::ProgramWriter(const Profile& source, const ConvertOptions& option
     : source_(source), options_(options), diagnostics_(diagnostics) {}
 
 Units ProgramWriter::to_units(Point mm, std::uint32_t line) {
-    const double ux = (mm.x - source_.setup_offset_x_mm) / options_.target.unit_mm;
-    const double uy = (mm.y - source_.setup_offset_y_mm) / options_.target.unit_mm;
+    const double ux = mm.x / options_.target.unit_mm;
+    const double uy = mm.y / options_.target.unit_mm;
     const Units u{std::llround(ux), std::llround(uy)};
     if (std::fabs(ux - static_cast<double>(u.x)) > kOnGrid || std::fabs(uy - static_cast<double>(u.y)) > kOnGrid) {
         if (rounded_++ == 0) rounded_line_ = line;

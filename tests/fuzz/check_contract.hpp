@@ -44,8 +44,8 @@ public:
     void on_motion(const essi::MotionRecord&) override { ++motions; }
     void on_line(const essi::UnitLine& l) override {
         ++motions;
-        const double ex = static_cast<double>(l.end_x) * profile_.unit_mm + profile_.setup_offset_x_mm;
-        const double sy = static_cast<double>(l.start_y) * profile_.unit_mm + profile_.setup_offset_y_mm;
+        const double ex = static_cast<double>(l.end_x) * profile_.unit_mm;
+        const double sy = static_cast<double>(l.start_y) * profile_.unit_mm;
         units_agree = units_agree && ex == l.end.x && sy == l.start.y;
     }
 private:

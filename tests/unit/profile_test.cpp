@@ -30,8 +30,11 @@ void expect_same(const Profile& a, const Profile& b) {
     EXPECT_DOUBLE_EQ(a.feed_mm_min, b.feed_mm_min);
     EXPECT_DOUBLE_EQ(a.rapid_mm_min, b.rapid_mm_min);
     EXPECT_DOUBLE_EQ(a.pierce_time_s, b.pierce_time_s);
-    EXPECT_DOUBLE_EQ(a.setup_offset_x_mm, b.setup_offset_x_mm);
-    EXPECT_DOUBLE_EQ(a.setup_offset_y_mm, b.setup_offset_y_mm);
+    EXPECT_EQ(a.zero_offsets, b.zero_offsets);
+    EXPECT_EQ(a.zero_offset, b.zero_offset);
+    EXPECT_DOUBLE_EQ(a.plate_rotation_deg, b.plate_rotation_deg);
+    EXPECT_EQ(a.marker_offset, b.marker_offset);
+    EXPECT_EQ(a.powder_marker_offset, b.powder_marker_offset);
     ASSERT_EQ(a.table.has_value(), b.table.has_value());
     if (a.table) {
         EXPECT_DOUBLE_EQ(a.table->min_x_mm, b.table->min_x_mm);
@@ -148,6 +151,12 @@ TEST(ProfileParse, ValuesBeyondTheirRangeAreErrorsNamingKeyAndRange) {
                  {R"({"pierce_time_s": 1e20})", "\"pierce_time_s\" must be between"},
                  {R"({"kerf": 1e300})", "\"kerf\" must be between"},
                  {R"({"setup_offset_x_mm": 1e300})", "\"setup_offset_x_mm\" must be between"},
+                 {R"({"plate_rotation_deg": 400})", "\"plate_rotation_deg\" must be a number between -360 and 360"},
+                 {R"({"zero_offset": "G57"})", "\"zero_offset\" names \"G57\", which \"zero_offsets\" does not have"},
+                 {R"({"zero_offsets": {"G55": {"x_mm": 1}}})", "\"zero_offsets\" entry \"G55\" needs a number \"y_mm\""},
+                 {R"({"zero_offsets": {"G55": {"x_mm": 1, "y_mm": 2, "z_mm": 3}}})", "unknown key \"z_mm\""},
+                 {R"({"tool_offsets": {"scribe": {"x_mm": 1, "y_mm": 2}}})", "\"tool_offsets\": unknown key \"scribe\""},
+                 {R"({"tool_offsets": {"marker": {"x_mm": 1e300, "y_mm": 2}}})", "\"tool_offsets.marker\" needs a number \"x_mm\""},
                  {R"({"table": {"min_x_mm": -1e300, "min_y_mm": 0, "max_x_mm": 10, "max_y_mm": 10}})",
                   "\"table\" needs a number \"min_x_mm\" between"}};
     for (const Case& c : cases) {
@@ -207,8 +216,12 @@ TEST(ProfileJson, RoundTripEverySetting) {
     p.feed_mm_min = 1234.5;
     p.rapid_mm_min = 15000;
     p.pierce_time_s = 1.75;
-    p.setup_offset_x_mm = -12.5;
-    p.setup_offset_y_mm = 40;
+    p.zero_offsets["G54"] = {-12.5, 40};
+    p.zero_offsets["G55"] = {1000, 0.25};
+    p.zero_offset = "G55";
+    p.plate_rotation_deg = 1.5;
+    p.marker_offset = {80, -5};
+    p.powder_marker_offset = {-120, 0};
     p.table = TableLimits{-10, -20, 3000, 12000};
     const std::string json = profile_to_json(p);
     ProfileResult r = parse_profile(json);
@@ -226,11 +239,10 @@ TEST(ProfileJson, RoundTripEverySetting) {
 
 TEST(Profile, UnitsToMmAndBack) {
     essi::Profile p = *essi::builtin_profile("iso6582");
-    p.setup_offset_x_mm = -12.5;
-    p.setup_offset_y_mm = 40;
+    p.zero_offsets["G54"] = {-12.5, 40};  // (program coordinates: the zero offset is the placement's)
     const essi::Point mm = essi::units_to_mm(p, 1234, -56);
-    EXPECT_DOUBLE_EQ(mm.x, 1234 * 0.1 - 12.5);
-    EXPECT_DOUBLE_EQ(mm.y, -56 * 0.1 + 40);
+    EXPECT_DOUBLE_EQ(mm.x, 1234 * 0.1);
+    EXPECT_DOUBLE_EQ(mm.y, -56 * 0.1);
     long long x = 0, y = 0;
     ASSERT_TRUE(essi::mm_to_units(p, mm, x, y));
     EXPECT_EQ(x, 1234);

@@ -251,8 +251,8 @@ public:
     std::size_t lines = 0;
     void on_line(const UnitLine& l) override {
         ++lines;
-        EXPECT_TRUE(same_bits(static_cast<double>(l.start_x) * profile_.unit_mm + profile_.setup_offset_x_mm, l.start.x));
-        EXPECT_TRUE(same_bits(static_cast<double>(l.end_y) * profile_.unit_mm + profile_.setup_offset_y_mm, l.end.y));
+        EXPECT_TRUE(same_bits(static_cast<double>(l.start_x) * profile_.unit_mm, l.start.x));
+        EXPECT_TRUE(same_bits(static_cast<double>(l.end_y) * profile_.unit_mm, l.end.y));
         RecordingSink::on_line(l);
     }
 private:
@@ -300,10 +300,10 @@ TEST(TapeCheckerAlso, GetsTheInterpretersStreamExactly) {
             expect_also_gets_the_stream(text, p, e.path().filename().string() + " " + p.name);
     }
     EXPECT_GE(examples, 10u);
-    Profile offset = iso_profile();
-    offset.setup_offset_x_mm = -12.5;
-    offset.setup_offset_y_mm = 40;
+    Profile offset = iso_profile();  // (the placement does not change the stream: program coordinates)
+    offset.zero_offsets["G54"] = {-12.5, 40};
+    offset.plate_rotation_deg = 3;
     const std::string nest = bench::generate_nest_tape(200000, 3);
     expect_also_gets_the_stream(nest, iso_profile(), "generated");
-    expect_also_gets_the_stream(nest, offset, "generated, setup offset");
+    expect_also_gets_the_stream(nest, offset, "generated, placed on the machine");
 }

@@ -143,12 +143,12 @@ TEST(ViewerDocument, LinesAreTheTapesLines) {
     }
 }
 
-TEST(ViewerDocument, SetupOffsetGivesTheSameRecords) {
-    // With a setup offset the lines are not taken in units (Sink::on_line): the records must not change.
+TEST(ViewerDocument, PlacementGivesTheSameRecords) {
+    // The motion stream is in program coordinates: a zero offset and a turned plate change no record.
     Profile p = *builtin_profile("iso6582");
-    p.setup_offset_x_mm = -12.5;
-    p.setup_offset_y_mm = 40;
-    check_tape(bench::generate_nest_tape(200000, 5), p, "generated, setup offset");
+    p.zero_offsets["G54"] = {-12.5, 40};
+    p.plate_rotation_deg = 2;
+    check_tape(bench::generate_nest_tape(200000, 5), p, "generated, placed on the machine");
 }
 
 TEST(ViewerDocument, PointsBeyondThirtyTwoBitsKeepTheirRecord) {

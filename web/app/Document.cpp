@@ -305,8 +305,7 @@ std::string describe_block(const Tape& tape, std::size_t i, const Profile& profi
 // The viewer's copy of the stream: TapeChecker's `also` sink (the statistics are the checker's own).
 class DocumentLoader::Sink : public MotionSink {
 public:
-    explicit Sink(Document& doc)
-        : doc_(doc), lines_in_units_(doc.profile.setup_offset_x_mm == 0 && doc.profile.setup_offset_y_mm == 0) {}
+    explicit Sink(Document& doc) : doc_(doc) {}
 
     void on_motion(const MotionRecord& r) override {
         Document& d = doc_;
@@ -336,7 +335,7 @@ public:
     void on_line(const UnitLine& l) override {
         constexpr long long kMax = std::numeric_limits<std::int32_t>::max();
         const auto fits = [](long long v) { return v >= -kMax && v <= kMax; };
-        if (!lines_in_units_ || !kerf_in_flags(l.kerf, l.kerf_mm) || !fits(l.start_x) || !fits(l.start_y) ||
+        if (!kerf_in_flags(l.kerf, l.kerf_mm) || !fits(l.start_x) || !fits(l.start_y) ||
             !fits(l.end_x) || !fits(l.end_y)) {
             on_motion(record_of(l));
             return;
@@ -398,7 +397,6 @@ private:
     }
 
     Document& doc_;
-    const bool lines_in_units_;  // (no setup offset)
     const float rapid_feed_ = static_cast<float>(doc_.profile.rapid_mm_min);
     Point last_end_;  // of the motion before (a motion that starts elsewhere is a jump)
     std::uint8_t tools_ = 0;

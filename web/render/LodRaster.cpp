@@ -23,11 +23,11 @@ void LodRaster::begin(const Document& doc, int cells) {
     begin(b, doc.origin, cells);
     if (width_ == 0) return;
     doc_ = &doc;
-    // A position in units to cells: cells = units x unit_mm / cell + (setup offset - origin - the raster's corner) / cell.
+    // A position in units to cells: cells = units x unit_mm / cell + (- origin - the raster's corner) / cell.
     const Profile& p = doc.profile;
     units_to_cells_ = p.unit_mm / cell_;
-    cells_at_zero_x_ = (p.setup_offset_x_mm - doc.origin.x - min_x_) / cell_;
-    cells_at_zero_y_ = (p.setup_offset_y_mm - doc.origin.y - min_y_) / cell_;
+    cells_at_zero_x_ = (-doc.origin.x - min_x_) / cell_;
+    cells_at_zero_y_ = (-doc.origin.y - min_y_) / cell_;
     for (const std::uint32_t i : doc.pierces) {
         const Point c = to_cells(doc.start_of(i));
         set(static_cast<int>(std::floor(c.x)), static_cast<int>(std::floor(c.y)), kPierceBit);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -93,15 +94,27 @@ struct Profile {
     // a machine axis; default +y, the transverse axis)
     Point torch_direction{0, 1};
 
-    // Machine placement (§11)
-    double setup_offset_x_mm = 0, setup_offset_y_mm = 0;  // setup zero offset (G54-like)
-    std::optional<TableLimits> table;           // travel limits; none = unlimited
+    // Machine placement (§11): machine = zero offset + R(plate rotation) · program − tool offset
+    std::map<std::string, Point> zero_offsets{{kDefaultZeroOffset, {}}};  // a G54-G59-like table, mm
+    std::string zero_offset = kDefaultZeroOffset;  // the active entry
+    double plate_rotation_deg = 0;                 // counter-clockwise about the program origin
+    Point marker_offset;                           // tool_offsets.marker: where the marker sits from the centre torch (11)
+    Point powder_marker_offset;                    // tool_offsets.powder_marker (114)
+    std::optional<TableLimits> table;              // travel limits in machine mm; none = unlimited
+
+    static constexpr const char* kDefaultZeroOffset = "G54";
+    // The active zero offset (the entry `zero_offset` names; parse_profile makes sure it exists).
+    [[nodiscard]] Point active_zero_offset() const {
+        const auto it = zero_offsets.find(zero_offset);
+        return it == zero_offsets.end() ? Point{} : it->second;
+    }
 };
 
-// Unit increments (machine axes, from the program start) to machine millimetres: units x unit_mm + the setup
-// offset (docs/semantics.md §3, §11). The one formula for the interpreter's positions and the viewer's motions.
+// Unit increments (the program's axes after 21-28, from the program start) to program millimetres: units x
+// unit_mm (docs/semantics.md §3, §11). The one formula for the interpreter's positions and the viewer's motions;
+// the machine's coordinates are the placement's (essi/placement.hpp).
 [[nodiscard]] inline Point units_to_mm(const Profile& p, long long x, long long y) {
-    return {static_cast<double>(x) * p.unit_mm + p.setup_offset_x_mm, static_cast<double>(y) * p.unit_mm + p.setup_offset_y_mm};
+    return {static_cast<double>(x) * p.unit_mm, static_cast<double>(y) * p.unit_mm};
 }
 // The unit increments whose units_to_mm is exactly `mm`: false when there are none (a point that is not on the
 // unit grid, or too far for a long long).

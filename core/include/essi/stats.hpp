@@ -6,6 +6,7 @@
 #include "essi/geom.hpp"
 #include "essi/kerf.hpp"
 #include "essi/motion.hpp"
+#include "essi/placement.hpp"
 #include "essi/profile.hpp"
 
 namespace essi {
@@ -20,8 +21,10 @@ struct Stats {
     unsigned long long blocks = 0; // program blocks read (comment lines and empty lines excluded)
     unsigned long long motions = 0;
     double estimated_time_s = 0;   // along the compensated path
-    Box cut_bbox;                  // empty when nothing is cut
-    Box motion_bbox;               // all motion
+    Box cut_bbox;                  // empty when nothing is cut (program coordinates)
+    Box motion_bbox;               // all motion (program coordinates)
+    Box machine_cut_bbox;          // the same in machine coordinates (§11: zero offset, plate rotation, tool offsets)
+    Box machine_motion_bbox;       // ... and where the carriage goes when a tool offset is selected
     Point end_position;            // machine position at the end (head 1)
 };
 
@@ -31,10 +34,14 @@ struct Stats {
 class StatsSink final : public MotionSink {
 public:
     explicit StatsSink(const Profile& profile)
-        : profile_(profile), torch_path_(stats_), kerf_(torch_path_, profile.chord_tolerance_mm) {}
+        : profile_(profile), torch_path_(stats_), kerf_(torch_path_, profile.chord_tolerance_mm), placement_(profile),
+          plain_(!placement_.turns()) {}
+    StatsSink(const StatsSink&) = delete;
+    StatsSink& operator=(const StatsSink&) = delete;
 
     void on_motion(const MotionRecord& m) override {
         kerf_.motion(m);
+        if (!plain_) [[unlikely]] add_machine_boxes(m);
         if (m.torches > 1 && m.kind == MotionKind::Cut) [[unlikely]] {
             add_torch_copies(m);
             return;
@@ -57,6 +64,7 @@ public:
     // A straight line without compensation while none is open (kerf_open() false): what on_motion counts of
     // one. The interpreter calls it directly for the lines of a tape that is only checked, without their records.
     [[gnu::always_inline]] void add_line(MotionKind kind, int head, Point start, Point end, double length_mm, double feed_mm_min) {
+        if (!plain_) [[unlikely]] add_machine_line(kind, start, end);
         add_programmed_line(kind, head, start, end, length_mm);
         TorchPath::add(stats_, kind, length_mm, feed_mm_min, 1);
     }
@@ -71,8 +79,22 @@ public:
         }
         tools_ = tools_after;
     }
-    // The end of the program: the compensated path's last piece.
-    void finish() { kerf_.finish(); }
+    // The tool offset in force from now on (11, 114, 12: the interpreter calls it): the carriage moves at once.
+    void set_tool_offset(Point offset) {
+        if (offset == tool_offset_) return;
+        go_explicit();
+        tool_offset_ = offset;
+        if (stats_.motions > 0) add_machine_box(Box::of(machine_end(), machine_end()), false);
+    }
+    // The end of the program: the compensated path's last piece; the machine boxes when they are the program's
+    // moved.
+    void finish() {
+        kerf_.finish();
+        if (plain_) {
+            stats_.machine_cut_bbox = placement_.moved(stats_.cut_bbox, {});
+            stats_.machine_motion_bbox = placement_.moved(stats_.motion_bbox, {});
+        }
+    }
     // Whether a compensated piece is open: a line without compensation must then come as a record (it is the
     // exit from compensation).
     [[nodiscard]] bool kerf_open() const { return kerf_.open(); }
@@ -98,6 +120,38 @@ private:
     private:
         Stats& stats_;
     };
+
+    // Machine boxes (§11). While the plate is not turned and no tool offset was ever selected ("plain"), they are
+    // the program's moved by the zero offset, worked out once at the end; from the first tool offset on, every
+    // motion adds its machine box.
+    void go_explicit() {
+        if (!plain_) return;
+        plain_ = false;
+        stats_.machine_cut_bbox = placement_.moved(stats_.cut_bbox, {});
+        stats_.machine_motion_bbox = placement_.moved(stats_.motion_bbox, {});
+    }
+    [[nodiscard]] Point machine_end() const { return placement_.machine(stats_.end_position, tool_offset_); }
+    void add_machine_box(const Box& b, bool cut) {
+        stats_.machine_motion_bbox.add(b);
+        if (cut) stats_.machine_cut_bbox.add(b);
+    }
+    void add_machine_line(MotionKind kind, Point start, Point end) {
+        add_machine_box(Box::of(placement_.machine(start, tool_offset_), placement_.machine(end, tool_offset_)),
+                        kind == MotionKind::Cut);
+    }
+    void add_machine_boxes(const MotionRecord& m) {
+        const bool cut = m.kind == MotionKind::Cut;
+        add_machine_box(placement_.machine_box(m, tool_offset_), cut);
+        if (m.torches > 1 && cut) {
+            MotionRecord last = m;
+            const Point far = torch_copy({0, 0}, m.torch_step, m.torches - 1);
+            last.start = torch_copy(m.start, far, 1);
+            last.end = torch_copy(m.end, far, 1);
+            last.centre = torch_copy(m.centre, far, 1);
+            last.parabola.vertex = torch_copy(m.parabola.vertex, far, 1);
+            add_machine_box(placement_.machine_box(last, tool_offset_), true);
+        }
+    }
 
     // A cut made by several torches at once: its length once per torch, the box of every copy.
     void add_torch_copies(const MotionRecord& m) {
@@ -146,6 +200,9 @@ private:
     std::uint8_t tools_ = 0;  // tools on before the current event (pierce counting)
     TorchPath torch_path_;
     KerfPath kerf_;
+    Placement placement_;
+    bool plain_;
+    Point tool_offset_;
 };
 
 }  // namespace essi

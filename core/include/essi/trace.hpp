@@ -28,16 +28,20 @@ constexpr int kTraceDecimals = 3;
 // Receives the trace a piece at a time (whole lines, each ending in '\n').
 using TraceWriter = std::function<void(std::string_view)>;
 
-// Which path the trace follows: the programmed one (the motion stream), or the torch's (the kerf-compensated
-// path, docs/semantics.md §8: `essi trace --kerf`).
-enum class TracePath : std::uint8_t { Programmed, Kerf };
+// What the trace shows: the motion stream as programmed (program coordinates), or the torch's path (the
+// kerf-compensated path, docs/semantics.md §8: `essi trace --kerf`), in machine coordinates (§11: `--machine`),
+// or both.
+struct TraceView {
+    bool kerf = false;
+    bool machine = false;
+};
 
 // Streams the trace of a tape to `write`: events and motions in program order, then the diagnostics as
 // "# E301 line 7 col 1: ...". Returns the diagnostics (sorted), so a caller can tell whether it had errors.
 // The kerf path adds its gouges (E307).
 std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profile, const TraceWriter& write,
                                    InputFormat format = InputFormat::Essi, int decimals = kTraceDecimals,
-                                   TracePath path = TracePath::Programmed);
+                                   TraceView view = {});
 
 // The whole trace as one string (small tapes, golden tests).
 [[nodiscard]] std::string trace_tape(std::string_view bytes, const Profile& profile,
