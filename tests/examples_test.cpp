@@ -1,7 +1,10 @@
 // Golden tests over examples/: every examples/NAME.esi is checked against
 //   NAME.expected.json  — ok, the multiset of (code, line) diagnostics, and statistics whose numbers were
 //                         computed by hand from docs/semantics.md (not taken from the core's output);
-//   NAME.trace          — the golden output of essi::trace_tape (good tapes only).
+//   NAME.trace          — the golden output of essi::trace_tape (good tapes only);
+//   NAME.kerf.trace     — the golden `essi trace --kerf` of every good tape that uses kerf compensation;
+//   NAME.profile.json   — the tape's own profile when the expected file names it ("profile_file"), e.g. a
+//                         placement on the machine; then NAME.machine.trace is the golden `essi trace --machine`.
 //
 // The tape list is read from the directory at run time (natively the source tree, in WASM the preloaded
 // /examples), so a new tape is tested as soon as its files are added.
@@ -11,11 +14,15 @@
 // Read every regenerated trace before committing it.
 //
 // expected.json format:
-//   {"profile": "iso6582" | "woyda", "ok": bool,
+//   {"profile": "iso6582" | "woyda" | ..., ["profile_file": "NAME.profile.json",] "ok": bool,
 //    "diagnostics": [{"code": "E301", "line": 9}, ...],          exact multiset: no extra, none missing
 //    "stats": {"cut_length_mm", "mark_length_mm", "travel_length_mm", "rapid_length_mm", "pierces", "blocks",
 //              "estimated_time_s", "cut_bbox_mm": {"min_x","min_y","max_x","max_y"} | null,
-//              "end_position_mm": {"x","y"}}}
+//              "end_position_mm": {"x","y"}, optional: "cut_length_compensated_mm", "machine_cut_bbox_mm",
+//              "machine_motion_bbox_mm"}}
+//   The compensated length and the time along the compensated path are the core's numbers, checked against
+//   LinuxCNC's compensation by the rs274_kerf test (every end point and length within 1e-3 mm) and against
+//   Clipper's offset areas by clipper_kerf.
 //   A good tape (ok: true) must give every key. A bad tape may leave out keys whose value the semantics do not
 //   define (e.g. where a rejected arc leaves the machine): absent keys are not compared.
 
@@ -116,6 +123,21 @@ void expect_near_key(const json& stats, const char* key, double actual, double t
     EXPECT_NEAR(actual, stats[key].get<double>(), tol) << key;
 }
 
+// A golden file: compared, or written under ESSI_UPDATE_GOLDEN=1.
+void expect_golden(const std::string& path, const std::string& text) {
+    if (update_golden()) {
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        ASSERT_TRUE(out) << "cannot write " << path;
+        out << text;
+        std::cout << "[ golden ] wrote " << path << "\n";
+        return;
+    }
+    ASSERT_TRUE(file_exists(path)) << "missing golden " << path
+                                   << " (run the native tests with ESSI_UPDATE_GOLDEN=1, then read it)";
+    const std::string golden = read_file(path);
+    EXPECT_TRUE(golden == text) << "trace differs from " << path << " at " << first_difference(golden, text);
+}
+
 class ExampleTape : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ExampleTape, MatchesExpectedAndTrace) {
@@ -136,8 +158,14 @@ TEST_P(ExampleTape, MatchesExpectedAndTrace) {
     }
 
     const std::string profile_name = expected.value("profile", std::string("iso6582"));
-    const auto profile = essi::builtin_profile(profile_name);
+    std::optional<essi::Profile> profile = essi::builtin_profile(profile_name);
     ASSERT_TRUE(profile.has_value()) << "unknown profile " << profile_name;
+    const std::string profile_file = expected.value("profile_file", std::string());
+    if (!profile_file.empty()) {
+        const essi::ProfileResult own = essi::parse_profile(read_file(examples_dir() + "/" + profile_file));
+        ASSERT_TRUE(own.profile.has_value()) << profile_file << " does not parse";
+        profile = own.profile;
+    }
 
     // The format from the content; `--profile auto` names the example's dialect.
     const essi::InputFormat format = essi::detect_input_format(bytes);
@@ -199,26 +227,40 @@ TEST_P(ExampleTape, MatchesExpectedAndTrace) {
             EXPECT_NEAR(s.cut_bbox.max_y, b.at("max_y").get<double>(), kLengthTolMm) << "cut_bbox max_y";
         }
     }
+    expect_near_key(st, "cut_length_compensated_mm", s.cut_length_compensated_mm, kLengthTolMm);
+    for (const auto& [key, box] : {std::pair<const char*, const essi::Box*>{"machine_cut_bbox_mm", &s.machine_cut_bbox},
+                                   {"machine_motion_bbox_mm", &s.machine_motion_bbox}}) {
+        if (!st.contains(key)) continue;
+        SCOPED_TRACE(key);
+        const json& b = st[key];
+        ASSERT_FALSE(box->empty);
+        EXPECT_NEAR(box->min_x, b.at("min_x").get<double>(), kLengthTolMm);
+        EXPECT_NEAR(box->min_y, b.at("min_y").get<double>(), kLengthTolMm);
+        EXPECT_NEAR(box->max_x, b.at("max_x").get<double>(), kLengthTolMm);
+        EXPECT_NEAR(box->max_y, b.at("max_y").get<double>(), kLengthTolMm);
+    }
     if (st.contains("end_position_mm")) {
         const json& e = st["end_position_mm"];
         EXPECT_NEAR(s.end_position.x, e.at("x").get<double>(), kLengthTolMm) << "end x";
         EXPECT_NEAR(s.end_position.y, e.at("y").get<double>(), kLengthTolMm) << "end y";
     }
 
-    // --- trace golden (good tapes) ---
+    // --- trace goldens (good tapes): the stream, the kerf path where there is one, the machine's with its own profile ---
     if (!expected_ok) return;
     const std::string trace = essi::trace_tape(bytes, *profile, format);
-    if (update_golden()) {
-        std::ofstream out(trace_path, std::ios::binary | std::ios::trunc);
-        ASSERT_TRUE(out) << "cannot write " << trace_path;
-        out << trace;
-        std::cout << "[ golden ] wrote " << trace_path << "\n";
-        return;
+    expect_golden(trace_path, trace);
+    if (trace.find(" kerf=") != std::string::npos) {
+        std::string kerf;
+        (void)essi::trace_tape(bytes, *profile, [&](std::string_view piece) { kerf += piece; }, format,
+                               essi::kTraceDecimals, essi::TraceView{true, false});
+        expect_golden(path_of(name, ".kerf.trace"), kerf);
     }
-    ASSERT_TRUE(file_exists(trace_path))
-        << "missing golden " << trace_path << " (run the native tests with ESSI_UPDATE_GOLDEN=1, then read it)";
-    const std::string golden = read_file(trace_path);
-    EXPECT_TRUE(golden == trace) << "trace differs from " << trace_path << " at " << first_difference(golden, trace);
+    if (!profile_file.empty()) {
+        std::string placed;
+        (void)essi::trace_tape(bytes, *profile, [&](std::string_view piece) { placed += piece; }, format,
+                               essi::kTraceDecimals, essi::TraceView{false, true});
+        expect_golden(path_of(name, ".machine.trace"), placed);
+    }
 }
 
 std::string param_name(const ::testing::TestParamInfo<std::string>& info) {
@@ -239,11 +281,12 @@ TEST(ExamplesDir, HasTapesAndNoOrphans) {
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(examples_dir(), ec)) {
         const std::string file = entry.path().filename().string();
-        for (const std::string suffix : {".expected.json", ".trace"}) {
+        for (const std::string suffix : {".expected.json", ".kerf.trace", ".machine.trace", ".profile.json", ".trace"}) {
             if (file.size() > suffix.size() && file.ends_with(suffix)) {
                 const std::string stem = file.substr(0, file.size() - suffix.size());
                 EXPECT_TRUE(std::binary_search(names.begin(), names.end(), stem))
                     << file << " has no " << stem << ".esi or .eia beside it";
+                break;  // (the longest suffix first: x.kerf.trace is not a trace of "x.kerf")
             }
         }
     }

@@ -421,8 +421,8 @@ void KerfPath::turn_corner(Piece& next, const MotionRecord& m) {
     if (moved) reshape(next.rec, is_full_circle(next.rec));
 }
 
-// A concave corner: both pieces end at their intersection nearest the corner. False (and a gouge) when they do
-// not meet, or when one of them would run backwards.
+// A concave corner: both pieces end at their intersection nearest the corner. A gouge when they do not meet or
+// one of them would run backwards; false (no trim) when they do not meet or the piece before would.
 bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
     MotionRecord& a = open_piece().rec;
     const Point near = 0.5 * (a.end + next.rec.start);
@@ -434,11 +434,17 @@ bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
                      " mm the pieces before and after it do not meet");
         return false;
     }
-    if (!runs_forward(a, a.start, *best) || !runs_forward(next.rec, *best, next.rec.end)) {
+    const auto report = [&] {
         gouge(m, "the torch cannot reach this concave corner without cutting into the contour (a gouge): the kerf "
                  "offset of " + mm(radius_) + " mm is wider than the corner allows");
+    };
+    if (!runs_forward(a, a.start, *best)) {
+        report();
         return false;
     }
+    // The piece before still ends at the intersection (as rs274 has it before it stops); a next piece that runs
+    // backwards from there is drawn as the torch would go: into the contour.
+    if (!runs_forward(next.rec, *best, next.rec.end)) report();
     a.end = *best;
     if (open_is_entry_ && a.curve == CurveKind::Arc) a.centre = entry_arc_centre(entry_offset_.centre, a.end, a.start);
     reshape(a);

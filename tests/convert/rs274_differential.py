@@ -162,8 +162,9 @@ def main():
     if not rs274:
         print("FAIL rs274 not found: scripts/setup installs linuxcnc-uspace (apt-get install --no-install-recommends linuxcnc-uspace)")
         return 1
+    # (with --kerf also the bad kerf examples: rs274 must refuse them where essikit reports the gouge)
     tapes = [os.path.join(examples, f) for f in sorted(os.listdir(examples))
-             if f.endswith((".esi", ".eia")) and not f.startswith("bad_")]
+             if f.endswith((".esi", ".eia")) and (not f.startswith("bad_") or (kerf and f.startswith("bad_kerf")))]
     if corpus and os.path.isdir(corpus):
         for root, _, files in os.walk(corpus):
             tapes += [os.path.join(root, f) for f in sorted(files) if not f.startswith(".") and not f.endswith(".md")]
