@@ -1,5 +1,7 @@
 #include "render_svg.hpp"
 
+#include "essi/kerf.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -33,9 +35,11 @@ std::string num(double v) {
 // Collects the drawing: one path per motion kind, pierce points, and the position at each source line.
 class SvgSink : public MotionSink {
 public:
-    explicit SvgSink(double tolerance) : tolerance_(tolerance) {}
+    SvgSink(double tolerance, double chord_tolerance_mm)
+        : tolerance_(tolerance), kerf_layer_(*this), kerf_(kerf_layer_, chord_tolerance_mm) {}
 
     void on_motion(const MotionRecord& m) override {
+        kerf_.motion(m);
         if (first_line_pos_.find(m.line) == first_line_pos_.end()) first_line_pos_.emplace(m.line, m.start);
         last_end_ = m.end;
         if (m.kind == MotionKind::Cut && pierce_pending_) {
@@ -70,8 +74,37 @@ public:
 
     std::array<std::string, 4> paths_;  // by MotionKind: rapid, travel, cut, mark
     std::vector<Point> pierces_;
+    std::string kerf_path_;                     // the compensated torch path (§8) while compensation is on
+    std::map<double, std::string> kerf_bands_;  // the cuts' compensated path by kerf width (the band's width)
+    void finish() { kerf_.finish(); }
 
 private:
+    // The compensated pieces: the kerf layer, and for cuts the band of the kerf's width.
+    class KerfLayer final : public MotionSink {
+    public:
+        explicit KerfLayer(SvgSink& svg) : svg_(svg) {}
+        void on_motion(const MotionRecord& m) override {
+            if (m.kerf == KerfSide::Off) {
+                at_valid_ = false;
+                return;
+            }
+            svg_.points_.clear();
+            flatten(m, svg_.tolerance_, svg_.points_, false);
+            std::string d = "M" + num(m.start.x) + " " + num(-m.start.y);
+            for (const Point& p : svg_.points_) d += "L" + num(p.x) + " " + num(-p.y);
+            if (!at_valid_ || !(at_ == m.start)) svg_.kerf_path_ += "M" + num(m.start.x) + " " + num(-m.start.y);
+            svg_.kerf_path_ += d.substr(d.find('L') == std::string::npos ? d.size() : d.find('L'));
+            if (m.kind == MotionKind::Cut) svg_.kerf_bands_[2 * m.kerf_mm] += d;
+            at_ = m.end;
+            at_valid_ = true;
+        }
+
+    private:
+        SvgSink& svg_;
+        Point at_;
+        bool at_valid_ = false;
+    };
+
     double tolerance_;
     std::array<Point, 4> last_{};
     std::array<bool, 4> has_last_{};
@@ -80,6 +113,8 @@ private:
     Point last_end_;
     bool cutting_ = false;
     bool pierce_pending_ = false;
+    KerfLayer kerf_layer_;
+    KerfPath kerf_;
 };
 
 }  // namespace
@@ -97,13 +132,14 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     const double tolerance = std::max(extent / 4000.0, std::max(profile.chord_tolerance_mm, kMinChordTolerance));
 
     // Pass 2: the drawing (the same pipeline with a sink; its result is the same as pass 1's).
-    SvgSink sink(tolerance);
+    SvgSink sink(tolerance, profile.chord_tolerance_mm);
     {
         TapeChecker checker(bytes, profile, &sink);
         TapeReader reader(bytes, profile, format);
         Tape chunk;
         while (reader.read_chunk(chunk, kCheckChunkBlocks)) checker.check_chunk(chunk);
         (void)checker.finish();
+        sink.finish();
     }
 
     const double margin = std::max(extent * 0.05, 1.0);
@@ -145,6 +181,13 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
         s += "<path id=\"" + std::string(l.name) + "\" class=\"" + l.name + "\" stroke=\"" + std::string(l.color) +
              "\"" + l.extra + " vector-effect=\"non-scaling-stroke\" d=\"" + d + "\"/>\n";
     }
+    // The kerf: the cut's real width (a band as wide as the kerf along the compensated path) and the torch's path.
+    for (const auto& [width, d] : sink.kerf_bands_)
+        s += "<path class=\"kerf-band\" data-width-mm=\"" + num(width) + "\" stroke=\"" + std::string(kSvgKerfBandColor) +
+             "\" stroke-opacity=\"0.25\" stroke-width=\"" + num(width) + "\" d=\"" + d + "\"/>\n";
+    if (!sink.kerf_path_.empty())
+        s += "<path id=\"kerf\" class=\"kerf\" stroke=\"" + std::string(kSvgKerfColor) +
+             "\" stroke-width=\"1\" vector-effect=\"non-scaling-stroke\" d=\"" + sink.kerf_path_ + "\"/>\n";
     s += "</g>\n<g id=\"pierces\" fill=\"none\" stroke=\"" + std::string(kSvgPierceColor) + "\" stroke-width=\"1.5\">\n";
     for (const Point& p : sink.pierces_)
         s += "<circle class=\"pierce\" cx=\"" + num(p.x) + "\" cy=\"" + num(-p.y) + "\" r=\"" + num(marker_r) +
@@ -201,6 +244,7 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     key("mark", kSvgMarkColor, "");
     key("travel", kSvgTravelColor, " stroke-dasharray=\"2 2\"");
     key("rapid", kSvgRapidColor, " stroke-dasharray=\"4 3\"");
+    if (!sink.kerf_path_.empty()) key("kerf", kSvgKerfColor, "");
     key("pierce", kSvgPierceColor, "");
     key("error", kSvgErrorColor, "");
     key("warning", kSvgWarningColor, "");

@@ -20,6 +20,8 @@ constexpr std::string_view kSvgRapidColor = "#bcbd22";
 constexpr std::string_view kSvgPierceColor = "#ff7f0e";
 constexpr std::string_view kSvgErrorColor = "#e000e0";
 constexpr std::string_view kSvgWarningColor = "#e6a100";
+constexpr std::string_view kSvgKerfColor = "#2ca02c";      // the compensated torch path (kerf layer)
+constexpr std::string_view kSvgKerfBandColor = "#d62728";  // the cut's real width, translucent
 
 struct RenderOptions {
     std::string title;             // shown in the legend (the file name)

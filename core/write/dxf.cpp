@@ -6,6 +6,7 @@
 
 #include "essi/geom.hpp"
 #include "essi/interp.hpp"
+#include "essi/kerf.hpp"
 #include "essi/report.hpp"
 
 namespace essi {
@@ -18,7 +19,7 @@ struct Layer {
     const char* name;
     int colour;  // AutoCAD colour index
 };
-constexpr Layer kCut{"CUT", 1}, kMark{"MARK", 3}, kTravel{"TRAVEL", 8}, kDiagnostics{"DIAGNOSTICS", 6};
+constexpr Layer kCut{"CUT", 1}, kMark{"MARK", 3}, kTravel{"TRAVEL", 8}, kKerf{"KERF", 4}, kDiagnostics{"DIAGNOSTICS", 6};
 
 const Layer& layer_of(MotionKind k) {
     switch (k) {
@@ -56,13 +57,17 @@ double degrees(Point from, Point to) {
 }
 
 // Collects the entities; remembers where each source line's motions end (for the diagnostics).
+// The compensated torch path (§8) goes to the layer KERF, where compensation is on.
 class DxfSink final : public MotionSink {
 public:
-    DxfSink(DxfText& out, const Profile& profile) : out_(out), profile_(profile) {}
+    DxfSink(DxfText& out, const Profile& profile)
+        : out_(out), profile_(profile), kerf_layer_(*this), kerf_(kerf_layer_, profile.chord_tolerance_mm) {}
     void on_motion(const MotionRecord& m) override {
-        for (int c = 0; c < m.torches; ++c) draw(m, torch_copy({0, 0}, m.torch_step, c));
+        kerf_.motion(m);
+        for (int c = 0; c < m.torches; ++c) draw(m, layer_of(m.kind), torch_copy({0, 0}, m.torch_step, c));
         ends_.emplace_back(m.line, m.end);
     }
+    void finish() { kerf_.finish(); }
     // Where the motions of `line` (or the next line with motion) end; the last position when none.
     [[nodiscard]] Point where(std::uint32_t line) const {
         for (const auto& [l, p] : ends_)
@@ -85,8 +90,7 @@ private:
         out_.number(50, from_deg);
         out_.number(51, to_deg);
     }
-    void draw(const MotionRecord& m, Point shift) {
-        const Layer& layer = layer_of(m.kind);
+    void draw(const MotionRecord& m, const Layer& layer, Point shift) {
         const auto at = [&](Point p) { return Point{p.x + shift.x, p.y + shift.y}; };
         if (m.curve == CurveKind::Line) return line(layer, at(m.start), at(m.end));
         if (m.curve == CurveKind::Parabola) {
@@ -107,9 +111,23 @@ private:
         else arc(layer, c, m.radius, a1, a0);  // (DXF arcs run counter-clockwise)
     }
 
+    class KerfLayer final : public MotionSink {
+    public:
+        explicit KerfLayer(DxfSink& dxf) : dxf_(dxf) {}
+        void on_motion(const MotionRecord& m) override {
+            if (m.kerf == KerfSide::Off) return;
+            for (int c = 0; c < m.torches; ++c) dxf_.draw(m, kKerf, torch_copy({0, 0}, m.torch_step, c));
+        }
+
+    private:
+        DxfSink& dxf_;
+    };
+
     DxfText& out_;
     const Profile& profile_;
     std::vector<std::pair<std::uint32_t, Point>> ends_;
+    KerfLayer kerf_layer_;
+    KerfPath kerf_;
 };
 
 void header(DxfText& d) {
@@ -122,8 +140,8 @@ void header(DxfText& d) {
     d.code(2, "TABLES");
     d.code(0, "TABLE");
     d.code(2, "LAYER");
-    d.code(70, "4");
-    for (const Layer* l : {&kCut, &kMark, &kTravel, &kDiagnostics}) {
+    d.code(70, "5");
+    for (const Layer* l : {&kCut, &kMark, &kTravel, &kKerf, &kDiagnostics}) {
         d.code(0, "LAYER");
         d.code(2, l->name);
         d.code(70, "0");
@@ -146,6 +164,7 @@ DxfResult render_dxf(std::string_view bytes, const TapeSetup& setup) {
     const Tape tape = read_tape(bytes, setup.profile, setup.format);
     r.diagnostics = tape.diagnostics();
     interpret(tape, bytes, setup.profile, sink, r.diagnostics);
+    sink.finish();
     sort_diagnostics(r.diagnostics);
     for (const Diagnostic& diag : r.diagnostics) {
         if (diag.line == 0) continue;

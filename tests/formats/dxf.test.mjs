@@ -1,5 +1,6 @@
 // `essi render --format dxf`: every example's DXF read by an independent parser (dxf-parser, npm): the entities
-// per layer and their lengths must be the statistics of `essi check`, a clockwise arc is written from its end, a
+// per layer and their lengths must be the statistics of `essi check` (the KERF layer: the compensated pieces of
+// `essi trace --kerf`), a clockwise arc is written from its end, a
 // full circle as two half arcs, and each diagnostic is on the DIAGNOSTICS layer.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -40,13 +41,18 @@ test('every example and real tape: DXF lengths per layer are the statistics of e
     const report = JSON.parse(essi(['check', '--format', 'json', '--profile', 'auto', tape]).stdout).files[0];
     if (!report.ok) continue;  // (a rejected arc's geometry is not defined)
     const dxf = dxfOf(tape);
-    assert.deepEqual(Object.keys(dxf.tables.layer.layers).sort(), ['CUT', 'DIAGNOSTICS', 'MARK', 'TRAVEL'], tape);
-    const sum = { CUT: 0, MARK: 0, TRAVEL: 0 };
+    assert.deepEqual(Object.keys(dxf.tables.layer.layers).sort(), ['CUT', 'DIAGNOSTICS', 'KERF', 'MARK', 'TRAVEL'], tape);
+    const sum = { CUT: 0, MARK: 0, TRAVEL: 0, KERF: 0 };
     for (const e of dxf.entities) if (e.layer in sum) sum[e.layer] += length(e);
     const s = report.stats;
     // parabolas are flattened within 0.01 mm a chord: a little shorter than the curve
     for (const [layer, want] of [['CUT', s.cut_length_mm], ['MARK', s.mark_length_mm], ['TRAVEL', s.travel_length_mm]])
       assert.ok(Math.abs(sum[layer] - want) <= 1e-3 + 1e-4 * want, `${tape}: ${layer} ${sum[layer]} != ${want}`);
+    const kerfTrace = essi(['trace', '--kerf', '--decimals', '6', '--profile', 'auto', tape]).stdout.split('\n');
+    const copies = (l) => Number((l.match(/ torches=(\d+)/) || [0, 1])[1]);  // (each torch's copy is drawn)
+    const kerfWant = kerfTrace.filter((l) => / kerf=/.test(l)).reduce((a, l) => a + copies(l) * Number(l.match(/ len=([\d.]+)/)[1]), 0);
+    assert.ok(Math.abs(sum.KERF - kerfWant) <= 1e-3 + 1e-4 * kerfWant, `${tape}: KERF ${sum.KERF} != ${kerfWant}`);
+    if (/kerf_parts/.test(tape)) assert.ok(kerfWant > 900, `${tape}: the kerf layer is drawn (${kerfWant} mm)`);
     const diagnostics = dxf.entities.filter((e) => e.layer === 'DIAGNOSTICS' && e.type === 'TEXT');
     assert.equal(diagnostics.length, report.diagnostics.filter((d) => d.line > 0).length, tape);
     ++checked;
