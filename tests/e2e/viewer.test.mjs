@@ -176,7 +176,9 @@ test('the viewer reads with the dialect the tape shows, says why, and switches i
 
 test('a bad tape shows its diagnostics with their lines', async () => {
   const page = await newPage();
-  const bad = examples().filter((f) => f.startsWith('bad_'));
+  // (a bad tape that needs its own profile, e.g. a placement whose table it leaves, is bad only with that profile)
+  const ownProfile = (f) => fs.existsSync(path.join(examplesDir, f.replace(/\.(esi|eia)$/, '.profile.json')));
+  const bad = examples().filter((f) => f.startsWith('bad_') && !ownProfile(f));
   assert.ok(bad.length > 0);
   for (const file of bad) {
     const state = await dropFile(page, file, fs.readFileSync(path.join(examplesDir, file)));
