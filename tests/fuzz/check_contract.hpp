@@ -99,8 +99,14 @@ inline void check_one(std::string_view bytes, const char* name, essi::InputForma
     // Lengths are never negative or NaN.
     const essi::Stats& s = r.stats;
     if (!(s.cut_length_mm >= 0) || !(s.mark_length_mm >= 0) || !(s.travel_length_mm >= 0) ||
-        !(s.rapid_length_mm >= 0))
-        fail("a length in Stats is negative or NaN", name);
+        !(s.rapid_length_mm >= 0) || !(s.cut_length_compensated_mm >= 0) || !(s.estimated_time_s >= 0))
+        fail("a length or the time in Stats is negative or NaN", name);
+    // Without compensation the torch's path is the programmed one (docs/semantics.md §8).
+    if (s.cut_length_compensated_mm != s.cut_length_mm && !(s.motions > 0))
+        fail("a compensated cut length without motion", name);
+    // The machine boxes: with the built-in profiles (no placement) the program's.
+    if (s.machine_cut_bbox.empty != s.cut_bbox.empty || s.machine_motion_bbox.empty != s.motion_bbox.empty)
+        fail("a machine box where the program has none (or none where it has one)", name);
 
     check_also(bytes, name, format, r);
 }
