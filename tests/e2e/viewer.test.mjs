@@ -525,6 +525,43 @@ test('the block inspector says in words what a block does', async () => {
   await page.close();
 });
 
+test('kerf compensation: the torch path and the cut\'s width are drawn, toggled, and the inspector shows both positions', async () => {
+  const page = await newPage();
+  const { state } = await loadExample(page, 'kerf_parts.esi');
+  assert.ok(state.kerf.segments > 40, `kerf segments: ${state.kerf.segments}`);
+  assert.deepEqual(state.kerf.widths_mm, [3]);
+  assert.equal(state.layers.kerf, true);
+  assert.equal(state.layers.kerf_band, true);
+  // Zoom onto part A's left side (programmed x 200, the torch 1.5 mm to its left at x 198.5).
+  await page.evaluate(() => essikit.setView(199, 250, 40));
+  await page.mouse.move(5, 890);
+  await page.waitForTimeout(150);
+  const KERF_RGB = [77, 242, 115];  // kPathColorTable[kKerfPathKind]
+  const torchAt = async () => {
+    const at = await pixels(page, await page.screenshot());
+    const p = await page.evaluate(() => essikit.project(198.5, 250));
+    const hits = [];
+    for (let dy = -1; dy <= 1; ++dy) for (let dx = -1; dx <= 1; ++dx) hits.push(at(p.x + dx, p.y + dy));
+    return hits.some((c) => near(c, KERF_RGB));
+  };
+  assert.ok(await torchAt(), 'no kerf path colour where the torch runs');
+  await page.screenshot({ path: path.join(shots, 'kerf-layers.png') });
+  await page.evaluate(() => essikit.setLayer(6, false));
+  await page.waitForTimeout(150);
+  assert.equal((await page.evaluate(() => essikit.state())).layers.kerf, false);
+  assert.ok(!(await torchAt()), 'the kerf path is still drawn when its layer is off');
+  await page.evaluate(() => essikit.setLayer(6, true));
+  // The inspector: the programmed motion and the torch's.
+  await page.evaluate(() => essikit.selectLine(15));
+  const words = (await page.evaluate(() => essikit.state())).inspector.join('\n');
+  assert.match(words, /^cut line from \(200\.000, 210\.000\) to \(200\.000, 290\.000\)/m);
+  assert.match(words, /^torch \(kerf\): cut line from \(198\.500, 210\.000\) to \(198\.500, 290\.000\)/m);
+  // A tape without compensation has no kerf segments.
+  const plain = await loadExample(page, 'arcs_both_senses.esi');
+  assert.equal(plain.state.kerf.segments, 0);
+  await page.close();
+});
+
 test('a share link for a tape too large for a URL says so', async () => {
   const page = await newPage();
   const name = generatedTape(5);

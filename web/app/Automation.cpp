@@ -15,6 +15,8 @@ namespace {
 // setLayer's numbers after the four MotionKinds.
 constexpr int kLayerPierces = 4;
 constexpr int kLayerStart = 5;
+constexpr int kLayerKerf = 6;      // the compensated torch path
+constexpr int kLayerKerfBand = 7;  // the band of the cut's width
 
 using nlohmann::json;
 
@@ -28,6 +30,9 @@ void add_document(json& j, const Document& doc, const LoadController& load, cons
     j["lines"] = doc.line_count();
     j["motions"] = doc.motions.size();
     j["segments"] = load.buffers().segment_count;
+    json widths = json::array();
+    for (std::size_t k = 0; k < load.buffers().kerf_width_count; ++k) widths.push_back(load.buffers().kerf_widths[k]);
+    j["kerf"] = {{"segments", load.buffers().kerf_segments}, {"widths_mm", widths}};
     j["pierce_markers"] = doc.pierces.size();
     j["bbox_mm"] = box_to_json(doc.bbox);
     j["memory_bytes"] = doc.memory_bytes() + load.segment_index_bytes();
@@ -82,6 +87,8 @@ json inspector_json(const Document* doc, std::uint32_t line) {
     for (std::size_t b = blocks.first; b < blocks.last; ++b) insp.push_back(describe_block(*blocks.chunk, b, doc->profile));
     const auto [m0, m1] = doc->motions_of_line(line);
     for (std::size_t m = m0; m < m1 && m < m0 + 8; ++m) insp.push_back(describe_motion(doc->record(m)));
+    const std::vector<MotionRecord> torch = doc->torch_path_of_line(line);
+    for (std::size_t k = 0; k < torch.size() && k < 8; ++k) insp.push_back("torch (kerf): " + describe_motion(torch[k]));
     return insp;
 }
 
@@ -97,7 +104,7 @@ json selection_json(const Selection& s) {
 }
 
 json layers_json(const Layers& l) {
-    json j = {{"pierces", l.pierces}, {"start", l.start}, {"grid", l.grid}};
+    json j = {{"pierces", l.pierces}, {"start", l.start}, {"grid", l.grid}, {"kerf", l.kerf}, {"kerf_band", l.kerf_band}};
     for (std::size_t k = 0; k < kMotionKinds; ++k) j[motion_kind_name(static_cast<MotionKind>(k))] = l.kinds[k];
     return j;
 }
@@ -174,6 +181,8 @@ void App::set_layer(int layer, bool visible) {
     if (layer >= 0 && layer < static_cast<int>(kMotionKinds)) layers_.kinds[static_cast<std::size_t>(layer)] = visible;
     if (layer == kLayerPierces) layers_.pierces = visible;
     if (layer == kLayerStart) layers_.start = visible;
+    if (layer == kLayerKerf) layers_.kerf = visible;
+    if (layer == kLayerKerfBand) layers_.kerf_band = visible;
 }
 
 }  // namespace essi::viewer

@@ -1,5 +1,7 @@
 #include "app/Document.hpp"
 
+#include "essi/kerf.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <chrono>
@@ -101,6 +103,31 @@ Point Document::arc_centre(std::size_t i) const {
 float Document::kerf_of(std::size_t i) const {
     if (!(motions[i].flags & (Motion::kFlagKerfLeft | Motion::kFlagKerfRight))) return 0.f;
     return value_at(kerfs, i);
+}
+
+std::vector<MotionRecord> Document::torch_path_of_line(std::uint32_t line) const {
+    std::vector<MotionRecord> out;
+    const auto [m0, m1] = motions_of_line(line);
+    if (m0 == m1) return out;
+    const auto compensated = [&](std::size_t i) { return kerf_of(i) > 0; };
+    // (a line whose motions and the one before them are without compensation: the torch is on the contour)
+    bool any = m0 > 0 && compensated(m0 - 1);
+    for (std::size_t i = m0; i < m1 && !any; ++i) any = compensated(i);
+    if (!any) return out;
+    std::size_t first = m0;
+    while (first > 0 && compensated(first - 1)) --first;  // where this compensation started
+    struct Collect final : MotionSink {
+        std::uint32_t line;
+        std::vector<MotionRecord>& out;
+        Collect(std::uint32_t l, std::vector<MotionRecord>& o) : line(l), out(o) {}
+        void on_motion(const MotionRecord& m) override {
+            if (m.line == line) out.push_back(m);
+        }
+    } collect(line, out);
+    KerfPath path(collect, profile.chord_tolerance_mm);
+    for (std::size_t i = first; i < std::min(m1 + 1, motions.size()); ++i) path.motion(record(i));
+    path.finish();
+    return out;
 }
 
 float Document::feed_of(std::size_t i) const {

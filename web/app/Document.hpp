@@ -135,6 +135,9 @@ struct Document {
     [[nodiscard]] std::size_t first_motion_at_or_after(std::uint32_t line) const;
     // Motions [first, last) of one source line.
     [[nodiscard]] std::pair<std::size_t, std::size_t> motions_of_line(std::uint32_t line) const;
+    // The torch's path of one source line's motions where kerf compensation is on or ends (docs/semantics.md §8):
+    // the compensated pieces, worked out from where that compensation started (the inspector's second position).
+    [[nodiscard]] std::vector<MotionRecord> torch_path_of_line(std::uint32_t line) const;
     // The blocks that start on one source line (the chunk that holds them is read again when needed).
     [[nodiscard]] LineBlocks blocks_of_line(std::uint32_t line) const;
     [[nodiscard]] bool has_errors() const;

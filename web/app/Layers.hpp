@@ -14,15 +14,17 @@ struct Layers {
     bool pierces = true;
     bool start = true;
     bool grid = true;
+    bool kerf = true;       // the compensated torch path (a tape with kerf compensation)
+    bool kerf_band = true;  // the band of the cut's real width along it
 
     [[nodiscard]] bool& kind(MotionKind k) { return kinds[static_cast<std::size_t>(k)]; }
     [[nodiscard]] bool kind(MotionKind k) const { return kinds[static_cast<std::size_t>(k)]; }
-    // A bit per visible MotionKind (DrawOptions::layer_mask).
+    // A bit per visible MotionKind and kerf layer (DrawOptions::layer_mask).
     [[nodiscard]] int kind_mask() const {
         int m = 0;
         for (std::size_t k = 0; k < kMotionKinds; ++k)
             if (kinds[k]) m |= kind_bit(static_cast<MotionKind>(k));
-        return m;
+        return m | (kerf ? kKerfPathBit : 0) | (kerf_band ? kKerfBandBit : 0);
     }
     // A bit per visible MarkerType drawn from the marker texture (DrawOptions::marker_mask).
     [[nodiscard]] int marker_mask() const {

@@ -87,6 +87,7 @@ bool SceneAssembly::prepare(const SceneInputs& in, const Renderer& renderer, boo
     DrawOptions o;
     o.framebuffer_scale = in.framebuffer_scale;
     o.layer_mask = in.layers.kind_mask();
+    o.kerf_band_mm = in.load.buffers().kerf_widths;
     o.panel_color = in.panel_color;
     // Zoomed out on a big tape: the level-of-detail raster instead of millions of sub-pixel segments (also while
     // the first build makes the exact segments: the raster is made before them). While a big tape's segments are

@@ -104,8 +104,9 @@ bool ScenePrograms::init(int tex_width) {
     if (!blit_id || !lod_id) return false;
 
     const Setup p(path_id);
-    path = {p.scene(), p("u_half_width"), p("u_layer_mask"), p("u_override"), p("u_extra_width"), p("u_first")};
-    p.set("u_colors", kKindColors.data(), kMotionKinds);
+    path = {p.scene(), p("u_half_width"), p("u_layer_mask"), p("u_override"), p("u_extra_width"), p("u_first"),
+            p("u_band_half_mm")};
+    p.set("u_colors", kPathColorTable.data(), kPathColors);
     p.set("u_segs", 0);   // texture unit 0: the end points
     p.set("u_kinds", 1);  // unit 1: the kinds
     p.set("u_tex_width", tex_width);

@@ -29,7 +29,7 @@ struct SceneProgram {
 };
 // shaders/path.*: the segments as thick lines.
 struct PathProgram : SceneProgram {
-    int half_width = -1, layer_mask = -1, override_color = -1, extra_width = -1, first = -1;
+    int half_width = -1, layer_mask = -1, override_color = -1, extra_width = -1, first = -1, band_half_mm = -1;
 };
 // shaders/grid.*: the grid under the drawing.
 struct GridProgram : SceneProgram {

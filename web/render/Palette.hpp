@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 #include "essi/motion.hpp"
 
@@ -26,6 +27,20 @@ inline constexpr std::array<Rgba, kMotionKinds> kKindColors = {{
     {0.85f, 0.35f, 0.95f, 1.00f},  // mark: violet
 }};
 [[nodiscard]] constexpr const Rgba& kind_color(MotionKind k) { return kKindColors[static_cast<std::size_t>(k)]; }
+
+// The kerf layers (docs/semantics.md §8), segments of the path program after the motion kinds: the compensated
+// torch path (kind kKerfPathKind) and the band of the cut's width along it (kinds kKerfBandKind + k: the band of
+// width DrawOptions::kerf_band_mm[k], k < kKerfBandWidths; a tape with more widths draws the rest as the last).
+inline constexpr std::uint8_t kKerfPathKind = 4, kKerfBandKind = 5;
+inline constexpr std::size_t kKerfBandWidths = 8;
+inline constexpr std::size_t kPathColors = 6;  // the path program's colours: the motion kinds, kerf path, kerf band
+inline constexpr int kKerfPathBit = 1 << kKerfPathKind, kKerfBandBit = 1 << kKerfBandKind;
+inline constexpr int kAllPathMask = kAllKindsMask | kKerfPathBit | kKerfBandBit;
+inline constexpr std::array<Rgba, kPathColors> kPathColorTable = {{
+    kKindColors[0], kKindColors[1], kKindColors[2], kKindColors[3],
+    {0.30f, 0.95f, 0.45f, 1.00f},  // kerf path: green, the torch's path
+    {1.00f, 0.55f, 0.10f, 0.28f},  // kerf band: the cut's colour, translucent
+}};
 
 // The point markers (the marker program's `type`, a texel's third value).
 enum class MarkerType { Pierce = 0, Start = 1, Tool = 2 };

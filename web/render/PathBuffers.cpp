@@ -7,9 +7,33 @@
 
 namespace essi::viewer {
 
+// The compensated pieces, to the kerf layers' segments.
+class PathBuffers::KerfSegments final : public MotionSink {
+public:
+    explicit KerfSegments(PathBuffers& b) : b_(b) {}
+    void on_motion(const MotionRecord& m) override {
+        if (m.kerf != KerfSide::Off) b_.put_kerf_piece(m);
+    }
+
+private:
+    PathBuffers& b_;
+};
+
+PathBuffers::PathBuffers() = default;
+PathBuffers::~PathBuffers() = default;
+PathBuffers::PathBuffers(PathBuffers&&) noexcept = default;
+PathBuffers& PathBuffers::operator=(PathBuffers&&) noexcept = default;
+
 void PathBuffers::begin(const Document& doc, double tol) {
     doc_ = &doc;
     tolerance_ = std::max(tol, kMinChordTolerance);
+    kerf_segments = 0;
+    kerf_widths.fill(0);
+    kerf_width_count = 0;
+    // (a tape without compensation makes no kerf path: its segments are the motions' only)
+    const bool compensated = std::any_of(doc.kerfs.begin(), doc.kerfs.end(), [](const auto& k) { return k.second > 0; });
+    kerf_sink_ = compensated ? std::make_unique<KerfSegments>(*this) : nullptr;
+    kerf_ = compensated ? std::make_unique<KerfPath>(*kerf_sink_, tolerance_) : nullptr;
     next_ = 0;
     segment_count = 0;
     staged_first = 0;
@@ -47,6 +71,7 @@ bool PathBuffers::step(std::size_t max_motions) {
     for (; next_ < stop; ++next_) {
         const Motion& m = doc.motions[next_];
         first_segment.push_back(static_cast<std::uint32_t>(segment_count));
+        if (kerf_) kerf_->motion(doc.record(next_));
         const auto kind = static_cast<std::uint8_t>(m.kind);
         // A cut by several torches (kept: its record says how many) is drawn once per torch.
         const MotionRecord* torches = doc.torch_copies(next_);
@@ -66,10 +91,39 @@ bool PathBuffers::step(std::size_t max_motions) {
         }
     }
     if (next_ >= doc.motions.size()) {
+        if (kerf_) {
+            kerf_->finish();  // (the last piece: among the last motion's segments)
+            kerf_.reset();
+            kerf_sink_.reset();
+        }
         if (first_segment.size() == doc.motions.size()) first_segment.push_back(static_cast<std::uint32_t>(segment_count));
         return true;
     }
     return false;
+}
+
+// The band's kind for a kerf width: the widths in order of appearance, the last for any beyond kKerfBandWidths.
+std::uint8_t PathBuffers::band_kind(double width_mm) {
+    const auto w = static_cast<float>(width_mm);
+    for (std::size_t k = 0; k < kerf_width_count; ++k)
+        if (kerf_widths[k] == w) return static_cast<std::uint8_t>(kKerfBandKind + k);
+    if (kerf_width_count < kKerfBandWidths) kerf_widths[kerf_width_count++] = w;
+    return static_cast<std::uint8_t>(kKerfBandKind + kerf_width_count - 1);
+}
+
+// A compensated piece: the band of the cut's width under it (cuts only), the torch's path over it.
+void PathBuffers::put_kerf_piece(const MotionRecord& piece) {
+    kerf_scratch_.clear();
+    flatten(piece, tolerance_, kerf_scratch_, true);
+    const std::uint8_t band = piece.kind == MotionKind::Cut ? band_kind(2 * piece.kerf_mm) : 0;
+    for (int c = 0; c < piece.torches; ++c) {
+        for (std::size_t k = 1; k < kerf_scratch_.size(); ++k) {
+            const Point a = torch_copy(kerf_scratch_[k - 1], piece.torch_step, c), b = torch_copy(kerf_scratch_[k], piece.torch_step, c);
+            if (band) put(a, b, band);
+            put(a, b, kKerfPathKind);
+            kerf_segments += band ? 2 : 1;
+        }
+    }
 }
 
 std::size_t PathBuffers::estimated_segments() const {

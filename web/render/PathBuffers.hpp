@@ -4,11 +4,15 @@
 // until the Renderer takes them (Renderer::append, a few texture rows at a time).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "app/Document.hpp"
+#include "essi/kerf.hpp"
+#include "render/Palette.hpp"
 
 namespace essi::viewer {
 
@@ -19,6 +23,13 @@ struct MarkerInstance {
 
 class PathBuffers {
 public:
+    PathBuffers();
+    ~PathBuffers();
+    PathBuffers(const PathBuffers&) = delete;
+    PathBuffers& operator=(const PathBuffers&) = delete;
+    // (moved only when complete or new: a build in progress has its kerf path point at it)
+    PathBuffers(PathBuffers&&) noexcept;
+    PathBuffers& operator=(PathBuffers&&) noexcept;
     void begin(const Document& doc, double chord_tolerance_mm);
     // Flattens up to `max_motions` more motions into the staging area; returns true when complete.
     bool step(std::size_t max_motions);
@@ -31,6 +42,12 @@ public:
     std::size_t segment_count = 0;             // segments made so far (all of them once complete)
     std::vector<std::uint32_t> first_segment;  // per motion, plus one at the end
     std::vector<MarkerInstance> markers;       // pierces then the start point (until uploaded)
+    // The kerf layers (a tape with compensation): the compensated torch path and the band of the cut's width,
+    // made by a KerfPath that follows the motions. A motion's compensated piece is final when the next motion is
+    // known, so it is among that one's segments.
+    std::size_t kerf_segments = 0;
+    std::array<float, kKerfBandWidths> kerf_widths{};  // the bands' widths (mm), in order of appearance
+    std::size_t kerf_width_count = 0;
 
     // Segments made but not yet taken by the renderer: [staged_first, segment_count).
     std::vector<float> staged_ends;            // 4 floats a segment
@@ -44,11 +61,17 @@ public:
 
 private:
     void put(Point a, Point b, std::uint8_t kind);
+    void put_kerf_piece(const MotionRecord& piece);
+    [[nodiscard]] std::uint8_t band_kind(double width_mm);
+    class KerfSegments;
+    std::unique_ptr<KerfSegments> kerf_sink_;
+    std::unique_ptr<KerfPath> kerf_;
 
     const Document* doc_ = nullptr;
     double tolerance_ = 0.01;
     std::size_t next_ = 0;
     std::vector<Point> scratch_;
+    std::vector<Point> kerf_scratch_;  // (a piece is flattened while a motion's may be in scratch_)
 };
 
 }  // namespace essi::viewer

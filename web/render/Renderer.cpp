@@ -13,7 +13,7 @@ namespace {
 // The image around the drawing area: this share of the area's width (height) on each side.
 constexpr float kCacheMarginShare = 0.5f;
 // Line half widths by MotionKind, in window pixels: rapid, travel, cut, mark.
-constexpr float kHalfWidthPx[kMotionKinds] = {0.6f, 0.6f, 1.1f, 1.0f};
+constexpr float kHalfWidthPx[kPathColors] = {0.6f, 0.6f, 1.1f, 1.0f, 0.6f, 1.1f};  // (a band: at least as wide as a cut)
 constexpr float kSelectionExtraPx = 1.0f;  // the selection is drawn this much wider on each side
 constexpr float kMarkerRadiusPx = 5.0f;
 constexpr float kToolRadiusPx = 8.0f;
@@ -255,13 +255,16 @@ void Renderer::draw_grid(const Target& t, double grid_step, Point world_origin) 
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void Renderer::begin_paths(const Target& t, int layer_mask) {
+void Renderer::begin_paths(const Target& t, int layer_mask, const DrawOptions& o) {
     const PathProgram& p = programs_.path;
     glUseProgram(p.id);
     p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h);
-    float hw[kMotionKinds];
-    for (std::size_t k = 0; k < kMotionKinds; ++k) hw[k] = kHalfWidthPx[k] * t.scale;
-    glUniform1fv(p.half_width, kMotionKinds, hw);
+    float hw[kPathColors];
+    for (std::size_t k = 0; k < kPathColors; ++k) hw[k] = kHalfWidthPx[k] * t.scale;
+    glUniform1fv(p.half_width, kPathColors, hw);
+    float band[kKerfBandWidths];
+    for (std::size_t k = 0; k < kKerfBandWidths; ++k) band[k] = o.kerf_band_mm[k] / 2;
+    glUniform1fv(p.band_half_mm, kKerfBandWidths, band);
     glUniform1i(p.layer_mask, layer_mask);
     glUniform4f(p.override_color, 0, 0, 0, 0);
     glUniform1f(p.extra_width, 0);
@@ -269,7 +272,7 @@ void Renderer::begin_paths(const Target& t, int layer_mask) {
 
 void Renderer::draw_selection(const Target& t, const GpuPath& path, const DrawOptions& o) {
     if (o.selection_count == 0 || o.selection_first >= path.count) return;
-    begin_paths(t, kAllKindsMask);
+    begin_paths(t, kAllKindsMask, o);  // (the motions only: the kerf layers are not selected)
     const Rgba& c = kSelectionColor;
     glUniform4f(programs_.path.override_color, c.r, c.g, c.b, c.a);
     glUniform1f(programs_.path.extra_width, kSelectionExtraPx * t.scale);
@@ -326,13 +329,13 @@ std::size_t Renderer::draw_scene(const Frame& f, const Target& t, std::size_t fr
     if (full) draw_grid(t, f.grid_step, f.world_origin);
     if (f.lod) {  // the raster has the paths and the pierces; the start marker is drawn as usual
         const bool pierces = (f.o.marker_mask & marker_bit(MarkerType::Pierce)) != 0;
-        draw_lod(t, f.layer_mask | (pierces ? LodRaster::kPierceBit : 0));
+        draw_lod(t, (f.layer_mask & kAllKindsMask) | (pierces ? LodRaster::kPierceBit : 0));
         draw_markers(t, f.o.marker_mask & kStart);
         return f.limit;
     }
     std::size_t reached = f.limit;
     if (f.limit > from && f.layer_mask != 0) {  // every layer hidden: not one vertex to run
-        begin_paths(t, f.layer_mask);
+        begin_paths(t, f.layer_mask, f.o);
         reached = draw_segments(*f.path, from, f.limit, &t, budget);
     }
     const bool markers_due = full || cache_markers_pending_;  // (a fill of the image ends with them)
@@ -448,7 +451,7 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
     const std::size_t count = path ? path->count : 0;
     const float aw = view.area.w * s, ah = view.area.h * s;
     const Frame f{view, fb_w, fb_h, o, grid_step, world_origin, path, s, window, std::min(count, o.segment_limit),
-                  o.layer_mask & kAllKindsMask, o.lod && lod_levels_ > 0, view.area.x * s, view.area.y * s, aw, ah,
+                  o.layer_mask & kAllPathMask, o.lod && lod_levels_ > 0, view.area.x * s, view.area.y * s, aw, ah,
                   static_cast<int>(std::ceil(aw * kCacheMarginShare)), static_cast<int>(std::ceil(ah * kCacheMarginShare))};
     const int cw = static_cast<int>(std::ceil(aw)) + 2 * f.mx, ch = static_cast<int>(std::ceil(ah)) + 2 * f.my;
     if (cw > 0 && ch > 0 && ensure_cache(cw, ch)) {

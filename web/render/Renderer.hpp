@@ -10,6 +10,7 @@
 // leaves its margin (a CPU renderer such as SwiftShader needs seconds for a million segments).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -23,7 +24,8 @@
 namespace essi::viewer {
 
 struct DrawOptions {
-    int layer_mask = kAllKindsMask;     // a bit per MotionKind (kind_bit)
+    int layer_mask = kAllPathMask;      // a bit per MotionKind (kind_bit), kKerfPathBit, kKerfBandBit
+    std::array<float, kKerfBandWidths> kerf_band_mm{};  // the kerf bands' widths (PathBuffers::kerf_widths)
     int marker_mask = kAllMarkersMask;  // a bit per MarkerType (marker_bit)
     std::size_t segment_limit = ~std::size_t(0);  // playback: draw segments [0, limit)
     std::size_t selection_first = 0, selection_count = 0;  // segments drawn highlighted
@@ -139,7 +141,7 @@ private:
     std::size_t draw_segments(const GpuPath& path, std::size_t first, std::size_t last, const Target* cull = nullptr,
                               std::size_t budget = ~std::size_t(0));
     void draw_grid(const Target& t, double grid_step, Point world_origin);
-    void begin_paths(const Target& t, int layer_mask);
+    void begin_paths(const Target& t, int layer_mask, const DrawOptions& o);
     void draw_markers(const Target& t, int marker_mask);
     void draw_selection(const Target& t, const GpuPath& path, const DrawOptions& o);
     void draw_tool(const Target& t, const DrawOptions& o);

@@ -113,6 +113,13 @@ void inspector(App& app) {
         ImGui::TextWrapped("%s", describe_motion(r).c_str());
         ImGui::PopStyleColor();
     }
+    // Where the torch goes (kerf compensation): the second position of the line's motions.
+    const std::vector<MotionRecord> torch = d.torch_path_of_line(line);
+    for (std::size_t k = 0; k < torch.size() && k < kInspectorMotions; ++k) {
+        ImGui::PushStyleColor(ImGuiCol_Text, opaque(kPathColorTable[kKerfPathKind]));
+        ImGui::TextWrapped("torch (kerf): %s", describe_motion(torch[k]).c_str());
+        ImGui::PopStyleColor();
+    }
     if (blocks.empty() && m0 == m1) ImGui::TextDisabled("No block on this line (comment, empty line or part of a block).");
     const LineDiagnostics diags = diagnostics_of(d, line);
     for (auto it = diags.begin; it != diags.end; ++it) {

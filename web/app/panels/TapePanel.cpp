@@ -93,7 +93,7 @@ void statistics(const App& app) {
     ImGui::PopStyleColor();
 }
 
-void layers(Layers& layers) {
+void layers(Layers& layers, const Document* doc) {
     int col = 0;
     for (MotionKind k : {MotionKind::Cut, MotionKind::Mark, MotionKind::Travel, MotionKind::Rapid}) {
         if (col++ % 2 == 1) ImGui::SameLine(150);
@@ -107,6 +107,16 @@ void layers(Layers& layers) {
     ImGui::Checkbox("start", &layers.start);
     ImGui::SameLine();
     ImGui::Checkbox("grid", &layers.grid);
+    // The kerf layers, where the tape uses compensation (docs/semantics.md §8).
+    if (doc && std::any_of(doc->kerfs.begin(), doc->kerfs.end(), [](const auto& k) { return k.second > 0; })) {
+        ImGui::ColorButton("##kerf", opaque(kPathColorTable[kKerfPathKind]), ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
+        ImGui::SameLine();
+        ImGui::Checkbox("kerf path", &layers.kerf);
+        ImGui::SameLine(150);
+        ImGui::ColorButton("##band", opaque(kPathColorTable[kKerfBandKind]), ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
+        ImGui::SameLine();
+        ImGui::Checkbox("kerf width", &layers.kerf_band);
+    }
 }
 
 void playback(App& app) {
@@ -176,7 +186,7 @@ void tape_panel(App& app) {
     ImGui::Begin("Tape", nullptr, kPanelFlags | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     if (ImGui::CollapsingHeader("Reading", ImGuiTreeNodeFlags_DefaultOpen)) reading(app);
     if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) statistics(app);
-    if (ImGui::CollapsingHeader("Layers", ImGuiTreeNodeFlags_DefaultOpen)) layers(app.layers());
+    if (ImGui::CollapsingHeader("Layers", ImGuiTreeNodeFlags_DefaultOpen)) layers(app.layers(), app.document());
     if (ImGui::CollapsingHeader("Playback", ImGuiTreeNodeFlags_DefaultOpen)) playback(app);
     if (ImGui::CollapsingHeader("Diagnostics", ImGuiTreeNodeFlags_DefaultOpen)) diagnostics(app);
     ImGui::End();
