@@ -53,23 +53,17 @@ Point parabola_tangent(const ParabolaGeom& g, double t) {
     return unit(g.t1 >= g.t0 ? d : -1.0 * d);
 }
 
-// The directions of travel at a programmed motion's ends.
-Point start_tangent(const MotionRecord& m) {
+// The direction of travel at a programmed motion's start or end.
+Point tangent_at(const MotionRecord& m, bool end) {
     switch (m.curve) {
         case CurveKind::Line: return line_direction(m);
-        case CurveKind::Arc: return arc_tangent(m.start, m.centre, m.ccw, m.radius);
-        case CurveKind::Parabola: return parabola_tangent(m.parabola, m.parabola.t0);
+        case CurveKind::Arc: return arc_tangent(end ? m.end : m.start, m.centre, m.ccw, end ? m.end_radius : m.radius);
+        case CurveKind::Parabola: return parabola_tangent(m.parabola, end ? m.parabola.t1 : m.parabola.t0);
     }
     return {};
 }
-Point end_tangent(const MotionRecord& m) {
-    switch (m.curve) {
-        case CurveKind::Line: return line_direction(m);
-        case CurveKind::Arc: return arc_tangent(m.end, m.centre, m.ccw, m.end_radius);
-        case CurveKind::Parabola: return parabola_tangent(m.parabola, m.parabola.t1);
-    }
-    return {};
-}
+Point start_tangent(const MotionRecord& m) { return tangent_at(m, false); }
+Point end_tangent(const MotionRecord& m) { return tangent_at(m, true); }
 
 bool is_full_circle(const MotionRecord& m) { return m.curve == CurveKind::Arc && std::abs(m.sweep) > 2 * kPi - 1e-12; }
 

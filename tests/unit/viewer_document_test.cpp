@@ -9,6 +9,7 @@
 
 #include "../bench/nest_generator.hpp"
 #include "app/Document.hpp"
+#include "viewer_util.hpp"
 #include "essi/interp.hpp"
 #include "essi/read.hpp"
 #include "paths.hpp"
@@ -25,14 +26,7 @@ using essi::viewer::LineBlocks;
 
 namespace {
 
-std::unique_ptr<Document> load(const std::string& bytes, const Profile& p) {
-    essi::TapeSetup setup;  // an ESSI tape read with `p`
-    setup.profile = p;
-    DocumentLoader loader("tape", bytes, std::move(setup));
-    while (!loader.step(1e9)) {
-    }
-    return loader.take();
-}
+std::unique_ptr<Document> load(const std::string& bytes, const Profile& p) { return essi_test::load_document(bytes, p); }
 
 void expect_same_records(const Document& doc, const std::vector<MotionRecord>& want, const std::string& what) {
     ASSERT_EQ(doc.motions.size(), want.size()) << what;

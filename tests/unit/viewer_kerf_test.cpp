@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/Document.hpp"
+#include "viewer_util.hpp"
 #include "app/Layers.hpp"
 #include "essi/trace.hpp"
 #include "paths.hpp"
@@ -20,13 +21,7 @@ using essi::viewer::PathBuffers;
 namespace {
 
 std::unique_ptr<Document> load_example(const std::string& name) {
-    const std::string bytes = read_file(examples_dir() + "/" + name);
-    TapeSetup setup;
-    setup.profile = *builtin_profile("iso6582");
-    DocumentLoader loader(name, bytes, std::move(setup));
-    while (!loader.step(1e9)) {
-    }
-    return loader.take();
+    return essi_test::load_document(read_file(examples_dir() + "/" + name));
 }
 
 struct Counts {

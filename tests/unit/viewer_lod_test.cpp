@@ -10,6 +10,7 @@
 
 #include "../bench/nest_generator.hpp"
 #include "app/Document.hpp"
+#include "viewer_util.hpp"
 #include "essi/geom.hpp"
 #include "essi/profile.hpp"
 #include "render/LodRaster.hpp"
@@ -21,14 +22,7 @@ using essi::viewer::LodRaster;
 
 namespace {
 
-std::unique_ptr<Document> load(const std::string& bytes) {
-    essi::TapeSetup setup;  // an ESSI tape, iso6582
-    setup.profile = *builtin_profile("iso6582");
-    DocumentLoader loader("tape", bytes, std::move(setup));
-    while (!loader.step(1e9)) {
-    }
-    return loader.take();
-}
+std::unique_ptr<Document> load(const std::string& bytes) { return essi_test::load_document(bytes); }
 
 // The cell of machine point p at level k (each level halves the cell index; an odd last row or column of the
 // level below goes into the last cell).
