@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -110,6 +111,24 @@ std::optional<essi::native::TapeRequest> resolve_request(const std::string& prof
     if (!r.profile) return std::nullopt;
     r.profile_name = r.profile->name;
     return r;
+}
+
+// One tape file read and set up as --profile and --input say (trace, render, convert). Built in place: `file`
+// views its own bytes, so it is never moved.
+struct LoadedTape {
+    LoadedTape(const std::string& path, std::uint64_t max_size) : file(read_tape_file(path, max_size)) {}
+    essi::native::ReadResult file;
+    essi::TapeSetup setup;
+};
+// Null after the message (a bad --profile/--input, a file that cannot be read).
+std::unique_ptr<LoadedTape> load_tape(const std::string& path, const std::string& profile_arg,
+                                      const std::string& input_arg, std::uint64_t max_size) {
+    const auto request = resolve_request(profile_arg, input_arg);
+    if (!request) return nullptr;
+    auto tape = std::make_unique<LoadedTape>(path, max_size);
+    if (!tape->file.ok) return nullptr;
+    tape->setup = request->setup(tape->file.bytes);
+    return tape;
 }
 
 std::vector<std::string> expand_paths(const std::vector<std::string>& paths, bool& io_failed,
@@ -267,15 +286,14 @@ struct RenderCliOptions {
 };
 
 int run_render(const RenderCliOptions& o) {
-    const auto request = resolve_request(o.profile, o.input);
-    if (!request) return kExitUsage;
-    const essi::native::ReadResult file = read_tape_file(o.path, o.max_size);
-    if (!file.ok) return kExitUsage;
+    const auto tape = load_tape(o.path, o.profile, o.input, o.max_size);
+    if (!tape) return kExitUsage;
+    const essi::native::ReadResult& file = tape->file;
+    const essi::TapeSetup& setup = tape->setup;
     essi::native::RenderOptions options;
     options.title = o.path == "-" ? std::string("-") : essi::display_text(std::filesystem::path(o.path).filename().string());
     options.width_px = o.width;
     options.show_travel = !o.no_travel;
-    const essi::TapeSetup setup = request->setup(file.bytes);
     const auto ends_with = [](const std::string& s, const char* ext) {
         const std::size_t n = std::strlen(ext);
         return s.size() > n && s.compare(s.size() - n, n, ext) == 0;
@@ -350,11 +368,9 @@ struct ConvertCliOptions {
 // profile it was read with). Warnings and errors on stderr; exit 1 when the tape has errors (the output is still
 // written: what the machine would run of it).
 int run_convert(const ConvertCliOptions& o) {
-    const auto request = resolve_request(o.profile, o.input);
-    if (!request) return kExitUsage;
-    const essi::native::ReadResult file = read_tape_file(o.path, o.max_size);
-    if (!file.ok) return kExitUsage;
-    const essi::TapeSetup setup = request->setup(file.bytes);
+    const auto tape = load_tape(o.path, o.profile, o.input, o.max_size);
+    if (!tape) return kExitUsage;
+    const essi::TapeSetup& setup = tape->setup;
     essi::ConvertOptions options;
     options.to = o.to == "eia" ? essi::OutputFormat::Eia : o.to == "gcode" ? essi::OutputFormat::Gcode : essi::OutputFormat::Essi;
     options.absolute = o.absolute;
@@ -365,7 +381,7 @@ int run_convert(const ConvertCliOptions& o) {
         if (!target) return kExitUsage;
         options.target = *target;
     }
-    const essi::ConvertResult r = essi::convert_tape(file.bytes, setup, options);
+    const essi::ConvertResult r = essi::convert_tape(tape->file.bytes, setup, options);
     for (const essi::Diagnostic& d : r.diagnostics) err(essi::native::diagnostic_line(o.path, d) + "\n");
     if (!write_file(o.output, r.text)) {
         err("essi convert: cannot write " + essi::display_text(o.output) + ": " + std::strerror(errno) + "\n");
@@ -397,14 +413,12 @@ int run_stats(const std::vector<std::string>& paths, const std::string& format, 
 
 int run_trace(const std::string& path, const std::string& profile_arg, const std::string& input_arg,
               std::uint64_t max_size, int decimals, essi::TraceView view) {
-    const auto request = resolve_request(profile_arg, input_arg);
-    if (!request) return kExitUsage;
-    const essi::native::ReadResult file = read_tape_file(path, max_size);
-    if (!file.ok) return kExitUsage;
-    // The trace of a big tape is hundreds of MB: it is streamed in chunks, never held whole.
-    const essi::TapeSetup setup = request->setup(file.bytes);
+    const auto tape = load_tape(path, profile_arg, input_arg, max_size);
+    if (!tape) return kExitUsage;
+    // The trace of a big tape is hundreds of MB: it is written a piece at a time, never held whole.
+    const essi::TapeSetup& setup = tape->setup;
     const auto diagnostics =
-        essi::trace_tape(file.bytes, setup.profile, [](std::string_view piece) { out(piece); }, setup.format, decimals,
+        essi::trace_tape(tape->file.bytes, setup.profile, [](std::string_view piece) { out(piece); }, setup.format, decimals,
                          view);
     const bool errors = std::any_of(diagnostics.begin(), diagnostics.end(),
                                     [](const essi::Diagnostic& d) { return d.severity == essi::Severity::Error; });
