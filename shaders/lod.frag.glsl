@@ -14,6 +14,7 @@ uniform vec2 u_center;      // view centre, mm relative to the document origin
 uniform float u_zoom;       // pixels per mm
 uniform vec2 u_origin_px;   // pixel (top-left origin) where u_center is drawn
 uniform vec2 u_viewport;    // target size in pixels
+uniform vec2 u_turn;        // (cos, sin) of the view's quarter turns
 uniform int u_mask;         // bits 0-3: visible kinds; bit 4: pierces shown
 uniform vec4 u_colors[4];
 uniform vec4 u_pierce;
@@ -22,8 +23,13 @@ out vec4 o_color;
 void main() {
     vec2 px = vec2(gl_FragCoord.x, u_viewport.y - gl_FragCoord.y);  // the pixel's centre, top-left origin
     // The pixel's footprint in cells: from its lower-left to its upper-right corner (y grows upwards in mm).
-    vec2 lo = (u_center + vec2(px.x - 0.5 - u_origin_px.x, u_origin_px.y - px.y - 0.5) / u_zoom - u_min) / u_cell;
-    vec2 hi = (u_center + vec2(px.x + 0.5 - u_origin_px.x, u_origin_px.y - px.y + 0.5) / u_zoom - u_min) / u_cell;
+    // (turned back by the view's quarter turns: the footprint stays a box along the cells)
+    vec2 r0 = vec2(px.x - 0.5 - u_origin_px.x, u_origin_px.y - px.y - 0.5) / u_zoom;
+    vec2 r1 = vec2(px.x + 0.5 - u_origin_px.x, u_origin_px.y - px.y + 0.5) / u_zoom;
+    vec2 a = (u_center + vec2(u_turn.x * r0.x + u_turn.y * r0.y, -u_turn.y * r0.x + u_turn.x * r0.y) - u_min) / u_cell;
+    vec2 b = (u_center + vec2(u_turn.x * r1.x + u_turn.y * r1.y, -u_turn.y * r1.x + u_turn.x * r1.y) - u_min) / u_cell;
+    vec2 lo = min(a, b);
+    vec2 hi = max(a, b);
     ivec2 size = textureSize(u_lod, u_level);
     if (hi.x <= 0.0 || hi.y <= 0.0 || lo.x >= float(size.x) || lo.y >= float(size.y)) discard;
     ivec2 c0 = clamp(ivec2(floor(lo)), ivec2(0), size - 1);

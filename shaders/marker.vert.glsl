@@ -14,6 +14,7 @@ uniform vec2 u_center;
 uniform float u_zoom;
 uniform vec2 u_origin_px;
 uniform vec2 u_viewport;
+uniform vec2 u_turn;         // (cos, sin) of the view's quarter turns
 uniform float u_radius_px;
 uniform int u_type_mask;
 
@@ -28,7 +29,9 @@ void main() {
     vec3 m = u_use_single != 0 ? u_single : texelFetch(u_markers, ivec2(index % u_tex_width, index / u_tex_width), 0).xyz;
     int type = int(m.z + 0.5);
     vec2 corner = kCorners[gl_VertexID % 6];
-    vec2 c = u_origin_px + vec2(m.x - u_center.x, u_center.y - m.y) * u_zoom;
+    vec2 d = m.xy - u_center;
+    d = vec2(u_turn.x * d.x - u_turn.y * d.y, u_turn.y * d.x + u_turn.x * d.y);
+    vec2 c = u_origin_px + vec2(d.x, -d.y) * u_zoom;
     vec2 p = c + corner * (u_radius_px + 1.0);
     vec2 ndc = vec2(p.x / u_viewport.x * 2.0 - 1.0, 1.0 - p.y / u_viewport.y * 2.0);
     bool visible = ((u_type_mask >> type) & 1) != 0;

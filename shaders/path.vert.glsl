@@ -16,6 +16,7 @@ uniform vec2 u_center;        // view centre, mm relative to the document origin
 uniform float u_zoom;         // pixels per mm
 uniform vec2 u_origin_px;     // pixel (top-left origin) where u_center is drawn
 uniform vec2 u_viewport;      // framebuffer size in pixels
+uniform vec2 u_turn;          // (cos, sin) of the view's quarter turns (View::turns)
 uniform float u_half_width[6];
 uniform vec4 u_colors[6];
 uniform float u_band_half_mm[8];  // kerf band k: half its width in mm (the cut's real width on screen)
@@ -28,7 +29,9 @@ out float v_across;
 out float v_half;
 
 vec2 to_px(vec2 p) {
-    return u_origin_px + vec2(p.x - u_center.x, u_center.y - p.y) * u_zoom;
+    vec2 d = p - u_center;
+    d = vec2(u_turn.x * d.x - u_turn.y * d.y, u_turn.y * d.x + u_turn.x * d.y);
+    return u_origin_px + vec2(d.x, -d.y) * u_zoom;
 }
 
 // (along, across) of the 6 corners: (0,-1) (1,-1) (0,1) / (0,1) (1,-1) (1,1)

@@ -565,6 +565,43 @@ test('kerf compensation: the torch path and the cut\'s width are drawn, toggled,
   await page.close();
 });
 
+test('the machine\'s view orientation: x up and y left (Woyda), drawn so, and kept across sessions', async () => {
+  const page = await newPage();
+  const { motions } = await loadExample(page, 'plate_holes.esi');
+  await page.evaluate(() => essikit.setOrientation(1));
+  let state = await page.evaluate(() => essikit.state());
+  assert.equal(state.view.turns, 1);
+  // +x points up the screen: a point 10 mm further along x is 10 mm x zoom pixels higher, at the same column.
+  const a = await page.evaluate(() => essikit.project(100, 100));
+  const b = await page.evaluate(() => essikit.project(110, 100));
+  assert.ok(Math.abs(a.x - b.x) < 1e-6 && Math.abs((a.y - b.y) - 10 * state.view.zoom) < 1e-6, JSON.stringify([a, b]));
+  // The cut colour where the turned cut lines are (the drawing follows the turn).
+  await page.evaluate(() => essikit.setView(160, 110, 2.5));
+  await page.mouse.move(5, 890);
+  await page.waitForTimeout(150);
+  const at = await pixels(page, await page.screenshot({ path: path.join(shots, 'orientation-woyda.png') }));
+  let checked = 0;
+  for (const m of motions.filter((x) => x.kind === 'cut' && x.curve === 'line' && x.length_mm > 50)) {
+    const p = await page.evaluate(([x, y]) => essikit.project(x, y), m.mid);
+    if (p.x < 300 || p.x > 1100 || p.y < 40 || p.y > 880) continue;  // (on the drawing area only)
+    const hits = [];
+    for (let dy = -1; dy <= 1; ++dy) for (let dx = -1; dx <= 1; ++dx) hits.push(at(p.x + dx, p.y + dy));
+    assert.ok(hits.some((c) => near(c, CUT_RGB)), `no cut colour at (${p.x}, ${p.y}) turned: ${JSON.stringify(hits)}`);
+    ++checked;
+  }
+  assert.ok(checked >= 2, `only ${checked} cut lines on screen`);
+  // Kept across sessions: the page loaded again starts turned.
+  await page.reload();
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 30000 });
+  await page.evaluate(() => essikit.ready);
+  state = await page.evaluate(() => essikit.state());
+  assert.equal(state.view.turns, 1);
+  assert.equal(await page.evaluate(() => window.localStorage.getItem('essikit.orientation')), '1');
+  await page.evaluate(() => essikit.setOrientation(0));
+  assert.equal((await page.evaluate(() => essikit.state())).view.turns, 0);
+  await page.close();
+});
+
 test('a share link for a tape too large for a URL says so', async () => {
   const page = await newPage();
   const name = generatedTape(5);

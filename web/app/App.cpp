@@ -39,7 +39,15 @@ std::string banner_for(const Document& d) {
 
 }  // namespace
 
-App::App(GLFWwindow* window) : window_(window) { g_app = this; }
+App::App(GLFWwindow* window) : window_(window) {
+    g_app = this;
+    view_.turns = ((platform::load_setting(kOrientationSetting).value_or(0) % 4) + 4) % 4;  // (kept across sessions)
+}
+
+void App::set_orientation(int quarter_turns) {
+    view_.turns = ((quarter_turns % 4) + 4) % 4;
+    platform::save_setting(kOrientationSetting, view_.turns);
+}
 App::~App() {
     if (g_app == this) g_app = nullptr;
 }
@@ -198,10 +206,13 @@ void App::select_line(std::uint32_t line, bool reveal) {
     // The line's motions into view when they are not all in it.
     Box box;
     for (std::size_t i = a; i < b; ++i) box.add(bounding_box(d->record(i)));
-    const Point p0 = view_.to_screen({box.min_x - d->origin.x, box.max_y - d->origin.y});
-    const Point p1 = view_.to_screen({box.max_x - d->origin.x, box.min_y - d->origin.y});
     const Rect& r = view_.area;
-    const bool inside = p0.x >= r.x && p0.y >= r.y && p1.x <= r.x + r.w && p1.y <= r.y + r.h;
+    bool inside = true;  // (every corner: the view may be turned)
+    for (const double x : {box.min_x, box.max_x})
+        for (const double y : {box.min_y, box.max_y}) {
+            const Point p = view_.to_screen({x - d->origin.x, y - d->origin.y});
+            inside = inside && r.contains(static_cast<float>(p.x), static_cast<float>(p.y));
+        }
     if (!inside) {
         view_.cx = (box.min_x + box.max_x) / 2 - d->origin.x;
         view_.cy = (box.min_y + box.max_y) / 2 - d->origin.y;

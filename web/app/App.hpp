@@ -66,7 +66,10 @@ public:
     void set_view(double x, double y, double zoom);   // machine mm, px/mm; kept until a load completes
     void select_line(std::uint32_t line, bool reveal = true);
     void select_motion(std::size_t motion);
-    void set_layer(int layer, bool visible);  // window.essikit.setLayer: 0-3 MotionKind, 4 pierces, 5 start
+    void set_layer(int layer, bool visible);  // window.essikit.setLayer: 0-3 MotionKind, 4 pierces, 5 start, 6-7 kerf
+    // The machine's view orientation (View::turns, Orientation): kept across sessions (platform settings).
+    void set_orientation(int quarter_turns);
+    static constexpr const char* kOrientationSetting = "orientation";
     void fit();
     void share();  // the Share button and S
     // The tape converted (`essi convert`: "essi", "eia", "gcode" in the profile it is read with) or drawn

@@ -138,10 +138,11 @@ std::string App::state_json() const {
     }
     j["selection"] = selection_json(selection_);
     const Point o = origin();
-    // Screen position of machine point (x, y): px = origin_px.x + (x - x_mm) * zoom, py = origin_px.y - (y - y_mm) * zoom
+    // Screen position of a point (x, y) in mm: d = turned((x - x_mm, y - y_mm), turns); px = origin_px.x + d.x * zoom, py = origin_px.y - d.y * zoom
     j["view"] = {{"x_mm", view_.cx + o.x},
                  {"y_mm", view_.cy + o.y},
                  {"zoom", view_.zoom},
+                 {"turns", view_.turns},
                  {"origin_px", {view_.ox(), view_.oy()}},
                  {"area", {view_.area.x, view_.area.y, view_.area.w, view_.area.h}},
                  {"query", view_query()}};

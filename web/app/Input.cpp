@@ -187,10 +187,7 @@ void Input::handle_canvas(App& app) {
     }
     if (press_in_canvas_ && ImGui::IsMouseDown(0)) {
         if (!dragging_ && std::hypot(mp.x - press_x_, mp.y - press_y_) > kDragThresholdPx) dragging_ = true;
-        if (dragging_) {
-            view.cx -= io.MouseDelta.x / view.zoom;
-            view.cy += io.MouseDelta.y / view.zoom;
-        }
+        if (dragging_) view.pan_by(io.MouseDelta.x, io.MouseDelta.y);
     }
     if (press_in_canvas_ && ImGui::IsMouseReleased(0)) {
         press_in_canvas_ = false;
@@ -198,10 +195,7 @@ void Input::handle_canvas(App& app) {
         dragging_ = false;
     }
     // Right button or middle button drag pans too.
-    if (over && (ImGui::IsMouseDragging(1) || ImGui::IsMouseDragging(2))) {
-        view.cx -= io.MouseDelta.x / view.zoom;
-        view.cy += io.MouseDelta.y / view.zoom;
-    }
+    if (over && (ImGui::IsMouseDragging(1) || ImGui::IsMouseDragging(2))) view.pan_by(io.MouseDelta.x, io.MouseDelta.y);
 }
 
 // A click on the drawing: a measure point, or the motion under it selected (none: the selection cleared).

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "essi/geom.hpp"
 
@@ -14,15 +15,44 @@ struct Rect {
     bool operator==(const Rect&) const = default;
 };
 
+// The machine's view orientation: where the tape's +x points on the screen (the world turned by quarter turns,
+// counter-clockwise). ISO drawings: +x right, +y up; Woyda's operator's view (ESSI-SEMANTICS §3): +x back (up),
+// +y left, one quarter turn.
+enum class Orientation : int { XRight = 0, XUp = 1, XLeft = 2, XDown = 3 };
+
+// A vector turned by `quarter_turns` x 90 degrees counter-clockwise (exact: no trigonometry).
+[[nodiscard]] inline Point turned(Point v, int quarter_turns) {
+    switch (((quarter_turns % 4) + 4) % 4) {
+        case 1: return {-v.y, v.x};
+        case 2: return {-v.x, -v.y};
+        case 3: return {v.y, -v.x};
+        default: return v;
+    }
+}
+
 struct View {
     double cx = 0, cy = 0;  // mm, relative to the document origin, drawn at the centre of `area`
     double zoom = 1;        // pixels per mm
     Rect area;              // the drawing area (the window minus the side panels)
+    int turns = 0;          // Orientation: the world turned this many quarter turns on the screen
 
     [[nodiscard]] double ox() const { return area.x + area.w * 0.5; }
     [[nodiscard]] double oy() const { return area.y + area.h * 0.5; }
-    [[nodiscard]] Point to_screen(Point p) const { return {ox() + (p.x - cx) * zoom, oy() - (p.y - cy) * zoom}; }
-    [[nodiscard]] Point to_world(double sx, double sy) const { return {cx + (sx - ox()) / zoom, cy - (sy - oy()) / zoom}; }
+    [[nodiscard]] Point to_screen(Point p) const {
+        const Point d = turned({p.x - cx, p.y - cy}, turns);
+        return {ox() + d.x * zoom, oy() - d.y * zoom};
+    }
+    [[nodiscard]] Point to_world(double sx, double sy) const {
+        const Point d = turned({(sx - ox()) / zoom, -(sy - oy()) / zoom}, -turns);
+        return {cx + d.x, cy + d.y};
+    }
+
+    // Moves the drawing by (dx, dy) screen pixels (a drag).
+    void pan_by(double dx_px, double dy_px) {
+        const Point d = turned({dx_px / zoom, -dy_px / zoom}, -turns);
+        cx -= d.x;
+        cy -= d.y;
+    }
 
     void fit(const Box& b, Point origin, float margin_px = 24) {
         if (b.empty) {
@@ -30,7 +60,8 @@ struct View {
             zoom = 1;
             return;
         }
-        const double w = std::max(b.max_x - b.min_x, kMinFitSizeMm), h = std::max(b.max_y - b.min_y, kMinFitSizeMm);
+        double w = std::max(b.max_x - b.min_x, kMinFitSizeMm), h = std::max(b.max_y - b.min_y, kMinFitSizeMm);
+        if (turns % 2 != 0) std::swap(w, h);  // (a quarter turn: the width runs up the screen)
         const double aw = std::max(area.w - 2 * margin_px, 10.f), ah = std::max(area.h - 2 * margin_px, 10.f);
         zoom = std::clamp(std::min(aw / w, ah / h), kMinZoom, kMaxZoom);
         cx = (b.min_x + b.max_x) / 2 - origin.x;

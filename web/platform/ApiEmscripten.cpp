@@ -78,6 +78,10 @@ EMSCRIPTEN_KEEPALIVE void essi_set_layer(int layer, int visible) {
     if (App* app = App::instance()) app->set_layer(layer, visible != 0);
 }
 
+EMSCRIPTEN_KEEPALIVE void essi_set_orientation(int quarter_turns) {
+    if (App* app = App::instance()) app->set_orientation(quarter_turns);
+}
+
 // Reads the tape again with another profile: a built-in name or "auto".
 EMSCRIPTEN_KEEPALIVE void essi_set_profile(const char* name) {
     if (App* app = App::instance()) app->set_profile(name ? name : "auto");

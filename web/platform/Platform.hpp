@@ -3,9 +3,11 @@
 //   FilesEmscripten.cpp    / FilesGlfw.cpp       the Open button, dropped files
 //   ClipboardEmscripten.cpp / ClipboardGlfw.cpp  copy and paste
 //   ShareEmscripten.cpp    / ShareGlfw.cpp       share links (URL fragment)
+//   SettingsEmscripten.cpp / SettingsGlfw.cpp    settings kept across sessions (localStorage, a file)
 //   ApiEmscripten.cpp                            window.essikit (exported C functions)
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -35,5 +37,9 @@ void paste(App& app);
 // through App::share_done(ok, url_or_message).
 void share(App& app, const std::string& name, std::string_view bytes, const std::string& view_query);
 [[nodiscard]] bool has_share_links();
+
+// A setting kept across sessions (the view's orientation): none when it was never saved.
+[[nodiscard]] std::optional<int> load_setting(const char* name);
+void save_setting(const char* name, int value);
 
 }  // namespace essi::viewer::platform

@@ -84,10 +84,14 @@ unsigned new_texture() {
 
 TargetUniforms TargetUniforms::of(unsigned p) {
     return {glGetUniformLocation(p, "u_center"), glGetUniformLocation(p, "u_zoom"),
-            glGetUniformLocation(p, "u_origin_px"), glGetUniformLocation(p, "u_viewport")};
+            glGetUniformLocation(p, "u_origin_px"), glGetUniformLocation(p, "u_viewport"),
+            glGetUniformLocation(p, "u_turn")};
 }
 
-void TargetUniforms::set(float cx, float cy, float zoom_px, float ox, float oy, int w, int h) const {
+void TargetUniforms::set(float cx, float cy, float zoom_px, float ox, float oy, int w, int h, int turns) const {
+    static constexpr float kCos[4] = {1, 0, -1, 0}, kSin[4] = {0, 1, 0, -1};
+    const int q = ((turns % 4) + 4) % 4;
+    glUniform2f(turn, kCos[q], kSin[q]);
     glUniform2f(center, cx, cy);
     glUniform1f(zoom, zoom_px);
     glUniform2f(origin_px, ox, oy);

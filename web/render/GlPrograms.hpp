@@ -17,9 +17,10 @@ namespace essi::viewer {
 // The uniforms that map the view into a target (the scene programs have them): u_center is drawn at pixel
 // u_origin_px of a u_viewport target, u_zoom pixels a mm.
 struct TargetUniforms {
-    int center = -1, zoom = -1, origin_px = -1, viewport = -1;
+    int center = -1, zoom = -1, origin_px = -1, viewport = -1, turn = -1;
     [[nodiscard]] static TargetUniforms of(unsigned program);
-    void set(float cx, float cy, float zoom_px, float ox, float oy, int w, int h) const;
+    // `turns`: the view's quarter turns (View::turns), as u_turn = (cos, sin).
+    void set(float cx, float cy, float zoom_px, float ox, float oy, int w, int h, int turns) const;
 };
 
 // A program that draws into a view's target; the programs below add their own uniforms' locations.

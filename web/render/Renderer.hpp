@@ -104,6 +104,7 @@ private:
         float cx, cy, zoom, ox, oy;
         int w, h;
         float scale;
+        int turns;  // View::turns
     };
     // One draw() call: its arguments and what follows from them.
     struct Frame {
@@ -131,6 +132,7 @@ private:
         const GpuPath* path = nullptr;
         std::uint64_t path_version = 0, markers_version = 0, lod_version = 0;
         bool lod = false;
+        int turns = 0;
         bool operator==(const SceneKey&) const = default;
     };
     void add_page(GpuPath& path, std::size_t first, std::size_t rows);
@@ -142,6 +144,7 @@ private:
                               std::size_t budget = ~std::size_t(0));
     void draw_grid(const Target& t, double grid_step, Point world_origin);
     void begin_paths(const Target& t, int layer_mask, const DrawOptions& o);
+    [[nodiscard]] Point pan_px(const View& view, float s) const;
     void draw_markers(const Target& t, int marker_mask);
     void draw_selection(const Target& t, const GpuPath& path, const DrawOptions& o);
     void draw_tool(const Target& t, const DrawOptions& o);

@@ -32,13 +32,22 @@ void grid_labels(ImDrawList* dl, const View& view, Point o) {
     const Point w0 = view.to_world(a.x, a.y + a.h), w1 = view.to_world(a.x + a.w, a.y);
     const int decimals = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step)));
     const auto label = [&](double v) { return fmt("%.*f", decimals, std::fabs(v) < step * kZeroLabelShare ? 0.0 : v); };
-    for (double gx = std::ceil((w0.x + o.x) / step) * step; gx <= w1.x + o.x; gx += step) {
-        const Point s = view.to_screen({gx - o.x, 0});
-        dl->AddText(ImVec2(static_cast<float>(s.x) + 3, a.y + a.h - 18), kLabelColor, label(gx).c_str());
+    // The world axis along the screen's x (the bottom labels) and the one along its y (the left labels): x and y,
+    // or y and x when the view is turned a quarter (View::turns).
+    const bool x_across = turned({1, 0}, view.turns).x != 0;
+    const double lo[2] = {std::min(w0.x, w1.x) + o.x, std::min(w0.y, w1.y) + o.y};
+    const double hi[2] = {std::max(w0.x, w1.x) + o.x, std::max(w0.y, w1.y) + o.y};
+    const auto at = [&](int axis, double v) {  // a point on the grid line `axis` = v, relative to the origin
+        return view.to_screen(axis == 0 ? Point{v - o.x, 0} : Point{0, v - o.y});
+    };
+    const int across = x_across ? 0 : 1, up = 1 - across;
+    for (double g = std::ceil(lo[across] / step) * step; g <= hi[across]; g += step) {
+        const Point s = at(across, g);
+        dl->AddText(ImVec2(static_cast<float>(s.x) + 3, a.y + a.h - 18), kLabelColor, label(g).c_str());
     }
-    for (double gy = std::ceil((w0.y + o.y) / step) * step; gy <= w1.y + o.y; gy += step) {
-        const Point s = view.to_screen({0, gy - o.y});
-        dl->AddText(ImVec2(a.x + 4, static_cast<float>(s.y) - 16), kLabelColor, label(gy).c_str());
+    for (double g = std::ceil(lo[up] / step) * step; g <= hi[up]; g += step) {
+        const Point s = at(up, g);
+        dl->AddText(ImVec2(a.x + 4, static_cast<float>(s.y) - 16), kLabelColor, label(g).c_str());
     }
     const float bar = static_cast<float>(step * view.zoom);
     const ImVec2 p(a.x + a.w - bar - 20, a.y + a.h - 30);

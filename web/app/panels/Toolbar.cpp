@@ -37,6 +37,21 @@ void profile_combo(App& app) {
         ImGui::SetTooltip("Machine and dialect profile; auto: the dialect the tape's codes show (see the Tape panel)");
 }
 
+// The machine's view orientation (View::turns): where the tape's +x points on the screen; kept across sessions.
+void orientation_combo(App& app) {
+    static constexpr const char* kNames[4] = {"x right, y up (ISO)", "x up, y left (Woyda)", "x left, y down",
+                                              "x down, y right"};
+    const int turns = app.view().turns;
+    ImGui::SetNextItemWidth(170);
+    if (ImGui::BeginCombo("##orientation", kNames[turns])) {
+        for (int q = 0; q < 4; ++q)
+            if (ImGui::Selectable(kNames[q], q == turns) && q != turns) app.set_orientation(q);
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The machine's view: where the tape's x and y axes point on the screen (Woyda: x to the back, y left)");
+}
+
 // Downloads: the tape as ESSI, EIA or G-code (essi convert) and its drawing as DXF.
 void export_menu(App& app) {
     if (ImGui::Button("Export...")) ImGui::OpenPopup("export");
@@ -82,6 +97,8 @@ void toolbar(App& app) {
     if (ImGui::Button("Help (H)")) app.ui().help = !app.ui().help;
     ImGui::SameLine();
     profile_combo(app);
+    ImGui::SameLine();
+    orientation_combo(app);
     ImGui::SameLine();
     if (const Document* doc = app.document()) verdict(*doc);
     const UiState& ui = app.ui();
