@@ -64,6 +64,20 @@ function newPage() {
 
 // Drops a file on the canvas the way a person does (dragenter, dragover, drop with a DataTransfer).
 async function dropFile(page, name, bytes) {
+  await dropOnly(page, name, bytes);
+  await page.waitForFunction((n) => { const s = essikit.state(); return s.name === n && s.status === 'ready'; }, name,
+                             { timeout: 60000 });
+  return page.evaluate(() => essikit.state());
+}
+
+// A profile file (.json) dropped: no tape loads; the toolbar's message says what became of it.
+async function dropProfile(page, name, bytes) {
+  await dropOnly(page, name, bytes);
+  await page.waitForFunction((n) => essikit.state().message.includes(n), name, { timeout: 30000 });
+  return page.evaluate(() => essikit.state());
+}
+
+async function dropOnly(page, name, bytes) {
   await page.evaluate(async ([n, b64]) => {
     const bin = atob(b64);
     const data = new Uint8Array(bin.length);
@@ -74,9 +88,6 @@ async function dropFile(page, name, bytes) {
     for (const type of ['dragenter', 'dragover', 'drop'])
       canvas.dispatchEvent(new DragEvent(type, { dataTransfer: dt, bubbles: true, cancelable: true }));
   }, [name, Buffer.from(bytes).toString('base64')]);
-  await page.waitForFunction((n) => { const s = essikit.state(); return s.name === n && s.status === 'ready'; }, name,
-                             { timeout: 60000 });
-  return page.evaluate(() => essikit.state());
 }
 
 // Pixels of a PNG screenshot, decoded by the browser: returns a function (x, y) -> [r, g, b].
@@ -599,6 +610,23 @@ test('the machine\'s view orientation: x up and y left (Woyda), drawn so, and ke
   assert.equal(await page.evaluate(() => window.localStorage.getItem('essikit.orientation')), '1');
   await page.evaluate(() => essikit.setOrientation(0));
   assert.equal((await page.evaluate(() => essikit.state())).view.turns, 0);
+  await page.close();
+});
+
+test('a profile file dropped on the page checks the tape with it (placement on the machine)', async () => {
+  const page = await newPage();
+  let state = await dropProfile(page, 'bad.json', Buffer.from('{"plate_rotation_deg": 999}'));
+  assert.match(state.message, /bad\.json is not a profile: "plate_rotation_deg" must be a number between -360 and 360/);
+  state = await dropProfile(page, 'skewed_plate.profile.json', fs.readFileSync(path.join(examplesDir, 'skewed_plate.profile.json')));
+  assert.equal(state.profile, 'skewed-plate');
+  state = await dropFile(page, 'skewed_plate.esi', fs.readFileSync(path.join(examplesDir, 'skewed_plate.esi')));
+  assert.equal(state.profile, 'skewed-plate');
+  const cli = JSON.parse(execFileSync(essiBin, ['check', '--format', 'json', '--profile',
+    path.join(examplesDir, 'skewed_plate.profile.json'), path.join(examplesDir, 'skewed_plate.esi')]).toString()).files[0];
+  for (const k of ['min_x', 'min_y', 'max_x', 'max_y'])
+    assert.ok(Math.abs(state.stats.machine_cut_bbox_mm[k] - cli.stats.machine_cut_bbox_mm[k]) < 1e-6, k);
+  assert.ok(Math.abs(state.stats.machine_cut_bbox_mm.min_x - 1497.161155) < 1e-5);
+  await page.screenshot({ path: path.join(shots, 'dropped-profile.png') });
   await page.close();
 });
 

@@ -13,6 +13,7 @@
 #include "essi/dxf.hpp"
 #include "essi/write.hpp"
 #include "essi/sniff.hpp"
+#include "essi/text.hpp"
 #include "platform/Platform.hpp"
 
 namespace essi::viewer {
@@ -70,10 +71,28 @@ bool App::init_graphics() {
 // ---------------------------------------------------------------------------------------------------------
 // Loading
 // ---------------------------------------------------------------------------------------------------------
+// A dropped `.json` file is a profile (as `essi check --profile FILE` reads one): the tape is checked again with
+// it. True when `name` is such a file (used or refused, with a message).
+bool App::use_profile_file(const std::string& name, const std::string& bytes) {
+    const bool json = name.size() > 5 && (name.ends_with(".json") || name.ends_with(".JSON"));
+    if (!json) return false;
+    const ProfileResult r = parse_profile(bytes);
+    if (!r.profile) {
+        notify(display_text(name) + " is not a profile: " + (r.diagnostics.empty() ? std::string("?") : r.diagnostics.front().message));
+        return true;
+    }
+    dropped_profile_ = r.profile;
+    notify("Profile " + display_text(r.profile->name) + " from " + display_text(name));
+    set_profile(r.profile->name);
+    return true;
+}
+
 void App::load(std::string name, std::string bytes, std::optional<ViewRequest> view) {
+    if (use_profile_file(name, bytes)) return;
     // "auto": the dialect the tape's evidence shows (essi/dialect.hpp), as `essi check --profile auto`.
     std::optional<Profile> profile;
-    if (profile_name_ != kAutoProfile) profile = builtin_profile(profile_name_);
+    if (dropped_profile_ && profile_name_ == dropped_profile_->name) profile = dropped_profile_;
+    else if (profile_name_ != kAutoProfile) profile = builtin_profile(profile_name_);
     TapeSetup setup = setup_tape(bytes, std::nullopt, profile);
     load_.start(std::move(name), std::move(bytes), std::move(setup));
     pending_view_ = view;

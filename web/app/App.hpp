@@ -92,6 +92,8 @@ public:
     // The last frame drew the tape (its segments, or its level of detail while they are made).
     [[nodiscard]] bool tape_drawn() const { return scene_.tape_drawn(); }
     [[nodiscard]] const std::string& profile_name() const { return profile_name_; }
+    // The profile file dropped on the page (docs/viewer.md), if any.
+    [[nodiscard]] const std::optional<Profile>& dropped_profile() const { return dropped_profile_; }
     [[nodiscard]] View& view() { return view_; }
     [[nodiscard]] Layers& layers() { return layers_; }
     [[nodiscard]] Playback& playback() { return playback_; }
@@ -118,7 +120,9 @@ private:
     LoadController load_{renderer_};
     SceneAssembly scene_;
     std::optional<ViewRequest> pending_view_;  // set_view / select_line before the document is there
-    std::string profile_name_ = std::string(kAutoProfile);  // a built-in profile, or "auto" (the default)
+    std::string profile_name_ = std::string(kAutoProfile);  // a built-in profile, the dropped one, or "auto"
+    std::optional<Profile> dropped_profile_;  // a profile file dropped on the page (its name is a choice too)
+    bool use_profile_file(const std::string& name, const std::string& bytes);
 
     View view_;
     Layers layers_;

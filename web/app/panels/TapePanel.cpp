@@ -30,6 +30,11 @@ void stats_table(const Document& doc) {
     stats_row("mark", fmt("%.3f mm", s.mark_length_mm));
     stats_row("travel", fmt("%.3f mm", s.travel_length_mm));
     stats_row("  of it rapid", fmt("%.3f mm", s.rapid_length_mm));
+    // The machine's box (§11), where the placement moves it (a profile with zero offsets, a plate rotation ...).
+    const Box& mb = s.machine_cut_bbox;
+    if (!mb.empty && !(mb.min_x == s.cut_bbox.min_x && mb.min_y == s.cut_bbox.min_y && mb.max_x == s.cut_bbox.max_x &&
+                       mb.max_y == s.cut_bbox.max_y))
+        stats_row("machine cut box", fmt("(%.1f, %.1f) - (%.1f, %.1f)", mb.min_x, mb.min_y, mb.max_x, mb.max_y));
     stats_row("pierces", fmt("%llu", s.pierces));
     stats_row("blocks", fmt("%llu", s.blocks));
     stats_row("motions", fmt("%llu", s.motions));

@@ -28,13 +28,14 @@ void profile_combo(App& app) {
     if (ImGui::BeginCombo("##profile", shown.c_str())) {
         std::vector<std::string> names{std::string(kAutoProfile)};
         for (const std::string& n : builtin_profile_names()) names.push_back(n);
+        if (app.dropped_profile()) names.push_back(app.dropped_profile()->name);  // (a profile file dropped on the page)
         for (const std::string& n : names) {
             if (ImGui::Selectable(n.c_str(), n == app.profile_name()) && n != app.profile_name()) app.set_profile(n);
         }
         ImGui::EndCombo();
     }
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Machine and dialect profile; auto: the dialect the tape's codes show (see the Tape panel)");
+        ImGui::SetTooltip("Machine and dialect profile; auto: the dialect the tape's codes show (see the Tape panel); drop a profile file (.json) to add yours");
 }
 
 // The machine's view orientation (View::turns): where the tape's +x points on the screen; kept across sessions.
