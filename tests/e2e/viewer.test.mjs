@@ -626,6 +626,15 @@ test('a profile file dropped on the page checks the tape with it (placement on t
   for (const k of ['min_x', 'min_y', 'max_x', 'max_y'])
     assert.ok(Math.abs(state.stats.machine_cut_bbox_mm[k] - cli.stats.machine_cut_bbox_mm[k]) < 1e-6, k);
   assert.ok(Math.abs(state.stats.machine_cut_bbox_mm.min_x - 1497.161155) < 1e-5);
+  // The table (0..3000 x 0..1500 on the machine) under the program: R(-3.5 deg) (machine - G55 (1500, 250)).
+  const a = -3.5 * Math.PI / 180;
+  const program = ([x, y]) => [Math.cos(a) * (x - 1500) - Math.sin(a) * (y - 250), Math.sin(a) * (x - 1500) + Math.cos(a) * (y - 250)];
+  const want = [[0, 0], [3000, 0], [3000, 1500], [0, 1500]].map(program);
+  assert.equal(state.table_mm.length, 4);
+  state.table_mm.forEach((c, k) => assert.ok(Math.hypot(c[0] - want[k][0], c[1] - want[k][1]) < 1e-9, `corner ${k}: ${c} != ${want[k]}`));
+  assert.equal(state.layers.table, true);
+  await page.evaluate(() => essikit.setView(0, 0, 0.25));
+  await page.waitForTimeout(150);
   await page.screenshot({ path: path.join(shots, 'dropped-profile.png') });
   await page.close();
 });

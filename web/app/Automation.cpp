@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/App.hpp"
+#include "essi/placement.hpp"
 #include "essi/diagnostics.hpp"
 #include "essi/geom.hpp"
 #include "essi/report_json.hpp"
@@ -17,6 +18,7 @@ constexpr int kLayerPierces = 4;
 constexpr int kLayerStart = 5;
 constexpr int kLayerKerf = 6;      // the compensated torch path
 constexpr int kLayerKerfBand = 7;  // the band of the cut's width
+constexpr int kLayerTable = 8;     // the table and the plate
 
 using nlohmann::json;
 
@@ -33,6 +35,15 @@ void add_document(json& j, const Document& doc, const LoadController& load, cons
     json widths = json::array();
     for (std::size_t k = 0; k < load.buffers().kerf_width_count; ++k) widths.push_back(load.buffers().kerf_widths[k]);
     j["kerf"] = {{"segments", load.buffers().kerf_segments}, {"widths_mm", widths}};
+    // The machine's table where it lies under the program (the Table overlay), corners in program mm; null without
+    // a table in the profile.
+    if (doc.profile.table) {
+        json corners = json::array();
+        for (const Point& c : Placement(doc.profile).table_in_program(*doc.profile.table)) corners.push_back({c.x, c.y});
+        j["table_mm"] = corners;
+    } else {
+        j["table_mm"] = nullptr;
+    }
     j["pierce_markers"] = doc.pierces.size();
     j["bbox_mm"] = box_to_json(doc.bbox);
     j["memory_bytes"] = doc.memory_bytes() + load.segment_index_bytes();
@@ -104,7 +115,8 @@ json selection_json(const Selection& s) {
 }
 
 json layers_json(const Layers& l) {
-    json j = {{"pierces", l.pierces}, {"start", l.start}, {"grid", l.grid}, {"kerf", l.kerf}, {"kerf_band", l.kerf_band}};
+    json j = {{"pierces", l.pierces}, {"start", l.start}, {"grid", l.grid}, {"kerf", l.kerf}, {"kerf_band", l.kerf_band},
+              {"table", l.table}};
     for (std::size_t k = 0; k < kMotionKinds; ++k) j[motion_kind_name(static_cast<MotionKind>(k))] = l.kinds[k];
     return j;
 }
@@ -184,6 +196,7 @@ void App::set_layer(int layer, bool visible) {
     if (layer == kLayerStart) layers_.start = visible;
     if (layer == kLayerKerf) layers_.kerf = visible;
     if (layer == kLayerKerfBand) layers_.kerf_band = visible;
+    if (layer == kLayerTable) layers_.table = visible;
 }
 
 }  // namespace essi::viewer

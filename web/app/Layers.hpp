@@ -16,6 +16,7 @@ struct Layers {
     bool grid = true;
     bool kerf = true;       // the compensated torch path (a tape with kerf compensation)
     bool kerf_band = true;  // the band of the cut's real width along it
+    bool table = true;      // the machine's table (a profile with one) and the plate (the cut box)
 
     [[nodiscard]] bool& kind(MotionKind k) { return kinds[static_cast<std::size_t>(k)]; }
     [[nodiscard]] bool kind(MotionKind k) const { return kinds[static_cast<std::size_t>(k)]; }

@@ -8,6 +8,8 @@
 // marker's, 12 none): the carriage moves by minus it so that the tool is over the contour.
 #pragma once
 
+#include <array>
+
 #include "essi/geom.hpp"
 #include "essi/motion.hpp"
 #include "essi/profile.hpp"
@@ -21,6 +23,16 @@ public:
     [[nodiscard]] Point machine(Point program, Point tool_offset = {}) const {
         return {zero_.x + c_ * program.x - s_ * program.y - tool_offset.x,
                 zero_.y + s_ * program.x + c_ * program.y - tool_offset.y};
+    }
+    // A machine position in program coordinates (no tool offset): R(-plate rotation) · (machine - zero offset).
+    [[nodiscard]] Point program(Point machine) const {
+        const double x = machine.x - zero_.x, y = machine.y - zero_.y;
+        return {c_ * x + s_ * y, -s_ * x + c_ * y};
+    }
+    // The table's corners (machine coordinates, counter-clockwise from its minimum) in program coordinates.
+    [[nodiscard]] std::array<Point, 4> table_in_program(const TableLimits& t) const {
+        return {program({t.min_x_mm, t.min_y_mm}), program({t.max_x_mm, t.min_y_mm}), program({t.max_x_mm, t.max_y_mm}),
+                program({t.min_x_mm, t.max_y_mm})};
     }
     // The whole motion in machine coordinates (points, centre, parabola and torch step turned and moved).
     [[nodiscard]] MotionRecord machine(const MotionRecord& m, Point tool_offset) const;

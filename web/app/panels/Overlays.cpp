@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/App.hpp"
+#include "essi/placement.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
 #include "essi/geom.hpp"
@@ -14,6 +15,8 @@ namespace {
 
 constexpr ImU32 kLabelColor = IM_COL32(150, 160, 170, 160);
 constexpr ImU32 kScaleBarColor = IM_COL32(230, 230, 230, 220);
+constexpr ImU32 kTableColor = IM_COL32(120, 200, 255, 200);  // the machine's table (its travel limits)
+constexpr ImU32 kPlateColor = IM_COL32(200, 200, 200, 110);  // the plate: the box of what is cut
 constexpr ImU32 kMeasureColor = IM_COL32(255, 255, 0, 255);
 constexpr std::size_t kMaxArrows = 64;  // direction arrows drawn on a selected line at most
 constexpr float kArrowPx = 9;
@@ -119,6 +122,23 @@ void measure(ImDrawList* dl, const Document* doc, const Measure& m, const View& 
     measure_window(m, b, view.area);
 }
 
+// The machine's table (the profile's `table`, docs/semantics.md §11) where it lies under the program: turned and
+// moved back through the placement; and the plate on it, the box of what is cut. Only with a table.
+void table_and_plate(ImDrawList* dl, const Document& doc, const View& view, Point o) {
+    if (!doc.profile.table) return;
+    const auto screen = [&](Point p) { return to_im(view.to_screen({p.x - o.x, p.y - o.y})); };
+    const auto corners = Placement(doc.profile).table_in_program(*doc.profile.table);
+    ImVec2 pts[4];
+    for (int k = 0; k < 4; ++k) pts[k] = screen(corners[k]);
+    dl->AddPolyline(pts, 4, kTableColor, ImDrawFlags_Closed, 2.f);
+    dl->AddText(ImVec2(pts[3].x + 4, pts[3].y + 2), kTableColor, "table");
+    const Box& b = doc.stats.cut_bbox;
+    if (b.empty) return;
+    const ImVec2 plate[4] = {screen({b.min_x, b.min_y}), screen({b.max_x, b.min_y}), screen({b.max_x, b.max_y}),
+                             screen({b.min_x, b.max_y})};
+    dl->AddPolyline(plate, 4, kPlateColor, ImDrawFlags_Closed, 1.f);
+}
+
 }  // namespace
 
 void overlays(App& app) {
@@ -129,6 +149,7 @@ void overlays(App& app) {
     const Document* doc = app.document();
     const Point o = app.origin();
     if (app.layers().grid) grid_labels(dl, view, o);
+    if (doc && app.layers().table) table_and_plate(dl, *doc, view, o);
     const Selection& sel = app.selection();
     if (doc && (sel.motion != Selection::npos || sel.line > 0)) selection_arrows(dl, *doc, sel, view);
     if (app.input().measure.active) measure(dl, doc, app.input().measure, view, o);

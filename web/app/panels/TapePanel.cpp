@@ -112,6 +112,9 @@ void layers(Layers& layers, const Document* doc) {
     ImGui::Checkbox("start", &layers.start);
     ImGui::SameLine();
     ImGui::Checkbox("grid", &layers.grid);
+    ImGui::SameLine();
+    ImGui::Checkbox("table", &layers.table);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The machine's table (a profile with a table) and the plate (the box of the cuts)");
     // The kerf layers, where the tape uses compensation (docs/semantics.md §8).
     if (doc && std::any_of(doc->kerfs.begin(), doc->kerfs.end(), [](const auto& k) { return k.second > 0; })) {
         ImGui::ColorButton("##kerf", opaque(kPathColorTable[kKerfPathKind]), ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
