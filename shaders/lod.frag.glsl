@@ -14,7 +14,7 @@ uniform vec2 u_center;      // view centre, mm relative to the document origin
 uniform float u_zoom;       // pixels per mm
 uniform vec2 u_origin_px;   // pixel (top-left origin) where u_center is drawn
 uniform vec2 u_viewport;    // target size in pixels
-uniform vec2 u_turn;        // (cos, sin) of the view's quarter turns
+uniform vec2 u_turn;        // (cos, sin) of the view's rotation (View::rotation())
 uniform int u_mask;         // bits 0-3: visible kinds; bit 4: pierces shown
 uniform vec4 u_colors[4];
 uniform vec4 u_pierce;
@@ -22,14 +22,13 @@ out vec4 o_color;
 
 void main() {
     vec2 px = vec2(gl_FragCoord.x, u_viewport.y - gl_FragCoord.y);  // the pixel's centre, top-left origin
-    // The pixel's footprint in cells: from its lower-left to its upper-right corner (y grows upwards in mm).
-    // (turned back by the view's quarter turns: the footprint stays a box along the cells)
-    vec2 r0 = vec2(px.x - 0.5 - u_origin_px.x, u_origin_px.y - px.y - 0.5) / u_zoom;
-    vec2 r1 = vec2(px.x + 0.5 - u_origin_px.x, u_origin_px.y - px.y + 0.5) / u_zoom;
-    vec2 a = (u_center + vec2(u_turn.x * r0.x + u_turn.y * r0.y, -u_turn.y * r0.x + u_turn.x * r0.y) - u_min) / u_cell;
-    vec2 b = (u_center + vec2(u_turn.x * r1.x + u_turn.y * r1.y, -u_turn.y * r1.x + u_turn.x * r1.y) - u_min) / u_cell;
-    vec2 lo = min(a, b);
-    vec2 hi = max(a, b);
+    // The pixel's footprint in cells: the box around the pixel turned back by the view's rotation (a pixel's
+    // width along a cell's axes is |cos| + |sin| pixels; one pixel for quarter turns).
+    vec2 r = vec2(px.x - u_origin_px.x, u_origin_px.y - px.y) / u_zoom;
+    vec2 m = (u_center + vec2(u_turn.x * r.x + u_turn.y * r.y, -u_turn.y * r.x + u_turn.x * r.y) - u_min) / u_cell;
+    vec2 half_px = vec2(0.5 * (abs(u_turn.x) + abs(u_turn.y)) / (u_zoom * u_cell));
+    vec2 lo = m - half_px;
+    vec2 hi = m + half_px;
     ivec2 size = textureSize(u_lod, u_level);
     if (hi.x <= 0.0 || hi.y <= 0.0 || lo.x >= float(size.x) || lo.y >= float(size.y)) discard;
     ivec2 c0 = clamp(ivec2(floor(lo)), ivec2(0), size - 1);

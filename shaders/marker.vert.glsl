@@ -14,7 +14,7 @@ uniform vec2 u_center;
 uniform float u_zoom;
 uniform vec2 u_origin_px;
 uniform vec2 u_viewport;
-uniform vec2 u_turn;         // (cos, sin) of the view's quarter turns
+uniform vec2 u_turn;         // (cos, sin) of the view's rotation (View::rotation())
 uniform float u_radius_px;
 uniform int u_type_mask;
 

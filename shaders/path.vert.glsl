@@ -16,7 +16,7 @@ uniform vec2 u_center;        // view centre, mm relative to the document origin
 uniform float u_zoom;         // pixels per mm
 uniform vec2 u_origin_px;     // pixel (top-left origin) where u_center is drawn
 uniform vec2 u_viewport;      // framebuffer size in pixels
-uniform vec2 u_turn;          // (cos, sin) of the view's quarter turns (View::turns)
+uniform vec2 u_turn;          // (cos, sin) of the view's rotation (View::rotation())
 uniform float u_half_width[6];
 uniform vec4 u_colors[6];
 uniform float u_band_half_mm[8];  // kerf band k: half its width in mm (the cut's real width on screen)

@@ -639,6 +639,77 @@ test('a profile file dropped on the page checks the tape with it (placement on t
   await page.close();
 });
 
+test('machine coordinates: the program turned and placed as it lies on the table, measured in machine mm, kept', async () => {
+  const page = await newPage();
+  await dropProfile(page, 'skewed_plate.profile.json', fs.readFileSync(path.join(examplesDir, 'skewed_plate.profile.json')));
+  const { motions } = await loadExample(page, 'skewed_plate.esi');
+  await page.evaluate(() => essikit.setCoordinates('machine'));
+  let state = await page.evaluate(() => essikit.state());
+  assert.equal(state.view.coordinates, 'machine');
+  // machine = G55 (1500, 250) + R(3.5 deg) program (docs/semantics.md section 11)
+  const a = 3.5 * Math.PI / 180;
+  const machine = ([x, y]) => [1500 + Math.cos(a) * x - Math.sin(a) * y, 250 + Math.sin(a) * x + Math.cos(a) * y];
+  assert.ok(Math.abs(state.view.rotation[0] - Math.cos(a)) < 1e-12 && Math.abs(state.view.rotation[1] - Math.sin(a)) < 1e-12,
+            JSON.stringify(state.view.rotation));
+  const centre = machine([state.view.x_mm, state.view.y_mm]);
+  assert.ok(Math.hypot(state.view.shown_mm[0] - centre[0], state.view.shown_mm[1] - centre[1]) < 1e-9);
+  // The plate's edges, skewed in the program, run along the screen's axes: the table's are square on the screen.
+  const cuts = motions.filter((m) => m.kind === 'cut' && m.curve === 'line');
+  assert.equal(cuts.length, 4);
+  for (const m of cuts) {
+    const p = await page.evaluate(([x, y]) => essikit.project(x, y), m.start);
+    const q = await page.evaluate(([x, y]) => essikit.project(x, y), m.end);
+    const [dx, dy] = [m.end[0] - m.start[0], m.end[1] - m.start[1]];
+    // program x runs 3.5 degrees up the screen; program y 3.5 degrees left of up
+    const along = Math.abs(dx) > Math.abs(dy) ? Math.abs(q.y - p.y) / Math.abs(q.x - p.x) : Math.abs(q.x - p.x) / Math.abs(q.y - p.y);
+    assert.ok(Math.abs(along - Math.tan(a)) < 1e-9, `line ${m.line}: ${along}`);
+  }
+  const corners = await Promise.all(state.table_mm.map((c) => page.evaluate(([x, y]) => essikit.project(x, y), c)));
+  assert.ok(Math.abs(corners[0].y - corners[1].y) < 1e-6 && Math.abs(corners[1].x - corners[2].x) < 1e-6,
+            `the table is not square on the screen: ${JSON.stringify(corners)}`);
+  // The cut colour where the placed lines are.
+  await page.evaluate(() => essikit.setView(160, 110, 2.5));
+  await page.mouse.move(5, 890);
+  await page.waitForTimeout(150);
+  const at = await pixels(page, await page.screenshot({ path: path.join(shots, 'machine-coordinates.png') }));
+  for (const m of cuts) {
+    const mid = [(m.start[0] + m.end[0]) / 2, (m.start[1] + m.end[1]) / 2];
+    const p = await page.evaluate(([x, y]) => essikit.project(x, y), mid);
+    const hits = [];
+    for (let dy = -1; dy <= 1; ++dy) for (let dx = -1; dx <= 1; ++dx) hits.push(at(p.x + dx, p.y + dy));
+    assert.ok(hits.some((c) => near(c, CUT_RGB)), `no cut colour at (${p.x}, ${p.y}): ${JSON.stringify(hits)}`);
+  }
+  // The measure in machine millimetres: the first cut's ends.
+  await page.keyboard.press('m');
+  await until(page, () => essikit.state().measure.active, null, 'M did not start measuring');
+  for (const [k, pt] of [[1, cuts[0].start], [2, cuts[0].end]]) {
+    const p = await page.evaluate(([x, y]) => essikit.project(x, y), pt);
+    await page.mouse.click(p.x + 2, p.y - 2);
+    await until(page, (n) => essikit.state().measure.points === n, k, `measure click ${k} not taken`);
+  }
+  const ms = (await page.evaluate(() => essikit.state())).measure;
+  assert.equal(ms.coordinates, 'machine');
+  const [ma, mb] = [machine(cuts[0].start), machine(cuts[0].end)];
+  assert.ok(Math.hypot(ms.a_mm[0] - ma[0], ms.a_mm[1] - ma[1]) < 1e-9, `A ${ms.a_mm} != ${ma}`);
+  assert.ok(Math.abs(ms.dx_mm - (mb[0] - ma[0])) < 1e-9 && Math.abs(ms.dy_mm - (mb[1] - ma[1])) < 1e-9);
+  assert.ok(Math.abs(ms.distance_mm - cuts[0].length_mm) < 1e-9);
+  // The playback says where the tool is in machine millimetres.
+  await tap(page, 'Escape');
+  await tap(page, 'Home');
+  await until(page, () => essikit.state().playback.active, null, 'Home did not start the playback');
+  const pb = (await page.evaluate(() => essikit.state())).playback;
+  const tool = machine(pb.tool_mm);
+  assert.ok(Math.hypot(pb.tool_shown_mm[0] - tool[0], pb.tool_shown_mm[1] - tool[1]) < 1e-9, JSON.stringify(pb));
+  await tap(page, 'End');
+  // Kept across sessions; back to program coordinates: no turn.
+  assert.equal(await page.evaluate(() => window.localStorage.getItem('essikit.coordinates')), '1');
+  await page.evaluate(() => essikit.setCoordinates('program'));
+  state = await page.evaluate(() => essikit.state());
+  assert.equal(state.view.coordinates, 'program');
+  assert.deepEqual(state.view.rotation, [1, 0]);
+  await page.close();
+});
+
 test('a share link for a tape too large for a URL says so', async () => {
   const page = await newPage();
   const name = generatedTape(5);

@@ -43,11 +43,23 @@ std::string banner_for(const Document& d) {
 App::App(GLFWwindow* window) : window_(window) {
     g_app = this;
     view_.turns = ((platform::load_setting(kOrientationSetting).value_or(0) % 4) + 4) % 4;  // (kept across sessions)
+    machine_coordinates_ = platform::load_setting(kCoordinatesSetting).value_or(0) == 1;
 }
 
 void App::set_orientation(int quarter_turns) {
     view_.turns = ((quarter_turns % 4) + 4) % 4;
     platform::save_setting(kOrientationSetting, view_.turns);
+}
+
+void App::set_machine_coordinates(bool machine) {
+    machine_coordinates_ = machine;
+    platform::save_setting(kCoordinatesSetting, machine ? 1 : 0);
+    view_.plate = coordinates().plate();  // (the drawing turns about the view's centre)
+}
+
+Coordinates App::coordinates() const {
+    const Document* d = document();
+    return machine_coordinates_ && d ? Coordinates(d->profile) : Coordinates();
 }
 App::~App() {
     if (g_app == this) g_app = nullptr;
@@ -123,6 +135,7 @@ void App::document_loaded() {
     const Document& d = *document();
     selection_.clear();
     ui_.banner = banner_for(d);
+    view_.plate = coordinates().plate();
     view_.fit(d.bbox, d.origin);
     apply_pending_view(d);
     playback_.position = static_cast<double>(d.motions.size());
@@ -155,6 +168,7 @@ void App::frame() {
     ImGuiIO& io = ImGui::GetIO();
     view_.area = panels::drawing_area(io.DisplaySize.x, io.DisplaySize.y);
     step_loading();
+    view_.plate = coordinates().plate();
     if (const Document* d = document()) playback_.advance(io.DeltaTime, d->motions.size());
     input_.handle_shortcuts(*this);
     input_.handle_canvas(*this);
@@ -165,7 +179,7 @@ void App::frame() {
     int fb_w = 0, fb_h = 0;
     glfwGetFramebufferSize(window_, &fb_w, &fb_h);
     const SceneInputs in{view_,     fb_w,      fb_h,       framebuffer_scale(), panels::panel_color(),
-                         layers_,   playback_, selection_, load_};
+                         layers_,   playback_, selection_, load_,           coordinates().shown(origin())};
     if (scene_.prepare(in, renderer_, graphics_ok_)) load_.note_drawn(scene_.tape_drawn());
 }
 

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "app/Coordinates.hpp"
 #include "app/Document.hpp"
 #include "app/Input.hpp"
 #include "app/Layers.hpp"
@@ -70,6 +71,13 @@ public:
     // The machine's view orientation (View::turns, Orientation): kept across sessions (platform settings).
     void set_orientation(int quarter_turns);
     static constexpr const char* kOrientationSetting = "orientation";
+    // Program or machine coordinates (Coordinates): the numbers, the grid and the drawing's turn; kept across
+    // sessions.
+    void set_machine_coordinates(bool machine);
+    static constexpr const char* kCoordinatesSetting = "coordinates";
+    [[nodiscard]] bool machine_coordinates() const { return machine_coordinates_; }
+    // The coordinates shown: the machine's through the document's profile, or the program's.
+    [[nodiscard]] Coordinates coordinates() const;
     void fit();
     void share();  // the Share button and S
     // The tape converted (`essi convert`: "essi", "eia", "gcode" in the profile it is read with) or drawn
@@ -125,6 +133,7 @@ private:
     bool use_profile_file(const std::string& name, const std::string& bytes);
 
     View view_;
+    bool machine_coordinates_ = false;
     Layers layers_;
     Playback playback_;
     Selection selection_;

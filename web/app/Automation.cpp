@@ -61,7 +61,7 @@ void add_document(json& j, const Document& doc, const LoadController& load, cons
 }
 
 // What the Playback panel shows: the motion at the scrubber, its line, the tools and where the tool is.
-json playback_json(const Playback& playback, const Document* doc) {
+json playback_json(const Playback& playback, const Document* doc, const Coordinates& cs) {
     json p = {{"active", playback.active}, {"playing", playback.playing}, {"position", playback.position}};
     if (!playback.active || !doc || doc->motions.empty()) return p;
     const std::size_t n = doc->motions.size();
@@ -74,18 +74,22 @@ json playback_json(const Playback& playback, const Document* doc) {
     p["tools"] = tools_text(m.tools);
     p["feed_mm_min"] = doc->feed_of(at.motion);
     p["tool_mm"] = {tool.x, tool.y};
+    const Point shown = cs.shown(tool);
+    p["tool_shown_mm"] = {shown.x, shown.y};  // (in the shown coordinates, as the Playback panel says it)
     p["drawn_motions"] = playback.limit(n);
     return p;
 }
 
-json measure_json(const Measure& m) {
-    json j = {{"active", m.active}, {"points", m.points}};
-    if (m.points >= 1) j["a_mm"] = {m.a.x, m.a.y};
+// The measure as its window shows it: in the shown coordinates.
+json measure_json(const Measure& m, const Coordinates& cs) {
+    json j = {{"active", m.active}, {"points", m.points}, {"coordinates", cs.name()}};
+    const Point a = cs.shown(m.a), b = cs.shown(m.b);
+    if (m.points >= 1) j["a_mm"] = {a.x, a.y};
     if (m.points == 2) {
-        j["b_mm"] = {m.b.x, m.b.y};
-        j["distance_mm"] = std::hypot(m.b.x - m.a.x, m.b.y - m.a.y);
-        j["dx_mm"] = m.b.x - m.a.x;
-        j["dy_mm"] = m.b.y - m.a.y;
+        j["b_mm"] = {b.x, b.y};
+        j["distance_mm"] = std::hypot(b.x - a.x, b.y - a.y);
+        j["dx_mm"] = b.x - a.x;
+        j["dy_mm"] = b.y - a.y;
     }
     return j;
 }
@@ -150,17 +154,24 @@ std::string App::state_json() const {
     }
     j["selection"] = selection_json(selection_);
     const Point o = origin();
-    // Screen position of a point (x, y) in mm: d = turned((x - x_mm, y - y_mm), turns); px = origin_px.x + d.x * zoom, py = origin_px.y - d.y * zoom
+    // Screen position of a program point (x, y) in mm: d = R(rotation) (x - x_mm, y - y_mm);
+    // px = origin_px.x + d.x * zoom, py = origin_px.y - d.y * zoom (App::project)
+    const Coordinates cs = coordinates();
+    const Rotation r = view_.rotation();
+    const Point shown_centre = cs.shown({view_.cx + o.x, view_.cy + o.y});
     j["view"] = {{"x_mm", view_.cx + o.x},
                  {"y_mm", view_.cy + o.y},
                  {"zoom", view_.zoom},
                  {"turns", view_.turns},
+                 {"coordinates", cs.name()},
+                 {"shown_mm", {shown_centre.x, shown_centre.y}},
+                 {"rotation", {r.c, r.s}},
                  {"origin_px", {view_.ox(), view_.oy()}},
                  {"area", {view_.area.x, view_.area.y, view_.area.w, view_.area.h}},
                  {"query", view_query()}};
     j["layers"] = layers_json(layers_);
-    j["playback"] = playback_json(playback_, doc);
-    j["measure"] = measure_json(input_.measure);
+    j["playback"] = playback_json(playback_, doc, cs);
+    j["measure"] = measure_json(input_.measure, cs);
     j["inspector"] = inspector_json(doc, selection_.line);
     j["render"] = render_json(renderer_.stats(), scene_.skipped_frames());
     j["help"] = ui_.help;

@@ -103,7 +103,7 @@ bool SceneAssembly::prepare(const SceneInputs& in, const Renderer& renderer, boo
     const GpuPath* path = in.load.drawn_path();
     tape_drawn_ = doc && (o.lod || path != nullptr);
     scene_ = SceneFrame{view, in.fb_w, in.fb_h, o, in.layers.grid ? grid_step(view.zoom) : kNoGrid,
-                        doc ? doc->origin : Point{}, path, path ? path->version : 0};
+                        in.grid_origin, path, path ? path->version : 0};
     return true;
 }
 
@@ -116,7 +116,7 @@ void SceneAssembly::render(Renderer& renderer, UiRenderer& ui, int fb_w, int fb_
     }
     if (scene_) {
         const SceneFrame& s = *scene_;
-        renderer.draw(s.view, s.fb_w, s.fb_h, s.options, s.grid_step, s.origin, s.path);
+        renderer.draw(s.view, s.fb_w, s.fb_h, s.options, s.grid_step, s.grid_origin, s.path);
     }
     ui.draw(data, fb_w, fb_h);
     last_scene_ = scene_;

@@ -27,6 +27,7 @@ struct SceneInputs {
     const Playback& playback;
     const Selection& selection;
     const LoadController& load;
+    Point grid_origin;  // the document origin in the shown coordinates (Coordinates): the grid sits on their multiples
 };
 
 class SceneAssembly {
@@ -48,7 +49,7 @@ private:
         int fb_w = 0, fb_h = 0;
         DrawOptions options;
         double grid_step = 0;
-        Point origin;
+        Point grid_origin;
         const GpuPath* path = nullptr;
         std::uint64_t path_version = 0;
         bool operator==(const SceneFrame&) const = default;

@@ -30,38 +30,59 @@ enum class Orientation : int { XRight = 0, XUp = 1, XLeft = 2, XDown = 3 };
     }
 }
 
+// A rotation (cos, sin of its angle, counter-clockwise). Quarter turns are exact.
+struct Rotation {
+    double c = 1, s = 0;
+    [[nodiscard]] static Rotation quarter(int quarter_turns) {
+        const Point u = turned({1, 0}, quarter_turns);
+        return {u.x, u.y};
+    }
+    [[nodiscard]] Point apply(Point v) const { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
+    [[nodiscard]] Point undo(Point v) const { return {c * v.x + s * v.y, -s * v.x + c * v.y}; }
+    // This rotation, then `next`.
+    [[nodiscard]] Rotation then(Rotation next) const { return {next.c * c - next.s * s, next.s * c + next.c * s}; }
+    bool operator==(const Rotation&) const = default;
+};
+
 struct View {
     double cx = 0, cy = 0;  // mm, relative to the document origin, drawn at the centre of `area`
     double zoom = 1;        // pixels per mm
     Rect area;              // the drawing area (the window minus the side panels)
     int turns = 0;          // Orientation: the world turned this many quarter turns on the screen
+    // Machine coordinates (Coordinates): the plate's rotation on the table, applied before the quarter turns;
+    // none in program coordinates.
+    Rotation plate;
 
+    // The whole turn from the world (program mm) to the screen: the plate's, then the orientation's.
+    [[nodiscard]] Rotation rotation() const { return plate.then(Rotation::quarter(turns)); }
     [[nodiscard]] double ox() const { return area.x + area.w * 0.5; }
     [[nodiscard]] double oy() const { return area.y + area.h * 0.5; }
     [[nodiscard]] Point to_screen(Point p) const {
-        const Point d = turned({p.x - cx, p.y - cy}, turns);
+        const Point d = rotation().apply({p.x - cx, p.y - cy});
         return {ox() + d.x * zoom, oy() - d.y * zoom};
     }
     [[nodiscard]] Point to_world(double sx, double sy) const {
-        const Point d = turned({(sx - ox()) / zoom, -(sy - oy()) / zoom}, -turns);
+        const Point d = rotation().undo({(sx - ox()) / zoom, -(sy - oy()) / zoom});
         return {cx + d.x, cy + d.y};
     }
 
     // Moves the drawing by (dx, dy) screen pixels (a drag).
     void pan_by(double dx_px, double dy_px) {
-        const Point d = turned({dx_px / zoom, -dy_px / zoom}, -turns);
+        const Point d = rotation().undo({dx_px / zoom, -dy_px / zoom});
         cx -= d.x;
         cy -= d.y;
     }
 
+    // The box (world mm) in the middle of the area, as large as fits: its corners turned as the screen shows them.
     void fit(const Box& b, Point origin, float margin_px = 24) {
         if (b.empty) {
             cx = cy = 0;
             zoom = 1;
             return;
         }
-        double w = std::max(b.max_x - b.min_x, kMinFitSizeMm), h = std::max(b.max_y - b.min_y, kMinFitSizeMm);
-        if (turns % 2 != 0) std::swap(w, h);  // (a quarter turn: the width runs up the screen)
+        const Rotation r = rotation();
+        const double hw = std::max(b.max_x - b.min_x, kMinFitSizeMm) / 2, hh = std::max(b.max_y - b.min_y, kMinFitSizeMm) / 2;
+        const double w = 2 * (std::fabs(r.c) * hw + std::fabs(r.s) * hh), h = 2 * (std::fabs(r.s) * hw + std::fabs(r.c) * hh);
         const double aw = std::max(area.w - 2 * margin_px, 10.f), ah = std::max(area.h - 2 * margin_px, 10.f);
         zoom = std::clamp(std::min(aw / w, ah / h), kMinZoom, kMaxZoom);
         cx = (b.min_x + b.max_x) / 2 - origin.x;

@@ -82,6 +82,22 @@ EMSCRIPTEN_KEEPALIVE void essi_set_orientation(int quarter_turns) {
     if (App* app = App::instance()) app->set_orientation(quarter_turns);
 }
 
+// 1: machine coordinates, 0: program coordinates (Coordinates).
+EMSCRIPTEN_KEEPALIVE void essi_set_coordinates(int machine) {
+    if (App* app = App::instance()) app->set_machine_coordinates(machine != 0);
+}
+
+// The page pixel where program point (x, y) mm is drawn (View::to_screen), as JSON [px, py].
+EMSCRIPTEN_KEEPALIVE const char* essi_project(double x, double y) {
+    static std::string s;
+    App* app = App::instance();
+    if (!app) return "null";
+    const essi::Point o = app->origin();
+    const essi::Point p = app->view().to_screen({x - o.x, y - o.y});
+    s = nlohmann::json::array({p.x, p.y}).dump();
+    return s.c_str();
+}
+
 // Reads the tape again with another profile: a built-in name or "auto".
 EMSCRIPTEN_KEEPALIVE void essi_set_profile(const char* name) {
     if (App* app = App::instance()) app->set_profile(name ? name : "auto");

@@ -88,10 +88,8 @@ TargetUniforms TargetUniforms::of(unsigned p) {
             glGetUniformLocation(p, "u_turn")};
 }
 
-void TargetUniforms::set(float cx, float cy, float zoom_px, float ox, float oy, int w, int h, int turns) const {
-    static constexpr float kCos[4] = {1, 0, -1, 0}, kSin[4] = {0, 1, 0, -1};
-    const int q = ((turns % 4) + 4) % 4;
-    glUniform2f(turn, kCos[q], kSin[q]);
+void TargetUniforms::set(float cx, float cy, float zoom_px, float ox, float oy, int w, int h, Rotation r) const {
+    glUniform2f(turn, static_cast<float>(r.c), static_cast<float>(r.s));
     glUniform2f(center, cx, cy);
     glUniform1f(zoom, zoom_px);
     glUniform2f(origin_px, ox, oy);

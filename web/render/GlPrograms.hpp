@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "app/View.hpp"
+
 namespace essi::viewer {
 
 // Compiles and links a program; 0 when the GPU refuses it (program_error() says why, also on stderr).
@@ -19,8 +21,8 @@ namespace essi::viewer {
 struct TargetUniforms {
     int center = -1, zoom = -1, origin_px = -1, viewport = -1, turn = -1;
     [[nodiscard]] static TargetUniforms of(unsigned program);
-    // `turns`: the view's quarter turns (View::turns), as u_turn = (cos, sin).
-    void set(float cx, float cy, float zoom_px, float ox, float oy, int w, int h, int turns) const;
+    // `r`: the view's rotation (View::rotation(): the plate's and the quarter turns), as u_turn = (cos, sin).
+    void set(float cx, float cy, float zoom_px, float ox, float oy, int w, int h, Rotation r) const;
 };
 
 // A program that draws into a view's target; the programs below add their own uniforms' locations.

@@ -180,7 +180,7 @@ void Renderer::draw_lod(const Target& t, int mask) {
     const int level = lod_level(t.zoom);
     const LodProgram& p = programs_.lod;
     glUseProgram(p.id);
-    p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.turns);
+    p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.rot);
     glUniform4f(p.rect, 0.f, 0.f, static_cast<float>(t.w), static_cast<float>(t.h));
     glUniform1i(p.level, level);
     glUniform1f(p.cell, static_cast<float>(lod_cell_ * std::ldexp(1.0, level)));
@@ -217,13 +217,13 @@ std::size_t Renderer::draw_segments(const GpuPath& path, std::size_t first, std:
     // the thickest line.
     float x0 = -kUnbounded, y0 = -kUnbounded, x1 = kUnbounded, y1 = kUnbounded;
     if (cull != nullptr && cull->zoom > 0) {
-        // The target's corners in mm (turned back by the view's quarter turns), their box widened.
+        // The target's corners in mm (turned back by the view's rotation), their box widened.
         const float margin = kCullMarginPx * cull->scale / cull->zoom;
         x0 = y0 = kUnbounded;
         x1 = y1 = -kUnbounded;
         for (const float sx : {0.f, static_cast<float>(cull->w)})
             for (const float sy : {0.f, static_cast<float>(cull->h)}) {
-                const Point d = turned({(sx - cull->ox) / cull->zoom, (cull->oy - sy) / cull->zoom}, -cull->turns);
+                const Point d = cull->rot.undo({(sx - cull->ox) / cull->zoom, (cull->oy - sy) / cull->zoom});
                 x0 = std::min(x0, cull->cx + static_cast<float>(d.x));
                 x1 = std::max(x1, cull->cx + static_cast<float>(d.x));
                 y0 = std::min(y0, cull->cy + static_cast<float>(d.y));
@@ -257,10 +257,21 @@ std::size_t Renderer::draw_segments(const GpuPath& path, std::size_t first, std:
     return i;
 }
 
+// The grid lies along the shown coordinates' axes (View::plate): its target is t with the centre in those
+// coordinates and the orientation's quarter turns only.
+Renderer::Target Renderer::grid_target(const Target& t, const View& view) {
+    Target g = t;
+    const Point c = view.plate.apply({t.cx, t.cy});
+    g.cx = static_cast<float>(c.x);
+    g.cy = static_cast<float>(c.y);
+    g.rot = Rotation::quarter(view.turns);
+    return g;
+}
+
 void Renderer::draw_grid(const Target& t, double grid_step, Point world_origin) {
     const GridProgram& p = programs_.grid;
     glUseProgram(p.id);
-    p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.turns);
+    p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.rot);
     glUniform2f(p.world_origin, static_cast<float>(world_origin.x), static_cast<float>(world_origin.y));
     glUniform1f(p.step, static_cast<float>(grid_step));
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -269,7 +280,7 @@ void Renderer::draw_grid(const Target& t, double grid_step, Point world_origin) 
 void Renderer::begin_paths(const Target& t, int layer_mask, const DrawOptions& o) {
     const PathProgram& p = programs_.path;
     glUseProgram(p.id);
-    p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.turns);
+    p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.rot);
     float hw[kPathColors];
     for (std::size_t k = 0; k < kPathColors; ++k) hw[k] = kHalfWidthPx[k] * t.scale;
     glUniform1fv(p.half_width, kPathColors, hw);
@@ -295,7 +306,7 @@ void Renderer::draw_markers(const Target& t, int marker_mask) {
     if (marker_count_ == 0 || (marker_mask & kTextureMarkers) == 0) return;
     const MarkerProgram& p = programs_.marker;
     glUseProgram(p.id);
-    p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.turns);
+    p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.rot);
     glUniform1f(p.radius_px, kMarkerRadiusPx * t.scale);
     glUniform1i(p.type_mask, marker_mask);
     glUniform1i(p.use_single, 0);
@@ -307,7 +318,7 @@ void Renderer::draw_tool(const Target& t, const DrawOptions& o) {
     if (!o.has_tool) return;
     const MarkerProgram& p = programs_.marker;
     glUseProgram(p.id);
-    p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.turns);
+    p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.rot);
     glUniform1i(p.use_single, 1);
     glUniform3f(p.single, static_cast<float>(o.tool.x), static_cast<float>(o.tool.y),
                 static_cast<float>(MarkerType::Tool));
@@ -338,13 +349,13 @@ bool Renderer::ensure_cache(int w, int h) {
 // How far the cached image has moved on the screen since it was drawn (framebuffer pixels): the pan since, turned
 // as the view is.
 Point Renderer::pan_px(const View& view, float s) const {
-    const Point r = turned({cache_cx_ - view.cx, cache_cy_ - view.cy}, view.turns);
+    const Point r = view.rotation().apply({cache_cx_ - view.cx, cache_cy_ - view.cy});
     return {r.x * view.zoom * s, -r.y * view.zoom * s};
 }
 
 std::size_t Renderer::draw_scene(const Frame& f, const Target& t, std::size_t from, bool full, std::size_t budget) {
     constexpr int kStart = marker_bit(MarkerType::Start);
-    if (full) draw_grid(t, f.grid_step, f.world_origin);
+    if (full) draw_grid(grid_target(t, f.view), f.grid_step, f.world_origin);
     if (f.lod) {  // the raster has the paths and the pierces; the start marker is drawn as usual
         const bool pierces = (f.o.marker_mask & marker_bit(MarkerType::Pierce)) != 0;
         draw_lod(t, (f.layer_mask & kAllKindsMask) | (pierces ? LodRaster::kPierceBit : 0));
@@ -393,7 +404,7 @@ void Renderer::update_image(const Frame& f) {
     const float s = f.scale;
     const SceneKey key{view.zoom, f.grid_step, f.world_origin, f.layer_mask, f.o.marker_mask, f.fb_w, f.fb_h, s,
                        view.area, f.path, f.path ? f.path->version : 0, markers_version_, lod_version_, f.lod,
-                       view.turns};
+                       view.rotation()};
     // Where the image's top-left corner is now: where it was, moved by the pan since (whole pixels).
     const Point moved = pan_px(view, s);
     const float left = cache_left_ + std::round(static_cast<float>(moved.x));
@@ -413,7 +424,7 @@ void Renderer::update_image(const Frame& f) {
         glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
         glClear(GL_COLOR_BUFFER_BIT);
         const Target& w = f.window;
-        const Target t{w.cx, w.cy, w.zoom, w.ox - cache_left_, w.oy - cache_top_, cache_w_, cache_h_, s, w.turns};
+        const Target t{w.cx, w.cy, w.zoom, w.ox - cache_left_, w.oy - cache_top_, cache_w_, cache_h_, s, w.rot};
         cache_limit_ = draw_scene(f, t, 0, true, kSegmentsPerFrame);
         cache_valid_ = true;
         ++stats_.full_redraws;
@@ -425,7 +436,7 @@ void Renderer::update_image(const Frame& f) {
         // The image's own mapping: its centre view (cache_cx_, cache_cy_) at the area's centre.
         const Target own{static_cast<float>(cache_cx_), static_cast<float>(cache_cy_), f.window.zoom,
                          static_cast<float>(view.ox() * s) - cache_left_, static_cast<float>(view.oy() * s) - cache_top_,
-                         cache_w_, cache_h_, s, f.window.turns};
+                         cache_w_, cache_h_, s, f.window.rot};
         const bool filling = cache_markers_pending_;
         cache_limit_ = draw_scene(f, own, cache_limit_, false, kSegmentsPerFrame);
         ++(filling ? stats_.filling_frames : stats_.partial_redraws);
@@ -468,7 +479,7 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
     glActiveTexture(GL_TEXTURE0);
     const float s = o.framebuffer_scale;
     const Target window{static_cast<float>(view.cx), static_cast<float>(view.cy), static_cast<float>(view.zoom * s),
-                        static_cast<float>(view.ox() * s), static_cast<float>(view.oy() * s), fb_w, fb_h, s, view.turns};
+                        static_cast<float>(view.ox() * s), static_cast<float>(view.oy() * s), fb_w, fb_h, s, view.rotation()};
     const std::size_t count = path ? path->count : 0;
     const float aw = view.area.w * s, ah = view.area.h * s;
     const Frame f{view, fb_w, fb_h, o, grid_step, world_origin, path, s, window, std::min(count, o.segment_limit),

@@ -91,7 +91,8 @@ public:
     // even the finest cells are at most kLodMaxCellPx).
     [[nodiscard]] int lod_level(double zoom_px_per_mm) const;
     static constexpr double kLodMaxCellPx = 1.0;
-    void draw(const View& view, int fb_w, int fb_h, const DrawOptions& options, double grid_step_mm, Point world_origin,
+    // `grid_origin`: the document origin in the shown coordinates (the grid lies along their axes, View::plate).
+    void draw(const View& view, int fb_w, int fb_h, const DrawOptions& options, double grid_step_mm, Point grid_origin,
               const GpuPath* path);
 
     [[nodiscard]] const RenderStats& stats() const { return stats_; }
@@ -104,7 +105,7 @@ private:
         float cx, cy, zoom, ox, oy;
         int w, h;
         float scale;
-        int turns;  // View::turns
+        Rotation rot;  // View::rotation()
     };
     // One draw() call: its arguments and what follows from them.
     struct Frame {
@@ -132,7 +133,7 @@ private:
         const GpuPath* path = nullptr;
         std::uint64_t path_version = 0, markers_version = 0, lod_version = 0;
         bool lod = false;
-        int turns = 0;
+        Rotation rot;
         bool operator==(const SceneKey&) const = default;
     };
     void add_page(GpuPath& path, std::size_t first, std::size_t rows);
@@ -142,6 +143,7 @@ private:
     // `budget` are drawn; returns where it stopped (`last` when it drew them all).
     std::size_t draw_segments(const GpuPath& path, std::size_t first, std::size_t last, const Target* cull = nullptr,
                               std::size_t budget = ~std::size_t(0));
+    [[nodiscard]] static Target grid_target(const Target& t, const View& view);
     void draw_grid(const Target& t, double grid_step, Point world_origin);
     void begin_paths(const Target& t, int layer_mask, const DrawOptions& o);
     [[nodiscard]] Point pan_px(const View& view, float s) const;

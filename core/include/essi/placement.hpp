@@ -42,9 +42,10 @@ public:
     [[nodiscard]] Box moved(const Box& program, Point tool_offset) const;
     [[nodiscard]] bool turns() const { return turns_; }
     [[nodiscard]] Point zero_offset() const { return zero_; }
+    // A program direction in machine axes: R(plate rotation) · v.
+    [[nodiscard]] Point turn(Point v) const { return {c_ * v.x - s_ * v.y, s_ * v.x + c_ * v.y}; }
 
 private:
-    [[nodiscard]] Point turn(Point v) const { return {c_ * v.x - s_ * v.y, s_ * v.x + c_ * v.y}; }
     Point zero_;
     double c_ = 1, s_ = 0;
     bool turns_ = false;

@@ -28,20 +28,26 @@ constexpr double kMinArrowPx = 1e-9;
 
 ImVec2 to_im(Point p) { return ImVec2(static_cast<float>(p.x), static_cast<float>(p.y)); }
 
-// Labels on the major grid lines along the bottom and left edges, and a scale bar of one major step.
-void grid_labels(ImDrawList* dl, const View& view, Point o) {
+// Labels on the major grid lines along the bottom and left edges, in the shown coordinates (the grid lies along
+// their axes: the screen shows them turned by quarter turns only), and a scale bar of one major step.
+void grid_labels(ImDrawList* dl, const View& view, const Coordinates& cs, Point o) {
     const Rect& a = view.area;
     const double step = grid_step(view.zoom) * 10;
-    const Point w0 = view.to_world(a.x, a.y + a.h), w1 = view.to_world(a.x + a.w, a.y);
     const int decimals = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step)));
     const auto label = [&](double v) { return fmt("%.*f", decimals, std::fabs(v) < step * kZeroLabelShare ? 0.0 : v); };
-    // The world axis along the screen's x (the bottom labels) and the one along its y (the left labels): x and y,
+    const auto shown = [&](double sx, double sy) {
+        const Point w = view.to_world(sx, sy);
+        return cs.shown({w.x + o.x, w.y + o.y});
+    };
+    const Point c0 = shown(a.x, a.y + a.h), c1 = shown(a.x + a.w, a.y);  // (opposite corners)
+    const double lo[2] = {std::min(c0.x, c1.x), std::min(c0.y, c1.y)};
+    const double hi[2] = {std::max(c0.x, c1.x), std::max(c0.y, c1.y)};
+    // The shown axis along the screen's x (the bottom labels) and the one along its y (the left labels): x and y,
     // or y and x when the view is turned a quarter (View::turns).
     const bool x_across = turned({1, 0}, view.turns).x != 0;
-    const double lo[2] = {std::min(w0.x, w1.x) + o.x, std::min(w0.y, w1.y) + o.y};
-    const double hi[2] = {std::max(w0.x, w1.x) + o.x, std::max(w0.y, w1.y) + o.y};
-    const auto at = [&](int axis, double v) {  // a point on the grid line `axis` = v, relative to the origin
-        return view.to_screen(axis == 0 ? Point{v - o.x, 0} : Point{0, v - o.y});
+    const auto at = [&](int axis, double v) {  // a point on the grid line `axis` = v
+        const Point p = cs.program(axis == 0 ? Point{v, lo[1]} : Point{lo[0], v});
+        return view.to_screen({p.x - o.x, p.y - o.y});
     };
     const int across = x_across ? 0 : 1, up = 1 - across;
     for (double g = std::ceil(lo[across] / step) * step; g <= hi[across]; g += step) {
@@ -86,7 +92,8 @@ void selection_arrows(ImDrawList* dl, const Document& doc, const Selection& sel,
     }
 }
 
-void measure_window(const Measure& m, Point b, const Rect& a) {
+// The measure's numbers in the shown coordinates (a and b: program mm).
+void measure_window(const Measure& m, Point b, const Coordinates& cs, const Rect& a) {
     ImGui::SetNextWindowPos(ImVec2(a.x + 10, a.y + 10));
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin("Measure", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
@@ -94,18 +101,19 @@ void measure_window(const Measure& m, Point b, const Rect& a) {
     if (m.points == 0) {
         ImGui::TextUnformatted("Click the first point (snaps to end points and arc centres).");
     } else {
-        const double dx = b.x - m.a.x, dy = b.y - m.a.y;
-        ImGui::Text("A (%.3f, %.3f)", m.a.x, m.a.y);
-        ImGui::Text("B (%.3f, %.3f)%s", b.x, b.y, m.points == 2 ? "" : "  (click to fix)");
+        const Point sa = cs.shown(m.a), sb = cs.shown(b);
+        const double dx = sb.x - sa.x, dy = sb.y - sa.y;
+        ImGui::Text("A (%.3f, %.3f)", sa.x, sa.y);
+        ImGui::Text("B (%.3f, %.3f)%s", sb.x, sb.y, m.points == 2 ? "" : "  (click to fix)");
         ImGui::Text("distance %.3f mm", std::hypot(dx, dy));
-        ImGui::Text("dx %.3f mm   dy %.3f mm", dx, dy);
+        ImGui::Text("dx %.3f mm   dy %.3f mm (%s coordinates)", dx, dy, cs.name());
     }
     ImGui::TextDisabled("Esc or M: leave the measure mode");
     ImGui::End();
 }
 
 // The snapped point under the mouse, the line from A to B (or to the mouse), and the numbers.
-void measure(ImDrawList* dl, const Document* doc, const Measure& m, const View& view, Point o) {
+void measure(ImDrawList* dl, const Document* doc, const Measure& m, const View& view, const Coordinates& cs, Point o) {
     const ImGuiIO& io = ImGui::GetIO();
     bool snapped = false;
     const Point hover = snap(doc, view, io.MousePos.x, io.MousePos.y, &snapped);
@@ -119,7 +127,7 @@ void measure(ImDrawList* dl, const Document* doc, const Measure& m, const View& 
         dl->AddCircleFilled(as, 3.5f, kMeasureColor);
         dl->AddCircleFilled(bs, 3.5f, kMeasureColor);
     }
-    measure_window(m, b, view.area);
+    measure_window(m, b, cs, view.area);
 }
 
 // The machine's table (the profile's `table`, docs/semantics.md §11) where it lies under the program: turned and
@@ -148,11 +156,12 @@ void overlays(App& app) {
     dl->PushClipRect(ImVec2(a.x, a.y), ImVec2(a.x + a.w, a.y + a.h), true);
     const Document* doc = app.document();
     const Point o = app.origin();
-    if (app.layers().grid) grid_labels(dl, view, o);
+    const Coordinates cs = app.coordinates();
+    if (app.layers().grid) grid_labels(dl, view, cs, o);
     if (doc && app.layers().table) table_and_plate(dl, *doc, view, o);
     const Selection& sel = app.selection();
     if (doc && (sel.motion != Selection::npos || sel.line > 0)) selection_arrows(dl, *doc, sel, view);
-    if (app.input().measure.active) measure(dl, doc, app.input().measure, view, o);
+    if (app.input().measure.active) measure(dl, doc, app.input().measure, view, cs, o);
     dl->PopClipRect();
 }
 

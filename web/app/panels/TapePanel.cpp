@@ -152,6 +152,10 @@ void playback(App& app) {
     const Motion& m = doc->motions[cur];
     ImGui::Text("line %u: %s %s", m.line, motion_kind_name(m.kind), curve_kind_name(m.curve));
     ImGui::Text("tools %s, %.0f mm/min", tools_text(m.tools).c_str(), doc->feed_of(cur));
+    const Playback::At at = p.at(n);
+    const Coordinates cs = app.coordinates();
+    const Point tool = cs.shown(point_at(doc->record(at.motion), at.fraction));
+    ImGui::Text("tool at (%.3f, %.3f), %s mm", tool.x, tool.y, cs.name());
     if (ImGui::SmallButton("show line")) app.select_line(m.line, false);
 }
 

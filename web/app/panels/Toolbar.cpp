@@ -53,6 +53,21 @@ void orientation_combo(App& app) {
         ImGui::SetTooltip("The machine's view: where the tape's x and y axes point on the screen (Woyda: x to the back, y left)");
 }
 
+// Program or machine coordinates (Coordinates): the numbers, the grid and the drawing's turn; kept across sessions.
+void coordinates_combo(App& app) {
+    static constexpr const char* kNames[2] = {"program coordinates", "machine coordinates"};
+    const int machine = app.machine_coordinates() ? 1 : 0;
+    ImGui::SetNextItemWidth(170);
+    if (ImGui::BeginCombo("##coordinates", kNames[machine])) {
+        for (int k = 0; k < 2; ++k)
+            if (ImGui::Selectable(kNames[k], k == machine) && k != machine) app.set_machine_coordinates(k == 1);
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Machine: the program placed on the table by the profile (zero offset, plate rotation); the grid, "
+                          "the measure and the labels in machine millimetres");
+}
+
 // Downloads: the tape as ESSI, EIA or G-code (essi convert) and its drawing as DXF.
 void export_menu(App& app) {
     if (ImGui::Button("Export...")) ImGui::OpenPopup("export");
@@ -100,6 +115,8 @@ void toolbar(App& app) {
     profile_combo(app);
     ImGui::SameLine();
     orientation_combo(app);
+    ImGui::SameLine();
+    coordinates_combo(app);
     ImGui::SameLine();
     if (const Document* doc = app.document()) verdict(*doc);
     const UiState& ui = app.ui();
