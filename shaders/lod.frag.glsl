@@ -25,10 +25,10 @@ void main() {
     // The pixel's footprint in cells: the box around the pixel turned back by the view's rotation (a pixel's
     // width along a cell's axes is |cos| + |sin| pixels; one pixel for quarter turns).
     vec2 r = vec2(px.x - u_origin_px.x, u_origin_px.y - px.y) / u_zoom;
-    vec2 m = (u_center + vec2(u_turn.x * r.x + u_turn.y * r.y, -u_turn.y * r.x + u_turn.x * r.y) - u_min) / u_cell;
+    vec2 at = (u_center + vec2(u_turn.x * r.x + u_turn.y * r.y, -u_turn.y * r.x + u_turn.x * r.y) - u_min) / u_cell;
     vec2 half_px = vec2(0.5 * (abs(u_turn.x) + abs(u_turn.y)) / (u_zoom * u_cell));
-    vec2 lo = m - half_px;
-    vec2 hi = m + half_px;
+    vec2 lo = at - half_px;
+    vec2 hi = at + half_px;
     ivec2 size = textureSize(u_lod, u_level);
     if (hi.x <= 0.0 || hi.y <= 0.0 || lo.x >= float(size.x) || lo.y >= float(size.y)) discard;
     ivec2 c0 = clamp(ivec2(floor(lo)), ivec2(0), size - 1);
