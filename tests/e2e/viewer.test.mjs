@@ -677,7 +677,9 @@ test('machine coordinates: the program turned and placed as it lies on the table
     const p = await page.evaluate(([x, y]) => essikit.project(x, y), mid);
     const hits = [];
     for (let dy = -1; dy <= 1; ++dy) for (let dx = -1; dx <= 1; ++dx) hits.push(at(p.x + dx, p.y + dy));
-    assert.ok(hits.some((c) => near(c, CUT_RGB)), `no cut colour at (${p.x}, ${p.y}): ${JSON.stringify(hits)}`);
+    // a slanted line a pixel wide is blended where it crosses a pixel: orange, red well above green and blue
+    const cutish = (c) => near(c, CUT_RGB) || (c[0] > c[2] + 80 && c[0] > c[1] + 30);
+    assert.ok(hits.some(cutish), `no cut colour at (${p.x}, ${p.y}): ${JSON.stringify(hits)}`);
   }
   // The measure in machine millimetres: the first cut's ends.
   await page.keyboard.press('m');
