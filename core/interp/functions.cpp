@@ -34,12 +34,40 @@ struct FunctionRow {
     std::string_view value_unit;
 };
 
+// One ESSI_ACTS_AS row of function_table.def.
+struct ActionRow {
+    int code;
+    Dialect dialect;
+    FunctionAction action;
+};
+
 constexpr FunctionRow kFunctionRows[] = {
 #define ESSI_FUNCTION(code, dialect, name, explanation, value, unit) \
     {code, Dialect::dialect, name, explanation, FunctionValue::value, unit},
+#define ESSI_ACTS_AS(code, dialect, action, action_value)
 #include "function_table.def"
+#undef ESSI_ACTS_AS
 #undef ESSI_FUNCTION
 };
+
+constexpr ActionRow kActionRows[] = {
+#define ESSI_FUNCTION(code, dialect, name, explanation, value, unit)
+#define ESSI_ACTS_AS(code, dialect, action, action_value) \
+    {code, Dialect::dialect, FunctionAction{action, action_value}},
+#include "function_table.def"
+#undef ESSI_ACTS_AS
+#undef ESSI_FUNCTION
+};
+
+// Dialects whose controls know only the codes of their own table (and refuse the others): ISO's rows are not
+// read for them.
+constexpr Dialect kCompleteTables[] = {Dialect::Hypertherm};
+
+bool has_complete_table(Dialect dialect) {
+    for (Dialect d : kCompleteTables)
+        if (d == dialect) return true;
+    return false;
+}
 
 FunctionInfo info_of(const FunctionRow& r) {
     FunctionInfo f = row(r.code, r.name, r.explanation);
@@ -79,14 +107,17 @@ struct RangeRow {
     FunctionValueRange range;
 };
 constexpr RangeRow kValueRanges[] = {
-    {fn::kFeed, {0, 100000, false}},             // mm/min (0: W209, the profile's feed)
-    {fn::kDwell, {0, 3600, false}},              // s
-    {fn::kKerfLeft, {0, 100, true}},             // mm
-    {fn::kKerfRight, {0, 100, true}},
-    {fn::kWoydaBurnerCount, {1, 32, false}},     // burners
-    {fn::kWoydaBurnerSpacing, {0, 100000, true}},  // mm
-    {fn::kPunchMarkingOffsetOn, {1, 6, false}},    // Hypertherm 11+n: marker 1-6
-    {fn::kToolOffsetOff, {1, 6, false}},
+    {fn::kFeed, {0, 100000, RangeUnit::AsWritten}},  // mm/min (0: W209, the profile's feed)
+    {fn::kDwell, {0, 3600, RangeUnit::Seconds}},  // s (the value times the profile's dwell_unit_s)
+    {fn::kKerfLeft, {0, 100, RangeUnit::Mm}},             // mm
+    {fn::kKerfRight, {0, 100, RangeUnit::Mm}},
+    {fn::kWoydaBurnerCount, {1, 32, RangeUnit::AsWritten}},     // burners
+    {fn::kWoydaBurnerSpacing, {0, 100000, RangeUnit::Mm}},  // mm
+    {fn::kHyperthermKerfValue, {0, 100, RangeUnit::Mm}},    // mm
+    {fn::kPunchMarkingOffsetOn, {1, 8, RangeUnit::AsWritten}},    // Hypertherm 11+n: marker 1-8
+    {fn::kToolOffsetOff, {1, 8, RangeUnit::AsWritten}},
+    {fn::kHyperthermGoHome, {1, 4, RangeUnit::AsWritten}},        // Hypertherm 79+n: home position 1-4
+    {fn::kHyperthermRepeatPointer, {1, 100000, RangeUnit::AsWritten}},  // Hypertherm 97+v: passes of a subroutine loop
 };
 
 }  // namespace
@@ -97,10 +128,21 @@ std::optional<FunctionValueRange> function_value_range(int code) {
     return std::nullopt;
 }
 
+std::optional<FunctionAction> function_action(int code, Dialect dialect) {
+    for (const ActionRow& r : kActionRows)
+        if (r.code == code && r.dialect == dialect) return r.action;
+    return std::nullopt;
+}
+
 std::optional<FunctionInfo> function_info(int code, Dialect dialect) {
     if (code < 0 || code >= fn::kCodeCount) return std::nullopt;
     if (dialect != Dialect::Iso6582) {
         if (const FunctionRow* r = find_row(code, dialect)) return info_of(*r);
+        if (has_complete_table(dialect)) {
+            FunctionInfo f = row(code, "Unknown", "not in this dialect's code table: its control refuses it");
+            f.assigned = false;
+            return f;
+        }
     }
     if (code > fn::kLastIsoCode) {
         FunctionInfo f = row(code, "Unknown", "not a function of ISO 6582 (0-115) or of this dialect");
@@ -127,7 +169,8 @@ std::string describe_function(int code, bool has_value, double value, const Prof
                 break;
             }
             case fn::kFeed: s += ", " + number_text(value) + " mm/min"; break;
-            case fn::kDwell: s += ", " + number_text(value) + " s"; break;
+            case fn::kDwell: s += ", " + number_text(value * profile.dwell_unit_s) + " s"; break;
+            case fn::kHyperthermKerfValue:  // (only a dialect that assigns 40 reads it)
             case fn::kWoydaBurnerSpacing: {
                 std::snprintf(buf, sizeof buf, ", %.4g mm", value * profile.unit_mm);
                 s += buf;

@@ -44,7 +44,7 @@ std::string mm_text(double v) {
 // The function table flattened to one byte of flags per code, once per dialect and process: half the blocks of a
 // tape are functions, and a short tape (a server request, a fuzz input) must not pay for searching the table.
 constexpr int kFunctionCodes = fn::kCodeCount;
-enum : std::uint8_t { kAssigned = 1, kManufacturer = 2, kTakesNoValue = 4, kNeedsValue = 8, kHasRange = 16 };
+enum : std::uint8_t { kAssigned = 1, kManufacturer = 2, kTakesNoValue = 4, kNeedsValue = 8, kHasRange = 16, kActsAs = 32 };
 using FunctionFlags = std::array<std::uint8_t, kFunctionCodes>;
 
 FunctionFlags flatten_functions(Dialect dialect) {
@@ -57,6 +57,7 @@ FunctionFlags flatten_functions(Dialect dialect) {
         if (info && info->value == FunctionValue::None) f |= kTakesNoValue;
         if (info && info->value == FunctionValue::Required) f |= kNeedsValue;
         if (function_value_range(code)) f |= kHasRange;
+        if (function_action(code, dialect)) f |= kActsAs;
         flags[code] = f;
     }
     return flags;
@@ -92,6 +93,7 @@ public:
         : source_(source), profile_(profile), sink_(sink), stats_(stats), also_(stats ? also : nullptr),
           diags_(diagnostics), function_flags_(function_flags_of(profile.dialect)) {
         feed_mm_min_ = profile_.feed_mm_min;
+        kerf_units_ = profile_.kerf_units;
         set_torches(1);
     }
 
@@ -100,6 +102,8 @@ public:
 
 private:
     void function(const Block& b, std::size_t index, bool has_value, double value);
+    void perform(const Block& b, int code, std::size_t index, bool has_value, double value);
+    [[gnu::noinline]] void act_as(const Block& b, std::size_t index, bool has_value, double value);
     [[gnu::noinline]] bool admit_function(const Block& b, bool& has_value, double value);
     bool value_in_range(const Block& b, double value);
     void set_kerf(const Block& b, KerfSide side, bool has_value, double value);
@@ -195,6 +199,7 @@ private:
     bool rapid_one_block_ = false;  // profile.rapid_single_block: 5 lasts one motion
     KerfSide kerf_ = KerfSide::Off;
     double kerf_offset_mm_ = 0;
+    double kerf_units_ = 0;  // what 29/30 without a value use: the profile's kerf, or Hypertherm's 40+v
     double feed_mm_min_ = 0;
     bool three_axis_ = false;
     bool skipping_ = false;          // inside 100 ... 101 with optional ignore on
@@ -392,14 +397,18 @@ bool Machine::admit_function(const Block& b, bool& has_value, double value) {
 bool Machine::value_in_range(const Block& b, double value) {
     const auto range = function_value_range(b.code);
     if (!range) return true;
-    const double scale = range->in_mm ? profile_.unit_mm : 1.0;
+    const double scale = range->unit == RangeUnit::Mm        ? profile_.unit_mm
+                         : range->unit == RangeUnit::Seconds ? profile_.dwell_unit_s
+                                                             : 1.0;
     if (value * scale >= range->min && value * scale <= range->max) return true;
     const auto info = function_info(b.code, profile_.dialect);
+    const std::string scaled_unit = range->unit == RangeUnit::Mm ? "mm" : "s";
+    const std::string per_unit = range->unit == RangeUnit::Mm ? " mm a unit" : " s a unit";
     warn(DiagCode::E216_FunctionValueRange, b,
          "the value " + number_text(value) + " of machine function " + std::to_string(b.code) + " (" + function_name(b.code) +
              ") is outside " + number_text(range->min) + " to " + number_text(range->max) + " " +
-             (range->in_mm ? std::string("mm") : std::string(info ? info->value_unit : "")) +
-             (range->in_mm ? " (" + number_text(value * scale) + " mm at " + number_text(profile_.unit_mm) + " mm a unit)" : "") +
+             (range->unit != RangeUnit::AsWritten ? scaled_unit : std::string(info ? info->value_unit : "")) +
+             (scale != 1.0 ? " (" + number_text(value * scale) + " " + scaled_unit + " at " + number_text(scale) + per_unit + ")" : "") +
              "; the block is ignored");
     return false;
 }
@@ -417,7 +426,7 @@ void Machine::set_kerf(const Block& b, KerfSide side, bool has_value, double val
         kerf_offset_mm_ = 0;
         return;
     }
-    const double units = has_value ? value : profile_.kerf_units;
+    const double units = has_value ? value : kerf_units_;
     const double mm = units * profile_.unit_mm;
     kerf_offset_mm_ = profile_.kerf_value == KerfValueMeaning::Width ? mm / 2 : mm;
 }
@@ -464,12 +473,34 @@ void Machine::warn_macro_only(const Block& b) {
 // Inlined into run(): half the blocks of a tape are functions (a call and its frame cost more than most of them).
 [[gnu::always_inline]] inline void Machine::function(const Block& b, std::size_t index, bool has_value, double value) {
     const int code = b.code;
-    // One test for the common case: nothing pending, an assigned function with a value only if it takes one.
-    const std::uint8_t refused = kManufacturer | (has_value ? kTakesNoValue : kNeedsValue);
+    // One test for the common case: nothing pending, an assigned function with a value only if it takes one, that
+    // means in this dialect what it means in ISO.
+    const std::uint8_t refused = kManufacturer | kActsAs | (has_value ? kTakesNoValue : kNeedsValue);
     if (zero_offset_pending_ || (function_flags(code) & (kAssigned | refused)) != kAssigned) [[unlikely]] {
         if (!admit_function(b, has_value, value)) return;
+        if (function_flags(code) & kActsAs) return act_as(b, index, has_value, value);
     }
     if (has_value && (function_flags(code) & kHasRange) && !value_in_range(b, value)) [[unlikely]] return;
+    perform(b, code, index, has_value, value);
+}
+
+// A dialect's code that stands for another (function_table.def, ESSI_ACTS_AS: Hypertherm's 53 is ISO's 7): it
+// runs as that code with its value, and its event carries that code (an action of its own keeps the block's).
+void Machine::act_as(const Block& b, std::size_t index, bool has_value, double value) {
+    const FunctionAction a = *function_action(b.code, profile_.dialect);
+    Block acted = b;
+    if (a.action < fn::kFirstAction) acted.code = static_cast<std::uint16_t>(a.action);
+    if (a.fixed_value >= 0) {
+        has_value = true;
+        value = a.fixed_value;
+    }
+    if (has_value && function_value_range(a.action) && !value_in_range(acted, value)) return;
+    perform(acted, a.action, index, has_value, value);
+}
+
+// What a function does to the machine, and its event.
+[[gnu::always_inline]] inline void Machine::perform(const Block& b, int code, std::size_t index, bool has_value,
+                                                    double value) {
     double event_value = value;
     EventKind kind = EventKind::Function;
     const auto tool = [&](std::uint8_t bit, bool on) { set_tools(on ? (tools_ | bit) : (tools_ & ~bit)); };
@@ -502,7 +533,7 @@ void Machine::warn_macro_only(const Block& b) {
             break;
         case fn::kDwell:
             kind = EventKind::Dwell;
-            event_value = has_value ? value : profile_.default_dwell_s;
+            event_value = has_value ? value * profile_.dwell_unit_s : profile_.default_dwell_s;
             has_value = true;
             break;
         case fn::kWoydaOxygenOff: tool(kToolOxygen, false); break;  // (the preheat stays)
@@ -511,6 +542,12 @@ void Machine::warn_macro_only(const Block& b) {
         case fn::kPunchMarkingOffsetOn:
         case fn::kLineMarkingOffsetOn:
         case fn::kToolOffsetOff: select_tool_offset(b, code); break;
+        case fn::kResetFunctions:  // (Hypertherm 63)
+            set_tools(0);
+            set_kerf_side(KerfSide::Off);
+            kerf_offset_mm_ = 0;
+            break;
+        case fn::kHyperthermKerfValue: kerf_units_ = value; break;
         case fn::kCancelFunctions:
         case fn::kEndOfTape:  // not an end code in this profile: cancels the stored functions (ISO Annex B)
             select_tool_offset(b, code);

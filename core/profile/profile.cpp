@@ -73,6 +73,8 @@ std::string eia_word_text(const EiaWord& w) {
 }
 
 // The "eia" object of a profile (docs/semantics.md §10); keys absent keep their values.
+constexpr long long kMaxEiaCodeValue = 9999;  // the value an EIA word stands for (4 digits, as ESSI's values)
+
 void apply_eia_keys(const json& j, EiaDialect& e, std::vector<std::string>& errors) {
     if (!j.is_object()) {
         errors.push_back("\"eia\" must be an object (letters, codes, dwell_unit_s ...)");
@@ -135,17 +137,23 @@ void apply_eia_keys(const json& j, EiaDialect& e, std::vector<std::string>& erro
         bool ok = it->is_array();
         if (ok)
             for (const auto& row : *it) {
-                const bool pair = row.is_array() && row.size() == 2 && row[1].is_number_integer() &&
-                                  row[1].get<long long>() >= 0 && row[1].get<long long>() < fn::kCodeCount;
+                const auto whole = [&](std::size_t k, long long below) {
+                    return row[k].is_number_integer() && row[k].get<long long>() >= 0 && row[k].get<long long>() < below;
+                };
+                const bool pair = row.is_array() && (row.size() == 2 || row.size() == 3) && whole(1, fn::kCodeCount) &&
+                                  (row.size() == 2 || whole(2, kMaxEiaCodeValue + 1));
                 auto word = pair ? parse_eia_word(row[0]) : std::nullopt;
                 if (!word || (word->letter != 'G' && word->letter != 'M')) {
                     ok = false;
                     break;
                 }
-                codes.push_back({*word, static_cast<int>(row[1].get<long long>())});
+                codes.push_back({*word, static_cast<int>(row[1].get<long long>()),
+                                 row.size() == 3 ? static_cast<int>(row[2].get<long long>()) : -1});
             }
         if (ok) e.codes = std::move(codes);
-        else fail("codes", "an array of [word, function] pairs such as [[\"M70\", 7], [\"G91\", 81]]");
+        else fail("codes", "an array of [word, function] pairs such as [[\"M70\", 7], [\"G91\", 81]], or [word, "
+                           "function, value] for a word that stands for a function with its value ([\"M275\", 11, 3]; "
+                           "a value 0-9999)");
     }
     static constexpr const char* kKnownEiaKeys[] = {"letters", "strict_order", "one_function_per_block",
                                                     "rapid_motion", "position_preset", "dwell_letter",
@@ -161,7 +169,9 @@ ordered_json eia_to_json(const EiaDialect& e) {
     ordered_json words_inch = ordered_json::array(), words_mm = ordered_json::array(), codes = ordered_json::array();
     for (const auto& w : e.inch_words) words_inch.push_back(eia_word_text(w));
     for (const auto& w : e.mm_words) words_mm.push_back(eia_word_text(w));
-    for (const auto& c : e.codes) codes.push_back(ordered_json::array({eia_word_text(c.word), c.function}));
+    for (const auto& c : e.codes)
+        codes.push_back(c.value < 0 ? ordered_json::array({eia_word_text(c.word), c.function})
+                                    : ordered_json::array({eia_word_text(c.word), c.function, c.value}));
     const auto g_or_null = [](int g) { return g < 0 ? ordered_json(nullptr) : ordered_json(eia_word_text({'G', g})); };
     return {{"letters", e.letters},
             {"strict_order", e.strict_order},
@@ -185,6 +195,7 @@ constexpr Range kUnitRange{1e-9, 1000};             // mm per unit increment
 constexpr Range kUnitsRange{0, 1e9};                // tolerances and kerf, in unit increments
 constexpr Range kChordRange{1e-6, 1000};            // mm
 constexpr Range kSecondsRange{0, 1e6};              // dwell and pierce time, s
+constexpr Range kDwellUnitRange{1e-6, 3600};        // s: the unit of a dwell's value (0.001: milliseconds)
 constexpr Range kSpeedRange{1e-9, 1e9};             // mm/min
 constexpr Range kPositionRange{-1e9, 1e9};          // mm: offsets and table limits
 constexpr Range kRotationRange{-360, 360};          // degrees
@@ -365,6 +376,7 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
     choice("kerf_value", p.kerf_value, {{"width", KerfValueMeaning::Width}, {"offset", KerfValueMeaning::Offset}});
     number("kerf", p.kerf_units, kUnitsRange);
     number("default_dwell_s", p.default_dwell_s, kSecondsRange);
+    number("dwell_unit_s", p.dwell_unit_s, kDwellUnitRange);
     number("feed_mm_min", p.feed_mm_min, kSpeedRange);
     number("rapid_mm_min", p.rapid_mm_min, kSpeedRange);
     number("pierce_time_s", p.pierce_time_s, kSecondsRange);
@@ -401,7 +413,7 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
     static constexpr const char* kKnownKeys[] = {
         "name", "base", "dialect", "unit_mm", "whitespace", "end_codes", "end_at_data_end", "arc_tolerance",
         "chord_tolerance_mm", "torch_direction",
-        "optional_ignore", "rapid_single_block", "kerf_value", "kerf", "default_dwell_s", "feed_mm_min",
+        "optional_ignore", "rapid_single_block", "kerf_value", "kerf", "default_dwell_s", "dwell_unit_s", "feed_mm_min",
         "rapid_mm_min", "pierce_time_s", "setup_offset_x_mm", "setup_offset_y_mm", "zero_offsets", "zero_offset",
         "plate_rotation_deg", "tool_offsets", "table", "eia"};
     for (auto it = j.begin(); it != j.end(); ++it) {
@@ -516,6 +528,7 @@ std::string profile_to_json(const Profile& p) {
     j["kerf_value"] = p.kerf_value == KerfValueMeaning::Offset ? "offset" : "width";
     j["kerf"] = p.kerf_units;
     j["default_dwell_s"] = p.default_dwell_s;
+    j["dwell_unit_s"] = p.dwell_unit_s;
     j["feed_mm_min"] = p.feed_mm_min;
     j["rapid_mm_min"] = p.rapid_mm_min;
     j["pierce_time_s"] = p.pierce_time_s;

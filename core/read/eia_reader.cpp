@@ -43,6 +43,12 @@ constexpr std::array<long long, kMaxNumberDigits + 1> make_powers() {
 }
 constexpr std::array<long long, kMaxNumberDigits + 1> kPowersOfTen = make_powers();
 
+// The letters the reader gives a meaning to: the rest of a dialect's letters (Hypertherm's T of `M36 T1`, the D
+// of `G41 D5`) are read and ignored with W124.
+bool reads_letter(char letter, const EiaDialect& e) {
+    return letter == 'N' || letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == e.dwell_letter;
+}
+
 // One address word: its letter, where it starts, and its number as written (mantissa x 10^-decimals).
 struct Word {
     char letter = 0;
@@ -136,6 +142,10 @@ private:
     [[nodiscard]] int function_of(char letter, int number) const {
         return (letter == 'G' ? g_function_ : m_function_)[static_cast<std::size_t>(number)];
     }
+    // The value the word stands for with its function (Hypertherm M275 = 11+3), or -1.
+    [[nodiscard]] int value_of(char letter, int number) const {
+        return (letter == 'G' ? g_value_ : m_value_)[static_cast<std::size_t>(number)];
+    }
     void function(std::uint32_t offset, int code, LineResult& out) const;
     void function_value(std::uint32_t offset, int code, double value, LineResult& out) const;
     void commit(const LineResult& r);
@@ -162,7 +172,7 @@ private:
     std::string_view src_;
     const Profile& profile_;
     // The dialect's words by number (make_tables): the function of each G and M, the role of each G.
-    std::array<std::int16_t, kMaxCodeNumber + 1> g_function_{}, m_function_{};
+    std::array<std::int16_t, kMaxCodeNumber + 1> g_function_{}, m_function_{}, g_value_{}, m_value_{};
     std::array<GRole, kMaxCodeNumber + 1> g_role_{};
     int unit_decimals_ = -1;            // unit_mm = 10^-unit_decimals_ (0-9), or -1 (another unit: in doubles)
     std::array<std::int8_t, 256> letter_rank_{};  // a letter's place in eia.letters, -1 when not allowed
@@ -321,12 +331,15 @@ void EiaReader::make_tables() {
         letter_rank_[static_cast<unsigned char>(profile_.eia.letters[k])] = static_cast<std::int8_t>(k);
     g_function_.fill(-1);
     m_function_.fill(-1);
+    g_value_.fill(-1);
+    m_value_.fill(-1);
     g_role_.fill(GRole::None);
     const EiaDialect& e = profile_.eia;
     for (auto it = e.codes.rbegin(); it != e.codes.rend(); ++it) {  // (the first row of a word wins)
         if (it->word.number < 0 || it->word.number > kMaxCodeNumber) continue;
         const auto n = static_cast<std::size_t>(it->word.number);
         (it->word.letter == 'G' ? g_function_ : m_function_)[n] = static_cast<std::int16_t>(it->function);
+        (it->word.letter == 'G' ? g_value_ : m_value_)[n] = static_cast<std::int16_t>(it->value);
         if (it->word.letter == 'G') g_role_[n] = GRole::Function;
     }
     for (const EiaWord& w : e.inch_words)
@@ -466,7 +479,11 @@ void EiaReader::translate(const std::vector<Word>& words, LineResult& out, State
             function_value(w.offset, fn::kFeed, w.value() * (st.inch ? kMmPerInch : 1.0), out);
             continue;
         }
-        if (w.letter != 'G' && w.letter != 'M') continue;
+        if (w.letter != 'G' && w.letter != 'M') {
+            if (!reads_letter(w.letter, e))
+                unknown(w, std::string(1, w.letter) + number_text(w.value()) + " is not read by essikit (no path, tool or time of its own); it is ignored");
+            continue;
+        }
         const int n = w.code_number();
         if (n < 0) {
             unknown(w, std::string(1, w.letter) + excerpt(src_.substr(w.offset + 1, 8), 8) + " is not a " + w.letter +
@@ -499,6 +516,8 @@ void EiaReader::translate(const std::vector<Word>& words, LineResult& out, State
                     const int k = after_code[0] < 0 ? 0 : 1;
                     after_code[k] = f;
                     after_offset[k] = w.offset;
+                } else if (const int v = value_of(w.letter, n); v >= 0) {
+                    function_value(w.offset, f, v, out);
                 } else {
                     if (f == fn::kAbsolute) st.absolute = true;
                     if (f == fn::kIncremental) st.absolute = false;
@@ -518,7 +537,8 @@ void EiaReader::translate(const std::vector<Word>& words, LineResult& out, State
         else if (w.letter == 'J') axes.j = &w;
     }
     if (dwell) {
-        if (dwell_time) function_value(dwell->offset, fn::kDwell, dwell_time->value() * e.dwell_unit_s, out);
+        // (seconds, written in the unit of ESSI's 41+v: the profile's dwell_unit_s)
+        if (dwell_time) function_value(dwell->offset, fn::kDwell, dwell_time->value() * e.dwell_unit_s / profile_.dwell_unit_s, out);
         else function(dwell->offset, fn::kDwell, out);  // the profile's dwell
     }
     if (axes.x || axes.y || axes.i || axes.j) motion(axes, preset, out, st);

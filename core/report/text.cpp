@@ -70,7 +70,7 @@ std::string display_text(std::string_view s) {
 
 std::string number_text(double v) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
+    std::snprintf(buf, sizeof buf, "%.10g", v);  // (a value of a tape, 3600001, is not 3.6e+06)
     return buf;
 }
 

@@ -47,6 +47,7 @@ private:
         // Values in unit increments go to the target's unit; ESSI values are whole numbers.
         double v = e.value;
         if (info->value_unit == "unit increments") v = v * source_.unit_mm / options_.target.unit_mm;
+        if (e.code == fn::kDwell) v = e.value / options_.target.dwell_unit_s;  // (the event's dwell is in seconds)
         const double whole = std::round(v);
         if (std::fabs(whole - v) > 1e-9 || whole < 0) {
             warn(DiagCode::W504_ValueNotWritten, e.line,

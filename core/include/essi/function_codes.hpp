@@ -30,6 +30,7 @@ enum Code : int {
     kKerfLeft = 29,
     kKerfRight = 30,
     kKerfOff = 38,
+    kHyperthermKerfValue = 40,  // Hypertherm: 40+v, the kerf 29/30 use without a value
     kFeed = 39,
     kDwell = 41,
     kWoydaOxygenOff = 43,  // Woyda: cutting oxygen off, the preheat stays on
@@ -40,9 +41,11 @@ enum Code : int {
     kEndOfTape = 64,
     kWoydaLoopEnd = 67,      // Woyda macro files only
     kWoydaLoopStart = 68,
+    kHyperthermGoHome = 79,  // Hypertherm: 79+n, home position n
     kIncremental = 81,
     kAbsolute = 82,
     kZeroOffset = 83,
+    kHyperthermRepeatPointer = 97,  // Hypertherm: where 98 repeats from; 97+v a loop of v passes
     kOptionalIgnoreOn = 100,
     kOptionalIgnoreOff = 101,
     kOptionalStop = 102,
@@ -54,6 +57,10 @@ enum Code : int {
     kToolFiveOffsetOn = 115,
     kWoydaBurnerCount = 135,
     kWoydaBurnerSpacing = 136,
+    // Actions a dialect's code can stand for that no ISO code has (ESSI_ACTS_AS in function_table.def); never
+    // read from a tape, never in an event.
+    kFirstAction = 1000,
+    kResetFunctions = kFirstAction,  // Hypertherm 63 (M31): cutting and marking tools off, kerf off
 };
 
 // The highest function code of ISO 6582 Annex B; and the codes a block can hold (at most 3 digits, ISO 3.4.1).

@@ -27,13 +27,22 @@ struct FunctionInfo {
     bool drawing_machine = false;  // 70-74, 76-79, 84-86, 89-90, 93-98: for drawing machines
 };
 
-// The values a function with a value allows, in the unit it is written in (mm/min, s, unit increments, count):
-// beyond them a value is an error (E216). `in_mm`: the range is in mm and the value in unit increments.
+// The values a function with a value allows (E216 beyond them), in the unit of `unit`: as written (mm/min,
+// count), mm (the value is in unit increments: times unit_mm), or seconds (times the profile's dwell_unit_s).
+enum class RangeUnit : std::uint8_t { AsWritten, Mm, Seconds };
 struct FunctionValueRange {
     double min = 0, max = 0;
-    bool in_mm = false;
+    RangeUnit unit = RangeUnit::AsWritten;
 };
 [[nodiscard]] std::optional<FunctionValueRange> function_value_range(int code);
+
+// What a dialect's code does in ISO terms (ESSI_ACTS_AS in function_table.def): Hypertherm's 53 is ISO's 7.
+struct FunctionAction {
+    int action = 0;          // the ISO code it acts as, or an action of its own (>= fn::kFirstAction)
+    int fixed_value = -1;    // >= 0: the value it acts with (Hypertherm 15 = 11+2); else its own value
+};
+// nullopt: the code means in `dialect` what it means in ISO 6582 (or nothing).
+[[nodiscard]] std::optional<FunctionAction> function_action(int code, Dialect dialect);
 
 // The meaning of `code` in `dialect`; nullopt for codes beyond the table (> 999 cannot be read anyway).
 [[nodiscard]] std::optional<FunctionInfo> function_info(int code, Dialect dialect);

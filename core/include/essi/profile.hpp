@@ -38,6 +38,7 @@ struct EiaWord {
 struct EiaCode {
     EiaWord word;
     int function = 0;
+    int value = -1;  // >= 0: the function's value the word stands for (Hypertherm M275 = 11+3)
     friend bool operator==(const EiaCode&, const EiaCode&) = default;
 };
 
@@ -81,6 +82,7 @@ struct Profile {
     KerfValueMeaning kerf_value = KerfValueMeaning::Width;
     double kerf_units = 20.0;                   // kerf used by 29/30 without a value, in unit increments
     double default_dwell_s = 1.0;               // 41 without a value
+    double dwell_unit_s = 1.0;                  // the unit of 41+v in seconds (Hypertherm: 0.001, milliseconds)
 
     // Time estimate (§9)
     double feed_mm_min = 1000.0;                // cutting feed when the tape gives none (39+v)
