@@ -6,14 +6,14 @@
 // `/#share=ID&c=...&l=...&n=NAME`; opening such a link fetches GET /api/share/ID. Without the server (any static
 // host) nothing changes: the inline script puts the compressed tape in the URL fragment as before.
 (function () {
-  const LINK_BYTES = 1 << 20;  // above this, a tape goes to the store (its URL would be hundreds of KB or more)
+  const LINK_BYTES = 32 << 10;  // above this, a tape goes to the store (its link would be tens of KB or more)
   let server = null;           // {max_body, ...} once /api/health answered
   const health = fetch('api/health', { cache: 'no-store' })
     .then((r) => (r.ok ? r.json() : null))
     .then((j) => { server = j && j.ok ? j : null; return server; })
     .catch(() => null);
 
-  const useStore = (len) => !!server && len > LINK_BYTES && len <= server.max_body;
+  const useStore = (len) => !!server && len > LINK_BYTES;
 
   async function upload(name, bytes, query) {
     const res = await fetch('api/share', { method: 'POST', body: bytes, headers: { 'Content-Type': 'application/octet-stream' } });
@@ -28,6 +28,11 @@
   const inlineLink = window.essikitMakeLink;
   window.essikitMakeLink = async function (name, bytes, query) {
     if (!useStore(bytes.length)) return inlineLink(name, bytes, query);
+    if (bytes.length > server.max_body) {
+      throw new Error('This tape (' + (bytes.length / 1048576).toFixed(1) + ' MB) is larger than this server\'s ' +
+                      'share store takes (' + (server.max_body / 1048576).toFixed(0) + ' MB, essi serve --max-body); ' +
+                      'send the file instead.');
+    }
     try {
       return await upload(name, bytes, query);
     } catch (e) {
@@ -44,14 +49,23 @@
     await api.ready;
     try {
       const link = window.essikitParseShare(location.hash);  // (the core's reading of the fragment)
-      if (!link.share) throw new Error(link.problems.join('; ') || 'no share id in the link');
-      const res = await fetch('api/share/' + link.share);
-      if (!res.ok) throw new Error((await res.json().catch(() => ({}))).error || ('HTTP ' + res.status));
-      await api.load(link.name || 'shared.esi', new Uint8Array(await res.arrayBuffer()));
+      if (!link.share) throw new Error('This share link is cut off or damaged: ' + (link.problems.join('; ') || 'it names no stored tape'));
+      let res;
+      try {
+        res = await fetch('api/share/' + link.share);
+      } catch (e) {
+        throw new Error('The share store of this link does not answer (' + e.message + '); is essi serve running?');
+      }
+      if (!res.ok) {
+        const why = (await res.json().catch(() => ({}))).error || ('HTTP ' + res.status);
+        throw new Error(res.status === 404 ? 'The tape of this link is no longer stored (shares expire): ' + why
+                                           : 'The share store could not give the tape of this link: ' + why);
+      }
+      window.essikitLoadShared(link.name || 'shared.esi', new Uint8Array(await res.arrayBuffer()));
+      await api.idle();
       window.essikitApplyShareView(link);
     } catch (e) {
-      console.warn('share link: ' + e.message);
-      await api.load('broken-link.txt', new Uint8Array(0));
+      window.essikitLinkProblem(e.message);
     }
   }
   let lastShared = '';

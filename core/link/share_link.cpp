@@ -116,6 +116,17 @@ void read_field(std::string_view key, const std::string& value, ShareLink& link)
     } else if (key == "p") {
         if (is_profile_name(value)) link.profile = value;
         else problem("expected a profile name");
+    } else if (key == "pj") {
+        auto bytes = base64url_decode(value);
+        if (bytes && !bytes->empty() && bytes->size() <= kMaxShareProfileBytes) link.profile_json = std::move(*bytes);
+        else problem("expected a profile's JSON as base64url, at most " + std::to_string(kMaxShareProfileBytes) + " bytes");
+    } else if (key == "i") {
+        if (value == "essi" || value == "eia") link.input = value;
+        else problem("expected essi or eia");
+    } else if (key == "b") {
+        const auto n = parse_number(value);
+        if (n && *n >= 0 && *n <= 1e15 && *n == std::floor(*n)) link.tape_bytes = static_cast<std::uint64_t>(*n);
+        else problem("expected the tape's length in bytes");
     }
 }
 
@@ -148,6 +159,13 @@ std::string share_view_query(const ShareView& view, std::uint32_t line) {
     char buf[128];
     std::snprintf(buf, sizeof buf, "c=%.6g,%.6g,%.6g&l=%u", view.x, view.y, view.zoom, line);
     return buf;
+}
+
+std::string share_reading_query(std::string_view profile, std::string_view profile_json, std::string_view input) {
+    std::string q = "p=" + std::string(profile);  // (profile names need no escaping: letters, digits, _ . + -)
+    if (!profile_json.empty()) q += "&pj=" + base64url_encode(profile_json);
+    if (!input.empty()) q += "&i=" + std::string(input);
+    return q;
 }
 
 std::string base64url_encode(std::string_view bytes) {

@@ -247,6 +247,74 @@ test('a share link restores the tape, the view and the selection', async () => {
   await page.close();
 });
 
+// Opens `url` in a fresh page and waits for its tape, or for the problem it has.
+async function openLink(url) {
+  const other = await browser.newPage({ viewport: { width: 1600, height: 900 } });
+  await other.goto(url);
+  await other.waitForFunction(() => window.essikit && essikit.started &&
+                                    (essikit.state().status === 'ready' || essikit.state().link_problem), null, { timeout: 30000 });
+  return other;
+}
+
+test('a share link carries the profile and the format: the receiver sees the sender\'s verdict', async () => {
+  const page = await newPage();
+  // woyda_end_slash read as iso6582 on purpose: its / is E101 there (auto would pick woyda)
+  await loadExample(page, 'woyda_end_slash.esi');
+  const sent = await page.evaluate(() => essikit.setProfile('iso6582'));
+  assert.equal(sent.profile, 'iso6582');
+  assert.ok(sent.diagnostics.length > 0);
+  const url = await page.evaluate(() => essikit.shareLink());
+  assert.match(url, /&p=iso6582&i=essi&n=woyda_end_slash\.esi&b=\d+&t=/);
+  const other = await openLink(url);
+  const got = await other.evaluate(() => essikit.state());
+  assert.equal(got.profile, 'iso6582');
+  assert.equal(got.input, 'essi');
+  assert.deepEqual(got.diagnostics, sent.diagnostics);
+  assert.deepEqual(got.stats, sent.stats);
+  await other.close();
+  // A user profile travels in the link as its JSON: the placement on the machine is the sender's.
+  await dropProfile(page, 'skewed_plate.profile.json', fs.readFileSync(path.join(examplesDir, 'skewed_plate.profile.json')));
+  const { state } = await loadExample(page, 'skewed_plate.esi');
+  assert.equal(state.profile, 'skewed-plate');
+  const url2 = await page.evaluate(() => essikit.shareLink());
+  assert.match(url2, /&p=skewed-plate&pj=[A-Za-z0-9_-]+&i=essi&/);
+  const other2 = await openLink(url2);
+  const got2 = await other2.evaluate(() => essikit.state());
+  assert.equal(got2.profile, 'skewed-plate');
+  assert.deepEqual(got2.stats, state.stats);
+  assert.ok(got2.stats.machine_cut_bbox_mm, JSON.stringify(got2.stats));
+  await other2.close();
+  await page.close();
+});
+
+test('a share link cut off or damaged says so; a new tape takes the link out of the address', async () => {
+  const page = await newPage();
+  await loadExample(page, 'plate_holes.esi');
+  const url = await page.evaluate(() => essikit.shareLink());
+  // cut in the tape's data (as a mail program may do): the length before it tells
+  const cut = await openLink(url.slice(0, url.length - 30));
+  const problem = (await cut.evaluate(() => essikit.state())).link_problem;
+  assert.match(problem, /cut off or damaged/);
+  assert.equal((await cut.evaluate(() => essikit.state())).status, 'empty');
+  await cut.screenshot({ path: path.join(shots, 'share-link-cut.png') });
+  await cut.close();
+  // damaged data: not deflate
+  const damaged = await openLink(url.replace(/&t=.*$/, '&t=AAAAAAAA'));
+  assert.match((await damaged.evaluate(() => essikit.state())).link_problem, /cut off or damaged/);
+  await damaged.close();
+  // The address holds the shared tape's link; another tape loaded takes it out, and sharing that one puts its
+  // own in: a reload shows the tape the address names.
+  assert.ok(await page.evaluate(() => location.hash.includes('&t=')));
+  await loadExample(page, 'arcs_both_senses.esi');
+  assert.equal(await page.evaluate(() => location.hash), '');
+  const url2 = await page.evaluate(() => essikit.shareLink());
+  assert.equal(await page.evaluate(() => location.href), url2);
+  await page.reload();
+  await page.waitForFunction(() => window.essikit && essikit.started && essikit.state().status === 'ready', null, { timeout: 30000 });
+  assert.equal((await page.evaluate(() => essikit.state())).name, 'arcs_both_senses.esi');
+  await page.close();
+});
+
 test('clicking a segment selects its source line, and a line selects its segment', async () => {
   const page = await newPage();
   const text = fs.readFileSync(path.join(examplesDir, 'plate_holes.esi'), 'utf8');
@@ -720,7 +788,7 @@ test('a share link for a tape too large for a URL says so', async () => {
     await essikit.load(n, bytes);
   }, name);
   const err = await page.evaluate(() => essikit.shareLink().then(() => 'ok', (e) => e.message));
-  assert.match(err, /too large for a link/);
+  assert.match(err, /too large for a link .* and no essi serve share store answers/);
   assert.match((await page.evaluate(() => essikit.state())).share_url, /too large/);
   await page.close();
 });

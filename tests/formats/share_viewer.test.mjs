@@ -30,7 +30,7 @@ test('share button: a big tape goes to /api/share and the /#share=ID link opens 
     assert.equal(state.bytes, tape.length);
     const link = await page.evaluate(() => window.essikit.shareLink());
     const id = crypto.createHash('sha256').update(tape).digest('hex');
-    assert.match(link, new RegExp(`^${url}/#share=${id}&c=[^&]+&l=\\d+&n=big\\.esi$`));
+    assert.match(link, new RegExp(`^${url}/#share=${id}&c=[^&]+&l=\\d+&p=auto&i=essi&n=big\\.esi$`));
     // The server has the tape byte for byte.
     const stored = await (await fetch(`${url}/api/share/${id}`)).text();
     assert.equal(stored, tape);

@@ -81,3 +81,35 @@ TEST(ShareLink, ViewQueryReadsBack) {
     EXPECT_DOUBLE_EQ(l.view->x, 1234.5);
     EXPECT_EQ(l.line, 42u);
 }
+
+TEST(ShareLink, CarriesHowTheTapeWasRead) {
+    const std::string profile = R"({"name": "my-shop", "base": "woyda", "unit_mm": 0.01})";
+    const std::string query = share_reading_query("my-shop", profile, "eia");
+    EXPECT_EQ(query.rfind("p=my-shop&pj=", 0), 0u) << query;
+    const ShareLink l = parse_share_fragment("c=1,2,3&l=0&" + query + "&n=a.eia&b=1234&t=" + base64url_encode("x"));
+    EXPECT_TRUE(l.problems.empty()) << l.problems.front();
+    EXPECT_EQ(l.profile, "my-shop");
+    EXPECT_EQ(l.profile_json, profile);
+    EXPECT_EQ(l.input, "eia");
+    ASSERT_TRUE(l.tape_bytes.has_value());
+    EXPECT_EQ(*l.tape_bytes, 1234u);
+    // a built-in profile, the format from the content: p only
+    EXPECT_EQ(share_reading_query("auto", "", ""), "p=auto");
+    const ShareLink plain = parse_share_fragment("p=auto&t=eA");
+    EXPECT_EQ(plain.profile, "auto");
+    EXPECT_TRUE(plain.profile_json.empty());
+    EXPECT_TRUE(plain.input.empty());
+    EXPECT_FALSE(plain.tape_bytes.has_value());
+}
+
+TEST(ShareLink, BadReadingFieldsAreProblems) {
+    const ShareLink l = parse_share_fragment("i=gcode&b=-1&pj=" + base64url_encode(std::string(kMaxShareProfileBytes + 1, 'x')) + "&p=ok");
+    EXPECT_TRUE(l.input.empty());
+    EXPECT_FALSE(l.tape_bytes.has_value());
+    EXPECT_TRUE(l.profile_json.empty());
+    EXPECT_EQ(l.profile, "ok");
+    ASSERT_EQ(l.problems.size(), 3u);
+    EXPECT_EQ(l.problems[0].rfind("i: expected essi or eia", 0), 0u) << l.problems[0];
+    EXPECT_EQ(l.problems[1].rfind("b: expected the tape's length", 0), 0u) << l.problems[1];
+    EXPECT_EQ(l.problems[2].rfind("pj: expected a profile's JSON", 0), 0u) << l.problems[2];
+}

@@ -24,7 +24,6 @@ App* g_app = nullptr;
 
 constexpr double kMessageSeconds = 4;  // a toolbar message shows this long
 // Share links longer than this are refused (browsers and chat programs cut long URLs).
-constexpr std::size_t kMaxShareTapeBytes = 4u << 20;
 
 // A problem with the whole file, shown over the drawing area ("" when there is none).
 std::string banner_for(const Document& d) {
@@ -101,11 +100,51 @@ bool App::use_profile_file(const std::string& name, const std::string& bytes) {
 
 void App::load(std::string name, std::string bytes, std::optional<ViewRequest> view) {
     if (use_profile_file(name, bytes)) return;
+    input_format_.reset();  // (a new tape: its content says what it is)
+    ui_.link_problem.clear();
+    read(std::move(name), std::move(bytes), view);
+}
+
+void App::load_shared(std::string name, std::string bytes, const ShareLink& link) {
+    use_link_profile(link);
+    input_format_.reset();
+    if (link.input == "essi") input_format_ = InputFormat::Essi;
+    if (link.input == "eia") input_format_ = InputFormat::Eia;
+    ui_.link_problem.clear();
+    read(std::move(name), std::move(bytes), std::nullopt);
+}
+
+// The link's profile becomes the choice: a user profile it carries, a built-in name, or auto (a name this viewer
+// does not know is said, and auto used).
+void App::use_link_profile(const ShareLink& link) {
+    if (!link.profile_json.empty()) {
+        const ProfileResult r = parse_profile(link.profile_json);
+        if (r.profile) {
+            dropped_profile_ = r.profile;
+            profile_name_ = r.profile->name;
+            return;
+        }
+        notify("The link's profile could not be read (" +
+               (r.diagnostics.empty() ? std::string("?") : r.diagnostics.front().message) + "); the tape is read with auto.");
+        profile_name_ = std::string(kAutoProfile);
+        return;
+    }
+    if (link.profile.empty() || link.profile == kAutoProfile || builtin_profile(link.profile)) {
+        profile_name_ = link.profile.empty() ? std::string(kAutoProfile) : link.profile;
+        return;
+    }
+    notify("The link names the profile " + display_text(link.profile) + ", which this viewer does not have; the tape is read with auto.");
+    profile_name_ = std::string(kAutoProfile);
+}
+
+void App::link_problem(std::string text) { ui_.link_problem = std::move(text); }
+
+void App::read(std::string name, std::string bytes, std::optional<ViewRequest> view) {
     // "auto": the dialect the tape's evidence shows (essi/dialect.hpp), as `essi check --profile auto`.
     std::optional<Profile> profile;
     if (dropped_profile_ && profile_name_ == dropped_profile_->name) profile = dropped_profile_;
     else if (profile_name_ != kAutoProfile) profile = builtin_profile(profile_name_);
-    TapeSetup setup = setup_tape(bytes, std::nullopt, profile);
+    TapeSetup setup = setup_tape(bytes, input_format_, profile);
     load_.start(std::move(name), std::move(bytes), std::move(setup));
     pending_view_ = view;
     playback_.stop();
@@ -116,7 +155,7 @@ void App::set_profile(const std::string& name) {
     profile_name_ = name;
     if (const Document* d = document()) {
         const ViewRequest keep{view_.cx + d->origin.x, view_.cy + d->origin.y, view_.zoom, selection_.line};
-        load(d->name, d->bytes, keep);
+        read(d->name, d->bytes, keep);
     }
 }
 
@@ -271,9 +310,13 @@ void App::notify(std::string text) {
     ui_.message_until = glfwGetTime() + kMessageSeconds;
 }
 
-std::string App::view_query() const {
+std::string App::share_query() const {
     const Point o = origin();
-    return share_view_query({view_.cx + o.x, view_.cy + o.y, view_.zoom}, selection_.line);
+    const Document* d = document();
+    const bool user_profile = dropped_profile_ && profile_name_ == dropped_profile_->name;
+    return share_view_query({view_.cx + o.x, view_.cy + o.y, view_.zoom}, selection_.line) + "&" +
+           share_reading_query(profile_name_, user_profile ? profile_to_json(*dropped_profile_) : std::string(),
+                               d ? input_format_name(d->setup.format) : "");
 }
 
 std::string App::export_text(const std::string& format) const {
@@ -305,12 +348,7 @@ void App::share() {
         notify("Share links are made by the browser viewer.");
         return;
     }
-    if (d->bytes.size() > kMaxShareTapeBytes) {
-        share_done(false, fmt("This tape (%.1f MB) is too large for a link (at most %.0f MB); send the file instead.",
-                              d->bytes.size() / 1048576.0, kMaxShareTapeBytes / 1048576.0));
-        return;
-    }
-    platform::share(*this, d->name, d->bytes, view_query());
+    platform::share(*this, d->name, d->bytes, share_query());  // (the page says when a tape is too large)
 }
 
 void App::share_done(bool ok, std::string text) {

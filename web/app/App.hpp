@@ -18,6 +18,7 @@
 #include "app/SceneAssembly.hpp"
 #include "app/Selection.hpp"
 #include "app/View.hpp"
+#include "essi/share_link.hpp"
 #include "render/Renderer.hpp"
 #include "render/UiRenderer.hpp"
 
@@ -38,6 +39,7 @@ struct UiState {
     std::string share_url;      // the last share link (or why there is none)
     bool share_popup = false;
     std::string banner;         // a problem with the whole file ("not an ESSI tape ...")
+    std::string link_problem;   // a share link that could not be opened (cut off, damaged, its tape gone ...)
 };
 
 class App {
@@ -63,6 +65,11 @@ public:
     // --- Actions (the panels, the shortcuts, the platform and window.essikit) ---
     // Starts loading a tape (bytes as read from the file). `view`, when given, replaces the fit at the end.
     void load(std::string name, std::string bytes, std::optional<ViewRequest> view = std::nullopt);
+    // Loads a share link's tape as its sender read it: the link's profile (a built-in name, or the user profile
+    // it carries) and input format (essi/share_link.hpp). The page applies the link's view after it.
+    void load_shared(std::string name, std::string bytes, const ShareLink& link);
+    // A share link that could not be opened: says why, over the start screen.
+    void link_problem(std::string text);
     void set_profile(const std::string& name);  // loads the tape again with another profile, keeping the view
     void set_view(double x, double y, double zoom);   // machine mm, px/mm; kept until a load completes
     void select_line(std::uint32_t line, bool reveal = true);
@@ -110,8 +117,9 @@ public:
     [[nodiscard]] UiState& ui() { return ui_; }
     // The document's origin (GPU and view coordinates are relative to it).
     [[nodiscard]] Point origin() const { return document() ? document()->origin : Point{}; }
-    // "c=X,Y,ZOOM&l=LINE": the view and the selection in a share link.
-    [[nodiscard]] std::string view_query() const;
+    // "c=X,Y,ZOOM&l=LINE&p=PROFILE[&pj=JSON]&i=FORMAT": the view, the selection and how the tape is read, for
+    // a share link.
+    [[nodiscard]] std::string share_query() const;
 
 private:
     void step_loading();
@@ -130,7 +138,10 @@ private:
     std::optional<ViewRequest> pending_view_;  // set_view / select_line before the document is there
     std::string profile_name_ = std::string(kAutoProfile);  // a built-in profile, the dropped one, or "auto"
     std::optional<Profile> dropped_profile_;  // a profile file dropped on the page (its name is a choice too)
+    std::optional<InputFormat> input_format_;  // the format a share link said the tape was read as (else the content's)
     bool use_profile_file(const std::string& name, const std::string& bytes);
+    void read(std::string name, std::string bytes, std::optional<ViewRequest> view);  // with the profile and format chosen
+    void use_link_profile(const ShareLink& link);
 
     View view_;
     bool machine_coordinates_ = false;

@@ -168,7 +168,7 @@ std::string App::state_json() const {
                  {"rotation", {r.c, r.s}},
                  {"origin_px", {view_.ox(), view_.oy()}},
                  {"area", {view_.area.x, view_.area.y, view_.area.w, view_.area.h}},
-                 {"query", view_query()}};
+                 {"query", share_query()}};
     j["layers"] = layers_json(layers_);
     j["playback"] = playback_json(playback_, doc, cs);
     j["measure"] = measure_json(input_.measure, cs);
@@ -176,6 +176,7 @@ std::string App::state_json() const {
     j["render"] = render_json(renderer_.stats(), scene_.skipped_frames());
     j["help"] = ui_.help;
     j["share_url"] = ui_.share_url;
+    j["link_problem"] = ui_.link_problem;
     j["message"] = ui_.message;
     j["kind_colors"] = json::array();
     for (const Rgba& c : kKindColors)

@@ -36,6 +36,20 @@ EMSCRIPTEN_KEEPALIVE void essi_load_commit(const char* name) {
     g_pending = std::string();
 }
 
+// The link last read by essi_parse_share (below): its tape is loaded as the sender read it.
+namespace {
+essi::ShareLink g_share_link;
+}
+EMSCRIPTEN_KEEPALIVE void essi_load_commit_shared(const char* name) {
+    if (App* app = App::instance()) app->load_shared(name, std::move(g_pending), g_share_link);
+    g_pending = std::string();
+}
+
+// A share link that could not be opened (the page's words): shown over the start screen.
+EMSCRIPTEN_KEEPALIVE void essi_link_problem(const char* text) {
+    if (App* app = App::instance()) app->link_problem(text ? text : "");
+}
+
 // The state as JSON (App::state_json); valid until the next call.
 EMSCRIPTEN_KEEPALIVE const char* essi_state() {
     static std::string s;
@@ -119,9 +133,12 @@ EMSCRIPTEN_KEEPALIVE const char* essi_parse_share(const char* fragment) {
     j["view"] = link.view ? nlohmann::json::array({link.view->x, link.view->y, link.view->zoom}) : nlohmann::json();
     j["share"] = link.store_id;
     j["profile"] = link.profile;
+    j["input"] = link.input;
+    j["bytes"] = link.tape_bytes ? nlohmann::json(*link.tape_bytes) : nlohmann::json();
     j["problems"] = link.problems;
     j["packed_len"] = link.packed.size();
     g_share_packed = std::move(link.packed);
+    g_share_link = std::move(link);
     g_share_json = j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     return g_share_json.c_str();
 }

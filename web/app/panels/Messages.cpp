@@ -77,6 +77,20 @@ void share_popup(UiState& ui, const Rect& a, ImVec2 centre) {
     ImGui::End();
 }
 
+// A share link that could not be opened: why, and what to do; over the start screen until closed or a tape loads.
+void link_problem(UiState& ui, const Rect& a, ImVec2 centre) {
+    ImGui::SetNextWindowPos(ImVec2(centre.x, a.y + 24), ImGuiCond_Appearing, ImVec2(0.5f, 0.f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 40, 560.f), 0));
+    bool open = true;
+    ImGui::Begin("Share link problem", &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushStyleColor(ImGuiCol_Text, severity_color(Severity::Error));
+    ImGui::TextWrapped("%s", ui.link_problem.c_str());
+    ImGui::PopStyleColor();
+    ImGui::TextWrapped("Ask the sender for the whole link, or for the file.");
+    ImGui::End();
+    if (!open) ui.link_problem.clear();
+}
+
 }  // namespace
 
 void messages(App& app) {
@@ -90,6 +104,7 @@ void messages(App& app) {
     else if (!doc) welcome(app, centre);
     else if (!ui.banner.empty()) problem(*doc, ui.banner, a, centre);
     if (ui.share_popup) share_popup(ui, a, centre);
+    if (!ui.link_problem.empty()) link_problem(ui, a, centre);
 }
 
 }  // namespace essi::viewer::panels
