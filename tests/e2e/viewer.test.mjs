@@ -782,7 +782,7 @@ test('machine coordinates: the program turned and placed as it lies on the table
 
 test('a share link for a tape too large for a URL says so', async () => {
   const page = await newPage();
-  const name = generatedTape(5);
+  const name = generatedTape(12);  // (about 3 MB deflated: more than a URL takes)
   await page.evaluate(async (n) => {
     const bytes = new Uint8Array(await (await fetch('/gen/' + n)).arrayBuffer());
     await essikit.load(n, bytes);
@@ -790,6 +790,24 @@ test('a share link for a tape too large for a URL says so', async () => {
   const err = await page.evaluate(() => essikit.shareLink().then(() => 'ok', (e) => e.message));
   assert.match(err, /too large for a link .* and no essi serve share store answers/);
   assert.match((await page.evaluate(() => essikit.state())).share_url, /too large/);
+  await page.close();
+});
+
+test('a share link of a megabyte or two is made and opens (no 4 MB cap, the link passed on the heap)', async () => {
+  const page = await newPage();
+  const name = generatedTape(5);
+  await page.evaluate(async (n) => {
+    const bytes = new Uint8Array(await (await fetch('/gen/' + n)).arrayBuffer());
+    await essikit.load(n, bytes);
+  }, name);
+  const before = await page.evaluate(() => essikit.state());
+  const url = await page.evaluate(() => essikit.shareLink());
+  assert.ok(url.length > 500000 && url.length < 2000000, `${url.length} characters`);
+  const other = await openLink(url);
+  const got = await other.evaluate(() => essikit.state());
+  assert.equal(got.bytes, before.bytes);
+  assert.deepEqual(got.stats, before.stats);
+  await other.close();
   await page.close();
 });
 
