@@ -152,6 +152,22 @@ std::optional<FunctionInfo> function_info(int code, Dialect dialect) {
     return iso_row(code);
 }
 
+std::string kerf_value_text(double value_mm, const Profile& profile) {
+    char buf[96];
+    if (profile.kerf_value == KerfValueMeaning::Width)
+        std::snprintf(buf, sizeof buf, "kerf width %.4g mm (the torch %.4g mm to the side)", value_mm, value_mm / 2);
+    else
+        std::snprintf(buf, sizeof buf, "kerf offset %.4g mm (a cut %.4g mm wide)", value_mm, value_mm * 2);
+    return buf;
+}
+
+std::string kerf_offset_text(KerfSide side, double offset_mm) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "torch %.3f mm to the %s (a cut %.3f mm wide)", offset_mm, kerf_side_name(side),
+                  offset_mm * 2);
+    return buf;
+}
+
 std::string describe_function(int code, bool has_value, double value, const Profile& profile) {
     const auto info = function_info(code, profile.dialect);
     std::string s = "function " + std::to_string(code) + ": ";
@@ -162,15 +178,10 @@ std::string describe_function(int code, bool has_value, double value, const Prof
     if (has_value) {
         switch (code) {
             case fn::kKerfLeft:
-            case fn::kKerfRight: {
-                const double width = value * profile.unit_mm;
-                std::snprintf(buf, sizeof buf, ", %.3g mm", width);
-                s += buf;
-                break;
-            }
+            case fn::kKerfRight: s += ", " + kerf_value_text(value * profile.unit_mm, profile); break;
             case fn::kFeed: s += ", " + number_text(value) + " mm/min"; break;
             case fn::kDwell: s += ", " + number_text(value * profile.dwell_unit_s) + " s"; break;
-            case fn::kHyperthermKerfValue:  // (only a dialect that assigns 40 reads it)
+            case fn::kHyperthermKerfValue: s += ", " + kerf_value_text(value * profile.unit_mm, profile); break;
             case fn::kWoydaBurnerSpacing: {
                 std::snprintf(buf, sizeof buf, ", %.4g mm", value * profile.unit_mm);
                 s += buf;
@@ -179,8 +190,7 @@ std::string describe_function(int code, bool has_value, double value, const Prof
             default: s += ", value " + number_text(value); break;
         }
     } else if (code == fn::kKerfLeft || code == fn::kKerfRight) {
-        std::snprintf(buf, sizeof buf, ", %.3g mm (profile kerf)", profile.kerf_units * profile.unit_mm);
-        s += buf;
+        s += ", the profile's " + kerf_value_text(profile.kerf_units * profile.unit_mm, profile);
     }
     s += ": ";
     s += info->explanation;

@@ -1,6 +1,7 @@
 // Safe text for reports (essi/text.hpp).
 #include "essi/text.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 #include <cstdint>
@@ -66,6 +67,26 @@ std::string display_text(std::string_view s) {
         i += n;
     }
     return out;
+}
+
+namespace {
+std::string printf_text(const char* format, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+}  // namespace
+
+std::string length_text(double mm) {
+    if (!(std::fabs(mm) >= 10000)) return printf_text("%.3f mm", mm);
+    const std::string digits = printf_text("%.3f", std::fabs(mm) / 1000);  // "184377.775"
+    const std::size_t point = digits.find('.');
+    std::string out = mm < 0 ? "-" : "";
+    for (std::size_t i = 0; i < point; ++i) {
+        if (i > 0 && (point - i) % 3 == 0) out += ' ';
+        out += digits[i];
+    }
+    return out + digits.substr(point) + " m";
 }
 
 std::string number_text(double v) {

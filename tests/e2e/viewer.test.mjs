@@ -638,6 +638,8 @@ test('kerf compensation: the torch path and the cut\'s width are drawn, toggled,
   const words = (await page.evaluate(() => essikit.state())).inspector.join('\n');
   assert.match(words, /^cut line from \(200\.000, 210\.000\) to \(200\.000, 290\.000\)/m);
   assert.match(words, /^torch \(kerf\): cut line from \(198\.500, 210\.000\) to \(198\.500, 290\.000\)/m);
+  // the kerf said as what it is: the torch's offset and the cut's width
+  assert.match(words, /kerf: torch 1\.500 mm to the left \(a cut 3\.000 mm wide\)/);
   // A tape without compensation has no kerf segments.
   const plain = await loadExample(page, 'arcs_both_senses.esi');
   assert.equal(plain.state.kerf.segments, 0);

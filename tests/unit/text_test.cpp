@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include "essi/functions.hpp"
+#include "essi/profile.hpp"
 #include "essi/text.hpp"
 
 namespace {
@@ -39,3 +41,27 @@ TEST(Text, ExcerptQuotesTheStartAtACharacterBoundary) {
 }
 
 }  // namespace
+
+TEST(Text, LengthsAsPeopleReadThem) {
+    EXPECT_EQ(essi::length_text(0), "0.000 mm");
+    EXPECT_EQ(essi::length_text(9999.9994), "9999.999 mm");
+    EXPECT_EQ(essi::length_text(10000), "10.000 m");
+    EXPECT_EQ(essi::length_text(184377774.914), "184 377.775 m");
+    EXPECT_EQ(essi::length_text(-1234567.5), "-1 234.568 m");
+    EXPECT_EQ(essi::length_text(1e12), "1 000 000 000.000 m");
+}
+
+TEST(Text, KerfValuesSayWidthOrOffset) {
+    essi::Profile p;
+    p.kerf_value = essi::KerfValueMeaning::Width;
+    EXPECT_EQ(essi::kerf_value_text(2, p), "kerf width 2 mm (the torch 1 mm to the side)");
+    p.kerf_value = essi::KerfValueMeaning::Offset;
+    EXPECT_EQ(essi::kerf_value_text(1.5, p), "kerf offset 1.5 mm (a cut 3 mm wide)");
+    EXPECT_EQ(essi::kerf_offset_text(essi::KerfSide::Left, 1.5), "torch 1.500 mm to the left (a cut 3.000 mm wide)");
+    // a 29 block in words: the profile's kerf, as a width (iso6582)
+    const essi::Profile iso;
+    EXPECT_NE(essi::describe_function(29, false, 0, iso).find("the profile's kerf width 2 mm (the torch 1 mm to the side)"),
+              std::string::npos)
+        << essi::describe_function(29, false, 0, iso);
+    EXPECT_NE(essi::describe_function(30, true, 30, iso).find("kerf width 3 mm"), std::string::npos);
+}

@@ -288,7 +288,7 @@ std::string describe_motion(const MotionRecord& m) {
     s += "; tools " + tools_text(m.tools);
     if (m.head == 2) s += ", head 2";
     if (m.kerf != KerfSide::Off)
-        s += fmt(", kerf %s %.3f mm", kerf_side_name(m.kerf), m.kerf_mm);
+        s += ", kerf: " + kerf_offset_text(m.kerf, m.kerf_mm);
     s += fmt(", %.0f mm/min", m.feed_mm_min);
     return s;
 }

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "essi/motion.hpp"
 #include "essi/profile.hpp"
 
 namespace essi {
@@ -46,6 +47,12 @@ struct FunctionAction {
 
 // The meaning of `code` in `dialect`; nullopt for codes beyond the table (> 999 cannot be read anyway).
 [[nodiscard]] std::optional<FunctionInfo> function_info(int code, Dialect dialect);
+
+// A kerf value in words that say what it is, as the profile reads it (`kerf_value`): "kerf width 2 mm (the torch
+// 1 mm to the side)" or "kerf offset 1 mm (a cut 2 mm wide)".
+[[nodiscard]] std::string kerf_value_text(double value_mm, const Profile& profile);
+// The torch's offset of a compensated motion in words: "torch 1.000 mm to the left (a cut 2.000 mm wide)".
+[[nodiscard]] std::string kerf_offset_text(KerfSide side, double offset_mm);
 
 // A sentence that says what a function block does: "function 29: kerf compensation left, 2.0 mm".
 [[nodiscard]] std::string describe_function(int code, bool has_value, double value, const Profile& profile);

@@ -63,7 +63,7 @@ void grid_labels(ImDrawList* dl, const View& view, const Coordinates& cs, Point 
     dl->AddLine(p, ImVec2(p.x + bar, p.y), kScaleBarColor, 2);
     dl->AddLine(p, ImVec2(p.x, p.y - 5), kScaleBarColor, 2);
     dl->AddLine(ImVec2(p.x + bar, p.y), ImVec2(p.x + bar, p.y - 5), kScaleBarColor, 2);
-    dl->AddText(ImVec2(p.x + bar / 2 - 20, p.y - 20), kScaleBarColor, fmt("%g mm", step).c_str());
+    dl->AddText(ImVec2(p.x + bar / 2 - 20, p.y - 20), kScaleBarColor, (step >= 1000 ? fmt("%g m", step / 1000) : fmt("%g mm", step)).c_str());
 }
 
 // An arrow at the middle of each selected motion, pointing the way it runs.

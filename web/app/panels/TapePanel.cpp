@@ -6,6 +6,7 @@
 #include "essi/dialect.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
+#include "essi/text.hpp"
 
 namespace essi::viewer::panels {
 
@@ -25,11 +26,11 @@ void stats_table(const Document& doc) {
     // The names as wide as the longest; the values in the rest, wrapped (the boxes do not fit a line).
     ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
     ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
-    stats_row("cut", fmt("%.3f mm", s.cut_length_mm));
-    stats_row("  compensated", fmt("%.3f mm", s.cut_length_compensated_mm));
-    stats_row("mark", fmt("%.3f mm", s.mark_length_mm));
-    stats_row("travel", fmt("%.3f mm", s.travel_length_mm));
-    stats_row("  of it rapid", fmt("%.3f mm", s.rapid_length_mm));
+    stats_row("cut", length_text(s.cut_length_mm));
+    stats_row("  compensated", length_text(s.cut_length_compensated_mm));
+    stats_row("mark", length_text(s.mark_length_mm));
+    stats_row("travel", length_text(s.travel_length_mm));
+    stats_row("  of it rapid", length_text(s.rapid_length_mm));
     // The machine's box (§11), where the placement moves it (a profile with zero offsets, a plate rotation ...).
     const Box& mb = s.machine_cut_bbox;
     if (!mb.empty && !(mb.min_x == s.cut_bbox.min_x && mb.min_y == s.cut_bbox.min_y && mb.max_x == s.cut_bbox.max_x &&
