@@ -547,6 +547,35 @@ test('playback: the scrubber draws the path up to a motion and shows the tool st
   await page.close();
 });
 
+test('playback in machine time: the tool moves at the programmed feed times the factor; the source follows', async () => {
+  const page = await newPage();
+  const { state, motions } = await loadExample(page, 'arcs_both_senses.esi');
+  let pb = (await page.evaluate(() => essikit.state())).playback;
+  // the whole program's machine time is the statistics' estimate (no kerf, no dwell in this tape)
+  assert.ok(Math.abs(pb.total_s - state.stats.estimated_time_s) < 1e-3, `${pb.total_s} vs ${state.stats.estimated_time_s}`);
+  assert.equal(pb.elapsed_s, pb.total_s);  // (not playing: everything shown)
+  // 50 x: the program's 196 s take about 4 s; after about a second, roughly a quarter is done
+  await tap(page, 'Home');
+  await page.evaluate(() => essikit.setPlayback(50, true));
+  const t0 = Date.now();
+  await page.waitForTimeout(1000);
+  const playing = await page.evaluate(() => essikit.state());
+  pb = playing.playback;
+  const wall = (Date.now() - t0) / 1000;
+  assert.equal(pb.factor, 50);
+  assert.ok(pb.playing && pb.elapsed_s > 0 && pb.elapsed_s <= 50 * (wall + 0.5), JSON.stringify(pb));
+  assert.ok(Math.abs(pb.elapsed_s + pb.remaining_s - pb.total_s) < 1e-6);
+  // the source view and the inspector follow the playback: the selected line is the tool's
+  assert.equal(playing.selection.line, pb.line);
+  await page.evaluate(() => essikit.setPlayback(1000, true));
+  await until(page, () => !essikit.state().playback.playing, null, 'the playback did not reach the end at 1000 x');
+  pb = (await page.evaluate(() => essikit.state())).playback;
+  assert.equal(pb.position, motions.length);
+  assert.ok(Math.abs(pb.elapsed_s - pb.total_s) < 1e-9 && pb.remaining_s === 0);
+  await page.screenshot({ path: path.join(shots, 'playback-machine-time.png') });
+  await page.close();
+});
+
 test('measure: distance and dx/dy between two points, snapping to end points and arc centres', async () => {
   const page = await newPage();
   const { motions } = await loadExample(page, 'plate_holes.esi');

@@ -208,7 +208,10 @@ void App::frame() {
     view_.area = panels::drawing_area(io.DisplaySize.x, io.DisplaySize.y);
     step_loading();
     view_.plate = coordinates().plate();
-    if (const Document* d = document()) playback_.advance(io.DeltaTime, d->motions.size());
+    if (const Document* d = document(); d && playback_.playing) {
+        playback_.advance(io.DeltaTime, *d);
+        follow_playback(*d);
+    }
     input_.handle_shortcuts(*this);
     input_.handle_canvas(*this);
     load_.maybe_rebuild(desired_tolerance());
@@ -258,6 +261,12 @@ void App::set_view(double x, double y, double zoom) {
     view_.zoom = std::clamp(zoom, View::kMinZoom, View::kMaxZoom);
     view_.cx = x - d->origin.x;
     view_.cy = y - d->origin.y;
+}
+
+void App::follow_playback(const Document& d) {
+    if (d.motions.empty()) return;
+    const std::uint32_t line = d.motions[playback_.at(d.motions.size()).motion].line;
+    if (line != selection_.line) select_line(line, false);  // (the view stays where the user put it)
 }
 
 void App::select_line(std::uint32_t line, bool reveal) {

@@ -128,6 +128,7 @@ private:
     [[nodiscard]] double desired_tolerance() const;
     [[nodiscard]] float framebuffer_scale() const;
     void draw_panels();
+    void follow_playback(const Document& d);  // the source view and the inspector show the playback's line
 
     GLFWwindow* window_ = nullptr;
     Renderer renderer_;

@@ -62,7 +62,13 @@ void add_document(json& j, const Document& doc, const LoadController& load, cons
 
 // What the Playback panel shows: the motion at the scrubber, its line, the tools and where the tool is.
 json playback_json(const Playback& playback, const Document* doc, const Coordinates& cs) {
-    json p = {{"active", playback.active}, {"playing", playback.playing}, {"position", playback.position}};
+    json p = {{"active", playback.active}, {"playing", playback.playing}, {"position", playback.position},
+              {"factor", playback.factor}};
+    if (doc) {
+        p["elapsed_s"] = playback.elapsed_s(*doc);
+        p["total_s"] = playback.total_s(*doc);
+        p["remaining_s"] = playback.total_s(*doc) - playback.elapsed_s(*doc);
+    }
     if (!playback.active || !doc || doc->motions.empty()) return p;
     const std::size_t n = doc->motions.size();
     const Playback::At at = playback.at(n);

@@ -135,6 +135,13 @@ float Document::feed_of(std::size_t i) const {
     return value_at(feeds, i);
 }
 
+double Document::duration_s(std::size_t i) const {
+    const double feed = feed_of(i);
+    double t = feed > 0 ? record(i).length_mm / feed * 60.0 : 0.0;
+    if (std::binary_search(pierces.begin(), pierces.end(), static_cast<std::uint32_t>(i))) t += profile.pierce_time_s;
+    return t;
+}
+
 const MotionRecord* Document::torch_copies(std::size_t i) const {
     if (!(motions[i].flags & Motion::kFlagKept)) return nullptr;
     const MotionRecord& r = kept_record(i);

@@ -122,6 +122,9 @@ struct Document {
     [[nodiscard]] Point end_of(std::size_t i) const;
     [[nodiscard]] Point start_of(std::size_t i) const;
     [[nodiscard]] float feed_of(std::size_t i) const;
+    // The machine time of motion i, as the statistics estimate it along the programmed path: its length at its
+    // feed (rapid at the profile's rapid speed), plus the profile's pierce time where a cut starts.
+    [[nodiscard]] double duration_s(std::size_t i) const;
     [[nodiscard]] float kerf_of(std::size_t i) const;
     // The centre of arc i (an arc motion), without working out the rest of its record.
     [[nodiscard]] Point arc_centre(std::size_t i) const;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/Document.hpp"
+
 namespace essi::viewer {
 
 void Playback::toggle(std::size_t n) {
@@ -42,15 +44,52 @@ void Playback::seek(double motion) {
 void Playback::stop() {
     playing = false;
     active = false;
+    time_before_.clear();
 }
 
-void Playback::advance(float seconds, std::size_t n) {
+void Playback::advance(float seconds, const Document& doc) {
     if (!playing) return;
-    position += speed * seconds;
-    if (position >= static_cast<double>(n)) {
-        position = static_cast<double>(n);
-        playing = false;
+    const std::size_t n = doc.motions.size();
+    double budget = static_cast<double>(seconds) * std::clamp(factor, kMinFactor, kMaxFactor);
+    while (position < static_cast<double>(n)) {
+        const auto i = static_cast<std::size_t>(position);
+        const double d = doc.duration_s(i);
+        const double left = (1 - (position - std::floor(position))) * d;
+        if (d > 0 && budget < left) {
+            position += budget / d;
+            return;
+        }
+        budget -= left;
+        position = static_cast<double>(i + 1);
     }
+    position = static_cast<double>(n);
+    playing = false;
+}
+
+void Playback::make_times(const Document& doc) const {
+    const std::size_t n = doc.motions.size();
+    time_before_.assign(1, 0.0);
+    double t = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        t += doc.duration_s(i);
+        if ((i + 1) % kTimeStride == 0) time_before_.push_back(t);
+    }
+    time_before_.push_back(t);  // (the total)
+}
+
+double Playback::elapsed_s(const Document& doc) const {
+    if (time_before_.empty()) make_times(doc);
+    const std::size_t n = doc.motions.size();
+    if (position >= static_cast<double>(n)) return time_before_.back();
+    const auto i = static_cast<std::size_t>(position);
+    double t = time_before_[i / kTimeStride];
+    for (std::size_t k = i / kTimeStride * kTimeStride; k < i; ++k) t += doc.duration_s(k);
+    return t + (position - std::floor(position)) * doc.duration_s(i);
+}
+
+double Playback::total_s(const Document& doc) const {
+    if (time_before_.empty()) make_times(doc);
+    return time_before_.back();
 }
 
 std::size_t Playback::limit(std::size_t n) const {

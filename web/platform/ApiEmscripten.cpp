@@ -1,5 +1,6 @@
 // The C functions behind window.essikit: index.html calls them as Module._essi_* (or through ccall when they take
 // a string); essi_heap is for the tests and benchmarks. (essi_background_slice is in MainLoopEmscripten.cpp.)
+#include <algorithm>
 #include <emscripten.h>
 #include <malloc.h>
 
@@ -110,6 +111,15 @@ EMSCRIPTEN_KEEPALIVE const char* essi_project(double x, double y) {
     const essi::Point p = app->view().to_screen({x - o.x, y - o.y});
     s = nlohmann::json::array({p.x, p.y}).dump();
     return s.c_str();
+}
+
+// The playback: its speed factor (machine seconds a second, 1-1000) and whether it plays (from where it is).
+EMSCRIPTEN_KEEPALIVE void essi_set_playback(double factor, int playing) {
+    App* app = App::instance();
+    if (!app || !app->document()) return;
+    essi::viewer::Playback& p = app->playback();
+    p.factor = static_cast<float>(std::clamp(factor, double{p.kMinFactor}, double{p.kMaxFactor}));
+    if ((playing != 0) != p.playing) p.toggle(app->document()->motions.size());
 }
 
 // Reads the tape again with another profile: a built-in name or "auto".

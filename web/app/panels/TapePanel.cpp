@@ -147,7 +147,11 @@ void playback(App& app) {
     ImGui::SetNextItemWidth(-1);
     if (ImGui::SliderInt("##pos", &pos, 0, static_cast<int>(n), "motion %d")) p.seek(pos);
     ImGui::SetNextItemWidth(-1);
-    ImGui::SliderFloat("##speed", &p.speed, 1, 100000, "%.0f motions/s", ImGuiSliderFlags_Logarithmic);
+    ImGui::SliderFloat("##factor", &p.factor, Playback::kMinFactor, Playback::kMaxFactor, "%.0fx machine speed",
+                       ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    const double elapsed = p.elapsed_s(*doc), total = p.total_s(*doc);
+    ImGui::TextWrapped("machine time %s of %s, %s to go", hms(elapsed).c_str(), hms(total).c_str(),
+                       hms(total - elapsed).c_str());
     if (!p.active) return;
     const std::size_t cur = p.at(n).motion;
     const Motion& m = doc->motions[cur];
