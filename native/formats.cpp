@@ -5,7 +5,7 @@
 #include <map>
 
 #include "essi/diagnostics.hpp"
-#include "text_report.hpp"
+#include "essi/text_report.hpp"
 
 #ifndef ESSIKIT_VERSION
 #define ESSIKIT_VERSION "0.1.0"
@@ -19,10 +19,6 @@ std::string plural(std::size_t n, std::string_view one, std::string_view many) {
     return std::to_string(n) + " " + std::string(n == 1 ? one : many);
 }
 
-std::string omitted_text(const FileReport& f) {
-    return plural(f.omitted(), "more diagnostic", "more diagnostics") + " not shown (--max-diagnostics " +
-           std::to_string(f.result.diagnostics.size()) + ")";
-}
 
 std::string verdict_text(const FileReport& f) {
     std::string s = plural(f.errors(), "error", "errors");
@@ -76,21 +72,7 @@ std::string batch_summary_line(const BatchTotals& t, std::string_view profile_na
     return s;
 }
 
-std::string text_file_block(const BatchItem& item, bool quiet) {
-    const FileReport& r = item.report;
-    std::string text;
-    for (const Diagnostic& d : r.result.diagnostics) {
-        if (quiet && d.severity == Severity::Note) continue;
-        text += diagnostic_line(r.display_path(), d);
-        text += '\n';
-    }
-    if (r.omitted() > 0) text += r.display_path() + ": note: " + omitted_text(r) + "\n";
-    if (!quiet) {
-        text += file_stats_line(r);
-        text += '\n';
-    }
-    return text;
-}
+std::string text_file_block(const BatchItem& item, bool quiet) { return file_report_text(item.report, quiet); }
 
 // --- GitHub ----------------------------------------------------------------------------------------------
 namespace {

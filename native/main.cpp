@@ -35,7 +35,7 @@
 #include "file_io.hpp"
 #include "pipelined_check.hpp"
 #include "essi/report_json.hpp"
-#include "text_report.hpp"
+#include "essi/text_report.hpp"
 
 #ifndef ESSIKIT_VERSION
 #define ESSIKIT_VERSION "0.1.0"
@@ -81,7 +81,7 @@ std::optional<essi::Profile> resolve_profile(const std::string& arg) {
         return std::nullopt;
     }
     essi::ProfileResult parsed = essi::parse_profile(file.bytes);
-    for (const essi::Diagnostic& d : parsed.diagnostics) err(essi::native::diagnostic_line(name, d) + "\n");
+    for (const essi::Diagnostic& d : parsed.diagnostics) err(essi::diagnostic_line(name, d) + "\n");
     if (!parsed.profile) {
         err("essi: cannot use profile " + name + "\n");
         return std::nullopt;
@@ -382,7 +382,7 @@ int run_convert(const ConvertCliOptions& o) {
         options.target = *target;
     }
     const essi::ConvertResult r = essi::convert_tape(tape->file.bytes, setup, options);
-    for (const essi::Diagnostic& d : r.diagnostics) err(essi::native::diagnostic_line(o.path, d) + "\n");
+    for (const essi::Diagnostic& d : r.diagnostics) err(essi::diagnostic_line(o.path, d) + "\n");
     if (!write_file(o.output, r.text)) {
         err("essi convert: cannot write " + essi::display_text(o.output) + ": " + std::strerror(errno) + "\n");
         return kExitUsage;
@@ -404,7 +404,7 @@ int run_stats(const std::vector<std::string>& paths, const std::string& format, 
         for (const FileReport& r : reports) {
             if (!first) out("\n");
             first = false;
-            out(essi::native::stats_block(r));
+            out(essi::stats_block(r));
         }
     }
     report_errors_briefly(reports);

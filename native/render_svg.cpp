@@ -12,7 +12,7 @@
 #include "essi/geom.hpp"
 #include "essi/read.hpp"
 #include "formats.hpp"
-#include "text_report.hpp"
+#include "essi/text_report.hpp"
 
 namespace essi::native {
 

@@ -8,6 +8,7 @@
 
 #include "../bench/nest_generator.hpp"
 #include "essi/report.hpp"
+#include "essi/text_report.hpp"
 #include "paths.hpp"
 #include "test_util.hpp"
 
@@ -306,4 +307,19 @@ TEST(TapeCheckerAlso, GetsTheInterpretersStreamExactly) {
     const std::string nest = bench::generate_nest_tape(200000, 3);
     expect_also_gets_the_stream(nest, iso_profile(), "generated");
     expect_also_gets_the_stream(nest, offset, "generated, placed on the machine");
+}
+
+TEST(TextReport, FileReportTextIsWhatCheckPrintsAndCsvQuotes) {
+    essi::FileReport f;
+    f.path = "a,b.esi";
+    f.result = essi::check_tape("7\n+100+0\n8\n99\n64\n", essi::Profile{});
+    ASSERT_EQ(f.result.diagnostics.size(), 1u);  // 99: W201
+    const std::string text = essi::file_report_text(f);
+    EXPECT_EQ(text.rfind("a,b.esi:4:1: warning W201: ", 0), 0u) << text;
+    EXPECT_NE(text.find("\na,b.esi: ok, 1 warning; cut 10.000 mm"), std::string::npos) << text;
+    const std::string csv = essi::diagnostics_csv(std::span<const essi::FileReport>(&f, 1));
+    EXPECT_EQ(csv.rfind("file,severity,code,line,column,message\r\n\"a,b.esi\",warning,W201,4,1,", 0), 0u) << csv;
+    EXPECT_EQ(csv.substr(csv.size() - 2), "\r\n");
+    f.result.diagnostics[0].message = "say \"x\"";
+    EXPECT_NE(essi::diagnostics_csv(std::span<const essi::FileReport>(&f, 1)).find(",\"say \"\"x\"\"\"\r\n"), std::string::npos);
 }

@@ -1,4 +1,4 @@
-#include "text_report.hpp"
+#include "essi/text_report.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-namespace essi::native {
+namespace essi {
 
 namespace {
 
@@ -41,6 +41,48 @@ std::string verdict(const FileReport& f) {
 }
 
 }  // namespace
+
+std::string omitted_text(const FileReport& f) {
+    return count_of(f.omitted(), "more diagnostic", "more diagnostics") + " not shown (--max-diagnostics " +
+           std::to_string(f.result.diagnostics.size()) + ")";
+}
+
+std::string file_report_text(const FileReport& r, bool quiet) {
+    std::string text;
+    for (const Diagnostic& d : r.result.diagnostics) {
+        if (quiet && d.severity == Severity::Note) continue;
+        text += diagnostic_line(r.display_path(), d);
+        text += '\n';
+    }
+    if (r.omitted() > 0) text += r.display_path() + ": note: " + omitted_text(r) + "\n";
+    if (!quiet) {
+        text += file_stats_line(r);
+        text += '\n';
+    }
+    return text;
+}
+
+namespace {
+// A CSV field: quoted when it holds a comma, a quote or a line end (quotes doubled).
+std::string csv_field(std::string_view s) {
+    if (s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"') out += '"';
+        out += c;
+    }
+    return out + "\"";
+}
+}  // namespace
+
+std::string diagnostics_csv(std::span<const FileReport> files) {
+    std::string out = "file,severity,code,line,column,message\r\n";
+    for (const FileReport& f : files)
+        for (const Diagnostic& d : f.result.diagnostics)
+            out += csv_field(f.display_path()) + "," + std::string(severity_name(d.severity)) + "," + code_name(d.code) + "," +
+                   std::to_string(d.line) + "," + std::to_string(d.column) + "," + csv_field(d.message) + "\r\n";
+    return out;
+}
 
 std::string format_duration(double seconds) {
     if (!std::isfinite(seconds) || seconds < 0) return fixed(seconds, 1) + " s";
@@ -138,4 +180,4 @@ std::string stats_block(const FileReport& file) {
     return out;
 }
 
-}  // namespace essi::native
+}  // namespace essi

@@ -10,7 +10,7 @@
 #include "essi/report.hpp"
 #include "essi/report_json.hpp"
 
-namespace essi::native {
+namespace essi {
 
 // Lengths in text output: millimetres with this many decimals (1 micrometre).
 constexpr int kTextLengthDecimals = 3;
@@ -28,7 +28,17 @@ constexpr int kTextLengthDecimals = 3;
 // The aligned block of `essi stats` for one file, every line ending in a newline.
 [[nodiscard]] std::string stats_block(const FileReport& file);
 
+// "3 more diagnostics not shown (--max-diagnostics 100)": what --max-diagnostics left out of a file.
+[[nodiscard]] std::string omitted_text(const FileReport& file);
+
+// What `essi check --format text` prints for one file: its diagnostics (without notes when `quiet`), a note for
+// those --max-diagnostics left out, and (unless quiet) its statistics line; every line ends in a newline.
+[[nodiscard]] std::string file_report_text(const FileReport& file, bool quiet = false);
+
+// The diagnostics as CSV (RFC 4180, a header line, CR LF): file,severity,code,line,column,message.
+[[nodiscard]] std::string diagnostics_csv(std::span<const FileReport> files);
+
 // Seconds as "h:mm:ss".
 [[nodiscard]] std::string format_duration(double seconds);
 
-}  // namespace essi::native
+}  // namespace essi
