@@ -576,6 +576,47 @@ test('playback in machine time: the tool moves at the programmed feed times the 
   await page.close();
 });
 
+test('copy and export: a problem, a line, the inspector and the report as essi check gives them', async () => {
+  const page = await newPage();
+  const file = 'bad_kerf_gouge.esi';
+  const { state } = await loadExample(page, file);
+  assert.ok(state.diagnostics.length > 0);
+  const cli = (args) => {
+    try {
+      return execFileSync(essiBin, ['check', '--profile', 'auto', ...args, file], { encoding: 'utf8', cwd: examplesDir });
+    } catch (e) {
+      return e.stdout;  // exit 1: the tape has an error
+    }
+  };
+  // the report as text: essi check's lines (its summary's timing aside)
+  await page.evaluate(() => essikit.copy('report'));
+  const copied = (await page.evaluate(() => essikit.state())).copied;
+  const text = cli([]);
+  assert.equal(copied.trimEnd(), text.trimEnd().replace(/; [0-9.]+ s$/, ''));
+  // one problem: its line of the report
+  await page.evaluate(() => essikit.copy('diagnostic', 0));
+  assert.equal((await page.evaluate(() => essikit.state())).copied, text.split('\n')[0] + '\n');
+  // a source line, and the inspector's text of the selected line
+  const line = state.diagnostics[0].line;
+  await page.evaluate((n) => essikit.copy('line', n), line);
+  const source = fs.readFileSync(path.join(examplesDir, file), 'utf8').split(/\r?\n/);
+  assert.equal((await page.evaluate(() => essikit.state())).copied, source[line - 1] + '\n');
+  await page.evaluate((n) => { essikit.selectLine(n); essikit.copy('inspector'); }, line);
+  const insp = await page.evaluate(() => essikit.state());
+  assert.equal(insp.copied, `${file}:${line}: ${source[line - 1]}\n` + insp.inspector.map((l) => l + '\n').join('') +
+               text.split('\n')[0] + '\n');
+  // the report as JSON is essi check's; the problems as CSV one row each
+  const json = JSON.parse(await page.evaluate(() => essikit.exportText('report-json')));
+  const cliJson = JSON.parse(cli(['--format', 'json']));
+  assert.deepEqual(json.files, cliJson.files);
+  assert.equal(json.profile, cliJson.profile);
+  const csv = (await page.evaluate(() => essikit.exportText('report-csv'))).split('\r\n');
+  assert.equal(csv[0], 'file,severity,code,line,column,message');
+  assert.equal(csv.length, 2 + state.diagnostics.length);  // (the header, a row each, the last line end)
+  assert.match(csv[1], new RegExp(`^${file.replace('.', '\\.')},error,E307,${line},1,`));
+  await page.close();
+});
+
 test('measure: distance and dx/dy between two points, snapping to end points and arc centres', async () => {
   const page = await newPage();
   const { motions } = await loadExample(page, 'plate_holes.esi');

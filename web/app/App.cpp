@@ -14,6 +14,7 @@
 #include "essi/write.hpp"
 #include "essi/sniff.hpp"
 #include "essi/text.hpp"
+#include "essi/text_report.hpp"
 #include "platform/Platform.hpp"
 
 namespace essi::viewer {
@@ -328,10 +329,62 @@ std::string App::share_query() const {
                                d ? input_format_name(d->setup.format) : "");
 }
 
+FileReport App::report() const {
+    FileReport r;
+    const Document* d = document();
+    if (!d) return r;
+    r.path = d->name;
+    r.result.stats = d->stats;
+    r.result.diagnostics = d->diagnostics;
+    r.result.input = d->setup.format;
+    r.result.profile = d->profile.name;
+    r.result.auto_profile = d->setup.auto_profile;
+    r.result.dialect_evidence = d->setup.evidence;
+    return r;
+}
+
+std::string App::copy_text(CopyWhat what, std::uint32_t index) const {
+    const Document* d = document();
+    if (!d) return {};
+    switch (what) {
+        case CopyWhat::Report: {
+            const FileReport r = report();
+            return file_report_text(r) + summary_line(std::span<const FileReport>(&r, 1), profile_name_) + "\n";
+        }
+        case CopyWhat::Diagnostic:
+            return index < d->diagnostics.size() ? diagnostic_line(display_text(d->name), d->diagnostics[index]) + "\n" : "";
+        case CopyWhat::Line: return std::string(d->line(index)) + "\n";
+        case CopyWhat::Inspector: {
+            const std::uint32_t line = selection_.line;
+            std::string s = display_text(d->name) + ":" + std::to_string(line) + ": " + std::string(d->line(line)) + "\n";
+            for (const Document::InspectorLine& l : d->inspector_lines(line)) s += l.text + "\n";
+            for (const Diagnostic& diag : d->diagnostics)
+                if (diag.line == line) s += diagnostic_line(display_text(d->name), diag) + "\n";
+            return s;
+        }
+    }
+    return {};
+}
+
+void App::copy(CopyWhat what, std::uint32_t index) {
+    const std::string text = copy_text(what, index);
+    if (text.empty()) return notify("Nothing to copy.");
+    platform::copy_text(text);
+    ui_.copied = text;
+    static constexpr const char* kWhat[] = {"The report", "The problem", "The line", "The inspector's text"};
+    notify(std::string(kWhat[static_cast<int>(what)]) + " is copied.");
+}
+
 std::string App::export_text(const std::string& format) const {
     const Document* d = document();
     if (!d) return {};
     if (format == "dxf") return render_dxf(d->bytes, d->setup).text;
+    if (format == "report-text") return copy_text(CopyWhat::Report);
+    if (format == "report-json" || format == "report-csv") {
+        const FileReport r = report();
+        const std::span<const FileReport> one(&r, 1);
+        return format == "report-csv" ? diagnostics_csv(one) : report_to_json(one, profile_name_).dump(2) + "\n";
+    }
     ConvertOptions o;
     o.to = format == "eia" ? OutputFormat::Eia : format == "gcode" ? OutputFormat::Gcode : OutputFormat::Essi;
     o.target = d->profile;
@@ -343,7 +396,13 @@ void App::export_file(const std::string& format) {
     const Document* d = document();
     if (!d) return notify("Load a tape first.");
     const std::string stem = d->name.substr(0, d->name.find_last_of('.'));
-    const char* ext = format == "dxf" ? ".dxf" : format == "eia" ? ".eia" : format == "gcode" ? ".ngc" : ".esi";
+    const char* ext = format == "dxf"           ? ".dxf"
+                      : format == "eia"         ? ".eia"
+                      : format == "gcode"       ? ".ngc"
+                      : format == "report-text" ? ".report.txt"
+                      : format == "report-json" ? ".report.json"
+                      : format == "report-csv"  ? ".problems.csv"
+                                                : ".esi";
     platform::save_file(*this, stem + ext, export_text(format));
 }
 

@@ -18,6 +18,7 @@
 #include "app/SceneAssembly.hpp"
 #include "app/Selection.hpp"
 #include "app/View.hpp"
+#include "essi/report_json.hpp"
 #include "essi/share_link.hpp"
 #include "render/Renderer.hpp"
 #include "render/UiRenderer.hpp"
@@ -40,6 +41,7 @@ struct UiState {
     bool share_popup = false;
     std::string banner;         // a problem with the whole file ("not an ESSI tape ...")
     std::string link_problem;   // a share link that could not be opened (cut off, damaged, its tape gone ...)
+    std::string copied;         // the last text copied to the clipboard (state().copied)
 };
 
 class App {
@@ -92,6 +94,13 @@ public:
     [[nodiscard]] std::string export_text(const std::string& format) const;
     void export_file(const std::string& format);
     void share_done(bool ok, std::string text);
+    // The tape's report: as `essi check` makes it (its path the tape's name).
+    [[nodiscard]] FileReport report() const;
+    // Copies to the clipboard: the report as `essi check` prints it, one problem (`index` in the diagnostics) as
+    // its line, one source line (`index` its number) or the inspector's text of the selected line.
+    enum class CopyWhat { Report, Diagnostic, Line, Inspector };
+    [[nodiscard]] std::string copy_text(CopyWhat what, std::uint32_t index = 0) const;
+    void copy(CopyWhat what, std::uint32_t index = 0);
     void notify(std::string text);  // a short message in the toolbar (copied, paste ignored, ...)
 
     // window.essikit.state(): {status, name, stats, diagnostics, selection, view, ...} as JSON text.

@@ -103,13 +103,8 @@ json measure_json(const Measure& m, const Coordinates& cs) {
 // The block inspector's sentences for the selected line (blocks, then motions).
 json inspector_json(const Document* doc, std::uint32_t line) {
     json insp = json::array();
-    if (!doc || line == 0) return insp;
-    const LineBlocks blocks = doc->blocks_of_line(line);
-    for (std::size_t b = blocks.first; b < blocks.last; ++b) insp.push_back(describe_block(*blocks.chunk, b, doc->profile));
-    const auto [m0, m1] = doc->motions_of_line(line);
-    for (std::size_t m = m0; m < m1 && m < m0 + 8; ++m) insp.push_back(describe_motion(doc->record(m)));
-    const std::vector<MotionRecord> torch = doc->torch_path_of_line(line);
-    for (std::size_t k = 0; k < torch.size() && k < 8; ++k) insp.push_back("torch (kerf): " + describe_motion(torch[k]));
+    if (doc)
+        for (const Document::InspectorLine& l : doc->inspector_lines(line)) insp.push_back(l.text);
     return insp;
 }
 
@@ -183,6 +178,7 @@ std::string App::state_json() const {
     j["help"] = ui_.help;
     j["share_url"] = ui_.share_url;
     j["link_problem"] = ui_.link_problem;
+    j["copied"] = ui_.copied;
     j["message"] = ui_.message;
     j["kind_colors"] = json::array();
     for (const Rgba& c : kKindColors)

@@ -552,4 +552,21 @@ const char* DocumentLoader::stage() const {
     }
 }
 
+std::vector<Document::InspectorLine> Document::inspector_lines(std::uint32_t line) const {
+    std::vector<InspectorLine> out;
+    if (line == 0) return out;
+    const LineBlocks blocks = blocks_of_line(line);
+    for (std::size_t b = blocks.first; b < blocks.last; ++b)
+        out.push_back({InspectorLine::Of::Block, MotionKind::Travel, describe_block(*blocks.chunk, b, profile)});
+    const auto [m0, m1] = motions_of_line(line);
+    for (std::size_t m = m0; m < m1 && m < m0 + kInspectorMotions; ++m) {
+        const MotionRecord r = record(m);
+        out.push_back({InspectorLine::Of::Motion, r.kind, describe_motion(r)});
+    }
+    const std::vector<MotionRecord> torch = torch_path_of_line(line);
+    for (std::size_t k = 0; k < torch.size() && k < kInspectorMotions; ++k)
+        out.push_back({InspectorLine::Of::Torch, torch[k].kind, "torch (kerf): " + describe_motion(torch[k])});
+    return out;
+}
+
 }  // namespace essi::viewer

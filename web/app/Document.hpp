@@ -141,6 +141,15 @@ struct Document {
     // The torch's path of one source line's motions where kerf compensation is on or ends (docs/semantics.md §8):
     // the compensated pieces, worked out from where that compensation started (the inspector's second position).
     [[nodiscard]] std::vector<MotionRecord> torch_path_of_line(std::uint32_t line) const;
+    // The block inspector's sentences for one line: its blocks, its motions (at most kInspectorMotions) and the
+    // torch's path where kerf compensation is on ("torch (kerf): ...").
+    struct InspectorLine {
+        enum class Of : std::uint8_t { Block, Motion, Torch } of;
+        MotionKind kind;  // (a motion's)
+        std::string text;
+    };
+    static constexpr std::size_t kInspectorMotions = 8;
+    [[nodiscard]] std::vector<InspectorLine> inspector_lines(std::uint32_t line) const;
     // The blocks that start on one source line (the chunk that holds them is read again when needed).
     [[nodiscard]] LineBlocks blocks_of_line(std::uint32_t line) const;
     [[nodiscard]] bool has_errors() const;

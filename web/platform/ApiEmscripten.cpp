@@ -122,6 +122,13 @@ EMSCRIPTEN_KEEPALIVE void essi_set_playback(double factor, int playing) {
     if ((playing != 0) != p.playing) p.toggle(app->document()->motions.size());
 }
 
+// Copies as the panels' Copy buttons and menus do: 0 the report, 1 the diagnostic `index`, 2 the source line
+// `index`, 3 the inspector's text of the selected line (App::CopyWhat).
+EMSCRIPTEN_KEEPALIVE void essi_copy(int what, int index) {
+    if (App* app = App::instance(); app && what >= 0 && what <= 3)
+        app->copy(static_cast<App::CopyWhat>(what), static_cast<std::uint32_t>(std::max(index, 0)));
+}
+
 // Reads the tape again with another profile: a built-in name or "auto".
 EMSCRIPTEN_KEEPALIVE void essi_set_profile(const char* name) {
     if (App* app = App::instance()) app->set_profile(name ? name : "auto");

@@ -12,7 +12,6 @@ namespace essi::viewer::panels {
 namespace {
 
 constexpr float kInspectorHeight = 220;
-constexpr std::size_t kInspectorMotions = 8;  // motions of a line described at most
 
 // The diagnostics of one line: [begin, end) of the sorted list.
 struct LineDiagnostics {
@@ -41,6 +40,14 @@ void source_line(App& app, const Document& d, std::uint32_t line, int digits) {
                           ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowItemOverlap,
                           ImVec2(0, ImGui::GetTextLineHeight())))
         app.select_line(line);
+    if (ImGui::BeginPopupContextItem("line menu")) {
+        if (ImGui::Selectable("Copy this line")) app.copy(App::CopyWhat::Line, line);
+        if (ImGui::Selectable("Copy what the inspector says")) {
+            app.select_line(line, false);
+            app.copy(App::CopyWhat::Inspector);
+        }
+        ImGui::EndPopup();
+    }
     if (diags.any() && ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
         for (auto k = diags.begin; k != diags.end; ++k)
@@ -101,26 +108,22 @@ void inspector(App& app) {
     const Document& d = *doc;
     ImGui::Text("Line %u", line);
     ImGui::SameLine();
+    if (ImGui::SmallButton("Copy")) app.copy(App::CopyWhat::Inspector);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Copy the line and what the inspector says of it");
+    ImGui::SameLine();
     ImGui::TextDisabled("%s", printable(d.line(line), 80).c_str());
     ImGui::Separator();
-    const LineBlocks blocks = d.blocks_of_line(line);
-    for (std::size_t b = blocks.first; b < blocks.last; ++b)
-        ImGui::TextWrapped("%s", describe_block(*blocks.chunk, b, d.profile).c_str());
-    const auto [m0, m1] = d.motions_of_line(line);
-    for (std::size_t m = m0; m < m1 && m < m0 + kInspectorMotions; ++m) {
-        const MotionRecord r = d.record(m);
-        ImGui::PushStyleColor(ImGuiCol_Text, opaque(kind_color(r.kind)));
-        ImGui::TextWrapped("%s", describe_motion(r).c_str());
-        ImGui::PopStyleColor();
+    // The blocks, the motions in their kind's colour, and where the torch goes (kerf compensation: the second
+    // position of the line's motions).
+    const std::vector<Document::InspectorLine> lines = d.inspector_lines(line);
+    for (const Document::InspectorLine& l : lines) {
+        using Of = Document::InspectorLine::Of;
+        if (l.of != Of::Block)
+            ImGui::PushStyleColor(ImGuiCol_Text, opaque(l.of == Of::Torch ? kPathColorTable[kKerfPathKind] : kind_color(l.kind)));
+        ImGui::TextWrapped("%s", l.text.c_str());
+        if (l.of != Of::Block) ImGui::PopStyleColor();
     }
-    // Where the torch goes (kerf compensation): the second position of the line's motions.
-    const std::vector<MotionRecord> torch = d.torch_path_of_line(line);
-    for (std::size_t k = 0; k < torch.size() && k < kInspectorMotions; ++k) {
-        ImGui::PushStyleColor(ImGuiCol_Text, opaque(kPathColorTable[kKerfPathKind]));
-        ImGui::TextWrapped("torch (kerf): %s", describe_motion(torch[k]).c_str());
-        ImGui::PopStyleColor();
-    }
-    if (blocks.empty() && m0 == m1) ImGui::TextDisabled("No block on this line (comment, empty line or part of a block).");
+    if (lines.empty()) ImGui::TextDisabled("No block on this line (comment, empty line or part of a block).");
     const LineDiagnostics diags = diagnostics_of(d, line);
     for (auto it = diags.begin; it != diags.end; ++it) {
         ImGui::PushStyleColor(ImGuiCol_Text, severity_color(it->severity));

@@ -174,6 +174,8 @@ void diagnostics(App& app) {
         ImGui::TextColored(to_vec4(kOkColor), "No problems found.");
         return;
     }
+    if (ImGui::SmallButton("Copy the report")) app.copy(App::CopyWhat::Report);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Copy the report as essi check prints it (right-click a problem to copy it alone)");
     ImGui::BeginChild("diaglist", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(doc->diagnostics.size()));
@@ -185,6 +187,11 @@ void diagnostics(App& app) {
             const std::string label = fmt("%s line %u:%u", code_name(d.code).c_str(), d.line, d.column);
             if (ImGui::Selectable(label.c_str(), d.line != 0 && d.line == app.selection().line)) app.select_line(d.line);
             ImGui::PopStyleColor();
+            if (ImGui::BeginPopupContextItem("diagnostic menu")) {
+                if (ImGui::Selectable("Copy this problem")) app.copy(App::CopyWhat::Diagnostic, static_cast<std::uint32_t>(i));
+                if (ImGui::Selectable("Copy the report")) app.copy(App::CopyWhat::Report);
+                ImGui::EndPopup();
+            }
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", d.message.c_str());
             ImGui::SameLine();
             ImGui::TextWrapped("%s", d.message.c_str());

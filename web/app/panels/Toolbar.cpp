@@ -71,10 +71,12 @@ void coordinates_combo(App& app) {
 // Downloads: the tape as ESSI, EIA or G-code (essi convert) and its drawing as DXF.
 void export_menu(App& app) {
     if (ImGui::Button("Export...")) ImGui::OpenPopup("export");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Download the tape converted (ESSI, EIA, G-code for LinuxCNC) or drawn (DXF)");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Download the tape converted (ESSI, EIA, G-code for LinuxCNC) or drawn (DXF), or its report");
     if (!ImGui::BeginPopup("export")) return;
     static constexpr std::pair<const char*, const char*> kFormats[] = {
-        {"ESSI (.esi)", "essi"}, {"EIA, RS-274 (.eia)", "eia"}, {"G-code for LinuxCNC (.ngc)", "gcode"}, {"DXF drawing (.dxf)", "dxf"}};
+        {"ESSI (.esi)", "essi"}, {"EIA, RS-274 (.eia)", "eia"}, {"G-code for LinuxCNC (.ngc)", "gcode"}, {"DXF drawing (.dxf)", "dxf"},
+        {"Report as text (.txt)", "report-text"}, {"Report as JSON, essi check's (.json)", "report-json"},
+        {"Problems as CSV (.csv)", "report-csv"}};
     for (const auto& [label, format] : kFormats)
         if (ImGui::Selectable(label)) app.export_file(format);
     ImGui::EndPopup();
