@@ -400,10 +400,20 @@ test('essi serve serves the viewer and the examples', async (t) => {
     assert.equal(wasm.headers.get('content-type'), 'application/wasm');
     const list = await (await fetch(new URL('examples/index.json', address))).json();
     assert.ok(list.includes('plate_holes.esi'));
-    const page = await browser.newPage();
+    const page = await browser.newPage({ viewport: { width: 1600, height: 900 } });
     await page.goto(address);
     await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 30000 });
     await page.evaluate(() => essikit.ready);
+    // The start screen offers the server's examples; one click (the button's path) opens one.
+    await page.waitForFunction(() => essikit.state().examples.length > 0, null, { timeout: 10000 });
+    assert.deepEqual((await page.evaluate(() => essikit.state())).examples, list);
+    await page.screenshot({ path: path.join(shots, 'start-screen-examples.png') });
+    await page.evaluate(() => window.essikitOpenExample('plate_holes.esi'));
+    await page.waitForFunction(() => essikit.state().status === 'ready' && essikit.state().name === 'plate_holes.esi', null, { timeout: 30000 });
+    // ... and remembers its name (names only) for the next visit's start screen
+    await page.reload();
+    await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 30000 });
+    assert.equal((await page.evaluate(() => essikit.state())).recent[0], 'plate_holes.esi');
     await page.close();
   } finally {
     proc.kill();

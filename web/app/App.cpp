@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include <nlohmann/json.hpp>
+
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
 #include "essi/geom.hpp"
@@ -24,7 +26,6 @@ namespace {
 App* g_app = nullptr;
 
 constexpr double kMessageSeconds = 4;  // a toolbar message shows this long
-// Share links longer than this are refused (browsers and chat programs cut long URLs).
 
 // A problem with the whole file, shown over the drawing area ("" when there is none).
 std::string banner_for(const Document& d) {
@@ -38,11 +39,22 @@ std::string banner_for(const Document& d) {
     return "";
 }
 
+// The recent names as one setting: a JSON array (one line).
+std::vector<std::string> recent_from_setting(const std::optional<std::string>& text) {
+    std::vector<std::string> names;
+    if (!text) return names;
+    const nlohmann::json j = nlohmann::json::parse(*text, nullptr, false);
+    if (!j.is_array()) return names;
+    for (const auto& n : j)
+        if (n.is_string() && names.size() < App::kRecentNames) names.push_back(display_text(n.get<std::string>()));
+    return names;
+}
 }  // namespace
 
 App::App(GLFWwindow* window) : window_(window) {
     g_app = this;
     view_.turns = ((platform::load_setting(kOrientationSetting).value_or(0) % 4) + 4) % 4;  // (kept across sessions)
+    ui_.recent = recent_from_setting(platform::load_text_setting(kRecentSetting));
     machine_coordinates_ = platform::load_setting(kCoordinatesSetting).value_or(0) == 1;
 }
 
@@ -140,6 +152,9 @@ void App::use_link_profile(const ShareLink& link) {
 
 void App::link_problem(std::string text) { ui_.link_problem = std::move(text); }
 
+void App::set_examples(std::vector<std::string> names) { ui_.examples = std::move(names); }
+
+
 void App::read(std::string name, std::string bytes, std::optional<ViewRequest> view) {
     // "auto": the dialect the tape's evidence shows (essi/dialect.hpp), as `essi check --profile auto`.
     std::optional<Profile> profile;
@@ -173,6 +188,12 @@ bool App::background_step() {
 // A new document was read: the selection, the view and the playback start over, then its drawing is made.
 void App::document_loaded() {
     const Document& d = *document();
+    // The name first among the recent ones (names only: the tapes themselves are not kept).
+    const std::string name = display_text(d.name);
+    std::erase(ui_.recent, name);
+    ui_.recent.insert(ui_.recent.begin(), name);
+    if (ui_.recent.size() > kRecentNames) ui_.recent.resize(kRecentNames);
+    platform::save_text_setting(kRecentSetting, nlohmann::json(ui_.recent).dump(-1, ' ', true));
     selection_.clear();
     ui_.banner = banner_for(d);
     view_.plate = coordinates().plate();

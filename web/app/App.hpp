@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/Coordinates.hpp"
 #include "app/Document.hpp"
@@ -42,6 +43,8 @@ struct UiState {
     std::string banner;         // a problem with the whole file ("not an ESSI tape ...")
     std::string link_problem;   // a share link that could not be opened (cut off, damaged, its tape gone ...)
     std::string copied;         // the last text copied to the clipboard (state().copied)
+    std::vector<std::string> examples;  // the tapes the server offers (the start screen), none natively
+    std::vector<std::string> recent;    // the names of the last tapes opened (newest first), kept across sessions
 };
 
 class App {
@@ -72,6 +75,10 @@ public:
     void load_shared(std::string name, std::string bytes, const ShareLink& link);
     // A share link that could not be opened: says why, over the start screen.
     void link_problem(std::string text);
+    // The examples the server offers (their names), for the start screen.
+    void set_examples(std::vector<std::string> names);
+    static constexpr const char* kRecentSetting = "recent";
+    static constexpr std::size_t kRecentNames = 8;
     void set_profile(const std::string& name);  // loads the tape again with another profile, keeping the view
     void set_view(double x, double y, double zoom);   // machine mm, px/mm; kept until a load completes
     void select_line(std::uint32_t line, bool reveal = true);

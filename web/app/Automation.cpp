@@ -179,6 +179,8 @@ std::string App::state_json() const {
     j["share_url"] = ui_.share_url;
     j["link_problem"] = ui_.link_problem;
     j["copied"] = ui_.copied;
+    j["examples"] = ui_.examples;
+    j["recent"] = ui_.recent;
     j["message"] = ui_.message;
     j["kind_colors"] = json::array();
     for (const Rgba& c : kKindColors)

@@ -129,6 +129,18 @@ EMSCRIPTEN_KEEPALIVE void essi_copy(int what, int index) {
         app->copy(static_cast<App::CopyWhat>(what), static_cast<std::uint32_t>(std::max(index, 0)));
 }
 
+// The examples the server offers: a JSON array of names (essi serve's /examples/index.json).
+EMSCRIPTEN_KEEPALIVE void essi_set_examples(const char* json_names) {
+    App* app = App::instance();
+    if (!app || !json_names) return;
+    const nlohmann::json j = nlohmann::json::parse(json_names, nullptr, false);
+    std::vector<std::string> names;
+    if (j.is_array())
+        for (const auto& n : j)
+            if (n.is_string()) names.push_back(essi::display_text(n.get<std::string>()));
+    app->set_examples(std::move(names));
+}
+
 // Reads the tape again with another profile: a built-in name or "auto".
 EMSCRIPTEN_KEEPALIVE void essi_set_profile(const char* name) {
     if (App* app = App::instance()) app->set_profile(name ? name : "auto");

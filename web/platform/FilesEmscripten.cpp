@@ -41,4 +41,8 @@ void save_file(App&, const std::string& name, const std::string& text) {
     }, name.c_str(), text.data(), static_cast<int>(text.size()));
 }
 
+void open_example(App&, const std::string& name) {
+    EM_ASM({ window.essikitOpenExample(UTF8ToString($0)); }, name.c_str());
+}
+
 }  // namespace essi::viewer::platform

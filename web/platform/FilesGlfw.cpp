@@ -58,4 +58,6 @@ void save_file(App& app, const std::string& name, const std::string& text) {
     app.notify(out ? "Wrote " + name + " (in the current folder)." : "Cannot write " + name + ".");
 }
 
+void open_example(App&, const std::string&) {}  // (the desktop viewer has no server: no examples are offered)
+
 }  // namespace essi::viewer::platform

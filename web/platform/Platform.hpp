@@ -41,5 +41,12 @@ void share(App& app, const std::string& name, std::string_view bytes, const std:
 // A setting kept across sessions (the view's orientation): none when it was never saved.
 [[nodiscard]] std::optional<int> load_setting(const char* name);
 void save_setting(const char* name, int value);
+// The same for text (one line: line ends are not kept).
+[[nodiscard]] std::optional<std::string> load_text_setting(const char* name);
+void save_text_setting(const char* name, const std::string& value);
+
+// The examples the server offers (essi serve's /examples/): the page fetches their list at start (App::set_examples)
+// and a click opens one (the page fetches it and loads it). Natively there are none.
+void open_example(App& app, const std::string& name);
 
 }  // namespace essi::viewer::platform

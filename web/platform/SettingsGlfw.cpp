@@ -1,5 +1,6 @@
-// Viewer settings on the desktop: one line "NAME VALUE" each in $XDG_CONFIG_HOME/essikit/viewer.conf (else
+// Viewer settings on the desktop: one line "NAME VALUE" each (the value the rest of the line) in $XDG_CONFIG_HOME/essikit/viewer.conf (else
 // ~/.config/essikit/viewer.conf), kept across sessions.
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,27 +18,40 @@ std::filesystem::path settings_file() {
     return {};
 }
 
-std::map<std::string, int> read_all() {
-    std::map<std::string, int> all;
+std::map<std::string, std::string> read_all() {
+    std::map<std::string, std::string> all;
     std::ifstream in(settings_file());
-    std::string name;
-    int value = 0;
-    while (in >> name >> value) all[name] = value;
+    std::string line;
+    while (std::getline(in, line)) {
+        const std::size_t space = line.find(' ');
+        if (space != std::string::npos && space > 0) all[line.substr(0, space)] = line.substr(space + 1);
+    }
     return all;
 }
 
 }  // namespace
 
-std::optional<int> load_setting(const char* name) {
+std::optional<std::string> load_text_setting(const char* name) {
     const auto all = read_all();
     const auto it = all.find(name);
     if (it == all.end()) return std::nullopt;
     return it->second;
 }
 
-void save_setting(const char* name, int value) {
+std::optional<int> load_setting(const char* name) {
+    const auto text = load_text_setting(name);
+    if (!text) return std::nullopt;
+    return std::atoi(text->c_str());
+}
+
+void save_setting(const char* name, int value) { save_text_setting(name, std::to_string(value)); }
+
+void save_text_setting(const char* name, const std::string& text) {
     const std::filesystem::path file = settings_file();
     if (file.empty()) return;
+    std::string value = text;
+    std::replace(value.begin(), value.end(), '\n', ' ');  // (one line)
+    std::replace(value.begin(), value.end(), '\r', ' ');
     auto all = read_all();
     all[name] = value;
     std::error_code ec;

@@ -14,6 +14,7 @@ namespace {
 constexpr ImGuiWindowFlags kMessageFlags =
     ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove;
 constexpr std::size_t kShareUrlShown = 600;  // characters of a share link shown
+constexpr std::size_t kExamplesPerRow = 3;    // buttons a row on the start screen
 
 void loading(const App& app, const Rect& a, ImVec2 centre, bool tape_drawn) {
     const LoadController& load = app.loads();
@@ -41,7 +42,7 @@ void drawing(const App& app, const Rect& a, ImVec2 centre) {
     ImGui::End();
 }
 
-void welcome(const App& app, ImVec2 centre) {
+void welcome(App& app, ImVec2 centre) {
     ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::Begin("Welcome", nullptr, kMessageFlags | ImGuiWindowFlags_AlwaysAutoResize);
     ImGui::TextUnformatted("essikit viewer: ESSI cutting tapes (ISO 6582)");
@@ -49,6 +50,20 @@ void welcome(const App& app, ImVec2 centre) {
     ImGui::TextUnformatted("Drop a tape here, press Open..., or paste its text (Ctrl+V).");
     ImGui::TextUnformatted("Nothing is uploaded: the tape is read in this page.");
     ImGui::TextDisabled("Press H for the shortcuts.");
+    const UiState& ui = app.ui();
+    if (!ui.examples.empty()) {
+        ImGui::Spacing();
+        ImGui::TextUnformatted("Examples on this server (one click opens one):");
+        for (std::size_t k = 0; k < ui.examples.size(); ++k) {
+            if (k % kExamplesPerRow != 0) ImGui::SameLine();
+            if (ImGui::SmallButton(ui.examples[k].c_str())) platform::open_example(app, ui.examples[k]);
+        }
+    }
+    if (!ui.recent.empty()) {
+        ImGui::Spacing();
+        ImGui::TextDisabled("Opened lately (drop or open them again):");
+        for (const std::string& name : ui.recent) ImGui::BulletText("%s", name.c_str());
+    }
     if (!app.graphics_ok()) ImGui::TextColored(severity_color(Severity::Error), "Graphics error: %s", program_error());
     ImGui::End();
 }
