@@ -627,6 +627,42 @@ test('copy and export: a problem, a line, the inspector and the report as essi c
   await page.close();
 });
 
+test('touch: a tap selects, one finger pans, two fingers zoom about their middle', async () => {
+  const ctx = await browser.newContext({ viewport: { width: 1600, height: 900 }, hasTouch: true });
+  const page = await ctx.newPage();
+  await page.goto(baseUrl);
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 60000 });
+  const { motions } = await loadExample(page, 'plate_holes.esi');
+  const cdp = await ctx.newCDPSession(page);
+  const touch = (type, points) => cdp.send('Input.dispatchTouchEvent', { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) });
+  const frames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r()))));
+  // a tap on a long cut line selects it (no hover before it)
+  const m = motions.find((x) => x.kind === 'cut' && x.curve === 'line' && x.length_mm > 150);
+  const p = await page.evaluate(([x, y]) => essikit.project(x, y), m.mid);
+  await page.touchscreen.tap(p.x, p.y);
+  await until(page, (i) => { const s = essikit.state(); return s.selection && s.selection.motion === i; }, m.index, 'the tap did not select the line');
+  // one finger drags the drawing along
+  let v0 = (await page.evaluate(() => essikit.state())).view;
+  const a = await page.evaluate(([x, y]) => essikit.project(x, y), [v0.x_mm, v0.y_mm]);
+  await touch('touchStart', [[600, 500]]);
+  for (let k = 1; k <= 5; ++k) { await touch('touchMove', [[600 + 20 * k, 500 + 10 * k]]); await frames(); }
+  await touch('touchEnd', []);
+  await frames();
+  const b = await page.evaluate(([x, y]) => essikit.project(x, y), [v0.x_mm, v0.y_mm]);
+  assert.ok(Math.abs(b.x - a.x - 100) < 25 && Math.abs(b.y - a.y - 50) < 25, `the drawing moved by (${b.x - a.x}, ${b.y - a.y}), not (100, 50)`);
+  // two fingers spread to twice their distance: twice the zoom, the point between them stays under them
+  v0 = (await page.evaluate(() => essikit.state())).view;
+  await touch('touchStart', [[650, 450], [750, 450]]);
+  for (let k = 1; k <= 4; ++k) { await touch('touchMove', [[650 - 12.5 * k, 450], [750 + 12.5 * k, 450]]); await frames(); }
+  await touch('touchEnd', []);
+  await frames();
+  const v1 = (await page.evaluate(() => essikit.state())).view;
+  assert.ok(Math.abs(v1.zoom / v0.zoom - 2) < 1e-6, `zoom ${v0.zoom} -> ${v1.zoom}`);
+  // (no selection change, no pan from the pinch's fingers)
+  assert.equal((await page.evaluate(() => essikit.state())).selection.motion, m.index);
+  await ctx.close();
+});
+
 test('measure: distance and dx/dy between two points, snapping to end points and arc centres', async () => {
   const page = await newPage();
   const { motions } = await loadExample(page, 'plate_holes.esi');

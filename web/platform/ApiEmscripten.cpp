@@ -1,6 +1,7 @@
 // The C functions behind window.essikit: index.html calls them as Module._essi_* (or through ccall when they take
 // a string); essi_heap is for the tests and benchmarks. (essi_background_slice is in MainLoopEmscripten.cpp.)
 #include <algorithm>
+#include <cmath>
 #include <emscripten.h>
 #include <malloc.h>
 
@@ -127,6 +128,15 @@ EMSCRIPTEN_KEEPALIVE void essi_set_playback(double factor, int playing) {
 EMSCRIPTEN_KEEPALIVE void essi_copy(int what, int index) {
     if (App* app = App::instance(); app && what >= 0 && what <= 3)
         app->copy(static_cast<App::CopyWhat>(what), static_cast<std::uint32_t>(std::max(index, 0)));
+}
+
+// Two fingers on the canvas (index.html): the view zooms by `factor` about the fingers' middle and moves with it
+// from (x0, y0) to (x1, y1), canvas pixels.
+EMSCRIPTEN_KEEPALIVE void essi_pinch(double x0, double y0, double x1, double y1, double factor) {
+    App* app = App::instance();
+    if (!app || !(factor > 0) || !std::isfinite(factor)) return;
+    app->view().pan_by(x1 - x0, y1 - y0);
+    app->view().zoom_at(x1, y1, factor);
 }
 
 // The examples the server offers: a JSON array of names (essi serve's /examples/index.json).
