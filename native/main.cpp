@@ -35,6 +35,7 @@
 #include "file_io.hpp"
 #include "pipelined_check.hpp"
 #include "essi/report_json.hpp"
+#include "essi/diff.hpp"
 #include "essi/text_report.hpp"
 
 #ifndef ESSIKIT_VERSION
@@ -425,6 +426,21 @@ int run_trace(const std::string& path, const std::string& profile_arg, const std
     return finish(errors ? kExitTapeErrors : kExitOk);
 }
 
+// essi diff A B: two revisions compared contour by contour (essi/diff.hpp). Exit 0 when they cut the same, 1 when
+// they differ, 2 for a usage problem or a file that cannot be read.
+int run_diff(const std::vector<std::string>& paths, const std::string& format, const std::string& profile_arg,
+             const std::string& input_arg, std::uint64_t max_size) {
+    const auto a = load_tape(paths[0], profile_arg, input_arg, max_size);
+    const auto b = a ? load_tape(paths[1], profile_arg, input_arg, max_size) : nullptr;
+    if (!a || !b) return kExitUsage;
+    const essi::TapeContours ca = essi::tape_contours(a->file.bytes, a->setup);
+    const essi::TapeContours cb = essi::tape_contours(b->file.bytes, b->setup);
+    const essi::TapeDiff d = essi::diff_contours(ca.contours, cb.contours);
+    const essi::DiffSide sa{paths[0], &ca}, sb{paths[1], &cb};
+    out(format == "json" ? essi::diff_json(sa, sb, d) : essi::diff_text(sa, sb, d));
+    return finish(d.same() ? kExitOk : kExitTapeErrors);
+}
+
 int run_profile_show(const std::string& arg) {
     const auto profile = resolve_profile(arg);
     if (!profile) return kExitUsage;
@@ -517,6 +533,14 @@ int main(int argc, char** argv) {
     add_profile_option(stats);
     add_max_size_option(stats, max_size);
     stats->add_option("PATH", paths, "Tape files ('-' reads standard input)")->required();
+
+    std::vector<std::string> diff_paths;
+    CLI::App* diff = app.add_subcommand("diff", "Compare two revisions of a tape: contours same, moved, changed, "
+                                                "removed, added, and the statistics before and after");
+    add_format_option(diff);
+    add_profile_option(diff);
+    add_max_size_option(diff, max_size);
+    diff->add_option("A B", diff_paths, "The two tape files")->required()->expected(2);
 
     CLI::App* trace = app.add_subcommand("trace", "Print the motion stream of a tape, one record a line");
     add_profile_option(trace);
@@ -626,6 +650,7 @@ int main(int argc, char** argv) {
     if (*trace)
         return run_trace(trace_path, profile_arg, input_arg, max_size, trace_decimals, trace_view);
     if (*render) return run_render(render_opts);
+    if (*diff) return run_diff(diff_paths, format, profile_arg, input_arg, max_size);
     if (*convert) return run_convert(convert_opts);
     if (*show) return run_profile_show(show_arg);
     if (*list) return run_profile_list();

@@ -25,9 +25,12 @@ private:
         const Units base = options_.absolute ? Units{} : position();
         return word(p.x - base.x) + word(p.y - base.y);
     }
-    void line(const MotionRecord&, Units end) override { block(point(end)); }
+    bool writes_head_addresses() const override { return true; }
+    // Head 2's motions with its address (ISO 3.2); head 1's need none, in 3-axis mode too.
+    std::string head() const { return head_two() ? "2" : ""; }
+    void line(const MotionRecord&, Units end) override { block(head() + point(end)); }
     void arc(const MotionRecord& m, Units end, Units centre) override {
-        block(point(end) + point(centre) + (m.ccw ? "+" : "-"));  // TC: '+' counter-clockwise
+        block(head() + point(end) + point(centre) + (m.ccw ? "+" : "-"));  // TC: '+' counter-clockwise
     }
     void comment(const std::string& text) override {
         block(std::to_string(fn::kIgnoreOn));

@@ -105,10 +105,20 @@ void ProgramWriter::on_motion(const MotionRecord& m) {
         for (const MotionRecord& a : arcs) on_motion(a);
         return;
     }
+    head_ = m.head == 2 ? 1 : 0;
+    if (head_two() && !writes_head_addresses()) {
+        if (!head_two_left_out_)
+            warn(DiagCode::W501_NoCounterpart, m.line,
+                 "head 2's motions (a 3-axis tape, ISO 3.2) have no counterpart in " +
+                     std::string(options_.to == OutputFormat::Gcode ? "G-code" : "EIA") +
+                     ": they are left out (head 1's program is written)");
+        head_two_left_out_ = true;
+        return;
+    }
     const Units end = to_units(m.end, m.line);
     if (m.curve == CurveKind::Arc) arc(m, end, to_units(m.centre, m.line));
     else line(m, end);
-    pos_ = end;
+    pos_[head_] = end;
 }
 
 void ProgramWriter::on_event(const MachineEvent& e) {

@@ -47,7 +47,12 @@ protected:
     // W501 for function `code` at `line`, with its name from the source dialect; the comment text "ESSI 45:
     // Torch head lower".
     std::string no_counterpart(const MachineEvent& e, std::string_view target);
-    [[nodiscard]] Units position() const { return pos_; }
+    // Where the current motion's head is (each head keeps its own position: docs/semantics.md §2).
+    [[nodiscard]] Units position() const { return pos_[head_]; }
+    // The current motion is head 2's (a 3-axis tape, ISO 3.2).
+    [[nodiscard]] bool head_two() const { return head_ == 1; }
+    // Whether the target has head addresses (ESSI's leading 1 or 2): else head 2's motions are left out, with W501.
+    [[nodiscard]] virtual bool writes_head_addresses() const { return false; }
 
     const Profile& source_;
     const ConvertOptions& options_;
@@ -61,7 +66,9 @@ public:
 private:
     Units to_units(Point mm, std::uint32_t line);
     std::vector<Diagnostic>& diagnostics_;
-    Units pos_;                       // where the last motion ended (target units)
+    Units pos_[2] = {};               // where each head's last motion ended (target units)
+    int head_ = 0;                    // the current motion's head: 0 head 1, 1 head 2
+    bool head_two_left_out_ = false;  // head 2's motions were left out (one W501)
     std::size_t rounded_ = 0;         // coordinates rounded to the target's unit
     std::uint32_t rounded_line_ = 0;  // the first one's line
     bool ended_ = false;              // the end of the program was written

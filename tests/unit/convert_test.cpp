@@ -51,6 +51,9 @@ void expect_same_stream(const Stream& a, const Stream& b, double tol, const std:
         ASSERT_EQ(x.kind, y.kind) << "motion " << i;
         ASSERT_EQ(x.tools, y.tools) << "motion " << i;
         ASSERT_EQ(x.curve, y.curve) << "motion " << i;
+        ASSERT_EQ(x.head, y.head) << "motion " << i;  // (a 3-axis tape's head 2 keeps its address)
+        ASSERT_NEAR(x.start.x, y.start.x, tol) << "motion " << i;
+        ASSERT_NEAR(x.start.y, y.start.y, tol) << "motion " << i;
         ASSERT_NEAR(x.end.x, y.end.x, tol) << "motion " << i;
         ASSERT_NEAR(x.end.y, y.end.y, tol) << "motion " << i;
         if (x.curve == CurveKind::Arc) {
@@ -199,4 +202,25 @@ TEST(Convert, ParabolasBecomeArcsWithinTheTolerance) {
         EXPECT_NEAR(back.motions[k].end.y, m.end.y, 1e-3);
         ++k;
     }
+}
+
+TEST(Convert, HeadTwoKeepsItsAddressInEssiAndIsSaidLeftOutOfEia) {
+    const std::string tape = "19\n1+500+500\n2+500+2500\n7\n1+1000+0\n2+1000+0\n8\n20\n64\n";
+    const TapeSetup source = setup_of(InputFormat::Essi, *builtin_profile("iso6582"));
+    ConvertOptions o;
+    o.target = source.profile;
+    o.absolute = true;
+    const ConvertResult essi = convert_tape(tape, source, o);
+    EXPECT_NE(essi.text.find("\n2+500+2500\n"), std::string::npos) << essi.text;
+    EXPECT_NE(essi.text.find("\n2+1500+2500\n"), std::string::npos) << essi.text;
+    expect_same_stream(stream_of(tape, source), stream_of(essi.text, source), 1e-9, "3-axis -> ESSI absolute");
+    o.to = OutputFormat::Eia;
+    o.target = *builtin_profile("woyda");
+    const ConvertResult eia = convert_tape(tape, source, o);
+    const auto w501 = std::find_if(eia.diagnostics.begin(), eia.diagnostics.end(), [](const Diagnostic& d) {
+        return d.code == DiagCode::W501_NoCounterpart && d.message.find("head 2") != std::string::npos;
+    });
+    ASSERT_NE(w501, eia.diagnostics.end());
+    EXPECT_NE(w501->message.find("head 2's motions"), std::string::npos) << w501->message;
+    EXPECT_EQ(eia.text.find("X250"), std::string::npos) << eia.text;  // (head 2's cut is not written as head 1's)
 }

@@ -1,0 +1,336 @@
+// Contours of a tape and the comparison of two revisions (essi/diff.hpp).
+#include "essi/diff.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "essi/interp.hpp"
+#include "essi/read.hpp"
+#include "essi/report_json.hpp"
+#include "essi/text.hpp"
+#include "essi/text_report.hpp"
+
+namespace essi {
+namespace {
+
+// Collects the contours: a run of cut (or mark) motions of one head, closed by another kind of motion, by the tool
+// going off or by the end. (Head 2 of a 3-axis tape cuts its own contours.)
+class ContourSink final : public MotionSink {
+public:
+    explicit ContourSink(std::vector<Contour>& out) : out_(out) {}
+
+    void on_motion(const MotionRecord& m) override {
+        const int h = m.head == 2 ? 1 : 0;
+        const bool tool = m.kind == MotionKind::Cut || m.kind == MotionKind::Mark;
+        if (open_[h] && (!tool || m.kind != current_[h].kind)) close(h);
+        if (!tool) return;
+        if (!open_[h]) {
+            current_[h] = Contour{};
+            current_[h].kind = m.kind;
+            current_[h].first_line = m.line;
+            current_[h].start = m.start;
+            open_[h] = true;
+        }
+        add(current_[h], m);
+    }
+    void on_event(const MachineEvent& e) override {
+        if (!(e.tools_after & (kCuttingTools | kMarkingTools))) close_all();
+    }
+    void close_all() {
+        close(0);
+        close(1);
+    }
+
+private:
+    void close(int h) {
+        if (open_[h]) out_.push_back(std::move(current_[h]));
+        open_[h] = false;
+    }
+    static void add(Contour& c, const MotionRecord& m) {
+        c.last_line = m.line;
+        c.length_mm += m.length_mm;
+        ++c.motions;
+        c.box.add(bounding_box(m));
+        const auto rel = [&](Point p) {
+            c.shape.push_back(p.x - c.start.x);
+            c.shape.push_back(p.y - c.start.y);
+        };
+        c.shape.push_back(static_cast<double>(m.curve));
+        rel(m.end);
+        if (m.curve == CurveKind::Arc) {
+            rel(m.centre);
+            c.shape.push_back(m.sweep * m.radius);  // (the arc's signed length: the sweep at the radius's scale)
+        } else if (m.curve == CurveKind::Parabola) {
+            c.shape.push_back(m.length_mm);
+        }
+    }
+
+    std::vector<Contour>& out_;
+    Contour current_[2];
+    bool open_[2] = {false, false};
+};
+
+bool same_shape(const Contour& a, const Contour& b) {
+    if (a.kind != b.kind || a.shape.size() != b.shape.size()) return false;
+    for (std::size_t i = 0; i < a.shape.size(); ++i)
+        if (std::fabs(a.shape[i] - b.shape[i]) > kDiffToleranceMm) return false;
+    return true;
+}
+
+double distance(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+bool overlap(const Box& a, const Box& b) {
+    return !a.empty && !b.empty && a.min_x <= b.max_x + kDiffToleranceMm && b.min_x <= a.max_x + kDiffToleranceMm &&
+           a.min_y <= b.max_y + kDiffToleranceMm && b.min_y <= a.max_y + kDiffToleranceMm;
+}
+
+// B's contours by their motion count and length (to 0.01 mm): the candidates of a shape are in its bucket or the
+// two beside it (a length within the tolerance may round either way).
+class ShapeIndex {
+public:
+    explicit ShapeIndex(const std::vector<Contour>& b) {
+        for (std::size_t j = 0; j < b.size(); ++j) buckets_[key(b[j], 0)].push_back(static_cast<int>(j));
+    }
+    template <class F>
+    void for_each_candidate(const Contour& a, F&& f) const {
+        for (int d : {-1, 0, 1}) {
+            const auto it = buckets_.find(key(a, d));
+            if (it != buckets_.end())
+                for (int j : it->second) f(j);
+        }
+    }
+
+private:
+    static std::pair<std::size_t, long long> key(const Contour& c, int shift) {
+        return {c.motions, std::llround(c.length_mm * 100) + shift};
+    }
+    std::map<std::pair<std::size_t, long long>, std::vector<int>> buckets_;
+};
+
+// The unmatched contour of B nearest to `a`'s start among those `fits` accepts, or -1 (a scan of B: for the
+// contours left after the shapes are matched).
+template <class Fits>
+int nearest(const Contour& a, const std::vector<Contour>& b, const std::vector<bool>& taken, Fits&& fits) {
+    int best = -1;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < b.size(); ++j) {
+        if (taken[j] || !fits(b[j])) continue;
+        const double d = distance(a.start, b[j].start);
+        if (d < best_d) {
+            best_d = d;
+            best = static_cast<int>(j);
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+TapeContours tape_contours(std::string_view bytes, const TapeSetup& setup) {
+    TapeContours t;
+    ContourSink sink(t.contours);
+    TapeChecker checker(bytes, setup.profile, &sink);
+    TapeReader reader(bytes, setup.profile, setup.format);
+    Tape chunk;
+    while (reader.read_chunk(chunk, kCheckChunkBlocks)) checker.check_chunk(chunk);
+    sink.close_all();
+    t.check = checker.finish();
+    record_setup(t.check, setup);
+    return t;
+}
+
+const char* contour_change_name(ContourChange c) {
+    switch (c) {
+        case ContourChange::Same: return "same";
+        case ContourChange::Moved: return "moved";
+        case ContourChange::Changed: return "changed";
+        case ContourChange::Removed: return "removed";
+        case ContourChange::Added: return "added";
+    }
+    return "?";
+}
+
+std::size_t TapeDiff::count(ContourChange c) const {
+    return static_cast<std::size_t>(
+        std::count_if(contours.begin(), contours.end(), [&](const ContourDiff& d) { return d.change == c; }));
+}
+
+TapeDiff diff_contours(const std::vector<Contour>& a, const std::vector<Contour>& b) {
+    std::vector<ContourDiff> of_a(a.size());
+    std::vector<bool> taken(b.size(), false);
+    const ShapeIndex index(b);
+    // 1. The same shape at the same place.
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        of_a[i] = {ContourChange::Removed, static_cast<int>(i), -1, {}};
+        index.for_each_candidate(a[i], [&](int j) {
+            if (of_a[i].b >= 0 || taken[static_cast<std::size_t>(j)]) return;
+            const Contour& c = b[static_cast<std::size_t>(j)];
+            if (distance(a[i].start, c.start) <= kDiffToleranceMm && same_shape(a[i], c)) {
+                of_a[i] = {ContourChange::Same, static_cast<int>(i), j, {}};
+                taken[static_cast<std::size_t>(j)] = true;
+            }
+        });
+    }
+    // 2. The same shape elsewhere (the nearest), or another shape over the same place (the nearest): the shape
+    // elsewhere when it is no farther than the contour's own size, else the edit in place (a part edited is
+    // likelier than an identical one moved across the plate).
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (of_a[i].b >= 0) continue;
+        int moved = -1;
+        double moved_d = std::numeric_limits<double>::infinity();
+        index.for_each_candidate(a[i], [&](int k) {
+            const Contour& c = b[static_cast<std::size_t>(k)];
+            if (taken[static_cast<std::size_t>(k)] || !same_shape(a[i], c) || distance(a[i].start, c.start) >= moved_d) return;
+            moved_d = distance(a[i].start, c.start);
+            moved = k;
+        });
+        const int changed =
+            nearest(a[i], b, taken, [&](const Contour& c) { return c.kind == a[i].kind && overlap(a[i].box, c.box); });
+        const double size = std::hypot(a[i].box.max_x - a[i].box.min_x, a[i].box.max_y - a[i].box.min_y);
+        const bool take_moved = moved >= 0 && (changed < 0 || moved_d <= size);
+        if (!take_moved && changed < 0) continue;
+        const int j = take_moved ? moved : changed;
+        const Contour& c = b[static_cast<std::size_t>(j)];
+        of_a[i] = {take_moved ? ContourChange::Moved : ContourChange::Changed, static_cast<int>(i), j, {}};
+        if (take_moved) of_a[i].offset = {c.start.x - a[i].start.x, c.start.y - a[i].start.y};
+        taken[static_cast<std::size_t>(j)] = true;
+    }
+    TapeDiff d;
+    d.contours = std::move(of_a);
+    for (std::size_t j = 0; j < b.size(); ++j)
+        if (!taken[j]) d.contours.push_back({ContourChange::Added, -1, static_cast<int>(j), {}});
+    return d;
+}
+
+namespace {
+
+constexpr ContourChange kChanges[] = {ContourChange::Same, ContourChange::Moved, ContourChange::Changed,
+                                      ContourChange::Removed, ContourChange::Added};
+
+std::string mm3(double v) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.3f", std::fabs(v) < 5e-4 ? 0.0 : v);
+    return buf;
+}
+std::string signed_mm3(double v) { return (v >= 0 ? "+" : "") + mm3(v); }
+
+std::string lines_text(const Contour& c) {
+    return c.first_line == c.last_line ? "line " + std::to_string(c.first_line)
+                                       : "lines " + std::to_string(c.first_line) + "-" + std::to_string(c.last_line);
+}
+
+std::string contour_text(const Contour& c) {
+    return std::string(motion_kind_name(c.kind)) + " " + mm3(c.length_mm) + " mm from (" + mm3(c.start.x) + ", " +
+           mm3(c.start.y) + ")";
+}
+
+std::string side_text(const char* label, const DiffSide& s) {
+    return std::string(label) + ": " + display_text(s.name) + " (profile " + s.tape->check.profile + "): " +
+           std::to_string(s.tape->contours.size()) + " contours, cut " + mm3(s.tape->check.stats.cut_length_mm) +
+           " mm, " + std::to_string(s.tape->check.stats.pierces) + " pierces, time " +
+           format_duration(s.tape->check.stats.estimated_time_s) + "\n";
+}
+
+// The statistics a diff compares: (name, A's, B's, a count or a length).
+struct StatChange {
+    const char* name;
+    double a, b;
+    bool count = false;
+};
+std::vector<StatChange> stat_changes(const Stats& a, const Stats& b) {
+    return {{"cut_length_mm", a.cut_length_mm, b.cut_length_mm},
+            {"mark_length_mm", a.mark_length_mm, b.mark_length_mm},
+            {"travel_length_mm", a.travel_length_mm, b.travel_length_mm},
+            {"pierces", static_cast<double>(a.pierces), static_cast<double>(b.pierces), true},
+            {"motions", static_cast<double>(a.motions), static_cast<double>(b.motions), true},
+            {"estimated_time_s", a.estimated_time_s, b.estimated_time_s}};
+}
+
+nlohmann::json contour_json(const Contour& c) {
+    return {{"kind", motion_kind_name(c.kind)},
+            {"first_line", c.first_line},
+            {"last_line", c.last_line},
+            {"start_mm", {round_for_json(c.start.x), round_for_json(c.start.y)}},
+            {"length_mm", round_for_json(c.length_mm)},
+            {"motions", c.motions}};
+}
+
+nlohmann::json side_json(const DiffSide& s) {
+    return {{"path", display_text(s.name)},
+            {"profile", s.tape->check.profile},
+            {"contours", s.tape->contours.size()},
+            {"errors", s.tape->check.count(Severity::Error)},
+            {"stats", stats_to_json(s.tape->check.stats)}};
+}
+
+}  // namespace
+
+std::string diff_text(const DiffSide& a, const DiffSide& b, const TapeDiff& d) {
+    std::string s = side_text("A", a) + side_text("B", b);
+    const auto& ca = a.tape->contours;
+    const auto& cb = b.tape->contours;
+    for (const ContourDiff& c : d.contours) {
+        const char* name = contour_change_name(c.change);
+        switch (c.change) {
+            case ContourChange::Same: break;
+            case ContourChange::Moved:
+                s += std::string(name) + ": A " + lines_text(ca[static_cast<std::size_t>(c.a)]) + " -> B " +
+                     lines_text(cb[static_cast<std::size_t>(c.b)]) + ", by (" + signed_mm3(c.offset.x) + ", " +
+                     signed_mm3(c.offset.y) + ") mm: " + contour_text(ca[static_cast<std::size_t>(c.a)]) + "\n";
+                break;
+            case ContourChange::Changed:
+                s += std::string(name) + ": A " + lines_text(ca[static_cast<std::size_t>(c.a)]) + " -> B " +
+                     lines_text(cb[static_cast<std::size_t>(c.b)]) + ": " + contour_text(ca[static_cast<std::size_t>(c.a)]) +
+                     " -> " + contour_text(cb[static_cast<std::size_t>(c.b)]) + "\n";
+                break;
+            case ContourChange::Removed:
+                s += std::string(name) + ": A " + lines_text(ca[static_cast<std::size_t>(c.a)]) + ": " +
+                     contour_text(ca[static_cast<std::size_t>(c.a)]) + "\n";
+                break;
+            case ContourChange::Added:
+                s += std::string(name) + ": B " + lines_text(cb[static_cast<std::size_t>(c.b)]) + ": " +
+                     contour_text(cb[static_cast<std::size_t>(c.b)]) + "\n";
+                break;
+        }
+    }
+    std::string counts;
+    for (ContourChange c : kChanges)
+        counts += (counts.empty() ? "" : ", ") + std::to_string(d.count(c)) + " " + contour_change_name(c);
+    s += "contours: " + counts + "\n";
+    std::string stats;
+    for (const StatChange& c : stat_changes(a.tape->check.stats, b.tape->check.stats)) {
+        if (std::fabs(c.b - c.a) < 5e-4) continue;
+        const auto value = [&](double v) { return c.count ? number_text(v) : mm3(v); };
+        stats += std::string(stats.empty() ? "" : ", ") + c.name + " " + value(c.a) + " -> " + value(c.b) + " (" +
+                 (c.b >= c.a ? "+" : "") + value(c.b - c.a) + ")";
+    }
+    s += "statistics: " + (stats.empty() ? std::string("the same") : stats) + "\n";
+    return s;
+}
+
+std::string diff_json(const DiffSide& a, const DiffSide& b, const TapeDiff& d) {
+    nlohmann::json summary = nlohmann::json::object();
+    for (ContourChange c : kChanges) summary[contour_change_name(c)] = d.count(c);
+    nlohmann::json contours = nlohmann::json::array();
+    for (const ContourDiff& c : d.contours) {
+        if (c.change == ContourChange::Same) continue;
+        nlohmann::json j = {{"change", contour_change_name(c.change)}};
+        j["a"] = c.a >= 0 ? contour_json(a.tape->contours[static_cast<std::size_t>(c.a)]) : nlohmann::json();
+        j["b"] = c.b >= 0 ? contour_json(b.tape->contours[static_cast<std::size_t>(c.b)]) : nlohmann::json();
+        if (c.change == ContourChange::Moved) j["offset_mm"] = {round_for_json(c.offset.x), round_for_json(c.offset.y)};
+        contours.push_back(std::move(j));
+    }
+    nlohmann::json stats = nlohmann::json::object();
+    for (const StatChange& c : stat_changes(a.tape->check.stats, b.tape->check.stats))
+        stats[c.name] = {{"a", round_for_json(c.a)}, {"b", round_for_json(c.b)}, {"change", round_for_json(c.b - c.a)}};
+    nlohmann::json out = {{"a", side_json(a)}, {"b", side_json(b)}, {"same", d.same()}, {"summary", summary},
+                          {"contours", contours}, {"stats_change", stats}};
+    return out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace essi
