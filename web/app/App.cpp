@@ -39,6 +39,26 @@ std::string banner_for(const Document& d) {
     return "";
 }
 
+// The side panels as one setting: {"left", "right", "left_shown", "right_shown"} (one line).
+panels::PanelLayout layout_from_setting(const std::optional<std::string>& text) {
+    panels::PanelLayout l;
+    if (!text) return l;
+    const nlohmann::json j = nlohmann::json::parse(*text, nullptr, false);
+    if (!j.is_object()) return l;
+    const auto width = [&](const char* k, float& to) {
+        if (j.contains(k) && j[k].is_number() && j[k].get<double>() >= panels::kMinPanelWidth && j[k].get<double>() <= 4000)
+            to = j[k].get<float>();
+    };
+    width("left", l.left);
+    width("right", l.right);
+    if (j.contains("left_shown") && j["left_shown"].is_boolean()) l.left_shown = j["left_shown"].get<bool>();
+    if (j.contains("right_shown") && j["right_shown"].is_boolean()) l.right_shown = j["right_shown"].get<bool>();
+    return l;
+}
+std::string layout_setting(const panels::PanelLayout& l) {
+    return nlohmann::json{{"left", l.left}, {"right", l.right}, {"left_shown", l.left_shown}, {"right_shown", l.right_shown}}.dump();
+}
+
 // The recent names as one setting: a JSON array (one line).
 std::vector<std::string> recent_from_setting(const std::optional<std::string>& text) {
     std::vector<std::string> names;
@@ -55,6 +75,7 @@ App::App(GLFWwindow* window) : window_(window) {
     g_app = this;
     view_.turns = ((platform::load_setting(kOrientationSetting).value_or(0) % 4) + 4) % 4;  // (kept across sessions)
     ui_.recent = recent_from_setting(platform::load_text_setting(kRecentSetting));
+    ui_.layout = layout_from_setting(platform::load_text_setting(kLayoutSetting));
     machine_coordinates_ = platform::load_setting(kCoordinatesSetting).value_or(0) == 1;
 }
 
@@ -154,6 +175,16 @@ void App::link_problem(std::string text) { ui_.link_problem = std::move(text); }
 
 void App::set_examples(std::vector<std::string> names) { ui_.examples = std::move(names); }
 
+void App::set_layout(const panels::PanelLayout& layout) {
+    panels::PanelLayout l = layout;
+    if (!(l.left > 0)) l.left = ui_.layout.left;
+    if (!(l.right > 0)) l.right = ui_.layout.right;
+    l.left = std::max(l.left, panels::kMinPanelWidth);
+    l.right = std::max(l.right, panels::kMinPanelWidth);
+    ui_.layout = l;
+    platform::save_text_setting(kLayoutSetting, layout_setting(l));
+}
+
 
 void App::read(std::string name, std::string bytes, std::optional<ViewRequest> view) {
     // "auto": the dialect the tape's evidence shows (essi/dialect.hpp), as `essi check --profile auto`.
@@ -227,7 +258,11 @@ float App::framebuffer_scale() const {
 // ---------------------------------------------------------------------------------------------------------
 void App::frame() {
     ImGuiIO& io = ImGui::GetIO();
-    view_.area = panels::drawing_area(io.DisplaySize.x, io.DisplaySize.y);
+    if (ui_.layout_changed && !ImGui::IsMouseDown(0)) {  // (a drag of a panel's edge is saved once, at its end)
+        ui_.layout_changed = false;
+        platform::save_text_setting(kLayoutSetting, layout_setting(ui_.layout));
+    }
+    view_.area = panels::drawing_area(io.DisplaySize.x, io.DisplaySize.y, ui_.layout);
     step_loading();
     view_.plate = coordinates().plate();
     if (const Document* d = document(); d && playback_.playing) {

@@ -19,6 +19,7 @@
 #include "app/SceneAssembly.hpp"
 #include "app/Selection.hpp"
 #include "app/View.hpp"
+#include "app/panels/Panels.hpp"
 #include "essi/report_json.hpp"
 #include "essi/share_link.hpp"
 #include "render/Renderer.hpp"
@@ -45,6 +46,8 @@ struct UiState {
     std::string copied;         // the last text copied to the clipboard (state().copied)
     std::vector<std::string> examples;  // the tapes the server offers (the start screen), none natively
     std::vector<std::string> recent;    // the names of the last tapes opened (newest first), kept across sessions
+    panels::PanelLayout layout;         // the side panels (kept across sessions: App::save_layout)
+    bool layout_changed = false;        // by the user this frame: saved once the mouse is up
 };
 
 class App {
@@ -78,6 +81,9 @@ public:
     // The examples the server offers (their names), for the start screen.
     void set_examples(std::vector<std::string> names);
     static constexpr const char* kRecentSetting = "recent";
+    static constexpr const char* kLayoutSetting = "layout";
+    // The side panels shown or hidden, their widths (0: as they are); kept across sessions.
+    void set_layout(const panels::PanelLayout& layout);
     static constexpr std::size_t kRecentNames = 8;
     void set_profile(const std::string& name);  // loads the tape again with another profile, keeping the view
     void set_view(double x, double y, double zoom);   // machine mm, px/mm; kept until a load completes

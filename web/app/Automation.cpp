@@ -181,6 +181,8 @@ std::string App::state_json() const {
     j["copied"] = ui_.copied;
     j["examples"] = ui_.examples;
     j["recent"] = ui_.recent;
+    const panels::PanelLayout& l = ui_.layout;
+    j["layout"] = {{"left", l.left}, {"right", l.right}, {"left_shown", l.left_shown}, {"right_shown", l.right_shown}};
     j["message"] = ui_.message;
     j["kind_colors"] = json::array();
     for (const Rgba& c : kKindColors)

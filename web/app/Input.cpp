@@ -150,6 +150,13 @@ void Input::handle_characters(App& app) {
                 break;
             case '3': layers.kind(MotionKind::Mark) = !layers.kind(MotionKind::Mark); break;
             case '4': layers.pierces = !layers.pierces; break;
+            case '[': case ']': {  // a side panel shown or hidden
+                panels::PanelLayout l = app.ui().layout;
+                bool& shown = io.InputQueueCharacters[i] == '[' ? l.left_shown : l.right_shown;
+                shown = !shown;
+                app.set_layout(l);
+                break;
+            }
             default: break;
         }
     }

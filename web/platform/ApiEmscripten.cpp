@@ -139,6 +139,12 @@ EMSCRIPTEN_KEEPALIVE void essi_pinch(double x0, double y0, double x1, double y1,
     app->view().zoom_at(x1, y1, factor);
 }
 
+// The side panels shown or hidden, and their widths (0: as they are); kept across sessions.
+EMSCRIPTEN_KEEPALIVE void essi_set_layout(int left_shown, int right_shown, double left, double right) {
+    if (App* app = App::instance())
+        app->set_layout({static_cast<float>(left), static_cast<float>(right), left_shown != 0, right_shown != 0});
+}
+
 // The examples the server offers: a JSON array of names (essi serve's /examples/index.json).
 EMSCRIPTEN_KEEPALIVE void essi_set_examples(const char* json_names) {
     App* app = App::instance();

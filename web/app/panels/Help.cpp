@@ -20,6 +20,8 @@ constexpr const char* kShortcuts[][2] = {
     {"Left / Right", "step the playback one motion"},
     {"Home / End", "playback from the start / show everything"},
     {"1 2 3 4", "toggle cut, travel+rapid, mark, pierces"},
+    {"[ / ]", "hide or show the left / right panel (drag a panel's inner edge to resize it)"},
+    {"touch", "tap: click; one finger: pan; two fingers: zoom"},
     {"G", "toggle the grid"},
     {"S", "share link (tape and view in the URL)"},
     {"Ctrl+O", "open a tape"},

@@ -23,8 +23,26 @@ inline constexpr float kRightWidth = 470;
 inline constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                                                 ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoBackground;
 
+inline constexpr float kMinPanelWidth = 160;  // a side panel is no narrower (when shown)
+
+// The side panels as the user set them (docs/viewer.md, "Layout"): widths dragged at their inner edge, shown or
+// hidden; kept across sessions (setting "layout").
+struct PanelLayout {
+    float left = kLeftWidth, right = kRightWidth;
+    bool left_shown = true, right_shown = true;
+    friend bool operator==(const PanelLayout&, const PanelLayout&) = default;
+};
+// The panels' widths in a window `w` wide: the drawing keeps at least half of it (the panels give way in
+// proportion, down to kMinPanelWidth), a hidden panel takes nothing.
+struct PanelWidths {
+    float left = 0, right = 0;
+};
+[[nodiscard]] PanelWidths panel_widths(const PanelLayout& layout, float w);
 // The drawing area of a window of w x h pixels: what the toolbar and the side panels leave.
-[[nodiscard]] Rect drawing_area(float w, float h);
+[[nodiscard]] Rect drawing_area(float w, float h, const PanelLayout& layout);
+// Begins a side panel's window (`left` or right) at its width, resizable at its inner edge: a drag sets the
+// layout's width (App saves it once the mouse is up). False when the panel is hidden (nothing to end then).
+bool begin_side_panel(App& app, const char* name, bool left);
 // What the panels looked like with their own background (the colour the window is cleared in around the drawing).
 [[nodiscard]] Rgba panel_color();
 

@@ -136,11 +136,10 @@ void inspector(App& app) {
 }  // namespace
 
 void source_panel(App& app) {
-    ImGuiIO& io = ImGui::GetIO();
-    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - kRightWidth, kToolbarHeight));
-    ImGui::SetNextWindowSize(ImVec2(kRightWidth, io.DisplaySize.y - kToolbarHeight));
-    ImGui::Begin("Source", nullptr, kPanelFlags | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    ImGui::BeginChild("source", ImVec2(0, -kInspectorHeight), true, ImGuiWindowFlags_HorizontalScrollbar);
+    if (!begin_side_panel(app, "Source", false)) return;
+    // (the inspector a third of a short window at most: the source keeps its lines)
+    const float inspector_h = std::min(kInspectorHeight, ImGui::GetWindowHeight() / 3);
+    ImGui::BeginChild("source", ImVec2(0, -inspector_h), true, ImGuiWindowFlags_HorizontalScrollbar);
     source(app);
     ImGui::EndChild();
     ImGui::BeginChild("inspector", ImVec2(0, 0), true);

@@ -204,10 +204,7 @@ void diagnostics(App& app) {
 }  // namespace
 
 void tape_panel(App& app) {
-    ImGuiIO& io = ImGui::GetIO();
-    ImGui::SetNextWindowPos(ImVec2(0, kToolbarHeight));
-    ImGui::SetNextWindowSize(ImVec2(kLeftWidth, io.DisplaySize.y - kToolbarHeight));
-    ImGui::Begin("Tape", nullptr, kPanelFlags | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    if (!begin_side_panel(app, "Tape", true)) return;
     if (ImGui::CollapsingHeader("Reading", ImGuiTreeNodeFlags_DefaultOpen)) reading(app);
     if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) statistics(app);
     if (ImGui::CollapsingHeader("Layers", ImGuiTreeNodeFlags_DefaultOpen)) layers(app.layers(), app.document());

@@ -82,6 +82,22 @@ void export_menu(App& app) {
     ImGui::EndPopup();
 }
 
+// The side panels: shown or hidden ([ and ]), the widths back to their defaults.
+void layout_menu(App& app) {
+    if (ImGui::Button("Panels")) ImGui::OpenPopup("panels");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show or hide the side panels ([ and ]); drag a panel's inner edge to resize it");
+    if (!ImGui::BeginPopup("panels")) return;
+    PanelLayout l = app.ui().layout;
+    bool changed = ImGui::Checkbox("Tape panel (left)  [", &l.left_shown);
+    changed |= ImGui::Checkbox("Source and inspector (right)  ]", &l.right_shown);
+    if (ImGui::Selectable("Default layout")) {
+        l = PanelLayout{};
+        changed = true;
+    }
+    if (changed) app.set_layout(l);
+    ImGui::EndPopup();
+}
+
 // The tape's name and "ok" or its error and warning counts.
 void verdict(const Document& doc) {
     const std::size_t e = doc.count(Severity::Error), w = doc.count(Severity::Warning);
@@ -113,6 +129,8 @@ void toolbar(App& app) {
     if (ImGui::Checkbox("Measure (M)", &measure.active)) measure.points = 0;
     ImGui::SameLine();
     if (ImGui::Button("Help (H)")) app.ui().help = !app.ui().help;
+    ImGui::SameLine();
+    layout_menu(app);
     ImGui::SameLine();
     profile_combo(app);
     ImGui::SameLine();
