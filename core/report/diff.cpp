@@ -22,7 +22,7 @@ namespace {
 // going off or by the end. (Head 2 of a 3-axis tape cuts its own contours.)
 class ContourSink final : public MotionSink {
 public:
-    explicit ContourSink(std::vector<Contour>& out) : out_(out) {}
+    ContourSink(std::vector<Contour>& out, bool keep_paths) : out_(out), keep_paths_(keep_paths) {}
 
     void on_motion(const MotionRecord& m) override {
         const int h = m.head == 2 ? 1 : 0;
@@ -37,6 +37,7 @@ public:
             open_[h] = true;
         }
         add(current_[h], m);
+        if (keep_paths_) current_[h].path.push_back(m);
     }
     void on_event(const MachineEvent& e) override {
         if (!(e.tools_after & (kCuttingTools | kMarkingTools))) close_all();
@@ -71,6 +72,7 @@ private:
     }
 
     std::vector<Contour>& out_;
+    bool keep_paths_;
     Contour current_[2];
     bool open_[2] = {false, false};
 };
@@ -131,9 +133,9 @@ int nearest(const Contour& a, const std::vector<Contour>& b, const std::vector<b
 
 }  // namespace
 
-TapeContours tape_contours(std::string_view bytes, const TapeSetup& setup) {
+TapeContours tape_contours(std::string_view bytes, const TapeSetup& setup, bool keep_paths) {
     TapeContours t;
-    ContourSink sink(t.contours);
+    ContourSink sink(t.contours, keep_paths);
     TapeChecker checker(bytes, setup.profile, &sink);
     TapeReader reader(bytes, setup.profile, setup.format);
     Tape chunk;

@@ -704,6 +704,35 @@ test('any screen: at 1024x600 the drawing keeps half the width; panels hide, res
   await page.close();
 });
 
+test('compare two revisions: B over A in its own colour, the differences listed and shown', async () => {
+  const page = await newPage();
+  const a = '7\n+1000+0\n+0+1000\n-1000+0\n+0-1000\n8\n5\n+2000+0\n6\n7\n+500+0\n+0+500\n-500+0\n+0-500\n8\n64\n';
+  // B: a comment before (every line renumbered), the small square 5 mm to the right
+  const b = '3\nREV B\n4\n7\n+1000+0\n+0+1000\n-1000+0\n+0-1000\n8\n5\n+2050+0\n6\n7\n+500+0\n+0+500\n-500+0\n+0-500\n8\n64\n';
+  await page.evaluate((t) => essikit.load('rev_a.esi', t), a);
+  const s = await page.evaluate((t) => essikit.compare('rev_b.esi', t), b);
+  assert.equal(s.name, 'rev_a.esi');  // (A stays loaded)
+  assert.equal(s.compare.name, 'rev_b.esi');
+  assert.equal(s.compare.summary, '1 same, 1 moved, 0 changed, 0 removed, 0 added');
+  assert.deepEqual(s.compare.differences, [{ change: 'moved', a_lines: [11, 14], b_lines: [14, 17], offset_mm: [5, 0] }]);
+  // the difference shown: A's contour selected and in view; B's moved square drawn in B's colour
+  await page.evaluate(() => essikit.showDifference(0));
+  await nextFrames(page, 3);
+  const st = await page.evaluate(() => essikit.state());
+  assert.equal(st.selection.line, 11);
+  await page.mouse.move(5, 890);
+  await nextFrames(page, 3);
+  const at = await pixels(page, await page.screenshot({ path: path.join(shots, 'compare.png') }));
+  const p = await page.evaluate(([x, y]) => essikit.project(x, y), [255, 25]);  // B's square's right edge
+  const hits = [];
+  for (let dx = -2; dx <= 2; ++dx) hits.push(at(p.x + dx, p.y));
+  assert.ok(hits.some((c) => c[2] > 200 && c[1] > 150 && c[0] < 150), `no B colour at B's edge: ${JSON.stringify(hits)}`);
+  // the mode ends; a new tape loaded ends it too
+  await page.evaluate(() => essikit.endCompare());
+  assert.equal((await page.evaluate(() => essikit.state())).compare, null);
+  await page.close();
+});
+
 test('measure: distance and dx/dy between two points, snapping to end points and arc centres', async () => {
   const page = await newPage();
   const { motions } = await loadExample(page, 'plate_holes.esi');

@@ -134,6 +134,8 @@ bool App::use_profile_file(const std::string& name, const std::string& bytes) {
 
 void App::load(std::string name, std::string bytes, std::optional<ViewRequest> view) {
     if (use_profile_file(name, bytes)) return;
+    if (compare_next_ && document()) return compare_with(std::move(name), bytes);
+    compare_.reset();  // (a new tape: a comparison was of the one before)
     input_format_.reset();  // (a new tape: its content says what it is)
     ui_.link_problem.clear();
     read(std::move(name), std::move(bytes), view);
@@ -172,6 +174,36 @@ void App::use_link_profile(const ShareLink& link) {
 }
 
 void App::link_problem(std::string text) { ui_.link_problem = std::move(text); }
+
+void App::begin_compare() {
+    const Document* d = document();
+    if (!d) return notify("Load a tape first, then the revision to compare it with.");
+    compare_next_ = true;
+    notify("Drop or open the other revision of " + display_text(d->name) + " to compare it.");
+}
+
+void App::compare_with(std::string name, const std::string& bytes) {
+    compare_next_ = false;
+    const Document* d = document();
+    if (!d) return;
+    compare_ = make_compare(*d, profile_name_ == kAutoProfile, std::move(name), bytes);
+    notify("Compared with " + display_text(compare_->name) + ": " + compare_->summary + ".");
+}
+
+void App::end_compare() {
+    compare_.reset();
+    compare_next_ = false;
+}
+
+void App::show_contour(std::size_t index, bool of_b) {
+    if (!compare_) return;
+    const auto& contours = of_b ? compare_->b.contours : compare_->a.contours;
+    if (index >= contours.size()) return;
+    const Contour& c = contours[index];
+    if (!of_b) select_line(c.first_line, false);
+    const Document* d = document();
+    if (d) view_.fit(c.box, d->origin, 80);
+}
 
 void App::set_examples(std::vector<std::string> names) { ui_.examples = std::move(names); }
 

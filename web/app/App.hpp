@@ -6,10 +6,12 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "app/Compare.hpp"
 #include "app/Coordinates.hpp"
 #include "app/Document.hpp"
 #include "app/Input.hpp"
@@ -78,6 +80,15 @@ public:
     void load_shared(std::string name, std::string bytes, const ShareLink& link);
     // A share link that could not be opened: says why, over the start screen.
     void link_problem(std::string text);
+    // Compare mode: the next tape opened (dropped, Open..., essikit.compare) is compared with this one instead of
+    // replacing it (Compare.hpp); end_compare leaves the mode.
+    void begin_compare();
+    void compare_with(std::string name, const std::string& bytes);
+    void end_compare();
+    [[nodiscard]] const Compare* compare() const { return compare_.get(); }
+    [[nodiscard]] bool compare_pending() const { return compare_next_; }
+    // Shows contour `index` of A (or of B: `of_b`): its lines selected, the view on it.
+    void show_contour(std::size_t index, bool of_b);
     // The examples the server offers (their names), for the start screen.
     void set_examples(std::vector<std::string> names);
     static constexpr const char* kRecentSetting = "recent";
@@ -162,6 +173,8 @@ private:
     std::string profile_name_ = std::string(kAutoProfile);  // a built-in profile, the dropped one, or "auto"
     std::optional<Profile> dropped_profile_;  // a profile file dropped on the page (its name is a choice too)
     std::optional<InputFormat> input_format_;  // the format a share link said the tape was read as (else the content's)
+    std::unique_ptr<Compare> compare_;         // compare mode: the other revision and the differences
+    bool compare_next_ = false;                // the next tape opened is the other revision
     bool use_profile_file(const std::string& name, const std::string& bytes);
     void read(std::string name, std::string bytes, std::optional<ViewRequest> view);  // with the profile and format chosen
     void use_link_profile(const ShareLink& link);

@@ -181,6 +181,21 @@ std::string App::state_json() const {
     j["copied"] = ui_.copied;
     j["examples"] = ui_.examples;
     j["recent"] = ui_.recent;
+    if (compare_) {
+        json diffs = json::array();
+        for (const ContourDiff& d : compare_->diff.contours) {
+            if (d.change == ContourChange::Same) continue;
+            const auto lines = [](const Contour& c) { return json::array({c.first_line, c.last_line}); };
+            diffs.push_back({{"change", contour_change_name(d.change)},
+                             {"a_lines", d.a >= 0 ? lines(compare_->a.contours[static_cast<std::size_t>(d.a)]) : json()},
+                             {"b_lines", d.b >= 0 ? lines(compare_->b.contours[static_cast<std::size_t>(d.b)]) : json()},
+                             {"offset_mm", {d.offset.x, d.offset.y}}});
+        }
+        j["compare"] = {{"name", compare_->name}, {"summary", compare_->summary}, {"differences", diffs}};
+    } else {
+        j["compare"] = nullptr;
+    }
+    j["compare_pending"] = compare_next_;
     const panels::PanelLayout& l = ui_.layout;
     j["layout"] = {{"left", l.left}, {"right", l.right}, {"left_shown", l.left_shown}, {"right_shown", l.right_shown}};
     j["message"] = ui_.message;

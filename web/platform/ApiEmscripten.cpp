@@ -145,6 +145,25 @@ EMSCRIPTEN_KEEPALIVE void essi_set_layout(int left_shown, int right_shown, doubl
         app->set_layout({static_cast<float>(left), static_cast<float>(right), left_shown != 0, right_shown != 0});
 }
 
+// Compare mode: the tape in the load buffer (essi_load_buffer) is compared with the loaded one (essikit.compare);
+// essi_end_compare leaves the mode; essi_show_difference shows the k-th difference's contour.
+EMSCRIPTEN_KEEPALIVE void essi_compare_commit(const char* name) {
+    if (App* app = App::instance()) app->compare_with(name ? name : "B", g_pending);
+    g_pending = std::string();
+}
+EMSCRIPTEN_KEEPALIVE void essi_end_compare() {
+    if (App* app = App::instance()) app->end_compare();
+}
+EMSCRIPTEN_KEEPALIVE void essi_show_difference(int k) {
+    App* app = App::instance();
+    if (!app || !app->compare() || k < 0) return;
+    for (const essi::ContourDiff& d : app->compare()->diff.contours) {
+        if (d.change == essi::ContourChange::Same || k-- > 0) continue;
+        app->show_contour(static_cast<std::size_t>(d.a >= 0 ? d.a : d.b), d.a < 0);
+        return;
+    }
+}
+
 // The examples the server offers: a JSON array of names (essi serve's /examples/index.json).
 EMSCRIPTEN_KEEPALIVE void essi_set_examples(const char* json_names) {
     App* app = App::instance();

@@ -34,6 +34,7 @@ struct Contour {
     double length_mm = 0;
     std::size_t motions = 0;
     std::vector<double> shape;  // the motions relative to the start: x, y of each end, arc centre, sweep
+    std::vector<MotionRecord> path;  // its motions, when asked for (tape_contours' keep_paths: to draw them)
 };
 
 // The contours of a tape as `setup` reads it (its check's result beside them).
@@ -41,7 +42,7 @@ struct TapeContours {
     CheckResult check;
     std::vector<Contour> contours;
 };
-[[nodiscard]] TapeContours tape_contours(std::string_view bytes, const TapeSetup& setup);
+[[nodiscard]] TapeContours tape_contours(std::string_view bytes, const TapeSetup& setup, bool keep_paths = false);
 
 enum class ContourChange : std::uint8_t { Same, Moved, Changed, Removed, Added };
 [[nodiscard]] const char* contour_change_name(ContourChange c);  // "same", "moved", "changed", "removed", "added"

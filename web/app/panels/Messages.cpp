@@ -120,6 +120,7 @@ void messages(App& app) {
     else if (!ui.banner.empty()) problem(*doc, ui.banner, a, centre);
     if (ui.share_popup) share_popup(ui, a, centre);
     if (!ui.link_problem.empty()) link_problem(ui, a, centre);
+    compare_window(app);
 }
 
 }  // namespace essi::viewer::panels

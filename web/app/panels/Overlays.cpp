@@ -159,6 +159,7 @@ void overlays(App& app) {
     const Coordinates cs = app.coordinates();
     if (app.layers().grid) grid_labels(dl, view, cs, o);
     if (doc && app.layers().table) table_and_plate(dl, *doc, view, o);
+    compare_overlay(dl, app);
     const Selection& sel = app.selection();
     if (doc && (sel.motion != Selection::npos || sel.line > 0)) selection_arrows(dl, *doc, sel, view);
     if (app.input().measure.active) measure(dl, doc, app.input().measure, view, cs, o);

@@ -51,6 +51,9 @@ void tape_panel(App& app);
 void source_panel(App& app);
 void overlays(App& app);
 void messages(App& app);
+// Compare mode (ComparePanel.cpp): the differences' window, and B's contours over the drawing.
+void compare_window(App& app);
+void compare_overlay(ImDrawList* dl, App& app);
 void help(App& app);
 
 }  // namespace essi::viewer::panels

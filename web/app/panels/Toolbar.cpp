@@ -132,6 +132,13 @@ void toolbar(App& app) {
     ImGui::SameLine();
     layout_menu(app);
     ImGui::SameLine();
+    if (app.compare()) {
+        if (ImGui::Button("End compare")) app.end_compare();
+    } else if (ImGui::Button(app.compare_pending() ? "Compare: drop B" : "Compare...")) {
+        app.begin_compare();
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Compare this tape with another revision: drop or open it after this");
+    ImGui::SameLine();
     profile_combo(app);
     ImGui::SameLine();
     orientation_combo(app);

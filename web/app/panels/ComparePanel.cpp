@@ -1,0 +1,96 @@
+// Compare mode's window and drawing (docs/viewer.md, "Compare two revisions"): the differences listed, each a
+// click from its contour, and B's contours drawn over the tape in their own colour.
+#include <algorithm>
+
+#include "app/App.hpp"
+#include "app/panels/Panels.hpp"
+#include "app/panels/UiText.hpp"
+
+namespace essi::viewer::panels {
+namespace {
+
+constexpr ImU32 kSameColor = IM_COL32(80, 220, 255, 70);     // B's contours that are the same: a faint cyan
+constexpr ImU32 kBColor = IM_COL32(80, 220, 255, 255);       // B's that differ
+constexpr ImU32 kAColor = IM_COL32(255, 70, 90, 200);        // A's that differ (removed, changed, moved from)
+constexpr std::size_t kMaxSamePoints = 200000;               // B's same contours drawn up to this many points
+
+void polyline(ImDrawList* dl, const View& view, Point o, const std::vector<Point>& pts, ImU32 colour, float width) {
+    if (pts.size() < 2) return;
+    std::vector<ImVec2> px;
+    px.reserve(pts.size());
+    for (const Point& p : pts) {
+        const Point s = view.to_screen({p.x - o.x, p.y - o.y});
+        px.emplace_back(static_cast<float>(s.x), static_cast<float>(s.y));
+    }
+    dl->AddPolyline(px.data(), static_cast<int>(px.size()), colour, ImDrawFlags_None, width);
+}
+
+std::string lines_of(const Contour& c) {
+    return c.first_line == c.last_line ? fmt("%u", c.first_line) : fmt("%u-%u", c.first_line, c.last_line);
+}
+
+// One difference in words: "moved A 11-14 -> B 14-17 by (+5.000, +0.000)".
+std::string difference_text(const Compare& c, const ContourDiff& d) {
+    const char* change = contour_change_name(d.change);
+    const auto a = [&] { return lines_of(c.a.contours[static_cast<std::size_t>(d.a)]); };
+    const auto b = [&] { return lines_of(c.b.contours[static_cast<std::size_t>(d.b)]); };
+    switch (d.change) {
+        case ContourChange::Moved: return fmt("%s  A %s -> B %s by (%+.3f, %+.3f)", change, a().c_str(), b().c_str(), d.offset.x, d.offset.y);
+        case ContourChange::Changed: return fmt("%s  A %s -> B %s", change, a().c_str(), b().c_str());
+        case ContourChange::Removed: return fmt("%s  A %s", change, a().c_str());
+        case ContourChange::Added: return fmt("%s  B %s", change, b().c_str());
+        case ContourChange::Same: break;
+    }
+    return change;
+}
+
+}  // namespace
+
+void compare_overlay(ImDrawList* dl, App& app) {
+    const Compare* c = app.compare();
+    if (!c) return;
+    const View& view = app.view();
+    const Point o = app.origin();
+    std::size_t points = 0;
+    for (const ContourDiff& d : c->diff.contours) {
+        if (d.change != ContourChange::Same && d.a >= 0) polyline(dl, view, o, c->a_lines[static_cast<std::size_t>(d.a)], kAColor, 3.5f);
+        if (d.b < 0) continue;
+        const auto& pts = c->b_lines[static_cast<std::size_t>(d.b)];
+        if (d.change == ContourChange::Same && (points += pts.size()) > kMaxSamePoints) continue;
+        polyline(dl, view, o, pts, d.change == ContourChange::Same ? kSameColor : kBColor, d.change == ContourChange::Same ? 1.f : 2.f);
+    }
+}
+
+void compare_window(App& app) {
+    const Compare* c = app.compare();
+    if (!c) return;
+    const Rect& a = app.view().area;
+    ImGui::SetNextWindowPos(ImVec2(a.x + a.w - 8, a.y + 8), ImGuiCond_Appearing, ImVec2(1.f, 0.f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 16, 420.f), 0), ImGuiCond_Appearing);
+    bool open = true;
+    ImGui::Begin("Compare", &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+    const Document* doc = app.document();
+    ImGui::TextWrapped("A: %s  B: %s", doc ? doc->name.c_str() : "-", c->name.c_str());
+    ImGui::TextColored(ImVec4(0.31f, 0.86f, 1, 1), "B's contours");
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1, 0.27f, 0.35f, 1), "A's that differ");
+    ImGui::TextWrapped("%s", c->summary.c_str());
+    ImGui::Separator();
+    const std::size_t rows = c->diff.contours.size() - c->diff.count(ContourChange::Same);
+    const float list_h = ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(std::max<std::size_t>(rows, 1) + 1);
+    ImGui::BeginChild("differences", ImVec2(0, std::min({list_h, 300.f, a.h / 2})));
+    int row = 0;
+    for (const ContourDiff& d : c->diff.contours) {
+        if (d.change == ContourChange::Same) continue;
+        ImGui::PushID(row++);
+        if (ImGui::Selectable(difference_text(*c, d).c_str()))
+            app.show_contour(static_cast<std::size_t>(d.a >= 0 ? d.a : d.b), d.a < 0);
+        ImGui::PopID();
+    }
+    if (row == 0) ImGui::TextColored(to_vec4(kOkColor), "They cut the same.");
+    ImGui::EndChild();
+    ImGui::End();
+    if (!open) app.end_compare();
+}
+
+}  // namespace essi::viewer::panels
