@@ -733,6 +733,32 @@ test('compare two revisions: B over A in its own colour, the differences listed 
   await page.close();
 });
 
+test('a light theme beside the dark one: the drawing, the panels and the grid light, the cuts still the cut colour; kept', async () => {
+  const page = await newPage();
+  const { motions } = await loadExample(page, 'plate_holes.esi');
+  await page.evaluate(() => essikit.setTheme('light'));
+  await page.mouse.move(5, 890);
+  await nextFrames(page, 3);
+  assert.equal((await page.evaluate(() => essikit.state())).theme, 'light');
+  const at = await pixels(page, await page.screenshot({ path: path.join(shots, 'theme-light.png') }));
+  const s = await page.evaluate(() => essikit.state());
+  const [ax, ay] = s.view.area;
+  const bg = at(ax + 3, ay + s.view.area[3] - 40);  // (an empty corner of the drawing)
+  assert.ok(bg[0] > 200 && bg[1] > 200 && bg[2] > 200, `the drawing's background is ${bg}`);
+  const panel = at(40, 880);
+  assert.ok(panel[0] > 180, `the left panel is ${panel}`);
+  const cut = motions.find((m) => m.kind === 'cut' && m.curve === 'line' && m.length_mm > 150);
+  const p = await page.evaluate(([x, y]) => essikit.project(x, y), cut.mid);
+  const hits = [];
+  for (let dy = -1; dy <= 1; ++dy) for (let dx = -1; dx <= 1; ++dx) hits.push(at(p.x + dx, p.y + dy));
+  assert.ok(hits.some((c) => c[0] > c[2] + 80 && c[0] > c[1] + 30), `no cut colour on the light drawing: ${JSON.stringify(hits)}`);
+  await page.reload();
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 30000 });
+  assert.equal((await page.evaluate(() => essikit.state())).theme, 'light');
+  await page.evaluate(() => essikit.setTheme('dark'));
+  await page.close();
+});
+
 test('measure: distance and dx/dy between two points, snapping to end points and arc centres', async () => {
   const page = await newPage();
   const { motions } = await loadExample(page, 'plate_holes.esi');

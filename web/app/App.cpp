@@ -105,12 +105,19 @@ bool App::init_graphics() {
     ImGuiIO& io = ImGui::GetIO();
     if (!io.Fonts->IsBuilt()) io.Fonts->Build();  // (ui_renderer_.init() makes the atlas unless the GPU refused it)
     io.IniFilename = nullptr;  // no imgui.ini: the layout is fixed
-    ImGui::StyleColorsDark();
+    set_light_theme(platform::load_setting(kThemeSetting).value_or(0) == 1);
+    return graphics_ok_;
+}
+
+void App::set_light_theme(bool light) {
+    if (light) ImGui::StyleColorsLight();
+    else ImGui::StyleColorsDark();
     ImGuiStyle& st = ImGui::GetStyle();
     st.WindowRounding = 0;
     st.FrameRounding = 3;
     st.WindowBorderSize = 0;
-    return graphics_ok_;
+    if (graphics_ok_) renderer_.set_theme(light ? kLightTheme : kDarkTheme);
+    platform::save_setting(kThemeSetting, light ? 1 : 0);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -309,7 +316,7 @@ void App::frame() {
     // The scene (drawn by render(), below the panels)
     int fb_w = 0, fb_h = 0;
     glfwGetFramebufferSize(window_, &fb_w, &fb_h);
-    const SceneInputs in{view_,     fb_w,      fb_h,       framebuffer_scale(), panels::panel_color(),
+    const SceneInputs in{view_,     fb_w,      fb_h,       framebuffer_scale(), panels::panel_color(renderer_.theme().background),
                          layers_,   playback_, selection_, load_,           coordinates().shown(origin())};
     if (scene_.prepare(in, renderer_, graphics_ok_)) load_.note_drawn(scene_.tape_drawn());
 }

@@ -93,6 +93,10 @@ public:
     void set_examples(std::vector<std::string> names);
     static constexpr const char* kRecentSetting = "recent";
     static constexpr const char* kLayoutSetting = "layout";
+    // The light theme beside the dark one (the drawing's background, the grid, the panels); kept across sessions.
+    void set_light_theme(bool light);
+    [[nodiscard]] bool light_theme() const { return renderer_.theme().light; }
+    static constexpr const char* kThemeSetting = "theme";
     // The side panels shown or hidden, their widths (0: as they are); kept across sessions.
     void set_layout(const panels::PanelLayout& layout);
     static constexpr std::size_t kRecentNames = 8;

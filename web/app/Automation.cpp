@@ -196,6 +196,7 @@ std::string App::state_json() const {
         j["compare"] = nullptr;
     }
     j["compare_pending"] = compare_next_;
+    j["theme"] = light_theme() ? "light" : "dark";
     const panels::PanelLayout& l = ui_.layout;
     j["layout"] = {{"left", l.left}, {"right", l.right}, {"left_shown", l.left_shown}, {"right_shown", l.right_shown}};
     j["message"] = ui_.message;

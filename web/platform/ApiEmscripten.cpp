@@ -164,6 +164,11 @@ EMSCRIPTEN_KEEPALIVE void essi_show_difference(int k) {
     }
 }
 
+// The theme: 1 light, 0 dark (kept across sessions).
+EMSCRIPTEN_KEEPALIVE void essi_set_theme(int light) {
+    if (App* app = App::instance()) app->set_light_theme(light != 0);
+}
+
 // The examples the server offers: a JSON array of names (essi serve's /examples/index.json).
 EMSCRIPTEN_KEEPALIVE void essi_set_examples(const char* json_names) {
     App* app = App::instance();

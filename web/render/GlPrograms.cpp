@@ -2,6 +2,7 @@
 
 #include <GLES3/gl3.h>
 
+#include <array>
 #include <cstdio>
 #include <string>
 
@@ -96,6 +97,18 @@ void TargetUniforms::set(float cx, float cy, float zoom_px, float ox, float oy, 
     glUniform2f(viewport, static_cast<float>(w), static_cast<float>(h));
 }
 
+void ScenePrograms::set_theme(const Theme& theme) const {
+    const Setup g(grid.id);
+    g.set("u_minor", theme.grid_minor);
+    g.set("u_major", theme.grid_major);
+    g.set("u_axis", theme.grid_axis);
+    std::array<Rgba, kMarkerTypes> markers = kMarkerColors;
+    markers[static_cast<std::size_t>(MarkerType::Tool)] = theme.tool;
+    const Setup m(marker.id);
+    m.set("u_colors", markers.data(), kMarkerTypes);
+    glUseProgram(0);
+}
+
 bool ScenePrograms::init(int tex_width) {
     const unsigned path_id = link_program(shaders::path_vert_glsl, shaders::path_frag_glsl, "path");
     const unsigned grid_id = link_program(shaders::grid_vert_glsl, shaders::grid_frag_glsl, "grid");
@@ -115,13 +128,9 @@ bool ScenePrograms::init(int tex_width) {
 
     const Setup g(grid_id);
     grid = {g.scene(), g("u_world_origin"), g("u_step")};
-    g.set("u_minor", kGridMinor);
-    g.set("u_major", kGridMajor);
-    g.set("u_axis", kGridAxis);
 
     const Setup m(marker_id);
     marker = {m.scene(), m("u_radius_px"), m("u_type_mask"), m("u_use_single"), m("u_single")};
-    m.set("u_colors", kMarkerColors.data(), kMarkerTypes);
     m.set("u_markers", 0);
     m.set("u_tex_width", tex_width);
 
@@ -135,6 +144,7 @@ bool ScenePrograms::init(int tex_width) {
     blit = {blit_id, b("u_rect"), b("u_viewport")};
     b.set("u_image", 0);
     glUseProgram(0);
+    set_theme(kDarkTheme);
     return true;
 }
 

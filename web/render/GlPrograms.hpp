@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/View.hpp"
+#include "render/Palette.hpp"
 
 namespace essi::viewer {
 
@@ -60,6 +61,8 @@ struct ScenePrograms {
     BlitProgram blit;
     // Links every program and finds its uniforms; `tex_width`: segments (markers) a texture row.
     bool init(int tex_width);
+    // The theme's colours into the grid and marker programs.
+    void set_theme(const Theme& theme) const;
 };
 
 }  // namespace essi::viewer

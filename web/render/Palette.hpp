@@ -57,11 +57,29 @@ inline constexpr std::array<Rgba, kMarkerTypes> kMarkerColors = {{
 }};
 [[nodiscard]] constexpr const Rgba& marker_color(MarkerType t) { return kMarkerColors[static_cast<std::size_t>(t)]; }
 
-inline constexpr Rgba kBackground = {0.11f, 0.12f, 0.14f, 1.f};
+inline constexpr Rgba kBackground = {0.11f, 0.12f, 0.14f, 1.f};  // (the dark theme's)
 inline constexpr Rgba kSelectionColor = {0.25f, 0.95f, 1.0f, 1.f};
 // The grid's lines (the grid program).
 inline constexpr Rgba kGridMinor = {0.5f, 0.55f, 0.6f, 0.10f};
 inline constexpr Rgba kGridMajor = {0.5f, 0.55f, 0.6f, 0.25f};
 inline constexpr Rgba kGridAxis = {0.6f, 0.8f, 0.6f, 0.45f};
+
+// The colours a theme changes (docs/viewer.md, "Themes"): the drawing's background, the grid, the playback tool's
+// marker and the overlays' text; the paths keep their colours (they read on both).
+struct Theme {
+    bool light = false;
+    Rgba background, grid_minor, grid_major, grid_axis, tool;
+    Rgba label, scale_bar;  // grid labels, the scale bar
+};
+inline constexpr Theme kDarkTheme = {false, kBackground, kGridMinor, kGridMajor, kGridAxis, kMarkerColors[2],
+                                     {0.59f, 0.63f, 0.67f, 0.63f}, {0.9f, 0.9f, 0.9f, 0.86f}};
+inline constexpr Theme kLightTheme = {true,
+                                      {0.97f, 0.97f, 0.96f, 1.f},
+                                      {0.15f, 0.2f, 0.25f, 0.10f},
+                                      {0.15f, 0.2f, 0.25f, 0.25f},
+                                      {0.2f, 0.5f, 0.2f, 0.5f},
+                                      {0.1f, 0.1f, 0.12f, 1.f},
+                                      {0.25f, 0.28f, 0.32f, 0.8f},
+                                      {0.1f, 0.1f, 0.12f, 0.9f}};
 
 }  // namespace essi::viewer

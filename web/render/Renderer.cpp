@@ -36,6 +36,12 @@ bool Renderer::init() {
     return true;
 }
 
+void Renderer::set_theme(const Theme& theme) {
+    theme_ = theme;
+    programs_.set_theme(theme);
+    cache_valid_ = false;
+}
+
 void Renderer::add_page(GpuPath& path, std::size_t first, std::size_t rows) {
     GpuPage pg;
     pg.first = first;
@@ -390,7 +396,7 @@ void Renderer::draw_uncached(const Frame& f) {
     clear_window(f);
     glEnable(GL_SCISSOR_TEST);
     scissor_area(f);
-    glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
+    glClearColor(theme_.background.r, theme_.background.g, theme_.background.b, theme_.background.a);
     glClear(GL_COLOR_BUFFER_BIT);
     glDisable(GL_SCISSOR_TEST);
     draw_scene(f, f.window, 0, true, ~std::size_t(0));  // (no image to fill over frames: all at once)
@@ -421,7 +427,7 @@ void Renderer::update_image(const Frame& f) {
         cache_top_ = f.ay - static_cast<float>(f.my);
         glBindFramebuffer(GL_FRAMEBUFFER, cache_fbo_);
         glViewport(0, 0, cache_w_, cache_h_);
-        glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
+        glClearColor(theme_.background.r, theme_.background.g, theme_.background.b, theme_.background.a);
         glClear(GL_COLOR_BUFFER_BIT);
         const Target& w = f.window;
         const Target t{w.cx, w.cy, w.zoom, w.ox - cache_left_, w.oy - cache_top_, cache_w_, cache_h_, s, w.rot};

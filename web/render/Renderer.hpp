@@ -78,6 +78,9 @@ public:
     static constexpr float kCullMarginPx = 8;  // a group's box meets the view when it is this close (line widths)
 
     bool init();  // compiles the programs and finds their uniforms; false (program_error()) when the GPU refuses them
+    // The theme's colours (background, grid, tool marker); the cached image is drawn again.
+    void set_theme(const Theme& theme);
+    [[nodiscard]] const Theme& theme() const { return theme_; }
     // Moves the whole rows staged in `b` to `path` (and the last, partial row once `b` is complete).
     void append(GpuPath& path, PathBuffers& b);
     void release(GpuPath& path);
@@ -162,6 +165,7 @@ private:
     void blit_image(const Frame& f);          // the image into the window, moved by the pan
 
     ScenePrograms programs_;
+    Theme theme_ = kDarkTheme;
     unsigned lod_tex_ = 0;
     int lod_levels_ = 0;
     double lod_cell_ = 1;

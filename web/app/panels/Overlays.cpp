@@ -13,8 +13,6 @@ namespace essi::viewer::panels {
 
 namespace {
 
-constexpr ImU32 kLabelColor = IM_COL32(150, 160, 170, 160);
-constexpr ImU32 kScaleBarColor = IM_COL32(230, 230, 230, 220);
 constexpr ImU32 kTableColor = IM_COL32(120, 200, 255, 200);  // the machine's table (its travel limits)
 constexpr ImU32 kPlateColor = IM_COL32(200, 200, 200, 110);  // the plate: the box of what is cut
 constexpr ImU32 kMeasureColor = IM_COL32(255, 255, 0, 255);
@@ -30,7 +28,8 @@ ImVec2 to_im(Point p) { return ImVec2(static_cast<float>(p.x), static_cast<float
 
 // Labels on the major grid lines along the bottom and left edges, in the shown coordinates (the grid lies along
 // their axes: the screen shows them turned by quarter turns only), and a scale bar of one major step.
-void grid_labels(ImDrawList* dl, const View& view, const Coordinates& cs, Point o) {
+void grid_labels(ImDrawList* dl, const View& view, const Coordinates& cs, Point o, const Theme& theme) {
+    const ImU32 kLabelColor = to_u32(theme.label), kScaleBarColor = to_u32(theme.scale_bar);
     const Rect& a = view.area;
     const double step = grid_step(view.zoom) * 10;
     const int decimals = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step)));
@@ -157,7 +156,7 @@ void overlays(App& app) {
     const Document* doc = app.document();
     const Point o = app.origin();
     const Coordinates cs = app.coordinates();
-    if (app.layers().grid) grid_labels(dl, view, cs, o);
+    if (app.layers().grid) grid_labels(dl, view, cs, o, app.renderer().theme());
     if (doc && app.layers().table) table_and_plate(dl, *doc, view, o);
     compare_overlay(dl, app);
     const Selection& sel = app.selection();

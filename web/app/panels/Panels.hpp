@@ -44,7 +44,7 @@ struct PanelWidths {
 // layout's width (App saves it once the mouse is up). False when the panel is hidden (nothing to end then).
 bool begin_side_panel(App& app, const char* name, bool left);
 // What the panels looked like with their own background (the colour the window is cleared in around the drawing).
-[[nodiscard]] Rgba panel_color();
+[[nodiscard]] Rgba panel_color(const Rgba& background);
 
 void toolbar(App& app);
 void tape_panel(App& app);

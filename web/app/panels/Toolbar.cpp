@@ -90,6 +90,8 @@ void layout_menu(App& app) {
     PanelLayout l = app.ui().layout;
     bool changed = ImGui::Checkbox("Tape panel (left)  [", &l.left_shown);
     changed |= ImGui::Checkbox("Source and inspector (right)  ]", &l.right_shown);
+    bool light = app.light_theme();
+    if (ImGui::Checkbox("Light theme", &light)) app.set_light_theme(light);
     if (ImGui::Selectable("Default layout")) {
         l = PanelLayout{};
         changed = true;

@@ -88,12 +88,12 @@ Rect drawing_area(float w, float h, const PanelLayout& layout) {
 
 // ImGui's window background blended over the drawing's background, in the 8-bit steps the GPU blends in (the
 // same pixels).
-Rgba panel_color() {
+Rgba panel_color(const Rgba& background) {
     const auto byte = [](float v) { return std::round(std::clamp(v, 0.f, 1.f) * 255.f) / 255.f; };
     const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
     const float a = byte(bg.w);
     const auto over = [&](float top, float below) { return byte(top) * a + byte(below) * (1 - a); };
-    return {over(bg.x, kBackground.r), over(bg.y, kBackground.g), over(bg.z, kBackground.b), 1.f};
+    return {over(bg.x, background.r), over(bg.y, background.g), over(bg.z, background.b), 1.f};
 }
 
 }  // namespace panels
