@@ -733,6 +733,22 @@ test('compare two revisions: B over A in its own colour, the differences listed 
   await page.close();
 });
 
+test('a window the size of the screen (F11, kiosk) is drawn at its size: no stretched canvas', async () => {
+  const ctx = await browser.newContext({ viewport: { width: 1280, height: 660 }, screen: { width: 1280, height: 720 } });
+  const page = await ctx.newPage();
+  await page.goto(baseUrl);
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 60000 });
+  await loadExample(page, 'plate_holes.esi');
+  await page.setViewportSize({ width: 1280, height: 720 });  // (F11: the window becomes the screen)
+  await nextFrames(page, 5);
+  const size = await page.evaluate(() => { const c = document.getElementById('canvas'); return [c.width, c.height, screen.width, innerWidth]; });
+  assert.deepEqual(size.slice(0, 2), [1280, 720], `canvas ${size}`);
+  const s = await page.evaluate(() => essikit.state());
+  assert.equal(s.view.area[0] + s.view.area[2] + s.layout.right, 1280);
+  await page.screenshot({ path: path.join(shots, 'kiosk-1280x720.png') });
+  await ctx.close();
+});
+
 test('a light theme beside the dark one: the drawing, the panels and the grid light, the cuts still the cut colour; kept', async () => {
   const page = await newPage();
   const { motions } = await loadExample(page, 'plate_holes.esi');

@@ -63,8 +63,17 @@ void fit_canvas() {
     emscripten_get_element_css_size("#canvas", &w, &h);
     int cw = 0, ch = 0;
     glfwGetWindowSize(g_window, &cw, &ch);
-    if (w >= 1 && h >= 1 && (cw != static_cast<int>(w) || ch != static_cast<int>(h)))
-        glfwSetWindowSize(g_window, static_cast<int>(w), static_cast<int>(h));
+    if (w >= 1 && h >= 1 && (cw != static_cast<int>(w) || ch != static_cast<int>(h))) {
+        // Not glfwSetWindowSize: Emscripten's asks for fullscreen instead of sizing the canvas when the size is the
+        // screen's (F11, a kiosk), and the canvas is left stretched. The canvas and GLFW's window record directly:
+        EM_ASM({
+            Browser.setCanvasSize($0, $1);
+            if (GLFW.active) {
+                GLFW.active.width = $0;
+                GLFW.active.height = $1;
+            }
+        }, static_cast<int>(w), static_cast<int>(h));
+    }
 }
 
 void frame(void*) {
