@@ -749,6 +749,31 @@ test('a window the size of the screen (F11, kiosk) is drawn at its size: no stre
   await ctx.close();
 });
 
+test('hi-DPI: the canvas at the device pixel ratio, clicks where they land, the cuts sharp', async () => {
+  const ctx = await browser.newContext({ viewport: { width: 1200, height: 700 }, deviceScaleFactor: 2 });
+  const page = await ctx.newPage();
+  await page.goto(baseUrl);
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 60000 });
+  const { motions } = await loadExample(page, 'plate_holes.esi');
+  await nextFrames(page, 3);
+  const size = await page.evaluate(() => { const c = document.getElementById('canvas'); return [c.width, c.height, innerWidth, devicePixelRatio]; });
+  assert.deepEqual(size, [2400, 1400, 1200, 2]);
+  // a click on a cut line (CSS pixels) selects it
+  const m = motions.find((x) => x.kind === 'cut' && x.curve === 'line' && x.length_mm > 150);
+  const p = await page.evaluate(([x, y]) => essikit.project(x, y), m.mid);
+  await page.mouse.click(p.x, p.y);
+  await until(page, (i) => { const s = essikit.state(); return s.selection && s.selection.motion === i; }, m.index, 'the click did not select the line');
+  // the screenshot (device pixels) has the cut's colour at twice the CSS position, on a line a few pixels wide
+  await page.evaluate(() => essikit.selectLine(0));
+  await page.mouse.move(5, 690);
+  await nextFrames(page, 3);
+  const at = await pixels(page, await page.screenshot({ path: path.join(shots, 'hidpi.png') }));
+  const hits = [];
+  for (let d = -2; d <= 2; ++d) hits.push(at(2 * p.x + d, 2 * p.y), at(2 * p.x, 2 * p.y + d));
+  assert.ok(hits.some((c) => c[0] > c[2] + 80 && c[0] > c[1] + 30), `no cut colour at (${2 * p.x}, ${2 * p.y}): ${JSON.stringify(hits)}`);
+  await ctx.close();
+});
+
 test('a light theme beside the dark one: the drawing, the panels and the grid light, the cuts still the cut colour; kept', async () => {
   const page = await newPage();
   const { motions } = await loadExample(page, 'plate_holes.esi');

@@ -287,6 +287,14 @@ void App::apply_pending_view(const Document& d) {
 
 double App::desired_tolerance() const { return view_.chord_tolerance_mm(); }
 
+// The window's pixels: its size times the framebuffer scale (a hi-DPI screen's device pixel ratio: the browser's
+// canvas is that much larger than the page's CSS pixels, MainLoopEmscripten.cpp).
+std::pair<int, int> App::framebuffer_size() const {
+    const ImGuiIO& io = ImGui::GetIO();
+    return {static_cast<int>(std::lround(io.DisplaySize.x * framebuffer_scale())),
+            static_cast<int>(std::lround(io.DisplaySize.y * framebuffer_scale()))};
+}
+
 float App::framebuffer_scale() const {
     const float s = ImGui::GetIO().DisplayFramebufferScale.x;
     return s > 0 ? s : 1.f;
@@ -314,8 +322,7 @@ void App::frame() {
     draw_panels();
 
     // The scene (drawn by render(), below the panels)
-    int fb_w = 0, fb_h = 0;
-    glfwGetFramebufferSize(window_, &fb_w, &fb_h);
+    const auto [fb_w, fb_h] = framebuffer_size();
     const SceneInputs in{view_,     fb_w,      fb_h,       framebuffer_scale(), panels::panel_color(renderer_.theme().background),
                          layers_,   playback_, selection_, load_,           coordinates().shown(origin())};
     if (scene_.prepare(in, renderer_, graphics_ok_)) load_.note_drawn(scene_.tape_drawn());
@@ -332,8 +339,7 @@ void App::draw_panels() {
 
 void App::render(bool keep_unchanged) {
     if (!graphics_ok_) return;
-    int fb_w = 0, fb_h = 0;
-    glfwGetFramebufferSize(window_, &fb_w, &fb_h);
+    const auto [fb_w, fb_h] = framebuffer_size();
     scene_.render(renderer_, ui_renderer_, fb_w, fb_h, keep_unchanged);
 }
 

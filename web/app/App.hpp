@@ -164,6 +164,7 @@ private:
     void apply_pending_view(const Document& d);
     [[nodiscard]] double desired_tolerance() const;
     [[nodiscard]] float framebuffer_scale() const;
+    [[nodiscard]] std::pair<int, int> framebuffer_size() const;
     void draw_panels();
     void follow_playback(const Document& d);  // the source view and the inspector show the playback's line
 

@@ -6,6 +6,8 @@
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 
@@ -58,21 +60,38 @@ extern "C" EMSCRIPTEN_KEEPALIVE void essi_background_slice() {
 
 namespace {
 
+// The device pixel ratio the canvas is drawn at (a hi-DPI screen: 2, the canvas twice the CSS size each way).
+double g_pixel_ratio = 1;
+
 void fit_canvas() {
     double w = 0, h = 0;
     emscripten_get_element_css_size("#canvas", &w, &h);
+    const double ratio = std::clamp(emscripten_get_device_pixel_ratio(), 0.5, 4.0);
     int cw = 0, ch = 0;
     glfwGetWindowSize(g_window, &cw, &ch);
-    if (w >= 1 && h >= 1 && (cw != static_cast<int>(w) || ch != static_cast<int>(h))) {
-        // Not glfwSetWindowSize: Emscripten's asks for fullscreen instead of sizing the canvas when the size is the
-        // screen's (F11, a kiosk), and the canvas is left stretched. The canvas and GLFW's window record directly:
+    if (w >= 1 && h >= 1 && (cw != static_cast<int>(w) || ch != static_cast<int>(h) || ratio != g_pixel_ratio)) {
+        // The canvas in device pixels, GLFW's window in CSS pixels (what ImGui lays out in). Not glfwSetWindowSize:
+        // Emscripten's asks for fullscreen instead of sizing the canvas when the size is the screen's (F11, a
+        // kiosk), and the canvas is left stretched.
         EM_ASM({
-            Browser.setCanvasSize($0, $1);
+            Browser.setCanvasSize($2, $3);
             if (GLFW.active) {
                 GLFW.active.width = $0;
                 GLFW.active.height = $1;
             }
-        }, static_cast<int>(w), static_cast<int>(h));
+        }, static_cast<int>(w), static_cast<int>(h), static_cast<int>(std::lround(w * ratio)),
+           static_cast<int>(std::lround(h * ratio)));
+        g_pixel_ratio = ratio;
+    }
+}
+
+// Emscripten's GLFW gives the mouse in canvas (device) pixels: ImGui works in CSS pixels, drawn at the ratio.
+void apply_pixel_ratio() {
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplayFramebufferScale = ImVec2(static_cast<float>(g_pixel_ratio), static_cast<float>(g_pixel_ratio));
+    if (io.MousePos.x > -FLT_MAX / 2 && g_pixel_ratio != 1) {
+        io.MousePos.x /= static_cast<float>(g_pixel_ratio);
+        io.MousePos.y /= static_cast<float>(g_pixel_ratio);
     }
 }
 
@@ -80,6 +99,7 @@ void frame(void*) {
     fit_canvas();
     glfwPollEvents();
     ImGui_ImplGlfw_NewFrame();
+    apply_pixel_ratio();
     ImGui::NewFrame();
     g_app->frame();
     ImGui::Render();
