@@ -116,24 +116,6 @@ std::string github_file_block(const BatchItem& item) {
 }
 
 // --- JUnit -----------------------------------------------------------------------------------------------
-std::string xml_escape(std::string_view s) {
-    std::string out;
-    out.reserve(s.size());
-    for (char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&apos;"; break;
-            default:
-                // XML 1.0 allows no control characters but tab, CR and LF.
-                if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') out += '?';
-                else out += c;
-        }
-    }
-    return out;
-}
 
 std::string junit_report(std::span<const BatchItem> items, std::string_view profile_name, double seconds,
                          FailOn fail_on) {

@@ -45,8 +45,6 @@ struct BatchTotals {
 // "::error file=a.esi,line=3,col=1,title=E301::message" lines for the file's diagnostics (notes as ::notice).
 [[nodiscard]] std::string github_file_block(const BatchItem& item);
 
-// --- JUnit XML --------------------------------------------------------------------------------------------
-[[nodiscard]] std::string xml_escape(std::string_view s);
 // One <testsuite> with one <testcase> per file (name and file = the path, classname "essi.check"); a file that
 // fails under fail_on gets a <failure> with its diagnostics, an unreadable file an <error>.
 [[nodiscard]] std::string junit_report(std::span<const BatchItem> items, std::string_view profile_name,

@@ -28,7 +28,7 @@
 #include "essi/trace.hpp"
 #include "batch.hpp"
 #include "formats.hpp"
-#include "render_svg.hpp"
+#include "essi/render_svg.hpp"
 #include "tape_request.hpp"
 #include "serve.hpp"
 #include "thread_pool.hpp"
@@ -291,7 +291,7 @@ int run_render(const RenderCliOptions& o) {
     if (!tape) return kExitUsage;
     const essi::native::ReadResult& file = tape->file;
     const essi::TapeSetup& setup = tape->setup;
-    essi::native::RenderOptions options;
+    essi::RenderOptions options;
     options.title = o.path == "-" ? std::string("-") : essi::display_text(std::filesystem::path(o.path).filename().string());
     options.width_px = o.width;
     options.show_travel = !o.no_travel;
@@ -312,7 +312,7 @@ int run_render(const RenderCliOptions& o) {
                                         [](const essi::Diagnostic& d) { return d.severity == essi::Severity::Error; });
         return finish(errors ? kExitTapeErrors : kExitOk);
     }
-    const essi::native::RenderResult r = essi::native::render_svg(file.bytes, setup.profile, options, setup.format);
+    const essi::RenderResult r = essi::render_svg(file.bytes, setup.profile, options, setup.format);
     std::string output = o.output;
     const bool png = o.png || (output.size() > 4 && output.compare(output.size() - 4, 4, ".png") == 0);
     if (output.empty()) {

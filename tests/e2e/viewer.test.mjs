@@ -800,6 +800,35 @@ test('a light theme beside the dark one: the drawing, the panels and the grid li
   await page.close();
 });
 
+test('export the view as PNG (the drawing area as drawn) and as SVG (that part of the tape)', async () => {
+  const page = await newPage();
+  await loadExample(page, 'plate_holes.esi');
+  await page.evaluate(() => essikit.setView(160, 120, 3));
+  await nextFrames(page, 3);
+  const s = await page.evaluate(() => essikit.state());
+  const url = await page.evaluate(() => essikit.exportPng());
+  const png = Buffer.from(url.replace(/^data:image\/png;base64,/, ''), 'base64');
+  fs.writeFileSync(path.join(shots, 'view-export.png'), png);
+  assert.equal(png.readUInt32BE(16), Math.round(s.view.area[2]));  // (IHDR: width, height)
+  assert.equal(png.readUInt32BE(20), Math.round(s.view.area[3]));
+  const at = await pixels(page, png);
+  // the plate's bottom edge (y = 20 mm) where the view puts it, in the picture's own pixels
+  const p = await page.evaluate(([x, y]) => essikit.project(x, y), [160, 20]);
+  const hits = [];
+  for (let d = -2; d <= 2; ++d) hits.push(at(p.x - s.view.area[0], p.y - s.view.area[1] + d));
+  assert.ok(hits.some((c) => c[0] > c[2] + 80 && c[0] > c[1] + 30), `no cut colour in the PNG: ${JSON.stringify(hits)}`);
+  // the SVG: the part of the tape in view (its box), the tape's own drawing (essi render's)
+  const svg = await page.evaluate(() => essikit.exportText('view-svg'));
+  const m = svg.match(/data-view="([-\d.]+) ([-\d.]+) ([-\d.]+) ([-\d.]+)"/);
+  assert.ok(m, svg.slice(0, 300));
+  const [x0, y0, x1, y1] = m.slice(1).map(Number);
+  const halfW = s.view.area[2] / 2 / 3, halfH = s.view.area[3] / 2 / 3;
+  assert.ok(Math.abs(x0 - (160 - halfW)) < 0.5 && Math.abs(x1 - (160 + halfW)) < 0.5, `${x0} ${x1}`);
+  assert.ok(Math.abs(y0 - (120 - halfH)) < 0.5 && Math.abs(y1 - (120 + halfH)) < 0.5, `${y0} ${y1}`);
+  assert.match(svg, /id="cut"/);
+  await page.close();
+});
+
 test('measure: distance and dx/dy between two points, snapping to end points and arc centres', async () => {
   const page = await newPage();
   const { motions } = await loadExample(page, 'plate_holes.esi');

@@ -17,7 +17,6 @@
 #include "essi/diagnostics.hpp"
 #include "formats.hpp"
 #include "pipelined_check.hpp"
-#include "render_svg.hpp"
 #include "sha256.hpp"
 #include "share_store.hpp"
 #include "temp_dir.hpp"
@@ -164,7 +163,7 @@ TEST(Formats, UrisAndXml) {
     // A backslash is a character of a Linux file name, not a separator: percent-encoded like any other byte.
     EXPECT_EQ(path_to_uri("dir\\x.esi"), "dir%5Cx.esi");
     EXPECT_EQ(path_to_uri("bad\xFF.esi"), "bad%FF.esi");
-    EXPECT_EQ(xml_escape("<a href=\"x\">'&'\x01</a>"), "&lt;a href=&quot;x&quot;&gt;&apos;&amp;&apos;?&lt;/a&gt;");
+    EXPECT_EQ(essi::xml_escape("<a href=\"x\">'&'\x01</a>"), "&lt;a href=&quot;x&quot;&gt;&apos;&amp;&apos;?&lt;/a&gt;");
 }
 
 TEST(Formats, SarifHasOneRulePerCode) {
@@ -203,17 +202,6 @@ TEST(ShareStore, ContentAddressedAndPersistent) {
     fs::remove_all(d);
 }
 
-TEST(Render, LegendAndLayers) {
-    const std::string tape = "39+3000\n+0+1000\n7\n+1000+0\n+0+1000+0+500-\n8\n+5+5\n63\n";
-    RenderOptions o;
-    o.title = "t<1>.esi";
-    const auto r = render_svg(tape, *essi::builtin_profile("iso6582"), o);
-    EXPECT_NE(r.svg.find("id=\"cut\""), std::string::npos);
-    EXPECT_NE(r.svg.find(std::string(kSvgCutColor)), std::string::npos);
-    EXPECT_NE(r.svg.find("class=\"pierce\""), std::string::npos);
-    EXPECT_NE(r.svg.find("t&lt;1&gt;.esi"), std::string::npos);
-    EXPECT_NE(r.svg.find("data-pierces=\"" + std::to_string(r.result.stats.pierces) + "\""), std::string::npos);
-}
 
 // `essi check` on two threads (native/pipelined_check.cpp) gives check_tape's result to the bit: the
 // statistics (doubles compared bit for bit) and every diagnostic, on a tape of many chunks. Whether a chunk's arcs

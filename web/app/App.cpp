@@ -11,6 +11,7 @@
 #include "app/panels/UiText.hpp"
 #include "essi/geom.hpp"
 #include "essi/profile.hpp"
+#include "essi/render_svg.hpp"
 #include "essi/share_link.hpp"
 #include "essi/dxf.hpp"
 #include "essi/write.hpp"
@@ -340,7 +341,32 @@ void App::draw_panels() {
 void App::render(bool keep_unchanged) {
     if (!graphics_ok_) return;
     const auto [fb_w, fb_h] = framebuffer_size();
-    scene_.render(renderer_, ui_renderer_, fb_w, fb_h, keep_unchanged);
+    const bool png = png_pending_ && document();
+    scene_.render(renderer_, ui_renderer_, fb_w, fb_h, keep_unchanged && !png);
+    if (!png) return;
+    png_pending_ = false;
+    // The drawing area of the frame just drawn, in the framebuffer's pixels (top-left origin).
+    const float s = framebuffer_scale();
+    const Rect& a = view_.area;
+    const std::string& name = document()->name;
+    platform::save_view_png(*this, name.substr(0, name.find_last_of('.')) + ".view.png",
+                            {a.x * s, a.y * s, a.w * s, a.h * s});
+}
+
+void App::export_view_png() {
+    if (!document()) return notify("Load a tape first.");
+    png_pending_ = true;  // (taken in the next frame, right after it is drawn)
+}
+
+Box App::visible_box() const {
+    const Rect& a = view_.area;
+    const Point o = origin();
+    Box b;
+    for (const auto [x, y] : {std::pair{a.x, a.y}, {a.x + a.w, a.y}, {a.x, a.y + a.h}, {a.x + a.w, a.y + a.h}}) {
+        const Point w = view_.to_world(x, y);
+        b.add(Point{w.x + o.x, w.y + o.y});
+    }
+    return b;
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -481,6 +507,12 @@ std::string App::export_text(const std::string& format) const {
     if (!d) return {};
     if (format == "dxf") return render_dxf(d->bytes, d->setup).text;
     if (format == "report-text") return copy_text(CopyWhat::Report);
+    if (format == "view-svg") {
+        RenderOptions o;
+        o.title = display_text(d->name);
+        o.view = visible_box();
+        return render_svg(d->bytes, d->profile, o, d->setup.format).svg;
+    }
     if (format == "report-json" || format == "report-csv") {
         const FileReport r = report();
         const std::span<const FileReport> one(&r, 1);
@@ -503,6 +535,7 @@ void App::export_file(const std::string& format) {
                       : format == "report-text" ? ".report.txt"
                       : format == "report-json" ? ".report.json"
                       : format == "report-csv"  ? ".problems.csv"
+                      : format == "view-svg"    ? ".view.svg"
                                                 : ".esi";
     platform::save_file(*this, stem + ext, export_text(format));
 }

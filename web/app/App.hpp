@@ -121,6 +121,10 @@ public:
     // ("dxf"); empty without a tape. export_file saves it (a download in the browser).
     [[nodiscard]] std::string export_text(const std::string& format) const;
     void export_file(const std::string& format);
+    // The view as a PNG picture (the drawing area as drawn, the browser's download), taken after the next frame.
+    void export_view_png();
+    // The part of the program the drawing area shows (program mm; its box when the view is turned).
+    [[nodiscard]] Box visible_box() const;
     void share_done(bool ok, std::string text);
     // The tape's report: as `essi check` makes it (its path the tape's name).
     [[nodiscard]] FileReport report() const;
@@ -180,6 +184,7 @@ private:
     std::optional<InputFormat> input_format_;  // the format a share link said the tape was read as (else the content's)
     std::unique_ptr<Compare> compare_;         // compare mode: the other revision and the differences
     bool compare_next_ = false;                // the next tape opened is the other revision
+    bool png_pending_ = false;                 // the view is saved as PNG after the next frame is drawn
     bool use_profile_file(const std::string& name, const std::string& bytes);
     void read(std::string name, std::string bytes, std::optional<ViewRequest> view);  // with the profile and format chosen
     void use_link_profile(const ShareLink& link);

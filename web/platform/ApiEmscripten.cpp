@@ -164,6 +164,11 @@ EMSCRIPTEN_KEEPALIVE void essi_show_difference(int k) {
     }
 }
 
+// The view as PNG after the next frame (window.essikitLastPng gets its data URL).
+EMSCRIPTEN_KEEPALIVE void essi_export_png() {
+    if (App* app = App::instance()) app->export_view_png();
+}
+
 // The theme: 1 light, 0 dark (kept across sessions).
 EMSCRIPTEN_KEEPALIVE void essi_set_theme(int light) {
     if (App* app = App::instance()) app->set_light_theme(light != 0);

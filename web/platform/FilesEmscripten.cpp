@@ -45,4 +45,23 @@ void open_example(App&, const std::string& name) {
     EM_ASM({ window.essikitOpenExample(UTF8ToString($0)); }, name.c_str());
 }
 
+void save_view_png(App&, const std::string& name, PixelRect a) {
+    // Right after the frame is drawn (the WebGL canvas still holds it): its drawing area onto a 2D canvas, a PNG
+    // of it downloaded; window.essikitLastPng keeps its data URL (the tests read it).
+    // (no commas inside the JavaScript: the EM_ASM macro would split its argument there)
+    EM_ASM({
+        const src = Module.canvas;
+        const c = document.createElement('canvas');
+        c.width = Math.round($2); c.height = Math.round($3);
+        c.getContext('2d').drawImage(src, $0, $1, $2, $3, 0, 0, c.width, c.height);
+        window.essikitLastPng = c.toDataURL('image/png');
+        const a = document.createElement('a');
+        a.href = window.essikitLastPng;
+        a.download = UTF8ToString($4);
+        document.body.appendChild(a);
+        a.click();
+        a.remove();
+    }, a.x, a.y, a.w, a.h, name.c_str());
+}
+
 }  // namespace essi::viewer::platform

@@ -60,4 +60,8 @@ void save_file(App& app, const std::string& name, const std::string& text) {
 
 void open_example(App&, const std::string&) {}  // (the desktop viewer has no server: no examples are offered)
 
+void save_view_png(App& app, const std::string&, PixelRect) {
+    app.notify("The view is saved as PNG by the browser viewer; Export... > View as SVG works here.");
+}
+
 }  // namespace essi::viewer::platform

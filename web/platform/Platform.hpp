@@ -28,6 +28,13 @@ void open_button_at(float x, float y, float width, float height);
 // Saves `text` as a file called `name`: the browser's download, or a file in the current folder natively.
 void save_file(App& app, const std::string& name, const std::string& text);
 
+// Saves the frame just drawn, cropped to `area` (framebuffer pixels, top-left origin), as a PNG file `name`: the
+// browser's download; natively a message that the browser viewer does it.
+struct PixelRect {
+    float x, y, w, h;
+};
+void save_view_png(App& app, const std::string& name, PixelRect area);
+
 // Copies text to the clipboard.
 void copy_text(const std::string& text);
 // Ctrl+V on the canvas: natively loads the clipboard's text; in the browser the page's paste event does it.

@@ -23,6 +23,8 @@ namespace essi {
 
 // A number as a message writes it: up to 6 significant digits, no trailing zeros ("1400", "0.5", "1e+09").
 [[nodiscard]] std::string number_text(double v);
+// Text for XML (JUnit, SVG): & < > " ' as entities, control characters but tab, CR and LF as '?'.
+[[nodiscard]] std::string xml_escape(std::string_view s);
 // A length as people read it: "1234.567 mm" below 10 m, "184 377.775 m" (thousands apart) from 10 m on.
 [[nodiscard]] std::string length_text(double mm);
 

@@ -76,9 +76,10 @@ void export_menu(App& app) {
     static constexpr std::pair<const char*, const char*> kFormats[] = {
         {"ESSI (.esi)", "essi"}, {"EIA, RS-274 (.eia)", "eia"}, {"G-code for LinuxCNC (.ngc)", "gcode"}, {"DXF drawing (.dxf)", "dxf"},
         {"Report as text (.txt)", "report-text"}, {"Report as JSON, essi check's (.json)", "report-json"},
-        {"Problems as CSV (.csv)", "report-csv"}};
+        {"Problems as CSV (.csv)", "report-csv"}, {"View as SVG (.svg)", "view-svg"}};
     for (const auto& [label, format] : kFormats)
         if (ImGui::Selectable(label)) app.export_file(format);
+    if (ImGui::Selectable("View as PNG (.png)")) app.export_view_png();
     ImGui::EndPopup();
 }
 

@@ -3,14 +3,16 @@
 // name and the key numbers (cut length, pierces, time). Machine y points up (the SVG is flipped).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
+#include "essi/geom.hpp"
 #include "essi/profile.hpp"
 #include "essi/read.hpp"
 #include "essi/report.hpp"
 
-namespace essi::native {
+namespace essi {
 
 // The colours (also used by the tests and docs/cli.md).
 constexpr std::string_view kSvgCutColor = "#d62728";
@@ -27,6 +29,9 @@ struct RenderOptions {
     std::string title;             // shown in the legend (the file name)
     double width_px = 1200;        // the SVG's width attribute; height follows the aspect ratio
     bool show_travel = true;       // travel and rapid motion
+    // A part of the drawing (program mm): the picture shows this box (the viewer's view), the legend below it;
+    // none: the whole tape with a margin.
+    std::optional<Box> view;
 };
 
 struct RenderResult {
@@ -39,4 +44,4 @@ struct RenderResult {
 [[nodiscard]] RenderResult render_svg(std::string_view bytes, const Profile& profile, const RenderOptions& options,
                                       InputFormat format = InputFormat::Essi);
 
-}  // namespace essi::native
+}  // namespace essi

@@ -1,4 +1,4 @@
-#include "render_svg.hpp"
+#include "essi/render_svg.hpp"
 
 #include "essi/kerf.hpp"
 
@@ -11,10 +11,10 @@
 
 #include "essi/geom.hpp"
 #include "essi/read.hpp"
-#include "formats.hpp"
+#include "essi/text.hpp"
 #include "essi/text_report.hpp"
 
-namespace essi::native {
+namespace essi {
 
 namespace {
 
@@ -142,13 +142,20 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
         sink.finish();
     }
 
-    const double margin = std::max(extent * 0.05, 1.0);
-    const double font = extent * 0.022;
+    double margin = std::max(extent * 0.05, 1.0);
+    if (options.view && !options.view->empty) {  // (a view: that box, no margin; the legend's size by its extent)
+        box = *options.view;
+        w = box.max_x - box.min_x;
+        h = box.max_y - box.min_y;
+        margin = 0;
+    }
+    const double shown = options.view ? std::max({w, h, 1e-3}) : extent;  // (the legend and markers scale with it)
+    const double font = shown * 0.022;
     const double legend_h = font * 4.6;
     const double vx = box.min_x - margin, vy = -box.max_y - margin;
     const double vw = w + 2 * margin, vh = h + 2 * margin + legend_h;
     const double height_px = std::max(1.0, std::round(options.width_px * vh / vw));
-    const double marker_r = extent * 0.006;
+    const double marker_r = shown * 0.006;
 
     const std::size_t errors = out.result.count(Severity::Error), warnings = out.result.count(Severity::Warning);
     std::string s;
@@ -156,7 +163,9 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     s += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     s += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + num(options.width_px) + "\" height=\"" +
          num(height_px) + "\" viewBox=\"" + num(vx) + " " + num(vy) + " " + num(vw) + " " + num(vh) +
-         "\" data-generator=\"essi render\">\n";
+         "\" data-generator=\"essi render\"" +
+         (options.view ? " data-view=\"" + num(box.min_x) + " " + num(box.min_y) + " " + num(box.max_x) + " " + num(box.max_y) + "\"" : "") +
+         ">\n";
     s += "<title>" + xml_escape(options.title) + "</title>\n";
     s += "<rect id=\"background\" x=\"" + num(vx) + "\" y=\"" + num(vy) + "\" width=\"" + num(vw) + "\" height=\"" +
          num(vh) + "\" fill=\"#ffffff\"/>\n";
@@ -253,4 +262,4 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     return out;
 }
 
-}  // namespace essi::native
+}  // namespace essi
