@@ -191,10 +191,12 @@ TapeDiff diff_contours(const std::vector<Contour>& a, const std::vector<Contour>
             moved_d = distance(a[i].start, c.start);
             moved = k;
         });
-        const int changed =
-            nearest(a[i], b, taken, [&](const Contour& c) { return c.kind == a[i].kind && overlap(a[i].box, c.box); });
         const double size = std::hypot(a[i].box.max_x - a[i].box.min_x, a[i].box.max_y - a[i].box.min_y);
-        const bool take_moved = moved >= 0 && (changed < 0 || moved_d <= size);
+        const bool near_move = moved >= 0 && moved_d <= size;  // (then no scan for an edit in place)
+        const int changed = near_move ? -1 : nearest(a[i], b, taken, [&](const Contour& c) {
+            return c.kind == a[i].kind && overlap(a[i].box, c.box);
+        });
+        const bool take_moved = near_move || (moved >= 0 && changed < 0);
         if (!take_moved && changed < 0) continue;
         const int j = take_moved ? moved : changed;
         const Contour& c = b[static_cast<std::size_t>(j)];
@@ -272,38 +274,36 @@ nlohmann::json side_json(const DiffSide& s) {
 
 }  // namespace
 
-std::string diff_text(const DiffSide& a, const DiffSide& b, const TapeDiff& d) {
-    std::string s = side_text("A", a) + side_text("B", b);
-    const auto& ca = a.tape->contours;
-    const auto& cb = b.tape->contours;
-    for (const ContourDiff& c : d.contours) {
-        const char* name = contour_change_name(c.change);
-        switch (c.change) {
-            case ContourChange::Same: break;
-            case ContourChange::Moved:
-                s += std::string(name) + ": A " + lines_text(ca[static_cast<std::size_t>(c.a)]) + " -> B " +
-                     lines_text(cb[static_cast<std::size_t>(c.b)]) + ", by (" + signed_mm3(c.offset.x) + ", " +
-                     signed_mm3(c.offset.y) + ") mm: " + contour_text(ca[static_cast<std::size_t>(c.a)]) + "\n";
-                break;
-            case ContourChange::Changed:
-                s += std::string(name) + ": A " + lines_text(ca[static_cast<std::size_t>(c.a)]) + " -> B " +
-                     lines_text(cb[static_cast<std::size_t>(c.b)]) + ": " + contour_text(ca[static_cast<std::size_t>(c.a)]) +
-                     " -> " + contour_text(cb[static_cast<std::size_t>(c.b)]) + "\n";
-                break;
-            case ContourChange::Removed:
-                s += std::string(name) + ": A " + lines_text(ca[static_cast<std::size_t>(c.a)]) + ": " +
-                     contour_text(ca[static_cast<std::size_t>(c.a)]) + "\n";
-                break;
-            case ContourChange::Added:
-                s += std::string(name) + ": B " + lines_text(cb[static_cast<std::size_t>(c.b)]) + ": " +
-                     contour_text(cb[static_cast<std::size_t>(c.b)]) + "\n";
-                break;
-        }
+std::string difference_text(const TapeContours& a, const TapeContours& b, const ContourDiff& d) {
+    const std::string name = contour_change_name(d.change);
+    const auto of_a = [&]() -> const Contour& { return a.contours[static_cast<std::size_t>(d.a)]; };
+    const auto of_b = [&]() -> const Contour& { return b.contours[static_cast<std::size_t>(d.b)]; };
+    switch (d.change) {
+        case ContourChange::Same: break;
+        case ContourChange::Moved:
+            return name + ": A " + lines_text(of_a()) + " -> B " + lines_text(of_b()) + ", by (" + signed_mm3(d.offset.x) +
+                   ", " + signed_mm3(d.offset.y) + ") mm: " + contour_text(of_a());
+        case ContourChange::Changed:
+            return name + ": A " + lines_text(of_a()) + " -> B " + lines_text(of_b()) + ": " + contour_text(of_a()) +
+                   " -> " + contour_text(of_b());
+        case ContourChange::Removed: return name + ": A " + lines_text(of_a()) + ": " + contour_text(of_a());
+        case ContourChange::Added: return name + ": B " + lines_text(of_b()) + ": " + contour_text(of_b());
     }
+    return name;
+}
+
+std::string diff_counts_text(const TapeDiff& d) {
     std::string counts;
     for (ContourChange c : kChanges)
         counts += (counts.empty() ? "" : ", ") + std::to_string(d.count(c)) + " " + contour_change_name(c);
-    s += "contours: " + counts + "\n";
+    return counts;
+}
+
+std::string diff_text(const DiffSide& a, const DiffSide& b, const TapeDiff& d) {
+    std::string s = side_text("A", a) + side_text("B", b);
+    for (const ContourDiff& c : d.contours)
+        if (c.change != ContourChange::Same) s += difference_text(*a.tape, *b.tape, c) + "\n";
+    s += "contours: " + diff_counts_text(d) + "\n";
     std::string stats;
     for (const StatChange& c : stat_changes(a.tape->check.stats, b.tape->check.stats)) {
         if (std::fabs(c.b - c.a) < 5e-4) continue;

@@ -362,7 +362,7 @@ Box App::visible_box() const {
     const Rect& a = view_.area;
     const Point o = origin();
     Box b;
-    for (const auto [x, y] : {std::pair{a.x, a.y}, {a.x + a.w, a.y}, {a.x, a.y + a.h}, {a.x + a.w, a.y + a.h}}) {
+    for (const auto& [x, y] : {std::pair{a.x, a.y}, {a.x + a.w, a.y}, {a.x, a.y + a.h}, {a.x + a.w, a.y + a.h}}) {
         const Point w = view_.to_world(x, y);
         b.add(Point{w.x + o.x, w.y + o.y});
     }

@@ -27,9 +27,7 @@ std::unique_ptr<Compare> make_compare(const Document& a, bool auto_profile, std:
     c->a = tape_contours(a.bytes, a.setup, true);
     c->b = tape_contours(bytes, setup_tape(bytes, std::nullopt, auto_profile ? std::nullopt : std::optional<Profile>(a.profile)), true);
     c->diff = diff_contours(c->a.contours, c->b.contours);
-    for (ContourChange k : {ContourChange::Same, ContourChange::Moved, ContourChange::Changed, ContourChange::Removed,
-                            ContourChange::Added})
-        c->summary += (c->summary.empty() ? "" : ", ") + std::to_string(c->diff.count(k)) + " " + contour_change_name(k);
+    c->summary = diff_counts_text(c->diff);
     c->a_lines = flattened(c->a.contours);
     c->b_lines = flattened(c->b.contours);
     return c;

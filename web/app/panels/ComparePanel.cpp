@@ -25,25 +25,6 @@ void polyline(ImDrawList* dl, const View& view, Point o, const std::vector<Point
     dl->AddPolyline(px.data(), static_cast<int>(px.size()), colour, ImDrawFlags_None, width);
 }
 
-std::string lines_of(const Contour& c) {
-    return c.first_line == c.last_line ? fmt("%u", c.first_line) : fmt("%u-%u", c.first_line, c.last_line);
-}
-
-// One difference in words: "moved A 11-14 -> B 14-17 by (+5.000, +0.000)".
-std::string difference_text(const Compare& c, const ContourDiff& d) {
-    const char* change = contour_change_name(d.change);
-    const auto a = [&] { return lines_of(c.a.contours[static_cast<std::size_t>(d.a)]); };
-    const auto b = [&] { return lines_of(c.b.contours[static_cast<std::size_t>(d.b)]); };
-    switch (d.change) {
-        case ContourChange::Moved: return fmt("%s  A %s -> B %s by (%+.3f, %+.3f)", change, a().c_str(), b().c_str(), d.offset.x, d.offset.y);
-        case ContourChange::Changed: return fmt("%s  A %s -> B %s", change, a().c_str(), b().c_str());
-        case ContourChange::Removed: return fmt("%s  A %s", change, a().c_str());
-        case ContourChange::Added: return fmt("%s  B %s", change, b().c_str());
-        case ContourChange::Same: break;
-    }
-    return change;
-}
-
 }  // namespace
 
 void compare_overlay(ImDrawList* dl, App& app) {
@@ -78,12 +59,12 @@ void compare_window(App& app) {
     ImGui::Separator();
     const std::size_t rows = c->diff.contours.size() - c->diff.count(ContourChange::Same);
     const float list_h = ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(std::max<std::size_t>(rows, 1) + 1);
-    ImGui::BeginChild("differences", ImVec2(0, std::min({list_h, 300.f, a.h / 2})));
+    ImGui::BeginChild("differences", ImVec2(0, std::min({list_h, 300.f, a.h / 2})), false, ImGuiWindowFlags_HorizontalScrollbar);
     int row = 0;
     for (const ContourDiff& d : c->diff.contours) {
         if (d.change == ContourChange::Same) continue;
         ImGui::PushID(row++);
-        if (ImGui::Selectable(difference_text(*c, d).c_str()))
+        if (ImGui::Selectable(difference_text(c->a, c->b, d).c_str()))  // (essi diff's words)
             app.show_contour(static_cast<std::size_t>(d.a >= 0 ? d.a : d.b), d.a < 0);
         ImGui::PopID();
     }
