@@ -1,4 +1,5 @@
-// The one table of diagnostic codes: name, default severity and a one-line summary of the rule.
+// The one table of diagnostic codes: name, default severity and a one-line summary of the rule (its texts in
+// core/i18n/messages/codes.def).
 #include "essi/diagnostics.hpp"
 
 #include <algorithm>
@@ -9,66 +10,66 @@ namespace {
 
 struct CodeRow {
     DiagCode code;
-    std::string_view summary;
+    Msg summary;  // core/i18n/messages/codes.def
 };
 
 constexpr std::array kCodes = {
-    CodeRow{DiagCode::E101_InvalidCharacter, "A block holds a character other than + - 0-9 outside a 3/4 ignore section."},
-    CodeRow{DiagCode::E102_NonAsciiByte, "A byte outside ASCII (a UTF-8 BOM, national text) outside a 3/4 ignore section."},
-    CodeRow{DiagCode::E103_FunctionCodeTooLong, "A machine function has more than 3 digits (ISO 6582 3.4.1)."},
-    CodeRow{DiagCode::E104_NumberTooLarge, "A word has more than 9 digits."},
-    CodeRow{DiagCode::E105_WordCount, "A block of signed words has a count other than 2 (line), 5 (arc) or 6 (parabola)."},
-    CodeRow{DiagCode::E106_FunctionWordCount, "A machine function or head address is followed by 3, 4 or more than 6 signed words."},
-    CodeRow{DiagCode::E107_UnclosedIgnore, "A 3 (ignore ON) has no 4 (ignore OFF) after it: the rest of the tape would be ignored."},
-    CodeRow{DiagCode::E108_WhitespaceStrict, "A space or tab inside a block while the whitespace policy is strict."},
-    CodeRow{DiagCode::W109_WhitespaceSkipped, "A space or tab inside a block; it was skipped."},
-    CodeRow{DiagCode::W110_ContentAfterEnd, "Blocks after the end of the program; they are not executed."},
-    CodeRow{DiagCode::W111_StrayIgnoreOff, "A 4 (ignore OFF) with no 3 (ignore ON) before it."},
-    CodeRow{DiagCode::W112_MisplacedPercent, "A % mark in the middle of the program; it is ignored."},
-    CodeRow{DiagCode::E113_EmptyTape, "The tape holds no block."},
-    CodeRow{DiagCode::W114_NoProgramEnd, "The tape ends without an end of program code."},
-    CodeRow{DiagCode::E119_EiaUnknownLetter, "An EIA block holds a letter or character that the dialect's EIA blocks do not have."},
-    CodeRow{DiagCode::E120_EiaLetterOrder, "An EIA block has its letters out of the dialect's order (Woyda: N G X Y I J F M) or one letter twice."},
-    CodeRow{DiagCode::E121_EiaFunctionsInBlock, "An EIA block holds more than one of G, M and F where the dialect allows only one (Woyda)."},
-    CodeRow{DiagCode::E122_EiaBadNumber, "An EIA letter is not followed by a number, or the number is malformed or too large."},
-    CodeRow{DiagCode::E123_EiaArcWithoutDirection, "An EIA block gives an arc centre (I, J) while neither G02 nor G03 is in force."},
-    CodeRow{DiagCode::W124_EiaUnknownCode, "A G or M word that the dialect's EIA table does not have; it is ignored."},
-    CodeRow{DiagCode::W125_EiaRounded, "EIA coordinates finer than the profile's unit; they were rounded to it."},
-    CodeRow{DiagCode::E126_EiaUnclosedComment, "An EIA comment '(' is not closed by ')' on its line."},
-    CodeRow{DiagCode::E216_FunctionValueRange, "A machine function's value is outside the range the function allows."},
-    CodeRow{DiagCode::N403_OtherDialect, "The tape's evidence points to another dialect than the profile's (a note: --profile auto chooses by it)."},
-    CodeRow{DiagCode::W501_NoCounterpart, "A machine function that the target format or dialect has no word for; it is kept as a comment (or left out)."},
-    CodeRow{DiagCode::W502_ParabolaAsArcs, "A parabola written as circular arcs within the profile's chord tolerance (the target has no parabolas)."},
-    CodeRow{DiagCode::W503_RoundedToUnit, "A coordinate not on the target's unit grid; it was rounded to the nearest unit."},
-    CodeRow{DiagCode::W504_ValueNotWritten, "A function's value that the target cannot carry, or not exactly; it is left out or rounded."},
-    CodeRow{DiagCode::E115_TooManyErrors, "Reading stopped after too many errors; the file is probably not an ESSI tape."},
-    CodeRow{DiagCode::E116_MisplacedMark, "A % or / mark shares its block with other characters."},
-    CodeRow{DiagCode::E117_TapeTooLarge, "The tape is larger than 4 GiB."},
-    CodeRow{DiagCode::E118_FunctionValueSign, "A machine function's value is written after a '-'; it must follow a '+'."},
-    CodeRow{DiagCode::W201_UnknownFunction, "An unassigned or unknown machine function; it is ignored."},
-    CodeRow{DiagCode::W202_FunctionValueIgnored, "A value given to a machine function that takes none; the value is ignored."},
-    CodeRow{DiagCode::E203_FunctionValueMissing, "A machine function that needs a value has none."},
-    CodeRow{DiagCode::W204_KerfWhileCutting, "Kerf compensation switched on or off while a cutting tool is on."},
-    CodeRow{DiagCode::W205_AddressOutside3Axis, "A head address used while the machine is not in 3-axis mode (19)."},
-    CodeRow{DiagCode::E206_BadHeadAddress, "A head address other than 1 or 2."},
-    CodeRow{DiagCode::E207_ZeroOffsetBlock, "A zero offset (83) not followed by a block of two signed words."},
-    CodeRow{DiagCode::W208_ManufacturerFunction, "A machine function whose meaning the manufacturer specifies (ISO 6582 55-62); it is ignored."},
-    CodeRow{DiagCode::W209_ZeroFeed, "A programmed feed of 0; the time estimate uses the profile's feed."},
-    CodeRow{DiagCode::W210_RapidWhileCutting, "A motion at rapid traverse while a cutting tool is on."},
-    CodeRow{DiagCode::W211_ToolOnAtEnd, "The program ends with a cutting or marking tool still on."},
-    CodeRow{DiagCode::W212_BurnerCountNotBeforeSpacing, "A burner count (135) not immediately followed by a burner spacing (136)."},
-    CodeRow{DiagCode::W213_MacroOnlyFunction, "A program loop function (67/68) that only macro files define; it is ignored."},
-    CodeRow{DiagCode::W214_UnclosedOptionalIgnore, "An optional ignore ON (100) with no optional ignore OFF (101) after it."},
-    CodeRow{DiagCode::W215_ZeroOffsetInIncremental, "A zero offset (83) while programming incrementally; it takes effect with the next absolute move."},
-    CodeRow{DiagCode::E301_ArcEndNotOnCircle, "The end point of an arc is not on its circle within the arc tolerance."},
-    CodeRow{DiagCode::E302_ArcZeroRadius, "An arc whose centre is its start point."},
-    CodeRow{DiagCode::E303_ParabolaEndNotOnCurve, "The end point of a parabola is not on its curve within the arc tolerance."},
-    CodeRow{DiagCode::E304_ParabolaZeroCurvature, "A parabola whose radius of curvature at the vertex is zero."},
-    CodeRow{DiagCode::W305_ParabolaDirection, "A parabola's TC does not match the turning direction of the travelled piece."},
-    CodeRow{DiagCode::E306_KerfRadiusNegative, "An arc whose radius would be zero or negative after the kerf offset."},
-    CodeRow{DiagCode::E307_KerfGouge, "A concave corner the kerf-compensated torch cannot get into without cutting into the contour (a gouge)."},
-    CodeRow{DiagCode::E401_LeavesTable, "A motion leaves the table travel limits of the machine profile."},
-    CodeRow{DiagCode::E402_BadProfile, "A machine profile that cannot be read."},
+    CodeRow{DiagCode::E101_InvalidCharacter, Msg::CodeE101},
+    CodeRow{DiagCode::E102_NonAsciiByte, Msg::CodeE102},
+    CodeRow{DiagCode::E103_FunctionCodeTooLong, Msg::CodeE103},
+    CodeRow{DiagCode::E104_NumberTooLarge, Msg::CodeE104},
+    CodeRow{DiagCode::E105_WordCount, Msg::CodeE105},
+    CodeRow{DiagCode::E106_FunctionWordCount, Msg::CodeE106},
+    CodeRow{DiagCode::E107_UnclosedIgnore, Msg::CodeE107},
+    CodeRow{DiagCode::E108_WhitespaceStrict, Msg::CodeE108},
+    CodeRow{DiagCode::W109_WhitespaceSkipped, Msg::CodeW109},
+    CodeRow{DiagCode::W110_ContentAfterEnd, Msg::CodeW110},
+    CodeRow{DiagCode::W111_StrayIgnoreOff, Msg::CodeW111},
+    CodeRow{DiagCode::W112_MisplacedPercent, Msg::CodeW112},
+    CodeRow{DiagCode::E113_EmptyTape, Msg::CodeE113},
+    CodeRow{DiagCode::W114_NoProgramEnd, Msg::CodeW114},
+    CodeRow{DiagCode::E119_EiaUnknownLetter, Msg::CodeE119},
+    CodeRow{DiagCode::E120_EiaLetterOrder, Msg::CodeE120},
+    CodeRow{DiagCode::E121_EiaFunctionsInBlock, Msg::CodeE121},
+    CodeRow{DiagCode::E122_EiaBadNumber, Msg::CodeE122},
+    CodeRow{DiagCode::E123_EiaArcWithoutDirection, Msg::CodeE123},
+    CodeRow{DiagCode::W124_EiaUnknownCode, Msg::CodeW124},
+    CodeRow{DiagCode::W125_EiaRounded, Msg::CodeW125},
+    CodeRow{DiagCode::E126_EiaUnclosedComment, Msg::CodeE126},
+    CodeRow{DiagCode::E216_FunctionValueRange, Msg::CodeE216},
+    CodeRow{DiagCode::N403_OtherDialect, Msg::CodeN403},
+    CodeRow{DiagCode::W501_NoCounterpart, Msg::CodeW501},
+    CodeRow{DiagCode::W502_ParabolaAsArcs, Msg::CodeW502},
+    CodeRow{DiagCode::W503_RoundedToUnit, Msg::CodeW503},
+    CodeRow{DiagCode::W504_ValueNotWritten, Msg::CodeW504},
+    CodeRow{DiagCode::E115_TooManyErrors, Msg::CodeE115},
+    CodeRow{DiagCode::E116_MisplacedMark, Msg::CodeE116},
+    CodeRow{DiagCode::E117_TapeTooLarge, Msg::CodeE117},
+    CodeRow{DiagCode::E118_FunctionValueSign, Msg::CodeE118},
+    CodeRow{DiagCode::W201_UnknownFunction, Msg::CodeW201},
+    CodeRow{DiagCode::W202_FunctionValueIgnored, Msg::CodeW202},
+    CodeRow{DiagCode::E203_FunctionValueMissing, Msg::CodeE203},
+    CodeRow{DiagCode::W204_KerfWhileCutting, Msg::CodeW204},
+    CodeRow{DiagCode::W205_AddressOutside3Axis, Msg::CodeW205},
+    CodeRow{DiagCode::E206_BadHeadAddress, Msg::CodeE206},
+    CodeRow{DiagCode::E207_ZeroOffsetBlock, Msg::CodeE207},
+    CodeRow{DiagCode::W208_ManufacturerFunction, Msg::CodeW208},
+    CodeRow{DiagCode::W209_ZeroFeed, Msg::CodeW209},
+    CodeRow{DiagCode::W210_RapidWhileCutting, Msg::CodeW210},
+    CodeRow{DiagCode::W211_ToolOnAtEnd, Msg::CodeW211},
+    CodeRow{DiagCode::W212_BurnerCountNotBeforeSpacing, Msg::CodeW212},
+    CodeRow{DiagCode::W213_MacroOnlyFunction, Msg::CodeW213},
+    CodeRow{DiagCode::W214_UnclosedOptionalIgnore, Msg::CodeW214},
+    CodeRow{DiagCode::W215_ZeroOffsetInIncremental, Msg::CodeW215},
+    CodeRow{DiagCode::E301_ArcEndNotOnCircle, Msg::CodeE301},
+    CodeRow{DiagCode::E302_ArcZeroRadius, Msg::CodeE302},
+    CodeRow{DiagCode::E303_ParabolaEndNotOnCurve, Msg::CodeE303},
+    CodeRow{DiagCode::E304_ParabolaZeroCurvature, Msg::CodeE304},
+    CodeRow{DiagCode::W305_ParabolaDirection, Msg::CodeW305},
+    CodeRow{DiagCode::E306_KerfRadiusNegative, Msg::CodeE306},
+    CodeRow{DiagCode::E307_KerfGouge, Msg::CodeE307},
+    CodeRow{DiagCode::E401_LeavesTable, Msg::CodeE401},
+    CodeRow{DiagCode::E402_BadProfile, Msg::CodeE402},
 };
 
 const CodeRow* find_row(DiagCode code) {
@@ -128,9 +129,20 @@ std::string_view severity_name(Severity s) {
     return "error";
 }
 
-std::string_view code_summary(DiagCode code) {
+std::string_view code_summary(DiagCode code, Lang lang) {
     const CodeRow* row = find_row(code);
-    return row ? row->summary : std::string_view{};
+    return row ? text(row->summary, lang) : std::string_view{};
+}
+
+Diagnostic make_diagnostic(Severity severity, DiagCode code, std::uint32_t line, std::uint32_t column, Msg msg,
+                           MessageArgs args) {
+    Diagnostic d{severity, code, line, column, format_message(msg, Lang::En, args), msg, std::move(args)};
+    return d;
+}
+
+std::string diagnostic_message(const Diagnostic& d, Lang lang) {
+    if (lang == Lang::En || d.msg == Msg::None) return d.message;
+    return format_message(d.msg, lang, d.args);
 }
 
 std::vector<DiagCode> all_codes() {

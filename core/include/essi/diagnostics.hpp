@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "essi/i18n.hpp"
+
 namespace essi {
 
 enum class Severity : std::uint8_t { Note, Warning, Error };
@@ -88,8 +90,16 @@ struct Diagnostic {
     DiagCode code = DiagCode::E101_InvalidCharacter;
     std::uint32_t line = 0;    // 1-based; 0 when the problem has no position (profile)
     std::uint32_t column = 0;  // 1-based byte column
-    std::string message;       // what was found and what was expected
+    std::string message;       // what was found and what was expected, in English
+    Msg msg = Msg::None;       // the catalogue row `message` was made from, and its arguments: the message
+    MessageArgs args;          // in another language (diagnostic_message); None for a message made otherwise
 };
+
+// A diagnostic whose message is the catalogue's `msg` with `args` (its `message` in English).
+[[nodiscard]] Diagnostic make_diagnostic(Severity severity, DiagCode code, std::uint32_t line, std::uint32_t column,
+                                         Msg msg, MessageArgs args = {});
+// The diagnostic's message in `lang` (its English `message` when it was not made from the catalogue).
+[[nodiscard]] std::string diagnostic_message(const Diagnostic& d, Lang lang);
 
 // "E101", "W109" ...
 [[nodiscard]] std::string code_name(DiagCode code);
@@ -98,7 +108,7 @@ struct Diagnostic {
 // "error", "warning", "note"
 [[nodiscard]] std::string_view severity_name(Severity s);
 // One sentence per code: what the rule checks (for SARIF rules, docs and the viewer).
-[[nodiscard]] std::string_view code_summary(DiagCode code);
+[[nodiscard]] std::string_view code_summary(DiagCode code, Lang lang = Lang::En);
 // Every code, in numeric order.
 [[nodiscard]] std::vector<DiagCode> all_codes();
 

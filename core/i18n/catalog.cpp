@@ -1,0 +1,144 @@
+// The message catalogue's texts and the template formatter (essi/i18n.hpp).
+#include "essi/i18n.hpp"
+
+#include <array>
+#include <cctype>
+
+namespace essi {
+namespace {
+
+struct Row {
+    std::string_view name;
+    std::array<const char*, 3> texts;  // by Lang
+};
+
+constexpr Row kRows[] = {
+    {"None", {"", "", ""}},
+#define ESSI_MSG(id, en, de, zh) {#id, {en, de, zh}},
+#include "messages/all.def"
+#undef ESSI_MSG
+};
+static_assert(std::size(kRows) == static_cast<std::size_t>(Msg::Count), "one row per Msg");
+
+constexpr char kArgSep = '\x1f';  // between two packed arguments
+constexpr char kArgMsg = '\x1e';  // starts an argument that is a catalogue message (its number follows)
+
+const Row& row(Msg id) {
+    const auto i = static_cast<std::size_t>(id);
+    return kRows[i < std::size(kRows) ? i : 0];
+}
+
+std::string lower_ascii(std::string_view s) {
+    std::string out(s);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+// Argument `n` of the packed arguments ("" when there are fewer), in `lang`.
+std::string argument(std::string_view packed, std::size_t n, Lang lang) {
+    std::size_t begin = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t sep = packed.find(kArgSep, begin);
+        if (sep == std::string_view::npos) return {};
+        begin = sep + 1;
+    }
+    const std::size_t end = packed.find(kArgSep, begin);
+    const std::string_view a = packed.substr(begin, end == std::string_view::npos ? packed.size() - begin : end - begin);
+    if (!a.empty() && a.front() == kArgMsg) {
+        unsigned id = 0;
+        for (char c : a.substr(1)) id = id * 10 + static_cast<unsigned>(c - '0');
+        return std::string(text(static_cast<Msg>(id), lang));
+    }
+    return std::string(a);
+}
+
+}  // namespace
+
+std::string_view lang_code(Lang lang) {
+    switch (lang) {
+        case Lang::De: return "de";
+        case Lang::Zh: return "zh";
+        case Lang::En: break;
+    }
+    return "en";
+}
+
+std::string_view lang_native_name(Lang lang) {
+    switch (lang) {
+        case Lang::De: return "Deutsch";
+        case Lang::Zh: return "中文";
+        case Lang::En: break;
+    }
+    return "English";
+}
+
+std::optional<Lang> parse_lang(std::string_view tag) {
+    const std::string t = lower_ascii(tag);
+    const std::string primary = t.substr(0, t.find_first_of("-_.@"));
+    if (primary == "en" || primary == "c" || primary == "posix") return Lang::En;
+    if (primary == "de") return Lang::De;
+    if (primary == "zh") return Lang::Zh;
+    return std::nullopt;
+}
+
+Lang lang_from_environment(const char* lc_all, const char* lc_messages, const char* lang) {
+    for (const char* v : {lc_all, lc_messages, lang})
+        if (v && *v) return parse_lang(v).value_or(Lang::En);
+    return Lang::En;
+}
+
+std::string_view text(Msg id, Lang lang) { return row(id).texts[static_cast<std::size_t>(lang)]; }
+const char* c_text(Msg id, Lang lang) { return row(id).texts[static_cast<std::size_t>(lang)]; }
+std::string_view msg_name(Msg id) { return row(id).name; }
+
+MessageArgs::MessageArgs(std::initializer_list<Arg> args) {
+    bool first = true;
+    for (const Arg& a : args) {
+        if (!first) packed_ += kArgSep;
+        first = false;
+        if (a.msg != Msg::None) {
+            packed_ += kArgMsg;
+            packed_ += std::to_string(static_cast<unsigned>(a.msg));
+            continue;
+        }
+        for (char c : a.text) packed_ += c == kArgSep || c == kArgMsg ? '?' : c;
+    }
+}
+
+MessageArgs MessageArgs::from_packed(std::string packed) {
+    MessageArgs a;
+    a.packed_ = std::move(packed);
+    return a;
+}
+
+std::string format_template(std::string_view tmpl, Lang lang, const MessageArgs& args) {
+    std::string out;
+    out.reserve(tmpl.size() + args.packed().size());
+    for (std::size_t i = 0; i < tmpl.size(); ++i) {
+        const char c = tmpl[i];
+        const std::size_t close = c == '{' ? tmpl.find('}', i) : std::string_view::npos;
+        if (close == std::string_view::npos || i + 1 >= close || !std::isdigit(static_cast<unsigned char>(tmpl[i + 1]))) {
+            out += c;
+            continue;
+        }
+        const std::size_t n = static_cast<std::size_t>(tmpl[i + 1] - '0');
+        const std::string value = argument(args.packed(), n, lang);
+        const std::string_view inner = tmpl.substr(i + 2, close - i - 2);  // "" or "|one|other"
+        if (inner.empty()) {
+            out += value;
+        } else {
+            const std::size_t bar = inner.find('|', 1);
+            const std::string_view one = inner.substr(1, bar == std::string_view::npos ? std::string_view::npos : bar - 1);
+            const std::string_view other = bar == std::string_view::npos ? std::string_view{} : inner.substr(bar + 1);
+            out += value == "1" ? one : other;
+        }
+        i = close;
+    }
+    return out;
+}
+
+std::string format_message(Msg id, Lang lang, const MessageArgs& args) {
+    return format_template(text(id, lang), lang, args);
+}
+
+}  // namespace essi
