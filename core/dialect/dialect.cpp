@@ -256,9 +256,8 @@ TapeSetup setup_tape(std::string_view bytes, std::optional<InputFormat> format, 
         std::string why;
         for (const auto& e : guess.evidence)
             if (e.rfind(guess.profile + ":", 0) == 0) why += (why.empty() ? "" : "; ") + e;
-        s.note = Diagnostic{Severity::Note, DiagCode::N403_OtherDialect, 1, 1,
-                            "this tape looks like " + guess.profile + " (" + why + "), not " + profile->name +
-                                "; try --profile " + guess.profile + " or --profile auto"};
+        s.note = make_diagnostic(Severity::Note, DiagCode::N403_OtherDialect, 1, 1, Msg::DialectLooksLike,
+                                 {guess.profile, why, profile->name});
     }
     return s;
 }

@@ -212,8 +212,8 @@ void KerfPath::emit_open() {
     held_.clear();
 }
 
-void KerfPath::gouge(const MotionRecord& m, const std::string& why) {
-    gouges_.push_back({m.line, m.block, why});
+void KerfPath::gouge(const MotionRecord& m, Msg why, MessageArgs args) {
+    gouges_.push_back({m.line, m.block, why, std::move(args)});
 }
 
 void KerfPath::event(const MachineEvent& e) {
@@ -424,13 +424,11 @@ bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
     for (const Point& x : intersections(open_is_entry_ ? entry_offset_ : a, next.rec))
         if (!best || norm(x - near) < norm(*best - near)) best = x;
     if (!best) {
-        gouge(m, "the compensated path cannot turn into this corner: with a kerf offset of " + mm(radius_) +
-                     " mm the pieces before and after it do not meet");
+        gouge(m, Msg::GeomKerfPiecesDoNotMeet, {mm(radius_)});
         return false;
     }
     const auto report = [&] {
-        gouge(m, "the torch cannot reach this concave corner without cutting into the contour (a gouge): the kerf "
-                 "offset of " + mm(radius_) + " mm is wider than the corner allows");
+        gouge(m, Msg::GeomKerfGouge, {mm(radius_)});
     };
     if (!runs_forward(a, a.start, *best)) {
         report();

@@ -22,6 +22,40 @@ static_assert(std::size(kRows) == static_cast<std::size_t>(Msg::Count), "one row
 
 constexpr char kArgSep = '\x1f';  // between two packed arguments
 constexpr char kArgMsg = '\x1e';  // starts an argument that is a catalogue message (its number follows)
+constexpr char kArgList = '\x1c';  // starts an argument that is a list ('o' alternatives, '+' joined; then items)
+constexpr char kListItem = '\x1d'; // between two alternatives of a list
+
+bool is_packing_byte(char c) { return c == kArgSep || c == kArgMsg || c == kArgList || c == kListItem; }
+
+std::string argument_text(std::string_view a, Lang lang);
+
+// "a, b or c" (kind 'o') or "a+b+c" (kind '+') in `lang` from "a\x1db\x1dc".
+std::string list_text(char kind, std::string_view items, Lang lang) {
+    std::string out;
+    std::size_t begin = 0;
+    while (true) {
+        const std::size_t end = items.find(kListItem, begin);
+        if (begin > 0) {
+            if (kind == '+') out += '+';
+            else out += text(end == std::string_view::npos ? Msg::ListOr : Msg::ListSeparator, lang);
+        }
+        out += argument_text(items.substr(begin, end == std::string_view::npos ? std::string_view::npos : end - begin), lang);
+        if (end == std::string_view::npos) break;
+        begin = end + 1;
+    }
+    return out;
+}
+
+// One packed argument (text, a catalogue message or a list) in `lang`.
+std::string argument_text(std::string_view a, Lang lang) {
+    if (!a.empty() && a.front() == kArgMsg) {
+        unsigned id = 0;
+        for (char c : a.substr(1)) id = id * 10 + static_cast<unsigned>(c - '0');
+        return std::string(text(static_cast<Msg>(id), lang));
+    }
+    if (a.size() >= 2 && a.front() == kArgList) return list_text(a[1], a.substr(2), lang);
+    return std::string(a);
+}
 
 const Row& row(Msg id) {
     const auto i = static_cast<std::size_t>(id);
@@ -43,13 +77,7 @@ std::string argument(std::string_view packed, std::size_t n, Lang lang) {
         begin = sep + 1;
     }
     const std::size_t end = packed.find(kArgSep, begin);
-    const std::string_view a = packed.substr(begin, end == std::string_view::npos ? packed.size() - begin : end - begin);
-    if (!a.empty() && a.front() == kArgMsg) {
-        unsigned id = 0;
-        for (char c : a.substr(1)) id = id * 10 + static_cast<unsigned>(c - '0');
-        return std::string(text(static_cast<Msg>(id), lang));
-    }
-    return std::string(a);
+    return argument_text(packed.substr(begin, end == std::string_view::npos ? packed.size() - begin : end - begin), lang);
 }
 
 }  // namespace
@@ -101,8 +129,41 @@ MessageArgs::MessageArgs(std::initializer_list<Arg> args) {
             packed_ += std::to_string(static_cast<unsigned>(a.msg));
             continue;
         }
-        for (char c : a.text) packed_ += c == kArgSep || c == kArgMsg ? '?' : c;
+        if (a.list) {
+            packed_ += kArgList;
+            packed_ += a.list;
+            packed_ += a.owned;
+            continue;
+        }
+        for (char c : a.text) packed_ += is_packing_byte(c) ? '?' : c;
     }
+}
+
+MessageArgs::Arg MessageArgs::Arg::alternatives(const std::vector<std::string>& items) {
+    std::string packed;
+    for (const std::string& item : items) {
+        if (!packed.empty()) packed += kListItem;
+        for (char c : item) packed += is_packing_byte(c) ? '?' : c;
+    }
+    Arg a("");
+    a.owned = std::move(packed);
+    a.text = std::string_view{};
+    a.list = 'o';
+    return a;
+}
+
+MessageArgs::Arg MessageArgs::Arg::combined(const std::vector<Msg>& words) {
+    std::string packed;
+    for (Msg m : words) {
+        if (!packed.empty()) packed += kListItem;
+        packed += kArgMsg;
+        packed += std::to_string(static_cast<unsigned>(m));
+    }
+    Arg a("");
+    a.owned = std::move(packed);
+    a.text = std::string_view{};
+    a.list = '+';
+    return a;
 }
 
 MessageArgs MessageArgs::from_packed(std::string packed) {

@@ -138,9 +138,9 @@ private:
                                            IPoint e_t, IPoint base);
     void event(const Block& b, std::size_t index, EventKind kind, bool has_value = false, double value = 0);
     void send_event(const Block& b, std::size_t index, EventKind kind, bool has_value, double value);
-    void warn(DiagCode code, const Block& b, std::string message) { diag(default_severity(code), code, b, std::move(message)); }
-    void diag(Severity s, DiagCode code, const Block& b, std::string message) {
-        diags_.push_back({s, code, b.line, column_of(source_, b.offset), std::move(message)});
+    void warn(DiagCode code, const Block& b, Msg msg, MessageArgs args = {}) {
+        diags_.push_back(make_diagnostic(default_severity(code), code, b.line, column_of(source_, b.offset), msg,
+                                         std::move(args)));
     }
     [[nodiscard]] Point to_mm(IPoint p) const { return units_to_mm(profile_, p.x, p.y); }
     void set_mapping(const AxisMapping& mapping) {
@@ -152,11 +152,12 @@ private:
     }
     void set_tools(std::uint8_t tools) { tools_ = tools; }
     void check_table(const MotionRecord& m, const Block& b);
-    void check_table_box(const Box& box, const Block& b, const char* what);
+    void check_table_box(const Box& box, const Block& b, Msg what);
 
-    [[nodiscard]] std::string function_name(int code) const {
+    // The function's name in the reader's language (a message argument).
+    [[nodiscard]] MessageArgs::Arg function_name(int code) const {
         const auto info = function_info(code, profile_.dialect);
-        return info ? std::string(info->name) : std::string("?");
+        return info && info->name_msg != Msg::None ? MessageArgs::Arg(info->name_msg) : MessageArgs::Arg("?");
     }
 
     std::string_view source_;
@@ -265,8 +266,7 @@ void Machine::run(const Tape& chunk, std::span<const MotionMeasure> measures) {
         if (b.kind == BlockKind::Comment || b.kind == BlockKind::Percent) continue;
         last = &b;
         if (burner_count_ && !(b.has_code() && b.code == fn::kWoydaBurnerSpacing && b.kind == BlockKind::FunctionValue)) {
-            warn(DiagCode::W212_BurnerCountNotBeforeSpacing, *burner_count_,
-                 "burner count (135) is not immediately followed by the burner spacing (136); expected 136+value next");
+            warn(DiagCode::W212_BurnerCountNotBeforeSpacing, *burner_count_, Msg::InterpBurnerCountNotNext);
             burner_count_.reset();
         }
         const bool is_end = b.ends_program();  // the end still ends a skipped section
@@ -306,23 +306,18 @@ void Machine::run(const Tape& chunk, std::span<const MotionMeasure> measures) {
 void Machine::finish() {
     if (stats_) stats_->finish();
     if (zero_offset_pending_ && zero_offset_block_) {
-        warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
-             "zero offset (83) at the end of the program; expected a block of two signed words (the new origin) after it");
+        warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_, Msg::InterpZeroOffsetAtEnd);
     }
     if (open_optional_) {
-        warn(DiagCode::W214_UnclosedOptionalIgnore, *open_optional_,
-             "optional ignore ON (100) is never switched off; expected 101 after the blocks to skip");
+        warn(DiagCode::W214_UnclosedOptionalIgnore, *open_optional_, Msg::InterpUnclosedOptionalIgnore);
     }
     if (burner_count_) {
-        warn(DiagCode::W212_BurnerCountNotBeforeSpacing, *burner_count_,
-             "burner count (135) is not followed by the burner spacing (136); expected 136+value next");
+        warn(DiagCode::W212_BurnerCountNotBeforeSpacing, *burner_count_, Msg::InterpBurnerCountAtEnd);
     }
     // The tools in force just before the end code (63/64 switches them off as part of ending).
     const std::uint8_t tools_at_end = ended_ ? tools_before_end_ : tools_;
     if (last_block_ && (tools_at_end & (kCuttingTools | kMarkingTools))) {
-        warn(DiagCode::W211_ToolOnAtEnd, *last_block_,
-             "the program ends with " + tools_text(tools_at_end) +
-                 " still on; expected the tool to be switched off (8, 10, 54, 111 ...) before the end");
+        warn(DiagCode::W211_ToolOnAtEnd, *last_block_, Msg::InterpToolOnAtEnd, {tools_arg(tools_at_end)});
     }
 }
 
@@ -358,37 +353,28 @@ void Machine::send_event(const Block& b, std::size_t index, EventKind kind, bool
 bool Machine::admit_function(const Block& b, bool& has_value, double value) {
     const int code = b.code;
     if (zero_offset_pending_) {
-        warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
-             "zero offset (83) must be followed by a block of two signed words (the new origin); found function " +
-                 std::to_string(code) + " on line " + std::to_string(b.line));
+        warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_, Msg::InterpZeroOffsetThenFunction, {code, b.line});
         zero_offset_pending_ = false;
     }
     const std::uint8_t flags = function_flags(code);
     if (!(flags & kAssigned)) {
-        warn(DiagCode::W201_UnknownFunction, b,
-             "machine function " + std::to_string(code) + " is " +
-                 (code > fn::kLastIsoCode ? "not defined by ISO 6582 (0-115) or by the " + profile_.name + " profile"
-                             : std::string("unassigned in ISO 6582 Annex B")) +
-                 "; it is ignored");
+        if (code > fn::kLastIsoCode)
+            warn(DiagCode::W201_UnknownFunction, b, Msg::InterpFunctionNotDefined, {code, profile_.name});
+        else
+            warn(DiagCode::W201_UnknownFunction, b, Msg::InterpFunctionUnassigned, {code});
         return false;
     }
     if (flags & kManufacturer) {
-        warn(DiagCode::W208_ManufacturerFunction, b,
-             "machine function " + std::to_string(code) +
-                 " is specified by the machine manufacturer (ISO 6582 55-62); it is ignored; choose the profile of "
-                 "your controller (e.g. woyda) to interpret it");
+        warn(DiagCode::W208_ManufacturerFunction, b, Msg::InterpManufacturerFunction, {code});
         return false;
     }
     if (has_value && (flags & kTakesNoValue)) {
-        warn(DiagCode::W202_FunctionValueIgnored, b,
-             "machine function " + std::to_string(code) + " (" + function_name(code) +
-                 ") takes no value; the value " + number_text(value) + " is ignored");
+        warn(DiagCode::W202_FunctionValueIgnored, b, Msg::InterpValueIgnored,
+             {code, function_name(code), number_text(value)});
         has_value = false;
     }
     if (!has_value && (flags & kNeedsValue)) {
-        warn(DiagCode::E203_FunctionValueMissing, b,
-             "machine function " + std::to_string(code) + " (" + function_name(code) + ") needs a value; expected " +
-                 std::to_string(code) + "+value");
+        warn(DiagCode::E203_FunctionValueMissing, b, Msg::InterpValueMissing, {code, function_name(code)});
         return false;
     }
     return true;
@@ -402,21 +388,24 @@ bool Machine::value_in_range(const Block& b, double value) {
                                                              : 1.0;
     if (value * scale >= range->min && value * scale <= range->max) return true;
     const auto info = function_info(b.code, profile_.dialect);
-    const std::string scaled_unit = range->unit == RangeUnit::Mm ? "mm" : "s";
-    const std::string per_unit = range->unit == RangeUnit::Mm ? " mm a unit" : " s a unit";
-    warn(DiagCode::E216_FunctionValueRange, b,
-         "the value " + number_text(value) + " of machine function " + std::to_string(b.code) + " (" + function_name(b.code) +
-             ") is outside " + number_text(range->min) + " to " + number_text(range->max) + " " +
-             (range->unit != RangeUnit::AsWritten ? scaled_unit : std::string(info ? info->value_unit : "")) +
-             (scale != 1.0 ? " (" + number_text(value * scale) + " " + scaled_unit + " at " + number_text(scale) + per_unit + ")" : "") +
-             "; the block is ignored");
+    const char* scaled_unit = range->unit == RangeUnit::Mm ? "mm" : "s";
+    if (scale != 1.0) {
+        warn(DiagCode::E216_FunctionValueRange, b, Msg::InterpValueOutsideScaled,
+             {number_text(value), b.code, function_name(b.code), number_text(range->min), number_text(range->max),
+              scaled_unit, number_text(value * scale), number_text(scale)});
+        return false;
+    }
+    warn(DiagCode::E216_FunctionValueRange, b, Msg::InterpValueOutside,
+         {number_text(value), b.code, function_name(b.code), number_text(range->min), number_text(range->max),
+          range->unit != RangeUnit::AsWritten   ? MessageArgs::Arg(scaled_unit)
+          : info && info->unit_msg != Msg::None ? MessageArgs::Arg(info->unit_msg)
+                                                : MessageArgs::Arg("")});
     return false;
 }
 
 void Machine::warn_kerf_while_cutting(const Block& b, KerfSide side) {
-    warn(DiagCode::W204_KerfWhileCutting, b,
-         "kerf compensation switched " + std::string(side == KerfSide::Off ? "off" : "on") +
-             " while a cutting tool is on; expected it before the pierce (7, 53 ...) or after the tool is off");
+    warn(DiagCode::W204_KerfWhileCutting, b, Msg::InterpKerfWhileCutting,
+         {side == KerfSide::Off ? Msg::WordOff : Msg::WordOn});
 }
 
 void Machine::set_kerf(const Block& b, KerfSide side, bool has_value, double value) {
@@ -433,9 +422,8 @@ void Machine::set_kerf(const Block& b, KerfSide side, bool has_value, double val
 
 void Machine::set_feed(const Block& b, bool has_value, double value) {
     if (has_value && value <= 0) {
-        warn(DiagCode::W209_ZeroFeed, b,
-             "programmed feed " + number_text(value) + " mm/min cannot move the machine; the time estimate uses the profile's feed of " +
-                 std::to_string(static_cast<long long>(profile_.feed_mm_min)) + " mm/min");
+        warn(DiagCode::W209_ZeroFeed, b, Msg::InterpZeroFeed,
+             {number_text(value), static_cast<long long>(profile_.feed_mm_min)});
         feed_mm_min_ = profile_.feed_mm_min;
     } else {
         feed_mm_min_ = has_value ? value : profile_.feed_mm_min;
@@ -446,9 +434,7 @@ void Machine::zero_offset(const Block& b) {
     zero_offset_pending_ = true;
     zero_offset_block_ = b;
     if (!absolute_) {
-        warn(DiagCode::W215_ZeroOffsetInIncremental, b,
-             "zero offset (83) while programming incrementally (81): the new origin takes effect with the next "
-             "absolute move (82)");
+        warn(DiagCode::W215_ZeroOffsetInIncremental, b, Msg::InterpZeroOffsetIncremental);
     }
 }
 
@@ -465,9 +451,7 @@ void Machine::return_to_zero(const Block& b, std::size_t index) {
 }
 
 void Machine::warn_macro_only(const Block& b) {
-    warn(DiagCode::W213_MacroOnlyFunction, b,
-         "machine function " + std::to_string(b.code) + " (" + function_name(b.code) +
-             ") is defined only in Woyda macro files; it is ignored in a program");
+    warn(DiagCode::W213_MacroOnlyFunction, b, Msg::InterpMacroOnly, {b.code, function_name(b.code)});
 }
 
 // Inlined into run(): half the blocks of a tape are functions (a call and its frame cost more than most of them).
@@ -600,9 +584,7 @@ void Machine::act_as(const Block& b, std::size_t index, bool has_value, double v
 }
 
 void Machine::warn_rapid_while_cutting(const Block& b) {
-    warn(DiagCode::W210_RapidWhileCutting, b,
-         "motion at rapid traverse (5) while " + tools_text(tools_ & kCuttingTools) +
-             " is on; expected 6 (rapid OFF) before cutting");
+    warn(DiagCode::W210_RapidWhileCutting, b, Msg::InterpRapidWhileCutting, {tools_arg(tools_ & kCuttingTools)});
 }
 
 [[gnu::always_inline]] inline void Machine::emit(MotionRecord& m, const Block& b, std::size_t index) {
@@ -631,7 +613,7 @@ void Machine::warn_rapid_while_cutting(const Block& b) {
 // A record of the compensated path went to the statistics: the gouge its corner made, if any, and whether a
 // piece is still open (while one is, lines come as records).
 void Machine::after_kerf_record(const Block& b) {
-    for (KerfGouge& g : stats_->take_gouges()) warn(DiagCode::E307_KerfGouge, b, std::move(g.message));
+    for (KerfGouge& g : stats_->take_gouges()) warn(DiagCode::E307_KerfGouge, b, g.msg, std::move(g.args));
     if (kerf_open_ != stats_->kerf_open()) {
         kerf_open_ = stats_->kerf_open();
         update_direct_paths();
@@ -677,25 +659,27 @@ void Machine::select_tool_offset(const Block& b, int code) {
     if (stats_) stats_->set_tool_offset(next);
     if (!profile_.table) return;
     const Point at = placement_.machine(to_mm(pos_[0]), tool_offset_);
-    check_table_box(Box::of(at, at), b, "the tool offset moves the carriage off the table");
+    check_table_box(Box::of(at, at), b, Msg::InterpToolOffsetOffTable);
 }
 
 void Machine::check_table(const MotionRecord& m, const Block& b) {
     if (!profile_.table) return;
-    check_table_box(placement_.machine_box(m, tool_offset_), b, "this motion leaves the table");
+    check_table_box(placement_.machine_box(m, tool_offset_), b, Msg::InterpMotionOffTable);
 }
 
-void Machine::check_table_box(const Box& box, const Block& b, const char* what) {
+void Machine::check_table_box(const Box& box, const Block& b, Msg what) {
     const TableLimits& t = *profile_.table;
     const bool inside = box.min_x >= t.min_x_mm && box.max_x <= t.max_x_mm && box.min_y >= t.min_y_mm &&
                         box.max_y <= t.max_y_mm;
     if (!inside && inside_table_) {
-        char buf[320];
-        std::snprintf(buf, sizeof buf,
-                      "%s: it reaches x %.3f..%.3f, y %.3f..%.3f mm (machine coordinates); the table allows x "
-                      "%.3f..%.3f, y %.3f..%.3f mm",
-                      what, box.min_x, box.max_x, box.min_y, box.max_y, t.min_x_mm, t.max_x_mm, t.min_y_mm, t.max_y_mm);
-        warn(DiagCode::E401_LeavesTable, b, buf);
+        const auto f3 = [](double v) {
+            char buf[48];
+            std::snprintf(buf, sizeof buf, "%.3f", v);
+            return std::string(buf);
+        };
+        warn(DiagCode::E401_LeavesTable, b, Msg::InterpLeavesTable,
+             {what, f3(box.min_x), f3(box.max_x), f3(box.min_y), f3(box.max_y), f3(t.min_x_mm), f3(t.max_x_mm),
+              f3(t.min_y_mm), f3(t.max_y_mm)});
     }
     inside_table_ = inside;
 }
@@ -720,9 +704,7 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
         send(e);
         return true;
     }
-    warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_,
-         "zero offset (83) must be followed by a block of two signed words (the new origin); line " +
-             std::to_string(b.line) + " has " + std::to_string(w.size()) + " words");
+    warn(DiagCode::E207_ZeroOffsetBlock, *zero_offset_block_, Msg::InterpZeroOffsetWordCount, {b.line, w.size()});
     return false;
 }
 
@@ -863,27 +845,22 @@ bool Machine::parabola_motion(MotionRecord& m, const Block& b, std::span<const s
     const bool axis_parallel_y = b.tp_positive();
     const double p_signed = axis_parallel_y ? YP : XP;
     if (p_signed == 0) {
-        warn(DiagCode::E304_ParabolaZeroCurvature, b,
-             std::string("the parabola's radius of curvature at the vertex (") + (axis_parallel_y ? "YP" : "XP") +
-                 ") is 0; expected a non-zero radius");
+        warn(DiagCode::E304_ParabolaZeroCurvature, b, Msg::GeomParabolaZeroCurvature, {axis_parallel_y ? "YP" : "XP"});
         return false;
     }
     const auto to_point = [](IPoint q) { return Point{static_cast<double>(q.x), static_cast<double>(q.y)}; };
     const ParabolaPiece piece = parabola_from_words(to_point(s_t), to_point(e_t), XP, YP, axis_parallel_y, absolute_);
     const ParabolaGeom& g = piece.curve;  // tape frame, units
     if (std::abs(piece.residual) > tol_units) {
-        warn(DiagCode::E303_ParabolaEndNotOnCurve, b,
-             "the parabola's end point is " + mm_text(std::abs(piece.residual) * unit) +
-                 " off its curve (measured along the axis); expected at most " + mm_text(tol_units * unit) +
-                 " (arc_tolerance)");
+        warn(DiagCode::E303_ParabolaEndNotOnCurve, b, Msg::GeomParabolaOffCurve,
+             {mm_text(std::abs(piece.residual) * unit), mm_text(tol_units * unit)});
     }
     if (g.t1 != g.t0) {
         const bool ccw = parabola_turns_ccw(g);
         if (ccw != b.tc_positive()) {
-            warn(DiagCode::W305_ParabolaDirection, b,
-                 std::string("TC says ") + (b.tc_positive() ? "counter-clockwise (+)" : "clockwise (-)") +
-                     " but this parabola piece turns " + (ccw ? "counter-clockwise" : "clockwise") +
-                     "; expected TC " + (ccw ? "+" : "-"));
+            warn(DiagCode::W305_ParabolaDirection, b, Msg::GeomParabolaDirection,
+                 {b.tc_positive() ? Msg::WordCounterClockwisePlus : Msg::WordClockwiseMinus,
+                  ccw ? Msg::WordCounterClockwise : Msg::WordClockwise, ccw ? "+" : "-"});
         }
     }
     // Map to machine millimetres.
@@ -902,32 +879,26 @@ bool Machine::parabola_motion(MotionRecord& m, const Block& b, std::span<const s
 }
 
 void Machine::warn_bad_head(const Block& b) {
-    warn(DiagCode::E206_BadHeadAddress, b,
-         "head address " + std::to_string(b.code) + " is not a head; expected 1 or 2 (ISO 6582 Annex B)");
+    warn(DiagCode::E206_BadHeadAddress, b, Msg::InterpBadHead, {b.code});
 }
 
 void Machine::warn_address_outside_3_axis(const Block& b) {
-    warn(DiagCode::W205_AddressOutside3Axis, b,
-         "head address " + std::to_string(b.code) + " while the machine is in 2-axis mode; expected 19 (3-axis control) before addressed blocks");
+    warn(DiagCode::W205_AddressOutside3Axis, b, Msg::InterpAddressOutside3Axis, {b.code});
 }
 
 void Machine::warn_arc_zero_radius(const Block& b) {
-    warn(DiagCode::E302_ArcZeroRadius, b,
-         "the arc's centre is its start point (radius 0); expected XC/YC to give the centre relative to the start");
+    warn(DiagCode::E302_ArcZeroRadius, b, Msg::GeomArcZeroRadius);
 }
 
 void Machine::warn_arc_off_circle(const Block& b, double r0_units, double r1_units) {
     const double unit = profile_.unit_mm;
-    warn(DiagCode::E301_ArcEndNotOnCircle, b,
-         "the arc's end point is not on its circle: radius at the start " + mm_text(r0_units * unit) + ", at the end " +
-             mm_text(r1_units * unit) + " (difference " + mm_text(std::abs(r1_units - r0_units) * unit) +
-             "); expected at most " + mm_text(profile_.arc_tolerance_units * unit) + " (arc_tolerance)");
+    warn(DiagCode::E301_ArcEndNotOnCircle, b, Msg::GeomArcOffCircle,
+         {mm_text(r0_units * unit), mm_text(r1_units * unit), mm_text(std::abs(r1_units - r0_units) * unit),
+          mm_text(profile_.arc_tolerance_units * unit)});
 }
 
 void Machine::warn_kerf_radius(const Block& b, double radius_mm) {
-    warn(DiagCode::E306_KerfRadiusNegative, b,
-         "with the kerf offset of " + mm_text(kerf_offset_mm_) + " this arc of radius " + mm_text(radius_mm) +
-             " would have no radius left; expected a radius above the kerf offset");
+    warn(DiagCode::E306_KerfRadiusNegative, b, Msg::GeomKerfRadius, {mm_text(kerf_offset_mm_), mm_text(radius_mm)});
 }
 
 }  // namespace detail

@@ -3,6 +3,7 @@
 #include "essi/motion.hpp"
 
 #include <cstddef>
+#include <vector>
 
 namespace essi {
 
@@ -49,20 +50,33 @@ const char* kerf_side_name(KerfSide k) {
     return name_in(k, kNames);
 }
 
+namespace {
+// Each tool bit: its name in the trace (an identifier) and in messages (the catalogue).
+constexpr struct {
+    std::uint8_t bit;
+    const char* name;
+    Msg word;
+} kToolNames[] = {{kToolOxygen, "oxygen", Msg::ToolOxygen},         {kToolLeftBevel, "left-bevel", Msg::ToolLeftBevel},
+                  {kToolRightBevel, "right-bevel", Msg::ToolRightBevel}, {kToolPlasma, "plasma", Msg::ToolPlasma},
+                  {kToolPunch, "punch", Msg::ToolPunch},             {kToolLineMarker, "line-marker", Msg::ToolLineMarker},
+                  {kToolFive, "tool5", Msg::ToolFive}};
+}  // namespace
+
 std::string tools_text(std::uint8_t tools) {
-    static constexpr struct {
-        std::uint8_t bit;
-        const char* name;
-    } kNames[] = {{kToolOxygen, "oxygen"},   {kToolLeftBevel, "left-bevel"}, {kToolRightBevel, "right-bevel"},
-                  {kToolPlasma, "plasma"},   {kToolPunch, "punch"},          {kToolLineMarker, "line-marker"},
-                  {kToolFive, "tool5"}};
     std::string s;
-    for (const auto& n : kNames) {
+    for (const auto& n : kToolNames) {
         if (!(tools & n.bit)) continue;
         if (!s.empty()) s += '+';
         s += n.name;
     }
     return s.empty() ? "-" : s;
+}
+
+MessageArgs::Arg tools_arg(std::uint8_t tools) {
+    std::vector<Msg> words;
+    for (const auto& n : kToolNames)
+        if (tools & n.bit) words.push_back(n.word);
+    return MessageArgs::Arg::combined(words);
 }
 
 }  // namespace essi

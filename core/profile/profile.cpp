@@ -425,13 +425,11 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
 
 }  // namespace
 
-std::string end_codes_text(const Profile& p) {
-    std::string s;
-    for (std::size_t i = 0; i < p.end_codes.size(); ++i) {
-        if (i > 0) s += i + 1 == p.end_codes.size() ? " or " : ", ";
-        s += end_code_text(p.end_codes[i]);
-    }
-    return s.empty() ? "the end of the data" : s;
+MessageArgs::Arg end_codes_arg(const Profile& p) {
+    if (p.end_codes.empty()) return Msg::EndOfData;
+    std::vector<std::string> items;
+    for (const EndCode& e : p.end_codes) items.push_back(end_code_text(e));
+    return MessageArgs::Arg::alternatives(items);
 }
 
 std::string_view builtin_profile_json(std::string_view name) {

@@ -74,7 +74,8 @@ struct LineDiagnostic {
     Severity severity;
     DiagCode code;
     std::uint32_t offset;
-    std::string message;
+    Msg msg = Msg::None;
+    MessageArgs args;
 };
 
 // The blocks and diagnostics one line gives, before they are committed to the chunk.
@@ -150,7 +151,7 @@ private:
     void function_value(std::uint32_t offset, int code, double value, LineResult& out) const;
     void commit(const LineResult& r);
     void push_block(const LineResult::Out& o);
-    void report(Severity sev, DiagCode code, std::uint32_t offset, std::string message);
+    void report(Severity sev, DiagCode code, std::uint32_t offset, Msg msg, MessageArgs args = {});
     [[nodiscard]] bool is_end_function(int code) const {
         return std::any_of(profile_.end_codes.begin(), profile_.end_codes.end(),
                            [&](const EndCode& e) { return e.function == code; });
@@ -195,14 +196,12 @@ private:
     std::uint32_t rounded_line_ = 0, rounded_column_ = 0;
 };
 
-void EiaReader::report(Severity sev, DiagCode code, std::uint32_t offset, std::string message) {
+void EiaReader::report(Severity sev, DiagCode code, std::uint32_t offset, Msg msg, MessageArgs args) {
     if (stopped_) return;
-    diagnostics_of(*chunk_).push_back({sev, code, line_, column(offset), std::move(message)});
+    diagnostics_of(*chunk_).push_back(make_diagnostic(sev, code, line_, column(offset), msg, std::move(args)));
     if (sev == Severity::Error && ++errors_ >= kMaxReadErrors) {
-        diagnostics_of(*chunk_).push_back({Severity::Error, DiagCode::E115_TooManyErrors, line_, column(offset),
-                                           "reading stopped after " + std::to_string(kMaxReadErrors) +
-                                               " errors; this does not look like an EIA tape (expected blocks such "
-                                               "as N10 G01 X100 Y0)"});
+        diagnostics_of(*chunk_).push_back(make_diagnostic(Severity::Error, DiagCode::E115_TooManyErrors, line_,
+                                                          column(offset), Msg::EiaTooManyErrors, {kMaxReadErrors}));
         stopped_ = true;
     }
 }
@@ -217,8 +216,8 @@ void EiaReader::reserve_whole(Tape& tape) const {
 // Letters and their numbers; comments "( ... )" are skipped. False (with the error) when the line cannot be read.
 bool EiaReader::parse_words(std::uint32_t begin, std::uint32_t end, std::vector<Word>& words, LineResult& out) const {
     std::uint32_t p = begin;
-    const auto error = [&](DiagCode code, std::uint32_t at, std::string message) {
-        out.diagnostics.push_back({Severity::Error, code, at, std::move(message)});
+    const auto error = [&](DiagCode code, std::uint32_t at, Msg msg, MessageArgs args = {}) {
+        out.diagnostics.push_back({Severity::Error, code, at, msg, std::move(args)});
         return false;
     };
     while (p < end) {
@@ -230,22 +229,21 @@ bool EiaReader::parse_words(std::uint32_t begin, std::uint32_t end, std::vector<
         if (c == '(') {
             const std::size_t close = src_.substr(0, end).find(')', p);
             if (close == std::string_view::npos)
-                return error(DiagCode::E126_EiaUnclosedComment, p, "comment '(' is not closed on its line; expected ')'");
+                return error(DiagCode::E126_EiaUnclosedComment, p, Msg::EiaUnclosedComment);
             p = static_cast<std::uint32_t>(close) + 1;
             continue;
         }
         const char letter = static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
         if (letter_rank_[static_cast<unsigned char>(letter)] < 0) {
-            const std::string found = c >= 0x80 || c < 0x20 ? [&] {
-                char buf[16];
-                std::snprintf(buf, sizeof buf, "byte 0x%02X", c);
-                return std::string(buf);
-            }() : "'" + std::string(1, static_cast<char>(c)) + "'";
             std::string expected;
             for (char l : profile_.eia.letters) expected += (expected.empty() ? "" : " ") + std::string(1, l);
-            return error(DiagCode::E119_EiaUnknownLetter, p,
-                         "unexpected " + found + " in an EIA block; expected the letters " + expected + " (" +
-                             profile_.name + "), each followed by a number, or a comment in ( )");
+            if (c >= 0x80 || c < 0x20) {
+                char hex[4];
+                std::snprintf(hex, sizeof hex, "%02X", c);
+                return error(DiagCode::E119_EiaUnknownLetter, p, Msg::EiaUnknownByte, {hex, expected, profile_.name});
+            }
+            return error(DiagCode::E119_EiaUnknownLetter, p, Msg::EiaUnknownChar,
+                         {src_.substr(p, 1), expected, profile_.name});
         }
         Word w;
         w.letter = letter;
@@ -260,19 +258,17 @@ bool EiaReader::parse_words(std::uint32_t begin, std::uint32_t end, std::vector<
                 point = true;
             } else {
                 if (++digits > kMaxNumberDigits)
-                    return error(DiagCode::E122_EiaBadNumber, w.offset,
-                                 std::string("the number after ") + letter + " has more than " +
-                                     std::to_string(kMaxNumberDigits) + " digits: " +
-                                     excerpt(src_.substr(number_start, end - number_start), kExcerptChars));
+                    return error(DiagCode::E122_EiaBadNumber, w.offset, Msg::EiaNumberTooLong,
+                                 {std::string(1, letter), kMaxNumberDigits,
+                                  excerpt(src_.substr(number_start, end - number_start), kExcerptChars)});
                 w.mantissa = w.mantissa * 10 + (src_[p] - '0');
                 if (point) ++w.decimals;
             }
             ++p;
         }
         if (digits == 0)
-            return error(DiagCode::E122_EiaBadNumber, w.offset,
-                         std::string("letter ") + letter + " is not followed by a number; expected e.g. " + letter +
-                             (letter == 'G' || letter == 'M' ? "01" : "12.5"));
+            return error(DiagCode::E122_EiaBadNumber, w.offset, Msg::EiaLetterWithoutNumber,
+                         {std::string(1, letter), letter == 'G' || letter == 'M' ? "01" : "12.5"});
         if (negative) w.mantissa = -w.mantissa;
         words.push_back(w);
     }
@@ -294,17 +290,16 @@ bool EiaReader::check_order(const std::vector<Word>& words, LineResult& out) con
         const bool twice = (seen & bit) != 0;
         seen |= bit;
         if (twice && (!repeatable || e.strict_order)) {
-            out.diagnostics.push_back({Severity::Error, DiagCode::E120_EiaLetterOrder, w.offset,
-                                       std::string(1, w.letter) + " appears twice in one block; expected it once"});
+            out.diagnostics.push_back({Severity::Error, DiagCode::E120_EiaLetterOrder, w.offset, Msg::EiaLetterTwice,
+                                       {std::string(1, w.letter)}});
             return false;
         }
         if (e.strict_order && k > 0 && rank < last) {
             std::string order;
             for (char l : e.letters) order += (order.empty() ? "" : " ") + std::string(1, l);
-            out.diagnostics.push_back({Severity::Error, DiagCode::E120_EiaLetterOrder, w.offset,
-                                       std::string(1, w.letter) + " after " + words[k - 1].letter +
-                                           ": the letters of a block come in the order " + order + " (" +
-                                           profile_.name + ")"});
+            out.diagnostics.push_back({Severity::Error, DiagCode::E120_EiaLetterOrder, w.offset, Msg::EiaLetterOrder,
+                                       {std::string(1, w.letter), std::string(1, words[k - 1].letter), order,
+                                        profile_.name}});
             return false;
         }
         last = std::max(last, rank);
@@ -312,9 +307,9 @@ bool EiaReader::check_order(const std::vector<Word>& words, LineResult& out) con
         if (is_function && e.one_function_per_block) {
             if (function_word != nullptr) {
                 out.diagnostics.push_back({Severity::Error, DiagCode::E121_EiaFunctionsInBlock, w.offset,
-                                           "a block may hold only one of G, M and F (" + profile_.name + "); found " +
-                                               std::string(1, function_word->letter) + " and " + w.letter +
-                                               ": put each on a line of its own"});
+                                           Msg::EiaFunctionsInBlock,
+                                           {profile_.name, std::string(1, function_word->letter),
+                                            std::string(1, w.letter)}});
                 return false;
             }
             function_word = &w;
@@ -377,7 +372,7 @@ bool EiaReader::units(const Word& w, const State& st, LineResult& out, long long
             u = q + (2 * (r < 0 ? -r : r) >= scale ? (r < 0 ? -1 : 1) : 0);  // half away from zero, as std::round
         }
         if (u >= -std::numeric_limits<std::int32_t>::max() && u <= std::numeric_limits<std::int32_t>::max()) {
-            if (!on_grid) out.diagnostics.push_back({Severity::Warning, DiagCode::W125_EiaRounded, w.offset, ""});
+            if (!on_grid) out.diagnostics.push_back({Severity::Warning, DiagCode::W125_EiaRounded, w.offset, Msg::None, {}});
             result = u;
             return true;
         }
@@ -385,14 +380,13 @@ bool EiaReader::units(const Word& w, const State& st, LineResult& out, long long
     const double mm = w.value() * (st.inch ? kMmPerInch : 1.0);
     const double exact = mm / profile_.unit_mm;
     if (!(std::fabs(exact) <= static_cast<double>(std::numeric_limits<std::int32_t>::max()))) {
-        out.diagnostics.push_back({Severity::Error, DiagCode::E122_EiaBadNumber, w.offset,
-                                   std::string(1, w.letter) + " is too large: more than 2^31 unit increments of " +
-                                       excerpt(std::to_string(profile_.unit_mm), 8) + " mm"});
+        out.diagnostics.push_back({Severity::Error, DiagCode::E122_EiaBadNumber, w.offset, Msg::EiaCoordinateTooLarge,
+                                   {std::string(1, w.letter), excerpt(std::to_string(profile_.unit_mm), 8)}});
         return false;
     }
     const double rounded = std::round(exact);
     if (std::fabs(exact - rounded) > kOnGrid) {
-        out.diagnostics.push_back({Severity::Warning, DiagCode::W125_EiaRounded, w.offset, ""});  // (counted)
+        out.diagnostics.push_back({Severity::Warning, DiagCode::W125_EiaRounded, w.offset, Msg::None, {}});  // (counted)
     }
     result = static_cast<long long>(rounded);
     return true;
@@ -405,8 +399,7 @@ void EiaReader::function(std::uint32_t offset, int code, LineResult& out) const 
 void EiaReader::function_value(std::uint32_t offset, int code, double value, LineResult& out) const {
     const double thousandths = std::round(value * 1000.0);
     if (!(std::fabs(thousandths) <= static_cast<double>(std::numeric_limits<std::int32_t>::max()))) {
-        out.diagnostics.push_back({Severity::Error, DiagCode::E122_EiaBadNumber, offset,
-                                   "the value of function " + std::to_string(code) + " is too large"});
+        out.diagnostics.push_back({Severity::Error, DiagCode::E122_EiaBadNumber, offset, Msg::EiaValueTooLarge, {code}});
         return;
     }
     LineResult::Out o{offset, BlockKind::FunctionValue, static_cast<std::uint16_t>(code), Block::kValueThousandths, 1, {}};
@@ -438,8 +431,7 @@ void EiaReader::motion(const Axes& axes, bool preset, LineResult& out, State& st
     const bool arc = axes.i != nullptr || axes.j != nullptr;
     if (arc && st.arc == ArcMode::None) {
         out.diagnostics.push_back({Severity::Error, DiagCode::E123_EiaArcWithoutDirection, (axes.i ? axes.i : axes.j)->offset,
-                                   "an arc centre (I, J) while neither G02 nor G03 is in force; expected G02 "
-                                   "(clockwise) or G03 (counter-clockwise) in this block or before it"});
+                                   Msg::EiaArcWithoutDirection, {}});
         return;
     }
     LineResult::Out o{offset, BlockKind::Motion, Block::kNoCode, 0, arc ? 5 : 2, {}};
@@ -471,8 +463,8 @@ void EiaReader::translate(const std::vector<Word>& words, LineResult& out, State
         function(offset, on ? fn::kRapidOn : fn::kRapidOff, out);
         st.rapid = on;
     };
-    const auto unknown = [&](const Word& w, const std::string& what) {
-        out.diagnostics.push_back({Severity::Warning, DiagCode::W124_EiaUnknownCode, w.offset, what});
+    const auto unknown = [&](const Word& w, Msg msg, MessageArgs args) {
+        out.diagnostics.push_back({Severity::Warning, DiagCode::W124_EiaUnknownCode, w.offset, msg, std::move(args)});
     };
     for (const Word& w : words) {
         if (w.letter == 'F') {
@@ -481,13 +473,13 @@ void EiaReader::translate(const std::vector<Word>& words, LineResult& out, State
         }
         if (w.letter != 'G' && w.letter != 'M') {
             if (!reads_letter(w.letter, e))
-                unknown(w, std::string(1, w.letter) + number_text(w.value()) + " is not read by essikit (no path, tool or time of its own); it is ignored");
+                unknown(w, Msg::EiaWordNotRead, {std::string(1, w.letter) + number_text(w.value())});
             continue;
         }
         const int n = w.code_number();
         if (n < 0) {
-            unknown(w, std::string(1, w.letter) + excerpt(src_.substr(w.offset + 1, 8), 8) + " is not a " + w.letter +
-                           " code; it is ignored");
+            unknown(w, Msg::EiaNotACode,
+                    {std::string(1, w.letter) + excerpt(src_.substr(w.offset + 1, 8), 8), std::string(1, w.letter)});
             continue;
         }
         const GRole role = w.letter == 'G' ? g_role_[static_cast<std::size_t>(n)] : GRole::Function;
@@ -505,11 +497,11 @@ void EiaReader::translate(const std::vector<Word>& words, LineResult& out, State
             case GRole::Preset: preset = true; break;
             case GRole::Inch: st.inch = true; break;
             case GRole::Mm: st.inch = false; break;
-            case GRole::None: unknown(w, word_text(w.letter, n) + " is not in the EIA table of the " + profile_.name + " profile; it is ignored"); break;
+            case GRole::None: unknown(w, Msg::EiaNotInTable, {word_text(w.letter, n), profile_.name}); break;
             case GRole::Function: {
                 const int f = function_of(w.letter, n);
                 if (f < 0) {
-                    unknown(w, word_text(w.letter, n) + " is not in the EIA table of the " + profile_.name + " profile; it is ignored");
+                    unknown(w, Msg::EiaNotInTable, {word_text(w.letter, n), profile_.name});
                 } else if (f == fn::kDwell) {
                     dwell = &w;
                 } else if (f == fn::kProgramStop || f == fn::kOptionalStop || is_end_function(f)) {
@@ -556,9 +548,8 @@ void EiaReader::read_line(std::uint32_t begin, std::uint32_t end, LineResult& ou
 void EiaReader::push_block(const LineResult::Out& o) {
     Tape& t = *chunk_;
     if (percent_line_ != 0 && o.kind != BlockKind::Comment) {
-        diagnostics_of(t).push_back({Severity::Warning, DiagCode::W112_MisplacedPercent, percent_line_, percent_column_,
-                                     "a % mark in the middle of the program is ignored; % belongs before the first "
-                                     "block or after the end"});
+        diagnostics_of(t).push_back(make_diagnostic(Severity::Warning, DiagCode::W112_MisplacedPercent, percent_line_,
+                                                    percent_column_, Msg::ReadMisplacedPercent));
         percent_line_ = 0;
     }
     if (o.kind == BlockKind::Comment) ++chunk_comments_;
@@ -579,7 +570,7 @@ void EiaReader::commit(const LineResult& r) {
             }
             continue;
         }
-        report(d.severity, d.code, d.offset, d.message);
+        report(d.severity, d.code, d.offset, d.msg, d.args);
     }
     for (const LineResult::Out& o : r.blocks) {
         if (ended_) break;
@@ -615,8 +606,7 @@ bool EiaReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
         } else if (text == "%") {
             r.blocks.push_back({text_at, BlockKind::Percent, Block::kNoCode, 0, 0, {}});
         } else if (ended_) {
-            report(Severity::Warning, DiagCode::W110_ContentAfterEnd, text_at,
-                   "content after the end of the program (line " + std::to_string(end_line_) + "); it is not executed");
+            report(Severity::Warning, DiagCode::W110_ContentAfterEnd, text_at, Msg::ReadContentAfterEnd, {end_line_});
             after_end_seen_ = true;
             break;
         } else if (text.size() == 1 && is_end_mark(text[0])) {
@@ -660,11 +650,9 @@ bool EiaReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     finished_ = true;
     if (stopped_) return true;
     if (rounded_ > 0) {
-        diagnostics_of(chunk).push_back(
-            {Severity::Warning, DiagCode::W125_EiaRounded, rounded_line_, rounded_column_,
-             std::to_string(rounded_) + " coordinate" + (rounded_ == 1 ? " is" : "s are") + " finer than the unit of " +
-                 excerpt(std::to_string(profile_.unit_mm), 8) + " mm of the " + profile_.name +
-                 " profile and were rounded to it (the first here); choose a profile with a finer unit_mm"});
+        diagnostics_of(chunk).push_back(make_diagnostic(Severity::Warning, DiagCode::W125_EiaRounded, rounded_line_,
+                                                        rounded_column_, Msg::EiaRounded,
+                                                        {rounded_, excerpt(std::to_string(profile_.unit_mm), 8), profile_.name}));
     }
     report_tape_end(chunk, profile_, total_blocks_, ended_, last_line_);
     return true;

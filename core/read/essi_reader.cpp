@@ -174,10 +174,10 @@ template <bool bounded>
     return true;
 }
 
-std::string describe_byte(unsigned char c) {
-    char buf[32];
-    if (c >= 0x21 && c < 0x7F) std::snprintf(buf, sizeof buf, "'%c' (0x%02X)", c, c);
-    else std::snprintf(buf, sizeof buf, "byte 0x%02X", c);
+// A byte as two hex digits ("C3"), as the messages quote it.
+std::string hex_byte(unsigned char c) {
+    char buf[4];
+    std::snprintf(buf, sizeof buf, "%02X", c);
     return buf;
 }
 
@@ -232,7 +232,7 @@ private:
         end_line_ = line_;
         BlockReader::mark_program_end(tape());
     }
-    void report(Severity sev, DiagCode code, std::uint32_t offset, std::string message);
+    void report(Severity sev, DiagCode code, std::uint32_t offset, Msg msg, MessageArgs args = {});
     [[nodiscard]] bool is_end_function(long long code) const;
     [[nodiscard]] bool is_end_mark(char mark) const;
     [[nodiscard]] std::uint32_t column(std::uint32_t offset) const { return offset - line_begin_ + 1; }
@@ -267,13 +267,12 @@ private:
     std::uint32_t last_line_ = 0;
 };
 
-void EssiReader::report(Severity sev, DiagCode code, std::uint32_t offset, std::string message) {
+void EssiReader::report(Severity sev, DiagCode code, std::uint32_t offset, Msg msg, MessageArgs args) {
     if (stopped_) return;
-    diagnostics_of(tape()).push_back({sev, code, line_, column(offset), std::move(message)});
+    diagnostics_of(tape()).push_back(make_diagnostic(sev, code, line_, column(offset), msg, std::move(args)));
     if (sev == Severity::Error && ++errors_ >= kMaxReadErrors) {
-        diagnostics_of(tape()).push_back({Severity::Error, DiagCode::E115_TooManyErrors, line_, column(offset),
-                                      "reading stopped after " + std::to_string(kMaxReadErrors) +
-                                          " errors; this does not look like an ESSI tape (expected lines of + - 0-9)"});
+        diagnostics_of(tape()).push_back(make_diagnostic(Severity::Error, DiagCode::E115_TooManyErrors, line_,
+                                                         column(offset), Msg::ReadTooManyErrors, {kMaxReadErrors}));
         stopped_ = true;
     }
 }
@@ -289,9 +288,8 @@ bool EssiReader::is_end_mark(char mark) const {
 
 void EssiReader::push_block(std::uint32_t offset, BlockKind kind, std::uint16_t code, std::uint8_t packed) {
     if (percent_line_ != 0 && kind != BlockKind::Comment) [[unlikely]] {
-        diagnostics_of(tape()).push_back({Severity::Warning, DiagCode::W112_MisplacedPercent, percent_line_, percent_column_,
-                                      "a % mark in the middle of the program is ignored; % belongs before the first "
-                                      "block or after the end"});
+        diagnostics_of(tape()).push_back(make_diagnostic(Severity::Warning, DiagCode::W112_MisplacedPercent, percent_line_,
+                                                         percent_column_, Msg::ReadMisplacedPercent));
         percent_line_ = 0;
     }
     Tape& t = *chunk_;
@@ -323,9 +321,7 @@ bool EssiReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     if (!started_) {
         started_ = true;
         if (!stopped_ && src_.substr(0, 3) == "\xEF\xBB\xBF") {
-            report(Severity::Error, DiagCode::E102_NonAsciiByte, 0,
-                   "the tape starts with a UTF-8 byte order mark (EF BB BF); ESSI tapes are plain ASCII: save the "
-                   "file without a BOM");
+            report(Severity::Error, DiagCode::E102_NonAsciiByte, 0, Msg::ReadByteOrderMark);
             skip_ = 3;
         }
     }
@@ -364,10 +360,8 @@ bool EssiReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     finished_ = true;
     if (stopped_) return true;
     if (in_ignore_) {
-        diagnostics_of(chunk).push_back({Severity::Error, DiagCode::E107_UnclosedIgnore, ignore_line_, ignore_column_,
-                                      "ignore ON (3) is never switched off: expected a block 4 (ignore OFF) "
-                                      "after it; everything after line " + std::to_string(ignore_line_) +
-                                          " is ignored"});
+        diagnostics_of(chunk).push_back(make_diagnostic(Severity::Error, DiagCode::E107_UnclosedIgnore, ignore_line_,
+                                                        ignore_column_, Msg::ReadUnclosedIgnore, {ignore_line_}));
     }
     report_tape_end(chunk, profile_, total_blocks_, ended_, last_line_);
     return true;
@@ -526,9 +520,7 @@ void EssiReader::after_end_line(std::uint32_t begin, std::uint32_t end) {
     }
     std::uint32_t first = begin;
     while (src_[first] == ' ' || src_[first] == '\t') ++first;
-    report(Severity::Warning, DiagCode::W110_ContentAfterEnd, first,
-           "content after the end of the program (line " + std::to_string(end_line_) +
-               "); it is not executed");
+    report(Severity::Warning, DiagCode::W110_ContentAfterEnd, first, Msg::ReadContentAfterEnd, {end_line_});
     after_end_seen_ = true;  // one warning is enough: nothing after the end is read
 }
 
@@ -545,9 +537,8 @@ bool EssiReader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& 
     auto finish_word = [&]() -> bool {
         if (!in_word) return true;
         if (word_digits > kMaxWordDigits) {
-            report(Severity::Error, DiagCode::E104_NumberTooLarge, word_start,
-                   "the word starting here has " + std::to_string(word_digits) + " digits; expected at most " +
-                       std::to_string(kMaxWordDigits));
+            report(Severity::Error, DiagCode::E104_NumberTooLarge, word_start, Msg::ReadWordTooLong,
+                   {word_digits, kMaxWordDigits});
             return false;
         }
         ++lp.words;
@@ -588,9 +579,8 @@ bool EssiReader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& 
             case kSpace:
                 if (profile_.whitespace == WhitespacePolicy::Strict) {
                     // Trailing blanks after a complete block are as much whitespace as inner ones.
-                    report(Severity::Error, DiagCode::E108_WhitespaceStrict, i,
-                           std::string(c == '\t' ? "a tab" : "a space") +
-                               " inside a block; the strict whitespace policy allows only + - 0-9 in a block");
+                    report(Severity::Error, DiagCode::E108_WhitespaceStrict, i, Msg::ReadWhitespaceStrict,
+                           {c == '\t' ? Msg::WordATab : Msg::WordASpace});
                     return false;
                 }
                 if (space_at == end) space_at = i;
@@ -604,12 +594,10 @@ bool EssiReader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& 
                 lp.blank = false;
                 break;
             case kHigh:
-                report(Severity::Error, DiagCode::E102_NonAsciiByte, i,
-                       describe_byte(c) + " is not ASCII" +
-                           (c == 0xEF && i + 2 < end && data[i + 1] == 0xBB && data[i + 2] == 0xBF
-                                ? " (a UTF-8 byte order mark)"
-                                : "") +
-                           "; text belongs inside a 3 ... 4 ignore section, blocks hold only + - 0-9");
+                report(Severity::Error, DiagCode::E102_NonAsciiByte, i, Msg::ReadNonAscii,
+                       {hex_byte(c), c == 0xEF && i + 2 < end && data[i + 1] == 0xBB && data[i + 2] == 0xBF
+                                         ? MessageArgs::Arg(Msg::ReadBomHint)
+                                         : MessageArgs::Arg("")});
                 return false;
             default:
                 goto invalid;
@@ -617,9 +605,8 @@ bool EssiReader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& 
     }
     if (!finish_word()) return false;
     if (space_at != end) {
-        report(Severity::Warning, DiagCode::W109_WhitespaceSkipped, space_at,
-               std::string(data[space_at] == '\t' ? "a tab" : "a space") +
-                   " inside a block was skipped; ESSI blocks hold only + - 0-9");
+        report(Severity::Warning, DiagCode::W109_WhitespaceSkipped, space_at, Msg::ReadWhitespaceSkipped,
+               {data[space_at] == '\t' ? Msg::WordATab : Msg::WordASpace});
     }
     return true;
 
@@ -628,9 +615,13 @@ invalid:
         const unsigned char c = data[i];
         const auto k = kClass[c];
         if (k == kOther || k == kLineEnd || ((k == kSlash || k == kEquals) && !is_end_mark(static_cast<char>(c)))) {
-            report(Severity::Error, DiagCode::E101_InvalidCharacter, i,
-                   "unexpected " + describe_byte(c) + "; expected + - or a digit" +
-                       (c == '#' || c == ';' || c == '(' ? " (comments belong inside a 3 ... 4 ignore section)" : ""));
+            const MessageArgs::Arg hint = c == '#' || c == ';' || c == '(' ? MessageArgs::Arg(Msg::ReadCommentHint)
+                                                                            : MessageArgs::Arg("");
+            if (c >= 0x21 && c < 0x7F)
+                report(Severity::Error, DiagCode::E101_InvalidCharacter, i, Msg::ReadUnexpectedChar,
+                       {std::string_view(reinterpret_cast<const char*>(data + i), 1), hex_byte(c), hint});
+            else
+                report(Severity::Error, DiagCode::E101_InvalidCharacter, i, Msg::ReadUnexpectedByte, {hex_byte(c), hint});
             return false;
         }
     }
@@ -640,9 +631,8 @@ misplaced_mark:
     for (std::uint32_t i = begin; i < end; ++i) {
         const auto k = kClass[data[i]];
         if (k == kPercent || k == kSlash || k == kEquals) {
-            report(Severity::Error, DiagCode::E116_MisplacedMark, i,
-                   std::string("'") + static_cast<char>(data[i]) +
-                       "' must stand alone in its block; expected a block holding only that mark");
+            report(Severity::Error, DiagCode::E116_MisplacedMark, i, Msg::ReadMisplacedMark,
+                   {std::string_view(reinterpret_cast<const char*>(data + i), 1)});
             return false;
         }
     }
@@ -668,8 +658,8 @@ void EssiReader::read_line(std::uint32_t begin, std::uint32_t end) {
 // Turns a parsed line into a block: its kind by the leading number and the count of signed words.
 void EssiReader::classify(std::uint32_t first, const LineParse& lp, std::size_t words_before) {
 
-    auto fail = [&](DiagCode code, std::string message) {
-        report(Severity::Error, code, first, std::move(message));
+    auto fail = [&](DiagCode code, Msg msg, MessageArgs args) {
+        report(Severity::Error, code, first, msg, std::move(args));
         words_of(tape()).truncate(words_before);
         push_block(first, BlockKind::Invalid, Block::kNoCode, 0);
         program_started_ = true;
@@ -694,9 +684,8 @@ void EssiReader::classify(std::uint32_t first, const LineParse& lp, std::size_t 
     const bool motion_count = lp.words == 2 || lp.words == 5 || lp.words == 6;
     if (lp.lead_digits > 0) {
         if (lp.lead_digits > kMaxFunctionDigits) {
-            fail(DiagCode::E103_FunctionCodeTooLong,
-                 "machine function " + excerpt(src_.substr(first, lp.lead_digits), kExcerptDigits) + " has " +
-                     std::to_string(lp.lead_digits) + " digits; expected at most 3 (ISO 6582 3.4.1)");
+            fail(DiagCode::E103_FunctionCodeTooLong, Msg::ReadFunctionTooLong,
+                 {excerpt(src_.substr(first, lp.lead_digits), kExcerptDigits), lp.lead_digits});
             return;
         }
         const auto code = static_cast<std::uint16_t>(lp.lead_value);
@@ -707,8 +696,7 @@ void EssiReader::classify(std::uint32_t first, const LineParse& lp, std::size_t 
                 ignore_line_ = line_;
                 ignore_column_ = column(first);
             } else if (code == fn::kIgnoreOff) {
-                report(Severity::Warning, DiagCode::W111_StrayIgnoreOff, first,
-                       "ignore OFF (4) without an ignore ON (3) before it; expected 3 to open the ignored section");
+                report(Severity::Warning, DiagCode::W111_StrayIgnoreOff, first, Msg::ReadStrayIgnoreOff);
             } else if (is_end_function(code)) {
                 mark_program_end();
             }
@@ -716,10 +704,7 @@ void EssiReader::classify(std::uint32_t first, const LineParse& lp, std::size_t 
         }
         if (lp.words == 1) {
             if (lp.value_negative) {
-                fail(DiagCode::E118_FunctionValueSign,
-                     "the value of machine function " + std::to_string(code) +
-                         " is written after a '-'; a function and its value are separated by a '+' (" +
-                         std::to_string(code) + "+value), and no function takes a negative value");
+                fail(DiagCode::E118_FunctionValueSign, Msg::ReadFunctionValueSign, {code});
                 return;
             }
             push_block(first, BlockKind::FunctionValue, code, word_count);
@@ -729,17 +714,14 @@ void EssiReader::classify(std::uint32_t first, const LineParse& lp, std::size_t 
             push_block(first, BlockKind::Motion, code, static_cast<std::uint8_t>(word_count | lp.sign_flags | Block::kHasAddress));
             return;
         }
-        fail(DiagCode::E106_FunctionWordCount,
-             "a leading number followed by " + std::to_string(lp.words) +
-                 " signed words; expected 1 (function value) or 2, 5 or 6 (head address and motion)");
+        fail(DiagCode::E106_FunctionWordCount, Msg::ReadFunctionWordCount, {lp.words});
         return;
     }
     if (motion_count) {
         push_block(first, BlockKind::Motion, Block::kNoCode, static_cast<std::uint8_t>(word_count | lp.sign_flags));
         return;
     }
-    fail(DiagCode::E105_WordCount, "found " + std::to_string(lp.words) + " signed word" + (lp.words == 1 ? "" : "s") +
-                                       "; expected 2 (line DX DY), 5 (arc DX DY XC YC TC) or 6 (parabola DX DY XP YP TC TP)");
+    fail(DiagCode::E105_WordCount, Msg::ReadWordCount, {lp.words});
 }
 
 std::unique_ptr<BlockReader> make_essi_reader(std::string_view bytes, const Profile& profile) {

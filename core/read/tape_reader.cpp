@@ -26,9 +26,8 @@ bool BlockReader::begin_chunk(Tape& chunk, std::size_t first_block, bool first_c
     chunk.first_block_ = first_block;
     chunk.has_end_ = false;
     if (!first_chunk || bytes.size() <= std::numeric_limits<std::uint32_t>::max()) return false;
-    chunk.diagnostics_.push_back({Severity::Error, DiagCode::E117_TapeTooLarge, 0, 0,
-                                  "the tape has " + std::to_string(bytes.size()) +
-                                      " bytes; essikit reads tapes of at most 4 GiB"});
+    chunk.diagnostics_.push_back(
+        make_diagnostic(Severity::Error, DiagCode::E117_TapeTooLarge, 0, 0, Msg::ReadTapeTooLarge, {bytes.size()}));
     return true;
 }
 
@@ -48,13 +47,10 @@ void BlockReader::finish_chunk(Tape& chunk, bool ended_before, bool ended, std::
 void BlockReader::report_tape_end(Tape& chunk, const Profile& profile, std::size_t total_blocks, bool ended,
                                   std::uint32_t last_line) {
     if (total_blocks == 0) {
-        chunk.diagnostics_.push_back({Severity::Error, DiagCode::E113_EmptyTape, 1, 1,
-                                      "the tape holds no block; expected blocks such as 7, +100+0, 64 (ESSI) or "
-                                      "G01 X100 Y0 (EIA)"});
+        chunk.diagnostics_.push_back(make_diagnostic(Severity::Error, DiagCode::E113_EmptyTape, 1, 1, Msg::ReadEmptyTape));
     } else if (!ended && !profile.end_at_data_end) {
-        chunk.diagnostics_.push_back({Severity::Warning, DiagCode::W114_NoProgramEnd, last_line, 1,
-                                      "the tape ends without an end of program; expected " + end_codes_text(profile) +
-                                          " as the last block"});
+        chunk.diagnostics_.push_back(make_diagnostic(Severity::Warning, DiagCode::W114_NoProgramEnd, last_line, 1,
+                                                     Msg::ReadNoProgramEnd, {end_codes_arg(profile)}));
     }
 }
 

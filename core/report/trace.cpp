@@ -140,7 +140,7 @@ std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profil
         interpret(tape, bytes, profile, torch, diagnostics);
         torch.finish();
         for (KerfGouge& g : torch.take_gouges())
-            diagnostics.push_back({Severity::Error, DiagCode::E307_KerfGouge, g.line, 1, std::move(g.message)});
+            diagnostics.push_back(make_diagnostic(Severity::Error, DiagCode::E307_KerfGouge, g.line, 1, g.msg, std::move(g.args)));
     } else {
         interpret(tape, bytes, profile, after_kerf, diagnostics);
     }

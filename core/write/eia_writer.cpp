@@ -20,7 +20,7 @@ public:
         if (!e_.mm_words.empty()) block(word_text(e_.mm_words.front()));
         const std::string mode = word_of(o.absolute ? fn::kAbsolute : fn::kIncremental);
         if (!mode.empty()) block(mode);
-        else if (o.absolute) warn(DiagCode::W501_NoCounterpart, 0, "the " + o.target.name + " EIA table has no absolute mode; the coordinates are written incremental");
+        else if (o.absolute) warn(DiagCode::W501_NoCounterpart, 0, Msg::WriteNoAbsoluteMode, {o.target.name});
         absolute_ = o.absolute && !mode.empty();
     }
     std::string finish() override { return std::move(out_); }
@@ -75,9 +75,7 @@ private:
             return;
         }
         if (e.has_value)
-            warn(DiagCode::W504_ValueNotWritten, e.line,
-                 "the value " + number_text(e.value) + " of function " + std::to_string(e.code) + " has no place in an EIA "
-                 "block (" + w + "); the profile's value applies");
+            warn(DiagCode::W504_ValueNotWritten, e.line, Msg::WriteValueNoPlace, {number_text(e.value), e.code, w});
         block(w);
     }
     void end(const MachineEvent& e) override {
@@ -90,7 +88,7 @@ private:
             }
         }
         if (!options_.target.end_codes.empty())
-            warn(DiagCode::W501_NoCounterpart, e.line, "the end of the program has no word in the " + options_.target.name + " EIA table");
+            warn(DiagCode::W501_NoCounterpart, e.line, Msg::WriteNoEndWord, {options_.target.name});
     }
 
     const EiaDialect& e_;

@@ -53,9 +53,8 @@ private:
         if (e.code == fn::kDwell) v = e.value / options_.target.dwell_unit_s;  // (the event's dwell is in seconds)
         const double whole = std::round(v);
         if (std::fabs(whole - v) > 1e-9 || whole < 0) {
-            warn(DiagCode::W504_ValueNotWritten, e.line,
-                 "the value " + number_text(v) + " of function " + std::to_string(e.code) +
-                     " is no whole number; ESSI writes " + number_text(std::max(whole, 0.0)));
+            warn(DiagCode::W504_ValueNotWritten, e.line, Msg::WriteNotWhole,
+                 {number_text(v), e.code, number_text(std::max(whole, 0.0))});
         }
         block(std::to_string(e.code) + "+" + std::to_string(static_cast<long long>(std::max(whole, 0.0))));
     }

@@ -62,14 +62,12 @@ void ProgramWriter::close() {
         end(e);
     }
     if (rounded_ == 0 || options_.to == OutputFormat::Gcode) return;  // (G-code: 0.1 um, below any machine's step)
-    warn(DiagCode::W503_RoundedToUnit, rounded_line_,
-         std::to_string(rounded_) + " coordinate" + (rounded_ == 1 ? " is" : "s are") + " not on the unit grid of " +
-             number_text(options_.target.unit_mm) + " mm of the " + options_.target.name +
-             " profile and were rounded to it (the first here); choose a target profile with a finer unit_mm");
+    warn(DiagCode::W503_RoundedToUnit, rounded_line_, Msg::WriteRounded,
+         {rounded_, number_text(options_.target.unit_mm), options_.target.name});
 }
 
-void ProgramWriter::warn(DiagCode code, std::uint32_t line, std::string message) {
-    diagnostics_.push_back({default_severity(code), code, line, 1, std::move(message)});
+void ProgramWriter::warn(DiagCode code, std::uint32_t line, Msg msg, MessageArgs args) {
+    diagnostics_.push_back(make_diagnostic(default_severity(code), code, line, 1, msg, std::move(args)));
 }
 
 std::string ProgramWriter::no_counterpart(const MachineEvent& e, std::string_view target) {
@@ -77,9 +75,8 @@ std::string ProgramWriter::no_counterpart(const MachineEvent& e, std::string_vie
     std::string name = "ESSI " + std::to_string(e.code);
     if (e.has_value) name += "+" + number_text(e.value);
     if (info) name += ": " + std::string(info->name);
-    warn(DiagCode::W501_NoCounterpart, e.line,
-         "machine function " + std::to_string(e.code) + (info ? " (" + std::string(info->name) + ")" : "") +
-             " has no counterpart in " + std::string(target) + "; it is kept as a comment");
+    warn(DiagCode::W501_NoCounterpart, e.line, Msg::WriteNoCounterpart,
+         {e.code, info ? " (" + std::string(info->name) + ")" : std::string(), target});
     return name;
 }
 
@@ -99,19 +96,16 @@ void ProgramWriter::on_motion(const MotionRecord& m) {
     last_line_ = m.line;
     if (m.curve == CurveKind::Parabola) {
         const std::vector<MotionRecord> arcs = parabola_arcs(m, source_.chord_tolerance_mm);
-        warn(DiagCode::W502_ParabolaAsArcs, m.line,
-             "the parabola is written as " + std::to_string(arcs.size()) + " circular arc" + (arcs.size() == 1 ? "" : "s") +
-                 " within " + number_text(source_.chord_tolerance_mm) + " mm (chord_tolerance_mm)");
+        warn(DiagCode::W502_ParabolaAsArcs, m.line, Msg::WriteParabolaAsArcs,
+             {arcs.size(), number_text(source_.chord_tolerance_mm)});
         for (const MotionRecord& a : arcs) on_motion(a);
         return;
     }
     head_ = m.head == 2 ? 1 : 0;
     if (head_two() && !writes_head_addresses()) {
         if (!head_two_left_out_)
-            warn(DiagCode::W501_NoCounterpart, m.line,
-                 "head 2's motions (a 3-axis tape, ISO 3.2) have no counterpart in " +
-                     std::string(options_.to == OutputFormat::Gcode ? "G-code" : "EIA") +
-                     ": they are left out (head 1's program is written)");
+            warn(DiagCode::W501_NoCounterpart, m.line, Msg::WriteHeadTwoLeftOut,
+                 {options_.to == OutputFormat::Gcode ? "G-code" : "EIA"});
         head_two_left_out_ = true;
         return;
     }

@@ -43,7 +43,7 @@ protected:
     [[nodiscard]] static bool applied_in_geometry(int code);
     // A function that is no end in the source but one of the target's end codes (63 from ISO to Woyda).
     [[nodiscard]] bool would_end_program(const MachineEvent& e) const;
-    void warn(DiagCode code, std::uint32_t line, std::string message);
+    void warn(DiagCode code, std::uint32_t line, Msg msg, MessageArgs args = {});
     // W501 for function `code` at `line`, with its name from the source dialect; the comment text "ESSI 45:
     // Torch head lower".
     std::string no_counterpart(const MachineEvent& e, std::string_view target);

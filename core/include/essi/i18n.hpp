@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace essi {
 
@@ -58,6 +59,14 @@ public:
         Arg(const std::string& s) : text(s) {}
         Arg(const char* s) : text(s) {}
         Arg(Msg m) : msg(m) {}
+        Arg(const Arg& o)
+            : owned(o.owned), text(!o.owned.empty() && o.text.data() == o.owned.data() ? std::string_view(owned) : o.text),
+              msg(o.msg), list(o.list) {}
+        Arg& operator=(const Arg&) = delete;
+        // Alternatives shown as a list in the reader's language: "63, 64 or /", "63、64 或 /".
+        [[nodiscard]] static Arg alternatives(const std::vector<std::string>& items);
+        // Catalogue words joined with '+' in any language: "oxygen+punch", "Sauerstoff+Körner".
+        [[nodiscard]] static Arg combined(const std::vector<Msg>& words);
         Arg(int v) : owned(std::to_string(v)), text(owned) {}
         Arg(unsigned v) : owned(std::to_string(v)), text(owned) {}
         Arg(long v) : owned(std::to_string(v)), text(owned) {}
@@ -67,6 +76,7 @@ public:
         std::string owned;
         std::string_view text;
         Msg msg = Msg::None;
+        char list = 0;  // 'o': `owned` holds alternatives ("a, b or c"), '+': words joined with '+' (packed)
     };
     MessageArgs() = default;
     MessageArgs(std::initializer_list<Arg> args);

@@ -20,6 +20,8 @@
 // look-ahead): events that come while a piece is open are passed on after it.
 #pragma once
 
+#include "essi/i18n.hpp"
+
 #include <cstdint>
 #include <string>
 #include <variant>
@@ -38,7 +40,8 @@ constexpr double kKerfLengthEpsilon = 1e-9;
 // A corner the torch cannot get into: the motion (line, block) whose piece the corner would make run backwards.
 struct KerfGouge {
     std::uint32_t line = 0, block = 0;
-    std::string message;
+    Msg msg = Msg::None;  // why, with its arguments (the E307 diagnostic's message)
+    MessageArgs args;
 };
 
 class KerfPath {
@@ -74,7 +77,7 @@ private:
     bool trim_concave(Piece& next, const MotionRecord& m);
     void emit_open();
     void emit(const MotionRecord& rec);
-    void gouge(const MotionRecord& m, const std::string& why);
+    void gouge(const MotionRecord& m, Msg why, MessageArgs args);
     // The compensated pieces of a programmed motion, before corners: one for a line or an arc (returned), the
     // chords of the offset curve for a parabola (the first returned, the rest in chords_).
     void offset_piece(const MotionRecord& m, Piece& p);

@@ -3,6 +3,8 @@
 // offset), before kerf compensation.
 #pragma once
 
+#include "essi/i18n.hpp"
+
 #include <cstdint>
 #include <string>
 
@@ -128,5 +130,7 @@ public:
 [[nodiscard]] const char* curve_kind_name(CurveKind k);     // "line", "arc", "parabola"
 [[nodiscard]] const char* kerf_side_name(KerfSide k);       // "off", "left", "right"
 [[nodiscard]] std::string tools_text(std::uint8_t tools);    // "oxygen+punch", "-" for none
+// The tools as a message argument, in the reader's language ("oxygen+punch", "Sauerstoff+Körner").
+[[nodiscard]] MessageArgs::Arg tools_arg(std::uint8_t tools);
 
 }  // namespace essi

@@ -3,6 +3,8 @@
 // (core/profile/builtin/: iso6582 (default), woyda, hypertherm, din66025), compiled in.
 #pragma once
 
+#include "essi/i18n.hpp"
+
 #include <array>
 #include <map>
 #include <optional>
@@ -122,8 +124,9 @@ struct Profile {
 // unit grid, or too far for a long long).
 [[nodiscard]] bool mm_to_units(const Profile& p, Point mm, long long& x, long long& y);
 
-// The profile's end codes in words, for messages: "63, 64 or /"; "the end of the data" when there are none.
-[[nodiscard]] std::string end_codes_text(const Profile& p);
+// The profile's end codes in words, for messages: "63, 64 or /" (in the reader's language), "the end of the
+// data" when there are none.
+[[nodiscard]] MessageArgs::Arg end_codes_arg(const Profile& p);
 
 // The built-in profiles by name ("iso6582", "woyda", "hypertherm", "din66025"); nullopt for other names.
 [[nodiscard]] std::optional<Profile> builtin_profile(std::string_view name);
