@@ -1,5 +1,6 @@
 // What every machine function means, per dialect (essi/functions.hpp): one table, ISO 6582 Annex B and the Woyda
-// NBS300/400 extensions.
+// NBS300/400 extensions. The table (function_table.def) holds the codes; their names, explanations and the
+// sentences built here are rows of the message catalogue (core/i18n/messages/functions.def).
 #include "essi/functions.hpp"
 
 #include "essi/function_codes.hpp"
@@ -10,16 +11,20 @@
 namespace essi {
 namespace {
 
-FunctionInfo row(int code, std::string_view name, std::string_view explanation) {
+// A function's name and explanation: the catalogue's rows, and their English texts for the callers that
+// read FunctionInfo::name and explanation.
+FunctionInfo row(int code, Msg name, Msg explanation) {
     FunctionInfo f;
     f.code = code;
-    f.name = name;
-    f.explanation = explanation;
+    f.name_msg = name;
+    f.explanation_msg = explanation;
+    f.name = text(name, Lang::En);
+    f.explanation = text(explanation, Lang::En);
     return f;
 }
 
 FunctionInfo unassigned(int code) {
-    FunctionInfo f = row(code, "Unassigned", "not assigned by ISO 6582; a controller ignores it");
+    FunctionInfo f = row(code, Msg::FnUnassignedName, Msg::FnUnassignedText);
     f.assigned = false;
     return f;
 }
@@ -28,10 +33,10 @@ FunctionInfo unassigned(int code) {
 struct FunctionRow {
     int code;
     Dialect dialect;
-    std::string_view name;
-    std::string_view explanation;
+    Msg name;
+    Msg explanation;
     FunctionValue value;
-    std::string_view value_unit;
+    Msg value_unit;  // Msg::None: no unit
 };
 
 // One ESSI_ACTS_AS row of function_table.def.
@@ -42,8 +47,9 @@ struct ActionRow {
 };
 
 constexpr FunctionRow kFunctionRows[] = {
-#define ESSI_FUNCTION(code, dialect, name, explanation, value, unit) \
-    {code, Dialect::dialect, name, explanation, FunctionValue::value, unit},
+// A row's stem S names the catalogue's S##Name and S##Text (functions.def); its unit is a catalogue row or None.
+#define ESSI_FUNCTION(code, dialect, text, value, unit) \
+    {code, Dialect::dialect, Msg::text##Name, Msg::text##Text, FunctionValue::value, Msg::unit},
 #define ESSI_ACTS_AS(code, dialect, action, action_value)
 #include "function_table.def"
 #undef ESSI_ACTS_AS
@@ -51,7 +57,7 @@ constexpr FunctionRow kFunctionRows[] = {
 };
 
 constexpr ActionRow kActionRows[] = {
-#define ESSI_FUNCTION(code, dialect, name, explanation, value, unit)
+#define ESSI_FUNCTION(code, dialect, text, value, unit)
 #define ESSI_ACTS_AS(code, dialect, action, action_value) \
     {code, Dialect::dialect, FunctionAction{action, action_value}},
 #include "function_table.def"
@@ -72,7 +78,8 @@ bool has_complete_table(Dialect dialect) {
 FunctionInfo info_of(const FunctionRow& r) {
     FunctionInfo f = row(r.code, r.name, r.explanation);
     f.value = r.value;
-    f.value_unit = r.value_unit;
+    f.unit_msg = r.value_unit;
+    f.value_unit = text(r.value_unit, Lang::En);
     return f;
 }
 
@@ -86,18 +93,30 @@ const FunctionRow* find_row(int code, Dialect dialect) {
 FunctionInfo iso_row(int code) {
     if (const FunctionRow* r = find_row(code, Dialect::Iso6582)) return info_of(*r);
     if (code >= 55 && code <= 62) {
-        FunctionInfo f = row(code, "Manufacturer function", "specified by the flame cutter manufacturer (ISO 6582 55-62)");
+        FunctionInfo f = row(code, Msg::FnManufacturerName, Msg::FnManufacturerText);
         f.manufacturer = true;
         return f;
     }
     const bool drawing = (code >= 70 && code <= 74) || (code >= 76 && code <= 79) || (code >= 84 && code <= 86) ||
                          (code >= 89 && code <= 90) || (code >= 93 && code <= 98);
     if (drawing) {
-        FunctionInfo f = row(code, "Drawing machine function", "for NC drawing machines; a cutting machine ignores it");
+        FunctionInfo f = row(code, Msg::FnDrawingMachineName, Msg::FnDrawingMachineText);
         f.drawing_machine = true;
         return f;
     }
     return unassigned(code);
+}
+
+// A number as printf's %.4g and %.3f write it (400 bytes hold any double in either).
+std::string g4_text(double v) {
+    char buf[400];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+}
+std::string f3_text(double v) {
+    char buf[400];
+    std::snprintf(buf, sizeof buf, "%.3f", v);
+    return buf;
 }
 
 // The ranges of the values functions take (E216): wide enough for any machine, narrow enough to catch a value
@@ -139,62 +158,62 @@ std::optional<FunctionInfo> function_info(int code, Dialect dialect) {
     if (dialect != Dialect::Iso6582) {
         if (const FunctionRow* r = find_row(code, dialect)) return info_of(*r);
         if (has_complete_table(dialect)) {
-            FunctionInfo f = row(code, "Unknown", "not in this dialect's code table: its control refuses it");
+            FunctionInfo f = row(code, Msg::FnUnknownName, Msg::FnUnknownNotInTableText);
             f.assigned = false;
             return f;
         }
     }
     if (code > fn::kLastIsoCode) {
-        FunctionInfo f = row(code, "Unknown", "not a function of ISO 6582 (0-115) or of this dialect");
+        FunctionInfo f = row(code, Msg::FnUnknownName, Msg::FnUnknownBeyondIsoText);
         f.assigned = false;
         return f;
     }
     return iso_row(code);
 }
 
-std::string kerf_value_text(double value_mm, const Profile& profile) {
-    char buf[96];
-    if (profile.kerf_value == KerfValueMeaning::Width)
-        std::snprintf(buf, sizeof buf, "kerf width %.4g mm (the torch %.4g mm to the side)", value_mm, value_mm / 2);
-    else
-        std::snprintf(buf, sizeof buf, "kerf offset %.4g mm (a cut %.4g mm wide)", value_mm, value_mm * 2);
-    return buf;
+// The sentences below are the catalogue's; their numbers are formatted as they always were, the same in every
+// language (a point for the decimals).
+std::string kerf_value_text(double value_mm, const Profile& profile, Lang lang) {
+    const bool width = profile.kerf_value == KerfValueMeaning::Width;
+    return format_message(width ? Msg::FnKerfWidth : Msg::FnKerfOffset, lang,
+                          {g4_text(value_mm), g4_text(width ? value_mm / 2 : value_mm * 2)});
 }
 
-std::string kerf_offset_text(KerfSide side, double offset_mm) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "torch %.3f mm to the %s (a cut %.3f mm wide)", offset_mm, kerf_side_name(side),
-                  offset_mm * 2);
-    return buf;
+std::string kerf_offset_text(KerfSide side, double offset_mm, Lang lang) {
+    const Msg sentence = side == KerfSide::Left    ? Msg::FnKerfTorchLeft
+                         : side == KerfSide::Right ? Msg::FnKerfTorchRight
+                                                   : Msg::FnKerfTorchOff;
+    return format_message(sentence, lang, {f3_text(offset_mm), f3_text(offset_mm * 2)});
 }
 
-std::string describe_function(int code, bool has_value, double value, const Profile& profile) {
+std::string describe_function(int code, bool has_value, double value, const Profile& profile, Lang lang) {
     const auto info = function_info(code, profile.dialect);
-    std::string s = "function " + std::to_string(code) + ": ";
-    if (!info) return s + "not a machine function";
-    s += info->name;
-    if (!info->assigned) s += " (ignored)";
-    char buf[64];
+    if (!info) return format_message(Msg::FnDescribeNotAFunction, lang, {code});
+    std::string name(text(info->name_msg, lang));
+    if (!info->assigned) name = format_message(Msg::FnDescribeIgnored, lang, {name});
+    // What the value says, with its separator (", 2 mm"), or nothing.
+    std::string detail;
     if (has_value) {
         switch (code) {
             case fn::kKerfLeft:
-            case fn::kKerfRight: s += ", " + kerf_value_text(value * profile.unit_mm, profile); break;
-            case fn::kFeed: s += ", " + number_text(value) + " mm/min"; break;
-            case fn::kDwell: s += ", " + number_text(value * profile.dwell_unit_s) + " s"; break;
-            case fn::kHyperthermKerfValue: s += ", " + kerf_value_text(value * profile.unit_mm, profile); break;
-            case fn::kWoydaBurnerSpacing: {
-                std::snprintf(buf, sizeof buf, ", %.4g mm", value * profile.unit_mm);
-                s += buf;
+            case fn::kKerfRight:
+            case fn::kHyperthermKerfValue:
+                detail = format_message(Msg::FnDescribeKerf, lang, {kerf_value_text(value * profile.unit_mm, profile, lang)});
                 break;
-            }
-            default: s += ", value " + number_text(value); break;
+            case fn::kFeed: detail = format_message(Msg::FnDescribeFeed, lang, {number_text(value)}); break;
+            case fn::kDwell:
+                detail = format_message(Msg::FnDescribeDwell, lang, {number_text(value * profile.dwell_unit_s)});
+                break;
+            case fn::kWoydaBurnerSpacing:
+                detail = format_message(Msg::FnDescribeLength, lang, {g4_text(value * profile.unit_mm)});
+                break;
+            default: detail = format_message(Msg::FnDescribeValue, lang, {number_text(value)}); break;
         }
     } else if (code == fn::kKerfLeft || code == fn::kKerfRight) {
-        s += ", the profile's " + kerf_value_text(profile.kerf_units * profile.unit_mm, profile);
+        detail = format_message(Msg::FnDescribeProfileKerf, lang,
+                                {kerf_value_text(profile.kerf_units * profile.unit_mm, profile, lang)});
     }
-    s += ": ";
-    s += info->explanation;
-    return s;
+    return format_message(Msg::FnDescribe, lang, {code, name, detail, text(info->explanation_msg, lang)});
 }
 
 }  // namespace essi
