@@ -28,6 +28,7 @@ constexpr Served kViewerFiles[] = {
     {"index.html", "text/html; charset=utf-8"},    {"essi_viewer.js", "text/javascript"},
     {"essi_viewer.wasm", "application/wasm"},      {"essi_viewer.data", "application/octet-stream"},
     {"share_store.js", "text/javascript"},         {"favicon.ico", "image/x-icon"},
+    {"essi_cjk.ttc", "font/collection"},  // (the CJK font, fetched only when a text needs it: web/render/UiFonts.hpp)
 };
 
 void not_found(httplib::Response& res) {

@@ -1420,3 +1420,157 @@ test('a big tape zoomed out is drawn from the level-of-detail raster: cuts where
   assert.equal(await cutAt(page, between, 'lod-again.png'), 0, 'after a rebuild, cut colour between the parts');
   await page.close();
 });
+
+// ---- fonts (docs/viewer.md#fonts) ---------------------------------------------------------------------------
+
+// Glyph edges along the rows of a screenshot region: of the steps from background (< 15 % of the text's contrast)
+// to full ink (> 85 %), the share that passes at most one pixel in between. A font rasterised at the screen's
+// pixels has nearly all its edges that sharp; a font made for half the pixels and magnified has a ramp of two or
+// more (measured: 0.93 against 0.29 for DejaVu Sans at 1x magnified, 0.76 for the old bitmap font magnified).
+function sharpEdgeShare(at, w, h) {
+  const lum = (x, y) => { const c = at(x, y); return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]; };
+  const counts = new Map();
+  const L = [];
+  for (let y = 0; y < h; ++y) for (let x = 0; x < w; ++x) {
+    const l = Math.round(lum(x, y));
+    L.push(l);
+    counts.set(l, (counts.get(l) || 0) + 1);
+  }
+  const bg = [...counts.entries()].sort((a, b) => b[1] - a[1])[0][0];
+  const dist = L.map((l) => Math.abs(l - bg));
+  const top = [...dist].sort((a, b) => a - b)[Math.floor(dist.length * 0.995)];
+  const d = (x, y) => dist[y * w + x] / top;
+  let sharp = 0, edges = 0;
+  for (let y = 0; y < h; ++y) {
+    for (let x = 0; x < w;) {
+      if (d(x, y) >= 0.15) { ++x; continue; }
+      let k = x + 1;
+      while (k < w && d(k, y) >= 0.15 && d(k, y) <= 0.85) ++k;
+      if (k < w && k > x + 0 && d(k, y) > 0.85) {
+        ++edges;
+        if (k - x - 1 <= 1) ++sharp;
+      }
+      x = k;
+    }
+  }
+  return { share: edges ? sharp / edges : 0, edges };
+}
+
+test('fonts: at a device pixel ratio of 2 the panels\' text is rasterised at 2x (sharp); a new ratio makes the atlas again', async () => {
+  const ctx = await browser.newContext({ viewport: { width: 1200, height: 700 }, deviceScaleFactor: 2, locale: 'en-US' });
+  const page = await ctx.newPage();
+  await page.goto(baseUrl);
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 60000 });
+  await loadExample(page, 'plate_holes.esi');
+  await until(page, () => essikit.state().fonts.pixel_size === 26, null, 'the font was not made at 26 px');
+  const f = (await page.evaluate(() => essikit.state())).fonts;
+  assert.equal(f.font, 'DejaVu Sans');
+  assert.equal(f.css_size, 13);
+  assert.equal(f.ratio, 2);
+  await page.mouse.move(700, 690);
+  await nextFrames(page, 3);
+  // The left panel (its statistics, layers, playback), in device pixels.
+  const clip = { x: 0, y: 40, width: 300, height: 640 };
+  const at = await pixels(page, await page.screenshot({ clip, path: path.join(shots, 'fonts-hidpi-panel.png') }));
+  const edges = sharpEdgeShare(at, clip.width * 2, clip.height * 2);
+  assert.ok(edges.edges > 2000, `only ${edges.edges} glyph edges in the panel`);
+  assert.ok(edges.share > 0.85, `glyph edges not sharp: ${(edges.share * 100).toFixed(1)} % within a pixel`);
+  // The window moves to a screen of ratio 1 (or the browser zooms): the atlas is made again at 13 px, and back.
+  const cdp = await ctx.newCDPSession(page);
+  await cdp.send('Emulation.setDeviceMetricsOverride', { width: 1200, height: 700, deviceScaleFactor: 1, mobile: false });
+  await until(page, () => { const g = essikit.state().fonts; return g.pixel_size === 13 && g.ratio === 1; }, null,
+              'a ratio of 1 did not make the atlas at 13 px');
+  await cdp.send('Emulation.setDeviceMetricsOverride', { width: 1200, height: 700, deviceScaleFactor: 1.5, mobile: false });
+  await until(page, () => { const g = essikit.state().fonts; return g.pixel_size === 20 && g.ratio === 1.5; }, null,
+              'a ratio of 1.5 did not make the atlas at 20 px');
+  await ctx.close();
+});
+
+test('fonts: the first load in English is under 2 MB and does not fetch the CJK font; German letters are there', async () => {
+  const ctx = await browser.newContext({ viewport: { width: 1600, height: 900 }, locale: 'en-US' });
+  const page = await ctx.newPage();
+  const requests = [];
+  page.on('requestfinished', (r) => requests.push(r));
+  page.on('requestfailed', (r) => requests.push(r));
+  await page.goto(baseUrl);
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 60000 });
+  await page.evaluate(() => essikit.ready);
+  await nextFrames(page, 10);
+  await page.waitForTimeout(1000);  // (anything fetched late would show here)
+  let total = 0;
+  const list = [];
+  for (const r of requests) {
+    const s = await r.sizes();
+    total += s.responseBodySize + s.responseHeadersSize;
+    list.push(`${new URL(r.url()).pathname} ${s.responseBodySize}`);
+  }
+  assert.ok(list.some((l) => l.startsWith('/essi_viewer.wasm')), `no wasm among ${list}`);
+  assert.ok(total < 2e6, `the first load transferred ${total} bytes: ${list.join(', ')}`);
+  assert.ok(!requests.some((r) => r.url().includes('essi_cjk')), `the CJK font was fetched: ${list.join(', ')}`);
+  const s = await page.evaluate(() => essikit.state());
+  assert.equal(s.fonts.cjk, 'none');
+  assert.equal(s.fonts.cjk_loads, 0);
+  assert.equal(s.fonts.pixel_size, 13);
+  // German (and the language switch's 中文, embedded) need nothing more.
+  assert.ok(await page.evaluate(() => essikit.hasGlyphs('äöüß ÄÖÜ „Größe“ – 5 mm² ± 0,1 °')), 'German letters missing');
+  assert.ok(await page.evaluate(() => essikit.hasGlyphs('中文')), '中文 (the language switch) missing');
+  assert.ok(!(await page.evaluate(() => essikit.hasGlyphs('切割程序块'))), 'Chinese glyphs there before they were asked for');
+  await ctx.close();
+});
+
+test('fonts: Chinese text fetches the CJK font once, only its glyphs go into the atlas, and they are drawn', async () => {
+  const ctx = await browser.newContext({ viewport: { width: 1600, height: 900 }, locale: 'en-US' });
+  const page = await ctx.newPage();
+  let fetches = 0;
+  page.on('request', (r) => { if (r.url().includes('essi_cjk.ttc')) ++fetches; });
+  await page.goto(baseUrl);
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 60000 });
+  const text = fs.readFileSync(path.join(examplesDir, 'plate_holes.esi'), 'utf8');
+  await page.evaluate((t) => essikit.load('abcde.esi', t), text);
+  await page.mouse.move(700, 450);
+  const before = (await page.evaluate(() => essikit.state())).fonts;
+  assert.equal(before.cjk, 'none');
+  const f = await page.evaluate(() => essikit.requireGlyphs('切割程序块'));
+  assert.equal(f.cjk, 'loaded');
+  assert.equal(f.cjk_glyphs, 5, `cjk glyphs ${JSON.stringify(f)}`);
+  assert.equal(f.missing, 0);
+  assert.equal(f.glyphs, before.glyphs + 5);
+  assert.ok(await page.evaluate(() => essikit.hasGlyphs('切割程序块')));
+  assert.equal(fetches, 1);
+  // The same characters again: nothing to do; new ones: the atlas grows, the font is not fetched again.
+  const same = await page.evaluate(() => essikit.requireGlyphs('程序块切割'));
+  assert.equal(same.builds, f.builds);
+  const more = await page.evaluate(() => essikit.requireGlyphs('已打开'));
+  assert.equal(more.cjk_glyphs, 8);
+  assert.equal(more.builds, f.builds + 1);
+  assert.equal(fetches, 1, 'the CJK font was fetched again');
+  // Drawn: the tape's name in the toolbar, 切割程序块.esi beside abcde.esi: where they differ, five glyphs of ink.
+  const band = { x: 0, y: 0, width: 1600, height: 38 };
+  await nextFrames(page, 3);
+  const latin = await pixels(page, await page.screenshot({ clip: band, path: path.join(shots, 'fonts-latin-name.png') }));
+  await page.evaluate((t) => essikit.load('切割程序块.esi', t), text);
+  await page.mouse.move(700, 460);
+  await nextFrames(page, 3);
+  const cjk = await pixels(page, await page.screenshot({ clip: band, path: path.join(shots, 'fonts-cjk-name.png') }));
+  let x0 = -1;
+  for (let x = 0; x < band.width && x0 < 0; ++x)
+    for (let y = 4; y < band.height - 4; ++y) if (!near(latin(x, y), cjk(x, y), 12)) { x0 = x; break; }
+  assert.ok(x0 >= 0, 'the two names draw the same pixels');
+  const bg = cjk(x0 - 2, 3);
+  const glyph = f.pixel_size;  // (a CJK glyph is one em wide)
+  for (let k = 0; k < 5; ++k) {
+    let ink = 0;
+    for (let x = x0 + k * glyph; x < x0 + (k + 1) * glyph; ++x)
+      for (let y = 4; y < band.height - 4; ++y) if (!near(cjk(x, y), bg, 90)) ++ink;
+    assert.ok(ink >= 12, `glyph ${k + 1} of 切割程序块 at x ${x0 + k * glyph}: ${ink} pixels of ink`);
+  }
+  // ... five different glyphs (a missing glyph is drawn as U+FFFD: five times the same pixels)
+  for (let k = 0; k + 1 < 5; ++k) {
+    let differ = 0;
+    for (let x = 0; x < glyph; ++x)
+      for (let y = 4; y < band.height - 4; ++y)
+        if (!near(cjk(x0 + k * glyph + x, y), cjk(x0 + (k + 1) * glyph + x, y), 90)) ++differ;
+    assert.ok(differ >= 12, `glyphs ${k + 1} and ${k + 2} of 切割程序块 look alike (${differ} pixels differ)`);
+  }
+  await ctx.close();
+});

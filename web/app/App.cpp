@@ -76,6 +76,7 @@ App::App(GLFWwindow* window) : window_(window) {
     g_app = this;
     view_.turns = ((platform::load_setting(kOrientationSetting).value_or(0) % 4) + 4) % 4;  // (kept across sessions)
     ui_.recent = recent_from_setting(platform::load_text_setting(kRecentSetting));
+    for (const std::string& name : ui_.recent) fonts_.require_glyphs(name);
     ui_.layout = layout_from_setting(platform::load_text_setting(kLayoutSetting));
     machine_coordinates_ = platform::load_setting(kCoordinatesSetting).value_or(0) == 1;
 }
@@ -101,6 +102,7 @@ App::~App() {
 App* App::instance() { return g_app; }
 
 bool App::init_graphics() {
+    fonts_.update(framebuffer_scale());  // (the atlas, before ui_renderer_ uploads it)
     graphics_ok_ = renderer_.init() && ui_renderer_.init();
     load_.set_graphics(graphics_ok_);
     ImGuiIO& io = ImGui::GetIO();
@@ -194,6 +196,7 @@ void App::compare_with(std::string name, const std::string& bytes) {
     compare_next_ = false;
     const Document* d = document();
     if (!d) return;
+    fonts_.require_glyphs(name);
     compare_ = make_compare(*d, profile_name_ == kAutoProfile, std::move(name), bytes);
     notify("Compared with " + display_text(compare_->name) + ": " + compare_->summary + ".");
 }
@@ -213,7 +216,10 @@ void App::show_contour(std::size_t index, bool of_b) {
     if (d) view_.fit(c.box, d->origin, 80);
 }
 
-void App::set_examples(std::vector<std::string> names) { ui_.examples = std::move(names); }
+void App::set_examples(std::vector<std::string> names) {
+    for (const std::string& name : names) fonts_.require_glyphs(name);
+    ui_.examples = std::move(names);
+}
 
 void App::set_layout(const panels::PanelLayout& layout) {
     panels::PanelLayout l = layout;
@@ -261,6 +267,7 @@ void App::document_loaded() {
     const Document& d = *document();
     // The name first among the recent ones (names only: the tapes themselves are not kept).
     const std::string name = display_text(d.name);
+    fonts_.require_glyphs(name);  // (a Chinese file name: the CJK font)
     std::erase(ui_.recent, name);
     ui_.recent.insert(ui_.recent.begin(), name);
     if (ui_.recent.size() > kRecentNames) ui_.recent.resize(kRecentNames);
@@ -342,7 +349,11 @@ void App::render(bool keep_unchanged) {
     if (!graphics_ok_) return;
     const auto [fb_w, fb_h] = framebuffer_size();
     const bool png = png_pending_ && document();
-    scene_.render(renderer_, ui_renderer_, fb_w, fb_h, keep_unchanged && !png);
+    scene_.render(renderer_, ui_renderer_, fb_w, fb_h, keep_unchanged && !png && !fonts_changed_);
+    // Between frames: the atlas at the screen's pixel ratio, with the glyphs asked for (UiFonts); the next frame
+    // draws with it.
+    fonts_changed_ = fonts_.update(framebuffer_scale());
+    if (fonts_changed_) ui_renderer_.upload_fonts();
     if (!png) return;
     png_pending_ = false;
     // The drawing area of the frame just drawn, in the framebuffer's pixels (top-left origin).
@@ -443,6 +454,7 @@ void App::select_motion(std::size_t motion) {
 // Messages and share links
 // ---------------------------------------------------------------------------------------------------------
 void App::notify(std::string text) {
+    fonts_.require_glyphs(text);  // (a name in it)
     ui_.message = std::move(text);
     ui_.message_until = glfwGetTime() + kMessageSeconds;
 }

@@ -25,6 +25,7 @@
 #include "essi/report_json.hpp"
 #include "essi/share_link.hpp"
 #include "render/Renderer.hpp"
+#include "render/UiFonts.hpp"
 #include "render/UiRenderer.hpp"
 
 struct GLFWwindow;
@@ -144,6 +145,10 @@ public:
     [[nodiscard]] const Document* document() const { return load_.document(); }
     [[nodiscard]] const LoadController& loads() const { return load_; }
     [[nodiscard]] const Renderer& renderer() const { return renderer_; }
+    // The panels' fonts (render/UiFonts.hpp): fonts().require_glyphs(text) for a text that may need glyphs the atlas
+    // lacks (Chinese); the atlas is made again between frames (render()).
+    [[nodiscard]] UiFonts& fonts() { return fonts_; }
+    [[nodiscard]] const UiFonts& fonts() const { return fonts_; }
     [[nodiscard]] bool graphics_ok() const { return graphics_ok_; }
     // The last frame drew the tape (its segments, or its level of detail while they are made).
     [[nodiscard]] bool tape_drawn() const { return scene_.tape_drawn(); }
@@ -173,6 +178,8 @@ private:
     void follow_playback(const Document& d);  // the source view and the inspector show the playback's line
 
     GLFWwindow* window_ = nullptr;
+    UiFonts fonts_;
+    bool fonts_changed_ = false;  // the atlas was made again after the last frame: the next one is drawn in full
     Renderer renderer_;
     UiRenderer ui_renderer_;
     bool graphics_ok_ = false;

@@ -197,6 +197,17 @@ std::string App::state_json() const {
     }
     j["compare_pending"] = compare_next_;
     j["theme"] = light_theme() ? "light" : "dark";
+    // The panels' font atlas (render/UiFonts.hpp): its font size in device pixels, the ratio it was made for, its
+    // glyphs (of them from the CJK font), characters no font has, and the CJK font's state.
+    const UiFonts::Counts fc = fonts_.counts();
+    j["fonts"] = {{"pixel_size", fonts_.pixel_size()},   {"ratio", fonts_.pixel_ratio()},
+                  {"css_size", fonts_.real_font() ? UiFonts::kCssPixels : fonts_.pixel_size()},
+                  {"font", fonts_.real_font() ? "DejaVu Sans" : "ProggyClean"},
+                  {"glyphs", fc.glyphs},                 {"cjk_glyphs", fc.cjk_glyphs},
+                  {"missing", fc.missing},               {"cjk", UiFonts::cjk_name(fonts_.cjk())},
+                  {"cjk_loads", fonts_.cjk_loads()},     {"builds", fonts_.builds()},
+                  {"pending", fonts_.pending()},
+                  {"texture", {ui_renderer_.font_texture_size()[0], ui_renderer_.font_texture_size()[1]}}};
     const panels::PanelLayout& l = ui_.layout;
     j["layout"] = {{"left", l.left}, {"right", l.right}, {"left_shown", l.left_shown}, {"right_shown", l.right_shown}};
     j["message"] = ui_.message;

@@ -229,6 +229,16 @@ EMSCRIPTEN_KEEPALIVE const char* essi_export(const char* format) {
     return g_export.c_str();
 }
 
+// The glyphs of a text (UTF-8) into the panels' font atlas (UiFonts::require_glyphs: the CJK font is fetched once,
+// when a character needs it); essi_has_glyphs: 1 when the atlas has every character of the text.
+EMSCRIPTEN_KEEPALIVE void essi_require_glyphs(const char* text) {
+    if (App* app = App::instance(); app && text) app->fonts().require_glyphs(text);
+}
+EMSCRIPTEN_KEEPALIVE int essi_has_glyphs(const char* text) {
+    App* app = App::instance();
+    return app && text && app->fonts().has_glyphs(text) ? 1 : 0;
+}
+
 // Makes a share link as the Share button does; the page's essikitShare finishes it.
 EMSCRIPTEN_KEEPALIVE void essi_share() {
     if (App* app = App::instance()) app->share();

@@ -4,6 +4,7 @@
 //   ClipboardEmscripten.cpp / ClipboardGlfw.cpp  copy and paste
 //   ShareEmscripten.cpp    / ShareGlfw.cpp       share links (URL fragment)
 //   SettingsEmscripten.cpp / SettingsGlfw.cpp    settings kept across sessions (localStorage, a file)
+//   FontsEmscripten.cpp    / FontsGlfw.cpp       the CJK font, loaded when a text needs it (UiFonts)
 //   ApiEmscripten.cpp                            window.essikit (exported C functions)
 #pragma once
 
@@ -13,6 +14,7 @@
 
 namespace essi::viewer {
 class App;
+class UiFonts;
 }
 
 namespace essi::viewer::platform {
@@ -55,5 +57,12 @@ void save_text_setting(const char* name, const std::string& value);
 // The examples the server offers (essi serve's /examples/): the page fetches their list at start (App::set_examples)
 // and a click opens one (the page fetches it and loads it). Natively there are none.
 void open_example(App& app, const std::string& name);
+
+// Loads the CJK font (render/UiFonts.hpp) and hands its bytes to fonts.cjk_loaded (null when it cannot be had): the
+// browser fetches essi_cjk.ttc from the page's folder and calls back later, between frames; the desktop reads the
+// file the build found (ESSI_CJK_FONT; the environment's ESSI_CJK_FONT overrides it) before it returns.
+void load_cjk_font(UiFonts& fonts);
+// This build has a CJK font to load (scripts/setup installs fonts-wqy-microhei).
+[[nodiscard]] bool has_cjk_font();
 
 }  // namespace essi::viewer::platform
