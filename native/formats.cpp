@@ -15,15 +15,9 @@ namespace essi::native {
 
 namespace {
 
-std::string plural(std::size_t n, std::string_view one, std::string_view many) {
-    return std::to_string(n) + " " + std::string(n == 1 ? one : many);
-}
-
-
-std::string verdict_text(const FileReport& f) {
-    std::string s = plural(f.errors(), "error", "errors");
-    s += ", " + plural(f.warnings(), "warning", "warnings");
-    return s;
+std::string verdict_text(const FileReport& f, Lang lang) {
+    return format_message(Msg::ReportErrors, lang, {f.errors()}) + std::string(text(Msg::ListSeparator, lang)) +
+           format_message(Msg::ReportWarnings, lang, {f.warnings()});
 }
 
 std::string code_anchor(DiagCode c) {
@@ -60,19 +54,19 @@ void BatchTotals::add(const BatchItem& item, FailOn fail_on) {
     if (file_fails(item.report, fail_on)) ++failed;
 }
 
-std::string batch_summary_line(const BatchTotals& t, std::string_view profile_name, double seconds) {
-    std::string s = plural(t.files, "file", "files") + " checked";
-    s += " (profile " + std::string(profile_name) + "): ";
-    s += std::to_string(t.files_ok) + " ok, " + std::to_string(t.files - t.files_ok) + " with errors; ";
-    s += plural(t.errors, "error", "errors") + ", " + plural(t.warnings, "warning", "warnings");
-    if (t.unreadable > 0) s += "; " + std::to_string(t.unreadable) + " unreadable";
+std::string batch_summary_line(const BatchTotals& t, std::string_view profile_name, double seconds, Lang lang) {
+    std::string s = format_message(Msg::ReportSummary, lang,
+                                   {t.files, profile_name, t.files_ok, t.files - t.files_ok,
+                                    format_message(Msg::ReportErrors, lang, {t.errors}),
+                                    format_message(Msg::ReportWarnings, lang, {t.warnings})});
+    if (t.unreadable > 0) s += "; " + format_message(Msg::ReportUnreadable, lang, {t.unreadable});
     char buf[64];
     std::snprintf(buf, sizeof buf, "; %.3f s", seconds);
     s += buf;
     return s;
 }
 
-std::string text_file_block(const BatchItem& item, bool quiet) { return file_report_text(item.report, quiet); }
+std::string text_file_block(const BatchItem& item, bool quiet, Lang lang) { return file_report_text(item.report, quiet, lang); }
 
 // --- GitHub ----------------------------------------------------------------------------------------------
 namespace {
@@ -94,12 +88,12 @@ std::string github_escape(std::string_view s, bool property) {
 std::string github_escape_data(std::string_view s) { return github_escape(s, false); }
 std::string github_escape_property(std::string_view s) { return github_escape(s, true); }
 
-std::string github_file_block(const BatchItem& item) {
+std::string github_file_block(const BatchItem& item, Lang lang) {
     const FileReport& r = item.report;
     const std::string file = github_escape_property(r.display_path());
     if (!item.read_ok)
-        return "::error file=" + file + ",title=essi::" + github_escape_data("cannot read " + r.display_path() + ": " + item.error) +
-               "\n";
+        return "::error file=" + file + ",title=essi::" +
+               github_escape_data(format_message(Msg::ReportCannotRead, lang, {r.display_path(), item.error})) + "\n";
     std::string out;
     for (const Diagnostic& d : r.result.diagnostics) {
         out += d.severity == Severity::Error ? "::error" : d.severity == Severity::Warning ? "::warning" : "::notice";
@@ -109,16 +103,16 @@ std::string github_file_block(const BatchItem& item) {
             if (d.column > 0) out += ",col=" + std::to_string(d.column);
         }
         out += ",title=" + code_name(d.code);
-        out += "::" + github_escape_data(d.message) + "\n";
+        out += "::" + github_escape_data(diagnostic_message(d, lang)) + "\n";
     }
-    if (r.omitted() > 0) out += "::notice file=" + file + ",title=essi::" + github_escape_data(omitted_text(r)) + "\n";
+    if (r.omitted() > 0) out += "::notice file=" + file + ",title=essi::" + github_escape_data(omitted_text(r, lang)) + "\n";
     return out;
 }
 
 // --- JUnit -----------------------------------------------------------------------------------------------
 
 std::string junit_report(std::span<const BatchItem> items, std::string_view profile_name, double seconds,
-                         FailOn fail_on) {
+                         FailOn fail_on, Lang lang) {
     std::size_t failures = 0, errors = 0;
     for (const BatchItem& it : items) {
         if (!it.read_ok) ++errors;
@@ -143,14 +137,15 @@ std::string junit_report(std::span<const BatchItem> items, std::string_view prof
         x += "    <testcase classname=\"essi.check\" name=\"" + path + "\" file=\"" + path + "\" time=\"" +
              fmt_time(it.seconds) + "\"";
         if (!it.read_ok) {
-            x += ">\n      <error type=\"io\" message=\"" + xml_escape("cannot read " + r.display_path() + ": " + it.error) +
+            x += ">\n      <error type=\"io\" message=\"" + xml_escape(format_message(Msg::ReportCannotRead, lang, {r.display_path(), it.error})) +
                  "\"/>\n    </testcase>\n";
             continue;
         }
         std::string diags;
-        for (const Diagnostic& d : r.result.diagnostics) diags += diagnostic_line(r.display_path(), d) + "\n";
-        if (r.omitted() > 0) diags += r.display_path() + ": note: " + omitted_text(r) + "\n";
-        const std::string stats = file_stats_line(r);
+        for (const Diagnostic& d : r.result.diagnostics) diags += diagnostic_line(r.display_path(), d, lang) + "\n";
+        if (r.omitted() > 0)
+            diags += r.display_path() + ": " + std::string(severity_text(Severity::Note, lang)) + ": " + omitted_text(r, lang) + "\n";
+        const std::string stats = file_stats_line(r, lang);
         if (file_fails(r, fail_on)) {
             std::string type;
             for (const Diagnostic& d : r.result.diagnostics)
@@ -158,7 +153,7 @@ std::string junit_report(std::span<const BatchItem> items, std::string_view prof
                     type = code_name(d.code);
                     break;
                 }
-            x += ">\n      <failure message=\"" + xml_escape(verdict_text(r)) + "\" type=\"" +
+            x += ">\n      <failure message=\"" + xml_escape(verdict_text(r, lang)) + "\" type=\"" +
                  xml_escape(type.empty() ? "essi" : type) + "\">" + xml_escape(diags) + "</failure>\n";
             x += "      <system-out>" + xml_escape(stats) + "</system-out>\n    </testcase>\n";
         } else {
@@ -189,12 +184,12 @@ std::string path_to_uri(std::string_view path) {
     return out;
 }
 
-nlohmann::json sarif_rules(std::string_view docs_url) {
+nlohmann::json sarif_rules(std::string_view docs_url, Lang lang) {
     const std::string base = docs_base(docs_url);
     nlohmann::json rules = nlohmann::json::array();
     for (DiagCode c : all_codes()) {
         const std::string id = code_name(c);
-        const std::string summary(code_summary(c));
+        const std::string summary(code_summary(c, lang));
         const std::string uri = base + "diagnostics.md#" + code_anchor(c);
         const int group = static_cast<int>(c) / 100;
         const char* area = group == 1 ? "read" : group == 2 ? "interpret" : group == 3 ? "geometry" : "machine";
@@ -211,7 +206,8 @@ nlohmann::json sarif_rules(std::string_view docs_url) {
     return rules;
 }
 
-nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view profile_name, std::string_view docs_url) {
+nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view profile_name, std::string_view docs_url,
+                            Lang lang) {
     std::map<std::string, std::size_t> rule_index;
     {
         std::size_t k = 0;
@@ -227,7 +223,7 @@ nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view p
         if (!it.read_ok) {
             all_read = false;
             notifications.push_back({{"level", "error"},
-                                     {"message", {{"text", "cannot read " + r.display_path() + ": " + it.error}}},
+                                     {"message", {{"text", format_message(Msg::ReportCannotRead, lang, {r.display_path(), it.error})}}},
                                      {"locations", {{{"physicalLocation", artifact}}}}});
             continue;
         }
@@ -240,14 +236,14 @@ nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view p
             }
             nlohmann::json res = {{"ruleId", id},
                                   {"level", sarif_level(d.severity)},
-                                  {"message", {{"text", d.message}}},
+                                  {"message", {{"text", diagnostic_message(d, lang)}}},
                                   {"locations", {{{"physicalLocation", phys}}}}};
             if (auto f = rule_index.find(id); f != rule_index.end()) res["ruleIndex"] = f->second;
             results.push_back(std::move(res));
         }
         if (r.omitted() > 0)
             notifications.push_back({{"level", "note"},
-                                     {"message", {{"text", r.display_path() + ": " + omitted_text(r)}}},
+                                     {"message", {{"text", r.display_path() + ": " + omitted_text(r, lang)}}},
                                      {"locations", {{{"physicalLocation", artifact}}}}});
     }
     const std::string base = docs_base(docs_url);
@@ -261,7 +257,7 @@ nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view p
             {"version", ESSIKIT_VERSION},
             {"semanticVersion", ESSIKIT_VERSION},
             {"informationUri", base + "cli.md"},
-            {"rules", sarif_rules(docs_url)}}}}},
+            {"rules", sarif_rules(docs_url, lang)}}}}},
         {"invocations", {std::move(invocation)}},
         {"results", std::move(results)},
         {"columnKind", "utf16CodeUnits"},

@@ -1,6 +1,6 @@
 // The report formats of `essi check` beyond text and JSON: JUnit XML (test reports of Jenkins, GitLab, ...),
 // SARIF 2.1.0 (GitHub code scanning and other static-analysis viewers) and GitHub Actions workflow commands
-// (annotations on pull requests). All pure functions of the batch results.
+// (annotations on pull requests). All pure functions of the batch results; their texts in `lang` (essi/i18n.hpp).
 #pragma once
 
 #include <span>
@@ -32,23 +32,24 @@ struct BatchTotals {
 
 // "3 files checked (profile iso6582): 2 ok, 1 with errors; 1 error, 4 warnings; 0.012 s"
 // (+ ", 1 unreadable" after the files when some could not be read)
-[[nodiscard]] std::string batch_summary_line(const BatchTotals& totals, std::string_view profile_name, double seconds);
+[[nodiscard]] std::string batch_summary_line(const BatchTotals& totals, std::string_view profile_name, double seconds,
+                                             Lang lang = Lang::En);
 
 // Text output of one file: its diagnostics (and a note when some were cut), then its stats line. quiet: only
 // errors and warnings, no stats line.
-[[nodiscard]] std::string text_file_block(const BatchItem& item, bool quiet);
+[[nodiscard]] std::string text_file_block(const BatchItem& item, bool quiet, Lang lang = Lang::En);
 
 // --- GitHub Actions workflow commands ---------------------------------------------------------------------
 // Escaping of a command's message (% CR LF) and of a property value (also : and ,).
 [[nodiscard]] std::string github_escape_data(std::string_view s);
 [[nodiscard]] std::string github_escape_property(std::string_view s);
 // "::error file=a.esi,line=3,col=1,title=E301::message" lines for the file's diagnostics (notes as ::notice).
-[[nodiscard]] std::string github_file_block(const BatchItem& item);
+[[nodiscard]] std::string github_file_block(const BatchItem& item, Lang lang = Lang::En);
 
 // One <testsuite> with one <testcase> per file (name and file = the path, classname "essi.check"); a file that
 // fails under fail_on gets a <failure> with its diagnostics, an unreadable file an <error>.
 [[nodiscard]] std::string junit_report(std::span<const BatchItem> items, std::string_view profile_name,
-                                       double seconds, FailOn fail_on);
+                                       double seconds, FailOn fail_on, Lang lang = Lang::En);
 
 // --- SARIF 2.1.0 ------------------------------------------------------------------------------------------
 // Default base of the documentation links (helpUri = base + "diagnostics.md#e301"); --docs-url changes it.
@@ -56,8 +57,9 @@ constexpr std::string_view kDefaultDocsUrl = "https://essikit.invalid/docs/";
 // A relative path as a URI reference (forward slashes, percent-encoded); absolute paths as file:// URIs.
 [[nodiscard]] std::string path_to_uri(std::string_view path);
 // The rule of every diagnostic code (id, help text from essi::code_summary, helpUri, default level).
-[[nodiscard]] nlohmann::json sarif_rules(std::string_view docs_url);
+[[nodiscard]] nlohmann::json sarif_rules(std::string_view docs_url, Lang lang = Lang::En);
 [[nodiscard]] nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view profile_name,
-                                          std::string_view docs_url);
+                                          std::string_view docs_url,
+                                          Lang lang = Lang::En);
 
 }  // namespace essi::native

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <optional>
@@ -29,6 +30,7 @@
 #include "batch.hpp"
 #include "formats.hpp"
 #include "essi/render_svg.hpp"
+#include "essi/text.hpp"
 #include "tape_request.hpp"
 #include "serve.hpp"
 #include "thread_pool.hpp"
@@ -45,6 +47,9 @@
 extern char** environ;
 
 namespace {
+
+// The language of every message and report (--lang, else the environment): set once in main().
+essi::Lang g_lang = essi::Lang::En;
 
 using essi::FileReport;
 
@@ -82,7 +87,7 @@ std::optional<essi::Profile> resolve_profile(const std::string& arg) {
         return std::nullopt;
     }
     essi::ProfileResult parsed = essi::parse_profile(file.bytes);
-    for (const essi::Diagnostic& d : parsed.diagnostics) err(essi::diagnostic_line(name, d) + "\n");
+    for (const essi::Diagnostic& d : parsed.diagnostics) err(essi::diagnostic_line(name, d, g_lang) + "\n");
     if (!parsed.profile) {
         err("essi: cannot use profile " + name + "\n");
         return std::nullopt;
@@ -216,13 +221,13 @@ int run_check(const std::vector<std::string>& paths, const CheckOptions& o) {
     check_batch(files, *request, batch, [&](BatchItem&& item) {
         totals.add(item, fail_on);
         if (!item.read_ok) {
-            err("essi: cannot read " + item.report.display_path() + ": " + item.error + "\n");
+            err("essi: " + essi::format_message(essi::Msg::ReportCannotRead, g_lang, {item.report.display_path(), item.error}) + "\n");
             io_failed = true;
         }
         if (o.format == "text") {
-            if (item.read_ok) out(text_file_block(item, o.quiet));
+            if (item.read_ok) out(text_file_block(item, o.quiet, g_lang));
         } else if (o.format == "github") {
-            out(github_file_block(item));
+            out(github_file_block(item, g_lang));
         } else {
             kept.push_back(std::move(item));
         }
@@ -234,15 +239,15 @@ int run_check(const std::vector<std::string>& paths, const CheckOptions& o) {
         reports.reserve(kept.size());
         for (BatchItem& it : kept)
             if (it.read_ok) reports.push_back(std::move(it.report));
-        out(report_to_json(reports, profile_name).dump(kJsonIndent));
+        out(report_to_json(reports, profile_name, g_lang).dump(kJsonIndent));
         out("\n");
     } else if (o.format == "junit") {
-        out(junit_report(kept, profile_name, seconds, fail_on));
+        out(junit_report(kept, profile_name, seconds, fail_on, g_lang));
     } else if (o.format == "sarif") {
-        out(sarif_report(kept, profile_name, o.docs_url).dump(kJsonIndent));
+        out(sarif_report(kept, profile_name, o.docs_url, g_lang).dump(kJsonIndent));
         out("\n");
     }
-    const std::string summary = batch_summary_line(totals, profile_name, seconds) + "\n";
+    const std::string summary = batch_summary_line(totals, profile_name, seconds, g_lang) + "\n";
     if (streamed) out(summary);
     else if (!o.quiet) err(summary);
 
@@ -383,7 +388,7 @@ int run_convert(const ConvertCliOptions& o) {
         options.target = *target;
     }
     const essi::ConvertResult r = essi::convert_tape(tape->file.bytes, setup, options);
-    for (const essi::Diagnostic& d : r.diagnostics) err(essi::diagnostic_line(o.path, d) + "\n");
+    for (const essi::Diagnostic& d : r.diagnostics) err(essi::diagnostic_line(o.path, d, g_lang) + "\n");
     if (!write_file(o.output, r.text)) {
         err("essi convert: cannot write " + essi::display_text(o.output) + ": " + std::strerror(errno) + "\n");
         return kExitUsage;
@@ -405,7 +410,7 @@ int run_stats(const std::vector<std::string>& paths, const std::string& format, 
         for (const FileReport& r : reports) {
             if (!first) out("\n");
             first = false;
-            out(essi::stats_block(r));
+            out(essi::stats_block(r, g_lang));
         }
     }
     report_errors_briefly(reports);
@@ -638,11 +643,32 @@ int main(int argc, char** argv) {
     serve->add_option("--share-rate", serve_opts.share_rate, "Uploads per minute per client address (0: no limit)")
         ->capture_default_str();
 
+    // --lang on every command: the language of the messages and reports (else the POSIX environment's).
+    std::string lang_arg;
+    const auto add_lang = [&](CLI::App* cmd) {
+        cmd->add_option("--lang", lang_arg,
+                        "Language of messages and reports: en, de or zh (default: from LC_ALL, LC_MESSAGES or LANG)")
+            ->type_name("en|de|zh");
+    };
+    const auto every = [](CLI::App*) { return true; };
+    for (CLI::App* sub : app.get_subcommands(every)) {
+        add_lang(sub);
+        for (CLI::App* nested : sub->get_subcommands(every)) add_lang(nested);
+    }
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         const int rc = app.exit(e);
         return rc == 0 ? kExitOk : kExitUsage;
+    }
+    if (lang_arg.empty()) {
+        g_lang = essi::lang_from_environment(std::getenv("LC_ALL"), std::getenv("LC_MESSAGES"), std::getenv("LANG"));
+    } else if (const auto lang = essi::parse_lang(lang_arg)) {
+        g_lang = *lang;
+    } else {
+        err("essi: --lang " + essi::display_text(lang_arg) + " is not a language essikit has; expected en, de or zh\n");
+        return kExitUsage;
     }
 
     if (*check) return run_check(paths, check_opts);

@@ -38,19 +38,19 @@ void limit_diagnostics(FileReport& file, std::size_t max) {
     diags.resize(max);
 }
 
-nlohmann::json diagnostic_to_json(const Diagnostic& d) {
+nlohmann::json diagnostic_to_json(const Diagnostic& d, Lang lang) {
     nlohmann::json j = nlohmann::json::object();
     j["severity"] = std::string(severity_name(d.severity));
     j["code"] = code_name(d.code);
     j["line"] = d.line;
     j["column"] = d.column;
-    j["message"] = d.message;
+    j["message"] = diagnostic_message(d, lang);
     return j;
 }
 
-nlohmann::json diagnostics_to_json(std::span<const Diagnostic> diagnostics) {
+nlohmann::json diagnostics_to_json(std::span<const Diagnostic> diagnostics, Lang lang) {
     nlohmann::json diags = nlohmann::json::array();
-    for (const Diagnostic& d : diagnostics) diags.push_back(diagnostic_to_json(d));
+    for (const Diagnostic& d : diagnostics) diags.push_back(diagnostic_to_json(d, lang));
     return diags;
 }
 
@@ -82,7 +82,7 @@ nlohmann::json stats_to_json(const Stats& s) {
     return j;
 }
 
-nlohmann::json file_report_to_json(const FileReport& file) {
+nlohmann::json file_report_to_json(const FileReport& file, Lang lang) {
     nlohmann::json j = nlohmann::json::object();
     j["path"] = file.display_path();
     j["ok"] = file.ok();
@@ -91,18 +91,18 @@ nlohmann::json file_report_to_json(const FileReport& file) {
         j["profile"] = file.result.profile;
         j["dialect_evidence"] = file.result.dialect_evidence;
     }
-    j["diagnostics"] = diagnostics_to_json(file.result.diagnostics);
+    j["diagnostics"] = diagnostics_to_json(file.result.diagnostics, lang);
     j["stats"] = stats_to_json(file.result.stats);
     if (file.omitted() > 0) j["diagnostics_omitted"] = file.omitted();
     return j;
 }
 
-nlohmann::json report_to_json(std::span<const FileReport> files, std::string_view profile_name) {
+nlohmann::json report_to_json(std::span<const FileReport> files, std::string_view profile_name, Lang lang) {
     nlohmann::json out = nlohmann::json::object();
     nlohmann::json arr = nlohmann::json::array();
     std::size_t files_ok = 0, errors = 0, warnings = 0;
     for (const FileReport& f : files) {
-        arr.push_back(file_report_to_json(f));
+        arr.push_back(file_report_to_json(f, lang));
         if (f.ok()) ++files_ok;
         errors += f.errors();
         warnings += f.warnings();

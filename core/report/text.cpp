@@ -1,6 +1,7 @@
 // Safe text for reports (essi/text.hpp).
 #include "essi/text.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -40,6 +41,24 @@ bool is_valid_utf8(std::string_view s) {
         i += n;
     }
     return true;
+}
+
+std::size_t display_width(std::string_view s) {
+    std::size_t width = 0;
+    for (std::size_t i = 0; i < s.size();) {
+        const std::size_t n = std::max<std::size_t>(utf8_char_length(s, i), 1);
+        char32_t c = static_cast<unsigned char>(s[i]);
+        if (n > 1) {
+            c &= 0x3F >> (n - 1);
+            for (std::size_t k = 1; k < n; ++k) c = (c << 6) | (static_cast<unsigned char>(s[i + k]) & 0x3F);
+        }
+        const bool wide = (c >= 0x1100 && c <= 0x115F) || (c >= 0x2E80 && c <= 0xA4CF) || (c >= 0xAC00 && c <= 0xD7A3) ||
+                          (c >= 0xF900 && c <= 0xFAFF) || (c >= 0xFE30 && c <= 0xFE4F) || (c >= 0xFF00 && c <= 0xFF60) ||
+                          (c >= 0xFFE0 && c <= 0xFFE6) || (c >= 0x20000 && c <= 0x3FFFD);
+        width += wide ? 2 : 1;
+        i += n;
+    }
+    return width;
 }
 
 std::string excerpt(std::string_view text, std::size_t max_bytes) {

@@ -1,5 +1,7 @@
 #include "essi/text_report.hpp"
 
+#include "essi/text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -22,44 +24,48 @@ std::string fixed(double v, int decimals = kTextLengthDecimals) {
 
 std::string mm(double v) { return fixed(v) + " mm"; }
 
-std::string count_of(unsigned long long n, std::string_view singular, std::string_view plural) {
-    return std::to_string(n) + " " + std::string(n == 1 ? singular : plural);
-}
-
-std::string verdict(const FileReport& f) {
+std::string verdict(const FileReport& f, Lang lang) {
     const std::size_t errors = f.errors();
     const std::size_t warnings = f.warnings();
-    if (errors == 0 && warnings == 0) return "ok";
+    if (errors == 0 && warnings == 0) return std::string(text(Msg::ReportOk, lang));
     std::string s;
-    if (errors > 0) s = count_of(errors, "error", "errors");
+    if (errors > 0) s = format_message(Msg::ReportErrors, lang, {errors});
     if (warnings > 0) {
-        if (!s.empty()) s += ", ";
-        s += count_of(warnings, "warning", "warnings");
+        if (!s.empty()) s += text(Msg::ListSeparator, lang);
+        s += format_message(Msg::ReportWarnings, lang, {warnings});
     }
-    if (errors == 0) s = "ok, " + s;
+    if (errors == 0) s = format_message(Msg::ReportOkWith, lang, {s});
     return s;
 }
-
 }  // namespace
 
-std::string omitted_text(const FileReport& f) {
-    return count_of(f.omitted(), "more diagnostic", "more diagnostics") + " not shown (--max-diagnostics " +
-           std::to_string(f.result.diagnostics.size()) + ")";
+std::string omitted_text(const FileReport& f, Lang lang) {
+    return format_message(Msg::ReportOmitted, lang, {f.omitted(), f.result.diagnostics.size()});
 }
 
-std::string file_report_text(const FileReport& r, bool quiet) {
-    std::string text;
+std::string_view severity_text(Severity s, Lang lang) {
+    switch (s) {
+        case Severity::Note: return text(Msg::SeverityNote, lang);
+        case Severity::Warning: return text(Msg::SeverityWarning, lang);
+        case Severity::Error: break;
+    }
+    return text(Msg::SeverityError, lang);
+}
+
+std::string file_report_text(const FileReport& r, bool quiet, Lang lang) {
+    std::string out;
     for (const Diagnostic& d : r.result.diagnostics) {
         if (quiet && d.severity == Severity::Note) continue;
-        text += diagnostic_line(r.display_path(), d);
-        text += '\n';
+        out += diagnostic_line(r.display_path(), d, lang);
+        out += '\n';
     }
-    if (r.omitted() > 0) text += r.display_path() + ": note: " + omitted_text(r) + "\n";
+    if (r.omitted() > 0)
+        out += r.display_path() + ": " + std::string(severity_text(Severity::Note, lang)) + ": " + omitted_text(r, lang) + "\n";
     if (!quiet) {
-        text += file_stats_line(r);
-        text += '\n';
+        out += file_stats_line(r, lang);
+        out += '\n';
     }
-    return text;
+    return out;
 }
 
 namespace {
@@ -75,12 +81,12 @@ std::string csv_field(std::string_view s) {
 }
 }  // namespace
 
-std::string diagnostics_csv(std::span<const FileReport> files) {
+std::string diagnostics_csv(std::span<const FileReport> files, Lang lang) {
     std::string out = "file,severity,code,line,column,message\r\n";
     for (const FileReport& f : files)
         for (const Diagnostic& d : f.result.diagnostics)
             out += csv_field(f.display_path()) + "," + std::string(severity_name(d.severity)) + "," + code_name(d.code) + "," +
-                   std::to_string(d.line) + "," + std::to_string(d.column) + "," + csv_field(d.message) + "\r\n";
+                   std::to_string(d.line) + "," + std::to_string(d.column) + "," + csv_field(diagnostic_message(d, lang)) + "\r\n";
     return out;
 }
 
@@ -92,7 +98,7 @@ std::string format_duration(double seconds) {
     return buf;
 }
 
-std::string diagnostic_line(std::string_view path, const Diagnostic& d) {
+std::string diagnostic_line(std::string_view path, const Diagnostic& d, Lang lang) {
     std::string s(path);
     if (d.line > 0) {
         s += ':';
@@ -103,77 +109,67 @@ std::string diagnostic_line(std::string_view path, const Diagnostic& d) {
         }
     }
     s += ": ";
-    s += severity_name(d.severity);
+    s += severity_text(d.severity, lang);
     s += ' ';
     s += code_name(d.code);
     s += ": ";
-    s += d.message;
+    s += diagnostic_message(d, lang);
     return s;
 }
 
-std::string file_stats_line(const FileReport& file) {
+std::string file_stats_line(const FileReport& file, Lang lang) {
     const Stats& st = file.result.stats;
-    std::string s = file.display_path();
-    s += ": ";
-    s += verdict(file);
-    s += "; cut " + mm(st.cut_length_mm);
-    s += ", mark " + mm(st.mark_length_mm);
-    s += ", travel " + mm(st.travel_length_mm);
-    s += " (rapid " + mm(st.rapid_length_mm) + ")";
-    s += ", " + count_of(st.pierces, "pierce", "pierces");
-    s += ", " + count_of(st.blocks, "block", "blocks");
-    s += ", " + count_of(st.motions, "motion", "motions");
-    s += ", time " + format_duration(st.estimated_time_s);
-    return s;
+    return format_message(Msg::ReportFileStats, lang,
+                          {file.display_path(), verdict(file, lang), mm(st.cut_length_mm), mm(st.mark_length_mm),
+                           mm(st.travel_length_mm), mm(st.rapid_length_mm), st.pierces, st.blocks, st.motions,
+                           format_duration(st.estimated_time_s)});
 }
 
-std::string summary_line(std::span<const FileReport> files, std::string_view profile_name) {
+std::string summary_line(std::span<const FileReport> files, std::string_view profile_name, Lang lang) {
     std::size_t ok = 0, errors = 0, warnings = 0;
     for (const FileReport& f : files) {
         if (f.ok()) ++ok;
         errors += f.errors();
         warnings += f.warnings();
     }
-    std::string s = count_of(files.size(), "file", "files");
-    s += " checked (profile ";
-    s += profile_name;
-    s += "): ";
-    s += std::to_string(ok) + " ok, " + std::to_string(files.size() - ok) + " with errors; ";
-    s += count_of(errors, "error", "errors") + ", " + count_of(warnings, "warning", "warnings");
-    return s;
+    return format_message(Msg::ReportSummary, lang,
+                          {files.size(), profile_name, ok, files.size() - ok,
+                           format_message(Msg::ReportErrors, lang, {errors}),
+                           format_message(Msg::ReportWarnings, lang, {warnings})});
 }
 
-std::string stats_block(const FileReport& file) {
+std::string stats_block(const FileReport& file, Lang lang) {
     const Stats& st = file.result.stats;
     std::vector<std::pair<std::string, std::string>> rows;
-    rows.emplace_back("file", file.display_path());
-    rows.emplace_back("cut length", mm(st.cut_length_mm));
-    rows.emplace_back("cut length compensated", mm(st.cut_length_compensated_mm));
-    rows.emplace_back("mark length", mm(st.mark_length_mm));
-    rows.emplace_back("travel length", mm(st.travel_length_mm));
-    rows.emplace_back("rapid length", mm(st.rapid_length_mm));
-    rows.emplace_back("pierces", std::to_string(st.pierces));
-    rows.emplace_back("blocks", std::to_string(st.blocks));
-    rows.emplace_back("motions", std::to_string(st.motions));
-    rows.emplace_back("estimated time",
+    const auto key = [&](Msg m) { return std::string(text(m, lang)); };
+    rows.emplace_back(key(Msg::StatsFile), file.display_path());
+    rows.emplace_back(key(Msg::StatsCutLength), mm(st.cut_length_mm));
+    rows.emplace_back(key(Msg::StatsCutLengthCompensated), mm(st.cut_length_compensated_mm));
+    rows.emplace_back(key(Msg::StatsMarkLength), mm(st.mark_length_mm));
+    rows.emplace_back(key(Msg::StatsTravelLength), mm(st.travel_length_mm));
+    rows.emplace_back(key(Msg::StatsRapidLength), mm(st.rapid_length_mm));
+    rows.emplace_back(key(Msg::StatsPierces), std::to_string(st.pierces));
+    rows.emplace_back(key(Msg::StatsBlocks), std::to_string(st.blocks));
+    rows.emplace_back(key(Msg::StatsMotions), std::to_string(st.motions));
+    rows.emplace_back(key(Msg::StatsEstimatedTime),
                       fixed(st.estimated_time_s, 1) + " s (" + format_duration(st.estimated_time_s) + ")");
     if (st.cut_bbox.empty) {
-        rows.emplace_back("cut bbox", "none");
+        rows.emplace_back(key(Msg::StatsCutBox), key(Msg::StatsNone));
     } else {
-        rows.emplace_back("cut bbox", "x " + fixed(st.cut_bbox.min_x) + " .. " + fixed(st.cut_bbox.max_x) + ", y " +
+        rows.emplace_back(key(Msg::StatsCutBox), "x " + fixed(st.cut_bbox.min_x) + " .. " + fixed(st.cut_bbox.max_x) + ", y " +
                                           fixed(st.cut_bbox.min_y) + " .. " + fixed(st.cut_bbox.max_y) + " mm (" +
                                           fixed(st.cut_bbox.max_x - st.cut_bbox.min_x) + " x " +
                                           fixed(st.cut_bbox.max_y - st.cut_bbox.min_y) + " mm)");
     }
-    rows.emplace_back("end position", "x " + fixed(st.end_position.x) + ", y " + fixed(st.end_position.y) + " mm");
+    rows.emplace_back(key(Msg::StatsEndPosition), "x " + fixed(st.end_position.x) + ", y " + fixed(st.end_position.y) + " mm");
 
     std::size_t width = 0;
-    for (const auto& [k, v] : rows) width = std::max(width, k.size() + 1);
+    for (const auto& [k, v] : rows) width = std::max(width, display_width(k) + 1);
     std::string out;
     for (const auto& [k, v] : rows) {
         out += k;
         out += ':';
-        out.append(width - k.size() - 1 + 1, ' ');
+        out.append(width - display_width(k) - 1 + 1, ' ');
         out += v;
         out += '\n';
     }

@@ -187,7 +187,7 @@ TEST(I18nFunctions, EnglishUnchanged) {
     p.kerf_value = essi::KerfValueMeaning::Offset;
     EXPECT_EQ(essi::kerf_value_text(1.235, p), "kerf offset 1.235 mm (a cut 2.47 mm wide)");
     EXPECT_EQ(essi::kerf_offset_text(essi::KerfSide::Right, 0.5), "torch 0.500 mm to the right (a cut 1.000 mm wide)");
-    EXPECT_EQ(essi::kerf_offset_text(essi::KerfSide::Off, 0), "torch 0.000 mm to the off (a cut 0.000 mm wide)");
+    EXPECT_EQ(essi::kerf_offset_text(essi::KerfSide::Off, 0), "torch not offset (kerf compensation off)");
 }
 
 }  // namespace

@@ -177,7 +177,8 @@ TEST(KerfPath, NarrowSlotIsAGougeNamingItsMotion) {
     const Collect out = compensate(c.records, &gouges);
     ASSERT_EQ(gouges.size(), 1u);
     EXPECT_EQ(gouges[0].line, 4u);
-    EXPECT_NE(gouges[0].message.find("gouge"), std::string::npos) << gouges[0].message;
+    const std::string why = essi::format_message(gouges[0].msg, essi::Lang::En, gouges[0].args);
+    EXPECT_NE(why.find("gouge"), std::string::npos) << why;
     EXPECT_EQ(out.motions.back().end, (Point{25, -10}));
 }
 

@@ -46,10 +46,10 @@ struct FileReport {
 void limit_diagnostics(FileReport& file, std::size_t max);
 
 // {"severity","code","line","column","message"}
-[[nodiscard]] nlohmann::json diagnostic_to_json(const Diagnostic& d);
+[[nodiscard]] nlohmann::json diagnostic_to_json(const Diagnostic& d, Lang lang = Lang::En);
 
 // [diagnostic_to_json of each]
-[[nodiscard]] nlohmann::json diagnostics_to_json(std::span<const Diagnostic> diagnostics);
+[[nodiscard]] nlohmann::json diagnostics_to_json(std::span<const Diagnostic> diagnostics, Lang lang = Lang::En);
 
 // {"min_x","min_y","max_x","max_y"}, or null for an empty box
 [[nodiscard]] nlohmann::json box_to_json(const Box& b);
@@ -58,11 +58,12 @@ void limit_diagnostics(FileReport& file, std::size_t max);
 [[nodiscard]] nlohmann::json stats_to_json(const Stats& s);
 
 // {"path","ok","diagnostics":[...],"stats":{...}} (+ "diagnostics_omitted": N when --max-diagnostics cut some)
-[[nodiscard]] nlohmann::json file_report_to_json(const FileReport& file);
+[[nodiscard]] nlohmann::json file_report_to_json(const FileReport& file, Lang lang = Lang::En);
 
 // The whole report of `essi check --format json`:
 // {"files":[...],"summary":{"files","files_ok","errors","warnings"},"profile":"name"}
-[[nodiscard]] nlohmann::json report_to_json(std::span<const FileReport> files, std::string_view profile_name);
+[[nodiscard]] nlohmann::json report_to_json(std::span<const FileReport> files, std::string_view profile_name,
+                                            Lang lang = Lang::En);
 
 // The report of `essi stats --format json`: {"files":[{"path","stats"}],"profile":"name"}
 [[nodiscard]] nlohmann::json stats_report_to_json(std::span<const FileReport> files, std::string_view profile_name);

@@ -11,6 +11,9 @@ namespace essi {
 // The length of the valid UTF-8 character at s[i] (1-4), or 0 when the bytes there are not one (a stray
 // continuation byte, an overlong form, a surrogate, beyond U+10FFFF, cut off).
 [[nodiscard]] std::size_t utf8_char_length(std::string_view s, std::size_t i);
+// The columns UTF-8 text takes in a terminal: 2 for each East Asian wide character (CJK, fullwidth forms), 1 for
+// every other character.
+[[nodiscard]] std::size_t display_width(std::string_view utf8);
 [[nodiscard]] bool is_valid_utf8(std::string_view s);
 
 // `s` as text that is safe to print anywhere: valid UTF-8 characters are kept, every other byte and every control

@@ -12,33 +12,38 @@
 
 namespace essi {
 
+// Every text is in `lang` (the message catalogue, essi/i18n.hpp); numbers, codes and paths are the same in all.
+
 // Lengths in text output: millimetres with this many decimals (1 micrometre).
 constexpr int kTextLengthDecimals = 3;
 
 // "path:12:5: error E301: message" (without position: "path: error E402: message"), no newline.
-[[nodiscard]] std::string diagnostic_line(std::string_view path, const Diagnostic& d);
+[[nodiscard]] std::string diagnostic_line(std::string_view path, const Diagnostic& d, Lang lang = Lang::En);
 
 // "path: ok; cut 123.400 mm, mark 0.000 mm, travel 50.000 mm (rapid 20.000 mm), 2 pierces, 30 blocks,
 //  25 motions, time 0:01:05" (no newline)
-[[nodiscard]] std::string file_stats_line(const FileReport& file);
+[[nodiscard]] std::string file_stats_line(const FileReport& file, Lang lang = Lang::En);
 
 // "2 files checked (profile iso6582): 1 ok, 1 with errors; 3 errors, 1 warning" (no newline)
-[[nodiscard]] std::string summary_line(std::span<const FileReport> files, std::string_view profile_name);
+[[nodiscard]] std::string summary_line(std::span<const FileReport> files, std::string_view profile_name,
+                                       Lang lang = Lang::En);
 
 // The aligned block of `essi stats` for one file, every line ending in a newline.
-[[nodiscard]] std::string stats_block(const FileReport& file);
+[[nodiscard]] std::string stats_block(const FileReport& file, Lang lang = Lang::En);
 
 // "3 more diagnostics not shown (--max-diagnostics 100)": what --max-diagnostics left out of a file.
-[[nodiscard]] std::string omitted_text(const FileReport& file);
+[[nodiscard]] std::string omitted_text(const FileReport& file, Lang lang = Lang::En);
 
 // What `essi check --format text` prints for one file: its diagnostics (without notes when `quiet`), a note for
 // those --max-diagnostics left out, and (unless quiet) its statistics line; every line ends in a newline.
-[[nodiscard]] std::string file_report_text(const FileReport& file, bool quiet = false);
+[[nodiscard]] std::string file_report_text(const FileReport& file, bool quiet = false, Lang lang = Lang::En);
 
 // The diagnostics as CSV (RFC 4180, a header line, CR LF): file,severity,code,line,column,message.
-[[nodiscard]] std::string diagnostics_csv(std::span<const FileReport> files);
+[[nodiscard]] std::string diagnostics_csv(std::span<const FileReport> files, Lang lang = Lang::En);
 
 // Seconds as "h:mm:ss".
 [[nodiscard]] std::string format_duration(double seconds);
+// "error", "Fehler", "错误" ...
+[[nodiscard]] std::string_view severity_text(Severity s, Lang lang);
 
 }  // namespace essi
