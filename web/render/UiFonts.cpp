@@ -16,12 +16,13 @@ namespace {
 
 UiFonts* g_fonts = nullptr;
 
-// What the atlas holds from the start: Latin-1 and the signs the UI's texts use in the three languages (dashes,
-// quotes, ellipsis, bullet, per mille, euro, arrows, minus, <= >= != ~, diameter, check marks, U+FFFD).
-constexpr ImWchar kFirstRanges[] = {0x0020, 0x00FF, 0x0152, 0x0153, 0x2013, 0x2014, 0x2018, 0x201E, 0x2022, 0x2022,
-                                    0x2026, 0x2026, 0x2030, 0x2030, 0x2039, 0x203A, 0x20AC, 0x20AC, 0x2190, 0x2193,
-                                    0x2212, 0x2212, 0x2248, 0x2248, 0x2260, 0x2260, 0x2264, 0x2265, 0x2300, 0x2300,
-                                    0x2713, 0x2713, 0x2717, 0x2717, 0xFFFD, 0xFFFD, 0};
+// What the atlas holds from the start: Latin-1 and the signs the UI's texts use in the three languages (the figure
+// space that aligns numbers, dashes, quotes, ellipsis, bullet, per mille, euro, arrows, minus, <= >= != ~, diameter,
+// check marks, U+FFFD).
+constexpr ImWchar kFirstRanges[] = {0x0020, 0x00FF, 0x0152, 0x0153, 0x2007, 0x2007, 0x2013, 0x2014, 0x2018, 0x201E,
+                                    0x2022, 0x2022, 0x2026, 0x2026, 0x2030, 0x2030, 0x2039, 0x203A, 0x20AC, 0x20AC,
+                                    0x2190, 0x2193, 0x2212, 0x2212, 0x2248, 0x2248, 0x2260, 0x2260, 0x2264, 0x2265,
+                                    0x2300, 0x2300, 0x2713, 0x2713, 0x2717, 0x2717, 0xFFFD, 0xFFFD, 0};
 
 bool in_ranges(const unsigned short* r, unsigned c) {
     for (; r[0] != 0; r += 2)

@@ -61,7 +61,10 @@ void source_line(App& app, const Document& d, std::uint32_t line, int digits) {
         ImGui::GetWindowDrawList()->AddRectFilled(pos, ImVec2(pos.x + 4, pos.y + ImGui::GetTextLineHeight()),
                                                   ImGui::ColorConvertFloat4ToU32(worst));
     }
-    ImGui::TextColored(diags.any() ? worst : to_vec4(kLineNumberColor), " %*u ", digits, line);
+    // (right-aligned with figure spaces, U+2007: a digit's width in the panels' proportional font)
+    std::string number = std::to_string(line);
+    for (int k = static_cast<int>(number.size()); k < digits; ++k) number.insert(0, "\xE2\x80\x87");
+    ImGui::TextColored(diags.any() ? worst : to_vec4(kLineNumberColor), " %s ", number.c_str());
     ImGui::SameLine(0, 4);
     const std::string text = printable(d.line(line));
     ImGui::TextUnformatted(text.c_str());
