@@ -28,15 +28,13 @@
   const inlineLink = window.essikitMakeLink;
   window.essikitMakeLink = async function (name, bytes, query) {
     if (!useStore(bytes.length)) return inlineLink(name, bytes, query);
-    if (bytes.length > server.max_body) {
-      throw new Error('This tape (' + (bytes.length / 1048576).toFixed(1) + ' MB) is larger than this server\'s ' +
-                      'share store takes (' + (server.max_body / 1048576).toFixed(0) + ' MB, essi serve --max-body); ' +
-                      'send the file instead.');
-    }
+    const linkError = window.essikitLinkError;  // (the viewer says it: essi_share_done)
+    if (bytes.length > server.max_body)
+      throw linkError('store-too-large', (bytes.length / 1048576).toFixed(1), (server.max_body / 1048576).toFixed(0));
     try {
       return await upload(name, bytes, query);
     } catch (e) {
-      throw new Error('Could not store the tape on the server: ' + e.message);
+      throw linkError('store-failed', e.message);
     }
   };
 
@@ -49,23 +47,23 @@
     await api.ready;
     try {
       const link = window.essikitParseShare(location.hash);  // (the core's reading of the fragment)
-      if (!link.share) throw new Error('This share link is cut off or damaged: ' + (link.problems.join('; ') || 'it names no stored tape'));
+      const linkError = window.essikitLinkError;  // (the viewer says it: essi_link_problem)
+      if (!link.share) throw link.problems.length ? linkError('cut', link.problems.join('; ')) : linkError('no-stored-tape');
       let res;
       try {
         res = await fetch('api/share/' + link.share);
       } catch (e) {
-        throw new Error('The share store of this link does not answer (' + e.message + '); is essi serve running?');
+        throw linkError('store-down', e.message);
       }
       if (!res.ok) {
         const why = (await res.json().catch(() => ({}))).error || ('HTTP ' + res.status);
-        throw new Error(res.status === 404 ? 'The tape of this link is no longer stored (shares expire): ' + why
-                                           : 'The share store could not give the tape of this link: ' + why);
+        throw linkError(res.status === 404 ? 'gone' : 'store-error', why);
       }
       window.essikitLoadShared(link.name || 'shared.esi', new Uint8Array(await res.arrayBuffer()));
       await api.idle();
       window.essikitApplyShareView(link);
     } catch (e) {
-      window.essikitLinkProblem(e.message);
+      window.essikitLinkProblem(e);
     }
   }
   let lastShared = '';

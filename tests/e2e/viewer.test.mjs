@@ -776,6 +776,145 @@ test('hi-DPI: the canvas at the device pixel ratio, clicks where they land, the 
   await ctx.close();
 });
 
+// The share of pixels (sampled every 2 px) that differ between two screenshots of the same size: a panel drawn in
+// another language.
+async function changedShare(page, pngA, pngB, [x0, y0, w, h]) {
+  const a = await pixels(page, pngA), b = await pixels(page, pngB);
+  let changed = 0, all = 0;
+  for (let y = y0; y < y0 + h; y += 2)
+    for (let x = x0; x < x0 + w; x += 2) {
+      ++all;
+      const p = a(x, y), q = b(x, y);
+      if (Math.abs(p[0] - q[0]) + Math.abs(p[1] - q[1]) + Math.abs(p[2] - q[2]) > 30) ++changed;
+    }
+  return changed / all;
+}
+
+test('languages: the panels in German and Chinese from the catalogue, the switch kept across a reload', async () => {
+  const page = await newPage();
+  await loadExample(page, 'plate_holes.esi');
+  await page.evaluate(() => essikit.selectLine(15));  // a cut line: the inspector's words
+  await nextFrames(page, 3);
+  const panels = [0, 40, 300, 800];  // the left panel (the tape's reading, statistics, layers ...)
+  let s = await page.evaluate(() => essikit.state());
+  assert.equal(s.lang, 'en');
+  assert.match(s.inspector.join('\n'), /^cut line from \(/m);
+  const en = await page.screenshot({ path: path.join(shots, 'lang-en.png') });
+  // German: the toolbar, the panels, the inspector; the language's own word for it in the switch
+  await page.evaluate(() => essikit.setLanguage('de'));
+  await nextFrames(page, 3);
+  s = await page.evaluate(() => essikit.state());
+  assert.equal(s.lang, 'de');
+  assert.match(s.inspector.join('\n'), /^Schneiden: Strecke von \(/m);
+  assert.equal(await page.evaluate(() => document.documentElement.lang), 'de');
+  await page.waitForTimeout(100);
+  const de = await page.screenshot({ path: path.join(shots, 'lang-de.png') });
+  const deShare = await changedShare(page, en, de, panels);
+  assert.ok(deShare > 0.01, `the left panel in German looks like the English one (${deShare} of it changed)`);
+  // Chinese (the CJK font's glyphs come in when they are needed)
+  await page.evaluate(() => essikit.setLanguage('zh'));
+  await nextFrames(page, 3);
+  s = await page.evaluate(() => essikit.state());
+  assert.equal(s.lang, 'zh');
+  assert.match(s.inspector.join('\n'), /^切割直线，从 \(/m);
+  await page.waitForTimeout(1500);  // (the CJK font: fetched once, then the atlas is made again)
+  await nextFrames(page, 3);
+  const zh = await page.screenshot({ path: path.join(shots, 'lang-zh.png') });
+  for (const [name, other] of [['English', en], ['German', de]]) {
+    const share = await changedShare(page, other, zh, panels);
+    assert.ok(share > 0.01, `the left panel in Chinese looks like the ${name} one (${share} of it changed)`);
+  }
+  // A language essikit has no texts for changes nothing; the choice is kept across sessions
+  await page.evaluate(() => essikit.setLanguage('fr'));
+  assert.equal((await page.evaluate(() => essikit.state())).lang, 'zh');
+  await page.reload();
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 30000 });
+  assert.equal((await page.evaluate(() => essikit.state())).lang, 'zh');
+  assert.equal(await page.evaluate(() => localStorage.getItem('essikit.lang')), 'zh');
+  await page.evaluate(() => essikit.setLanguage('en'));
+  await page.close();
+});
+
+test('a browser in German starts the viewer in German (navigator.languages); a share link\'s problem in its words', async () => {
+  for (const [locale, want] of [['de-DE', 'de'], ['zh-CN', 'zh'], ['fr-FR', 'en']]) {
+    const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, locale });
+    const page = await context.newPage();
+    page.on('pageerror', (e) => console.log(`pageerror: ${e.message}`));
+    // a link whose tape data is damaged: the problem window, in the page's language
+    await page.goto(baseUrl + '#c=0,0,1&n=damaged.esi&b=100&t=AAAAAAAA');
+    await page.waitForFunction(() => window.essikit && essikit.started && essikit.state().link_problem, null, { timeout: 30000 });
+    const s = await page.evaluate(() => essikit.state());
+    assert.equal(s.lang, want, `${locale}: ${s.lang}`);
+    assert.equal(await page.evaluate(() => document.documentElement.lang), want);
+    const problem = { de: /abgeschnitten oder beschädigt/, zh: /被截断或已损坏/, en: /cut off or damaged/ }[want];
+    assert.match(s.link_problem, problem);
+    if (want === 'de') {
+      await page.screenshot({ path: path.join(shots, 'lang-de-start.png') });
+      // the problem follows the language when it is switched
+      await page.evaluate(() => essikit.setLanguage('en'));
+      assert.match((await page.evaluate(() => essikit.state())).link_problem, /cut off or damaged/);
+    }
+    await context.close();
+  }
+});
+
+test('at 1024x600 every toolbar item is reachable in every language: what does not fit is in the » menu', async () => {
+  const page = await openPage(browser, baseUrl, { width: 1024, height: 600 });
+  await loadExample(page, 'plate_holes.esi');
+  for (const lang of ['en', 'de', 'zh']) {
+    await page.evaluate((l) => essikit.setLanguage(l), lang);
+    await page.mouse.move(600, 400);
+    await nextFrames(page, 3);
+    let tb = (await page.evaluate(() => essikit.state())).toolbar;
+    const ids = tb.items.map((i) => i.id);
+    for (const id of ['open', 'paste', 'share', 'export', 'fit', 'measure', 'help', 'panels', 'compare', 'profile',
+                      'orientation', 'coordinates', 'language', 'verdict'])
+      assert.ok(ids.includes(id), `${lang}: no toolbar item ${id}`);
+    // the bar: items side by side inside the window's width and the toolbar's height
+    const bar = tb.items.filter((i) => !i.in_menu);
+    assert.ok(bar.some((i) => i.id === 'open'), `${lang}: Open is not in the bar`);
+    let right = 0;
+    for (const i of bar) {
+      const r = i.rect;
+      assert.ok(r.w > 0 && r.x >= right && r.x + r.w <= 1024 && r.y >= 0 && r.y + r.h <= 38, `${lang}: ${i.id} at ${JSON.stringify(r)}`);
+      right = r.x + r.w;
+    }
+    const menu = tb.items.filter((i) => i.in_menu);
+    if (menu.length === 0) continue;
+    // the rest in the overflow menu: its button in the bar, the items drawn in it when it is open
+    assert.ok(tb.more && tb.more.x >= right && tb.more.x + tb.more.w <= 1024, `${lang}: the » button at ${JSON.stringify(tb.more)}`);
+    await page.mouse.click(tb.more.x + tb.more.w / 2, tb.more.y + tb.more.h / 2);
+    await nextFrames(page, 3);
+    tb = (await page.evaluate(() => essikit.state())).toolbar;
+    assert.ok(tb.menu_open, `${lang}: the » menu did not open`);
+    for (const i of tb.items.filter((x) => x.in_menu)) {
+      const r = i.rect;
+      assert.ok(r.w > 0 && r.x >= 0 && r.x + r.w <= 1024 && r.y >= 0 && r.y + r.h <= 600, `${lang}: ${i.id} in the menu at ${JSON.stringify(r)}`);
+    }
+    await page.screenshot({ path: path.join(shots, `toolbar-1024x600-${lang}.png`) });
+    if (lang === 'de') await page.screenshot({ path: path.join(shots, 'layout-1024x600-de.png') });
+    await tap(page, 'Escape');
+    await page.mouse.click(600, 400);  // (closes the menu)
+    await nextFrames(page, 3);
+  }
+  // Narrower: the buttons go into the menu too, and work there (Help opens the help window)
+  await page.evaluate(() => essikit.setLanguage('de'));
+  await page.setViewportSize({ width: 560, height: 600 });
+  await nextFrames(page, 4);
+  let tb = (await page.evaluate(() => essikit.state())).toolbar;
+  assert.ok(tb.items.find((i) => i.id === 'help').in_menu, JSON.stringify(tb.items.map((i) => [i.id, i.in_menu])));
+  await page.mouse.click(tb.more.x + tb.more.w / 2, tb.more.y + tb.more.h / 2);
+  await nextFrames(page, 3);
+  tb = (await page.evaluate(() => essikit.state())).toolbar;
+  const help = tb.items.find((i) => i.id === 'help').rect;
+  assert.ok(help.w > 0, 'Help is not drawn in the open menu');
+  await page.mouse.click(help.x + help.w / 2, help.y + help.h / 2);
+  await until(page, () => essikit.state().help === true, null, 'Help in the » menu did not open the help');
+  await until(page, () => !essikit.state().toolbar.menu_open, null, 'the » menu stayed open after Help');
+  await page.evaluate(() => essikit.setLanguage('en'));
+  await page.close();
+});
+
 test('a light theme beside the dark one: the drawing, the panels and the grid light, the cuts still the cut colour; kept', async () => {
   const page = await newPage();
   const { motions } = await loadExample(page, 'plate_holes.esi');

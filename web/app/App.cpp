@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/Language.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
 #include "essi/geom.hpp"
@@ -28,16 +29,13 @@ App* g_app = nullptr;
 
 constexpr double kMessageSeconds = 4;  // a toolbar message shows this long
 
-// A problem with the whole file, shown over the drawing area ("" when there is none).
-std::string banner_for(const Document& d) {
-    if (d.bytes.empty()) return "The file is empty: there is nothing to draw.";
-    if (looks_binary(d.bytes))  // essi/sniff.hpp
-        return "This is a binary file, not an ESSI tape (ESSI tapes are text: + - digits and line ends).";
-    if (d.motions.empty() && d.has_errors())
-        return fmt("This does not look like an ESSI tape: %zu errors and no motion. The first: line %u: %s",
-                   d.count(Severity::Error), d.diagnostics.front().line, d.diagnostics.front().message.c_str());
-    if (d.motions.empty()) return "The tape has no motion: there is nothing to draw.";
-    return "";
+// A problem with the whole file, shown over the drawing area (None when there is none; App::banner_text).
+Msg banner_for(const Document& d) {
+    if (d.bytes.empty()) return Msg::UiBannerEmpty;
+    if (looks_binary(d.bytes)) return Msg::UiBannerBinary;  // essi/sniff.hpp
+    if (d.motions.empty() && d.has_errors()) return Msg::UiBannerNotTape;
+    if (d.motions.empty()) return Msg::UiBannerNoMotion;
+    return Msg::None;
 }
 
 // The side panels as one setting: {"left", "right", "left_shown", "right_shown"} (one line).
@@ -79,6 +77,7 @@ App::App(GLFWwindow* window) : window_(window) {
     for (const std::string& name : ui_.recent) fonts_.require_glyphs(name);
     ui_.layout = layout_from_setting(platform::load_text_setting(kLayoutSetting));
     machine_coordinates_ = platform::load_setting(kCoordinatesSetting).value_or(0) == 1;
+    set_language(startup_language(), false);
 }
 
 void App::set_orientation(int quarter_turns) {
@@ -133,11 +132,11 @@ bool App::use_profile_file(const std::string& name, const std::string& bytes) {
     if (!json) return false;
     const ProfileResult r = parse_profile(bytes);
     if (!r.profile) {
-        notify(display_text(name) + " is not a profile: " + (r.diagnostics.empty() ? std::string("?") : r.diagnostics.front().message));
+        notify(Msg::UiNotAProfile, {display_text(name), r.diagnostics.empty() ? std::string("?") : diagnostic_message(r.diagnostics.front(), ui_lang())});
         return true;
     }
     dropped_profile_ = r.profile;
-    notify("Profile " + display_text(r.profile->name) + " from " + display_text(name));
+    notify(Msg::UiProfileFrom, {display_text(r.profile->name), display_text(name)});
     set_profile(r.profile->name);
     return true;
 }
@@ -147,7 +146,7 @@ void App::load(std::string name, std::string bytes, std::optional<ViewRequest> v
     if (compare_next_ && document()) return compare_with(std::move(name), bytes);
     compare_.reset();  // (a new tape: a comparison was of the one before)
     input_format_.reset();  // (a new tape: its content says what it is)
-    ui_.link_problem.clear();
+    ui_.link_problem = {};
     read(std::move(name), std::move(bytes), view);
 }
 
@@ -156,7 +155,7 @@ void App::load_shared(std::string name, std::string bytes, const ShareLink& link
     input_format_.reset();
     if (link.input == "essi") input_format_ = InputFormat::Essi;
     if (link.input == "eia") input_format_ = InputFormat::Eia;
-    ui_.link_problem.clear();
+    ui_.link_problem = {};
     read(std::move(name), std::move(bytes), std::nullopt);
 }
 
@@ -170,8 +169,7 @@ void App::use_link_profile(const ShareLink& link) {
             profile_name_ = r.profile->name;
             return;
         }
-        notify("The link's profile could not be read (" +
-               (r.diagnostics.empty() ? std::string("?") : r.diagnostics.front().message) + "); the tape is read with auto.");
+        notify(Msg::UiLinkProfileUnreadable, {r.diagnostics.empty() ? std::string("?") : diagnostic_message(r.diagnostics.front(), ui_lang())});
         profile_name_ = std::string(kAutoProfile);
         return;
     }
@@ -179,17 +177,17 @@ void App::use_link_profile(const ShareLink& link) {
         profile_name_ = link.profile.empty() ? std::string(kAutoProfile) : link.profile;
         return;
     }
-    notify("The link names the profile " + display_text(link.profile) + ", which this viewer does not have; the tape is read with auto.");
+    notify(Msg::UiLinkProfileUnknown, {display_text(link.profile)});
     profile_name_ = std::string(kAutoProfile);
 }
 
-void App::link_problem(std::string text) { ui_.link_problem = std::move(text); }
+void App::link_problem(Phrase why) { ui_.link_problem = std::move(why); }
 
 void App::begin_compare() {
     const Document* d = document();
-    if (!d) return notify("Load a tape first, then the revision to compare it with.");
+    if (!d) return notify(Msg::UiLoadFirstCompare);
     compare_next_ = true;
-    notify("Drop or open the other revision of " + display_text(d->name) + " to compare it.");
+    notify(Msg::UiDropOtherRevision, {display_text(d->name)});
 }
 
 void App::compare_with(std::string name, const std::string& bytes) {
@@ -198,7 +196,7 @@ void App::compare_with(std::string name, const std::string& bytes) {
     if (!d) return;
     fonts_.require_glyphs(name);
     compare_ = make_compare(*d, profile_name_ == kAutoProfile, std::move(name), bytes);
-    notify("Compared with " + display_text(compare_->name) + ": " + compare_->summary + ".");
+    notify(Msg::UiComparedWith, {display_text(compare_->name), compare_->summary});
 }
 
 void App::end_compare() {
@@ -352,6 +350,7 @@ void App::render(bool keep_unchanged) {
     scene_.render(renderer_, ui_renderer_, fb_w, fb_h, keep_unchanged && !png && !fonts_changed_);
     // Between frames: the atlas at the screen's pixel ratio, with the glyphs asked for (UiFonts); the next frame
     // draws with it.
+    fonts_.require_language(ui_lang());
     fonts_changed_ = fonts_.update(framebuffer_scale());
     if (fonts_changed_) ui_renderer_.upload_fonts();
     if (!png) return;
@@ -365,7 +364,7 @@ void App::render(bool keep_unchanged) {
 }
 
 void App::export_view_png() {
-    if (!document()) return notify("Load a tape first.");
+    if (!document()) return notify(Msg::UiLoadFirst);
     png_pending_ = true;  // (taken in the next frame, right after it is drawn)
 }
 
@@ -453,10 +452,18 @@ void App::select_motion(std::size_t motion) {
 // ---------------------------------------------------------------------------------------------------------
 // Messages and share links
 // ---------------------------------------------------------------------------------------------------------
-void App::notify(std::string text) {
-    fonts_.require_glyphs(text);  // (a name in it)
-    ui_.message = std::move(text);
+void App::notify(Msg id, const MessageArgs& args) {
+    ui_.message = {id, args};
+    fonts_.require_glyphs(ui_.message.text());  // (a name in it)
     ui_.message_until = glfwGetTime() + kMessageSeconds;
+}
+
+std::string App::banner_text() const {
+    const Document* d = document();
+    if (!d || ui_.banner == Msg::None) return {};
+    if (ui_.banner != Msg::UiBannerNotTape) return tr(ui_.banner);
+    const Diagnostic& first = d->diagnostics.front();
+    return tr(ui_.banner, {d->count(Severity::Error), first.line, diagnostic_message(first, ui_lang())});
 }
 
 std::string App::share_query() const {
@@ -488,17 +495,17 @@ std::string App::copy_text(CopyWhat what, std::uint32_t index) const {
     switch (what) {
         case CopyWhat::Report: {
             const FileReport r = report();
-            return file_report_text(r) + summary_line(std::span<const FileReport>(&r, 1), profile_name_) + "\n";
+            return file_report_text(r, false, ui_lang()) + summary_line(std::span<const FileReport>(&r, 1), profile_name_, ui_lang()) + "\n";
         }
         case CopyWhat::Diagnostic:
-            return index < d->diagnostics.size() ? diagnostic_line(display_text(d->name), d->diagnostics[index]) + "\n" : "";
+            return index < d->diagnostics.size() ? diagnostic_line(display_text(d->name), d->diagnostics[index], ui_lang()) + "\n" : "";
         case CopyWhat::Line: return std::string(d->line(index)) + "\n";
         case CopyWhat::Inspector: {
             const std::uint32_t line = selection_.line;
             std::string s = display_text(d->name) + ":" + std::to_string(line) + ": " + std::string(d->line(line)) + "\n";
-            for (const Document::InspectorLine& l : d->inspector_lines(line)) s += l.text + "\n";
+            for (const Document::InspectorLine& l : d->inspector_lines(line, ui_lang())) s += l.text + "\n";
             for (const Diagnostic& diag : d->diagnostics)
-                if (diag.line == line) s += diagnostic_line(display_text(d->name), diag) + "\n";
+                if (diag.line == line) s += diagnostic_line(display_text(d->name), diag, ui_lang()) + "\n";
             return s;
         }
     }
@@ -507,11 +514,11 @@ std::string App::copy_text(CopyWhat what, std::uint32_t index) const {
 
 void App::copy(CopyWhat what, std::uint32_t index) {
     const std::string text = copy_text(what, index);
-    if (text.empty()) return notify("Nothing to copy.");
+    if (text.empty()) return notify(Msg::UiNothingToCopy);
     platform::copy_text(text);
     ui_.copied = text;
-    static constexpr const char* kWhat[] = {"The report", "The problem", "The line", "The inspector's text"};
-    notify(std::string(kWhat[static_cast<int>(what)]) + " is copied.");
+    static constexpr Msg kCopied[] = {Msg::UiCopiedReport, Msg::UiCopiedProblem, Msg::UiCopiedLine, Msg::UiCopiedInspector};
+    notify(kCopied[static_cast<int>(what)]);
 }
 
 std::string App::export_text(const std::string& format) const {
@@ -528,7 +535,7 @@ std::string App::export_text(const std::string& format) const {
     if (format == "report-json" || format == "report-csv") {
         const FileReport r = report();
         const std::span<const FileReport> one(&r, 1);
-        return format == "report-csv" ? diagnostics_csv(one) : report_to_json(one, profile_name_).dump(2) + "\n";
+        return format == "report-csv" ? diagnostics_csv(one, ui_lang()) : report_to_json(one, profile_name_, ui_lang()).dump(2) + "\n";
     }
     ConvertOptions o;
     o.to = format == "eia" ? OutputFormat::Eia : format == "gcode" ? OutputFormat::Gcode : OutputFormat::Essi;
@@ -539,7 +546,7 @@ std::string App::export_text(const std::string& format) const {
 
 void App::export_file(const std::string& format) {
     const Document* d = document();
-    if (!d) return notify("Load a tape first.");
+    if (!d) return notify(Msg::UiLoadFirst);
     const std::string stem = d->name.substr(0, d->name.find_last_of('.'));
     const char* ext = format == "dxf"           ? ".dxf"
                       : format == "eia"         ? ".eia"
@@ -554,22 +561,25 @@ void App::export_file(const std::string& format) {
 
 void App::share() {
     const Document* d = document();
-    if (!d) {
-        notify("Load a tape first.");
-        return;
-    }
-    if (!platform::has_share_links()) {
-        notify("Share links are made by the browser viewer.");
-        return;
-    }
+    if (!d) return notify(Msg::UiLoadFirst);
+    if (!platform::has_share_links()) return notify(Msg::UiShareBrowserOnly);
     platform::share(*this, d->name, d->bytes, share_query());  // (the page says when a tape is too large)
 }
 
-void App::share_done(bool ok, std::string text) {
-    ui_.share_url = std::move(text);
+void App::share_done(std::string url) {
+    ui_.share_url = std::move(url);
+    ui_.share_problem = {};
     ui_.share_popup = true;
-    if (ok) notify("Share link copied to the clipboard.");
-    else notify(ui_.share_url);
+    notify(Msg::UiShareCopied);
 }
+
+void App::share_failed(Phrase why) {
+    ui_.share_url.clear();
+    ui_.share_problem = std::move(why);
+    ui_.share_popup = true;
+    notify(ui_.share_problem.id, ui_.share_problem.args);
+}
+
+std::string App::share_text() const { return ui_.share_problem.empty() ? ui_.share_url : ui_.share_problem.text(); }
 
 }  // namespace essi::viewer

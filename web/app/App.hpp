@@ -15,6 +15,7 @@
 #include "app/Coordinates.hpp"
 #include "app/Document.hpp"
 #include "app/Input.hpp"
+#include "app/Language.hpp"
 #include "app/Layers.hpp"
 #include "app/LoadController.hpp"
 #include "app/Playback.hpp"
@@ -37,15 +38,27 @@ struct ViewRequest {
     std::uint32_t line = 0;         // selected line (0: none)
 };
 
+// One item of the toolbar as the last frame drew it (state().toolbar): in the bar, or in its overflow menu (drawn
+// there only while the menu is open).
+struct ToolbarItem {
+    const char* id = "";
+    Rect rect;             // screen pixels (nothing while it is in the closed menu)
+    bool in_menu = false;
+};
+
 // The windows and messages over the drawing.
 struct UiState {
     bool help = false;
-    std::string message;        // a short message in the toolbar, shown until message_until
+    Phrase message;             // a short message in the toolbar, shown until message_until
     double message_until = 0;
-    std::string share_url;      // the last share link (or why there is none)
+    std::string share_url;      // the last share link
+    Phrase share_problem;       // or why the last one could not be made
     bool share_popup = false;
-    std::string banner;         // a problem with the whole file ("not an ESSI tape ...")
-    std::string link_problem;   // a share link that could not be opened (cut off, damaged, its tape gone ...)
+    Msg banner = Msg::None;     // a problem with the whole file ("not an ESSI tape ...": App::banner_text)
+    Phrase link_problem;        // a share link that could not be opened (cut off, damaged, its tape gone ...)
+    std::vector<ToolbarItem> toolbar;  // the toolbar's items (panels::toolbar)
+    Rect toolbar_more;                 // its overflow menu's button (w 0: every item fits)
+    bool toolbar_menu_open = false;
     std::string copied;         // the last text copied to the clipboard (state().copied)
     std::vector<std::string> examples;  // the tapes the server offers (the start screen), none natively
     std::vector<std::string> recent;    // the names of the last tapes opened (newest first), kept across sessions
@@ -80,7 +93,7 @@ public:
     // it carries) and input format (essi/share_link.hpp). The page applies the link's view after it.
     void load_shared(std::string name, std::string bytes, const ShareLink& link);
     // A share link that could not be opened: says why, over the start screen.
-    void link_problem(std::string text);
+    void link_problem(Phrase why);
     // Compare mode: the next tape opened (dropped, Open..., essikit.compare) is compared with this one instead of
     // replacing it (Compare.hpp); end_compare leaves the mode.
     void begin_compare();
@@ -126,7 +139,10 @@ public:
     void export_view_png();
     // The part of the program the drawing area shows (program mm; its box when the view is turned).
     [[nodiscard]] Box visible_box() const;
-    void share_done(bool ok, std::string text);
+    void share_done(std::string url);        // the link is made (and copied)
+    void share_failed(Phrase why);           // it could not be made
+    // The share link, or why there is none (the Share link window, state().share_url).
+    [[nodiscard]] std::string share_text() const;
     // The tape's report: as `essi check` makes it (its path the tape's name).
     [[nodiscard]] FileReport report() const;
     // Copies to the clipboard: the report as `essi check` prints it, one problem (`index` in the diagnostics) as
@@ -134,7 +150,16 @@ public:
     enum class CopyWhat { Report, Diagnostic, Line, Inspector };
     [[nodiscard]] std::string copy_text(CopyWhat what, std::uint32_t index = 0) const;
     void copy(CopyWhat what, std::uint32_t index = 0);
-    void notify(std::string text);  // a short message in the toolbar (copied, paste ignored, ...)
+    void notify(Msg id, const MessageArgs& args = {});  // a short message in the toolbar (copied, paste ignored, ...)
+    // A problem with the whole file, in the viewer's language ("" when there is none).
+    [[nodiscard]] std::string banner_text() const;
+
+    // The language of the panels (Language.hpp): the setting "lang", else the browser's or the environment's
+    // (platform::system_language). `remember`: kept across sessions (the user's switch); the native viewer's
+    // --lang is not.
+    void set_language(Lang lang, bool remember = true);
+    [[nodiscard]] Lang language() const { return ui_lang(); }
+    static constexpr const char* kLanguageSetting = "lang";
 
     // window.essikit.state(): {status, name, stats, diagnostics, selection, view, ...} as JSON text.
     [[nodiscard]] std::string state_json() const;
@@ -195,6 +220,7 @@ private:
     bool use_profile_file(const std::string& name, const std::string& bytes);
     void read(std::string name, std::string bytes, std::optional<ViewRequest> view);  // with the profile and format chosen
     void use_link_profile(const ShareLink& link);
+    static Lang startup_language();  // the setting "lang", else the platform's (Language.cpp)
 
     View view_;
     bool machine_coordinates_ = false;

@@ -104,7 +104,7 @@ json measure_json(const Measure& m, const Coordinates& cs) {
 json inspector_json(const Document* doc, std::uint32_t line) {
     json insp = json::array();
     if (doc)
-        for (const Document::InspectorLine& l : doc->inspector_lines(line)) insp.push_back(l.text);
+        for (const Document::InspectorLine& l : doc->inspector_lines(line, ui_lang())) insp.push_back(l.text);
     return insp;
 }
 
@@ -112,6 +112,17 @@ json render_json(const RenderStats& rs, std::uint64_t unchanged_frames) {
     return {{"frames", rs.frames}, {"full_redraws", rs.full_redraws}, {"partial_redraws", rs.partial_redraws},
             {"cached_frames", rs.cached_frames}, {"filling_frames", rs.filling_frames},
             {"pending_segments", rs.pending_segments}, {"unchanged_frames", unchanged_frames}};
+}
+
+// The toolbar's items as the last frame drew them: where each is, in the bar or in its overflow menu ("more").
+json toolbar_json(const UiState& ui) {
+    const auto rect = [](const Rect& r) { return json{{"x", r.x}, {"y", r.y}, {"w", r.w}, {"h", r.h}}; };
+    json items = json::array();
+    for (const ToolbarItem& t : ui.toolbar)
+        items.push_back({{"id", t.id}, {"in_menu", t.in_menu}, {"rect", rect(t.rect)}});
+    return {{"items", items},
+            {"more", ui.toolbar_more.w > 0 ? rect(ui.toolbar_more) : json(nullptr)},
+            {"menu_open", ui.toolbar_menu_open}};
 }
 
 json selection_json(const Selection& s) {
@@ -134,7 +145,7 @@ std::string App::state_json() const {
     j["status"] = load_.loading() ? "loading" : doc ? "ready" : "empty";
     if (load_.loading()) {
         j["progress"] = load_.progress();
-        j["stage"] = load_.stage();
+        j["stage"] = tr(load_.stage());
     }
     // The last frame drew the tape (its segments, or its level of detail while the segments are made), and how
     // long after the start of the load the first such frame came.
@@ -151,7 +162,7 @@ std::string App::state_json() const {
     }
     if (doc) {
         add_document(j, *doc, load_, renderer_, scene_.lod_drawn());
-        j["banner"] = ui_.banner;
+        j["banner"] = banner_text();
     }
     j["selection"] = selection_json(selection_);
     const Point o = origin();
@@ -176,8 +187,8 @@ std::string App::state_json() const {
     j["inspector"] = inspector_json(doc, selection_.line);
     j["render"] = render_json(renderer_.stats(), scene_.skipped_frames());
     j["help"] = ui_.help;
-    j["share_url"] = ui_.share_url;
-    j["link_problem"] = ui_.link_problem;
+    j["share_url"] = share_text();
+    j["link_problem"] = ui_.link_problem.text();
     j["copied"] = ui_.copied;
     j["examples"] = ui_.examples;
     j["recent"] = ui_.recent;
@@ -210,7 +221,9 @@ std::string App::state_json() const {
                   {"texture", {ui_renderer_.font_texture_size()[0], ui_renderer_.font_texture_size()[1]}}};
     const panels::PanelLayout& l = ui_.layout;
     j["layout"] = {{"left", l.left}, {"right", l.right}, {"left_shown", l.left_shown}, {"right_shown", l.right_shown}};
-    j["message"] = ui_.message;
+    j["message"] = ui_.message.text();
+    j["lang"] = lang_code(ui_lang());
+    j["toolbar"] = toolbar_json(ui_);
     j["kind_colors"] = json::array();
     for (const Rgba& c : kKindColors)
         j["kind_colors"].push_back({std::lround(c.r * 255), std::lround(c.g * 255), std::lround(c.b * 255)});
@@ -231,7 +244,7 @@ std::string App::motion_json(std::size_t i) const {
               {"mid", {point_at(r, 0.5).x, point_at(r, 0.5).y}},
               {"length_mm", r.length_mm},
               {"centre", r.curve == CurveKind::Arc ? json{r.centre.x, r.centre.y} : json(nullptr)},
-              {"text", describe_motion(r)}};
+              {"text", describe_motion(r, ui_lang())}};
     return j.dump();
 }
 

@@ -268,46 +268,73 @@ constexpr double kFullTurnTolerance = 1e-9;
 constexpr double kSameRadiusMm = 1e-9;
 }  // namespace
 
-std::string describe_motion(const MotionRecord& m) {
-    std::string s = motion_kind_name(m.kind);
+const char* motion_kind_text(MotionKind kind, Lang lang) {
+    switch (kind) {
+        case MotionKind::Rapid: return c_text(Msg::UiKindRapid, lang);
+        case MotionKind::Travel: return c_text(Msg::UiKindTravel, lang);
+        case MotionKind::Cut: return c_text(Msg::UiKindCut, lang);
+        case MotionKind::Mark: return c_text(Msg::UiKindMark, lang);
+    }
+    return motion_kind_name(kind);
+}
+
+const char* curve_kind_text(CurveKind curve, Lang lang) {
+    switch (curve) {
+        case CurveKind::Line: return c_text(Msg::UiCurveLine, lang);
+        case CurveKind::Arc: return c_text(Msg::UiCurveArc, lang);
+        case CurveKind::Parabola: return c_text(Msg::UiCurveParabola, lang);
+    }
+    return curve_kind_name(curve);
+}
+
+std::string tools_label(std::uint8_t tools, Lang lang) {
+    if (tools == 0) return "-";
+    return format_template("{0}", lang, MessageArgs{tools_arg(tools)});  // (the core's words, joined with '+')
+}
+
+namespace {
+std::string xy(Point p) { return fmt("%.3f, %.3f", p.x, p.y); }
+std::string mm3(double v) { return fmt("%.3f", v); }
+}  // namespace
+
+std::string describe_motion(const MotionRecord& m, Lang lang) {
+    const char* kind = motion_kind_text(m.kind, lang);
+    std::string s;
     switch (m.curve) {
         case CurveKind::Line:
-            s += fmt(" line from (%.3f, %.3f) to (%.3f, %.3f), %.3f mm", m.start.x, m.start.y, m.end.x, m.end.y,
-                     m.length_mm);
+            s = format_message(Msg::UiMotionLine, lang, {kind, xy(m.start), xy(m.end), mm3(m.length_mm)});
             break;
         case CurveKind::Arc: {
             const bool full = std::fabs(std::fabs(m.sweep) - 2 * kPi) < kFullTurnTolerance;
-            s += fmt(" %s %s r=%.3f mm, centre (%.3f, %.3f), from (%.3f, %.3f) to (%.3f, %.3f), sweep %.3f°, %.3f mm",
-                     full ? "full circle" : "arc", m.ccw ? "CCW" : "CW", m.radius, m.centre.x, m.centre.y, m.start.x,
-                     m.start.y, m.end.x, m.end.y, m.sweep * 180.0 / kPi, m.length_mm);
+            s = format_message(Msg::UiMotionArc, lang,
+                               {kind, full ? Msg::UiFullCircle : Msg::UiArc, m.ccw ? Msg::UiCcw : Msg::UiCw, mm3(m.radius),
+                                xy(m.centre), xy(m.start), xy(m.end), mm3(m.sweep * 180.0 / kPi), mm3(m.length_mm)});
             if (std::fabs(m.end_radius - m.radius) > kSameRadiusMm)
-                s += fmt(" (end radius %.3f mm)", m.end_radius);
+                s += " " + format_message(Msg::UiArcEndRadius, lang, {mm3(m.end_radius)});
             break;
         }
         case CurveKind::Parabola: {
             const ParabolaGeom& g = m.parabola;
-            s += fmt(" parabola, vertex (%.3f, %.3f), axis (%.3f, %.3f), p=%.3f mm, from (%.3f, %.3f) to (%.3f, %.3f), "
-                     "%.3f mm",
-                     g.vertex.x, g.vertex.y, g.n.x, g.n.y, g.p, m.start.x, m.start.y, m.end.x, m.end.y, m.length_mm);
+            s = format_message(Msg::UiMotionParabola, lang,
+                               {kind, xy(g.vertex), xy(g.n), mm3(g.p), xy(m.start), xy(m.end), mm3(m.length_mm)});
             break;
         }
     }
-    s += "; tools " + tools_text(m.tools);
-    if (m.head == 2) s += ", head 2";
-    if (m.kerf != KerfSide::Off)
-        s += ", kerf: " + kerf_offset_text(m.kerf, m.kerf_mm);
-    s += fmt(", %.0f mm/min", m.feed_mm_min);
+    s += format_message(Msg::UiMotionTools, lang, {tools_label(m.tools, lang)});
+    if (m.head == 2) s += text(Msg::UiMotionHead2, lang);
+    if (m.kerf != KerfSide::Off) s += format_message(Msg::UiMotionKerf, lang, {kerf_offset_text(m.kerf, m.kerf_mm, lang)});
+    s += (lang == Lang::Zh ? "，" : ", ") + fmt("%.0f mm/min", m.feed_mm_min);
     return s;
 }
 
-std::string describe_block(const Tape& tape, std::size_t i, const Profile& profile) {
+std::string describe_block(const Tape& tape, std::size_t i, const Profile& profile, Lang lang) {
     const Block& b = tape.block(i);
     switch (b.kind) {
         case BlockKind::Function:
-            return describe_function(b.code, false, 0, profile);
+            return describe_function(b.code, false, 0, profile, lang);
         case BlockKind::FunctionValue: {
             const auto w = tape.words(i);
-            return describe_function(b.code, true, w.empty() ? 0.0 : b.function_value(w[0]), profile);
+            return describe_function(b.code, true, w.empty() ? 0.0 : b.function_value(w[0]), profile, lang);
         }
         case BlockKind::Motion: {
             // The words by their names (docs/semantics.md §2): TC and TP count by their sign only.
@@ -317,20 +344,21 @@ std::string describe_block(const Tape& tape, std::size_t i, const Profile& profi
             static constexpr const char* kParabola[] = {"DX", "DY", "XP", "YP"};
             const char* const* names = w.size() == 5 ? kArc : w.size() == 6 ? kParabola : kLine;
             const std::size_t named = w.size() == 2 ? 2 : w.size() == 5 || w.size() == 6 ? 4 : 0;
-            std::string s = fmt("motion block, %d words:", b.word_count());
-            for (std::size_t k = 0; k < named; ++k) s += fmt("%s %s %+d", k == 0 ? "" : ",", names[k], static_cast<int>(w[k]));
+            std::string s = format_message(Msg::UiMotionBlock, lang, {b.word_count()});
+            const char* comma = lang == Lang::Zh ? "，" : ", ";
+            for (std::size_t k = 0; k < named; ++k) s += (k == 0 ? std::string(" ") : comma) + fmt("%s %+d", names[k], static_cast<int>(w[k]));
             if (named == 0)
                 for (auto v : w) s += fmt(" %+d", static_cast<int>(v));
-            if (w.size() >= 5) s += b.tc_positive() ? ", TC + (counter-clockwise)" : ", TC - (clockwise)";
-            if (w.size() == 6) s += b.tp_positive() ? ", TP + (axis parallel to Y)" : ", TP - (axis parallel to X)";
-            s += " (unit increments)";
-            if (b.has_address()) s += fmt("; head %d", static_cast<int>(b.code));
+            if (w.size() >= 5) s += comma + std::string(text(b.tc_positive() ? Msg::UiTcCcw : Msg::UiTcCw, lang));
+            if (w.size() == 6) s += comma + std::string(text(b.tp_positive() ? Msg::UiTpY : Msg::UiTpX, lang));
+            s += (lang == Lang::Zh ? "" : " ") + std::string(text(Msg::UiUnitIncrements, lang));
+            if (b.has_address()) s += format_message(Msg::UiBlockHead, lang, {static_cast<int>(b.code)});
             return s;
         }
-        case BlockKind::Comment: return "comment (inside 3 ... 4, not executed)";
-        case BlockKind::Percent: return "%: initialisation / rewind-stop mark";
-        case BlockKind::EndMark: return "end of program";
-        case BlockKind::Invalid: return "invalid block (skipped; see its diagnostic)";
+        case BlockKind::Comment: return std::string(text(Msg::UiBlockComment, lang));
+        case BlockKind::Percent: return std::string(text(Msg::UiBlockPercent, lang));
+        case BlockKind::EndMark: return std::string(text(Msg::UiBlockEnd, lang));
+        case BlockKind::Invalid: return std::string(text(Msg::UiBlockInvalid, lang));
     }
     return "";
 }
@@ -544,28 +572,28 @@ float DocumentLoader::progress() const {
     }
 }
 
-const char* DocumentLoader::stage() const {
+Msg DocumentLoader::stage() const {
     switch (stage_) {
-        case Stage::IndexLines: return "indexing lines";
-        case Stage::ReadAndCheck: return "reading and checking";
-        default: return "building the drawing";
+        case Stage::IndexLines: return Msg::UiStageIndexing;
+        case Stage::ReadAndCheck: return Msg::UiStageReading;
+        default: return Msg::UiStageBuilding;
     }
 }
 
-std::vector<Document::InspectorLine> Document::inspector_lines(std::uint32_t line) const {
+std::vector<Document::InspectorLine> Document::inspector_lines(std::uint32_t line, Lang lang) const {
     std::vector<InspectorLine> out;
     if (line == 0) return out;
     const LineBlocks blocks = blocks_of_line(line);
     for (std::size_t b = blocks.first; b < blocks.last; ++b)
-        out.push_back({InspectorLine::Of::Block, MotionKind::Travel, describe_block(*blocks.chunk, b, profile)});
+        out.push_back({InspectorLine::Of::Block, MotionKind::Travel, describe_block(*blocks.chunk, b, profile, lang)});
     const auto [m0, m1] = motions_of_line(line);
     for (std::size_t m = m0; m < m1 && m < m0 + kInspectorMotions; ++m) {
         const MotionRecord r = record(m);
-        out.push_back({InspectorLine::Of::Motion, r.kind, describe_motion(r)});
+        out.push_back({InspectorLine::Of::Motion, r.kind, describe_motion(r, lang)});
     }
     const std::vector<MotionRecord> torch = torch_path_of_line(line);
     for (std::size_t k = 0; k < torch.size() && k < kInspectorMotions; ++k)
-        out.push_back({InspectorLine::Of::Torch, torch[k].kind, "torch (kerf): " + describe_motion(torch[k])});
+        out.push_back({InspectorLine::Of::Torch, torch[k].kind, format_message(Msg::UiTorchKerf, lang, {describe_motion(torch[k], lang)})});
     return out;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "essi/diagnostics.hpp"
+#include "essi/i18n.hpp"
 #include "essi/geom.hpp"
 #include "essi/lines.hpp"
 #include "essi/motion.hpp"
@@ -149,7 +150,7 @@ struct Document {
         std::string text;
     };
     static constexpr std::size_t kInspectorMotions = 8;
-    [[nodiscard]] std::vector<InspectorLine> inspector_lines(std::uint32_t line) const;
+    [[nodiscard]] std::vector<InspectorLine> inspector_lines(std::uint32_t line, Lang lang = Lang::En) const;
     // The blocks that start on one source line (the chunk that holds them is read again when needed).
     [[nodiscard]] LineBlocks blocks_of_line(std::uint32_t line) const;
     [[nodiscard]] bool has_errors() const;
@@ -170,9 +171,15 @@ private:
 };
 
 // In words, for the block inspector: "cut arc CCW r=50.0 mm, centre (10.0, 20.0), sweep 90.0°, 78.5 mm".
-[[nodiscard]] std::string describe_motion(const MotionRecord& m);
+[[nodiscard]] std::string describe_motion(const MotionRecord& m, Lang lang = Lang::En);
 // The meaning of block i of `tape`: describe_function for function blocks, the kind for the others.
-[[nodiscard]] std::string describe_block(const Tape& tape, std::size_t block_index, const Profile& profile);
+[[nodiscard]] std::string describe_block(const Tape& tape, std::size_t block_index, const Profile& profile,
+                                         Lang lang = Lang::En);
+// The words the panels use for a motion's kind ("cut"), its curve ("arc") and its tools ("oxygen+punch", "-" for
+// none), in `lang` (English: the core's names, motion_kind_name and the rest).
+[[nodiscard]] const char* motion_kind_text(MotionKind kind, Lang lang);
+[[nodiscard]] const char* curve_kind_text(CurveKind curve, Lang lang);
+[[nodiscard]] std::string tools_label(std::uint8_t tools, Lang lang);
 
 // Loads a document in steps that each take about `budget_ms` (so the page keeps drawing): the line index,
 // then TapeReader chunks through essi::TapeChecker (the statistics and diagnostics of `essi check`), the
@@ -184,7 +191,7 @@ public:
     // Runs for about budget_ms; returns true when the document is complete.
     bool step(double budget_ms = 12);
     [[nodiscard]] float progress() const;      // 0..1
-    [[nodiscard]] const char* stage() const;   // "indexing lines", "reading and checking", ...
+    [[nodiscard]] Msg stage() const;           // "indexing lines", "reading and checking", ... (ui.def)
     [[nodiscard]] std::unique_ptr<Document> take() { return std::move(doc_); }
 private:
     class Sink;

@@ -161,11 +161,11 @@ float LoadController::progress() const {
     return building_ ? from + (1.f - from) * building_->progress() : 1.f;
 }
 
-const char* LoadController::stage() const {
+Msg LoadController::stage() const {
     switch (phase()) {
         case Phase::Reading: return loader_->stage();
-        case Phase::Overview: return "drawing the overview";
-        default: return "building the drawing";
+        case Phase::Overview: return Msg::UiStageOverview;
+        default: return Msg::UiStageBuilding;
     }
 }
 

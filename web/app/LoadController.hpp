@@ -47,7 +47,7 @@ public:
     [[nodiscard]] Phase phase() const;
     [[nodiscard]] bool loading() const { return phase() != Phase::Idle; }  // reading, or the first drawing
     [[nodiscard]] float progress() const;
-    [[nodiscard]] const char* stage() const;
+    [[nodiscard]] Msg stage() const;  // what the progress bar says (a row of ui.def)
     // Loading or building work left to do (the browser loop also runs slices of it between frames).
     [[nodiscard]] bool has_work() const { return loader_ != nullptr || lod_building_ || building_ != nullptr; }
     // The slice may run outside a frame (not before the first frame of a load has shown the progress bar).

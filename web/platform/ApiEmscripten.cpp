@@ -6,6 +6,7 @@
 #include <malloc.h>
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -14,6 +15,40 @@
 #include "essi/text.hpp"
 
 using essi::viewer::App;
+
+namespace {
+
+// What the page says went wrong with a share link, as {"kind": ..., "args": [...]} (index.html, share_store.js): the
+// sentence is the catalogue's, in the viewer's language.
+essi::viewer::Phrase page_phrase(const char* json) {
+    using essi::Msg;
+    static constexpr struct {
+        const char* kind;
+        Msg msg;
+        Msg arg;  // its argument when it is a catalogue word (else the page's arguments)
+    } kKinds[] = {
+        {"cut", Msg::UiLinkCut, Msg::None},                    {"no-tape", Msg::UiLinkCut, Msg::UiLinkNoTape},
+        {"no-stored-tape", Msg::UiLinkCut, Msg::UiLinkNoStoredTape}, {"unpack", Msg::UiLinkCut, Msg::UiLinkNoUnpack},
+        {"length", Msg::UiLinkCutLength, Msg::None},           {"store-down", Msg::UiLinkStoreDown, Msg::None},
+        {"gone", Msg::UiLinkGone, Msg::None},                  {"store-error", Msg::UiLinkStoreError, Msg::None},
+        {"too-large", Msg::UiLinkTooLarge, Msg::None},         {"make-failed", Msg::UiLinkMakeFailed, Msg::None},
+        {"store-too-large", Msg::UiLinkStoreTooLarge, Msg::None}, {"store-failed", Msg::UiLinkStoreFailed, Msg::None},
+    };
+    const nlohmann::json j = nlohmann::json::parse(json ? json : "", nullptr, false);
+    const std::string kind = j.is_object() && j.contains("kind") && j["kind"].is_string() ? j["kind"].get<std::string>() : "";
+    std::vector<std::string> args;
+    if (j.is_object() && j.contains("args") && j["args"].is_array())
+        for (const auto& a : j["args"]) args.push_back(a.is_string() ? a.get<std::string>() : a.dump());
+    args.resize(2);
+    for (const auto& k : kKinds) {
+        if (kind != k.kind) continue;
+        if (k.arg != Msg::None) return {k.msg, {k.arg}};
+        return {k.msg, {args[0], args[1]}};
+    }
+    return {Msg::UiLinkMakeFailed, {kind}};  // (a kind this viewer does not know)
+}
+
+}  // namespace
 
 extern "C" {
 
@@ -47,9 +82,16 @@ EMSCRIPTEN_KEEPALIVE void essi_load_commit_shared(const char* name) {
     g_pending = std::string();
 }
 
-// A share link that could not be opened (the page's words): shown over the start screen.
-EMSCRIPTEN_KEEPALIVE void essi_link_problem(const char* text) {
-    if (App* app = App::instance()) app->link_problem(text ? text : "");
+// A share link that could not be opened ({"kind", "args"}: page_phrase): shown over the start screen.
+EMSCRIPTEN_KEEPALIVE void essi_link_problem(const char* json) {
+    if (App* app = App::instance()) app->link_problem(page_phrase(json));
+}
+
+// The panels' language: "en", "de", "zh" (or a tag such as "de-AT"); kept across sessions. Another is ignored.
+EMSCRIPTEN_KEEPALIVE void essi_set_language(const char* tag) {
+    App* app = App::instance();
+    if (!app || !tag) return;
+    if (const auto lang = essi::parse_lang(tag)) app->set_language(*lang);
 }
 
 // The state as JSON (App::state_json); valid until the next call.
@@ -244,8 +286,12 @@ EMSCRIPTEN_KEEPALIVE void essi_share() {
     if (App* app = App::instance()) app->share();
 }
 
+// The page made the link (ok: `text` is the URL) or could not (`text`: {"kind", "args"}, page_phrase).
 EMSCRIPTEN_KEEPALIVE void essi_share_done(int ok, const char* text) {
-    if (App* app = App::instance()) app->share_done(ok != 0, text ? text : "");
+    App* app = App::instance();
+    if (!app) return;
+    if (ok != 0) app->share_done(text ? text : "");
+    else app->share_failed(page_phrase(text));
 }
 
 }  // extern "C"

@@ -11,7 +11,7 @@ void copy_text(const std::string& text) { glfwSetClipboardString(nullptr, text.c
 void paste(App& app) {
     const char* text = glfwGetClipboardString(nullptr);
     if (text == nullptr || *text == 0) {
-        app.notify("The clipboard holds no text.");
+        app.notify(Msg::UiClipboardEmpty);
         return;
     }
     app.load("pasted.esi", text);

@@ -26,7 +26,7 @@ void install_drop_handler(GLFWwindow* window) {
         if (app == nullptr || count < 1) return;
         std::string bytes;
         if (read_file(paths[0], bytes)) app->load(paths[0], std::move(bytes));
-        else app->notify(std::string("Cannot read ") + paths[0]);
+        else app->notify(Msg::UiCannotRead, {paths[0]});
     });
 }
 
@@ -35,7 +35,8 @@ bool has_file_dialog() { return true; }
 void open_button_at(float, float, float, float) {}  // a desktop dialog can open from any frame
 
 void open_file_dialog(App& app) {
-    FILE* p = popen("zenity --file-selection --title='Open an ESSI tape' 2>/dev/null", "r");
+    const std::string command = std::string("zenity --file-selection --title='") + tr(Msg::UiOpenDialogTitle) + "' 2>/dev/null";
+    FILE* p = popen(command.c_str(), "r");
     std::string path;
     if (p != nullptr) {
         char buf[4096];
@@ -44,24 +45,24 @@ void open_file_dialog(App& app) {
     }
     while (!path.empty() && (path.back() == '\n' || path.back() == '\r')) path.pop_back();
     if (path.empty()) {
-        app.notify("No file chosen (drop a file on the window, or run: essi_viewer TAPE).");
+        app.notify(Msg::UiNoFileChosen);
         return;
     }
     std::string bytes;
     if (read_file(path, bytes)) app.load(path, std::move(bytes));
-    else app.notify("Cannot read " + path);
+    else app.notify(Msg::UiCannotRead, {path});
 }
 
 void save_file(App& app, const std::string& name, const std::string& text) {
     std::ofstream out(name, std::ios::binary);
     out << text;
-    app.notify(out ? "Wrote " + name + " (in the current folder)." : "Cannot write " + name + ".");
+    app.notify(out ? Msg::UiWrote : Msg::UiCannotWrite, {name});
 }
 
 void open_example(App&, const std::string&) {}  // (the desktop viewer has no server: no examples are offered)
 
 void save_view_png(App& app, const std::string&, PixelRect) {
-    app.notify("The view is saved as PNG by the browser viewer; Export... > View as SVG works here.");
+    app.notify(Msg::UiPngBrowserOnly);
 }
 
 }  // namespace essi::viewer::platform

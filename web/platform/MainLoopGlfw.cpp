@@ -1,11 +1,13 @@
 // Desktop main loop: a GLFW window with an OpenGL ES 3.0 context (the API WebGL2 has), so the shaders and
 // the renderer are the same text as in the browser.
 //
-// Usage: essi_viewer [--frames N] [--screenshot FILE.ppm] [--state FILE.json] [TAPE]
+// Usage: essi_viewer [--frames N] [--screenshot FILE.ppm] [--state FILE.json] [--lang en|de|zh] [TAPE]
 //   --frames N          draw N frames once the tape is loaded and drawn (or from the start without a tape), then
 //                       exit (tests and scripts; without it the window stays until it is closed)
 //   --screenshot FILE   with --frames: the last frame as a binary PPM (P6, RGB, top row first)
 //   --state FILE        with --frames: the viewer's state JSON at the end (the page's window.essikit.state())
+//   --lang L            the panels' language for this run (en, de, zh or a locale such as de_DE.UTF-8); without
+//                       it the one chosen last in the viewer, else the environment's (LC_ALL, LC_MESSAGES, LANG)
 #include <GLES3/gl3.h>
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -15,6 +17,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -32,10 +35,11 @@ struct Options {
     std::string tape;
     long frames = -1;  // -1: run until the window closes
     std::string screenshot, state;
+    std::optional<essi::Lang> lang;
 };
 
 int usage() {
-    std::fprintf(stderr, "usage: essi_viewer [--frames N] [--screenshot FILE.ppm] [--state FILE.json] [TAPE]\n");
+    std::fprintf(stderr, "usage: essi_viewer [--frames N] [--screenshot FILE.ppm] [--state FILE.json] [--lang en|de|zh] [TAPE]\n");
     return 2;
 }
 
@@ -69,6 +73,9 @@ bool parse(int argc, char** argv, Options& opt) {
             opt.screenshot = argv[++i];
         } else if (a == "--state" && has_value) {
             opt.state = argv[++i];
+        } else if (a == "--lang" && has_value) {
+            opt.lang = essi::parse_lang(argv[++i]);
+            if (!opt.lang) return false;
         } else if (a == "--help" || a == "-h" || (a.size() > 1 && a[0] == '-') || !opt.tape.empty()) {
             return false;
         } else {
@@ -122,6 +129,7 @@ int write_outputs(const Options& opt, GLFWwindow* window, const essi::viewer::Ap
 int run(const Options& opt, GLFWwindow* window) {
     using namespace essi::viewer;
     App app(window);
+    if (opt.lang) app.set_language(*opt.lang, false);  // (for this run: the viewer's own choice stays kept)
     if (!app.init_graphics()) std::fprintf(stderr, "essi_viewer: the drawing programs did not compile\n");
     platform::install_drop_handler(window);
     if (!opt.tape.empty()) {

@@ -12,6 +12,8 @@
 #include <string>
 #include <string_view>
 
+#include "essi/i18n.hpp"
+
 namespace essi::viewer {
 class App;
 class UiFonts;
@@ -53,6 +55,12 @@ void save_setting(const char* name, int value);
 // The same for text (one line: line ends are not kept).
 [[nodiscard]] std::optional<std::string> load_text_setting(const char* name);
 void save_text_setting(const char* name, const std::string& value);
+
+// The language the browser asks for (navigator.languages: the first one essikit has texts for) or the environment
+// (LC_ALL, LC_MESSAGES, LANG: essi::lang_from_environment); English when none (SettingsEmscripten/Glfw.cpp).
+[[nodiscard]] Lang system_language();
+// The page follows the viewer's language (<html lang>, the drop hint's text); nothing natively.
+void show_language(Lang lang);
 
 // The examples the server offers (essi serve's /examples/): the page fetches their list at start (App::set_examples)
 // and a click opens one (the page fetches it and loads it). Natively there are none.

@@ -1,7 +1,9 @@
-// Viewer settings in the browser's localStorage (a key "essikit.NAME"): kept across sessions of the page.
+// Viewer settings in the browser's localStorage (a key "essikit.NAME"): kept across sessions of the page; the
+// browser's languages.
 #include <emscripten.h>
 
 #include <cstdlib>
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -48,5 +50,35 @@ std::optional<int> load_setting(const char* name) {
 }
 
 void save_setting(const char* name, int value) { save_text_setting(name, std::to_string(value)); }
+
+// navigator.languages in the user's order (else navigator.language): the first one essikit has.
+Lang system_language() {
+    const int len = EM_ASM_INT({
+        const tags = (navigator.languages && navigator.languages.length) ? navigator.languages : [navigator.language || ''];
+        return lengthBytesUTF8(tags.join(' '));
+    });
+    std::string tags(static_cast<std::size_t>(len) + 1, '\0');
+    EM_ASM({
+        const tags = (navigator.languages && navigator.languages.length) ? navigator.languages : [navigator.language || ''];
+        stringToUTF8(tags.join(' '), $0, $1);
+    }, tags.data(), len + 1);
+    tags.resize(std::strlen(tags.c_str()));
+    std::size_t at = 0;
+    while (at < tags.size()) {
+        const std::size_t end = std::min(tags.find(' ', at), tags.size());
+        if (const auto lang = parse_lang(std::string_view(tags).substr(at, end - at))) return *lang;
+        at = end + 1;
+    }
+    return Lang::En;
+}
+
+void show_language(Lang lang) {
+    // (no commas inside the JavaScript: the EM_ASM macro would split its argument there)
+    EM_ASM({
+        document.documentElement.lang = UTF8ToString($0);
+        const drop = document.getElementById('drop');
+        if (drop) drop.textContent = UTF8ToString($1);
+    }, std::string(lang_code(lang)).c_str(), c_text(Msg::UiDropHere, lang));
+}
 
 }  // namespace essi::viewer::platform

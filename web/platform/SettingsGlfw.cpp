@@ -60,4 +60,11 @@ void save_text_setting(const char* name, const std::string& text) {
     for (const auto& [n, v] : all) out << n << ' ' << v << '\n';
 }
 
+// The environment's (LC_ALL, LC_MESSAGES, LANG); essi_viewer --lang sets the language after this (not kept).
+Lang system_language() {
+    return lang_from_environment(std::getenv("LC_ALL"), std::getenv("LC_MESSAGES"), std::getenv("LANG"));
+}
+
+void show_language(Lang) {}
+
 }  // namespace essi::viewer::platform

@@ -8,7 +8,7 @@ namespace essi::viewer::platform {
 bool has_share_links() { return false; }
 
 void share(App& app, const std::string&, std::string_view, const std::string&) {
-    app.notify("Share links are made by the browser viewer (essi serve).");
+    app.notify(Msg::UiShareBrowserOnly);
 }
 
 }  // namespace essi::viewer::platform

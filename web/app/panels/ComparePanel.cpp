@@ -49,12 +49,12 @@ void compare_window(App& app) {
     ImGui::SetNextWindowPos(ImVec2(a.x + a.w - 8, a.y + 8), ImGuiCond_Appearing, ImVec2(1.f, 0.f));
     ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 16, 420.f), 0), ImGuiCond_Appearing);
     bool open = true;
-    ImGui::Begin("Compare", &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+    ImGui::Begin(tr_id(Msg::UiCompareTitle, "Compare").c_str(), &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
     const Document* doc = app.document();
     ImGui::TextWrapped("A: %s  B: %s", doc ? doc->name.c_str() : "-", c->name.c_str());
-    ImGui::TextColored(ImVec4(0.31f, 0.86f, 1, 1), "B's contours");
+    ImGui::TextColored(ImVec4(0.31f, 0.86f, 1, 1), "%s", tr(Msg::UiBContours));
     ImGui::SameLine();
-    ImGui::TextColored(ImVec4(1, 0.27f, 0.35f, 1), "A's that differ");
+    ImGui::TextColored(ImVec4(1, 0.27f, 0.35f, 1), "%s", tr(Msg::UiADiffer));
     ImGui::TextWrapped("%s", c->summary.c_str());
     ImGui::Separator();
     const std::size_t rows = c->diff.contours.size() - c->diff.count(ContourChange::Same);
@@ -68,7 +68,7 @@ void compare_window(App& app) {
             app.show_contour(static_cast<std::size_t>(d.a >= 0 ? d.a : d.b), d.a < 0);
         ImGui::PopID();
     }
-    if (row == 0) ImGui::TextColored(to_vec4(kOkColor), "They cut the same.");
+    if (row == 0) ImGui::TextColored(to_vec4(kOkColor), "%s", tr(Msg::UiSameCut));
     ImGui::EndChild();
     ImGui::End();
     if (!open) app.end_compare();

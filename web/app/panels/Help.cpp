@@ -7,41 +7,48 @@ namespace essi::viewer::panels {
 
 namespace {
 
-constexpr const char* kShortcuts[][2] = {
-    {"drag (left, right or middle)", "pan"},
-    {"mouse wheel", "zoom at the cursor"},
-    {"+ / -", "zoom in / out at the centre"},
-    {"F", "fit the whole tape"},
-    {"click a segment", "select it and show its source line"},
-    {"click a source line / diagnostic", "select its block and segment"},
-    {"Esc", "clear the selection / leave measure / close help"},
-    {"M", "measure: click two points (snaps to end points and arc centres)"},
-    {"Space", "play / pause the playback"},
-    {"Left / Right", "step the playback one motion"},
-    {"Home / End", "playback from the start / show everything"},
-    {"1 2 3 4", "toggle cut, travel+rapid, mark, pierces"},
-    {"[ / ]", "hide or show the left / right panel (drag a panel's inner edge to resize it)"},
-    {"touch", "tap: click; one finger: pan; two fingers: zoom"},
-    {"G", "toggle the grid"},
-    {"S", "share link (tape and view in the URL)"},
-    {"Ctrl+O", "open a tape"},
-    {"Ctrl+V", "paste a tape's text"},
-    {"drop a file", "load it"},
-    {"H, ? or F1", "this help"},
+// The key (a catalogue row, or a key's name that is the same in every language) and what it does.
+struct Shortcut {
+    Msg key;
+    const char* key_name;  // when key is None
+    Msg does;
+};
+constexpr Shortcut kShortcuts[] = {
+    {Msg::UiKeyDrag, nullptr, Msg::UiKeyDragDoes},
+    {Msg::UiKeyWheel, nullptr, Msg::UiKeyWheelDoes},
+    {Msg::None, "+ / -", Msg::UiKeyPlusMinusDoes},
+    {Msg::None, "F", Msg::UiKeyFitDoes},
+    {Msg::UiKeyClickSegment, nullptr, Msg::UiKeyClickSegmentDoes},
+    {Msg::UiKeyClickLine, nullptr, Msg::UiKeyClickLineDoes},
+    {Msg::None, "Esc", Msg::UiKeyEscDoes},
+    {Msg::None, "M", Msg::UiKeyMeasureDoes},
+    {Msg::UiKeySpace, nullptr, Msg::UiKeySpaceDoes},
+    {Msg::UiKeyLeftRight, nullptr, Msg::UiKeyLeftRightDoes},
+    {Msg::UiKeyHomeEnd, nullptr, Msg::UiKeyHomeEndDoes},
+    {Msg::None, "1 2 3 4", Msg::UiKeyLayersDoes},
+    {Msg::None, "[ / ]", Msg::UiKeyPanelsDoes},
+    {Msg::UiKeyTouch, nullptr, Msg::UiKeyTouchDoes},
+    {Msg::None, "G", Msg::UiKeyGridDoes},
+    {Msg::None, "S", Msg::UiKeyShareDoes},
+    {Msg::UiKeyCtrlO, nullptr, Msg::UiKeyCtrlODoes},
+    {Msg::UiKeyCtrlV, nullptr, Msg::UiKeyCtrlVDoes},
+    {Msg::UiKeyDrop, nullptr, Msg::UiKeyDropDoes},
+    {Msg::UiKeyHelp, nullptr, Msg::UiKeyHelpDoes},
 };
 
 void colours() {
-    ImGui::TextUnformatted("Colours:");
+    const Lang lang = ui_lang();
+    ImGui::TextUnformatted(tr(Msg::UiColours));
     for (MotionKind k : {MotionKind::Rapid, MotionKind::Travel, MotionKind::Cut, MotionKind::Mark}) {
         ImGui::SameLine();
-        ImGui::TextColored(opaque(kind_color(k)), "%s", motion_kind_name(k));
+        ImGui::TextColored(opaque(kind_color(k)), "%s", motion_kind_text(k, lang));
     }
     ImGui::SameLine();
-    ImGui::TextColored(opaque(marker_color(MarkerType::Pierce)), "pierce");
+    ImGui::TextColored(opaque(marker_color(MarkerType::Pierce)), "%s", tr(Msg::UiPierce));
     ImGui::SameLine();
-    ImGui::TextColored(opaque(marker_color(MarkerType::Start)), "start");
+    ImGui::TextColored(opaque(marker_color(MarkerType::Start)), "%s", tr(Msg::UiStart));
     ImGui::SameLine();
-    ImGui::TextColored(opaque(kSelectionColor), "selection");
+    ImGui::TextColored(opaque(kSelectionColor), "%s", tr(Msg::UiSelection));
 }
 
 }  // namespace
@@ -49,14 +56,14 @@ void colours() {
 void help(App& app) {
     const Rect& a = app.view().area;
     ImGui::SetNextWindowPos(ImVec2(a.x + a.w / 2, a.y + 40), ImGuiCond_Appearing, ImVec2(0.5f, 0));
-    ImGui::Begin("Help: shortcuts", &app.ui().help, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+    ImGui::Begin(tr_id(Msg::UiHelpTitle, "Help").c_str(), &app.ui().help, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
         for (const auto& r : kShortcuts) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextColored(to_vec4(kMessageColor), "%s", r[0]);
+            ImGui::TextColored(to_vec4(kMessageColor), "%s", r.key == Msg::None ? r.key_name : tr(r.key));
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(r[1]);
+            ImGui::TextUnformatted(tr(r.does));
         }
         ImGui::EndTable();
     }

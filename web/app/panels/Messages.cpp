@@ -22,8 +22,8 @@ void loading(const App& app, const Rect& a, ImVec2 centre, bool tape_drawn) {
     if (tape_drawn) ImGui::SetNextWindowPos(ImVec2(centre.x, a.y + 8), ImGuiCond_Always, ImVec2(0.5f, 0.f));
     else ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(420, 0));
-    ImGui::Begin("Loading", nullptr, kMessageFlags);
-    ImGui::Text("Loading %s (%s): %s", load.loading_name().c_str(), size_text(load.loading_bytes()).c_str(), load.stage());
+    ImGui::Begin("##loading", nullptr, kMessageFlags);
+    ImGui::TextWrapped("%s", tr(Msg::UiLoadingLine, {load.loading_name(), size_text(load.loading_bytes()), load.stage()}).c_str());
     ImGui::ProgressBar(stepped(load.progress()), ImVec2(-1, 0));
     ImGui::End();
 }
@@ -33,27 +33,26 @@ void loading(const App& app, const Rect& a, ImVec2 centre, bool tape_drawn) {
 void drawing(const App& app, const Rect& a, ImVec2 centre) {
     const LoadController& load = app.loads();
     ImGui::SetNextWindowPos(ImVec2(centre.x, a.y + 8), ImGuiCond_Always, ImVec2(0.5f, 0.f));
-    ImGui::Begin("Drawing", nullptr, kMessageFlags | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
+    ImGui::Begin("##drawing", nullptr, kMessageFlags | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
     if (load.remaking())
-        ImGui::Text("Drawing this view: making the segments for this zoom (%.0f %%)",
-                    100.0 * stepped(load.building()->progress()));
+        ImGui::TextUnformatted(tr(Msg::UiDrawingRemake, {fmt("%.0f", 100.0 * stepped(load.building()->progress()))}).c_str());
     else
-        ImGui::Text("Drawing this view: %.1f M segments to go", app.renderer().stats().pending_segments / 1e6);
+        ImGui::TextUnformatted(tr(Msg::UiDrawingPending, {fmt("%.1f", app.renderer().stats().pending_segments / 1e6)}).c_str());
     ImGui::End();
 }
 
 void welcome(App& app, ImVec2 centre) {
     ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::Begin("Welcome", nullptr, kMessageFlags | ImGuiWindowFlags_AlwaysAutoResize);
-    ImGui::TextUnformatted("essikit viewer: ESSI cutting tapes (ISO 6582)");
+    ImGui::Begin("##welcome", nullptr, kMessageFlags | ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::TextUnformatted(tr(Msg::UiWelcomeTitle));
     ImGui::Spacing();
-    ImGui::TextUnformatted("Drop a tape here, press Open..., or paste its text (Ctrl+V).");
-    ImGui::TextUnformatted("Nothing is uploaded: the tape is read in this page.");
-    ImGui::TextDisabled("Press H for the shortcuts.");
+    ImGui::TextUnformatted(tr(Msg::UiWelcomeDrop));
+    ImGui::TextUnformatted(tr(Msg::UiWelcomeLocal));
+    ImGui::TextDisabled("%s", tr(Msg::UiWelcomeHelp));
     const UiState& ui = app.ui();
     if (!ui.examples.empty()) {
         ImGui::Spacing();
-        ImGui::TextUnformatted("Examples on this server (one click opens one):");
+        ImGui::TextUnformatted(tr(Msg::UiWelcomeExamples));
         for (std::size_t k = 0; k < ui.examples.size(); ++k) {
             if (k % kExamplesPerRow != 0) ImGui::SameLine();
             if (ImGui::SmallButton(ui.examples[k].c_str())) platform::open_example(app, ui.examples[k]);
@@ -61,34 +60,34 @@ void welcome(App& app, ImVec2 centre) {
     }
     if (!ui.recent.empty()) {
         ImGui::Spacing();
-        ImGui::TextDisabled("Opened lately (drop or open them again):");
+        ImGui::TextDisabled("%s", tr(Msg::UiWelcomeRecent));
         for (const std::string& name : ui.recent) ImGui::BulletText("%s", name.c_str());
     }
-    if (!app.graphics_ok()) ImGui::TextColored(severity_color(Severity::Error), "Graphics error: %s", program_error());
+    if (!app.graphics_ok()) ImGui::TextColored(severity_color(Severity::Error), "%s", tr(Msg::UiGraphicsError, {program_error()}).c_str());
     ImGui::End();
 }
 
 void problem(const Document& doc, const std::string& banner, const Rect& a, ImVec2 centre) {
     ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 40, 520.f), 0));
-    ImGui::Begin("Problem", nullptr, kMessageFlags | ImGuiWindowFlags_NoFocusOnAppearing);
+    ImGui::Begin("##problem", nullptr, kMessageFlags | ImGuiWindowFlags_NoFocusOnAppearing);
     ImGui::PushStyleColor(ImGuiCol_Text, severity_color(Severity::Error));
     ImGui::TextWrapped("%s", banner.c_str());
     ImGui::PopStyleColor();
-    ImGui::TextWrapped("File: %s (%zu bytes). The diagnostics list on the left says what was found.", doc.name.c_str(),
-                       doc.bytes.size());
+    ImGui::TextWrapped("%s", tr(Msg::UiProblemFile, {doc.name, doc.bytes.size()}).c_str());
     ImGui::End();
 }
 
-void share_popup(UiState& ui, const Rect& a, ImVec2 centre) {
+void share_popup(App& app, const Rect& a, ImVec2 centre) {
+    UiState& ui = app.ui();
     ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 40, 560.f), 0));
-    ImGui::Begin("Share link", &ui.share_popup, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
-    const std::string& url = ui.share_url;
+    ImGui::Begin(tr_id(Msg::UiShareLink, "Share link").c_str(), &ui.share_popup, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+    const std::string url = app.share_text();  // (the link, or why there is none)
     ImGui::TextWrapped("%s", url.size() > kShareUrlShown ? (url.substr(0, kShareUrlShown) + " ...").c_str() : url.c_str());
-    if (ImGui::Button("Copy again")) platform::copy_text(url);
+    if (ImGui::Button(tr_id(Msg::UiCopyAgain, "copy again").c_str())) platform::copy_text(url);
     ImGui::SameLine();
-    if (ImGui::Button("Close")) ui.share_popup = false;
+    if (ImGui::Button(tr_id(Msg::UiClose, "close").c_str())) ui.share_popup = false;
     ImGui::End();
 }
 
@@ -97,13 +96,14 @@ void link_problem(UiState& ui, const Rect& a, ImVec2 centre) {
     ImGui::SetNextWindowPos(ImVec2(centre.x, a.y + 24), ImGuiCond_Appearing, ImVec2(0.5f, 0.f));
     ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 40, 560.f), 0));
     bool open = true;
-    ImGui::Begin("Share link problem", &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+    ImGui::Begin(tr_id(Msg::UiLinkProblemTitle, "Share link problem").c_str(), &open,
+                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
     ImGui::PushStyleColor(ImGuiCol_Text, severity_color(Severity::Error));
-    ImGui::TextWrapped("%s", ui.link_problem.c_str());
+    ImGui::TextWrapped("%s", ui.link_problem.text().c_str());
     ImGui::PopStyleColor();
-    ImGui::TextWrapped("Ask the sender for the whole link, or for the file.");
+    ImGui::TextWrapped("%s", tr(Msg::UiLinkAskSender));
     ImGui::End();
-    if (!open) ui.link_problem.clear();
+    if (!open) ui.link_problem = {};
 }
 
 }  // namespace
@@ -117,8 +117,8 @@ void messages(App& app) {
     if (load.loading()) loading(app, a, centre, app.tape_drawn());
     else if (doc && (app.renderer().filling() || load.remaking())) drawing(app, a, centre);
     else if (!doc) welcome(app, centre);
-    else if (!ui.banner.empty()) problem(*doc, ui.banner, a, centre);
-    if (ui.share_popup) share_popup(ui, a, centre);
+    else if (ui.banner != Msg::None) problem(*doc, app.banner_text(), a, centre);
+    if (ui.share_popup) share_popup(app, a, centre);
     if (!ui.link_problem.empty()) link_problem(ui, a, centre);
     compare_window(app);
 }

@@ -95,19 +95,19 @@ void selection_arrows(ImDrawList* dl, const Document& doc, const Selection& sel,
 void measure_window(const Measure& m, Point b, const Coordinates& cs, const Rect& a) {
     ImGui::SetNextWindowPos(ImVec2(a.x + 10, a.y + 10));
     ImGui::SetNextWindowBgAlpha(0.85f);
-    ImGui::Begin("Measure", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+    ImGui::Begin(tr_id(Msg::UiMeasureTitle, "Measure").c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                                          ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing);
     if (m.points == 0) {
-        ImGui::TextUnformatted("Click the first point (snaps to end points and arc centres).");
+        ImGui::TextUnformatted(tr(Msg::UiMeasureFirst));
     } else {
         const Point sa = cs.shown(m.a), sb = cs.shown(b);
         const double dx = sb.x - sa.x, dy = sb.y - sa.y;
         ImGui::Text("A (%.3f, %.3f)", sa.x, sa.y);
-        ImGui::Text("B (%.3f, %.3f)%s", sb.x, sb.y, m.points == 2 ? "" : "  (click to fix)");
-        ImGui::Text("distance %.3f mm", std::hypot(dx, dy));
-        ImGui::Text("dx %.3f mm   dy %.3f mm (%s coordinates)", dx, dy, cs.name());
+        ImGui::Text("B (%.3f, %.3f)%s%s", sb.x, sb.y, m.points == 2 ? "" : "  ", m.points == 2 ? "" : tr(Msg::UiMeasureClickToFix));
+        ImGui::TextUnformatted(tr(Msg::UiDistance, {fmt("%.3f", std::hypot(dx, dy))}).c_str());
+        ImGui::Text("dx %.3f mm   dy %.3f mm (%s)", dx, dy, tr(cs.machine() ? Msg::UiMachineCoordinates : Msg::UiProgramCoordinates));
     }
-    ImGui::TextDisabled("Esc or M: leave the measure mode");
+    ImGui::TextDisabled("%s", tr(Msg::UiMeasureLeave));
     ImGui::End();
 }
 
@@ -138,7 +138,7 @@ void table_and_plate(ImDrawList* dl, const Document& doc, const View& view, Poin
     ImVec2 pts[4];
     for (int k = 0; k < 4; ++k) pts[k] = screen(corners[k]);
     dl->AddPolyline(pts, 4, kTableColor, ImDrawFlags_Closed, 2.f);
-    dl->AddText(ImVec2(pts[3].x + 4, pts[3].y + 2), kTableColor, "table");
+    dl->AddText(ImVec2(pts[3].x + 4, pts[3].y + 2), kTableColor, tr(Msg::UiLayerTable));
     const Box& b = doc.stats.cut_bbox;
     if (b.empty) return;
     const ImVec2 plate[4] = {screen({b.min_x, b.min_y}), screen({b.max_x, b.min_y}), screen({b.max_x, b.max_y}),

@@ -6,6 +6,7 @@
 #include "app/App.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
+#include "essi/text_report.hpp"
 
 namespace essi::viewer::panels {
 
@@ -41,8 +42,8 @@ void source_line(App& app, const Document& d, std::uint32_t line, int digits) {
                           ImVec2(0, ImGui::GetTextLineHeight())))
         app.select_line(line);
     if (ImGui::BeginPopupContextItem("line menu")) {
-        if (ImGui::Selectable("Copy this line")) app.copy(App::CopyWhat::Line, line);
-        if (ImGui::Selectable("Copy what the inspector says")) {
+        if (ImGui::Selectable(tr(Msg::UiCopyThisLine))) app.copy(App::CopyWhat::Line, line);
+        if (ImGui::Selectable(tr(Msg::UiCopyInspector))) {
             app.select_line(line, false);
             app.copy(App::CopyWhat::Inspector);
         }
@@ -52,7 +53,7 @@ void source_line(App& app, const Document& d, std::uint32_t line, int digits) {
         ImGui::BeginTooltip();
         for (auto k = diags.begin; k != diags.end; ++k)
             ImGui::TextColored(severity_color(k->severity), "%s %u:%u %s", code_name(k->code).c_str(), k->line,
-                               k->column, k->message.c_str());
+                               k->column, diagnostic_message(*k, ui_lang()).c_str());
         ImGui::EndTooltip();
     }
     ImGui::SetCursorScreenPos(pos);
@@ -77,7 +78,7 @@ void source_line(App& app, const Document& d, std::uint32_t line, int digits) {
 void source(App& app) {
     const Document* doc = app.document();
     if (!doc) {
-        ImGui::TextDisabled("The tape's text appears here.");
+        ImGui::TextDisabled("%s", tr(Msg::UiSourceEmpty));
         return;
     }
     const Document& d = *doc;
@@ -105,20 +106,20 @@ void inspector(App& app) {
     const Document* doc = app.document();
     const std::uint32_t line = app.selection().line;
     if (!doc || line == 0) {
-        ImGui::TextDisabled("Click a segment or a source line to inspect its block.");
+        hint_wrapped(tr(Msg::UiInspectorEmpty));
         return;
     }
     const Document& d = *doc;
-    ImGui::Text("Line %u", line);
+    ImGui::TextUnformatted(tr(Msg::UiLineN, {line}).c_str());
     ImGui::SameLine();
-    if (ImGui::SmallButton("Copy")) app.copy(App::CopyWhat::Inspector);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Copy the line and what the inspector says of it");
+    if (ImGui::SmallButton(tr_id(Msg::UiCopy, "copy").c_str())) app.copy(App::CopyWhat::Inspector);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiCopyInspectorTip));
     ImGui::SameLine();
     ImGui::TextDisabled("%s", printable(d.line(line), 80).c_str());
     ImGui::Separator();
     // The blocks, the motions in their kind's colour, and where the torch goes (kerf compensation: the second
     // position of the line's motions).
-    const std::vector<Document::InspectorLine> lines = d.inspector_lines(line);
+    const std::vector<Document::InspectorLine> lines = d.inspector_lines(line, ui_lang());
     for (const Document::InspectorLine& l : lines) {
         using Of = Document::InspectorLine::Of;
         if (l.of != Of::Block)
@@ -126,12 +127,12 @@ void inspector(App& app) {
         ImGui::TextWrapped("%s", l.text.c_str());
         if (l.of != Of::Block) ImGui::PopStyleColor();
     }
-    if (lines.empty()) ImGui::TextDisabled("No block on this line (comment, empty line or part of a block).");
+    if (lines.empty()) hint_wrapped(tr(Msg::UiNoBlockOnLine));
     const LineDiagnostics diags = diagnostics_of(d, line);
     for (auto it = diags.begin; it != diags.end; ++it) {
         ImGui::PushStyleColor(ImGuiCol_Text, severity_color(it->severity));
-        ImGui::TextWrapped("%s %s: %s", std::string(severity_name(it->severity)).c_str(), code_name(it->code).c_str(),
-                           it->message.c_str());
+        ImGui::TextWrapped("%s %s: %s", std::string(essi::severity_text(it->severity, ui_lang())).c_str(), code_name(it->code).c_str(),
+                           diagnostic_message(*it, ui_lang()).c_str());
         ImGui::PopStyleColor();
     }
 }
@@ -139,7 +140,7 @@ void inspector(App& app) {
 }  // namespace
 
 void source_panel(App& app) {
-    if (!begin_side_panel(app, "Source", false)) return;
+    if (!begin_side_panel(app, tr_id(Msg::UiSourcePanel, "Source").c_str(), false)) return;
     // (the inspector a third of a short window at most: the source keeps its lines)
     const float inspector_h = std::min(kInspectorHeight, ImGui::GetWindowHeight() / 3);
     ImGui::BeginChild("source", ImVec2(0, -inspector_h), true, ImGuiWindowFlags_HorizontalScrollbar);

@@ -1,5 +1,13 @@
-// The toolbar: Open, Paste, Share, Fit, Measure, Help, the profile, the tape's name and verdict, the message.
+// The toolbar: Open, Paste, Share, Export, Fit, Measure, Help, the View (panels) menu, Compare, the profile, the
+// orientation, the coordinates, the language, the tape's name and verdict, the message. Items that do not fit in
+// the window's width (German is longer; a 1024 px screen) go, in their order, into the overflow menu (») at the end
+// of the bar, where they work as in the bar (docs/viewer.md, "Languages").
 #include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <array>
+#include <initializer_list>
+#include <vector>
 
 #include "app/App.hpp"
 #include "app/panels/Panels.hpp"
@@ -7,93 +15,130 @@
 #include "essi/dialect.hpp"
 #include "essi/profile.hpp"
 #include "platform/Platform.hpp"
+#include "render/UiFonts.hpp"
 
 namespace essi::viewer::panels {
 
 namespace {
 
-void open_button(App& app) {
-    if (ImGui::Button("Open...")) platform::open_file_dialog(app);
-    platform::open_button_at(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
-                             ImGui::GetItemRectSize().y);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Open a tape (Ctrl+O). You can also drop a file or paste text (Ctrl+V).");
+enum class Item { Open, Paste, Share, Export, Fit, Measure, Help, Panels, Compare, Profile, Orientation, Coordinates, Language, Verdict };
+struct ItemInfo {
+    Item item;
+    const char* id;  // in state().toolbar
+};
+constexpr ItemInfo kItems[] = {
+    {Item::Open, "open"},       {Item::Paste, "paste"},     {Item::Share, "share"},
+    {Item::Export, "export"},   {Item::Fit, "fit"},         {Item::Measure, "measure"},
+    {Item::Help, "help"},       {Item::Panels, "panels"},   {Item::Compare, "compare"},
+    {Item::Profile, "profile"}, {Item::Orientation, "orientation"}, {Item::Coordinates, "coordinates"},
+    {Item::Language, "language"}, {Item::Verdict, "verdict"},
+};
+constexpr const char* kMoreLabel = "\xC2\xBB###more";  // » (no words: its tooltip says what it is)
+
+constexpr std::array<Msg, 4> kOrientations = {Msg::UiOrientIso, Msg::UiOrientWoyda, Msg::UiOrientLeftDown,
+                                              Msg::UiOrientDownRight};
+constexpr std::array<Msg, 2> kCoordinates = {Msg::UiProgramCoordinates, Msg::UiMachineCoordinates};
+
+// Widths as ImGui will lay the widgets out (the label's text before "###").
+float text_width(const char* s) { return ImGui::CalcTextSize(s, nullptr, true).x; }
+float button_width(const std::string& label) { return text_width(label.c_str()) + ImGui::GetStyle().FramePadding.x * 2; }
+float checkbox_width(const std::string& label) {
+    return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + text_width(label.c_str());
+}
+// A combo as wide as its longest choice and its arrow.
+float combo_width(std::initializer_list<std::string_view> choices) {
+    float w = 0;
+    for (const std::string_view c : choices) w = std::max(w, ImGui::CalcTextSize(c.data(), c.data() + c.size()).x);
+    return w + ImGui::GetStyle().FramePadding.x * 2 + ImGui::GetFrameHeight();
 }
 
-void profile_combo(App& app) {
-    ImGui::SetNextItemWidth(110);
+void tooltip(Msg tip) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(tip));
+}
+
+std::string profile_shown(const App& app) {
     // "auto: woyda" while the tape's evidence chose the dialect
     const Document* doc = app.document();
-    const std::string shown = app.profile_name() == kAutoProfile && doc ? "auto: " + doc->profile.name : app.profile_name();
-    ImGui::SetNextItemWidth(140);
-    if (ImGui::BeginCombo("##profile", shown.c_str())) {
-        std::vector<std::string> names{std::string(kAutoProfile)};
-        for (const std::string& n : builtin_profile_names()) names.push_back(n);
-        if (app.dropped_profile()) names.push_back(app.dropped_profile()->name);  // (a profile file dropped on the page)
-        for (const std::string& n : names) {
-            if (ImGui::Selectable(n.c_str(), n == app.profile_name()) && n != app.profile_name()) app.set_profile(n);
+    return app.profile_name() == kAutoProfile && doc ? "auto: " + doc->profile.name : app.profile_name();
+}
+
+std::vector<std::string> profile_choices(const App& app) {
+    std::vector<std::string> names{std::string(kAutoProfile)};
+    for (const std::string& n : builtin_profile_names()) names.push_back(n);
+    if (app.dropped_profile()) names.push_back(app.dropped_profile()->name);  // (a profile file dropped on the page)
+    return names;
+}
+
+Msg compare_label(const App& app) {
+    return app.compare() ? Msg::UiEndCompare : app.compare_pending() ? Msg::UiCompareDropB : Msg::UiCompare;
+}
+
+// The tape's name and "ok" or its error and warning counts.
+std::string verdict_text(const Document& doc) {
+    const std::size_t e = doc.count(Severity::Error), w = doc.count(Severity::Warning);
+    if (e == 0 && w == 0) return tr(Msg::UiVerdictOk);
+    if (e == 0) return tr(Msg::UiVerdictWarnings, {w});
+    return tr(Msg::UiVerdictErrors, {e, w});
+}
+
+float item_width(App& app, Item item) {
+    switch (item) {
+        case Item::Open: return button_width(tr(Msg::UiOpen));
+        case Item::Paste: return button_width(tr(Msg::UiPaste));
+        case Item::Share: return button_width(tr(Msg::UiShareLink));
+        case Item::Export: return button_width(tr(Msg::UiExport));
+        case Item::Fit: return button_width(tr(Msg::UiFit));
+        case Item::Measure: return checkbox_width(tr(Msg::UiMeasure));
+        case Item::Help: return button_width(tr(Msg::UiHelp));
+        case Item::Panels: return button_width(tr(Msg::UiPanels));
+        case Item::Compare: return button_width(tr(compare_label(app)));
+        case Item::Profile: {
+            float w = combo_width({profile_shown(app)});
+            for (const std::string& n : profile_choices(app)) w = std::max(w, combo_width({n}));
+            return w;
         }
-        ImGui::EndCombo();
+        case Item::Orientation:
+            return combo_width({tr(kOrientations[0]), tr(kOrientations[1]), tr(kOrientations[2]), tr(kOrientations[3])});
+        case Item::Coordinates: return combo_width({tr(kCoordinates[0]), tr(kCoordinates[1])});
+        case Item::Language:
+            return combo_width({lang_native_name(Lang::En), lang_native_name(Lang::De), lang_native_name(Lang::Zh)});
+        case Item::Verdict: {
+            const Document* doc = app.document();
+            if (!doc) return 0;
+            return text_width(doc->name.c_str()) + ImGui::GetStyle().ItemSpacing.x + text_width(verdict_text(*doc).c_str());
+        }
     }
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Machine and dialect profile; auto: the dialect the tape's codes show (see the Tape panel); drop a profile file (.json) to add yours");
+    return 0;
 }
 
-// The machine's view orientation (View::turns): where the tape's +x points on the screen; kept across sessions.
-void orientation_combo(App& app) {
-    static constexpr const char* kNames[4] = {"x right, y up (ISO)", "x up, y left (Woyda)", "x left, y down",
-                                              "x down, y right"};
-    const int turns = app.view().turns;
-    ImGui::SetNextItemWidth(170);
-    if (ImGui::BeginCombo("##orientation", kNames[turns])) {
-        for (int q = 0; q < 4; ++q)
-            if (ImGui::Selectable(kNames[q], q == turns) && q != turns) app.set_orientation(q);
-        ImGui::EndCombo();
-    }
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("The machine's view: where the tape's x and y axes point on the screen (Woyda: x to the back, y left)");
-}
-
-// Program or machine coordinates (Coordinates): the numbers, the grid and the drawing's turn; kept across sessions.
-void coordinates_combo(App& app) {
-    static constexpr const char* kNames[2] = {"program coordinates", "machine coordinates"};
-    const int machine = app.machine_coordinates() ? 1 : 0;
-    ImGui::SetNextItemWidth(170);
-    if (ImGui::BeginCombo("##coordinates", kNames[machine])) {
-        for (int k = 0; k < 2; ++k)
-            if (ImGui::Selectable(kNames[k], k == machine) && k != machine) app.set_machine_coordinates(k == 1);
-        ImGui::EndCombo();
-    }
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Machine: the program placed on the table by the profile (zero offset, plate rotation); the grid, "
-                          "the measure and the labels in machine millimetres");
-}
-
-// Downloads: the tape as ESSI, EIA or G-code (essi convert) and its drawing as DXF.
+// Downloads: the tape as ESSI, EIA or G-code (essi convert), its drawing as DXF, its report, the view.
 void export_menu(App& app) {
-    if (ImGui::Button("Export...")) ImGui::OpenPopup("export");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Download the tape converted (ESSI, EIA, G-code for LinuxCNC) or drawn (DXF), or its report");
     if (!ImGui::BeginPopup("export")) return;
-    static constexpr std::pair<const char*, const char*> kFormats[] = {
-        {"ESSI (.esi)", "essi"}, {"EIA, RS-274 (.eia)", "eia"}, {"G-code for LinuxCNC (.ngc)", "gcode"}, {"DXF drawing (.dxf)", "dxf"},
-        {"Report as text (.txt)", "report-text"}, {"Report as JSON, essi check's (.json)", "report-json"},
-        {"Problems as CSV (.csv)", "report-csv"}, {"View as SVG (.svg)", "view-svg"}};
-    for (const auto& [label, format] : kFormats)
-        if (ImGui::Selectable(label)) app.export_file(format);
-    if (ImGui::Selectable("View as PNG (.png)")) app.export_view_png();
+    // (format names are no words: they stay as they are)
+    const std::pair<std::string, const char*> formats[] = {
+        {"ESSI (.esi)", "essi"},
+        {"EIA, RS-274 (.eia)", "eia"},
+        {tr(Msg::UiExportGcode), "gcode"},
+        {tr(Msg::UiExportDxf), "dxf"},
+        {tr(Msg::UiExportReportText), "report-text"},
+        {tr(Msg::UiExportReportJson), "report-json"},
+        {tr(Msg::UiExportProblemsCsv), "report-csv"},
+        {tr(Msg::UiExportViewSvg), "view-svg"}};
+    for (const auto& [label, format] : formats)
+        if (ImGui::Selectable(label.c_str())) app.export_file(format);
+    if (ImGui::Selectable(tr(Msg::UiExportViewPng))) app.export_view_png();
     ImGui::EndPopup();
 }
 
-// The side panels: shown or hidden ([ and ]), the widths back to their defaults.
-void layout_menu(App& app) {
-    if (ImGui::Button("Panels")) ImGui::OpenPopup("panels");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show or hide the side panels ([ and ]); drag a panel's inner edge to resize it");
+// The side panels: shown or hidden ([ and ]), the theme, the widths back to their defaults.
+void panels_menu(App& app) {
     if (!ImGui::BeginPopup("panels")) return;
     PanelLayout l = app.ui().layout;
-    bool changed = ImGui::Checkbox("Tape panel (left)  [", &l.left_shown);
-    changed |= ImGui::Checkbox("Source and inspector (right)  ]", &l.right_shown);
+    bool changed = ImGui::Checkbox((std::string(tr(Msg::UiPanelLeft)) + "  [###left").c_str(), &l.left_shown);
+    changed |= ImGui::Checkbox((std::string(tr(Msg::UiPanelRight)) + "  ]###right").c_str(), &l.right_shown);
     bool light = app.light_theme();
-    if (ImGui::Checkbox("Light theme", &light)) app.set_light_theme(light);
-    if (ImGui::Selectable("Default layout")) {
+    if (ImGui::Checkbox(tr_id(Msg::UiLightTheme, "light").c_str(), &light)) app.set_light_theme(light);
+    if (ImGui::Selectable(tr_id(Msg::UiDefaultLayout, "default").c_str())) {
         l = PanelLayout{};
         changed = true;
     }
@@ -101,59 +146,220 @@ void layout_menu(App& app) {
     ImGui::EndPopup();
 }
 
-// The tape's name and "ok" or its error and warning counts.
-void verdict(const Document& doc) {
-    const std::size_t e = doc.count(Severity::Error), w = doc.count(Severity::Warning);
-    ImGui::TextUnformatted(doc.name.c_str());
-    ImGui::SameLine();
-    if (e == 0 && w == 0) ImGui::TextColored(to_vec4(kOkColor), "ok");
-    else if (e == 0) ImGui::TextColored(severity_color(Severity::Warning), "ok, %zu warning%s", w, w == 1 ? "" : "s");
-    else ImGui::TextColored(severity_color(Severity::Error), "%zu error%s, %zu warning%s", e, e == 1 ? "" : "s", w, w == 1 ? "" : "s");
+// One item, in the bar or in the overflow menu (the same widgets). True when a button did what it does (the menu
+// closes then).
+bool draw_item(App& app, Item item, float width) {
+    switch (item) {
+        case Item::Open: {
+            const bool clicked = ImGui::Button(tr_id(Msg::UiOpen, "open").c_str());
+            if (clicked) platform::open_file_dialog(app);
+            // (the page opens the file picker in the click on this rectangle: FilesEmscripten.cpp)
+            platform::open_button_at(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                                     ImGui::GetItemRectSize().y);
+            tooltip(Msg::UiOpenTip);
+            return clicked;
+        }
+        case Item::Paste: {
+            const bool clicked = ImGui::Button(tr_id(Msg::UiPaste, "paste").c_str());
+            if (clicked) platform::paste(app);
+            tooltip(Msg::UiPasteTip);
+            return clicked;
+        }
+        case Item::Share: {
+            const bool clicked = ImGui::Button(tr_id(Msg::UiShareLink, "share").c_str());
+            if (clicked) app.share();
+            tooltip(Msg::UiShareTip);
+            return clicked;
+        }
+        case Item::Export:
+            if (ImGui::Button(tr_id(Msg::UiExport, "export").c_str())) ImGui::OpenPopup("export");
+            tooltip(Msg::UiExportTip);
+            export_menu(app);
+            return false;
+        case Item::Fit: {
+            const bool clicked = ImGui::Button(tr_id(Msg::UiFit, "fit").c_str());
+            if (clicked) app.fit();
+            tooltip(Msg::UiFitTip);
+            return clicked;
+        }
+        case Item::Measure: {
+            Measure& measure = app.input().measure;
+            const bool clicked = ImGui::Checkbox(tr_id(Msg::UiMeasure, "measure").c_str(), &measure.active);
+            if (clicked) measure.points = 0;
+            return clicked;
+        }
+        case Item::Help: {
+            const bool clicked = ImGui::Button(tr_id(Msg::UiHelp, "help").c_str());
+            if (clicked) app.ui().help = !app.ui().help;
+            return clicked;
+        }
+        case Item::Panels:
+            if (ImGui::Button(tr_id(Msg::UiPanels, "panels").c_str())) ImGui::OpenPopup("panels");
+            tooltip(Msg::UiPanelsTip);
+            panels_menu(app);
+            return false;
+        case Item::Compare: {
+            const bool clicked = ImGui::Button(tr_id(compare_label(app), "compare").c_str());
+            if (clicked) {
+                if (app.compare()) app.end_compare();
+                else app.begin_compare();
+            }
+            tooltip(Msg::UiCompareTip);
+            return clicked;
+        }
+        case Item::Profile: {
+            ImGui::SetNextItemWidth(width);
+            if (ImGui::BeginCombo("##profile", profile_shown(app).c_str())) {
+                for (const std::string& n : profile_choices(app))
+                    if (ImGui::Selectable(n.c_str(), n == app.profile_name()) && n != app.profile_name()) app.set_profile(n);
+                ImGui::EndCombo();
+            }
+            tooltip(Msg::UiProfileTip);
+            return false;
+        }
+        case Item::Orientation: {
+            // The machine's view orientation (View::turns): where the tape's +x points on the screen; kept.
+            const int turns = app.view().turns;
+            ImGui::SetNextItemWidth(width);
+            if (ImGui::BeginCombo("##orientation", tr(kOrientations[static_cast<std::size_t>(turns)]))) {
+                for (int q = 0; q < 4; ++q)
+                    if (ImGui::Selectable(tr(kOrientations[static_cast<std::size_t>(q)]), q == turns) && q != turns)
+                        app.set_orientation(q);
+                ImGui::EndCombo();
+            }
+            tooltip(Msg::UiOrientTip);
+            return false;
+        }
+        case Item::Coordinates: {
+            // Program or machine coordinates (Coordinates): the numbers, the grid and the drawing's turn; kept.
+            const int machine = app.machine_coordinates() ? 1 : 0;
+            ImGui::SetNextItemWidth(width);
+            if (ImGui::BeginCombo("##coordinates", tr(kCoordinates[static_cast<std::size_t>(machine)]))) {
+                for (int k = 0; k < 2; ++k)
+                    if (ImGui::Selectable(tr(kCoordinates[static_cast<std::size_t>(k)]), k == machine) && k != machine)
+                        app.set_machine_coordinates(k == 1);
+                ImGui::EndCombo();
+            }
+            tooltip(Msg::UiCoordinatesTip);
+            return false;
+        }
+        case Item::Language: {
+            // Each language by its own name; kept across sessions (App::set_language).
+            const Lang now = app.language();
+            ImGui::SetNextItemWidth(width);
+            if (ImGui::BeginCombo("##language", std::string(lang_native_name(now)).c_str())) {
+                for (const Lang l : kLanguages)
+                    if (ImGui::Selectable(std::string(lang_native_name(l)).c_str(), l == now) && l != now) app.set_language(l);
+                ImGui::EndCombo();
+            }
+            tooltip(Msg::UiLanguageTip);
+            return false;
+        }
+        case Item::Verdict: {
+            const Document* doc = app.document();
+            if (!doc) return false;
+            ImGui::TextUnformatted(doc->name.c_str());
+            ImGui::SameLine();
+            const std::size_t e = doc->count(Severity::Error), w = doc->count(Severity::Warning);
+            const ImVec4 colour = e > 0 ? severity_color(Severity::Error) : w > 0 ? severity_color(Severity::Warning) : to_vec4(kOkColor);
+            ImGui::TextColored(colour, "%s", verdict_text(*doc).c_str());
+            return false;
+        }
+    }
+    return false;
+}
+
+// Draws one item in a group and notes where it is (state().toolbar).
+bool placed_item(App& app, const ItemInfo& info, float width, bool in_menu) {
+    ImGui::BeginGroup();
+    const bool acted = draw_item(app, info.item, width);
+    ImGui::EndGroup();
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    app.ui().toolbar.push_back({info.id, Rect{a.x, a.y, b.x - a.x, b.y - a.y}, in_menu});
+    return acted;
+}
+
+// The message (App::notify): in the bar when it fits after the items (which end at `bar_end`), else over the top
+// of the drawing.
+void message(App& app, float bar_end, float right) {
+    const UiState& ui = app.ui();
+    if (ui.message.empty() || glfwGetTime() >= ui.message_until) return;
+    const std::string text = ui.message.text();
+    const float gap = ImGui::GetStyle().ItemSpacing.x * 2;
+    if (bar_end + gap + text_width(text.c_str()) <= right) {
+        ImGui::SameLine(0, gap);
+        ImGui::TextColored(to_vec4(kMessageColor), "%s", text.c_str());
+        return;
+    }
+    const Rect& area = app.view().area;
+    ImGui::SetNextWindowPos(ImVec2(area.x + area.w / 2, area.y + 8), ImGuiCond_Always, ImVec2(0.5f, 0.f));
+    ImGui::Begin("##toolbar message", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoFocusOnAppearing);
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + std::max(area.w - 60, 180.f));
+    ImGui::TextColored(to_vec4(kMessageColor), "%s", text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::End();
 }
 
 }  // namespace
 
 void toolbar(App& app) {
     ImGuiIO& io = ImGui::GetIO();
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ui_fonts().require_glyphs(lang_native_name(Lang::Zh));  // (the language switch names 中文 in every language)
     ImGui::SetNextWindowPos(ImVec2(0, 0));
     ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, kToolbarHeight));
     ImGui::Begin("##toolbar", nullptr, kPanelFlags | ImGuiWindowFlags_NoDecoration);
-    open_button(app);
-    ImGui::SameLine();
-    if (ImGui::Button("Paste")) platform::paste(app);
-    ImGui::SameLine();
-    if (ImGui::Button("Share link")) app.share();
-    ImGui::SameLine();
-    export_menu(app);
-    ImGui::SameLine();
-    if (ImGui::Button("Fit (F)")) app.fit();
-    ImGui::SameLine();
-    Measure& measure = app.input().measure;
-    if (ImGui::Checkbox("Measure (M)", &measure.active)) measure.points = 0;
-    ImGui::SameLine();
-    if (ImGui::Button("Help (H)")) app.ui().help = !app.ui().help;
-    ImGui::SameLine();
-    layout_menu(app);
-    ImGui::SameLine();
-    if (app.compare()) {
-        if (ImGui::Button("End compare")) app.end_compare();
-    } else if (ImGui::Button(app.compare_pending() ? "Compare: drop B" : "Compare...")) {
-        app.begin_compare();
+    UiState& ui = app.ui();
+    ui.toolbar.clear();
+    ui.toolbar_more = Rect{0, 0, 0, 0};
+
+    // How many items fit in the bar, in their order (with room for the overflow button when some do not).
+    std::vector<ItemInfo> items(std::begin(kItems), std::end(kItems));
+    if (!app.document()) std::erase_if(items, [](const ItemInfo& i) { return i.item == Item::Verdict; });
+    const std::size_t n = items.size();
+    std::vector<float> widths(n);
+    for (std::size_t k = 0; k < n; ++k) widths[k] = item_width(app, items[k].item);
+    const float right = io.DisplaySize.x - style.WindowPadding.x;
+    const float more_w = button_width(kMoreLabel);
+    const auto row_end = [&](std::size_t count) {  // where `count` items end
+        float x = style.WindowPadding.x;
+        for (std::size_t k = 0; k < count; ++k) x += widths[k] + (k > 0 ? style.ItemSpacing.x : 0);
+        return x;
+    };
+    std::size_t fit = n;
+    if (row_end(n) > right)
+        while (fit > 0 && row_end(fit) + (fit > 0 ? style.ItemSpacing.x : 0) + more_w > right) --fit;
+
+    float bar_end = style.WindowPadding.x;
+    for (std::size_t k = 0; k < fit; ++k) {
+        if (k > 0) ImGui::SameLine();
+        placed_item(app, items[k], widths[k], false);
+        bar_end = ImGui::GetItemRectMax().x;
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Compare this tape with another revision: drop or open it after this");
-    ImGui::SameLine();
-    profile_combo(app);
-    ImGui::SameLine();
-    orientation_combo(app);
-    ImGui::SameLine();
-    coordinates_combo(app);
-    ImGui::SameLine();
-    if (const Document* doc = app.document()) verdict(*doc);
-    const UiState& ui = app.ui();
-    if (!ui.message.empty() && glfwGetTime() < ui.message_until) {
-        ImGui::SameLine();
-        ImGui::TextColored(to_vec4(kMessageColor), "  %s", ui.message.c_str());
+    ui.toolbar_menu_open = false;
+    if (fit < n) {
+        if (fit > 0) ImGui::SameLine();
+        if (ImGui::Button(kMoreLabel)) ImGui::OpenPopup("more");
+        const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+        ui.toolbar_more = Rect{a.x, a.y, b.x - a.x, b.y - a.y};
+        bar_end = b.x;
+        tooltip(Msg::UiMoreTip);
+        const bool open = ImGui::BeginPopup("more");
+        for (std::size_t k = fit; k < n; ++k) {
+            if (!open) {
+                ui.toolbar.push_back({items[k].id, Rect{0, 0, 0, 0}, true});
+                continue;
+            }
+            if (placed_item(app, items[k], widths[k], true)) ImGui::CloseCurrentPopup();
+        }
+        if (open) {
+            ui.toolbar_menu_open = true;
+            ImGui::EndPopup();
+        }
     }
+    message(app, bar_end, right);
     ImGui::End();
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/App.hpp"
+#include "app/Language.hpp"
 #include "app/panels/Panels.hpp"
 
 namespace essi::viewer {
@@ -18,7 +19,7 @@ std::string hms(double seconds) {
 }
 
 std::string size_text(std::size_t bytes) {
-    if (bytes < 1024) return fmt("%zu bytes", bytes);
+    if (bytes < 1024) return tr(Msg::UiBytes, {bytes});
     if (bytes < 1024 * 1024) return fmt("%.1f KB", static_cast<double>(bytes) / 1024.0);
     return fmt("%.1f MB", static_cast<double>(bytes) / 1048576.0);
 }
@@ -35,6 +36,17 @@ std::string printable(std::string_view s, std::size_t max) {
 }
 
 float stepped(float progress) { return std::floor(progress * kProgressSteps) / kProgressSteps; }
+
+void same_line_if_fits(float width) {
+    const float x = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x;
+    if (x + width <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+}
+
+void hint_wrapped(const char* text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", text);
+    ImGui::PopStyleColor();
+}
 
 ImVec4 severity_color(Severity s) {
     switch (s) {

@@ -24,6 +24,11 @@ namespace essi::viewer {
 // (App::render); on a CPU renderer every frame drawn is time the browser's compositor takes from the work.
 [[nodiscard]] float stepped(float progress);
 
+// After an item: the next one, `width` wide, on the same line when it fits in the window's width, else below.
+void same_line_if_fits(float width);
+// Text in the disabled colour, wrapped at the window's edge (hints in a narrow panel, any language).
+void hint_wrapped(const char* text);
+
 [[nodiscard]] ImVec4 severity_color(Severity s);
 [[nodiscard]] inline ImVec4 to_vec4(const Rgba& c) { return ImVec4(c.r, c.g, c.b, c.a); }
 [[nodiscard]] inline ImVec4 opaque(const Rgba& c) { return ImVec4(c.r, c.g, c.b, 1); }
