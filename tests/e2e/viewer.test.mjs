@@ -398,6 +398,11 @@ test('essi serve serves the viewer and the examples', async (t) => {
     assert.match(await index.text(), /essi_viewer\.js/);
     const wasm = await fetch(new URL('essi_viewer.wasm', address));
     assert.equal(wasm.headers.get('content-type'), 'application/wasm');
+    // The CJK font, fetched by the page only when a text needs it (docs/viewer.md#fonts).
+    const cjk = await fetch(new URL('essi_cjk.ttc', address));
+    assert.equal(cjk.status, 200);
+    assert.equal(cjk.headers.get('content-type'), 'font/collection');
+    assert.ok((await cjk.arrayBuffer()).byteLength > 1e6);
     const list = await (await fetch(new URL('examples/index.json', address))).json();
     assert.ok(list.includes('plate_holes.esi'));
     const page = await browser.newPage({ viewport: { width: 1600, height: 900 } });
