@@ -822,7 +822,12 @@ test('languages: the panels in German and Chinese from the catalogue, the switch
   s = await page.evaluate(() => essikit.state());
   assert.equal(s.lang, 'zh');
   assert.match(s.inspector.join('\n'), /^切割直线，从 \(/m);
-  await page.waitForTimeout(1500);  // (the CJK font: fetched once, then the atlas is made again)
+  // the CJK font (fetched once), every character of the Chinese panels in the atlas, drawn
+  const fonts = await page.evaluate(() => essikit.requireGlyphs(''));
+  assert.equal(fonts.cjk, 'loaded', JSON.stringify(fonts));
+  assert.equal(fonts.missing, 0, JSON.stringify(fonts));
+  assert.ok(fonts.cjk_glyphs > 300, `only ${fonts.cjk_glyphs} Chinese glyphs for the panels`);
+  assert.ok(await page.evaluate((t) => essikit.hasGlyphs(t), s.inspector.join('') + s.message), 'the inspector\'s glyphs are missing');
   await nextFrames(page, 3);
   const zh = await page.screenshot({ path: path.join(shots, 'lang-zh.png') });
   for (const [name, other] of [['English', en], ['German', de]]) {
