@@ -178,7 +178,7 @@ void UiFonts::build(float ratio) {
     ratio_ = ratio;
     // A texel a device pixel: the font at its CSS size x the ratio, drawn at 1 / ratio (ImGui lays out in CSS
     // pixels; DisplayFramebufferScale draws them at the ratio). Whole pixels: no oversampling and advances snapped,
-    // so that glyphs start on pixel edges (the sharpest stb_truetype gives without hinting); below a ratio of 2
+    // so that glyphs start on pixel edges (the sharpest stb_truetype gives without hinting); below a ratio of 1.75
     // the glyphs are oversampled twice across instead (positions between pixels look smoother there).
     pixel_size_ = std::round(kCssPixels * ratio);
     const bool snap = ratio >= 1.75f;
@@ -198,11 +198,10 @@ void UiFonts::build(float ratio) {
         atlas.AddFontFromMemoryTTF(const_cast<unsigned char*>(fonts::kUiFontTtf), static_cast<int>(sizeof fonts::kUiFontTtf),
                                    pixel_size_, &main, main_ranges_.Data);
     } else {
-        ImFontConfig proggy;  // ImGui's 13 px bitmap font, scaled (no TTF in this build)
+        ImFontConfig proggy;  // ImGui's 13 px bitmap font, magnified at the ratio (no TTF in this build)
         proggy.SizePixels = 13;
         atlas.AddFontDefault(&proggy);
         pixel_size_ = 13;
-        ratio_ = 1;
     }
     if (fonts::kHaveUiFont && fonts::kHaveCjkSeed) {  // (中文: the language switch, on every page)
         ImFontConfig seed;
