@@ -1723,3 +1723,47 @@ test('fonts: Chinese text fetches the CJK font once, only its glyphs go into the
   }
   await ctx.close();
 });
+
+test('comments written in GB 18030 or UTF-8 are shown as written (detected per tape, overridable, the CJK font loaded)', async () => {
+  const ctx = await browser.newContext({ viewport: { width: 1600, height: 900 }, locale: 'en-US' });
+  const page = await ctx.newPage();
+  let fetches = 0;
+  page.on('request', (r) => { if (r.url().includes('essi_cjk.ttc')) ++fetches; });
+  await page.goto(baseUrl);
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 60000 });
+  await page.evaluate(() => essikit.setCommentEncoding('auto'));
+  // "零件 A1 切割" (part A1, cut) in a 3 ... 4 section, as a Chinese CAM system writes it: GBK bytes.
+  const comment = '零件 A1 切割';
+  const gbk = Buffer.from([0xC1, 0xE3, 0xBC, 0xFE, 0x20, 0x41, 0x31, 0x20, 0xC7, 0xD0, 0xB8, 0xEE]);
+  const tape = Buffer.concat([Buffer.from('3\n'), gbk, Buffer.from('\n4\n7\n+1000+0\n+0+1000\n8\n64\n')]);
+  let s = await dropFile(page, 'gbk_comment.esi', tape);
+  assert.deepEqual(s.comment_encoding, { detected: 'gb18030', chosen: 'auto', used: 'gb18030' });
+  assert.deepEqual(s.diagnostics, []);
+  await page.evaluate(() => essikit.selectLine(2));
+  await page.mouse.move(700, 450);
+  await nextFrames(page, 2);
+  s = await page.evaluate(() => essikit.state());
+  assert.equal(s.line_text, comment);
+  // The characters of the comment came from the CJK font, fetched once.
+  await page.waitForFunction(() => essikit.state().fonts.cjk === 'loaded', null, { timeout: 30000 });
+  assert.ok(await page.evaluate((t) => essikit.hasGlyphs(t), comment));
+  assert.equal(fetches, 1);
+  await page.screenshot({ path: path.join(shots, 'comment-gb18030.png') });
+  // Read as UTF-8 instead (the user's choice, kept): the bytes that are no UTF-8 are shown as \xNN.
+  await page.evaluate(() => essikit.setCommentEncoding('utf-8'));
+  await nextFrames(page, 2);
+  s = await page.evaluate(() => essikit.state());
+  assert.deepEqual(s.comment_encoding, { detected: 'gb18030', chosen: 'utf-8', used: 'utf-8' });
+  assert.ok(s.line_text.startsWith('\\xC1\\xE3'), s.line_text);
+  await page.reload();
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 60000 });
+  assert.equal((await page.evaluate(() => essikit.state())).comment_encoding.chosen, 'utf-8');
+  await page.evaluate(() => essikit.setCommentEncoding('auto'));
+  // The same comment written in UTF-8: detected as UTF-8, shown the same.
+  s = await dropFile(page, 'utf8_comment.esi', Buffer.from(`3\n${comment}\n4\n7\n+1000+0\n8\n64\n`));
+  assert.equal(s.comment_encoding.used, 'utf-8');
+  await page.evaluate(() => essikit.selectLine(2));
+  await nextFrames(page, 2);
+  assert.equal((await page.evaluate(() => essikit.state())).line_text, comment);
+  await ctx.close();
+});

@@ -108,6 +108,7 @@ bool App::init_graphics() {
     if (!io.Fonts->IsBuilt()) io.Fonts->Build();  // (ui_renderer_.init() makes the atlas unless the GPU refused it)
     io.IniFilename = nullptr;  // no imgui.ini: the layout is fixed
     set_light_theme(platform::load_setting(kThemeSetting).value_or(0) == 1);
+    chosen_encoding_ = parse_text_encoding(platform::load_text_setting(kTextEncodingSetting).value_or("auto"));
     return graphics_ok_;
 }
 
@@ -266,6 +267,8 @@ void App::document_loaded() {
     // The name first among the recent ones (names only: the tapes themselves are not kept).
     const std::string name = display_text(d.name);
     fonts_.require_glyphs(name);  // (a Chinese file name: the CJK font)
+    detected_encoding_ = detect_text_encoding(d.bytes);
+    require_comment_glyphs(d);
     std::erase(ui_.recent, name);
     ui_.recent.insert(ui_.recent.begin(), name);
     if (ui_.recent.size() > kRecentNames) ui_.recent.resize(kRecentNames);
@@ -277,6 +280,43 @@ void App::document_loaded() {
     apply_pending_view(d);
     playback_.position = static_cast<double>(d.motions.size());
     load_.begin_drawing(desired_tolerance(), view_.zoom, framebuffer_scale());
+}
+
+// The glyphs of the tape's text beyond ASCII (Chinese comments: the CJK font), from the lines that have such
+// bytes (at most kMaxLineBytes of each), up to kMaxGlyphText bytes of text.
+void App::require_comment_glyphs(const Document& d) {
+    constexpr std::size_t kMaxGlyphText = 256 * 1024, kMaxLineBytes = 4096;
+    std::string text;
+    for (std::size_t at = 0; text.size() < kMaxGlyphText;) {
+        const auto high = std::find_if(d.bytes.begin() + static_cast<std::ptrdiff_t>(at), d.bytes.end(),
+                                       [](char c) { return static_cast<unsigned char>(c) >= 0x80; });
+        if (high == d.bytes.end()) break;
+        const std::size_t i = static_cast<std::size_t>(high - d.bytes.begin());
+        const std::size_t before = d.bytes.find_last_of("\r\n", i);
+        const std::size_t begin = before == std::string::npos ? 0 : before + 1;
+        std::size_t end = d.bytes.find_first_of("\r\n", i);
+        if (end == std::string::npos) end = d.bytes.size();
+        text += decode_text(std::string_view(d.bytes).substr(begin, std::min(end - begin, kMaxLineBytes)), text_encoding());
+        at = end;
+    }
+    if (!text.empty()) fonts_.require_glyphs(text);
+}
+
+void App::set_text_encoding(std::optional<TextEncoding> chosen) {
+    chosen_encoding_ = chosen;
+    platform::save_text_setting(kTextEncodingSetting, chosen ? std::string(text_encoding_name(*chosen)) : "auto");
+    if (const Document* d = document()) require_comment_glyphs(*d);
+}
+
+std::string App::line_text(const Document& d, std::size_t line, std::size_t max) const {
+    const std::string_view bytes = d.line(line);
+    const std::string_view shown = bytes.substr(0, max);
+    const bool ascii = std::all_of(shown.begin(), shown.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; });
+    if (ascii) return printable(bytes, max);
+    std::string text = decode_text(shown, text_encoding());
+    std::replace(text.begin(), text.end(), '\t', ' ');
+    if (bytes.size() > max) text += " ...";
+    return text;
 }
 
 void App::apply_pending_view(const Document& d) {

@@ -25,6 +25,7 @@
 #include "app/panels/Panels.hpp"
 #include "essi/report_json.hpp"
 #include "essi/share_link.hpp"
+#include "essi/text_encoding.hpp"
 #include "render/Renderer.hpp"
 #include "render/UiFonts.hpp"
 #include "render/UiRenderer.hpp"
@@ -111,6 +112,15 @@ public:
     void set_light_theme(bool light);
     [[nodiscard]] bool light_theme() const { return renderer_.theme().light; }
     static constexpr const char* kThemeSetting = "theme";
+    // The text of comments (3 ... 4 sections, EIA "( )"): UTF-8 or GB 18030, detected per tape
+    // (essi::detect_text_encoding) unless the user chose one (kept across sessions; nullopt: detect).
+    void set_text_encoding(std::optional<TextEncoding> chosen);
+    [[nodiscard]] std::optional<TextEncoding> chosen_text_encoding() const { return chosen_encoding_; }
+    [[nodiscard]] TextEncoding detected_text_encoding() const { return detected_encoding_; }
+    [[nodiscard]] TextEncoding text_encoding() const { return chosen_encoding_.value_or(detected_encoding_); }
+    // A source line as the panels show it: decoded in the text encoding (at most `max` bytes of it).
+    [[nodiscard]] std::string line_text(const Document& d, std::size_t line, std::size_t max = 400) const;
+    static constexpr const char* kTextEncodingSetting = "comment_encoding";
     // The side panels shown or hidden, their widths (0: as they are); kept across sessions.
     void set_layout(const panels::PanelLayout& layout);
     static constexpr std::size_t kRecentNames = 8;
@@ -204,6 +214,9 @@ private:
 
     GLFWwindow* window_ = nullptr;
     UiFonts fonts_;
+    std::optional<TextEncoding> chosen_encoding_;
+    TextEncoding detected_encoding_ = TextEncoding::Utf8;
+    void require_comment_glyphs(const Document& d);
     bool fonts_changed_ = false;  // the atlas was made again after the last frame: the next one is drawn in full
     Renderer renderer_;
     UiRenderer ui_renderer_;

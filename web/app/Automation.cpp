@@ -208,6 +208,10 @@ std::string App::state_json() const {
     }
     j["compare_pending"] = compare_next_;
     j["theme"] = light_theme() ? "light" : "dark";
+    j["comment_encoding"] = {{"detected", text_encoding_name(detected_encoding_)},
+                             {"chosen", chosen_encoding_ ? std::string(text_encoding_name(*chosen_encoding_)) : "auto"},
+                             {"used", text_encoding_name(text_encoding())}};
+    if (const Document* d = document(); d && selection_.line > 0) j["line_text"] = line_text(*d, selection_.line);
     // The panels' font atlas (render/UiFonts.hpp): its font size in device pixels, the ratio it was made for, its
     // glyphs (of them from the CJK font), characters no font has, and the CJK font's state.
     const UiFonts::Counts fc = fonts_.counts();

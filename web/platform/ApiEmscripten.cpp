@@ -211,6 +211,11 @@ EMSCRIPTEN_KEEPALIVE void essi_export_png() {
     if (App* app = App::instance()) app->export_view_png();
 }
 
+// The comments' text encoding: "utf-8", "gb18030" (or "gbk"), anything else detects it (kept across sessions).
+EMSCRIPTEN_KEEPALIVE void essi_set_comment_encoding(const char* name) {
+    if (App* app = App::instance()) app->set_text_encoding(essi::parse_text_encoding(name ? name : ""));
+}
+
 // The theme: 1 light, 0 dark (kept across sessions).
 EMSCRIPTEN_KEEPALIVE void essi_set_theme(int light) {
     if (App* app = App::instance()) app->set_light_theme(light != 0);

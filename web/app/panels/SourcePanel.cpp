@@ -67,7 +67,7 @@ void source_line(App& app, const Document& d, std::uint32_t line, int digits) {
     for (int k = static_cast<int>(number.size()); k < digits; ++k) number.insert(0, "\xE2\x80\x87");
     ImGui::TextColored(diags.any() ? worst : to_vec4(kLineNumberColor), " %s ", number.c_str());
     ImGui::SameLine(0, 4);
-    const std::string text = printable(d.line(line));
+    const std::string text = app.line_text(d, line);
     ImGui::TextUnformatted(text.c_str());
     if (diags.any()) {
         ImGui::SameLine(0, 12);
@@ -115,7 +115,7 @@ void inspector(App& app) {
     if (ImGui::SmallButton(tr_id(Msg::UiCopy, "copy").c_str())) app.copy(App::CopyWhat::Inspector);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiCopyInspectorTip));
     ImGui::SameLine();
-    ImGui::TextDisabled("%s", printable(d.line(line), 80).c_str());
+    ImGui::TextDisabled("%s", app.line_text(d, line, 80).c_str());
     ImGui::Separator();
     // The blocks, the motions in their kind's colour, and where the torch goes (kerf compensation: the second
     // position of the line's motions).

@@ -53,6 +53,22 @@ void stats_table(const Document& doc) {
     ImGui::EndTable();
 }
 
+// The text encoding of the comments: detected (auto), or UTF-8 / GB 18030 as the user chooses.
+void comment_encoding(App& app) {
+    const std::optional<TextEncoding> chosen = app.chosen_text_encoding();
+    const std::string detected(text_encoding_name(app.detected_text_encoding()));
+    const std::string auto_label = tr(Msg::UiEncodingAuto, {detected == "gb18030" ? "GB 18030" : "UTF-8"});
+    const char* current = !chosen ? auto_label.c_str() : *chosen == TextEncoding::Gb18030 ? "GB 18030" : "UTF-8";
+    ImGui::TextUnformatted(tr(Msg::UiComments));
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize(auto_label.c_str()).x + ImGui::GetFrameHeight() * 2);
+    if (!ImGui::BeginCombo("##comment_encoding", current)) return;
+    if (ImGui::Selectable(auto_label.c_str(), !chosen)) app.set_text_encoding(std::nullopt);
+    if (ImGui::Selectable("UTF-8", chosen == TextEncoding::Utf8)) app.set_text_encoding(TextEncoding::Utf8);
+    if (ImGui::Selectable("GB 18030", chosen == TextEncoding::Gb18030)) app.set_text_encoding(TextEncoding::Gb18030);
+    ImGui::EndCombo();
+}
+
 // How the tape is read: its format, its dialect and why (the evidence of --profile auto), and one click to read it
 // with another dialect.
 void reading(App& app) {
@@ -79,6 +95,7 @@ void reading(App& app) {
         same_line_if_fits(ImGui::CalcTextSize("auto").x + ImGui::GetStyle().FramePadding.x * 2);
         if (ImGui::SmallButton("auto")) app.set_profile(std::string(kAutoProfile));
     }
+    comment_encoding(app);
 }
 
 void statistics(const App& app) {
