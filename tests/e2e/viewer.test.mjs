@@ -1667,13 +1667,19 @@ test('fonts: the first load in English is under 2 MB and does not fetch the CJK 
   await ctx.close();
 });
 
-test('fonts: Chinese text fetches the CJK font once, only its glyphs go into the atlas, and they are drawn', async () => {
+// A fresh page in English that counts its requests of the CJK font.
+async function englishPageCountingCjkFetches() {
   const ctx = await browser.newContext({ viewport: { width: 1600, height: 900 }, locale: 'en-US' });
   const page = await ctx.newPage();
   let fetches = 0;
   page.on('request', (r) => { if (r.url().includes('essi_cjk.ttc')) ++fetches; });
   await page.goto(baseUrl);
   await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 60000 });
+  return { ctx, page, cjkFetches: () => fetches };
+}
+
+test('fonts: Chinese text fetches the CJK font once, only its glyphs go into the atlas, and they are drawn', async () => {
+  const { ctx, page, cjkFetches } = await englishPageCountingCjkFetches();
   const text = fs.readFileSync(path.join(examplesDir, 'plate_holes.esi'), 'utf8');
   await page.evaluate((t) => essikit.load('abcde.esi', t), text);
   await page.mouse.move(700, 450);
@@ -1685,14 +1691,14 @@ test('fonts: Chinese text fetches the CJK font once, only its glyphs go into the
   assert.equal(f.missing, 0);
   assert.equal(f.glyphs, before.glyphs + 5);
   assert.ok(await page.evaluate(() => essikit.hasGlyphs('切割程序块')));
-  assert.equal(fetches, 1);
+  assert.equal(cjkFetches(), 1);
   // The same characters again: nothing to do; new ones: the atlas grows, the font is not fetched again.
   const same = await page.evaluate(() => essikit.requireGlyphs('程序块切割'));
   assert.equal(same.builds, f.builds);
   const more = await page.evaluate(() => essikit.requireGlyphs('已打开'));
   assert.equal(more.cjk_glyphs, 8);
   assert.equal(more.builds, f.builds + 1);
-  assert.equal(fetches, 1, 'the CJK font was fetched again');
+  assert.equal(cjkFetches(), 1, 'the CJK font was fetched again');
   // Drawn: the tape's name in the toolbar, 切割程序块.esi beside abcde.esi: where they differ, five glyphs of ink.
   const band = { x: 0, y: 0, width: 1600, height: 38 };
   await nextFrames(page, 3);
@@ -1725,12 +1731,7 @@ test('fonts: Chinese text fetches the CJK font once, only its glyphs go into the
 });
 
 test('comments written in GB 18030 or UTF-8 are shown as written (detected per tape, overridable, the CJK font loaded)', async () => {
-  const ctx = await browser.newContext({ viewport: { width: 1600, height: 900 }, locale: 'en-US' });
-  const page = await ctx.newPage();
-  let fetches = 0;
-  page.on('request', (r) => { if (r.url().includes('essi_cjk.ttc')) ++fetches; });
-  await page.goto(baseUrl);
-  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 60000 });
+  const { ctx, page, cjkFetches } = await englishPageCountingCjkFetches();
   await page.evaluate(() => essikit.setCommentEncoding('auto'));
   // "零件 A1 切割" (part A1, cut) in a 3 ... 4 section, as a Chinese CAM system writes it: GBK bytes.
   const comment = '零件 A1 切割';
@@ -1747,7 +1748,7 @@ test('comments written in GB 18030 or UTF-8 are shown as written (detected per t
   // The characters of the comment came from the CJK font, fetched once.
   await page.waitForFunction(() => essikit.state().fonts.cjk === 'loaded', null, { timeout: 30000 });
   assert.ok(await page.evaluate((t) => essikit.hasGlyphs(t), comment));
-  assert.equal(fetches, 1);
+  assert.equal(cjkFetches(), 1);
   await page.screenshot({ path: path.join(shots, 'comment-gb18030.png') });
   // Read as UTF-8 instead (the user's choice, kept): the bytes that are no UTF-8 are shown as \xNN.
   await page.evaluate(() => essikit.setCommentEncoding('utf-8'));
