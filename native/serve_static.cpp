@@ -66,13 +66,30 @@ void send_index(const fs::path& path, httplib::Response& res) {
     res.set_content(std::move(html), "text/html; charset=utf-8");
 }
 
-void send_viewer_file(const StaticFiles& files, const std::string& name, httplib::Response& res) {
+// Whether the client takes a gzip-encoded body (Accept-Encoding lists gzip without q=0).
+bool accepts_gzip(const httplib::Request& req) {
+    const std::string accepted = req.get_header_value("Accept-Encoding");
+    const std::size_t at = accepted.find("gzip");
+    return at != std::string::npos && accepted.compare(at + 4, 4, ";q=0") != 0;
+}
+
+void send_viewer_file(const StaticFiles& files, const std::string& name, const httplib::Request& req,
+                      httplib::Response& res) {
     const auto it = std::find_if(std::begin(kViewerFiles), std::end(kViewerFiles), [&](const Served& s) { return name == s.name; });
     if (it == std::end(kViewerFiles)) return not_found(res);
     fs::path path = fs::path(files.web_root) / name;
     std::error_code ec;
     if (name == "share_store.js" && !fs::exists(path, ec) && !files.share_store_js.empty()) path = files.share_store_js;
     if (name == "index.html") return send_index(path, res);
+    // The program's gzip twin (made by the build, web/CMakeLists.txt: 40 % of its size) for clients that take it.
+    if (name == "essi_viewer.wasm") {
+        res.set_header("Vary", "Accept-Encoding");
+        const fs::path gz = path.string() + ".gz";
+        if (accepts_gzip(req) && fs::is_regular_file(gz, ec)) {
+            res.set_header("Content-Encoding", "gzip");
+            return send_file(gz, it->type, res);
+        }
+    }
     send_file(path, it->type, res);
 }
 
@@ -91,9 +108,11 @@ std::vector<std::string> example_names(const std::string& dir) {
 }  // namespace
 
 void add_static_routes(httplib::Server& server, const StaticFiles& files) {
-    server.Get("/", [files](const httplib::Request&, httplib::Response& res) { send_viewer_file(files, "index.html", res); });
+    server.Get("/", [files](const httplib::Request& req, httplib::Response& res) {
+        send_viewer_file(files, "index.html", req, res);
+    });
     server.Get(R"(/([A-Za-z0-9_.-]+))", [files](const httplib::Request& req, httplib::Response& res) {
-        send_viewer_file(files, req.matches[1], res);
+        send_viewer_file(files, req.matches[1], req, res);
     });
     server.Get("/examples/index.json", [files](const httplib::Request&, httplib::Response& res) {
         res.set_content(nlohmann::json(example_names(files.examples_dir)).dump(), "application/json");

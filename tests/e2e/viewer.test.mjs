@@ -406,9 +406,17 @@ test('essi serve serves the viewer and the examples', async (t) => {
     const list = await (await fetch(new URL('examples/index.json', address))).json();
     assert.ok(list.includes('plate_holes.esi'));
     const page = await browser.newPage({ viewport: { width: 1600, height: 900 } });
+    // The program comes gzip-encoded (its twin made by the build: 40 % of the bytes on the wire).
+    const wasmResponse = new Promise((resolve) => page.on('response', (r) => {
+      if (r.url().endsWith('/essi_viewer.wasm')) resolve(r);
+    }));
     await page.goto(address);
     await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 30000 });
     await page.evaluate(() => essikit.ready);
+    const served = await wasmResponse;
+    assert.equal(served.headers()['content-encoding'], 'gzip');
+    assert.ok(Number(served.headers()['content-length']) < 0.5 * fs.statSync(path.join(webRoot, 'essi_viewer.wasm')).size,
+              `the wasm sent in ${served.headers()['content-length']} bytes`);
     // The start screen offers the server's examples; one click (the button's path) opens one.
     await page.waitForFunction(() => essikit.state().examples.length > 0, null, { timeout: 10000 });
     assert.deepEqual((await page.evaluate(() => essikit.state())).examples, list);

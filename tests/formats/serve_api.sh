@@ -27,6 +27,7 @@ expect() {
 mkdir -p "$tmp/web" "$tmp/examples" "$tmp/outside"
 echo '<!doctype html><title>stand-in viewer</title>' > "$tmp/web/index.html"
 echo 'not really wasm' > "$tmp/web/essi_viewer.wasm"
+gzip -9 -n -k "$tmp/web/essi_viewer.wasm"  # (its gzip twin, as the build makes it)
 cp "$root/examples/absolute_offset.esi" "$tmp/examples/"
 echo 'SECRET-OUTSIDE' > "$tmp/outside/secret.txt"
 echo 'SECRET-OUTSIDE' > "$tmp/secret.txt"
@@ -52,6 +53,15 @@ expect "viewer index" 200 'stand-in viewer' -- "$url/"
 expect "example tape" 200 '^' -- "$url/examples/absolute_offset.esi"
 expect "example list" 200 '\["absolute_offset.esi"\]' -- "$url/examples/index.json"
 expect "missing file is a JSON 404" 404 '"error"' -- "$url/nothere.js"
+# The program: gzip-encoded (its twin) for a client that takes gzip, as it is for one that does not.
+headers="$(curl -sS -D - -o "$tmp/wasm.gz" -H 'Accept-Encoding: gzip, deflate, br' "$url/essi_viewer.wasm")"
+if grep -qi '^content-encoding: gzip' <<<"$headers" && [ "$(gunzip -c "$tmp/wasm.gz")" = 'not really wasm' ] &&
+   grep -qi '^vary: accept-encoding' <<<"$headers"; then pass "essi_viewer.wasm gzip-encoded for gzip clients"
+else fail "essi_viewer.wasm with Accept-Encoding: gzip: $headers"; fi
+headers="$(curl -sS -D - -o "$tmp/wasm" "$url/essi_viewer.wasm")"
+if ! grep -qi '^content-encoding' <<<"$headers" && [ "$(cat "$tmp/wasm")" = 'not really wasm' ]; then
+  pass "essi_viewer.wasm as it is without Accept-Encoding"
+else fail "essi_viewer.wasm without Accept-Encoding: $headers"; fi
 # Paths that try to leave the served folders: never the file's content.
 for p in '/../secret.txt' '/%2e%2e/secret.txt' '/%2E%2E/%2e%2e/secret.txt' '/examples/../../secret.txt' \
          '/examples/..%2f..%2fsecret.txt' '/examples/%2e%2e/%2e%2e/outside/secret.txt' '/..%5csecret.txt' \
