@@ -1254,6 +1254,71 @@ test('a share link of a megabyte or two is made and opens (no 4 MB cap, the link
   await page.close();
 });
 
+// Issue 14: most real tapes are small. One under 1 MB is read, checked, its drawing made and uploaded when it is
+// handed over, and the first frame after that draws all of it (no progress bar, no slices, no image filled over
+// frames): state().load counts it in the viewer's frames. A bigger one is loaded in slices with the progress bar, as
+// before. (No timing here: `make bench` measures it.)
+test('a tape under 1 MB is drawn complete in the first frame after the drop; a 2 MB tape shows the progress bar', async () => {
+  const page = await newPage();
+  await page.mouse.move(5, 890);  // (no hover over the drawing)
+  for (const [url, name] of [['/examples/plate_holes.esi', 'plate_holes.esi'], ['/gen/' + generatedTape(0.14), generatedTape(0.14)]]) {
+    await dropFromUrl(page, url, name);
+    await page.waitForFunction((n) => { const s = essikit.state(); return s.name === n && s.load.complete_frame > 0; }, name, { timeout: 60000 });
+    const png = await page.screenshot({ path: path.join(shots, `at-once-${name.replace(/\.esi$/, '')}.png`) });
+    const s = await page.evaluate(() => essikit.state());
+    const { load } = s;
+    console.log(`${name}: ${s.motions} motions, ${s.segments} segments; load ${JSON.stringify(load)}`);
+    assert.equal(s.status, 'ready');
+    assert.ok(load.at_once, `${name} was not loaded at once`);
+    // Handed over between two frames, complete before the next one began; that one drew all of it.
+    assert.equal(load.drawable_frame, load.handed_frame, `${name}: a frame began between the hand-over and the drawing's completion`);
+    assert.equal(load.frames_to_show, 1, `${name}: shown ${load.frames_to_show} frames after it was handed over`);
+    assert.equal(load.shown_frame, load.handed_frame + 1);
+    assert.equal(load.complete_frame, load.shown_frame, `${name}: the first frame that showed it did not draw every segment`);
+    assert.equal(load.steps, 1, `${name}: loaded in ${load.steps} slices`);
+    assert.equal(load.progress_frames, 0, `${name}: ${load.progress_frames} frames showed the progress bar`);
+    // On the screen right after: the cut colour where cuts are.
+    const at = await pixels(page, png);
+    const [ax, ay, aw, ah] = s.view.area;
+    let cut = 0;
+    for (let y = ay + 4; y < ay + ah - 4; y += 3) for (let x = ax + 4; x < ax + aw - 4; x += 3) if (near(at(x, y), CUT_RGB)) ++cut;
+    assert.ok(cut >= 20, `${name}: ${cut} sampled pixels in the cut colour`);
+    if (name === 'plate_holes.esi') {
+      const motions = await page.evaluate((n) => Array.from({ length: n }, (_, i) => essikit.motion(i)), s.motions);
+      let checked = 0;
+      for (const m of motions.filter((x) => x.kind === 'cut' && x.curve === 'line' && x.length_mm > 50)) {
+        const p = await page.evaluate(([x, y]) => essikit.project(x, y), m.mid);
+        const around = [];
+        for (let dy = -1; dy <= 1; ++dy) for (let dx = -1; dx <= 1; ++dx) around.push(at(p.x + dx, p.y + dy));
+        assert.ok(around.some((c) => near(c, CUT_RGB)), `no cut colour at (${p.x}, ${p.y}): ${JSON.stringify(around)}`);
+        ++checked;
+      }
+      assert.ok(checked >= 3);
+    }
+  }
+
+  // 2.1 MB (about 150 000 motions): in slices, the progress bar over several frames.
+  const big = generatedTape(2.1);
+  await page.evaluate(() => {
+    window.__seen = [];
+    const tick = () => { const s = essikit.state(); window.__seen.push([s.status, s.progress]); if (s.load.complete_frame === 0 || s.status === 'loading') requestAnimationFrame(tick); };
+    window.__startWatch = () => requestAnimationFrame(tick);
+  });
+  await dropFromUrl(page, '/gen/' + big, big);
+  await page.evaluate(() => window.__startWatch());
+  await page.waitForFunction((n) => { const s = essikit.state(); return s.name === n && s.status === 'ready' && s.load.complete_frame > 0; }, big,
+                             { timeout: 120000 });
+  const { load } = await page.evaluate(() => essikit.state());
+  const loading = (await page.evaluate(() => window.__seen)).filter(([st, p]) => st === 'loading' && typeof p === 'number');
+  console.log(`${big}: load ${JSON.stringify(load)}, ${loading.length} animation frames saw it loading`);
+  assert.equal(load.at_once, false);
+  assert.ok(load.progress_frames >= 2, `the 2.1 MB tape showed the progress bar in ${load.progress_frames} frames`);
+  assert.ok(loading.length >= 1 && loading[0][1] < 1, 'no animation frame saw the 2.1 MB tape loading');
+  assert.ok(load.steps >= 2, `the 2.1 MB tape was loaded in ${load.steps} slices`);
+  assert.ok(load.frames_to_show >= 2, `the 2.1 MB tape was shown ${load.frames_to_show} frames after it was handed over`);
+  await page.close();
+});
+
 test('a 50 MB tape loads with a moving progress bar while the page keeps drawing', async () => {
   const name = generatedTape(50);
   const page = await newPage();

@@ -241,6 +241,11 @@ void App::read(std::string name, std::string bytes, std::optional<ViewRequest> v
     pending_view_ = view;
     playback_.stop();
     input_.measure.points = 0;
+    // A tape loaded at once (LoadController::kAtOnceBytes) handed over between frames (a drop, the page's API) is
+    // read, checked and its drawing made and uploaded here, so the next frame shows it. Inside a frame (the
+    // panels may hold the document this replaces) or before the first one (no drawing area to fit the view to
+    // yet), the next frame's step_loading does it before anything is drawn.
+    if (load_.at_once() && !in_frame_ && frames_ > 0) step_loading();
 }
 
 void App::set_profile(const std::string& name) {
@@ -356,6 +361,8 @@ void App::frame() {
         platform::save_text_setting(kLayoutSetting, layout_setting(ui_.layout));
     }
     view_.area = panels::drawing_area(io.DisplaySize.x, io.DisplaySize.y, ui_.layout);
+    load_.begin_frame(++frames_);
+    in_frame_ = true;
     step_loading();
     view_.plate = coordinates().plate();
     if (const Document* d = document(); d && playback_.playing) {
@@ -371,7 +378,9 @@ void App::frame() {
     const auto [fb_w, fb_h] = framebuffer_size();
     const SceneInputs in{view_,     fb_w,      fb_h,       framebuffer_scale(), panels::panel_color(renderer_.theme().background),
                          layers_,   playback_, selection_, load_,           coordinates().shown(origin())};
-    if (scene_.prepare(in, renderer_, graphics_ok_)) load_.note_drawn(scene_.tape_drawn());
+    const bool prepared = scene_.prepare(in, renderer_, graphics_ok_);
+    load_.note_frame(prepared && scene_.tape_drawn());
+    in_frame_ = false;
 }
 
 void App::draw_panels() {
@@ -388,6 +397,7 @@ void App::render(bool keep_unchanged) {
     const auto [fb_w, fb_h] = framebuffer_size();
     const bool png = png_pending_ && document();
     scene_.render(renderer_, ui_renderer_, fb_w, fb_h, keep_unchanged && !png && !fonts_changed_);
+    load_.note_rendered(scene_.tape_drawn(), renderer_.filling());
     // Between frames: the atlas at the screen's pixel ratio, with the glyphs asked for (UiFonts); the next frame
     // draws with it.
     fonts_.require_language(ui_lang());

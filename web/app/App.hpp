@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -86,6 +87,8 @@ public:
     [[nodiscard]] bool has_background_work() const { return load_.has_work(); }
     // One slice (about LoadController::kStepBudgetMs) of that work outside a frame; returns has_background_work().
     bool background_step();
+    // Frames begun so far (state().frame; the frame numbers of state().load, LoadController::LoadFrames).
+    [[nodiscard]] std::uint64_t frames() const { return frames_; }
 
     // --- Actions (the panels, the shortcuts, the platform and window.essikit) ---
     // Starts loading a tape (bytes as read from the file). `view`, when given, replaces the fit at the end.
@@ -230,6 +233,8 @@ private:
     std::unique_ptr<Compare> compare_;         // compare mode: the other revision and the differences
     bool compare_next_ = false;                // the next tape opened is the other revision
     bool png_pending_ = false;                 // the view is saved as PNG after the next frame is drawn
+    std::uint64_t frames_ = 0;                 // frames begun (frame())
+    bool in_frame_ = false;                    // inside frame(): the panels may hold the document
     bool use_profile_file(const std::string& name, const std::string& bytes);
     void read(std::string name, std::string bytes, std::optional<ViewRequest> view);  // with the profile and format chosen
     void use_link_profile(const ShareLink& link);

@@ -153,6 +153,18 @@ std::string App::state_json() const {
     // Work left after "ready" too: the finer level of detail of a big tape, a rebuild at another tolerance.
     j["busy"] = has_background_work();
     j["shown_seconds"] = load_.shown_seconds();
+    // Frames begun so far, and how the last load went in those frame numbers (LoadController::LoadFrames): a tape
+    // loaded at once (under 1 MB) handed over after frame N is drawable before frame N + 1 and shown by it.
+    j["frame"] = frames_;
+    const LoadController::LoadFrames& lf = load_.load_frames();
+    j["load"] = {{"at_once", lf.at_once},
+                 {"handed_frame", lf.handed},
+                 {"drawable_frame", lf.drawable},
+                 {"shown_frame", lf.shown},
+                 {"complete_frame", lf.complete},
+                 {"frames_to_show", lf.shown > 0 ? lf.shown - lf.handed : 0},
+                 {"steps", lf.steps},
+                 {"progress_frames", lf.progress_frames}};
     j["name"] = doc ? doc->name : (load_.reading() ? load_.loading_name() : "");
     j["profile"] = profile_name_;  // as asked: a built-in name or "auto"
     if (doc) {  // how the tape is read (as `essi check --format json` says it)

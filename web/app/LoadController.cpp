@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace essi::viewer {
 
@@ -21,37 +22,49 @@ constexpr double kLodRefineRatio = 1.5;
 // (zoomed in past 2x), or finer than the wanted one divided by kRebuildFiner (zoomed out 16x: fewer segments).
 constexpr double kRebuildCoarser = 2;
 constexpr double kRebuildFiner = 16;
+constexpr double kNoLimit = std::numeric_limits<double>::infinity();  // a load at once: no slice budget
 
 }  // namespace
 
 void LoadController::start(std::string name, std::string bytes, TapeSetup setup) {
     loading_name_ = name;
     loading_bytes_ = bytes.size();
+    frames_ = LoadFrames{};
+    frames_.at_once = bytes.size() < kAtOnceBytes;
+    frames_.handed = frame_;
+    awaiting_shown_ = false;
     loader_ = std::make_unique<DocumentLoader>(std::move(name), std::move(bytes), std::move(setup));
     frames_since_start_ = 0;
     started_ = glfwGetTime();
 }
 
 bool LoadController::step() {
+    const bool at_once = frames_.at_once;
     if (loader_) {
-        // First frame: only show the progress bar; then about kStepBudgetMs of work per frame.
-        if (frames_since_start_++ == 0) return false;
-        if (!loader_->step(kStepBudgetMs)) return false;
+        // Sliced: the first frame only shows the progress bar; then about kStepBudgetMs of work per slice. At once:
+        // all of it now (begin_drawing makes the whole drawing too).
+        if (!at_once && frames_since_start_++ == 0) return false;
+        ++frames_.steps;
+        if (!loader_->step(at_once ? kNoLimit : kStepBudgetMs)) return false;
         doc_ = loader_->take();
         loader_.reset();
         return true;
     }
-    const double until = glfwGetTime() + kStepBudgetMs / 1000.0;
-    // A big tape's level of detail goes first (one pass over the motions, arcs at a chord of a quarter cell), with
-    // the cells the view needs: the fitted view shows the tape from it while the exact segments are made. The
-    // finer one (LodRaster::cells_for, for zooms between the fit and the segments) is made after them; a rebuild
-    // at another tolerance goes before it.
+    if (loading()) ++frames_.steps;
+    build(glfwGetTime() + kStepBudgetMs / 1000.0);
+    return false;
+}
+
+// A big tape's level of detail goes first (one pass over the motions, arcs at a chord of a quarter cell), with the
+// cells the view needs: the fitted view shows the tape from it while the exact segments are made. The finer one
+// (LodRaster::cells_for, for zooms between the fit and the segments) is made after them; a rebuild at another
+// tolerance goes before it.
+void LoadController::build(double until) {
     if (lod_building_ && (first_build_ || !building_)) {
         step_overview(until);
-        if (lod_building_) return false;
+        if (lod_building_) return;
     }
     if (building_) step_segments(until);
-    return false;
 }
 
 void LoadController::step_overview(double until) {
@@ -87,6 +100,7 @@ void LoadController::segments_done() {
     if (!first_build_) return;
     first_build_ = false;
     load_seconds_ = glfwGetTime() - started_;
+    frames_.drawable = frame_;
     if (lod_cells_ > 0 && lod_cells_ < lod_full_cells_) {
         lod_.begin(*doc_, lod_full_cells_);
         lod_cells_ = lod_full_cells_;
@@ -110,8 +124,11 @@ void LoadController::begin_drawing(double tolerance, double zoom, double framebu
     if (d.motions.size() >= kLodMinMotions && !d.bbox.empty) begin_overview(zoom, framebuffer_scale);
     first_build_ = true;
     shown_seconds_ = 0;
-    // Small tapes: build at once so the first frame after loading shows the drawing.
-    if (d.motions.size() <= kBuildMotionsPerFrame) (void)step();
+    awaiting_shown_ = true;
+    // A load at once: the whole drawing now (the level of detail, every segment made and uploaded). Other tapes
+    // up to kBuildMotionsPerFrame motions: a slice of it now, so the next frame often shows the drawing.
+    if (frames_.at_once) build(kNoLimit);
+    else if (d.motions.size() <= kBuildMotionsPerFrame) build(glfwGetTime() + kStepBudgetMs / 1000.0);
 }
 
 // First the cells the view needs (a cell at most a pixel, as the renderer draws it), when that is well below what
@@ -135,12 +152,20 @@ void LoadController::maybe_rebuild(double tolerance) {
         renderer_.release(gpu_building_);
         building_ = std::make_unique<PathBuffers>();
         building_->begin(*doc_, tolerance);
-        if (doc_->motions.size() <= kBuildMotionsPerFrame) (void)step();
+        if (doc_->motions.size() <= kBuildMotionsPerFrame) build(glfwGetTime() + kStepBudgetMs / 1000.0);
     }
 }
 
-void LoadController::note_drawn(bool drawn) {
-    if (drawn && shown_seconds_ == 0) shown_seconds_ = glfwGetTime() - started_;
+void LoadController::note_frame(bool drawn) {
+    if (loading() && !at_once()) ++frames_.progress_frames;  // (the panels show no progress bar for a load at once)
+    if (!drawn || !awaiting_shown_) return;
+    awaiting_shown_ = false;
+    frames_.shown = frame_;
+    shown_seconds_ = glfwGetTime() - started_;
+}
+
+void LoadController::note_rendered(bool drawn, bool filling) {
+    if (drawn && !filling && frames_.shown != 0 && frames_.complete == 0 && !loading()) frames_.complete = frame_;
 }
 
 LoadController::Phase LoadController::phase() const {

@@ -2,10 +2,12 @@
 // — a big tape's level of detail first (with the cells the view needs), then its segments, uploaded as they are
 // made, then the finer level of detail — and makes the segments again when the zoom moves far enough from the
 // chord tolerance they were made at. Every slice takes about kStepBudgetMs; the document is not drawn until its
-// segments are complete.
+// segments are complete. A tape under kAtOnceBytes is loaded at once instead: read, checked and its drawing made
+// and uploaded in one step, so the first frame after it was handed over shows it (no progress bar).
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -19,6 +21,9 @@ namespace essi::viewer {
 class LoadController {
 public:
     static constexpr double kStepBudgetMs = 30;  // work per frame while loading (the page keeps drawing)
+    // Tapes under this many bytes are loaded at once (at_once()): most real tapes; about 70 000 motions of the
+    // generated nest tape, whose whole load takes a few tens of ms in the browser.
+    static constexpr std::size_t kAtOnceBytes = 1000000;
 
     // Where the work of a load is (what the progress bar says).
     enum class Phase {
@@ -31,18 +36,41 @@ public:
     explicit LoadController(Renderer& renderer) : renderer_(renderer) {}
     void set_graphics(bool ok) { graphics_ok_ = ok; }
 
-    // Starts reading a tape (the document before it stays drawn until this one is read).
+    // How the last load went, in the caller's frame numbers (begin_frame), for state().load: a tape handed over
+    // between frames N and N + 1 and loaded at once is drawable before frame N + 1 begins and shown by it.
+    struct LoadFrames {
+        bool at_once = false;         // loaded at once (kAtOnceBytes), not in slices
+        std::uint64_t handed = 0;     // frames begun when the tape was handed over (start())
+        std::uint64_t drawable = 0;   // frames begun when its drawing was complete (read, checked, segments on the GPU)
+        std::uint64_t shown = 0;      // the first frame that drew it (its segments or its level of detail); 0: none yet
+        std::uint64_t complete = 0;   // the first frame that drew it complete: loaded, no segment left to draw
+        std::uint64_t steps = 0;      // slices of work (in frames and between them) until its drawing was complete
+        std::uint64_t progress_frames = 0;  // frames that showed its progress bar
+    };
+
+    // Frame `frame` (the caller's count of frames begun) begins: the numbers of LoadFrames.
+    void begin_frame(std::uint64_t frame) { frame_ = frame; }
+    // Starts reading a tape (the document before it stays drawn until this one is read). A tape under kAtOnceBytes
+    // is loaded whole by the next step() (the caller's, outside a frame's panels: it replaces the document).
     void start(std::string name, std::string bytes, TapeSetup setup);
-    // One slice of work. True when a new document has just been read: the caller sets the view, then calls
-    // begin_drawing().
+    // One slice of work (a load at once: all of it). True when a new document has just been read: the caller sets
+    // the view, then calls begin_drawing() (which, for a load at once, makes and uploads the whole drawing).
     [[nodiscard]] bool step();
     // Makes the new document's drawing at `tolerance` mm; the view's zoom (px/mm, once fitted or as requested) and
     // the framebuffer scale size its first level of detail.
     void begin_drawing(double tolerance, double zoom, double framebuffer_scale);
     // The segments again at `tolerance` when the drawn ones are too coarse (zoomed in 2x) or too fine (out 16x).
     void maybe_rebuild(double tolerance);
-    // The last frame drew the tape: the first such frame after a load gives shown_seconds().
-    void note_drawn(bool drawn);
+    // This frame's scene (before it is drawn): whether it draws the tape (the first such frame after a load gives
+    // shown_seconds()); a frame while loading shows the progress bar.
+    void note_frame(bool drawn);
+    // This frame was drawn: `drawn` the tape, `filling` its image still has segments to draw (Renderer::filling).
+    void note_rendered(bool drawn, bool filling);
+    [[nodiscard]] const LoadFrames& load_frames() const { return frames_; }
+    // The load in progress is one at once: the caller's next step() finishes it.
+    [[nodiscard]] bool at_once() const { return loader_ != nullptr && frames_.at_once; }
+    // A load at once not yet drawn complete: its first frame draws the whole image (no fill over frames).
+    [[nodiscard]] bool draw_whole() const { return frames_.at_once && frames_.complete == 0 && doc_ && !loading(); }
 
     [[nodiscard]] Phase phase() const;
     [[nodiscard]] bool loading() const { return phase() != Phase::Idle; }  // reading, or the first drawing
@@ -51,7 +79,7 @@ public:
     // Loading or building work left to do (the browser loop also runs slices of it between frames).
     [[nodiscard]] bool has_work() const { return loader_ != nullptr || lod_building_ || building_ != nullptr; }
     // The slice may run outside a frame (not before the first frame of a load has shown the progress bar).
-    [[nodiscard]] bool may_step_outside_frame() const { return !(loader_ && frames_since_start_ == 0); }
+    [[nodiscard]] bool may_step_outside_frame() const { return !(loader_ && !frames_.at_once && frames_since_start_ == 0); }
     // The segments are being made again at a new zoom's tolerance (not the load's first build), over the overview.
     [[nodiscard]] bool remaking() const { return building_ != nullptr && !first_build_ && renderer_.has_lod(); }
     [[nodiscard]] bool first_build() const { return first_build_; }
@@ -76,6 +104,7 @@ private:
     void step_segments(double until);
     void segments_done();
     void begin_overview(double zoom, double framebuffer_scale);
+    void build(double until);  // the drawing's work until `until` (glfwGetTime; infinity: all of it)
 
     Renderer& renderer_;
     bool graphics_ok_ = false;
@@ -88,6 +117,9 @@ private:
     double started_ = 0;
     double load_seconds_ = 0;
     double shown_seconds_ = 0;      // from the start of the load to the first frame that drew the tape
+    LoadFrames frames_;
+    std::uint64_t frame_ = 0;       // frames begun (begin_frame)
+    bool awaiting_shown_ = false;   // begin_drawing ran and no frame has drawn the new document yet
 
     // The document and its drawing
     std::unique_ptr<Document> doc_;

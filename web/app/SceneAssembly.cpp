@@ -102,6 +102,8 @@ bool SceneAssembly::prepare(const SceneInputs& in, const Renderer& renderer, boo
     const Document* doc = in.load.document();
     const GpuPath* path = in.load.drawn_path();
     tape_drawn_ = doc && (o.lod || path != nullptr);
+    // The first frame of a tape loaded at once shows all of it (under 1 MB: at most about half a million segments).
+    whole_ = in.load.draw_whole();
     scene_ = SceneFrame{view, in.fb_w, in.fb_h, o, in.layers.grid ? grid_step(view.zoom) : kNoGrid,
                         in.grid_origin, path, path ? path->version : 0};
     return true;
@@ -116,7 +118,8 @@ void SceneAssembly::render(Renderer& renderer, UiRenderer& ui, int fb_w, int fb_
     }
     if (scene_) {
         const SceneFrame& s = *scene_;
-        renderer.draw(s.view, s.fb_w, s.fb_h, s.options, s.grid_step, s.grid_origin, s.path);
+        renderer.draw(s.view, s.fb_w, s.fb_h, s.options, s.grid_step, s.grid_origin, s.path,
+                      whole_ ? Renderer::kWholeImage : Renderer::kSegmentsPerFrame);
     }
     ui.draw(data, fb_w, fb_h);
     last_scene_ = scene_;

@@ -57,6 +57,7 @@ private:
     static void add_playback_and_selection(const SceneInputs& in, DrawOptions& o);
 
     std::optional<SceneFrame> scene_;       // this frame's (none: nothing to draw)
+    bool whole_ = false;                    // its image is drawn whole, not filled over frames (a load at once)
     std::optional<SceneFrame> last_scene_;  // the last frame drawn
     std::uint64_t last_ui_hash_ = 0;
     std::uint64_t skipped_frames_ = 0;      // frames that drew nothing (the same pixels as the last)

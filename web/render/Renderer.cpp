@@ -431,7 +431,7 @@ void Renderer::update_image(const Frame& f) {
         glClear(GL_COLOR_BUFFER_BIT);
         const Target& w = f.window;
         const Target t{w.cx, w.cy, w.zoom, w.ox - cache_left_, w.oy - cache_top_, cache_w_, cache_h_, s, w.rot};
-        cache_limit_ = draw_scene(f, t, 0, true, kSegmentsPerFrame);
+        cache_limit_ = draw_scene(f, t, 0, true, f.fill_budget);
         cache_valid_ = true;
         ++stats_.full_redraws;
     } else if (f.limit > cache_limit_ && !f.lod) {
@@ -444,7 +444,7 @@ void Renderer::update_image(const Frame& f) {
                          static_cast<float>(view.ox() * s) - cache_left_, static_cast<float>(view.oy() * s) - cache_top_,
                          cache_w_, cache_h_, s, f.window.rot};
         const bool filling = cache_markers_pending_;
-        cache_limit_ = draw_scene(f, own, cache_limit_, false, kSegmentsPerFrame);
+        cache_limit_ = draw_scene(f, own, cache_limit_, false, f.fill_budget);
         ++(filling ? stats_.filling_frames : stats_.partial_redraws);
     } else {
         ++stats_.cached_frames;
@@ -474,7 +474,7 @@ void Renderer::blit_image(const Frame& f) {
 }
 
 void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, double grid_step, Point world_origin,
-                    const GpuPath* path) {
+                    const GpuPath* path, std::size_t fill_budget) {
     ++stats_.frames;
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -490,7 +490,8 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
     const float aw = view.area.w * s, ah = view.area.h * s;
     const Frame f{view, fb_w, fb_h, o, grid_step, world_origin, path, s, window, std::min(count, o.segment_limit),
                   o.layer_mask & kAllPathMask, o.lod && lod_levels_ > 0, view.area.x * s, view.area.y * s, aw, ah,
-                  static_cast<int>(std::ceil(aw * kCacheMarginShare)), static_cast<int>(std::ceil(ah * kCacheMarginShare))};
+                  static_cast<int>(std::ceil(aw * kCacheMarginShare)), static_cast<int>(std::ceil(ah * kCacheMarginShare)),
+                  fill_budget};
     const int cw = static_cast<int>(std::ceil(aw)) + 2 * f.mx, ch = static_cast<int>(std::ceil(ah)) + 2 * f.my;
     if (cw > 0 && ch > 0 && ensure_cache(cw, ch)) {
         update_image(f);

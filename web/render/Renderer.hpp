@@ -75,6 +75,7 @@ public:
     // zoomed-in view of a big tape fills its image over several frames instead of freezing the page (the
     // pan, the zoom and the panels go on meanwhile; what is drawn so far shows).
     static constexpr std::size_t kSegmentsPerFrame = 150000;
+    static constexpr std::size_t kWholeImage = ~std::size_t(0);  // draw()'s fill budget: the whole image at once
     static constexpr float kCullMarginPx = 8;  // a group's box meets the view when it is this close (line widths)
 
     bool init();  // compiles the programs and finds their uniforms; false (program_error()) when the GPU refuses them
@@ -95,8 +96,9 @@ public:
     [[nodiscard]] int lod_level(double zoom_px_per_mm) const;
     static constexpr double kLodMaxCellPx = 1.0;
     // `grid_origin`: the document origin in the shown coordinates (the grid lies along their axes, View::plate).
+    // `fill_budget`: segments drawn into the image this frame at most (kWholeImage: all of them).
     void draw(const View& view, int fb_w, int fb_h, const DrawOptions& options, double grid_step_mm, Point grid_origin,
-              const GpuPath* path);
+              const GpuPath* path, std::size_t fill_budget = kSegmentsPerFrame);
 
     [[nodiscard]] const RenderStats& stats() const { return stats_; }
     // The image is still being filled: the next frames must be drawn even when nothing changed.
@@ -125,6 +127,7 @@ private:
         bool lod;                  // the raster instead of the segments
         float ax, ay, aw, ah;      // the drawing area in framebuffer pixels (top-left origin)
         int mx, my;                // the image's margin on each side
+        std::size_t fill_budget;   // segments drawn into the image at most (kSegmentsPerFrame, kWholeImage)
     };
     // The state the cached image was drawn for (a pan is not part of it).
     struct SceneKey {

@@ -114,8 +114,10 @@ void messages(App& app) {
     const Document* doc = app.document();
     const LoadController& load = app.loads();
     UiState& ui = app.ui();
-    if (load.loading()) loading(app, a, centre, app.tape_drawn());
-    else if (doc && (app.renderer().filling() || load.remaking())) drawing(app, a, centre);
+    if (load.loading()) {
+        // (a tape loaded at once has none: it is read and drawn before the next frame's panels)
+        if (!load.at_once()) loading(app, a, centre, app.tape_drawn());
+    } else if (doc && (app.renderer().filling() || load.remaking())) drawing(app, a, centre);
     else if (!doc) welcome(app, centre);
     else if (ui.banner != Msg::None) problem(*doc, app.banner_text(), a, centre);
     if (ui.share_popup) share_popup(app, a, centre);
