@@ -442,7 +442,7 @@ int run_diff(const std::vector<std::string>& paths, const std::string& format, c
     const essi::TapeContours cb = essi::tape_contours(b->file.bytes, b->setup);
     const essi::TapeDiff d = essi::diff_contours(ca.contours, cb.contours);
     const essi::DiffSide sa{paths[0], &ca}, sb{paths[1], &cb};
-    out(format == "json" ? essi::diff_json(sa, sb, d) : essi::diff_text(sa, sb, d));
+    out(format == "json" ? essi::diff_json(sa, sb, d) : essi::diff_text(sa, sb, d, g_lang));
     return finish(d.same() ? kExitOk : kExitTapeErrors);
 }
 

@@ -73,43 +73,44 @@ void for_each_line(std::string_view bytes, F&& f) {
     for_each_line_of(bytes.substr(tail), kTailLine, f);
 }
 
-// One sign of a dialect: an ESSI block ("/", "135+", "43") or an EIA word ("G05", "M70"), what it means.
+// One sign of a dialect: an ESSI block ("/", "135+", "43") or an EIA word ("G05", "M70"), what it means (a row of
+// core/i18n/messages/dialect.def).
 struct Sign {
     std::string_view token;
     std::string_view dialect;
-    std::string_view meaning;
+    Msg meaning;
 };
 
 // ESSI: a function code alone ("43"), with a value ("135+"), or a mark ("/").
 constexpr std::array kEssiSigns = {
-    Sign{"/", "woyda", "ends the program"},
-    Sign{"135+", "woyda", "sets the burner count"},
-    Sign{"136+", "woyda", "sets the burner spacing"},
-    Sign{"43", "woyda", "cutting oxygen off (Woyda)"},
-    Sign{"62", "woyda", "program zero (Woyda)"},
-    Sign{"66", "woyda", "repeat start (Woyda)"},
-    Sign{"11+", "hypertherm", "selects a marker offset (Hypertherm)"},
-    Sign{"12+", "hypertherm", "cancels a marker offset (Hypertherm)"},
+    Sign{"/", "woyda", Msg::EvidenceEndsProgram},
+    Sign{"135+", "woyda", Msg::EvidenceBurnerCount},
+    Sign{"136+", "woyda", Msg::EvidenceBurnerSpacing},
+    Sign{"43", "woyda", Msg::EvidenceWoydaOxygenOff},
+    Sign{"62", "woyda", Msg::EvidenceWoydaProgramZero},
+    Sign{"66", "woyda", Msg::EvidenceWoydaRepeatStart},
+    Sign{"11+", "hypertherm", Msg::EvidenceMarkerOffsetOn},
+    Sign{"12+", "hypertherm", Msg::EvidenceMarkerOffsetOff},
 };
 
 // EIA words.
 constexpr std::array kEiaSigns = {
-    Sign{"G05", "woyda", "rapid traverse on (Woyda)"},
-    Sign{"G06", "woyda", "rapid traverse off (Woyda)"},
-    Sign{"M70", "woyda", "cutting on (Woyda)"},
-    Sign{"M71", "woyda", "cutting off (Woyda)"},
-    Sign{"M22", "woyda", "plasma on (Woyda)"},
-    Sign{"M67", "woyda", "kerf left (Woyda)"},
-    Sign{"M68", "woyda", "kerf right (Woyda)"},
-    Sign{"G90", "din66025", "absolute dimensions (DIN 66025)"},
-    Sign{"G71", "din66025", "millimetres (DIN 66025)"},
-    Sign{"G70", "din66025", "inches (DIN 66025)"},
-    Sign{"M03", "din66025", "tool on (DIN 66025)"},
-    Sign{"M05", "din66025", "tool off (DIN 66025)"},
-    Sign{"G21", "hypertherm", "millimetres (Hypertherm)"},
-    Sign{"G20", "hypertherm", "inches (Hypertherm)"},
-    Sign{"M07", "hypertherm", "cut on (Hypertherm)"},
-    Sign{"M08", "hypertherm", "cut off (Hypertherm)"},
+    Sign{"G05", "woyda", Msg::EvidenceWoydaRapidOn},
+    Sign{"G06", "woyda", Msg::EvidenceWoydaRapidOff},
+    Sign{"M70", "woyda", Msg::EvidenceWoydaCuttingOn},
+    Sign{"M71", "woyda", Msg::EvidenceWoydaCuttingOff},
+    Sign{"M22", "woyda", Msg::EvidenceWoydaPlasmaOn},
+    Sign{"M67", "woyda", Msg::EvidenceWoydaKerfLeft},
+    Sign{"M68", "woyda", Msg::EvidenceWoydaKerfRight},
+    Sign{"G90", "din66025", Msg::EvidenceDinAbsolute},
+    Sign{"G71", "din66025", Msg::EvidenceDinMillimetres},
+    Sign{"G70", "din66025", Msg::EvidenceDinInches},
+    Sign{"M03", "din66025", Msg::EvidenceDinToolOn},
+    Sign{"M05", "din66025", Msg::EvidenceDinToolOff},
+    Sign{"G21", "hypertherm", Msg::EvidenceHyperthermMillimetres},
+    Sign{"G20", "hypertherm", Msg::EvidenceHyperthermInches},
+    Sign{"M07", "hypertherm", Msg::EvidenceHyperthermCutOn},
+    Sign{"M08", "hypertherm", Msg::EvidenceHyperthermCutOff},
 };
 
 // One sign found: where, and what the line says.
@@ -138,16 +139,15 @@ struct Evidence {
     }
 };
 
-// "woyda: `/` ends the program at line 29", the tail's lines numbered from the start of the tape.
-std::string evidence_text(const Found& f, std::string_view bytes) {
+// "woyda: `/` ends the program at line 29" (DialectEvidence), the tail's lines numbered from the start of the tape.
+Message evidence_message(const Found& f, std::string_view bytes) {
     std::uint32_t line = f.line;
     if (line >= kTailLine) {
         LineIndex index;  // (the lines before the tail: only for evidence found there)
         index.build(bytes.substr(0, tail_start(bytes)));
         line = line - kTailLine + static_cast<std::uint32_t>(index.line_count()) + 1;
     }
-    return std::string(f.sign->dialect) + ": `" + f.quote + "` " + std::string(f.sign->meaning) + " at line " +
-           std::to_string(line);
+    return {Msg::DialectEvidence, {f.sign->dialect, f.quote, f.sign->meaning, line}};
 }
 
 // The ESSI token of a line for kEssiSigns: "/", "135+" (a function with a value), "43" (a function alone); empty
@@ -175,7 +175,7 @@ void scan_essi(std::string_view bytes, Evidence& ev) {
             return true;
         }
         if (after_63 && (t.front() == '+' || t.front() == '-')) {
-            static constexpr Sign kGoesOn{"63 ...", "iso6582", "cancels the functions and the program goes on"};  // (at the 63's line)
+            static constexpr Sign kGoesOn{"63 ...", "iso6582", Msg::EvidenceGoesOnAfter63};  // (at the 63's line)
             ev.add(kGoesOn, line_63, "63");
             after_63 = false;
         }
@@ -234,7 +234,10 @@ DialectGuess guess_dialect(std::string_view bytes, InputFormat format) {
         g.profile = std::string(ev.tallies[0].dialect);
         g.clear = ev.tallies.size() == 1 || ev.tallies[0].signs > ev.tallies[1].signs;
         for (const Tally& t : ev.tallies)
-            for (const Found& f : t.found) g.evidence.push_back(evidence_text(f, bytes));
+            for (const Found& f : t.found) {
+                g.evidence_messages.push_back(evidence_message(f, bytes));
+                g.evidence.push_back(g.evidence_messages.back().text(Lang::En));
+            }
     }
     return g;
 }
@@ -244,6 +247,7 @@ TapeSetup setup_tape(std::string_view bytes, std::optional<InputFormat> format, 
     s.format = format ? *format : detect_input_format(bytes);
     DialectGuess guess = guess_dialect(bytes, s.format);
     s.evidence = guess.evidence;
+    s.evidence_messages = guess.evidence_messages;
     if (!profile) {
         s.auto_profile = true;
         s.profile = *builtin_profile(guess.profile);
@@ -253,11 +257,11 @@ TapeSetup setup_tape(std::string_view bytes, std::optional<InputFormat> format, 
     // A custom profile is named after its base ("woyda+custom") unless it names itself.
     const std::string_view base = std::string_view(profile->name).substr(0, profile->name.find('+'));
     if (guess.clear && base != guess.profile) {
-        std::string why;
-        for (const auto& e : guess.evidence)
-            if (e.rfind(guess.profile + ":", 0) == 0) why += (why.empty() ? "" : "; ") + e;
+        std::vector<Message> why;  // (the evidence of the dialect it looks like)
+        for (std::size_t i = 0; i < guess.evidence_messages.size(); ++i)
+            if (guess.evidence[i].rfind(guess.profile + ":", 0) == 0) why.push_back(guess.evidence_messages[i]);
         s.note = make_diagnostic(Severity::Note, DiagCode::N403_OtherDialect, 1, 1, Msg::DialectLooksLike,
-                                 {guess.profile, why, profile->name});
+                                 {guess.profile, MessageArgs::Arg::messages(why), profile->name});
     }
     return s;
 }

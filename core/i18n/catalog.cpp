@@ -24,12 +24,26 @@ constexpr char kArgSep = '\x1f';  // between two packed arguments
 constexpr char kArgMsg = '\x1e';  // starts an argument that is a catalogue message (its number follows)
 constexpr char kArgList = '\x1c';  // starts an argument that is a list ('o' alternatives, '+' joined; then items)
 constexpr char kListItem = '\x1d'; // between two alternatives of a list
+// Arg::messages: a list (kind ';') whose items are "ID" kArgMsg "ARGS", ARGS a message's packed arguments with
+// these two in place of its kArgSep and kListItem (so that neither ends the outer argument or item).
+constexpr char kNestedSep = '\x18';
+constexpr char kNestedItem = '\x19';
 
 bool is_packing_byte(char c) { return c == kArgSep || c == kArgMsg || c == kArgList || c == kListItem; }
 
 std::string argument_text(std::string_view a, Lang lang);
 
-// "a, b or c" (kind 'o') or "a+b+c" (kind '+') in `lang` from "a\x1db\x1dc".
+// One item of Arg::messages ("ID" kArgMsg "ARGS") in `lang`.
+std::string nested_message_text(std::string_view item, Lang lang) {
+    const std::size_t mark = item.find(kArgMsg);
+    unsigned id = 0;
+    for (char c : item.substr(0, mark)) id = id * 10 + static_cast<unsigned>(c - '0');
+    std::string args(mark == std::string_view::npos ? std::string_view{} : item.substr(mark + 1));
+    for (char& c : args) c = c == kNestedSep ? kArgSep : c == kNestedItem ? kListItem : c;
+    return format_message(static_cast<Msg>(id), lang, MessageArgs::from_packed(std::move(args)));
+}
+
+// "a, b or c" (kind 'o'), "a+b+c" (kind '+') or "a; b; c" (kind ';', messages) in `lang` from "a\x1db\x1dc".
 std::string list_text(char kind, std::string_view items, Lang lang) {
     std::string out;
     std::size_t begin = 0;
@@ -37,9 +51,12 @@ std::string list_text(char kind, std::string_view items, Lang lang) {
         const std::size_t end = items.find(kListItem, begin);
         if (begin > 0) {
             if (kind == '+') out += '+';
+            else if (kind == ';') out += text(Msg::ListSemicolon, lang);
             else out += text(end == std::string_view::npos ? Msg::ListOr : Msg::ListSeparator, lang);
         }
-        out += argument_text(items.substr(begin, end == std::string_view::npos ? std::string_view::npos : end - begin), lang);
+        const std::string_view item =
+            items.substr(begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
+        out += kind == ';' ? nested_message_text(item, lang) : argument_text(item, lang);
         if (end == std::string_view::npos) break;
         begin = end + 1;
     }
@@ -165,6 +182,26 @@ MessageArgs::Arg MessageArgs::Arg::combined(const std::vector<Msg>& words) {
     a.list = '+';
     return a;
 }
+
+MessageArgs::Arg MessageArgs::Arg::messages(const std::vector<Message>& items) {
+    std::string packed;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (i > 0) packed += kListItem;
+        packed += std::to_string(static_cast<unsigned>(items[i].msg));
+        packed += kArgMsg;
+        for (char c : items[i].args.packed()) {
+            if (c == kNestedSep || c == kNestedItem) packed += '?';  // (a text's own byte, or a second level)
+            else packed += c == kArgSep ? kNestedSep : c == kListItem ? kNestedItem : c;
+        }
+    }
+    Arg a("");
+    a.owned = std::move(packed);
+    a.text = std::string_view{};
+    a.list = ';';
+    return a;
+}
+
+MessageArgs::Arg::Arg(const Message& m) : Arg(messages({m})) {}
 
 MessageArgs MessageArgs::from_packed(std::string packed) {
     MessageArgs a;

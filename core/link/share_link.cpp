@@ -88,45 +88,53 @@ bool is_profile_name(std::string_view s) {
     return true;
 }
 
+// A problem, in English and as a message.
+void add_problem(ShareLink& link, Message m) {
+    link.problems.push_back(m.text(Lang::En));
+    link.problem_messages.push_back(std::move(m));
+}
+
 // The field `key` with its decoded value, into `link`.
 void read_field(std::string_view key, const std::string& value, ShareLink& link) {
-    const auto problem = [&](const std::string& what) {
-        link.problems.push_back(std::string(key) + ": " + what + " (\"" + display_text(excerpt(value, kQuoteBytes)) + "\")");
+    // `msg` (a row of core/i18n/messages/link.def) with `before` and then the value quoted.
+    const auto problem = [&](Msg msg, std::optional<std::size_t> before = std::nullopt) {
+        const std::string quote = display_text(excerpt(value, kQuoteBytes));
+        add_problem(link, before ? Message{msg, {*before, quote}} : Message{msg, {quote}});
     };
     if (key == "c") {
         link.view = parse_view(value);
-        if (!link.view) problem("expected X,Y,ZOOM: three numbers, the zoom above 0");
+        if (!link.view) problem(Msg::LinkBadView);
     } else if (key == "l") {
         const auto n = parse_number(value);
         if (n && *n >= 0 && *n <= 4294967295.0 && *n == std::floor(*n)) link.line = static_cast<std::uint32_t>(*n);
-        else problem("expected a line number");
+        else problem(Msg::LinkBadLine);
     } else if (key == "n") {
         link.name = value;
         if (link.name.size() > kMaxShareNameBytes) {
             link.name = excerpt(value, kMaxShareNameBytes);
-            problem("the name is longer than " + std::to_string(kMaxShareNameBytes) + " bytes; cut");
+            problem(Msg::LinkNameTooLong, kMaxShareNameBytes);
         }
     } else if (key == "share") {
         if (is_store_id(value)) link.store_id = value;
-        else problem("expected 64 lower-case hex digits (the tape's SHA-256)");
+        else problem(Msg::LinkBadStoreId);
     } else if (key == "t") {
         auto bytes = base64url_decode(value);
         if (bytes && !bytes->empty()) link.packed = std::move(*bytes);
-        else problem("expected the tape as base64url (A-Z a-z 0-9 - _)");
+        else problem(Msg::LinkBadTape);
     } else if (key == "p") {
         if (is_profile_name(value)) link.profile = value;
-        else problem("expected a profile name");
+        else problem(Msg::LinkBadProfile);
     } else if (key == "pj") {
         auto bytes = base64url_decode(value);
         if (bytes && !bytes->empty() && bytes->size() <= kMaxShareProfileBytes) link.profile_json = std::move(*bytes);
-        else problem("expected a profile's JSON as base64url, at most " + std::to_string(kMaxShareProfileBytes) + " bytes");
+        else problem(Msg::LinkBadProfileJson, kMaxShareProfileBytes);
     } else if (key == "i") {
         if (value == "essi" || value == "eia") link.input = value;
-        else problem("expected essi or eia");
+        else problem(Msg::LinkBadInput);
     } else if (key == "b") {
         const auto n = parse_number(value);
         if (n && *n >= 0 && *n <= 1e15 && *n == std::floor(*n)) link.tape_bytes = static_cast<std::uint64_t>(*n);
-        else problem("expected the tape's length in bytes");
+        else problem(Msg::LinkBadLength);
     }
 }
 
@@ -136,8 +144,7 @@ ShareLink parse_share_fragment(std::string_view fragment) {
     ShareLink link;
     if (!fragment.empty() && fragment.front() == '#') fragment.remove_prefix(1);
     if (fragment.size() > kMaxShareFragmentBytes) {
-        link.problems.push_back("the link is " + std::to_string(fragment.size()) + " bytes long; at most " +
-                                std::to_string(kMaxShareFragmentBytes) + " are read");
+        add_problem(link, {Msg::LinkTooLong, {fragment.size(), kMaxShareFragmentBytes}});
         return link;
     }
     std::size_t pos = 0;

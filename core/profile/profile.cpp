@@ -75,18 +75,17 @@ std::string eia_word_text(const EiaWord& w) {
 // The "eia" object of a profile (docs/semantics.md §10); keys absent keep their values.
 constexpr long long kMaxEiaCodeValue = 9999;  // the value an EIA word stands for (4 digits, as ESSI's values)
 
-void apply_eia_keys(const json& j, EiaDialect& e, std::vector<std::string>& errors) {
+void apply_eia_keys(const json& j, EiaDialect& e, std::vector<Message>& errors) {
     if (!j.is_object()) {
-        errors.push_back("\"eia\" must be an object (letters, codes, dwell_unit_s ...)");
+        errors.push_back({Msg::ProfileEiaNotObject});
         return;
     }
-    auto fail = [&](const std::string& key, const char* expected) {
-        errors.push_back("\"eia." + key + "\" must be " + expected);
-    };
+    // A problem with the key "eia.KEY": `msg` with the key as {0}.
+    auto fail = [&](const std::string& key, Msg msg) { errors.push_back({msg, {"eia." + key}}); };
     for (const char* key : {"strict_order", "one_function_per_block"}) {
         auto it = j.find(key);
         if (it == j.end()) continue;
-        if (!it->is_boolean()) fail(key, "true or false");
+        if (!it->is_boolean()) fail(key, Msg::ProfileMustBeBoolean);
         else (std::string_view(key) == "strict_order" ? e.strict_order : e.one_function_per_block) = it->get<bool>();
     }
     if (auto it = j.find("letters"); it != j.end()) {
@@ -94,7 +93,7 @@ void apply_eia_keys(const json& j, EiaDialect& e, std::vector<std::string>& erro
                         std::all_of(it->get_ref<const std::string&>().begin(), it->get_ref<const std::string&>().end(),
                                     [](char c) { return c >= 'A' && c <= 'Z'; });
         if (ok) e.letters = it->get<std::string>();
-        else fail("letters", "the address letters in their order, e.g. \"NGXYIJFM\"");
+        else errors.push_back({Msg::ProfileEiaLetters});
     }
     for (const char* key : {"rapid_motion", "position_preset"}) {
         auto it = j.find(key);
@@ -105,18 +104,18 @@ void apply_eia_keys(const json& j, EiaDialect& e, std::vector<std::string>& erro
         } else if (auto w = parse_eia_word(*it); w && w->letter == 'G') {
             out = w->number;
         } else {
-            fail(key, "null or a G word such as \"G00\"");
+            fail(key, Msg::ProfileEiaGWord);
         }
     }
     if (auto it = j.find("dwell_letter"); it != j.end()) {
         if (it->is_string() && it->get_ref<const std::string&>().size() == 1 &&
                  it->get_ref<const std::string&>()[0] >= 'A' && it->get_ref<const std::string&>()[0] <= 'Z')
             e.dwell_letter = it->get_ref<const std::string&>()[0];
-        else fail("dwell_letter", "one capital letter, e.g. \"X\"");
+        else errors.push_back({Msg::ProfileEiaDwellLetter});
     }
     if (auto it = j.find("dwell_unit_s"); it != j.end()) {
         if (it->is_number() && it->get<double>() >= 1e-6 && it->get<double>() <= 3600) e.dwell_unit_s = it->get<double>();
-        else fail("dwell_unit_s", "a number between 1e-06 and 3600 (0.001: milliseconds)");
+        else errors.push_back({Msg::ProfileEiaDwellUnit});
     }
     for (const char* key : {"inch", "mm"}) {
         auto it = j.find(key);
@@ -130,7 +129,7 @@ void apply_eia_keys(const json& j, EiaDialect& e, std::vector<std::string>& erro
                 if (word) words.push_back(*word);
             }
         if (ok) (std::string_view(key) == "inch" ? e.inch_words : e.mm_words) = std::move(words);
-        else fail(key, "an array of words such as [\"G20\", \"G70\"]");
+        else fail(key, Msg::ProfileEiaWords);
     }
     if (auto it = j.find("codes"); it != j.end()) {
         std::vector<EiaCode> codes;
@@ -151,9 +150,7 @@ void apply_eia_keys(const json& j, EiaDialect& e, std::vector<std::string>& erro
                                  row.size() == 3 ? static_cast<int>(row[2].get<long long>()) : -1});
             }
         if (ok) e.codes = std::move(codes);
-        else fail("codes", "an array of [word, function] pairs such as [[\"M70\", 7], [\"G91\", 81]], or [word, "
-                           "function, value] for a word that stands for a function with its value ([\"M275\", 11, 3]; "
-                           "a value 0-9999)");
+        else errors.push_back({Msg::ProfileEiaCodes});
     }
     static constexpr const char* kKnownEiaKeys[] = {"letters", "strict_order", "one_function_per_block",
                                                     "rapid_motion", "position_preset", "dwell_letter",
@@ -161,7 +158,7 @@ void apply_eia_keys(const json& j, EiaDialect& e, std::vector<std::string>& erro
     for (auto it = j.begin(); it != j.end(); ++it) {
         const bool known = std::any_of(std::begin(kKnownEiaKeys), std::end(kKnownEiaKeys),
                                        [&](const char* k) { return it.key() == k; });
-        if (!known) errors.push_back("unknown key \"eia." + excerpt(it.key(), kMaxKeyChars) + "\"");
+        if (!known) errors.push_back({Msg::ProfileUnknownKey, {"eia." + excerpt(it.key(), kMaxKeyChars)}});
     }
 }
 
@@ -201,26 +198,27 @@ constexpr Range kPositionRange{-1e9, 1e9};          // mm: offsets and table lim
 constexpr Range kRotationRange{-360, 360};          // degrees
 constexpr std::size_t kMaxZeroOffsets = 100;        // entries of zero_offsets
 
-// A point given as {"x_mm": ..., "y_mm": ...} (an offset): the error names `where`.
-bool parse_offset(const json& v, const std::string& where, Point& out, std::vector<std::string>& errors) {
+// A point given as {"x_mm": ..., "y_mm": ...} (an offset): the error names `where` ("\"tool_offsets.marker\"", or
+// a ProfileZeroOffsetEntry).
+bool parse_offset(const json& v, const MessageArgs::Arg& where, Point& out, std::vector<Message>& errors) {
     const auto coordinate = [&](const char* key, double& to) {
         const auto f = v.find(key);
         if (f == v.end() || !f->is_number() ||
             !(f->get<double>() >= kPositionRange.min && f->get<double>() <= kPositionRange.max)) {
-            errors.push_back(where + " needs a number \"" + key + "\" between " + number_text(kPositionRange.min) +
-                             " and " + number_text(kPositionRange.max));
+            errors.push_back({Msg::ProfileNeedsNumber,
+                              {where, key, number_text(kPositionRange.min), number_text(kPositionRange.max)}});
             return false;
         }
         to = f->get<double>();
         return true;
     };
     if (!v.is_object()) {
-        errors.push_back(where + " must be an object such as {\"x_mm\": 10, \"y_mm\": 0}");
+        errors.push_back({Msg::ProfileOffsetNotObject, {where}});
         return false;
     }
     for (auto it = v.begin(); it != v.end(); ++it) {
         if (it.key() != "x_mm" && it.key() != "y_mm") {
-            errors.push_back(where + ": unknown key \"" + excerpt(it.key(), kMaxKeyChars) + "\"; expected x_mm and y_mm");
+            errors.push_back({Msg::ProfileOffsetUnknownKey, {where, excerpt(it.key(), kMaxKeyChars)}});
             return false;
         }
     }
@@ -232,13 +230,13 @@ bool parse_offset(const json& v, const std::string& where, Point& out, std::vect
 
 // zero_offsets, zero_offset, plate_rotation_deg, tool_offsets and the older setup_offset_x_mm/_y_mm (the
 // default entry), docs/semantics.md §11.
-void apply_placement_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
+void apply_placement_keys(const json& j, Profile& p, std::vector<Message>& errors) {
     for (const char* axis : {"setup_offset_x_mm", "setup_offset_y_mm"}) {
         const auto it = j.find(axis);
         if (it == j.end()) continue;
         if (!it->is_number() || !(it->get<double>() >= kPositionRange.min && it->get<double>() <= kPositionRange.max)) {
-            errors.push_back(std::string("\"") + axis + "\" must be between " + number_text(kPositionRange.min) +
-                             " and " + number_text(kPositionRange.max) + " (a number, mm)");
+            errors.push_back(
+                {Msg::ProfileSetupOffset, {axis, number_text(kPositionRange.min), number_text(kPositionRange.max)}});
             continue;
         }
         Point& entry = p.zero_offsets[Profile::kDefaultZeroOffset];
@@ -246,23 +244,23 @@ void apply_placement_keys(const json& j, Profile& p, std::vector<std::string>& e
     }
     if (const auto it = j.find("zero_offsets"); it != j.end()) {
         if (!it->is_object()) {
-            errors.push_back("\"zero_offsets\" must be an object such as {\"G54\": {\"x_mm\": 0, \"y_mm\": 0}}");
+            errors.push_back({Msg::ProfileZeroOffsetsNotObject});
         } else {
             for (auto e = it->begin(); e != it->end(); ++e) {
                 if (e.key().empty() || e.key().size() > kMaxKeyChars) {
-                    errors.push_back("\"zero_offsets\" names must have 1 to " + std::to_string(kMaxKeyChars) + " characters");
+                    errors.push_back({Msg::ProfileZeroOffsetName, {kMaxKeyChars}});
                     continue;
                 }
                 Point offset;
-                if (parse_offset(e.value(), "\"zero_offsets\" entry \"" + e.key() + "\"", offset, errors))
+                if (parse_offset(e.value(), Message{Msg::ProfileZeroOffsetEntry, {e.key()}}, offset, errors))
                     p.zero_offsets[e.key()] = offset;
             }
             if (p.zero_offsets.size() > kMaxZeroOffsets)
-                errors.push_back("\"zero_offsets\" has more than " + std::to_string(kMaxZeroOffsets) + " entries");
+                errors.push_back({Msg::ProfileZeroOffsetsTooMany, {kMaxZeroOffsets}});
         }
     }
     if (const auto it = j.find("zero_offset"); it != j.end()) {
-        if (!it->is_string()) errors.push_back("\"zero_offset\" must be the name of an entry of \"zero_offsets\"");
+        if (!it->is_string()) errors.push_back({Msg::ProfileZeroOffsetNotName});
         else p.zero_offset = it->get<std::string>();
     }
     if (p.zero_offsets.find(p.zero_offset) == p.zero_offsets.end()) {
@@ -271,42 +269,41 @@ void apply_placement_keys(const json& j, Profile& p, std::vector<std::string>& e
         for (const auto& [name, offset] : p.zero_offsets)
             if (listed++ < 5) names += (names.empty() ? "\"" : ", \"") + name + "\"";
         if (listed > 5) names += " ...";
-        errors.push_back("\"zero_offset\" names \"" + excerpt(p.zero_offset, kMaxKeyChars) +
-                         "\", which \"zero_offsets\" does not have; expected one of " + names);
+        errors.push_back({Msg::ProfileZeroOffsetMissing, {excerpt(p.zero_offset, kMaxKeyChars), names}});
     }
     if (const auto it = j.find("plate_rotation_deg"); it != j.end()) {
         if (!it->is_number() || !(it->get<double>() >= kRotationRange.min && it->get<double>() <= kRotationRange.max))
-            errors.push_back("\"plate_rotation_deg\" must be a number between -360 and 360");
+            errors.push_back({Msg::ProfilePlateRotation});
         else
             p.plate_rotation_deg = it->get<double>();
     }
     if (const auto it = j.find("tool_offsets"); it != j.end()) {
         if (!it->is_object()) {
-            errors.push_back("\"tool_offsets\" must be an object such as {\"marker\": {\"x_mm\": 80, \"y_mm\": 0}}");
+            errors.push_back({Msg::ProfileToolOffsetsNotObject});
             return;
         }
         for (auto e = it->begin(); e != it->end(); ++e) {
             if (e.key() == "marker") parse_offset(e.value(), "\"tool_offsets.marker\"", p.marker_offset, errors);
             else if (e.key() == "powder_marker") parse_offset(e.value(), "\"tool_offsets.powder_marker\"", p.powder_marker_offset, errors);
-            else errors.push_back("\"tool_offsets\": unknown key \"" + excerpt(e.key(), kMaxKeyChars) + "\"; expected marker, powder_marker");
+            else errors.push_back({Msg::ProfileToolOffsetsUnknownKey, {excerpt(e.key(), kMaxKeyChars)}});
         }
     }
 }
 
 
 
-void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
+void apply_keys(const json& j, Profile& p, std::vector<Message>& errors) {
     auto number = [&](const char* key, double& out, Range range) {
         auto it = j.find(key);
         if (it == j.end()) return;
         if (!it->is_number()) {
-            errors.push_back(std::string("\"") + key + "\" must be a number");
+            errors.push_back({Msg::ProfileMustBeNumber, {key}});
             return;
         }
         const double v = it->get<double>();
         if (!(v >= range.min && v <= range.max)) {  // (NaN and infinities too)
-            errors.push_back(std::string("\"") + key + "\" must be between " + number_text(range.min) + " and " +
-                             number_text(range.max) + "; found " + number_text(v));
+            errors.push_back(
+                {Msg::ProfileOutOfRange, {key, number_text(range.min), number_text(range.max), number_text(v)}});
             return;
         }
         out = v;
@@ -315,7 +312,7 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
         auto it = j.find(key);
         if (it == j.end()) return;
         if (!it->is_boolean()) {
-            errors.push_back(std::string("\"") + key + "\" must be true or false");
+            errors.push_back({Msg::ProfileMustBeBoolean, {key}});
             return;
         }
         out = it->get<bool>();
@@ -332,12 +329,12 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
             allowed += allowed.empty() ? "" : ", ";
             allowed += std::string("\"") + name + "\"";
         }
-        errors.push_back(std::string("\"") + key + "\" must be one of " + allowed);
+        errors.push_back({Msg::ProfileMustBeOneOf, {key, allowed}});
     };
 
     if (auto it = j.find("name"); it != j.end()) {
         if (it->is_string()) p.name = it->get<std::string>();
-        else errors.push_back("\"name\" must be a string");
+        else errors.push_back({Msg::ProfileNameNotString});
     }
     choice("dialect", p.dialect,
            {{"iso6582", Dialect::Iso6582}, {"woyda", Dialect::Woyda}, {"hypertherm", Dialect::Hypertherm}});
@@ -345,13 +342,13 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
     choice("whitespace", p.whitespace, {{"skip", WhitespacePolicy::Skip}, {"strict", WhitespacePolicy::Strict}});
     if (auto it = j.find("end_codes"); it != j.end()) {
         if (!it->is_array()) {
-            errors.push_back("\"end_codes\" must be an array such as [63, 64, \"/\"]");
+            errors.push_back({Msg::ProfileEndCodesNotArray});
         } else {
             std::vector<EndCode> codes;
             for (const auto& e : *it) {
                 auto code = parse_end_code(e);
                 if (!code) {
-                    errors.push_back("\"end_codes\" entries must be function codes 0-999 or \"/\" or \"=\"");
+                    errors.push_back({Msg::ProfileEndCodesEntry});
                     codes.clear();
                     break;
                 }
@@ -367,7 +364,7 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
         else if (d == "-x") p.torch_direction = {-1, 0};
         else if (d == "+y") p.torch_direction = {0, 1};
         else if (d == "-y") p.torch_direction = {0, -1};
-        else errors.push_back("\"torch_direction\" must be one of \"+x\", \"-x\", \"+y\", \"-y\"");
+        else errors.push_back({Msg::ProfileMustBeOneOf, {"torch_direction", "\"+x\", \"-x\", \"+y\", \"-y\""}});
     }
     number("arc_tolerance", p.arc_tolerance_units, kUnitsRange);
     number("chord_tolerance_mm", p.chord_tolerance_mm, kChordRange);
@@ -393,20 +390,20 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
                 auto f = it->find(keys[i]);
                 if (f == it->end() || !f->is_number() ||
                     !(f->get<double>() >= kPositionRange.min && f->get<double>() <= kPositionRange.max)) {
-                    errors.push_back(std::string("\"table\" needs a number \"") + keys[i] + "\" between " +
-                                     number_text(kPositionRange.min) + " and " + number_text(kPositionRange.max));
+                    errors.push_back({Msg::ProfileNeedsNumber, {"\"table\"", keys[i], number_text(kPositionRange.min),
+                                                                number_text(kPositionRange.max)}});
                     good = false;
                 } else {
                     *fields[i] = f->get<double>();
                 }
             }
             if (good && (t.min_x_mm >= t.max_x_mm || t.min_y_mm >= t.max_y_mm)) {
-                errors.push_back("\"table\" minimum must be below its maximum");
+                errors.push_back({Msg::ProfileTableOrder});
                 good = false;
             }
             if (good) p.table = t;
         } else {
-            errors.push_back("\"table\" must be null or an object with min_x_mm, min_y_mm, max_x_mm, max_y_mm");
+            errors.push_back({Msg::ProfileTableNotObject});
         }
     }
     if (auto it = j.find("eia"); it != j.end()) apply_eia_keys(*it, p.eia, errors);
@@ -419,7 +416,7 @@ void apply_keys(const json& j, Profile& p, std::vector<std::string>& errors) {
     for (auto it = j.begin(); it != j.end(); ++it) {
         bool known = false;
         for (const char* k : kKnownKeys) known = known || it.key() == k;
-        if (!known) errors.push_back("unknown key \"" + excerpt(it.key(), kMaxKeyChars) + "\"");
+        if (!known) errors.push_back({Msg::ProfileUnknownKey, {excerpt(it.key(), kMaxKeyChars)}});
     }
 }
 
@@ -457,36 +454,37 @@ std::string builtin_names_text() {
 // user's file; Profile{} for the default profile's own file, which sets every key).
 ProfileResult parse_onto(std::string_view json_text, const std::function<std::optional<Profile>()>& no_base) {
     ProfileResult result;
-    auto bad = [&](std::string message) {
-        result.diagnostics.push_back({Severity::Error, DiagCode::E402_BadProfile, 0, 0, std::move(message)});
+    auto bad = [&](Message m) {
+        result.diagnostics.push_back(
+            make_diagnostic(Severity::Error, DiagCode::E402_BadProfile, 0, 0, m.msg, std::move(m.args)));
     };
     const json j = json::parse(json_text.begin(), json_text.end(), nullptr, /*allow_exceptions=*/false);
     if (j.is_discarded()) {
-        bad("the text is not valid JSON; expected an object such as {\"base\": \"woyda\", \"feed_mm_min\": 1200}");
+        bad({Msg::ProfileNotJson});
         return result;
     }
     if (!j.is_object()) {
-        bad("expected a JSON object of settings");
+        bad({Msg::ProfileNotObject});
         return result;
     }
     std::string base(kDefaultProfile);
     std::optional<Profile> profile;
     if (auto it = j.find("base"); it != j.end()) {
         if (!it->is_string()) {
-            bad("\"base\" must be the name of a built-in profile (" + builtin_names_text() + ")");
+            bad({Msg::ProfileBaseNotString, {builtin_names_text()}});
             return result;
         }
         base = it->get<std::string>();
         profile = builtin_profile(base);
         if (!profile) {
-            bad("unknown base profile \"" + excerpt(base, kMaxKeyChars) + "\"; expected one of " + builtin_names_text());
+            bad({Msg::ProfileUnknownBase, {excerpt(base, kMaxKeyChars), builtin_names_text()}});
             return result;
         }
     } else {
         profile = no_base();
     }
     if (j.find("name") == j.end()) profile->name = base + "+custom";
-    std::vector<std::string> errors;
+    std::vector<Message> errors;
     apply_keys(j, *profile, errors);
     for (auto& e : errors) bad(std::move(e));
     if (errors.empty()) result.profile = std::move(profile);

@@ -223,36 +223,39 @@ std::string mm3(double v) {
 }
 std::string signed_mm3(double v) { return (v >= 0 ? "+" : "") + mm3(v); }
 
-std::string lines_text(const Contour& c) {
-    return c.first_line == c.last_line ? "line " + std::to_string(c.first_line)
-                                       : "lines " + std::to_string(c.first_line) + "-" + std::to_string(c.last_line);
+std::string lines_text(const Contour& c, Lang lang) {
+    return c.first_line == c.last_line ? format_message(Msg::DiffLine, lang, {c.first_line})
+                                       : format_message(Msg::DiffLines, lang, {c.first_line, c.last_line});
 }
 
-std::string contour_text(const Contour& c) {
-    return std::string(motion_kind_name(c.kind)) + " " + mm3(c.length_mm) + " mm from (" + mm3(c.start.x) + ", " +
-           mm3(c.start.y) + ")";
+std::string contour_text(const Contour& c, Lang lang) {
+    return format_message(Msg::DiffContour, lang,
+                          {c.kind == MotionKind::Mark ? Msg::DiffKindMark : Msg::DiffKindCut, mm3(c.length_mm),
+                           mm3(c.start.x), mm3(c.start.y)});
 }
 
-std::string side_text(const char* label, const DiffSide& s) {
-    return std::string(label) + ": " + display_text(s.name) + " (profile " + s.tape->check.profile + "): " +
-           std::to_string(s.tape->contours.size()) + " contours, cut " + mm3(s.tape->check.stats.cut_length_mm) +
-           " mm, " + std::to_string(s.tape->check.stats.pierces) + " pierces, time " +
-           format_duration(s.tape->check.stats.estimated_time_s) + "\n";
+std::string side_text(const char* label, const DiffSide& s, Lang lang) {
+    const CheckResult& r = s.tape->check;
+    return format_message(Msg::DiffSide, lang,
+                          {label, display_text(s.name), r.profile, s.tape->contours.size(), mm3(r.stats.cut_length_mm),
+                           r.stats.pierces, format_duration(r.stats.estimated_time_s)}) +
+           "\n";
 }
 
 // The statistics a diff compares: (name, A's, B's, a count or a length).
 struct StatChange {
-    const char* name;
+    const char* name;  // its key in the JSON
+    Msg word;          // its name in the text (in English: the key)
     double a, b;
     bool count = false;
 };
 std::vector<StatChange> stat_changes(const Stats& a, const Stats& b) {
-    return {{"cut_length_mm", a.cut_length_mm, b.cut_length_mm},
-            {"mark_length_mm", a.mark_length_mm, b.mark_length_mm},
-            {"travel_length_mm", a.travel_length_mm, b.travel_length_mm},
-            {"pierces", static_cast<double>(a.pierces), static_cast<double>(b.pierces), true},
-            {"motions", static_cast<double>(a.motions), static_cast<double>(b.motions), true},
-            {"estimated_time_s", a.estimated_time_s, b.estimated_time_s}};
+    return {{"cut_length_mm", Msg::DiffStatCutLength, a.cut_length_mm, b.cut_length_mm},
+            {"mark_length_mm", Msg::DiffStatMarkLength, a.mark_length_mm, b.mark_length_mm},
+            {"travel_length_mm", Msg::DiffStatTravelLength, a.travel_length_mm, b.travel_length_mm},
+            {"pierces", Msg::DiffStatPierces, static_cast<double>(a.pierces), static_cast<double>(b.pierces), true},
+            {"motions", Msg::DiffStatMotions, static_cast<double>(a.motions), static_cast<double>(b.motions), true},
+            {"estimated_time_s", Msg::DiffStatEstimatedTime, a.estimated_time_s, b.estimated_time_s}};
 }
 
 nlohmann::json contour_json(const Contour& c) {
@@ -274,44 +277,50 @@ nlohmann::json side_json(const DiffSide& s) {
 
 }  // namespace
 
-std::string difference_text(const TapeContours& a, const TapeContours& b, const ContourDiff& d) {
-    const std::string name = contour_change_name(d.change);
+std::string difference_text(const TapeContours& a, const TapeContours& b, const ContourDiff& d, Lang lang) {
     const auto of_a = [&]() -> const Contour& { return a.contours[static_cast<std::size_t>(d.a)]; };
     const auto of_b = [&]() -> const Contour& { return b.contours[static_cast<std::size_t>(d.b)]; };
     switch (d.change) {
         case ContourChange::Same: break;
         case ContourChange::Moved:
-            return name + ": A " + lines_text(of_a()) + " -> B " + lines_text(of_b()) + ", by (" + signed_mm3(d.offset.x) +
-                   ", " + signed_mm3(d.offset.y) + ") mm: " + contour_text(of_a());
+            return format_message(Msg::DiffMoved, lang,
+                                  {lines_text(of_a(), lang), lines_text(of_b(), lang), signed_mm3(d.offset.x),
+                                   signed_mm3(d.offset.y), contour_text(of_a(), lang)});
         case ContourChange::Changed:
-            return name + ": A " + lines_text(of_a()) + " -> B " + lines_text(of_b()) + ": " + contour_text(of_a()) +
-                   " -> " + contour_text(of_b());
-        case ContourChange::Removed: return name + ": A " + lines_text(of_a()) + ": " + contour_text(of_a());
-        case ContourChange::Added: return name + ": B " + lines_text(of_b()) + ": " + contour_text(of_b());
+            return format_message(Msg::DiffChanged, lang,
+                                  {lines_text(of_a(), lang), lines_text(of_b(), lang), contour_text(of_a(), lang),
+                                   contour_text(of_b(), lang)});
+        case ContourChange::Removed:
+            return format_message(Msg::DiffRemoved, lang, {lines_text(of_a(), lang), contour_text(of_a(), lang)});
+        case ContourChange::Added:
+            return format_message(Msg::DiffAdded, lang, {lines_text(of_b(), lang), contour_text(of_b(), lang)});
     }
-    return name;
+    return std::string(text(Msg::DiffSame, lang));
 }
 
-std::string diff_counts_text(const TapeDiff& d) {
-    std::string counts;
-    for (ContourChange c : kChanges)
-        counts += (counts.empty() ? "" : ", ") + std::to_string(d.count(c)) + " " + contour_change_name(c);
-    return counts;
+Message diff_counts_message(const TapeDiff& d) {
+    return {Msg::DiffCounts,
+            {d.count(ContourChange::Same), d.count(ContourChange::Moved), d.count(ContourChange::Changed),
+             d.count(ContourChange::Removed), d.count(ContourChange::Added)}};
 }
 
-std::string diff_text(const DiffSide& a, const DiffSide& b, const TapeDiff& d) {
-    std::string s = side_text("A", a) + side_text("B", b);
+std::string diff_counts_text(const TapeDiff& d, Lang lang) { return diff_counts_message(d).text(lang); }
+
+std::string diff_text(const DiffSide& a, const DiffSide& b, const TapeDiff& d, Lang lang) {
+    std::string s = side_text("A", a, lang) + side_text("B", b, lang);
     for (const ContourDiff& c : d.contours)
-        if (c.change != ContourChange::Same) s += difference_text(*a.tape, *b.tape, c) + "\n";
-    s += "contours: " + diff_counts_text(d) + "\n";
+        if (c.change != ContourChange::Same) s += difference_text(*a.tape, *b.tape, c, lang) + "\n";
+    s += format_message(Msg::DiffContours, lang, {diff_counts_text(d, lang)}) + "\n";
     std::string stats;
     for (const StatChange& c : stat_changes(a.tape->check.stats, b.tape->check.stats)) {
         if (std::fabs(c.b - c.a) < 5e-4) continue;
         const auto value = [&](double v) { return c.count ? number_text(v) : mm3(v); };
-        stats += std::string(stats.empty() ? "" : ", ") + c.name + " " + value(c.a) + " -> " + value(c.b) + " (" +
+        if (!stats.empty()) stats += text(Msg::ListSeparator, lang);
+        stats += std::string(text(c.word, lang)) + " " + value(c.a) + " -> " + value(c.b) + " (" +
                  (c.b >= c.a ? "+" : "") + value(c.b - c.a) + ")";
     }
-    s += "statistics: " + (stats.empty() ? std::string("the same") : stats) + "\n";
+    if (stats.empty()) stats = text(Msg::DiffStatisticsSame, lang);
+    s += format_message(Msg::DiffStatistics, lang, {stats}) + "\n";
     return s;
 }
 

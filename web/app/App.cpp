@@ -197,7 +197,7 @@ void App::compare_with(std::string name, const std::string& bytes) {
     if (!d) return;
     fonts_.require_glyphs(name);
     compare_ = make_compare(*d, profile_name_ == kAutoProfile, std::move(name), bytes);
-    notify(Msg::UiComparedWith, {display_text(compare_->name), compare_->summary});
+    notify(Msg::UiComparedWith, {display_text(compare_->name), diff_counts_message(compare_->diff)});
 }
 
 void App::end_compare() {

@@ -17,7 +17,7 @@ struct Compare {
     std::string name;     // B's
     TapeContours a, b;    // with their paths
     TapeDiff diff;
-    std::string summary;  // "2 same, 1 moved, ..."
+    std::string summary;  // "2 same, 1 moved, ..." in English (state()); the window words it in the viewer's language
     // Each contour flattened for drawing (program mm): A's, B's.
     std::vector<std::vector<Point>> a_lines, b_lines;
 };

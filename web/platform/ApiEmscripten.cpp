@@ -18,6 +18,10 @@ using essi::viewer::App;
 
 namespace {
 
+// The link last read by essi_parse_share (below): its tape is loaded as the sender read it (essi_load_commit_shared),
+// its problems are worded in the viewer's language (page_phrase).
+essi::ShareLink g_share_link;
+
 // What the page says went wrong with a share link, as {"kind": ..., "args": [...]} (index.html, share_store.js): the
 // sentence is the catalogue's, in the viewer's language.
 essi::viewer::Phrase page_phrase(const char* json) {
@@ -40,6 +44,14 @@ essi::viewer::Phrase page_phrase(const char* json) {
     if (j.is_object() && j.contains("args") && j["args"].is_array())
         for (const auto& a : j["args"]) args.push_back(a.is_string() ? a.get<std::string>() : a.dump());
     args.resize(2);
+    // "cut" with the problems of the link read last, as essi_parse_share gave them to the page (joined with "; "):
+    // those problems in the viewer's language, also when it is switched later.
+    if (kind == "cut" && !g_share_link.problems.empty()) {
+        std::string joined;
+        for (const std::string& p : g_share_link.problems) joined += (joined.empty() ? "" : "; ") + p;
+        if (args[0] == joined)
+            return {Msg::UiLinkCut, {essi::MessageArgs::Arg::messages(g_share_link.problem_messages)}};
+    }
     for (const auto& k : kKinds) {
         if (kind != k.kind) continue;
         if (k.arg != Msg::None) return {k.msg, {k.arg}};
@@ -73,10 +85,6 @@ EMSCRIPTEN_KEEPALIVE void essi_load_commit(const char* name) {
     g_pending = std::string();
 }
 
-// The link last read by essi_parse_share (below): its tape is loaded as the sender read it.
-namespace {
-essi::ShareLink g_share_link;
-}
 EMSCRIPTEN_KEEPALIVE void essi_load_commit_shared(const char* name) {
     if (App* app = App::instance()) app->load_shared(name, std::move(g_pending), g_share_link);
     g_pending = std::string();

@@ -66,17 +66,21 @@ struct DiffSide {
     const TapeContours* tape = nullptr;
 };
 
+// The texts are in `lang` (core/i18n/messages/diff.def; English: what `essi diff` has always printed).
 // One difference as `essi diff` says it: "moved: A lines 11-14 -> B lines 14-17, by (+5.000, +0.000) mm: cut
-// 200.000 mm from (200.000, 0.000)" (no newline; nothing to say of a Same).
-[[nodiscard]] std::string difference_text(const TapeContours& a, const TapeContours& b, const ContourDiff& d);
-// The counts: "1 same, 1 moved, 0 changed, 0 removed, 0 added".
-[[nodiscard]] std::string diff_counts_text(const TapeDiff& d);
+// 200.000 mm from (200.000, 0.000)" (no newline; of a Same only "same").
+[[nodiscard]] std::string difference_text(const TapeContours& a, const TapeContours& b, const ContourDiff& d,
+                                          Lang lang = Lang::En);
+// The counts: "1 same, 1 moved, 0 changed, 0 removed, 0 added"; as a message, to be worded later (the viewer's
+// notice of a comparison).
+[[nodiscard]] std::string diff_counts_text(const TapeDiff& d, Lang lang = Lang::En);
+[[nodiscard]] Message diff_counts_message(const TapeDiff& d);
 
 // `essi diff`'s text: each side's statistics, a line a contour that is not the same (its lines in A and in B),
 // the counts, and the statistics before and after; every line ends in a newline.
-[[nodiscard]] std::string diff_text(const DiffSide& a, const DiffSide& b, const TapeDiff& d);
+[[nodiscard]] std::string diff_text(const DiffSide& a, const DiffSide& b, const TapeDiff& d, Lang lang = Lang::En);
 // `essi diff --format json`: {"a": {...}, "b": {...}, "summary": {...}, "contours": [...], "stats_change": {...}}
-// (docs/cli.md).
+// (docs/cli.md): keys and values for programs, the same in every language.
 [[nodiscard]] std::string diff_json(const DiffSide& a, const DiffSide& b, const TapeDiff& d);
 
 }  // namespace essi

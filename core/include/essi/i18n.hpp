@@ -5,8 +5,8 @@
 // for German (docs/languages.md).
 //
 // A template names its arguments {0} .. {9}; {N|one|other} picks a word by whether argument N is "1" (plural
-// endings) and prints nothing of N itself. An argument can itself be a message (Arg(Msg::...)): it is shown in
-// the reader's language too.
+// endings) and prints nothing of N itself. An argument can itself be a message (Arg(Msg::...), or one with its
+// own arguments: Arg(Message), Arg::messages): it is shown in the reader's language too.
 #pragma once
 
 #include <array>
@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace essi {
@@ -49,6 +50,8 @@ enum class Msg : std::uint16_t {
 // The id's name in the catalogue ("ReadFunctionTooLong"), for tests and tools.
 [[nodiscard]] std::string_view msg_name(Msg id);
 
+struct Message;
+
 // A message's arguments, packed in one string (one allocation, mostly none): what a Diagnostic keeps so that it
 // can be shown in any language later.
 class MessageArgs {
@@ -67,6 +70,12 @@ public:
         [[nodiscard]] static Arg alternatives(const std::vector<std::string>& items);
         // Catalogue words joined with '+' in any language: "oxygen+punch", "Sauerstoff+Körner".
         [[nodiscard]] static Arg combined(const std::vector<Msg>& words);
+        // Catalogue messages with their own arguments, joined with "; " (Msg::ListSemicolon) in the reader's
+        // language: the evidence in N403's message, a share link's problems. One level deep: an argument of these
+        // messages is text, a word or a list, not messages again.
+        [[nodiscard]] static Arg messages(const std::vector<Message>& items);
+        // One such message.
+        Arg(const Message& m);
         Arg(int v) : owned(std::to_string(v)), text(owned) {}
         Arg(unsigned v) : owned(std::to_string(v)), text(owned) {}
         Arg(long v) : owned(std::to_string(v)), text(owned) {}
@@ -76,7 +85,8 @@ public:
         std::string owned;
         std::string_view text;
         Msg msg = Msg::None;
-        char list = 0;  // 'o': `owned` holds alternatives ("a, b or c"), '+': words joined with '+' (packed)
+        char list = 0;  // 'o': `owned` holds alternatives ("a, b or c"), '+': words joined with '+', ';': messages
+                        // (packed)
     };
     MessageArgs() = default;
     MessageArgs(std::initializer_list<Arg> args);
@@ -91,5 +101,15 @@ private:
 [[nodiscard]] std::string format_message(Msg id, Lang lang, const MessageArgs& args = {});
 // A template with arguments (what format_message does once it has the template).
 [[nodiscard]] std::string format_template(std::string_view tmpl, Lang lang, const MessageArgs& args);
+
+// A sentence of the catalogue with its arguments, to be worded later in any language (as a Diagnostic keeps its
+// message): the dialect's evidence (essi/dialect.hpp), a share link's problems (essi/share_link.hpp).
+struct Message {
+    Message() = default;
+    Message(Msg m, MessageArgs a = {}) : msg(m), args(std::move(a)) {}
+    Msg msg = Msg::None;
+    MessageArgs args;
+    [[nodiscard]] std::string text(Lang lang) const { return format_message(msg, lang, args); }
+};
 
 }  // namespace essi

@@ -14,6 +14,8 @@
 #include <string_view>
 #include <vector>
 
+#include "essi/i18n.hpp"
+
 namespace essi {
 
 struct ShareView {
@@ -32,6 +34,7 @@ struct ShareLink {
     std::string input;                  // i=essi|eia: the format the sender read the tape as; empty: from the content
     std::optional<std::uint64_t> tape_bytes;  // b=BYTES: the tape's length, to tell a whole tape from a cut one
     std::vector<std::string> problems;  // each field that could not be read, in words (the rest is still used)
+    std::vector<Message> problem_messages;  // the same problems, to be worded in any language (problems: English)
     [[nodiscard]] bool has_tape() const { return !packed.empty() || !store_id.empty(); }
 };
 

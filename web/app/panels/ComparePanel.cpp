@@ -55,7 +55,7 @@ void compare_window(App& app) {
     ImGui::TextColored(ImVec4(0.31f, 0.86f, 1, 1), "%s", tr(Msg::UiBContours));
     ImGui::SameLine();
     ImGui::TextColored(ImVec4(1, 0.27f, 0.35f, 1), "%s", tr(Msg::UiADiffer));
-    ImGui::TextWrapped("%s", c->summary.c_str());
+    ImGui::TextWrapped("%s", diff_counts_text(c->diff, ui_lang()).c_str());
     ImGui::Separator();
     const std::size_t rows = c->diff.contours.size() - c->diff.count(ContourChange::Same);
     const float list_h = ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(std::max<std::size_t>(rows, 1) + 1);
@@ -64,7 +64,7 @@ void compare_window(App& app) {
     for (const ContourDiff& d : c->diff.contours) {
         if (d.change == ContourChange::Same) continue;
         ImGui::PushID(row++);
-        if (ImGui::Selectable(difference_text(c->a, c->b, d).c_str()))  // (essi diff's words)
+        if (ImGui::Selectable(difference_text(c->a, c->b, d, ui_lang()).c_str()))  // (essi diff's words)
             app.show_contour(static_cast<std::size_t>(d.a >= 0 ? d.a : d.b), d.a < 0);
         ImGui::PopID();
     }

@@ -82,7 +82,7 @@ void reading(App& app) {
                                                      s.auto_profile ? " (auto)" : ""}).c_str());
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     if (s.evidence.empty()) ImGui::TextWrapped("%s", tr(Msg::UiNoDialectCodes, {s.profile.name}).c_str());
-    for (const std::string& e : s.evidence) ImGui::TextWrapped("%s", e.c_str());
+    for (const Message& e : s.evidence_messages) ImGui::TextWrapped("%s", e.text(ui_lang()).c_str());
     ImGui::PopStyleColor();
     ImGui::TextUnformatted(tr(Msg::UiReadAs));
     for (const std::string& n : builtin_profile_names()) {
