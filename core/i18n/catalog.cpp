@@ -156,17 +156,24 @@ MessageArgs::MessageArgs(std::initializer_list<Arg> args) {
     }
 }
 
+namespace {
+// An argument that is a list of the kind `kind` whose items `packed` holds (MessageArgs::Arg::list).
+MessageArgs::Arg list_arg(char kind, std::string packed) {
+    MessageArgs::Arg a("");
+    a.owned = std::move(packed);
+    a.text = std::string_view{};
+    a.list = kind;
+    return a;
+}
+}  // namespace
+
 MessageArgs::Arg MessageArgs::Arg::alternatives(const std::vector<std::string>& items) {
     std::string packed;
     for (const std::string& item : items) {
         if (!packed.empty()) packed += kListItem;
         for (char c : item) packed += is_packing_byte(c) ? '?' : c;
     }
-    Arg a("");
-    a.owned = std::move(packed);
-    a.text = std::string_view{};
-    a.list = 'o';
-    return a;
+    return list_arg('o', std::move(packed));
 }
 
 MessageArgs::Arg MessageArgs::Arg::combined(const std::vector<Msg>& words) {
@@ -176,11 +183,7 @@ MessageArgs::Arg MessageArgs::Arg::combined(const std::vector<Msg>& words) {
         packed += kArgMsg;
         packed += std::to_string(static_cast<unsigned>(m));
     }
-    Arg a("");
-    a.owned = std::move(packed);
-    a.text = std::string_view{};
-    a.list = '+';
-    return a;
+    return list_arg('+', std::move(packed));
 }
 
 MessageArgs::Arg MessageArgs::Arg::messages(const std::vector<Message>& items) {
@@ -194,11 +197,7 @@ MessageArgs::Arg MessageArgs::Arg::messages(const std::vector<Message>& items) {
             else packed += c == kArgSep ? kNestedSep : c == kListItem ? kNestedItem : c;
         }
     }
-    Arg a("");
-    a.owned = std::move(packed);
-    a.text = std::string_view{};
-    a.list = ';';
-    return a;
+    return list_arg(';', std::move(packed));
 }
 
 MessageArgs::Arg::Arg(const Message& m) : Arg(messages({m})) {}
