@@ -194,6 +194,7 @@ constexpr Range kChordRange{1e-6, 1000};            // mm
 constexpr Range kSecondsRange{0, 1e6};              // dwell and pierce time, s
 constexpr Range kDwellUnitRange{1e-6, 3600};        // s: the unit of a dwell's value (0.001: milliseconds)
 constexpr Range kSpeedRange{1e-9, 1e9};             // mm/min
+constexpr Range kGapRange{0, 1e6};                  // mm: closure_gap_mm
 constexpr Range kPositionRange{-1e9, 1e9};          // mm: offsets and table limits
 constexpr Range kRotationRange{-360, 360};          // degrees
 constexpr std::size_t kMaxZeroOffsets = 100;        // entries of zero_offsets
@@ -378,6 +379,19 @@ void apply_keys(const json& j, Profile& p, std::vector<Message>& errors) {
     number("rapid_mm_min", p.rapid_mm_min, kSpeedRange);
     number("pierce_time_s", p.pierce_time_s, kSecondsRange);
     apply_placement_keys(j, p, errors);
+    number("closure_gap_mm", p.closure_gap_mm, kGapRange);
+    number("max_dwell_s", p.max_dwell_s, kSecondsRange);
+    boolean("lead_in_required", p.lead_in_required);
+    if (auto it = j.find("feed_range_mm_min"); it != j.end()) {
+        const bool pair = it->is_array() && it->size() == 2 && (*it)[0].is_number() && (*it)[1].is_number();
+        const double lo = pair ? (*it)[0].get<double>() : 0, hi = pair ? (*it)[1].get<double>() : 0;
+        if (pair && lo >= 0 && lo <= hi && hi <= kSpeedRange.max) {
+            p.feed_min_mm_min = lo;
+            p.feed_max_mm_min = hi;
+        } else {
+            errors.push_back({Msg::ProfileFeedRange, {number_text(kSpeedRange.max)}});
+        }
+    }
     if (auto it = j.find("table"); it != j.end()) {
         if (it->is_null()) {
             p.table.reset();
@@ -412,7 +426,8 @@ void apply_keys(const json& j, Profile& p, std::vector<Message>& errors) {
         "chord_tolerance_mm", "torch_direction",
         "optional_ignore", "rapid_single_block", "kerf_value", "kerf", "default_dwell_s", "dwell_unit_s", "feed_mm_min",
         "rapid_mm_min", "pierce_time_s", "setup_offset_x_mm", "setup_offset_y_mm", "zero_offsets", "zero_offset",
-        "plate_rotation_deg", "tool_offsets", "table", "eia"};
+        "plate_rotation_deg", "tool_offsets", "table", "eia", "closure_gap_mm", "feed_range_mm_min", "max_dwell_s",
+        "lead_in_required"};
     for (auto it = j.begin(); it != j.end(); ++it) {
         bool known = false;
         for (const char* k : kKnownKeys) known = known || it.key() == k;
@@ -542,6 +557,10 @@ std::string profile_to_json(const Profile& p) {
     } else {
         j["table"] = nullptr;
     }
+    j["closure_gap_mm"] = p.closure_gap_mm;
+    j["feed_range_mm_min"] = {p.feed_min_mm_min, p.feed_max_mm_min};
+    j["max_dwell_s"] = p.max_dwell_s;
+    j["lead_in_required"] = p.lead_in_required;
     j["eia"] = eia_to_json(p.eia);
     return j.dump(2, ' ', false, ordered_json::error_handler_t::replace);
 }

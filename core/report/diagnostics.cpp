@@ -42,6 +42,18 @@ constexpr std::array kCodes = {
     CodeRow{DiagCode::W502_ParabolaAsArcs, Msg::CodeW502},
     CodeRow{DiagCode::W503_RoundedToUnit, Msg::CodeW503},
     CodeRow{DiagCode::W504_ValueNotWritten, Msg::CodeW504},
+    CodeRow{DiagCode::W601_ContourGap, Msg::CodeW601},
+    CodeRow{DiagCode::E602_KerfIntoPart, Msg::CodeE602},
+    CodeRow{DiagCode::N603_KerfInsideLoneContour, Msg::CodeN603},
+    CodeRow{DiagCode::W604_CutBeforeInside, Msg::CodeW604},
+    CodeRow{DiagCode::E605_PartsCollide, Msg::CodeE605},
+    CodeRow{DiagCode::E606_CutCrossesCutPart, Msg::CodeE606},
+    CodeRow{DiagCode::W607_SamePathTwice, Msg::CodeW607},
+    CodeRow{DiagCode::W608_FeedOutOfRange, Msg::CodeW608},
+    CodeRow{DiagCode::W609_DwellTooLong, Msg::CodeW609},
+    CodeRow{DiagCode::W610_PierceWithoutLeadIn, Msg::CodeW610},
+    CodeRow{DiagCode::W611_CutLargerThanTable, Msg::CodeW611},
+    CodeRow{DiagCode::N612_ContoursOverlap, Msg::CodeN612},
     CodeRow{DiagCode::E115_TooManyErrors, Msg::CodeE115},
     CodeRow{DiagCode::E116_MisplacedMark, Msg::CodeE116},
     CodeRow{DiagCode::E117_TapeTooLarge, Msg::CodeE117},
@@ -96,6 +108,7 @@ bool is_error_code(DiagCode code) {
         case DiagCode::E302_ArcZeroRadius: case DiagCode::E303_ParabolaEndNotOnCurve:
         case DiagCode::E304_ParabolaZeroCurvature: case DiagCode::E306_KerfRadiusNegative: case DiagCode::E307_KerfGouge:
         case DiagCode::E401_LeavesTable: case DiagCode::E402_BadProfile:
+        case DiagCode::E602_KerfIntoPart: case DiagCode::E605_PartsCollide: case DiagCode::E606_CutCrossesCutPart:
             return true;
         default:
             return false;
@@ -106,7 +119,10 @@ bool is_error_code(DiagCode code) {
 
 namespace {
 // Codes whose default severity is a note: the ones named N... in the enum.
-bool is_note_code(DiagCode code) { return code == DiagCode::N403_OtherDialect; }
+bool is_note_code(DiagCode code) {
+    return code == DiagCode::N403_OtherDialect || code == DiagCode::N603_KerfInsideLoneContour ||
+           code == DiagCode::N612_ContoursOverlap;
+}
 }  // namespace
 
 std::string code_name(DiagCode code) {
@@ -136,7 +152,14 @@ std::string_view code_summary(DiagCode code, Lang lang) {
 
 Diagnostic make_diagnostic(Severity severity, DiagCode code, std::uint32_t line, std::uint32_t column, Msg msg,
                            MessageArgs args) {
-    Diagnostic d{severity, code, line, column, format_message(msg, Lang::En, args), msg, std::move(args)};
+    Diagnostic d;
+    d.severity = severity;
+    d.code = code;
+    d.line = line;
+    d.column = column;
+    d.message = format_message(msg, Lang::En, args);
+    d.msg = msg;
+    d.args = std::move(args);
     return d;
 }
 
@@ -144,6 +167,8 @@ std::string diagnostic_message(const Diagnostic& d, Lang lang) {
     if (lang == Lang::En || d.msg == Msg::None) return d.message;
     return format_message(d.msg, lang, d.args);
 }
+
+std::string related_message(const RelatedLocation& r, Lang lang) { return format_message(r.msg, lang, r.args); }
 
 std::vector<DiagCode> all_codes() {
     std::vector<DiagCode> v;

@@ -1,6 +1,7 @@
 #include "essi/render_svg.hpp"
 
 #include "essi/kerf.hpp"
+#include "essi/diagnostic_marks.hpp"
 
 #include <algorithm>
 #include <array>
@@ -32,16 +33,57 @@ std::string num(double v) {
     return s;
 }
 
-// Collects the drawing: one path per motion kind, pierce points, and the position at each source line.
+std::string_view mark_color(Severity s) {
+    switch (s) {
+        case Severity::Error: return kSvgErrorColor;
+        case Severity::Warning: return kSvgWarningColor;
+        default: return kSvgNoteColor;
+    }
+}
+
+// The lines the drawing keeps apart: every diagnostic's block, contour and related places.
+std::vector<LineRange> wanted_lines(const std::vector<Diagnostic>& diagnostics) {
+    std::vector<LineRange> ranges;
+    for (const Diagnostic& d : diagnostics) {
+        for (const LineRange& r : concerned_lines(d)) ranges.push_back(r);
+        for (const LineRange& r : related_lines(d)) ranges.push_back(r);
+    }
+    return merge_ranges(std::move(ranges));
+}
+
+std::string range_text(LineRange r) { return std::to_string(r.first) + "-" + std::to_string(r.last); }
+
+std::string polygon_path(const std::vector<Point>& polygon) {
+    std::string d;
+    for (const Point& p : polygon) d += (d.empty() ? "M" : "L") + num(p.x) + " " + num(-p.y);
+    return d.empty() ? d : d + "Z";
+}
+
+// Highlight opacities and widths (SVG pixels): the contour concerned, the related places (dashed, lighter).
+constexpr double kContourOpacity = 0.55, kContourWidthPx = 5;
+constexpr double kRelatedOpacity = 0.35, kRelatedWidthPx = 4;
+constexpr double kOverlapOpacity = 0.45;
+constexpr double kMarkFillOpacity = 0.3;
+
+// Collects the drawing: one path per motion kind, pierce points, the diagnostics' places and the lines they concern.
+// The diagnostics' places come from `places`; the geometry of the lines in `wanted` (merged ranges) is kept apart
+// too, by kind (the contours and related places highlighted, the problems-only view).
 class SvgSink : public MotionSink {
 public:
-    SvgSink(double tolerance, double chord_tolerance_mm)
-        : tolerance_(tolerance), kerf_layer_(*this), kerf_(kerf_layer_, chord_tolerance_mm) {}
+    SvgSink(double tolerance, double chord_tolerance_mm, DiagnosticPlaces& places, std::vector<LineRange> wanted)
+        : tolerance_(tolerance), places_(places), wanted_(std::move(wanted)), kerf_layer_(*this),
+          kerf_(kerf_layer_, chord_tolerance_mm) {}
 
     void on_motion(const MotionRecord& m) override {
         kerf_.motion(m);
-        if (first_line_pos_.find(m.line) == first_line_pos_.end()) first_line_pos_.emplace(m.line, m.start);
-        last_end_ = m.end;
+        places_.motion(m.line, m.end);
+        if (is_wanted(m.line)) {
+            std::string& d = line_paths_[m.line][static_cast<std::size_t>(m.kind)];
+            d += "M" + num(m.start.x) + " " + num(-m.start.y);
+            points_.clear();
+            flatten(m, tolerance_, points_, false);
+            for (const Point& p : points_) d += "L" + num(p.x) + " " + num(-p.y);
+        }
         if (m.kind == MotionKind::Cut && pierce_pending_) {
             pierces_.push_back(m.start);
             pierce_pending_ = false;
@@ -65,11 +107,18 @@ public:
         cutting_ = cutting_after;
     }
 
-    // Where the block at `line` starts: the start of the first motion at or after that line, else the end of
-    // the last motion.
-    [[nodiscard]] Point position_at(std::uint32_t line) const {
-        auto it = first_line_pos_.lower_bound(line);
-        return it == first_line_pos_.end() ? last_end_ : it->second;
+    // The path data of lines [r.first, r.last] (every kind, or one kind), from the lines kept.
+    [[nodiscard]] std::string lines_path(LineRange r) const {
+        std::string d;
+        for (auto it = line_paths_.lower_bound(r.first); it != line_paths_.end() && it->first <= r.last; ++it)
+            for (const std::string& k : it->second) d += k;
+        return d;
+    }
+    [[nodiscard]] std::string lines_path(LineRange r, MotionKind kind) const {
+        std::string d;
+        for (auto it = line_paths_.lower_bound(r.first); it != line_paths_.end() && it->first <= r.last; ++it)
+            d += it->second[static_cast<std::size_t>(kind)];
+        return d;
     }
 
     std::array<std::string, 4> paths_;  // by MotionKind: rapid, travel, cut, mark
@@ -109,13 +158,115 @@ private:
     std::array<Point, 4> last_{};
     std::array<bool, 4> has_last_{};
     std::vector<Point> points_;
-    std::map<std::uint32_t, Point> first_line_pos_;
-    Point last_end_;
+    [[nodiscard]] bool is_wanted(std::uint32_t line) const {
+        const auto it = std::upper_bound(wanted_.begin(), wanted_.end(), line,
+                                         [](std::uint32_t l, const LineRange& r) { return l < r.first; });
+        return it != wanted_.begin() && line <= std::prev(it)->last;
+    }
+    DiagnosticPlaces& places_;
+    std::vector<LineRange> wanted_;
+    std::map<std::uint32_t, std::array<std::string, 4>> line_paths_;  // by line, by MotionKind
     bool cutting_ = false;
     bool pierce_pending_ = false;
     KerfLayer kerf_layer_;
     KerfPath kerf_;
 };
+
+// The contour each diagnostic concerns, and its related places (dashed, lighter), under the marks.
+void write_highlights(std::string& s, const std::vector<Diagnostic>& diagnostics, const SvgSink& sink) {
+    s += "<g id=\"highlights\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+    for (std::size_t k = 0; k < diagnostics.size(); ++k) {
+        const Diagnostic& d = diagnostics[k];
+        const std::string color(mark_color(d.severity)), index = std::to_string(k);
+        if (d.contour_first > 0) {
+            const LineRange r{d.contour_first, std::max(d.contour_first, d.contour_last)};
+            const std::string path = sink.lines_path(r);
+            if (!path.empty())
+                s += "<path class=\"contour-highlight\" data-diagnostic=\"" + index + "\" data-lines=\"" + range_text(r) +
+                     "\" stroke=\"" + color + "\" stroke-opacity=\"" + num(kContourOpacity) + "\" stroke-width=\"" +
+                     num(kContourWidthPx) + "\" vector-effect=\"non-scaling-stroke\" d=\"" + path + "\"/>\n";
+        }
+        for (const RelatedLocation& rel : d.related) {
+            const LineRange r{rel.line, std::max(rel.line, rel.end_line)};
+            const std::string path = rel.line > 0 ? sink.lines_path(r) : std::string();
+            if (path.empty()) continue;
+            s += "<path class=\"related\" data-diagnostic=\"" + index + "\" data-lines=\"" + range_text(r) + "\" stroke=\"" +
+                 color + "\" stroke-opacity=\"" + num(kRelatedOpacity) + "\" stroke-width=\"" + num(kRelatedWidthPx) +
+                 "\" stroke-dasharray=\"6 4\" vector-effect=\"non-scaling-stroke\" d=\"" + path + "\"><title>" +
+                 xml_escape(related_message(rel, Lang::En)) + "</title></path>\n";
+        }
+    }
+    s += "</g>\n";
+}
+
+// A collision's overlapping area: the area inside every polygon of Diagnostic::overlap, exactly: the first
+// polygon filled inside nested groups clipped by each of the others.
+void write_overlaps(std::string& s, const std::vector<Diagnostic>& diagnostics) {
+    s += "<g id=\"overlaps\" stroke=\"none\">\n";
+    for (std::size_t k = 0; k < diagnostics.size(); ++k) {
+        const Diagnostic& d = diagnostics[k];
+        if (d.overlap.empty()) continue;
+        const std::string index = std::to_string(k);
+        const auto clip_id = [&](std::size_t j) { return "overlap-" + index + "-" + std::to_string(j); };
+        s += "<defs>";
+        for (std::size_t j = 1; j < d.overlap.size(); ++j)
+            s += "<clipPath id=\"" + clip_id(j) + "\" clipPathUnits=\"userSpaceOnUse\"><path d=\"" +
+                 polygon_path(d.overlap[j]) + "\"/></clipPath>";
+        s += "</defs>\n<g class=\"overlap\" data-diagnostic=\"" + index + "\" data-polygons=\"" +
+             std::to_string(d.overlap.size()) + "\">";
+        for (std::size_t j = 1; j < d.overlap.size(); ++j) s += "<g clip-path=\"url(#" + clip_id(j) + ")\">";
+        s += "<path class=\"overlap-area\" fill=\"" + std::string(mark_color(d.severity)) + "\" fill-opacity=\"" +
+             num(kOverlapOpacity) + "\" d=\"" + polygon_path(d.overlap[0]) + "\"/>";
+        for (std::size_t j = 1; j < d.overlap.size(); ++j) s += "</g>";
+        s += "</g>\n";
+    }
+    s += "</g>\n";
+}
+
+// A mark per diagnostic with a place: a circle of kSvgMarkRadiusPx SVG pixels (`px`: mm a pixel) in the severity's
+// colour (errors crossed), the diagnostic and its related places as the tooltip.
+void write_marks(std::string& s, const std::vector<Diagnostic>& diagnostics,
+                 const std::vector<std::optional<Point>>& places, const std::string& title, double px) {
+    const double r = kSvgMarkRadiusPx * px;
+    s += "<g id=\"diagnostics\" stroke-width=\"2\">\n";
+    for (std::size_t k = 0; k < diagnostics.size(); ++k) {
+        if (!places[k]) continue;
+        const Diagnostic& d = diagnostics[k];
+        const Point p = *places[k];
+        const std::string color(mark_color(d.severity));
+        std::string tip = diagnostic_line(title, d);
+        for (const RelatedLocation& rel : d.related) tip += "\n  " + related_message(rel, Lang::En);
+        s += "<g class=\"diagnostic " + std::string(severity_name(d.severity)) + "\" id=\"diagnostic-" + std::to_string(k) +
+             "\" data-index=\"" + std::to_string(k) + "\" data-code=\"" + code_name(d.code) + "\" data-line=\"" +
+             std::to_string(d.line) + "\" data-x=\"" + num(p.x) + "\" data-y=\"" + num(p.y) + "\" data-r-px=\"" +
+             num(kSvgMarkRadiusPx) + "\" stroke=\"" + color + "\" fill=\"" + color + "\" fill-opacity=\"" +
+             num(kMarkFillOpacity) + "\"><title>" + xml_escape(tip) + "</title>";
+        s += "<circle cx=\"" + num(p.x) + "\" cy=\"" + num(-p.y) + "\" r=\"" + num(r) + "\" vector-effect=\"non-scaling-stroke\"/>";
+        if (d.severity == Severity::Error)
+            s += "<path d=\"M" + num(p.x - r) + " " + num(-p.y - r) + "L" + num(p.x + r) + " " + num(-p.y + r) + "M" +
+                 num(p.x - r) + " " + num(-p.y + r) + "L" + num(p.x + r) + " " + num(-p.y - r) +
+                 "\" vector-effect=\"non-scaling-stroke\"/>";
+        s += "</g>\n";
+    }
+    s += "</g>\n";
+}
+
+// The problems only: what the diagnostics concern drawn again in its colours over the faint drawing.
+void write_concerned(std::string& s, const std::vector<LineRange>& wanted, const SvgSink& sink) {
+    s += "<g id=\"concerned\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+    const std::pair<MotionKind, std::string_view> kinds[] = {{MotionKind::Rapid, kSvgRapidColor},
+                                                              {MotionKind::Travel, kSvgTravelColor},
+                                                              {MotionKind::Mark, kSvgMarkColor},
+                                                              {MotionKind::Cut, kSvgCutColor}};
+    for (const auto& [kind, color] : kinds) {
+        std::string d;
+        for (const LineRange& r : wanted) d += sink.lines_path(r, kind);
+        if (!d.empty())
+            s += "<path class=\"concerned " + std::string(motion_kind_name(kind)) + "\" stroke=\"" + std::string(color) +
+                 "\" stroke-width=\"2\" vector-effect=\"non-scaling-stroke\" d=\"" + d + "\"/>\n";
+    }
+    s += "</g>\n";
+}
 
 }  // namespace
 
@@ -132,7 +283,10 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     const double tolerance = std::max(extent / 4000.0, std::max(profile.chord_tolerance_mm, kMinChordTolerance));
 
     // Pass 2: the drawing (the same pipeline with a sink; its result is the same as pass 1's).
-    SvgSink sink(tolerance, profile.chord_tolerance_mm);
+    const std::vector<Diagnostic>& diagnostics = options.diagnostics ? *options.diagnostics : out.result.diagnostics;
+    DiagnosticPlaces places(diagnostics);
+    const std::vector<LineRange> wanted = wanted_lines(diagnostics);
+    SvgSink sink(tolerance, profile.chord_tolerance_mm, places, wanted);
     {
         TapeChecker checker(bytes, profile, &sink);
         TapeReader reader(bytes, profile, format);
@@ -157,7 +311,8 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     const double height_px = std::max(1.0, std::round(options.width_px * vh / vw));
     const double marker_r = shown * 0.006;
 
-    const std::size_t errors = out.result.count(Severity::Error), warnings = out.result.count(Severity::Warning);
+    const std::size_t errors = out.result.count(Severity::Error), warnings = out.result.count(Severity::Warning),
+                      notes = out.result.count(Severity::Note);
     std::string s;
     s.reserve(bytes.size() * 2 + 4096);
     s += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
@@ -170,7 +325,8 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     s += "<rect id=\"background\" x=\"" + num(vx) + "\" y=\"" + num(vy) + "\" width=\"" + num(vw) + "\" height=\"" +
          num(vh) + "\" fill=\"#ffffff\"/>\n";
     // Machine y points up: every y below is negated.
-    s += "<g id=\"drawing\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+    s += "<g id=\"drawing\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\"" +
+         (options.problems_only ? " class=\"dimmed\" opacity=\"" + num(kSvgDimOpacity) + "\"" : std::string()) + ">\n";
     struct Layer {
         MotionKind kind;
         const char* name;
@@ -197,29 +353,16 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     if (!sink.kerf_path_.empty())
         s += "<path id=\"kerf\" class=\"kerf\" stroke=\"" + std::string(kSvgKerfColor) +
              "\" stroke-width=\"1\" vector-effect=\"non-scaling-stroke\" d=\"" + sink.kerf_path_ + "\"/>\n";
-    s += "</g>\n<g id=\"pierces\" fill=\"none\" stroke=\"" + std::string(kSvgPierceColor) + "\" stroke-width=\"1.5\">\n";
+    s += "</g>\n<g id=\"pierces\" fill=\"none\" stroke=\"" + std::string(kSvgPierceColor) + "\" stroke-width=\"1.5\"" +
+         (options.problems_only ? " opacity=\"" + num(kSvgDimOpacity) + "\"" : std::string()) + ">\n";
     for (const Point& p : sink.pierces_)
         s += "<circle class=\"pierce\" cx=\"" + num(p.x) + "\" cy=\"" + num(-p.y) + "\" r=\"" + num(marker_r) +
              "\" vector-effect=\"non-scaling-stroke\"/>\n";
-    s += "</g>\n<g id=\"diagnostics\" fill=\"none\" stroke-width=\"2\">\n";
-    for (const Diagnostic& d : out.result.diagnostics) {
-        if (d.severity == Severity::Note) continue;
-        const Point p = sink.position_at(d.line);
-        const bool error = d.severity == Severity::Error;
-        const double r = marker_r * 2;
-        const std::string x = num(p.x), y = num(-p.y);
-        s += "<g class=\"diagnostic " + std::string(error ? "error" : "warning") + "\" data-code=\"" +
-             code_name(d.code) + "\" data-line=\"" + std::to_string(d.line) + "\" data-x=\"" + num(p.x) +
-             "\" data-y=\"" + num(p.y) + "\" stroke=\"" + std::string(error ? kSvgErrorColor : kSvgWarningColor) +
-             "\"><title>" + xml_escape(diagnostic_line(options.title, d)) + "</title>";
-        s += "<circle cx=\"" + x + "\" cy=\"" + y + "\" r=\"" + num(r) + "\" vector-effect=\"non-scaling-stroke\"/>";
-        if (error)
-            s += "<path d=\"M" + num(p.x - r) + " " + num(-p.y - r) + "L" + num(p.x + r) + " " + num(-p.y + r) + "M" +
-                 num(p.x - r) + " " + num(-p.y + r) + "L" + num(p.x + r) + " " + num(-p.y - r) +
-                 "\" vector-effect=\"non-scaling-stroke\"/>";
-        s += "</g>\n";
-    }
     s += "</g>\n";
+    if (options.problems_only) write_concerned(s, wanted, sink);
+    write_overlaps(s, diagnostics);
+    write_highlights(s, diagnostics, sink);
+    write_marks(s, diagnostics, places.places(), options.title, vw / options.width_px);
 
     // Legend: below the drawing.
     const double lx = vx + margin * 0.5;
@@ -234,7 +377,8 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     ly += font * 1.3;
     s += "<text id=\"legend-numbers\" x=\"" + num(lx) + "\" y=\"" + num(ly) + "\" data-cut-length-mm=\"" + cutbuf +
          "\" data-pierces=\"" + std::to_string(st.pierces) + "\" data-time-s=\"" + timebuf + "\" data-errors=\"" +
-         std::to_string(errors) + "\" data-warnings=\"" + std::to_string(warnings) + "\">cut " + cutbuf + " mm, " +
+         std::to_string(errors) + "\" data-warnings=\"" + std::to_string(warnings) +
+         "\" data-notes=\"" + std::to_string(notes) + "\">cut " + cutbuf + " mm, " +
          std::to_string(st.pierces) + (st.pierces == 1 ? " pierce" : " pierces") + ", time " +
          format_duration(st.estimated_time_s) + ", " + std::to_string(errors) + (errors == 1 ? " error" : " errors") +
          ", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings") + "</text>\n";
@@ -257,6 +401,7 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     key("pierce", kSvgPierceColor, "");
     key("error", kSvgErrorColor, "");
     key("warning", kSvgWarningColor, "");
+    key("note", kSvgNoteColor, "");
     s += "</g>\n</svg>\n";
     out.svg = std::move(s);
     return out;

@@ -26,7 +26,8 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
 // ---- TapeChecker ----
 
 TapeChecker::TapeChecker(std::string_view bytes, const Profile& profile, MotionSink* also)
-    : stats_(profile), interpreter_(bytes, profile, stats_, also, result_.diagnostics) {}
+    : stats_(profile), plan_(profile), both_(also ? std::make_unique<PlanThenAlso>(plan_, *also) : nullptr),
+      interpreter_(bytes, profile, stats_, both_ ? static_cast<MotionSink*>(both_.get()) : &plan_, result_.diagnostics) {}
 
 TapeChecker::~TapeChecker() = default;
 
@@ -38,6 +39,9 @@ void TapeChecker::check_chunk(const Tape& chunk, std::span<const MotionMeasure> 
 
 CheckResult TapeChecker::finish() {
     interpreter_.finish();
+    std::vector<Diagnostic> plan = plan_.finish();
+    result_.diagnostics.insert(result_.diagnostics.end(), std::make_move_iterator(plan.begin()),
+                               std::make_move_iterator(plan.end()));
     result_.stats = stats_.stats();
     result_.stats.blocks = blocks_;
     sort_diagnostics(result_.diagnostics);

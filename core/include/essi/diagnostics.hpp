@@ -9,13 +9,15 @@
 #include <vector>
 
 #include "essi/i18n.hpp"
+#include "essi/motion.hpp"
 
 namespace essi {
 
 enum class Severity : std::uint8_t { Note, Warning, Error };
 
 // Stable diagnostic codes. The number never changes once released; the letter says the default
-// severity (E error, W warning, N note). 1xx: reading, 2xx: interpreting, 3xx: geometry, 4xx: machine/profile.
+// severity (E error, W warning, N note). 1xx: reading, 2xx: interpreting, 3xx: geometry, 4xx: machine/profile,
+// 5xx: conversion, 6xx: the cut plan.
 enum class DiagCode : std::uint16_t {
     // --- read ---
     E101_InvalidCharacter = 101,   // a byte that is not + - 0-9 (or a block end) outside a 3/4 section
@@ -83,6 +85,29 @@ enum class DiagCode : std::uint16_t {
     W502_ParabolaAsArcs = 502,        // a parabola written as circular arcs within the chord tolerance
     W503_RoundedToUnit = 503,         // a coordinate not on the target's unit grid, rounded to it
     W504_ValueNotWritten = 504,       // a function's value the target cannot carry (or not exactly)
+
+    // --- the cut plan (essi/plan.hpp) ---
+    W601_ContourGap = 601,            // a cut stops short of closing its contour by a small gap
+    E602_KerfIntoPart = 602,          // the kerf inside a part or outside a hole (the role is certain)
+    N603_KerfInsideLoneContour = 603, // a lone contour with the kerf inside: a plate hole, or a part too small
+    W604_CutBeforeInside = 604,       // a contour cut before one inside it (a part before its holes)
+    E605_PartsCollide = 605,          // two parts overlap or come closer than the kerf width
+    E606_CutCrossesCutPart = 606,     // a cut crosses a part already cut free
+    W607_SamePathTwice = 607,         // the same path cut twice
+    W608_FeedOutOfRange = 608,        // a cut at a feed outside the profile's feed_range_mm_min
+    W609_DwellTooLong = 609,          // a dwell longer than the profile's max_dwell_s
+    W610_PierceWithoutLeadIn = 610,   // a contour pierced on its own line (profile lead_in_required)
+    W611_CutLargerThanTable = 611,    // a cut larger than the table's travel
+    N612_ContoursOverlap = 612,       // two contours of unknown role overlap: a collision if both are parts
+};
+
+// Another place a diagnostic concerns: the other contour of a collision, the hole cut after its part, the block
+// that set a feed (`related` in the JSON, SARIF relatedLocations, the viewer's and the SVG's marks).
+struct RelatedLocation {
+    std::uint32_t line = 0;       // its first line
+    std::uint32_t end_line = 0;   // its last line (== line for one block)
+    Msg msg = Msg::None;          // what is there ("the hole, cut after it"), with its arguments
+    MessageArgs args;
 };
 
 struct Diagnostic {
@@ -93,7 +118,16 @@ struct Diagnostic {
     std::string message;       // what was found and what was expected, in English
     Msg msg = Msg::None;       // the catalogue row `message` was made from, and its arguments: the message
     MessageArgs args;          // in another language (diagnostic_message); None for a message made otherwise
+    // The cut plan's diagnostics (6xx, essi/plan.hpp) concern a contour and a place on the drawing:
+    std::uint32_t contour_first = 0, contour_last = 0;  // the lines of the contour concerned (0: none)
+    bool has_at = false;
+    Point at;                                  // where on the drawing (program mm, as the motions)
+    std::vector<RelatedLocation> related;      // the other places it concerns
+    // A collision's overlapping area: the area inside every one of these polygons (program mm).
+    std::vector<std::vector<Point>> overlap;
 };
+// The related place's text in `lang`.
+[[nodiscard]] std::string related_message(const RelatedLocation& r, Lang lang);
 
 // A diagnostic whose message is the catalogue's `msg` with `args` (its `message` in English).
 [[nodiscard]] Diagnostic make_diagnostic(Severity severity, DiagCode code, std::uint32_t line, std::uint32_t column,

@@ -106,6 +106,13 @@ struct Profile {
     Point powder_marker_offset;                    // tool_offsets.powder_marker (114)
     std::optional<TableLimits> table;              // travel limits in machine mm; none = unlimited
 
+    // The cut plan's checks (essi/plan.hpp, docs/diagnostics.md 6xx)
+    double closure_gap_mm = 5.0;                   // a cut ending this close to closing its contour: W601
+    double feed_min_mm_min = 50.0;                 // feed_range_mm_min: cutting feeds outside are W608
+    double feed_max_mm_min = 15000.0;
+    double max_dwell_s = 120.0;                    // a longer dwell: W609
+    bool lead_in_required = false;                 // a contour pierced on its own line: W610
+
     static constexpr const char* kDefaultZeroOffset = "G54";
     // The active zero offset (the entry `zero_offset` names; parse_profile makes sure it exists).
     [[nodiscard]] Point active_zero_offset() const {

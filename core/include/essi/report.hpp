@@ -15,6 +15,7 @@
 #include "essi/read.hpp"
 #include "essi/stats.hpp"
 #include "essi/motion.hpp"
+#include "essi/plan.hpp"
 #include "essi/profile.hpp"
 
 namespace essi {
@@ -55,9 +56,22 @@ public:
     // After the last chunk: the result (diagnostics sorted). Call once.
     [[nodiscard]] CheckResult finish();
 private:
+    // The cut plan, then `also`: the one more sink the interpreter feeds.
+    class PlanThenAlso final : public MotionSink {
+    public:
+        PlanThenAlso(CutPlan& plan, MotionSink& also) : plan_(plan), also_(also) {}
+        void on_motion(const MotionRecord& m) override { plan_.on_motion(m); also_.on_motion(m); }
+        void on_event(const MachineEvent& e) override { plan_.on_event(e); also_.on_event(e); }
+        void on_line(const UnitLine& l) override { plan_.on_line(l); also_.on_line(l); }
+    private:
+        CutPlan& plan_;
+        MotionSink& also_;
+    };
     CheckResult result_;
     StatsSink stats_;
-    Interpreter interpreter_;   // feeds the statistics directly, and `also` when there is one
+    CutPlan plan_;              // the cut plan's rules (essi/plan.hpp)
+    std::unique_ptr<PlanThenAlso> both_;
+    Interpreter interpreter_;   // feeds the statistics directly, and the plan (and `also`)
     unsigned long long blocks_ = 0;
 };
 

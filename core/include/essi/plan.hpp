@@ -1,0 +1,96 @@
+// Phase 6, plan: the cut plan checked, not only the syntax (docs/diagnostics.md, codes 6xx).
+//
+// A cut runs from the pierce (a cutting tool comes on) to the torch going off. It holds a closed loop when its path
+// comes back to a point it passed: the loop is the contour; what comes before it is the lead-in, what comes after
+// it the lead-out. A cut that comes back within closure_gap_mm but not within the arc tolerance is left open by a
+// small gap (W601).
+//
+// Roles by nesting, plate by plate: a contour inside another is a hole of it (odd depth), a contour inside a hole is
+// a part again (even depth); a contour that holds holes is a part. A lone contour (nothing inside it, inside
+// nothing) is most likely a part, but may be a hole in the plate: where it has kerf compensation, the side says
+// what the program treats it as (kerf outside: a part; inside: a hole in the plate); without compensation its role
+// is unknown. Rules that need a role are errors only where the role is known, at most a note otherwise.
+//
+// Plates: a programmed stop (0, 102) with the torch back where the program started ends a plate (as a nesting
+// program cuts several plates in one tape); parts of different plates never collide.
+//
+// Speed: the cuts are kept as their programmed motions (a small record each) until the plate ends; the plate's
+// contours go into a uniform grid over their boxes, so containment and collisions test only contours whose boxes
+// meet, never all pairs.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "essi/diagnostics.hpp"
+#include "essi/geom.hpp"
+#include "essi/motion.hpp"
+#include "essi/profile.hpp"
+#include "essi/read.hpp"
+
+namespace essi {
+
+// Arcs are flattened within this for containment and collision tests (mm): far below a kerf.
+constexpr double kPlanChordToleranceMm = 0.05;
+// Two programmed contours closer than this touch even without compensation (mm).
+constexpr double kPlanTouchToleranceMm = 0.01;
+// Two paths whose points all lie this close are the same path (mm).
+constexpr double kPlanSamePathToleranceMm = 0.01;
+// A stop ends a plate when the torch is this close to where the program started (mm).
+constexpr double kPlanHomeToleranceMm = 0.5;
+// Closure is looked for among a cut's motions by comparing each end with every earlier point up to this many
+// motions; longer cuts are compared with their first kPlanLeadMotions points only.
+constexpr std::size_t kPlanFullClosureMotions = 512;
+constexpr std::size_t kPlanLeadMotions = 4;
+
+enum class ContourRole : std::uint8_t {
+    Part,     // holds holes, or lies inside a hole (even depth >= 2)
+    Hole,     // inside another contour (odd depth)
+    LonePart, // lone, its kerf outside: a part by its program
+    LoneHole, // lone, its kerf inside: a hole in the plate by its program
+    Lone,     // lone, no kerf compensation: unknown
+};
+[[nodiscard]] const char* contour_role_name(ContourRole r);  // "part", "hole", "lone-part", "lone-hole", "lone"
+
+// One contour as the analysis found it (plan_contours, for tests and tools).
+struct PlanContour {
+    std::uint32_t cut_first_line = 0, cut_last_line = 0;    // the whole cut: pierce to torch off
+    std::uint32_t loop_first_line = 0, loop_last_line = 0;  // the loop's motions
+    int plate = 1;
+    int parent = -1;  // index (in the plate's contours, in cutting order) of the contour it lies in directly
+    int depth = 0;
+    ContourRole role = ContourRole::Lone;
+    double area_mm2 = 0;  // signed: > 0 counter-clockwise
+    KerfSide kerf = KerfSide::Off;
+    bool lead_in = false;
+};
+
+// The cut plan of one tape, fed the motion stream (a MotionSink): diagnostics come out when a plate ends and at
+// finish(). TapeChecker runs one on every tape it checks.
+class CutPlan final : public MotionSink {
+public:
+    explicit CutPlan(const Profile& profile, bool keep_contours = false);
+    ~CutPlan() override;
+    CutPlan(const CutPlan&) = delete;
+    CutPlan& operator=(const CutPlan&) = delete;
+
+    void on_motion(const MotionRecord& m) override;
+    void on_line(const UnitLine& l) override;
+    void on_event(const MachineEvent& e) override;
+    // After the last motion: the last plate analysed; the diagnostics found (unsorted). Call once.
+    [[nodiscard]] std::vector<Diagnostic> finish();
+    // The contours analysed, when keep_contours.
+    [[nodiscard]] const std::vector<PlanContour>& contours() const;
+
+private:
+    struct State;
+    std::unique_ptr<State> s_;
+};
+
+// The contours of a tape and their roles (reads and interprets it; for tests and tools).
+[[nodiscard]] std::vector<PlanContour> plan_contours(std::string_view bytes, const Profile& profile,
+                                                     InputFormat format = InputFormat::Essi);
+
+}  // namespace essi

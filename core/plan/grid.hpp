@@ -1,0 +1,93 @@
+// A uniform grid over boxes (the cut plan's spatial index): each box is listed in the cells it covers, and a query
+// visits each box whose cells meet the query's once.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "essi/geom.hpp"
+
+namespace essi::plan {
+
+class BoxGrid {
+public:
+    // About `cells_per_box` cells per box on average over the boxes' extent; at most kMaxCellsPerAxis a side.
+    explicit BoxGrid(const std::vector<Box>& boxes) : boxes_(boxes), stamp_(boxes.size(), 0) {
+        Box all;
+        for (const Box& b : boxes) all.add(b);
+        if (all.empty) return;
+        origin_ = {all.min_x, all.min_y};
+        const double w = std::max(all.max_x - all.min_x, 1e-9), h = std::max(all.max_y - all.min_y, 1e-9);
+        const double cell = std::sqrt(w * h / static_cast<double>(std::max<std::size_t>(boxes.size(), 1)));
+        cell_ = std::max(cell, std::max(w, h) / kMaxCellsPerAxis);
+        nx_ = static_cast<int>(w / cell_) + 1;
+        ny_ = static_cast<int>(h / cell_) + 1;
+        // Two passes (count, then fill): one array of ids, cell by cell.
+        start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
+        for_each_box_cell([&](std::size_t cell, int) { ++start_[cell + 1]; });
+        for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+        ids_.resize(start_.back());
+        std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+        for_each_box_cell([&](std::size_t cell, int id) { ids_[fill[cell]++] = id; });
+    }
+
+    // Calls f(id) once for each box listed in a cell the query box meets (the caller tests the boxes themselves).
+    template <class F>
+    void query(const Box& q, F&& f) {
+        if (q.empty || nx_ == 0) return;
+        ++generation_;
+        int x0, y0, x1, y1;
+        cells_of(q, x0, y0, x1, y1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const std::size_t c = static_cast<std::size_t>(y) * nx_ + x;
+                for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+                    const int id = ids_[k];
+                    if (stamp_[id] == generation_) continue;
+                    stamp_[id] = generation_;
+                    f(id);
+                }
+            }
+    }
+
+private:
+    static constexpr double kMaxCellsPerAxis = 1024;
+
+    void cells_of(const Box& b, int& x0, int& y0, int& x1, int& y1) const {
+        const auto cx = [&](double v) { return std::clamp(static_cast<int>(std::floor((v - origin_.x) / cell_)), 0, nx_ - 1); };
+        const auto cy = [&](double v) { return std::clamp(static_cast<int>(std::floor((v - origin_.y) / cell_)), 0, ny_ - 1); };
+        x0 = cx(b.min_x);
+        x1 = cx(b.max_x);
+        y0 = cy(b.min_y);
+        y1 = cy(b.max_y);
+    }
+    template <class F>
+    void for_each_box_cell(F&& f) const {
+        for (std::size_t id = 0; id < boxes_.size(); ++id) {
+            if (boxes_[id].empty) continue;
+            int x0, y0, x1, y1;
+            cells_of(boxes_[id], x0, y0, x1, y1);
+            for (int y = y0; y <= y1; ++y)
+                for (int x = x0; x <= x1; ++x) f(static_cast<std::size_t>(y) * nx_ + x, static_cast<int>(id));
+        }
+    }
+
+    const std::vector<Box>& boxes_;
+    Point origin_;
+    double cell_ = 1;
+    int nx_ = 0, ny_ = 0;
+    std::vector<std::uint32_t> start_;
+    std::vector<int> ids_;
+    std::vector<std::uint32_t> stamp_;
+    std::uint32_t generation_ = 0;
+};
+
+// Whether two boxes meet once `a` is grown by `margin` on every side.
+[[nodiscard]] inline bool boxes_meet(const Box& a, const Box& b, double margin) {
+    return !a.empty && !b.empty && a.min_x - margin <= b.max_x && b.min_x <= a.max_x + margin &&
+           a.min_y - margin <= b.max_y && b.min_y <= a.max_y + margin;
+}
+
+}  // namespace essi::plan

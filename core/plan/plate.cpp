@@ -1,0 +1,354 @@
+// One plate's cuts analysed (essi/plan.hpp): the same path twice, roles by nesting, the kerf side, the cutting
+// order, collisions and cuts across parts already cut free.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "essi/text.hpp"
+#include "grid.hpp"
+#include "plan_internal.hpp"
+
+namespace essi::plan {
+namespace {
+
+struct Node {
+    int parent = -1;
+    int depth = 0;
+    int children = 0;
+    bool duplicate = false;  // the same path as an earlier cut: left out of the nesting
+    ContourRole role = ContourRole::Lone;
+};
+
+bool is_part(ContourRole r) { return r == ContourRole::Part || r == ContourRole::LonePart; }
+bool collides_as_part(ContourRole r) { return is_part(r) || r == ContourRole::Lone; }
+
+class Plate {
+public:
+    Plate(std::vector<Cut>& cuts, const PlateSettings& st, std::vector<Diagnostic>& out)
+        : cuts_(cuts), st_(st), out_(out), nodes_(cuts.size()) {
+        for (const Cut& c : cuts_) max_width_ = std::max(max_width_, c.kerf_width_mm);
+    }
+
+    void run() {
+        gaps();
+        same_paths();
+        nest();
+        kerf_sides();
+        order();
+        collisions();
+        lead_ins();
+    }
+    void record(std::vector<PlanContour>& contours) const {
+        for (std::size_t i = 0; i < cuts_.size(); ++i) {
+            const Cut& c = cuts_[i];
+            if (!c.closed || nodes_[i].duplicate) continue;
+            PlanContour pc;
+            pc.cut_first_line = c.first_line;
+            pc.cut_last_line = c.last_line;
+            pc.loop_first_line = c.pieces[c.loop_begin].line;
+            pc.loop_last_line = c.pieces[c.loop_end - 1].line;
+            pc.plate = st_.plate;
+            pc.parent = nodes_[i].parent;
+            pc.depth = nodes_[i].depth;
+            pc.role = nodes_[i].role;
+            pc.area_mm2 = c.area_mm2;
+            pc.kerf = c.kerf;
+            pc.lead_in = c.loop_begin > 0;
+            contours.push_back(pc);
+        }
+    }
+
+private:
+    // --- helpers ---
+    Diagnostic about(DiagCode code, const Cut& c, Point at, Msg msg, MessageArgs args) const {
+        Diagnostic d = make_diagnostic(default_severity(code), code, c.first_line, 0, msg, std::move(args));
+        d.contour_first = c.first_line;
+        d.contour_last = c.last_line;
+        d.has_at = true;
+        d.at = at;
+        return d;
+    }
+    static RelatedLocation related(const Cut& c, Msg what) { return {c.first_line, c.last_line, what, {}}; }
+    bool usable(std::size_t i) const { return cuts_[i].closed && !nodes_[i].duplicate; }
+
+    // --- W601: a contour left open by a small gap ---
+    void gaps() {
+        for (const Cut& c : cuts_) {
+            if (c.closed || c.pieces.empty() || !(c.gap_mm > st_.closure_mm && c.gap_mm <= st_.gap_limit_mm)) continue;
+            const Point e = c.pieces.back().end;
+            Diagnostic d = about(DiagCode::W601_ContourGap, c, {(e.x + c.gap_from.x) / 2, (e.y + c.gap_from.y) / 2},
+                                 Msg::PlanGap, {number_text(c.gap_mm), c.gap_line, number_text(st_.closure_mm)});
+            d.line = c.pieces.back().line;
+            d.related.push_back({c.gap_line, c.gap_line, Msg::RelatedContourStart, {}});
+            out_.push_back(std::move(d));
+        }
+    }
+
+    // --- W607: the same path twice ---
+    // Candidates share their box and length (to kPlanSamePathToleranceMm, in buckets); they are the same when every
+    // point of one lies on the other.
+    void same_paths() {
+        std::map<std::tuple<long long, long long, long long, long long>, std::vector<int>> by_box;
+        const auto q = [](double v) { return std::llround(v / (4 * kPlanSamePathToleranceMm)); };
+        for (std::size_t i = 0; i < cuts_.size(); ++i) {
+            const Cut& c = cuts_[i];
+            if (c.pieces.empty()) continue;
+            auto& bucket = by_box[{q(c.box.min_x), q(c.box.min_y), q(c.box.max_x), q(c.box.max_y)}];
+            for (int j : bucket) {
+                if (!same_path(cuts_[static_cast<std::size_t>(j)], c)) continue;
+                nodes_[i].duplicate = true;
+                Diagnostic d = about(DiagCode::W607_SamePathTwice, c, c.pieces.front().end, Msg::PlanSamePath,
+                                     {cuts_[static_cast<std::size_t>(j)].first_line, cuts_[static_cast<std::size_t>(j)].last_line});
+                d.related.push_back(related(cuts_[static_cast<std::size_t>(j)], Msg::RelatedFirstCut));
+                out_.push_back(std::move(d));
+                break;
+            }
+            if (!nodes_[i].duplicate) bucket.push_back(static_cast<int>(i));
+        }
+    }
+    static std::vector<Point> path_points(const Cut& c, bool loop_only) {
+        std::vector<Point> pts;
+        if (loop_only) return c.polygon;
+        pts.push_back(c.pieces.front().start);
+        for (const Piece& p : c.pieces) flatten_piece(p, pts);
+        return pts;
+    }
+    static bool lies_on(const std::vector<Point>& pts, const std::vector<Point>& path, bool closed) {
+        for (Point p : pts) {
+            double best = std::numeric_limits<double>::infinity();
+            const std::size_t n = path.size();
+            for (std::size_t k = 0; k + (closed ? 0 : 1) < n && best > kPlanSamePathToleranceMm; ++k) {
+                Point where;
+                best = std::min(best, segment_distance(path[k], path[(k + 1) % n], p, p, where));
+            }
+            if (best > kPlanSamePathToleranceMm) return false;
+        }
+        return true;
+    }
+    static bool same_path(const Cut& a, const Cut& b) {
+        if (a.closed != b.closed) return false;
+        if (std::fabs(a.length_mm - b.length_mm) > 4 * kPlanSamePathToleranceMm && !a.closed) return false;
+        if (a.closed && std::fabs(std::fabs(a.area_mm2) - std::fabs(b.area_mm2)) >
+                            kPlanSamePathToleranceMm * (a.loop_box.max_x - a.loop_box.min_x + a.loop_box.max_y - a.loop_box.min_y) * 2)
+            return false;
+        const std::vector<Point> pa = path_points(a, a.closed), pb = path_points(b, b.closed);
+        return lies_on(pb, pa, a.closed) && lies_on(pa, pb, a.closed);
+    }
+
+    // --- roles by nesting ---
+    void nest() {
+        boxes_.assign(cuts_.size(), Box{});
+        for (std::size_t i = 0; i < cuts_.size(); ++i)
+            if (usable(i)) boxes_[i] = cuts_[i].loop_box;
+        grid_ = std::make_unique<BoxGrid>(boxes_);
+        for (std::size_t i = 0; i < cuts_.size(); ++i) {
+            if (!usable(i)) continue;
+            const Cut& a = cuts_[i];
+            const Point p0 = a.polygon.front(), p1 = a.polygon[a.polygon.size() / 2];
+            double best = std::numeric_limits<double>::infinity();
+            grid_->query(Box::of(p0, p0), [&](int j) {
+                const Cut& b = cuts_[static_cast<std::size_t>(j)];
+                if (static_cast<std::size_t>(j) == i || !b.loop_box.contains(a.loop_box)) return;
+                const double area = std::fabs(b.area_mm2);
+                if (area <= std::fabs(a.area_mm2) || area >= best) return;
+                if (!inside_polygon(b.polygon, p0) || !inside_polygon(b.polygon, p1)) return;
+                best = area;
+                nodes_[i].parent = j;
+            });
+        }
+        for (std::size_t i = 0; i < cuts_.size(); ++i) {
+            if (!usable(i)) continue;
+            int depth = 0;
+            for (int p = nodes_[i].parent; p >= 0; p = nodes_[static_cast<std::size_t>(p)].parent) ++depth;
+            nodes_[i].depth = depth;
+            if (nodes_[i].parent >= 0) ++nodes_[static_cast<std::size_t>(nodes_[i].parent)].children;
+        }
+        for (std::size_t i = 0; i < cuts_.size(); ++i) {
+            if (!usable(i)) continue;
+            Node& n = nodes_[i];
+            if (n.depth % 2 == 1) n.role = ContourRole::Hole;
+            else if (n.depth > 0 || n.children > 0) n.role = ContourRole::Part;
+            else if (cuts_[i].kerf == KerfSide::Off) n.role = ContourRole::Lone;
+            else n.role = kerf_inside(cuts_[i]) ? ContourRole::LoneHole : ContourRole::LonePart;
+        }
+    }
+    static bool kerf_inside(const Cut& c) { return (c.area_mm2 > 0) == (c.kerf == KerfSide::Left); }
+    bool ancestor(int a, int d) const {
+        for (int p = nodes_[static_cast<std::size_t>(d)].parent; p >= 0; p = nodes_[static_cast<std::size_t>(p)].parent)
+            if (p == a) return true;
+        return false;
+    }
+
+    // --- E602 / N603: the kerf side ---
+    void kerf_sides() {
+        for (std::size_t i = 0; i < cuts_.size(); ++i) {
+            const Cut& c = cuts_[i];
+            if (!usable(i) || c.kerf == KerfSide::Off) continue;
+            const bool inside = kerf_inside(c);
+            const ContourRole role = nodes_[i].role;
+            const bool ccw = c.area_mm2 > 0;
+            const Msg side = c.kerf == KerfSide::Left ? Msg::PlanSideLeft : Msg::PlanSideRight;
+            const Msg other = c.kerf == KerfSide::Left ? Msg::PlanSideRight : Msg::PlanSideLeft;
+            const Msg travel = ccw ? Msg::PlanCounterClockwise : Msg::PlanClockwise;
+            Msg msg = Msg::None;
+            DiagCode code = DiagCode::E602_KerfIntoPart;
+            if (role == ContourRole::Part && inside) msg = Msg::PlanKerfInsidePart;
+            else if (role == ContourRole::Hole && !inside) msg = Msg::PlanKerfOutsideHole;
+            else if (role == ContourRole::LoneHole) {
+                msg = Msg::PlanKerfInsideLone;
+                code = DiagCode::N603_KerfInsideLoneContour;
+            }
+            if (msg == Msg::None) continue;
+            Diagnostic d = about(code, c, c.polygon.front(), msg, {side, travel, other});
+            d.line = c.pieces[c.loop_begin].line;
+            out_.push_back(std::move(d));
+        }
+    }
+
+    // --- W604: a contour cut before one inside it ---
+    void order() {
+        std::map<int, std::vector<int>> late;  // parent -> its children cut after it, in cutting order
+        for (std::size_t i = 0; i < cuts_.size(); ++i) {
+            const int p = nodes_[i].parent;
+            if (usable(i) && p >= 0 && cuts_[static_cast<std::size_t>(p)].order < cuts_[i].order)
+                late[p].push_back(static_cast<int>(i));
+        }
+        for (const auto& [p, children] : late) {
+            const Cut& parent = cuts_[static_cast<std::size_t>(p)];
+            const Cut& first = cuts_[static_cast<std::size_t>(children.front())];
+            const bool part = nodes_[static_cast<std::size_t>(p)].role != ContourRole::Hole;
+            Diagnostic d = about(DiagCode::W604_CutBeforeInside, parent, parent.polygon.front(),
+                                 part ? Msg::PlanPartBeforeHoles : Msg::PlanHoleBeforeParts,
+                                 {children.size(), first.first_line, first.last_line});
+            for (int ch : children)
+                d.related.push_back(related(cuts_[static_cast<std::size_t>(ch)], part ? Msg::RelatedHoleAfter : Msg::RelatedPartAfter));
+            out_.push_back(std::move(d));
+        }
+    }
+
+    // --- E605 / N612 / E606: collisions and cuts across parts cut free ---
+    static double width_between(const Cut& a, const Cut& b) {
+        return std::max({a.kerf_width_mm, b.kerf_width_mm, kPlanTouchToleranceMm});
+    }
+    // The nearest approach of two closed polygons, stopping at the first below `limit`; `where` on `a`.
+    static double approach(const std::vector<Point>& a, bool a_closed, const std::vector<Point>& b, const Box& b_box,
+                           double limit, Point& where) {
+        double best = std::numeric_limits<double>::infinity();
+        const std::size_t na = a.size(), nb = b.size();
+        for (std::size_t i = 0; i + (a_closed ? 0 : 1) < na; ++i) {
+            const Point p = a[i], q = a[(i + 1) % na];
+            const Box s = Box::of(p, q);
+            if (!boxes_meet(s, b_box, limit)) continue;
+            for (std::size_t k = 0; k < nb; ++k) {
+                const Point r = b[k], t = b[(k + 1) % nb];
+                if (!boxes_meet(s, Box::of(r, t), limit)) continue;
+                Point w;
+                const double d = segment_distance(p, q, r, t, w);
+                if (d < best) {
+                    best = d;
+                    where = w;
+                    if (best < limit && best == 0) return best;
+                }
+            }
+        }
+        return best;
+    }
+    void collisions() {
+        std::set<std::pair<int, int>> reported;
+        for (std::size_t i = 0; i < cuts_.size(); ++i) {
+            if (!usable(i) || !collides_as_part(nodes_[i].role)) continue;
+            const Cut& a = cuts_[i];
+            double margin = std::max(a.kerf_width_mm, kPlanTouchToleranceMm);
+            Box q = a.loop_box;
+            q.min_x -= margin + max_width_; q.min_y -= margin + max_width_; q.max_x += margin + max_width_; q.max_y += margin + max_width_;
+            grid_->query(q, [&](int j) {
+                if (static_cast<std::size_t>(j) <= i || !collides_as_part(nodes_[static_cast<std::size_t>(j)].role)) return;
+                if (ancestor(j, static_cast<int>(i)) || ancestor(static_cast<int>(i), j)) return;
+                const Cut& b = cuts_[static_cast<std::size_t>(j)];
+                const double limit = width_between(a, b);
+                if (!boxes_meet(a.loop_box, b.loop_box, limit)) return;
+                Point where;
+                const double d = approach(b.polygon, true, a.polygon, a.loop_box, limit, where);
+                if (!(d < limit)) return;
+                reported.insert({static_cast<int>(i), j});
+                report_collision(a, b, nodes_[i].role, nodes_[static_cast<std::size_t>(j)].role, d, limit, where);
+            });
+        }
+        crossings(reported);
+    }
+    void report_collision(const Cut& a, const Cut& b, ContourRole ra, ContourRole rb, double d, double width, Point where) {
+        const bool known = ra != ContourRole::Lone && rb != ContourRole::Lone;
+        Diagnostic diag;
+        if (!known) {
+            if (d > kPlanTouchToleranceMm) return;  // (without compensation only a real overlap counts)
+            diag = about(DiagCode::N612_ContoursOverlap, b, where, Msg::PlanContoursOverlap, {a.first_line, a.last_line});
+            diag.related.push_back(related(a, Msg::RelatedOtherContour));
+        } else if (d == 0) {
+            diag = about(DiagCode::E605_PartsCollide, b, where, Msg::PlanPartsOverlap,
+                         {a.first_line, a.last_line, number_text(width)});
+            diag.related.push_back(related(a, Msg::RelatedOtherPart));
+        } else {
+            diag = about(DiagCode::E605_PartsCollide, b, where, Msg::PlanPartsTooClose,
+                         {number_text(d), a.first_line, a.last_line, number_text(width)});
+            diag.related.push_back(related(a, Msg::RelatedOtherPart));
+        }
+        if (d == 0) diag.overlap = {a.polygon, b.polygon};
+        out_.push_back(std::move(diag));
+    }
+    // E606: a cut (its whole path) crossing a part cut free before it.
+    void crossings(const std::set<std::pair<int, int>>& reported) {
+        for (std::size_t i = 0; i < cuts_.size(); ++i) {
+            const Cut& c = cuts_[i];
+            if (c.pieces.empty() || nodes_[i].duplicate) continue;
+            std::vector<Point> path;  // (made when a candidate needs it)
+            bool done = false;
+            grid_->query(c.box, [&](int j) {
+                const Cut& p = cuts_[static_cast<std::size_t>(j)];
+                if (done || static_cast<std::size_t>(j) == i || p.order >= c.order || !is_part(nodes_[static_cast<std::size_t>(j)].role))
+                    return;
+                if (reported.count({std::min<int>(j, static_cast<int>(i)), std::max<int>(j, static_cast<int>(i))})) return;
+                if (!boxes_meet(c.box, p.loop_box, kPlanTouchToleranceMm)) return;
+                if (path.empty()) path = path_points(c, false);
+                Point where;
+                if (approach(path, false, p.polygon, p.loop_box, kPlanTouchToleranceMm, where) > 0) return;
+                Diagnostic d = about(DiagCode::E606_CutCrossesCutPart, c, where, Msg::PlanCutCrossesPart,
+                                     {p.first_line, p.last_line});
+                d.related.push_back(related(p, Msg::RelatedPartCutFree));
+                out_.push_back(std::move(d));
+                done = true;
+            });
+        }
+    }
+
+    // --- W610: a contour pierced on its own line ---
+    void lead_ins() {
+        if (!st_.lead_in_required) return;
+        for (std::size_t i = 0; i < cuts_.size(); ++i) {
+            const Cut& c = cuts_[i];
+            if (!usable(i) || c.loop_begin > 0 || !(c.loop_start == c.pieces.front().start)) continue;
+            out_.push_back(about(DiagCode::W610_PierceWithoutLeadIn, c, c.loop_start, Msg::PlanNoLeadIn, {}));
+        }
+    }
+
+    std::vector<Cut>& cuts_;
+    const PlateSettings& st_;
+    std::vector<Diagnostic>& out_;
+    std::vector<Node> nodes_;
+    std::vector<Box> boxes_;
+    std::unique_ptr<BoxGrid> grid_;
+    double max_width_ = 0;  // the widest kerf of the plate's cuts
+};
+
+}  // namespace
+
+void analyse_plate(std::vector<Cut>& cuts, const PlateSettings& settings, std::vector<Diagnostic>& out,
+                   std::vector<PlanContour>* contours) {
+    Plate plate(cuts, settings, out);
+    plate.run();
+    if (contours) plate.record(*contours);
+}
+
+}  // namespace essi::plan
