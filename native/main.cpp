@@ -287,6 +287,7 @@ struct RenderCliOptions {
     std::string input = "auto";
     bool png = false;
     bool no_travel = false;
+    bool problems_only = false;
     double width = 1200;
     std::uint64_t max_size = essi::native::kDefaultMaxInputBytes;
 };
@@ -300,6 +301,7 @@ int run_render(const RenderCliOptions& o) {
     options.title = o.path == "-" ? std::string("-") : essi::display_text(std::filesystem::path(o.path).filename().string());
     options.width_px = o.width;
     options.show_travel = !o.no_travel;
+    options.problems_only = o.problems_only;
     const auto ends_with = [](const std::string& s, const char* ext) {
         const std::size_t n = std::strlen(ext);
         return s.size() > n && s.compare(s.size() - n, n, ext) == 0;
@@ -592,6 +594,8 @@ int main(int argc, char** argv) {
         ->type_name("svg|dxf");
     render->add_flag("--png", render_opts.png, "Write PNG (through rsvg-convert; also when OUT ends in .png)");
     render->add_flag("--no-travel", render_opts.no_travel, "Leave out travel and rapid motion");
+    render->add_flag("--problems-only", render_opts.problems_only,
+                     "Draw what the diagnostics concern in full and everything else faint");
     render->add_option("--width", render_opts.width, "Width of the picture in pixels")
         ->check(CLI::Range(16.0, 100000.0))
         ->capture_default_str();

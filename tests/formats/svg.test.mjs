@@ -61,10 +61,10 @@ test('SVG of a good tape: layers in their colours, pierces, y up, legend numbers
   assert.equal(Number(numbers.$['data-time-s']), Number(json.stats.estimated_time_s.toFixed(1)));
   assert.match(numbers._, new RegExp(`^cut ${json.stats.cut_length_mm.toFixed(3)} mm, ${json.stats.pierces} pierces, time \\d+:\\d\\d:\\d\\d, 0 errors, 0 warnings$`));
   const keys = all(svg, 'g').filter((g) => g.$?.class === 'key').map((g) => g.$['data-kind']);
-  assert.deepEqual(keys, ['cut', 'mark', 'travel', 'rapid', 'pierce', 'error', 'warning']);
+  assert.deepEqual(keys, ['cut', 'mark', 'travel', 'rapid', 'pierce', 'error', 'warning', 'note']);
 });
 
-test('SVG of a bad tape: each error marked at the start of its block', async () => {
+test('SVG of a bad tape: each error marked where its block ends (its motion\'s end point)', async () => {
   const { svg, json } = await render('examples/bad_arc_off_circle.esi');
   const marks = all(svg, 'g').filter((g) => /diagnostic error/.test(g.$?.class || ''));
   const errors = json.diagnostics.filter((d) => d.severity === 'error');
@@ -72,10 +72,13 @@ test('SVG of a bad tape: each error marked at the start of its block', async () 
   assert.equal(marks[0].$['data-code'], 'E301');
   assert.equal(Number(marks[0].$['data-line']), errors[0].line);
   assert.equal(marks[0].$.stroke, ERROR);
-  // The arc of line 12 starts where the cut of line 11 ends: (150, 50) mm in this tape.
-  assert.deepEqual([Number(marks[0].$['data-x']), Number(marks[0].$['data-y'])], [150, 50]);
+  // The arc of line 12 runs from (150, 50) to its end point off the circle, (200, 100) mm in this tape.
+  assert.deepEqual([Number(marks[0].$['data-x']), Number(marks[0].$['data-y'])], [200, 100]);
   const circle = marks[0].circle[0].$;
-  assert.deepEqual([Number(circle.cx), Number(circle.cy)], [150, -50]);
+  assert.deepEqual([Number(circle.cx), Number(circle.cy)], [200, -100]);
+  // A constant size in the SVG's pixels: the radius in user units times the pixels a unit.
+  const [, , vw] = svg.$.viewBox.split(' ').map(Number);
+  assert.ok(Math.abs(Number(circle.r) * Number(svg.$.width) / vw - Number(marks[0].$['data-r-px'])) < 0.01);
   assert.match(marks[0].title[0], /bad_arc_off_circle\.esi:12:1: error E301/);
   const numbers = all(svg, 'text').find((t) => t.$?.id === 'legend-numbers');
   assert.equal(numbers.$['data-errors'], '1');
