@@ -1849,3 +1849,125 @@ test('comments written in GB 18030 or UTF-8 are shown as written (detected per t
   assert.equal((await page.evaluate(() => essikit.state())).line_text, comment);
   await ctx.close();
 });
+
+// --- The diagnostics on the drawing (issue 15, point 5; docs/viewer.md "Problems on the drawing") ---
+
+const ERROR_MARK_RGB = [255, 102, 89];  // kMarkerColors[Error] (the problems list's error colour)
+
+// Pixels of the error mark's colour in a box of `half` pixels around (x, y).
+function markPixels(at, x, y, half = 14) {
+  let n = 0;
+  for (let dy = -half; dy <= half; ++dy)
+    for (let dx = -half; dx <= half; ++dx) if (near(at(x + dx, y + dy), ERROR_MARK_RGB, 30)) ++n;
+  return n;
+}
+
+test('every diagnostic has a mark where it is: the same size at two zooms, its message on hover, a click selects its block', async () => {
+  const page = await newPage();
+  const { state, motions } = await loadExample(page, 'bad_arc_off_circle.esi');
+  assert.equal(state.marks.count, state.diagnostics.filter((d) => d.line > 0).length);
+  const mark = state.marks.items.find((m) => m.code === 'E301');
+  assert.ok(mark, JSON.stringify(state.marks));
+  assert.equal(mark.line, 12);
+  // At the end point of line 12's motion (the arc that ends off its circle), where essikit.project draws it.
+  const arc = motions.find((m) => m.line === 12);
+  assert.deepEqual(mark.at_mm, arc.end);
+  const p = await page.evaluate(([x, y]) => essikit.project(x, y), arc.end);
+  assert.ok(Math.abs(mark.px[0] - p.x) < 0.01 && Math.abs(mark.px[1] - p.y) < 0.01);
+  // Drawn in the error colour, the same size at the fitted zoom and 4x closer (centred on the mark).
+  await page.mouse.move(5, 890);
+  await nextFrames(page, 3);
+  let at = await pixels(page, await page.screenshot({ path: path.join(shots, 'marks-fit.png') }));
+  const fitted = markPixels(at, p.x, p.y);
+  assert.ok(fitted > 60, `the mark has ${fitted} pixels of the error colour at (${p.x}, ${p.y})`);
+  await page.evaluate(([x, y, z]) => essikit.setView(x, y, z), [arc.end[0], arc.end[1], state.view.zoom * 4]);
+  await nextFrames(page, 3);
+  const q = await page.evaluate(([x, y]) => essikit.project(x, y), arc.end);
+  at = await pixels(page, await page.screenshot({ path: path.join(shots, 'marks-zoom4.png') }));
+  const zoomed = markPixels(at, q.x, q.y);
+  assert.ok(Math.abs(zoomed - fitted) <= 0.15 * fitted, `the mark has ${fitted} pixels fitted, ${zoomed} zoomed 4x`);
+  // Hover: the message in the viewer's language, and the mark is the hovered one.
+  await page.mouse.move(q.x + 2, q.y + 1);
+  await page.waitForFunction(() => essikit.state().marks.hovered !== null, null, { timeout: 10000 });
+  let s = await page.evaluate(() => essikit.state());
+  const e301 = state.diagnostics.find((d) => d.code === 'E301');
+  assert.equal(s.marks.hovered.code, 'E301');
+  assert.equal(s.marks.hovered.message, e301.message);
+  assert.ok(s.marks.active.includes(s.marks.hovered.diagnostic));
+  await page.screenshot({ path: path.join(shots, 'marks-hover.png') });
+  await page.evaluate(() => essikit.setLanguage('de'));
+  await nextFrames(page, 2);
+  s = await page.evaluate(() => essikit.state());
+  assert.notEqual(s.marks.hovered.message, e301.message, 'the hover text follows the language');
+  await page.evaluate(() => essikit.setLanguage('en'));
+  // A click on the mark selects its block (line 12), not the motion of line 13 that starts there.
+  await page.mouse.click(q.x + 2, q.y + 1);
+  await page.waitForFunction(() => { const t = essikit.state(); return t.selection && t.selection.line === 12; }, null,
+                             { timeout: 10000 });
+  s = await page.evaluate(() => essikit.state());
+  assert.equal(s.selection.motion, arc.index);
+  await page.close();
+});
+
+test('problems only: everything no diagnostic concerns drawn faint, the concerned block in full; key P; kept', async () => {
+  const page = await newPage();
+  const { motions } = await loadExample(page, 'bad_arc_off_circle.esi');
+  const arc = motions.find((m) => m.line === 12);
+  const other = motions.find((m) => m.kind === 'cut' && m.curve === 'line' && m.line > 13 && m.length_mm > 50);
+  const cutAt = async (file, m) => {
+    await page.mouse.move(5, 890);
+    await nextFrames(page, 3);
+    const at = await pixels(page, await page.screenshot({ path: path.join(shots, file) }));
+    const c = await page.evaluate(([x, y]) => essikit.project(x, y), m.mid);
+    const hits = [];
+    for (let dy = -1; dy <= 1; ++dy) for (let dx = -1; dx <= 1; ++dx) hits.push(at(c.x + dx, c.y + dy));
+    return hits.some((h) => near(h, CUT_RGB));
+  };
+  assert.equal((await page.evaluate(() => essikit.state())).problems_only, false);
+  assert.ok(await cutAt('problems-off.png', other), 'the cut is drawn in full');
+  await page.evaluate(() => essikit.setProblemsOnly(true));
+  assert.equal((await page.evaluate(() => essikit.state())).problems_only, true);
+  assert.ok(!(await cutAt('problems-only.png', other)), 'a cut no diagnostic concerns is faint');
+  assert.ok(await cutAt('problems-only.png', arc), 'the diagnostic\'s block stays in full');
+  await page.reload();
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 30000 });
+  assert.equal((await page.evaluate(() => essikit.state())).problems_only, true, 'kept across sessions');
+  await loadExample(page, 'bad_arc_off_circle.esi');
+  await page.keyboard.press('p');
+  await page.waitForFunction(() => !essikit.state().problems_only, null, { timeout: 10000 });
+  assert.ok(await cutAt('problems-key-p.png', other), 'P brings the rest back');
+  await page.close();
+});
+
+test('a collision: its overlapping area filled, its contour and the other part highlighted on hover', async () => {
+  const page = await newPage();
+  const { state } = await loadExample(page, 'plan_collision.esi');
+  const collisions = state.diagnostics.filter((d) => d.code === 'E605');
+  assert.equal(collisions.length, 2);
+  assert.equal(state.marks.count, 2);
+  assert.equal(state.marks.overlaps, 1);
+  // Parts 1 (60..260 x 50..150 mm) and 2 (240..440 x 50..150) overlap by 20 x 100 mm: the area between x 240 and
+  // 260 is filled in the error colour (translucent over the background); inside one part only it is not (points off
+  // the grid's lines).
+  await page.mouse.move(5, 890);
+  await nextFrames(page, 3);
+  const at = await pixels(page, await page.screenshot({ path: path.join(shots, 'collision.png') }));
+  const [bx, by] = await page.evaluate(() => { const s = essikit.state(); return [s.view.area[0] + 3, s.view.area[1] + 3]; });
+  const background = at(bx, by);
+  const inOverlap = await page.evaluate(() => essikit.project(253, 117));
+  const inOnePart = await page.evaluate(() => essikit.project(167, 117));
+  const fill = at(inOverlap.x, inOverlap.y);
+  assert.ok(fill[0] > background[0] + 60 && fill[0] > fill[2] + 40, `the overlap is ${fill}, the background ${background}`);
+  assert.ok(near(at(inOnePart.x, inOnePart.y), background, 20), `inside one part: ${at(inOnePart.x, inOnePart.y)}`);
+  // Hover the first collision's mark: its message and the other part among its related places.
+  const mark = state.marks.items.find((m) => m.line === collisions[0].line);
+  await page.mouse.move(mark.px[0] + 1, mark.px[1] + 1);
+  await page.waitForFunction(() => essikit.state().marks.hovered !== null, null, { timeout: 10000 });
+  const s = await page.evaluate(() => essikit.state());
+  assert.equal(s.marks.hovered.message, collisions[0].message);
+  assert.ok(s.marks.hovered.related.length >= 1, JSON.stringify(s.marks.hovered));
+  assert.equal(s.marks.hovered.overlap_polygons, 2);
+  assert.ok(s.marks.hovered.contour, 'a collision concerns a contour');
+  await page.screenshot({ path: path.join(shots, 'collision-hover.png') });
+  await page.close();
+});

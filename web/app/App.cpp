@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/Language.hpp"
+#include "app/Problems.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
 #include "essi/geom.hpp"
@@ -77,7 +78,13 @@ App::App(GLFWwindow* window) : window_(window) {
     for (const std::string& name : ui_.recent) fonts_.require_glyphs(name);
     ui_.layout = layout_from_setting(platform::load_text_setting(kLayoutSetting));
     machine_coordinates_ = platform::load_setting(kCoordinatesSetting).value_or(0) == 1;
+    layers_.problems_only = platform::load_setting(kProblemsOnlySetting).value_or(0) == 1;
     set_language(startup_language(), false);
+}
+
+void App::set_problems_only(bool on) {
+    layers_.problems_only = on;
+    platform::save_setting(kProblemsOnlySetting, on ? 1 : 0);
 }
 
 void App::set_orientation(int quarter_turns) {
@@ -279,6 +286,7 @@ void App::document_loaded() {
     if (ui_.recent.size() > kRecentNames) ui_.recent.resize(kRecentNames);
     platform::save_text_setting(kRecentSetting, nlohmann::json(ui_.recent).dump(-1, ' ', true));
     selection_.clear();
+    ui_.hovered_mark = kNoMark;
     ui_.banner = banner_for(d);
     view_.plate = coordinates().plate();
     view_.fit(d.bbox, d.origin);
@@ -377,7 +385,8 @@ void App::frame() {
     // The scene (drawn by render(), below the panels)
     const auto [fb_w, fb_h] = framebuffer_size();
     const SceneInputs in{view_,     fb_w,      fb_h,       framebuffer_scale(), panels::panel_color(renderer_.theme().background),
-                         layers_,   playback_, selection_, load_,           coordinates().shown(origin())};
+                         layers_,   playback_, selection_, load_,           coordinates().shown(origin()),
+                         ui_.hovered_mark};
     const bool prepared = scene_.prepare(in, renderer_, graphics_ok_);
     load_.note_frame(prepared && scene_.tape_drawn());
     in_frame_ = false;
@@ -486,6 +495,11 @@ void App::select_line(std::uint32_t line, bool reveal) {
         view_.cx = (box.min_x + box.max_x) / 2 - d->origin.x;
         view_.cy = (box.min_y + box.max_y) / 2 - d->origin.y;
     }
+}
+
+void App::select_diagnostic(std::size_t index) {
+    const Document* d = document();
+    if (d && index < d->diagnostics.size() && d->diagnostics[index].line > 0) select_line(d->diagnostics[index].line);
 }
 
 void App::select_motion(std::size_t motion) {

@@ -58,6 +58,7 @@ struct UiState {
     bool share_popup = false;
     Msg banner = Msg::None;     // a problem with the whole file ("not an ESSI tape ...": App::banner_text)
     Phrase link_problem;        // a share link that could not be opened (cut off, damaged, its tape gone ...)
+    std::size_t hovered_mark = ~std::size_t(0);  // the diagnostic's mark under the mouse (Document::marks), or none
     std::vector<ToolbarItem> toolbar;  // the toolbar's items (panels::toolbar)
     Rect toolbar_more;                 // its overflow menu's button (w 0: every item fits)
     bool toolbar_menu_open = false;
@@ -131,6 +132,12 @@ public:
     void set_view(double x, double y, double zoom);   // machine mm, px/mm; kept until a load completes
     void select_line(std::uint32_t line, bool reveal = true);
     void select_motion(std::size_t motion);
+    // A diagnostic chosen (its mark clicked, as a click in the problems list): its block selected and in view.
+    void select_diagnostic(std::size_t index);
+    // The problems-only view (Layers::problems_only, key P); kept across sessions.
+    void set_problems_only(bool on);
+    [[nodiscard]] bool problems_only() const { return layers_.problems_only; }
+    static constexpr const char* kProblemsOnlySetting = "problems_only";
     void set_layer(int layer, bool visible);  // window.essikit.setLayer: 0-3 MotionKind, 4 pierces, 5 start, 6-7 kerf
     // The machine's view orientation (View::turns, Orientation): kept across sessions (platform settings).
     void set_orientation(int quarter_turns);

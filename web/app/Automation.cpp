@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/App.hpp"
+#include "app/Problems.hpp"
 #include "essi/placement.hpp"
 #include "essi/diagnostics.hpp"
 #include "essi/geom.hpp"
@@ -21,6 +22,8 @@ constexpr int kLayerKerfBand = 7;  // the band of the cut's width
 constexpr int kLayerTable = 8;     // the table and the plate
 
 using nlohmann::json;
+
+constexpr std::size_t kStateMarks = 1000;  // marks listed in state().marks.items at most (the count is all of them)
 
 // The document's part of the state: statistics, diagnostics, sizes, memory, level of detail.
 void add_document(json& j, const Document& doc, const LoadController& load, const Renderer& renderer,
@@ -125,6 +128,45 @@ json toolbar_json(const UiState& ui) {
             {"menu_open", ui.toolbar_menu_open}};
 }
 
+// One diagnostic as a mark's tooltip says it: in the viewer's language.
+json mark_diagnostic_json(const Diagnostic& d, std::size_t index) {
+    json related = json::array();
+    for (const RelatedLocation& r : d.related)
+        related.push_back({{"line", r.line}, {"end_line", r.end_line}, {"message", related_message(r, ui_lang())}});
+    return {{"diagnostic", index},   {"code", code_name(d.code)}, {"severity", severity_name(d.severity)},
+            {"line", d.line},         {"message", diagnostic_message(d, ui_lang())}, {"related", related},
+            {"contour", d.contour_first > 0 ? json::array({d.contour_first, d.contour_last}) : json(nullptr)},
+            {"overlap_polygons", d.overlap.size()}};
+}
+
+// The diagnostics' marks (docs/viewer.md, "Problems on the drawing"): where each is (program mm and page pixels),
+// the one under the mouse, the diagnostics highlighted.
+json marks_json(const Document& doc, const View& view, std::size_t hovered, std::uint32_t selected_line) {
+    json items = json::array();
+    for (std::size_t k = 0; k < doc.marks.size() && k < kStateMarks; ++k) {
+        const DiagnosticMark& m = doc.marks[k];
+        const Diagnostic& d = doc.diagnostics[m.diagnostic];
+        const Point px = mark_screen(doc, view, m);
+        items.push_back({{"mark", k}, {"diagnostic", m.diagnostic}, {"code", code_name(d.code)},
+                         {"severity", severity_name(d.severity)}, {"line", d.line}, {"at_mm", {m.at.x, m.at.y}},
+                         {"px", {px.x, px.y}}, {"in_view", view.area.contains(static_cast<float>(px.x), static_cast<float>(px.y))}});
+    }
+    std::size_t overlaps = 0;
+    for (const Diagnostic& d : doc.diagnostics) overlaps += d.overlap.empty() ? 0 : 1;
+    json active = json::array();
+    for (const std::size_t k : active_diagnostics(doc, hovered, selected_line)) active.push_back(k);
+    return {{"count", doc.marks.size()},
+            {"radius_px", Renderer::kMarkRadiusPx},
+            {"hit_radius_px", kMarkHitRadiusPx},
+            {"hovered", hovered < doc.marks.size() ? mark_diagnostic_json(doc.diagnostics[doc.marks[hovered].diagnostic],
+                                                                          doc.marks[hovered].diagnostic)
+                                                   : json(nullptr)},
+            {"active", active},
+            {"overlaps", overlaps},
+            {"concerned_motion_runs", doc.concerned_motions.size()},
+            {"items", items}};
+}
+
 json selection_json(const Selection& s) {
     if (s.line == 0) return nullptr;
     return {{"line", s.line}, {"motion", s.motion == Selection::npos ? json(nullptr) : json(s.motion)}};
@@ -194,6 +236,8 @@ std::string App::state_json() const {
                  {"area", {view_.area.x, view_.area.y, view_.area.w, view_.area.h}},
                  {"query", share_query()}};
     j["layers"] = layers_json(layers_);
+    j["problems_only"] = layers_.problems_only;
+    j["marks"] = doc ? marks_json(*doc, view_, ui_.hovered_mark, selection_.line) : json(nullptr);
     j["playback"] = playback_json(playback_, doc, cs);
     j["measure"] = measure_json(input_.measure, cs);
     j["inspector"] = inspector_json(doc, selection_.line);

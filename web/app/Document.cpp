@@ -227,6 +227,39 @@ std::pair<std::size_t, std::size_t> Document::motions_of_line(std::uint32_t line
     return {a, b};
 }
 
+std::pair<std::size_t, std::size_t> Document::motions_of_lines(LineRange lines) const {
+    const std::size_t a = first_motion_at_or_after(lines.first);
+    const std::size_t b = lines.last == ~std::uint32_t(0) ? motions.size() : first_motion_at_or_after(lines.last + 1);
+    return {a, std::max(a, b)};
+}
+
+LineEnds Document::line_ends(std::uint32_t line) const {
+    LineEnds ends;
+    const auto [a, b] = motions_of_line(line);
+    if (a < b) ends.first_motion_end = end_of(a);
+    if (a > 0) ends.end_before = end_of(a - 1);
+    return ends;
+}
+
+void Document::place_diagnostics() {
+    marks.clear();
+    std::vector<LineRange> lines;
+    for (std::size_t k = 0; k < diagnostics.size(); ++k) {
+        const Diagnostic& d = diagnostics[k];
+        if (const auto at = diagnostic_place(d, d.line > 0 ? line_ends(d.line) : LineEnds{}))
+            marks.push_back({static_cast<std::uint32_t>(k), *at});
+        for (const LineRange& r : concerned_lines(d)) lines.push_back(r);
+        for (const LineRange& r : related_lines(d)) lines.push_back(r);
+    }
+    concerned_motions.clear();
+    for (const LineRange& r : merge_ranges(std::move(lines))) {
+        const auto [a, b] = motions_of_lines(r);
+        if (a == b) continue;
+        if (!concerned_motions.empty() && concerned_motions.back().second >= a) concerned_motions.back().second = static_cast<std::uint32_t>(b);
+        else concerned_motions.emplace_back(static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b));
+    }
+}
+
 bool Document::has_errors() const { return count(Severity::Error) > 0; }
 
 std::size_t Document::count(Severity s) const {
@@ -243,7 +276,8 @@ std::vector<std::pair<const char*, std::size_t>> Document::memory_parts() const 
         {"changes", jumps.capacity() * sizeof(jumps[0]) + kerfs.capacity() * sizeof(kerfs[0]) +
                         feeds.capacity() * sizeof(feeds[0])},
         {"pierces", pierces.capacity() * sizeof(std::uint32_t)},
-        {"diagnostics", diagnostics.capacity() * sizeof(Diagnostic)},
+        {"diagnostics", diagnostics.capacity() * sizeof(Diagnostic) + marks.capacity() * sizeof(DiagnosticMark) +
+                            concerned_motions.capacity() * sizeof(concerned_motions[0])},
         {"line_index", line_index.memory_bytes()},
         {"read_chunks", chunks.capacity() * sizeof(ReadChunk) + (chunks.empty() ? 0 : chunks.size() * chunks.front().reader.state_bytes()) +
                             reread_.memory_bytes()},
@@ -558,6 +592,7 @@ bool DocumentLoader::step(double budget_ms) {
         d.chunks.shrink_to_fit();
         if (!d.bbox.empty)
             d.origin = {std::round((d.bbox.min_x + d.bbox.max_x) / 2), std::round((d.bbox.min_y + d.bbox.max_y) / 2)};
+        d.place_diagnostics();  // (after the check: a few marks, not a pass over the motions)
         stage_ = Stage::Done;
     }
     return true;

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "essi/diagnostic_marks.hpp"
 #include "essi/diagnostics.hpp"
 #include "essi/i18n.hpp"
 #include "essi/geom.hpp"
@@ -82,6 +83,13 @@ struct LineBlocks {
     [[nodiscard]] std::size_t tape_index(std::size_t k) const { return chunk->first_block() + k; }
 };
 
+// A diagnostic drawn where it is: its index in Document::diagnostics and its place (program mm;
+// essi::diagnostic_place).
+struct DiagnosticMark {
+    std::uint32_t diagnostic = 0;
+    Point at;
+};
+
 // Never copied or moved by value (the ReadChunks refer to `bytes` and `profile`): held by a unique_ptr.
 struct Document {
     std::string name;
@@ -101,6 +109,10 @@ struct Document {
     std::vector<std::pair<std::uint32_t, float>> feeds;
     std::vector<std::uint32_t> pierces;   // motions that start where a cutting tool came on (display only)
     LineIndex line_index;                 // where each line starts (the core's rule, essi/lines.hpp)
+    // Made after the check (DocumentLoader's last stage): a mark per diagnostic that has a place, and the motions
+    // the diagnostics concern (their blocks, contours and related places: [first, last) ranges, sorted, merged).
+    std::vector<DiagnosticMark> marks;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> concerned_motions;
     std::vector<ReadChunk> chunks;        // the reader before each chunk of kReadChunkBlocks blocks
     std::size_t blocks = 0, block_words = 0;  // what the reader read (all chunks)
     std::size_t curves = 0;               // arcs and parabolas (the drawing depends on the zoom)
@@ -137,8 +149,13 @@ struct Document {
     [[nodiscard]] std::size_t block_of(std::size_t i) const;
     // First motion whose line is >= line; motions.size() when none.
     [[nodiscard]] std::size_t first_motion_at_or_after(std::uint32_t line) const;
-    // Motions [first, last) of one source line.
+    // Motions [first, last) of one source line, of the lines of a range.
     [[nodiscard]] std::pair<std::size_t, std::size_t> motions_of_line(std::uint32_t line) const;
+    [[nodiscard]] std::pair<std::size_t, std::size_t> motions_of_lines(LineRange lines) const;
+    // What the motion stream says about a line: the end of its first motion, the end of the last one before it.
+    [[nodiscard]] LineEnds line_ends(std::uint32_t line) const;
+    // The marks and the concerned motions of the diagnostics (after the check).
+    void place_diagnostics();
     // The torch's path of one source line's motions where kerf compensation is on or ends (docs/semantics.md §8):
     // the compensated pieces, worked out from where that compensation started (the inspector's second position).
     [[nodiscard]] std::vector<MotionRecord> torch_path_of_line(std::uint32_t line) const;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/App.hpp"
+#include "app/Problems.hpp"
 #include "essi/geom.hpp"
 #include "platform/Platform.hpp"
 
@@ -143,6 +144,7 @@ void Input::handle_characters(App& app) {
             case '-': view.zoom_at(view.ox(), view.oy(), 1 / kKeyZoom); break;
             case 'g': case 'G': layers.grid = !layers.grid; break;
             case 's': case 'S': app.share(); break;
+            case 'p': case 'P': app.set_problems_only(!app.problems_only()); break;
             case '1': layers.kind(MotionKind::Cut) = !layers.kind(MotionKind::Cut); break;
             case '2':  // travel and rapid together
                 layers.kind(MotionKind::Travel) = !layers.kind(MotionKind::Travel);
@@ -205,12 +207,17 @@ void Input::handle_canvas(App& app) {
     if (over && (ImGui::IsMouseDragging(1) || ImGui::IsMouseDragging(2))) view.pan_by(io.MouseDelta.x, io.MouseDelta.y);
 }
 
-// A click on the drawing: a measure point, or the motion under it selected (none: the selection cleared).
+// A click on the drawing: a measure point, a diagnostic's mark (its block selected, as in the problems list), or
+// the motion under it selected (none: the selection cleared).
 void Input::click(App& app, double sx, double sy) {
     const Document* doc = app.document();
     if (measure.active) {
         bool snapped = false;
         measure.click(snap(doc, app.view(), sx, sy, &snapped));
+        return;
+    }
+    if (const std::size_t mark = doc ? mark_at(*doc, app.view(), sx, sy) : kNoMark; mark != kNoMark) {
+        app.select_diagnostic(doc->marks[mark].diagnostic);
         return;
     }
     const std::size_t n = doc ? doc->motions.size() : 0;

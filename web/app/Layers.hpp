@@ -17,6 +17,9 @@ struct Layers {
     bool kerf = true;       // the compensated torch path (a tape with kerf compensation)
     bool kerf_band = true;  // the band of the cut's real width along it
     bool table = true;      // the machine's table (a profile with one) and the plate (the cut box)
+    // The problems only: what no diagnostic concerns drawn faint (the marks, the blocks, contours and related places
+    // of the diagnostics in full); kept across sessions (App::set_problems_only).
+    bool problems_only = false;
 
     [[nodiscard]] bool& kind(MotionKind k) { return kinds[static_cast<std::size_t>(k)]; }
     [[nodiscard]] bool kind(MotionKind k) const { return kinds[static_cast<std::size_t>(k)]; }
@@ -29,7 +32,8 @@ struct Layers {
     }
     // A bit per visible MarkerType drawn from the marker texture (DrawOptions::marker_mask).
     [[nodiscard]] int marker_mask() const {
-        return (pierces ? marker_bit(MarkerType::Pierce) : 0) | (start ? marker_bit(MarkerType::Start) : 0);
+        return (pierces ? marker_bit(MarkerType::Pierce) : 0) | (start ? marker_bit(MarkerType::Start) : 0) |
+               kDiagnosticMarkersMask;  // (the diagnostics' marks are always drawn)
     }
 };
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "app/Problems.hpp"
 #include "essi/geom.hpp"
 
 namespace essi::viewer {
@@ -80,6 +81,16 @@ void SceneAssembly::add_playback_and_selection(const SceneInputs& in, DrawOption
     o.selection_count = count;
 }
 
+// The diagnostics: the problems-only view's faint rest and full concerned motions, the active ones highlighted.
+void SceneAssembly::add_problems(const SceneInputs& in, DrawOptions& o) {
+    const Document* doc = in.load.document();
+    if (!doc || doc->diagnostics.empty()) return;
+    const PathBuffers& buffers = in.load.buffers();
+    o.dim = in.layers.problems_only;
+    if (o.dim) o.bright = concerned_runs(*doc, buffers);
+    o.highlights = diagnostic_highlights(*doc, buffers, active_diagnostics(*doc, in.hovered_mark, in.selection.line));
+}
+
 bool SceneAssembly::prepare(const SceneInputs& in, const Renderer& renderer, bool graphics_ok) {
     scene_.reset();
     if (!graphics_ok || in.fb_w <= 0 || in.fb_h <= 0) return false;
@@ -99,6 +110,7 @@ bool SceneAssembly::prepare(const SceneInputs& in, const Renderer& renderer, boo
     // While the first build runs nothing else of the new tape is drawn (the frames stay cheap).
     o.marker_mask = in.load.first_build() && !o.lod ? 0 : in.layers.marker_mask();
     add_playback_and_selection(in, o);
+    add_problems(in, o);
     const Document* doc = in.load.document();
     const GpuPath* path = in.load.drawn_path();
     tape_drawn_ = doc && (o.lod || path != nullptr);

@@ -28,6 +28,7 @@ struct SceneInputs {
     const Selection& selection;
     const LoadController& load;
     Point grid_origin;  // the document origin in the shown coordinates (Coordinates): the grid sits on their multiples
+    std::size_t hovered_mark;  // the diagnostic's mark under the mouse (UiState::hovered_mark)
 };
 
 class SceneAssembly {
@@ -55,6 +56,7 @@ private:
         bool operator==(const SceneFrame&) const = default;
     };
     static void add_playback_and_selection(const SceneInputs& in, DrawOptions& o);
+    static void add_problems(const SceneInputs& in, DrawOptions& o);
 
     std::optional<SceneFrame> scene_;       // this frame's (none: nothing to draw)
     bool whole_ = false;                    // its image is drawn whole, not filled over frames (a load at once)

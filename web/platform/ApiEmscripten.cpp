@@ -224,6 +224,11 @@ EMSCRIPTEN_KEEPALIVE void essi_set_comment_encoding(const char* name) {
     if (App* app = App::instance()) app->set_text_encoding(essi::parse_text_encoding(name ? name : ""));
 }
 
+// The problems-only view: 1 on (what no diagnostic concerns drawn faint), 0 off (kept across sessions).
+EMSCRIPTEN_KEEPALIVE void essi_set_problems_only(int on) {
+    if (App* app = App::instance()) app->set_problems_only(on != 0);
+}
+
 // The theme: 1 light, 0 dark (kept across sessions).
 EMSCRIPTEN_KEEPALIVE void essi_set_theme(int light) {
     if (App* app = App::instance()) app->set_light_theme(light != 0);

@@ -46,6 +46,7 @@ public:
     int operator()(const char* name) const { return glGetUniformLocation(program_, name); }
     [[nodiscard]] SceneProgram scene() const { return {program_, TargetUniforms::of(program_)}; }
     void set(const char* name, int v) const { glUniform1i((*this)(name), v); }
+    void set(const char* name, float v) const { glUniform1f((*this)(name), v); }
     void set(const char* name, const Rgba& c) const { glUniform4f((*this)(name), c.r, c.g, c.b, c.a); }
     void set(const char* name, const Rgba* colors, std::size_t n) const {
         glUniform4fv((*this)(name), static_cast<GLsizei>(n), &colors->r);
@@ -120,7 +121,8 @@ bool ScenePrograms::init(int tex_width) {
 
     const Setup p(path_id);
     path = {p.scene(), p("u_half_width"), p("u_layer_mask"), p("u_override"), p("u_extra_width"), p("u_first"),
-            p("u_band_half_mm")};
+            p("u_band_half_mm"), p("u_alpha")};
+    p.set("u_alpha", 1.f);
     p.set("u_colors", kPathColorTable.data(), kPathColors);
     p.set("u_segs", 0);   // texture unit 0: the end points
     p.set("u_kinds", 1);  // unit 1: the kinds
@@ -130,7 +132,10 @@ bool ScenePrograms::init(int tex_width) {
     grid = {g.scene(), g("u_world_origin"), g("u_step")};
 
     const Setup m(marker_id);
-    marker = {m.scene(), m("u_radius_px"), m("u_type_mask"), m("u_use_single"), m("u_single")};
+    marker = {m.scene(),          m("u_radius_px"),      m("u_type_mask"), m("u_use_single"),
+              m("u_single"),      m("u_mark_radius_px"), m("u_plain_alpha"), m("u_first")};
+    m.set("u_plain_alpha", 1.f);
+    m.set("u_first", 0);
     m.set("u_markers", 0);
     m.set("u_tex_width", tex_width);
 

@@ -34,14 +34,15 @@ struct SceneProgram {
 // shaders/path.*: the segments as thick lines.
 struct PathProgram : SceneProgram {
     int half_width = -1, layer_mask = -1, override_color = -1, extra_width = -1, first = -1, band_half_mm = -1;
+    int alpha = -1;  // the problems-only view's faint motions
 };
 // shaders/grid.*: the grid under the drawing.
 struct GridProgram : SceneProgram {
     int world_origin = -1, step = -1;
 };
-// shaders/marker.*: pierces, the start point and the playback tool.
+// shaders/marker.*: pierces, the start point, the playback tool and the diagnostics' marks.
 struct MarkerProgram : SceneProgram {
-    int radius_px = -1, type_mask = -1, use_single = -1, single = -1;
+    int radius_px = -1, type_mask = -1, use_single = -1, single = -1, mark_radius_px = -1, plain_alpha = -1, first = -1;
 };
 // shaders/blit.vert + lod.frag: the level-of-detail raster as one rectangle.
 struct LodProgram : SceneProgram {

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "essi/diagnostics.hpp"
 #include "essi/motion.hpp"
 
 namespace essi::viewer {
@@ -42,20 +43,30 @@ inline constexpr std::array<Rgba, kPathColors> kPathColorTable = {{
     {1.00f, 0.55f, 0.10f, 0.28f},  // kerf band: the cut's colour, translucent
 }};
 
-// The point markers (the marker program's `type`, a texel's third value).
-enum class MarkerType { Pierce = 0, Start = 1, Tool = 2 };
-inline constexpr std::size_t kMarkerTypes = 3;
+// The point markers (the marker program's `type`, a texel's third value): pierces, the start point, the playback
+// tool, and a mark per diagnostic in its severity's colour (Error, Warning, Note: the diagnostics' marks).
+enum class MarkerType { Pierce = 0, Start = 1, Tool = 2, Error = 3, Warning = 4, Note = 5 };
+inline constexpr std::size_t kMarkerTypes = 6;
 // Marker masks (DrawOptions::marker_mask, the shader's u_type_mask): a bit per MarkerType.
 [[nodiscard]] constexpr int marker_bit(MarkerType t) { return 1 << static_cast<int>(t); }
 inline constexpr int kAllMarkersMask = (1 << kMarkerTypes) - 1;
+inline constexpr int kDiagnosticMarkersMask =
+    marker_bit(MarkerType::Error) | marker_bit(MarkerType::Warning) | marker_bit(MarkerType::Note);
+[[nodiscard]] constexpr MarkerType severity_marker(Severity s) {
+    return s == Severity::Error ? MarkerType::Error : s == Severity::Warning ? MarkerType::Warning : MarkerType::Note;
+}
 
-// Colours by MarkerType.
+// Colours by MarkerType. The severities' are the problems list's (severity_color).
 inline constexpr std::array<Rgba, kMarkerTypes> kMarkerColors = {{
     {1.0f, 0.25f, 0.2f, 1.0f},  // pierce: red ring (and the pierce cells of the level of detail)
     {0.3f, 0.95f, 0.4f, 1.0f},  // start: green disc
     {1.0f, 1.0f, 1.0f, 1.0f},   // tool: white ring + cross
+    {1.0f, 0.4f, 0.35f, 1.0f},  // error: a disc with a cross
+    {1.0f, 0.8f, 0.3f, 1.0f},   // warning: a disc
+    {0.6f, 0.8f, 1.0f, 1.0f},   // note: a ring
 }};
 [[nodiscard]] constexpr const Rgba& marker_color(MarkerType t) { return kMarkerColors[static_cast<std::size_t>(t)]; }
+[[nodiscard]] constexpr const Rgba& severity_rgba(Severity s) { return marker_color(severity_marker(s)); }
 
 inline constexpr Rgba kBackground = {0.11f, 0.12f, 0.14f, 1.f};  // (the dark theme's)
 inline constexpr Rgba kSelectionColor = {0.25f, 0.95f, 1.0f, 1.f};

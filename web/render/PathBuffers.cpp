@@ -42,7 +42,7 @@ void PathBuffers::begin(const Document& doc, double tol) {
     first_segment.clear();
     first_segment.reserve(doc.motions.size() + 1);
     markers.clear();
-    markers.reserve(doc.pierces.size() + 1);
+    markers.reserve(doc.pierces.size() + 1 + doc.marks.size());
     for (const std::uint32_t i : doc.pierces) {
         const Point p = doc.start_of(i);
         markers.push_back({static_cast<float>(p.x - doc.origin.x), static_cast<float>(p.y - doc.origin.y),
@@ -52,6 +52,12 @@ void PathBuffers::begin(const Document& doc, double tol) {
         const Point s = doc.start_of(0);
         markers.push_back({static_cast<float>(s.x - doc.origin.x), static_cast<float>(s.y - doc.origin.y),
                            static_cast<float>(MarkerType::Start)});
+    }
+    // The diagnostics' marks last: drawn over the pierces and the start.
+    for (const DiagnosticMark& m : doc.marks) {
+        const MarkerType type = severity_marker(doc.diagnostics[m.diagnostic].severity);
+        markers.push_back({static_cast<float>(m.at.x - doc.origin.x), static_cast<float>(m.at.y - doc.origin.y),
+                           static_cast<float>(type)});
     }
 }
 

@@ -41,7 +41,7 @@ public:
 
     std::size_t segment_count = 0;             // segments made so far (all of them once complete)
     std::vector<std::uint32_t> first_segment;  // per motion, plus one at the end
-    std::vector<MarkerInstance> markers;       // pierces then the start point (until uploaded)
+    std::vector<MarkerInstance> markers;       // pierces, the start point, the diagnostics' marks (until uploaded)
     // The kerf layers (a tape with compensation): the compensated torch path and the band of the cut's width,
     // made by a KerfPath that follows the motions. A motion's compensated piece is final when the next motion is
     // known, so it is among that one's segments.

@@ -132,6 +132,8 @@ void Renderer::upload_markers(const std::vector<MarkerInstance>& markers) {
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kTexWidth, static_cast<GLsizei>(rows), 0, GL_RGBA, GL_FLOAT, data.data());
     glBindTexture(GL_TEXTURE_2D, 0);
     marker_count_ = n;
+    marks_first_ = n;
+    while (marks_first_ > 0 && markers[marks_first_ - 1].type >= static_cast<float>(MarkerType::Error)) --marks_first_;
     markers_version_ = ++version_counter_;
 }
 
@@ -283,7 +285,7 @@ void Renderer::draw_grid(const Target& t, double grid_step, Point world_origin) 
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void Renderer::begin_paths(const Target& t, int layer_mask, const DrawOptions& o) {
+void Renderer::begin_paths(const Target& t, int layer_mask, const DrawOptions& o, float alpha) {
     const PathProgram& p = programs_.path;
     glUseProgram(p.id);
     p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.rot);
@@ -296,6 +298,7 @@ void Renderer::begin_paths(const Target& t, int layer_mask, const DrawOptions& o
     glUniform1i(p.layer_mask, layer_mask);
     glUniform4f(p.override_color, 0, 0, 0, 0);
     glUniform1f(p.extra_width, 0);
+    glUniform1f(p.alpha, alpha);
 }
 
 void Renderer::draw_selection(const Target& t, const GpuPath& path, const DrawOptions& o) {
@@ -307,17 +310,51 @@ void Renderer::draw_selection(const Target& t, const GpuPath& path, const DrawOp
     draw_segments(path, o.selection_first, o.selection_first + o.selection_count);
 }
 
-void Renderer::draw_markers(const Target& t, int marker_mask) {
-    constexpr int kTextureMarkers = marker_bit(MarkerType::Pierce) | marker_bit(MarkerType::Start);
+// The markers of the texture: pierces, the start point and the diagnostics' marks (uploaded last: on top). `dim`:
+// the pierces and the start faint (the problems-only view).
+void Renderer::draw_markers(const Target& t, int marker_mask, bool dim) {
+    constexpr int kTextureMarkers = marker_bit(MarkerType::Pierce) | marker_bit(MarkerType::Start) | kDiagnosticMarkersMask;
     if (marker_count_ == 0 || (marker_mask & kTextureMarkers) == 0) return;
     const MarkerProgram& p = programs_.marker;
     glUseProgram(p.id);
     p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.rot);
     glUniform1f(p.radius_px, kMarkerRadiusPx * t.scale);
+    glUniform1f(p.mark_radius_px, kMarkRadiusPx * t.scale);
+    glUniform1f(p.plain_alpha, dim ? kDimAlpha : 1.f);
     glUniform1i(p.type_mask, marker_mask);
     glUniform1i(p.use_single, 0);
     glBindTexture(GL_TEXTURE_2D, marker_tex_);
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(marker_count_ * 6));
+}
+
+void Renderer::draw_bright(const Frame& f, const Target& t) {
+    if (f.path == nullptr || f.layer_mask == 0 || f.o.bright.empty()) return;
+    begin_paths(t, f.layer_mask, f.o);
+    for (const SegmentRun& r : f.o.bright) draw_segments(*f.path, r.first, std::min(r.first + r.count, f.limit), &t);
+}
+
+void Renderer::draw_highlights(const Target& t, const GpuPath& path, const DrawOptions& o) {
+    if (o.highlights.empty()) return;
+    begin_paths(t, kAllKindsMask, o);  // (the motions only)
+    for (const Highlight& h : o.highlights) {
+        glUniform4f(programs_.path.override_color, h.color.r, h.color.g, h.color.b, h.color.a);
+        glUniform1f(programs_.path.extra_width, h.extra_px * t.scale);
+        draw_segments(path, h.run.first, h.run.first + h.run.count, &t);
+    }
+}
+
+void Renderer::draw_marks_on_top(const Target& t) {
+    if (marks_first_ >= marker_count_) return;
+    const MarkerProgram& p = programs_.marker;
+    glUseProgram(p.id);
+    p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.rot);
+    glUniform1f(p.mark_radius_px, kMarkRadiusPx * t.scale);
+    glUniform1i(p.type_mask, kDiagnosticMarkersMask);
+    glUniform1i(p.use_single, 0);
+    glUniform1i(p.first, static_cast<GLint>(marks_first_));
+    glBindTexture(GL_TEXTURE_2D, marker_tex_);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>((marker_count_ - marks_first_) * 6));
+    glUniform1i(p.first, 0);
 }
 
 void Renderer::draw_tool(const Target& t, const DrawOptions& o) {
@@ -330,6 +367,7 @@ void Renderer::draw_tool(const Target& t, const DrawOptions& o) {
                 static_cast<float>(MarkerType::Tool));
     glUniform1i(p.type_mask, kAllMarkersMask);
     glUniform1f(p.radius_px, kToolRadiusPx * t.scale);
+    glUniform1f(p.plain_alpha, 1.f);
     glBindTexture(GL_TEXTURE_2D, marker_tex_);  // (a sampler must still be bound)
     glDrawArrays(GL_TRIANGLES, 0, 6);
 }
@@ -365,16 +403,19 @@ std::size_t Renderer::draw_scene(const Frame& f, const Target& t, std::size_t fr
     if (f.lod) {  // the raster has the paths and the pierces; the start marker is drawn as usual
         const bool pierces = (f.o.marker_mask & marker_bit(MarkerType::Pierce)) != 0;
         draw_lod(t, (f.layer_mask & kAllKindsMask) | (pierces ? LodRaster::kPierceBit : 0));
-        draw_markers(t, f.o.marker_mask & kStart);
+        draw_markers(t, f.o.marker_mask & (kStart | kDiagnosticMarkersMask), false);
         return f.limit;
     }
     std::size_t reached = f.limit;
     if (f.limit > from && f.layer_mask != 0) {  // every layer hidden: not one vertex to run
-        begin_paths(t, f.layer_mask, f.o);
+        begin_paths(t, f.layer_mask, f.o, f.o.dim ? kDimAlpha : 1.f);
         reached = draw_segments(*f.path, from, f.limit, &t, budget);
     }
     const bool markers_due = full || cache_markers_pending_;  // (a fill of the image ends with them)
-    if (markers_due && reached == f.limit) draw_markers(t, f.o.marker_mask);
+    if (markers_due && reached == f.limit) {
+        if (f.o.dim) draw_bright(f, t);
+        draw_markers(t, f.o.marker_mask, f.o.dim);
+    }
     cache_markers_pending_ = markers_due && reached < f.limit;
     return reached;
 }
@@ -410,7 +451,7 @@ void Renderer::update_image(const Frame& f) {
     const float s = f.scale;
     const SceneKey key{view.zoom, f.grid_step, f.world_origin, f.layer_mask, f.o.marker_mask, f.fb_w, f.fb_h, s,
                        view.area, f.path, f.path ? f.path->version : 0, markers_version_, lod_version_, f.lod,
-                       view.rotation()};
+                       view.rotation(), f.o.dim && !f.lod, f.o.dim && !f.lod ? f.o.bright : std::vector<SegmentRun>{}};
     // Where the image's top-left corner is now: where it was, moved by the pan since (whole pixels).
     const Point moved = pan_px(view, s);
     const float left = cache_left_ + std::round(static_cast<float>(moved.x));
@@ -500,7 +541,10 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
         draw_uncached(f);
     }
     // Overlays drawn every frame at the current view: the selection and the playback tool.
+    if (path != nullptr) draw_highlights(window, *path, o);
     if (path != nullptr && f.layer_mask != 0) draw_selection(window, *path, o);
+    // (what the highlights and the selection cover of the marks: a hovered or selected diagnostic's mark)
+    if (!o.highlights.empty() || o.selection_count > 0) draw_marks_on_top(window);
     draw_tool(window, o);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, 0);

@@ -23,6 +23,20 @@
 
 namespace essi::viewer {
 
+// Segments [first, first + count) of the drawn path.
+struct SegmentRun {
+    std::size_t first = 0, count = 0;
+    bool operator==(const SegmentRun&) const = default;
+};
+// Segments drawn over the scene every frame in one colour, `extra_px` wider on each side (a diagnostic's contour
+// and its related places, hovered or selected).
+struct Highlight {
+    SegmentRun run;
+    Rgba color;
+    float extra_px = 0;
+    bool operator==(const Highlight&) const = default;
+};
+
 struct DrawOptions {
     int layer_mask = kAllPathMask;      // a bit per MotionKind (kind_bit), kKerfPathBit, kKerfBandBit
     std::array<float, kKerfBandWidths> kerf_band_mm{};  // the kerf bands' widths (PathBuffers::kerf_widths)
@@ -34,6 +48,11 @@ struct DrawOptions {
     float framebuffer_scale = 1;
     bool lod = false;              // draw the level-of-detail raster instead of the segments (and pierces)
     Rgba panel_color = {0, 0, 0, 1};  // the window around the drawing area (the panels draw no background)
+    // The problems-only view: every motion and marker drawn at kDimAlpha, then `bright` (what the diagnostics
+    // concern) again in full, and the diagnostics' marks in full (not with the level of detail).
+    bool dim = false;
+    std::vector<SegmentRun> bright;
+    std::vector<Highlight> highlights;  // over everything but the selection
     bool operator==(const DrawOptions&) const = default;
 };
 
@@ -77,6 +96,8 @@ public:
     static constexpr std::size_t kSegmentsPerFrame = 150000;
     static constexpr std::size_t kWholeImage = ~std::size_t(0);  // draw()'s fill budget: the whole image at once
     static constexpr float kCullMarginPx = 8;  // a group's box meets the view when it is this close (line widths)
+    static constexpr float kDimAlpha = 0.18f;  // the problems-only view: what no diagnostic concerns
+    static constexpr float kMarkRadiusPx = 8;   // a diagnostic's mark (window pixels, the same at every zoom)
 
     bool init();  // compiles the programs and finds their uniforms; false (program_error()) when the GPU refuses them
     // The theme's colours (background, grid, tool marker); the cached image is drawn again.
@@ -140,6 +161,8 @@ private:
         std::uint64_t path_version = 0, markers_version = 0, lod_version = 0;
         bool lod = false;
         Rotation rot;
+        bool dim = false;
+        std::vector<SegmentRun> bright;
         bool operator==(const SceneKey&) const = default;
     };
     void add_page(GpuPath& path, std::size_t first, std::size_t rows);
@@ -151,9 +174,12 @@ private:
                               std::size_t budget = ~std::size_t(0));
     [[nodiscard]] static Target grid_target(const Target& t, const View& view);
     void draw_grid(const Target& t, double grid_step, Point world_origin);
-    void begin_paths(const Target& t, int layer_mask, const DrawOptions& o);
+    void begin_paths(const Target& t, int layer_mask, const DrawOptions& o, float alpha = 1);
     [[nodiscard]] Point pan_px(const View& view, float s) const;
-    void draw_markers(const Target& t, int marker_mask);
+    void draw_markers(const Target& t, int marker_mask, bool dim);
+    void draw_bright(const Frame& f, const Target& t);  // the problems-only view's concerned segments
+    void draw_highlights(const Target& t, const GpuPath& path, const DrawOptions& o);
+    void draw_marks_on_top(const Target& t);  // the diagnostics' marks again, over the highlights
     void draw_selection(const Target& t, const GpuPath& path, const DrawOptions& o);
     void draw_tool(const Target& t, const DrawOptions& o);
     void draw_lod(const Target& t, int mask);
@@ -189,6 +215,7 @@ private:
     unsigned empty_vao_ = 0;     // the programs pull their data by gl_VertexID: no attributes
     unsigned marker_tex_ = 0;    // RGBA32F x y type, kTexWidth a row
     std::size_t marker_count_ = 0;
+    std::size_t marks_first_ = 0;  // the diagnostics' marks are markers [marks_first_, marker_count_)
 };
 
 }  // namespace essi::viewer

@@ -30,6 +30,7 @@ constexpr Shortcut kShortcuts[] = {
     {Msg::UiKeyTouch, nullptr, Msg::UiKeyTouchDoes},
     {Msg::None, "G", Msg::UiKeyGridDoes},
     {Msg::None, "S", Msg::UiKeyShareDoes},
+    {Msg::None, "P", Msg::UiKeyProblemsOnlyDoes},
     {Msg::UiKeyCtrlO, nullptr, Msg::UiKeyCtrlODoes},
     {Msg::UiKeyCtrlV, nullptr, Msg::UiKeyCtrlVDoes},
     {Msg::UiKeyDrop, nullptr, Msg::UiKeyDropDoes},

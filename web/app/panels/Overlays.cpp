@@ -1,5 +1,6 @@
-// Drawn over the drawing area every frame: the grid's labels and scale bar, the direction of the selected motions,
-// and the measure (its points, its line and its window).
+// Drawn over the drawing area every frame: the grid's labels and scale bar, the diagnostics' marks' hover and
+// overlapping areas (ProblemMarks.cpp), the direction of the selected motions, and the measure (its points, its line
+// and its window).
 #include <algorithm>
 #include <cmath>
 
@@ -159,6 +160,7 @@ void overlays(App& app) {
     if (app.layers().grid) grid_labels(dl, view, cs, o, app.renderer().theme());
     if (doc && app.layers().table) table_and_plate(dl, *doc, view, o);
     compare_overlay(dl, app);
+    problem_marks(dl, app);
     const Selection& sel = app.selection();
     if (doc && (sel.motion != Selection::npos || sel.line > 0)) selection_arrows(dl, *doc, sel, view);
     if (app.input().measure.active) measure(dl, doc, app.input().measure, view, cs, o);

@@ -50,6 +50,9 @@ void toolbar(App& app);
 void tape_panel(App& app);
 void source_panel(App& app);
 void overlays(App& app);
+// The diagnostics' marks (ProblemMarks.cpp): the hovered mark and its tooltip, the active marks' rings, the
+// collisions' overlapping areas; called by overlays().
+void problem_marks(ImDrawList* dl, App& app);
 void messages(App& app);
 // Compare mode (ComparePanel.cpp): the differences' window, and B's contours over the drawing.
 void compare_window(App& app);

@@ -135,7 +135,9 @@ void layer_switch(const std::string& label, bool& on, const ImVec4* colour, bool
     ImGui::Checkbox(label.c_str(), &on);
 }
 
-void layers(Layers& layers, const Document* doc) {
+void layers(App& app) {
+    Layers& layers = app.layers();
+    const Document* doc = app.document();
     bool first = true;
     for (MotionKind k : {MotionKind::Cut, MotionKind::Mark, MotionKind::Travel, MotionKind::Rapid}) {
         const ImVec4 c = opaque(kind_color(k));
@@ -153,6 +155,10 @@ void layers(Layers& layers, const Document* doc) {
         layer_switch(tr_id(Msg::UiLayerKerfPath, "kerf path"), layers.kerf, &path);
         layer_switch(tr_id(Msg::UiLayerKerfWidth, "kerf width"), layers.kerf_band, &band);
     }
+    bool problems = app.problems_only();  // (kept across sessions: through App)
+    layer_switch(tr_id(Msg::UiProblemsOnly, "problems only"), problems, nullptr);
+    if (problems != app.problems_only()) app.set_problems_only(problems);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiProblemsOnlyTip));
 }
 
 void playback(App& app) {
@@ -213,7 +219,7 @@ void diagnostics(App& app) {
             ImGui::PushID(i);
             ImGui::PushStyleColor(ImGuiCol_Text, severity_color(d.severity));
             const std::string label = tr(Msg::UiDiagLabel, {code_name(d.code), d.line, d.column});
-            if (ImGui::Selectable(label.c_str(), d.line != 0 && d.line == app.selection().line)) app.select_line(d.line);
+            if (ImGui::Selectable(label.c_str(), d.line != 0 && d.line == app.selection().line)) app.select_diagnostic(static_cast<std::size_t>(i));
             ImGui::PopStyleColor();
             if (ImGui::BeginPopupContextItem("diagnostic menu")) {
                 if (ImGui::Selectable(tr(Msg::UiCopyThisProblem))) app.copy(App::CopyWhat::Diagnostic, static_cast<std::uint32_t>(i));
@@ -239,7 +245,7 @@ void tape_panel(App& app) {
     };
     if (header(Msg::UiReading, "Reading")) reading(app);
     if (header(Msg::UiStatistics, "Statistics")) statistics(app);
-    if (header(Msg::UiLayers, "Layers")) layers(app.layers(), app.document());
+    if (header(Msg::UiLayers, "Layers")) layers(app);
     if (header(Msg::UiPlayback, "Playback")) playback(app);
     if (header(Msg::UiDiagnostics, "Diagnostics")) diagnostics(app);
     ImGui::End();

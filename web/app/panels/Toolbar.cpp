@@ -130,7 +130,7 @@ void export_menu(App& app) {
     ImGui::EndPopup();
 }
 
-// The side panels: shown or hidden ([ and ]), the theme, the widths back to their defaults.
+// The side panels: shown or hidden ([ and ]), the theme, the problems-only view (P), the widths back to their defaults.
 void panels_menu(App& app) {
     if (!ImGui::BeginPopup("panels")) return;
     PanelLayout l = app.ui().layout;
@@ -138,6 +138,10 @@ void panels_menu(App& app) {
     changed |= ImGui::Checkbox((std::string(tr(Msg::UiPanelRight)) + "  ]###right").c_str(), &l.right_shown);
     bool light = app.light_theme();
     if (ImGui::Checkbox(tr_id(Msg::UiLightTheme, "light").c_str(), &light)) app.set_light_theme(light);
+    bool problems = app.problems_only();
+    if (ImGui::Checkbox((std::string(tr(Msg::UiProblemsOnly)) + "  P###problems").c_str(), &problems))
+        app.set_problems_only(problems);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiProblemsOnlyTip));
     if (ImGui::Selectable(tr_id(Msg::UiDefaultLayout, "default").c_str())) {
         l = PanelLayout{};
         changed = true;

@@ -49,11 +49,8 @@ void hint_wrapped(const char* text) {
 }
 
 ImVec4 severity_color(Severity s) {
-    switch (s) {
-        case Severity::Error: return ImVec4(1.0f, 0.4f, 0.35f, 1);
-        case Severity::Warning: return ImVec4(1.0f, 0.8f, 0.3f, 1);
-        default: return ImVec4(0.6f, 0.8f, 1.0f, 1);
-    }
+    const Rgba& c = severity_rgba(s);  // (the marks' colours: render/Palette.hpp)
+    return ImVec4(c.r, c.g, c.b, c.a);
 }
 
 namespace panels {
