@@ -22,6 +22,7 @@ public:
         const double w = std::max(all.max_x - all.min_x, 1e-9), h = std::max(all.max_y - all.min_y, 1e-9);
         const double cell = std::sqrt(w * h / static_cast<double>(std::max<std::size_t>(boxes.size(), 1)));
         cell_ = std::max(cell, std::max(w, h) / kMaxCellsPerAxis);
+        inverse_cell_ = 1 / cell_;
         nx_ = static_cast<int>(w / cell_) + 1;
         ny_ = static_cast<int>(h / cell_) + 1;
         // Two passes (count, then fill): one array of ids, cell by cell.
@@ -56,8 +57,9 @@ private:
     static constexpr double kMaxCellsPerAxis = 1024;
 
     void cells_of(const Box& b, int& x0, int& y0, int& x1, int& y1) const {
-        const auto cx = [&](double v) { return std::clamp(static_cast<int>(std::floor((v - origin_.x) / cell_)), 0, nx_ - 1); };
-        const auto cy = [&](double v) { return std::clamp(static_cast<int>(std::floor((v - origin_.y) / cell_)), 0, ny_ - 1); };
+        // (a cast truncates towards zero: below the origin is cell 0 either way)
+        const auto cx = [&](double v) { return std::clamp(static_cast<int>((v - origin_.x) * inverse_cell_), 0, nx_ - 1); };
+        const auto cy = [&](double v) { return std::clamp(static_cast<int>((v - origin_.y) * inverse_cell_), 0, ny_ - 1); };
         x0 = cx(b.min_x);
         x1 = cx(b.max_x);
         y0 = cy(b.min_y);
@@ -76,7 +78,7 @@ private:
 
     const std::vector<Box>& boxes_;
     Point origin_;
-    double cell_ = 1;
+    double cell_ = 1, inverse_cell_ = 1;
     int nx_ = 0, ny_ = 0;
     std::vector<std::uint32_t> start_;
     std::vector<int> ids_;

@@ -9,7 +9,8 @@
 namespace essi::plan {
 namespace {
 
-double dist(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
+double dist2(Point a, Point b) { return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y); }
+double dist(Point a, Point b) { return std::sqrt(dist2(a, b)); }
 
 // The point of segment a-b nearest to p.
 Point nearest_on_segment(Point a, Point b, Point p) {
@@ -20,26 +21,25 @@ Point nearest_on_segment(Point a, Point b, Point p) {
     return {a.x + t * dx, a.y + t * dy};
 }
 
-// Where the end of piece j comes back onto the path before it: a piece i < j whose start it reaches (or, for the
-// last piece, a line it ends on: an overcut). Returns i and the point, or false.
-bool returns_at(const Cut& cut, std::size_t j, std::size_t first_candidates, double closure_mm, std::size_t& at,
+// Where the end of piece j comes back onto the path before it: the start of a piece i <= j (among the first
+// `candidates`), or, for the last piece, a line it ends on (an overcut). Returns i and the point, or false.
+bool returns_at(std::span<const Piece> p, std::size_t j, std::size_t candidates, double closure2, std::size_t& at,
                 Point& where) {
-    const Point e = cut.pieces[j].end;
-    const std::size_t limit = std::min(j + 1, first_candidates);
+    const Point e = p[j].end;
+    const std::size_t limit = std::min(j + 1, candidates);
     for (std::size_t i = 0; i < limit; ++i) {
-        if (i == j && !cut.pieces[j].arc) break;  // (a line cannot end at its own start)
-        if (dist(cut.pieces[i].start, e) <= closure_mm) {
+        if (i == j && !p[j].arc) break;  // (a line cannot end at its own start)
+        if (dist2(p[i].start, e) <= closure2) {
             at = i;
-            where = cut.pieces[i].start;
+            where = p[i].start;
             return true;
         }
     }
-    if (j + 1 != cut.pieces.size()) return false;
-    for (std::size_t i = 0; i + 1 < j && i < first_candidates; ++i) {
-        const Piece& p = cut.pieces[i];
-        if (p.arc) continue;
-        const Point q = nearest_on_segment(p.start, p.end, e);
-        if (dist(q, e) <= closure_mm) {
+    if (j + 1 != p.size()) return false;
+    for (std::size_t i = 0; i + 1 < j && i < candidates; ++i) {
+        if (p[i].arc) continue;
+        const Point q = nearest_on_segment(p[i].start, p[i].end, e);
+        if (dist2(q, e) <= closure2) {
             at = i;
             where = q;
             return true;
@@ -48,84 +48,193 @@ bool returns_at(const Cut& cut, std::size_t j, std::size_t first_candidates, dou
     return false;
 }
 
-void flatten_loop(Cut& cut) {
-    cut.polygon.clear();
-    cut.polygon.push_back(cut.loop_start);
-    for (std::size_t k = cut.loop_begin; k < cut.loop_end; ++k) {
-        Piece p = cut.pieces[k];
-        if (k == cut.loop_begin && !p.arc) p.start = cut.loop_start;  // (a loop closing on a line: from the point)
-        flatten_piece(p, cut.polygon);
+// The loop's exact signed area (a chord's shoelace term, plus the circular segment of each arc) and box.
+void measure_loop(Cut& cut, std::span<const Piece> p) {
+    double twice = 0;
+    Box box;
+    box.add(cut.loop_start);
+    for (std::uint32_t k = cut.loop_begin; k < cut.loop_end; ++k) {
+        const Piece& q = p[k];
+        const Point a = k == cut.loop_begin ? cut.loop_start : q.start;
+        twice += a.x * q.end.y - q.end.x * a.y;
+        if (q.arc) {
+            twice += q.radius * q.radius * (q.sweep - std::sin(q.sweep));
+            box.add(piece_box(q));
+        } else {
+            box.add(q.end);
+        }
     }
-    if (cut.polygon.size() > 1) cut.polygon.pop_back();  // (the end is the start)
-    cut.loop_box = Box{};
-    for (Point p : cut.polygon) cut.loop_box.add(p);
-    cut.area_mm2 = polygon_area(cut.polygon);
+    cut.area_mm2 = twice / 2;
+    cut.loop_box = box;
 }
 
 // The open cut's gap: the point it passed nearest to its end, among those far enough back along the path that
 // they are not simply where it is going (more than 3 gaps of path).
-void find_gap(Cut& cut, double gap_limit_mm) {
-    const Point e = cut.pieces.back().end;
+void find_gap(Cut& cut, std::span<const Piece> p, double gap_limit_mm) {
+    const Point e = p.back().end;
     double behind = 0;  // path length from a piece's start to the end
-    cut.gap_mm = std::numeric_limits<double>::infinity();
-    for (std::size_t k = cut.pieces.size(); k-- > 0;) {
-        behind += cut.pieces[k].length_mm;
+    double best2 = std::numeric_limits<double>::infinity();
+    for (std::size_t k = p.size(); k-- > 0;) {
+        behind += piece_length(p[k]);
         if (behind <= 3 * gap_limit_mm) continue;
-        const double d = dist(cut.pieces[k].start, e);
-        if (d < cut.gap_mm) {
-            cut.gap_mm = d;
-            cut.gap_from = cut.pieces[k].start;
-            cut.gap_line = cut.pieces[k].line;
+        const double d2 = dist2(p[k].start, e);
+        if (d2 < best2) {
+            best2 = d2;
+            cut.gap_from = p[k].start;
+            cut.gap_line = p[k].line;
         }
     }
+    cut.gap_mm = std::sqrt(best2);
 }
 
 }  // namespace
 
+double piece_length(const Piece& p) { return p.arc ? std::fabs(p.sweep) * p.radius : dist(p.start, p.end); }
+
 void flatten_piece(const Piece& p, std::vector<Point>& out) {
-    if (!p.arc) {
+    if (!p.arc || p.radius <= kPlanChordToleranceMm) {
         out.push_back(p.end);
         return;
     }
-    MotionRecord m;
-    m.curve = CurveKind::Arc;
-    m.start = p.start;
-    m.end = p.end;
-    m.centre = p.centre;
-    m.radius = p.radius;
-    m.end_radius = dist(p.end, p.centre);
-    m.sweep = p.sweep;
-    m.ccw = p.sweep > 0;
-    flatten(m, kPlanChordToleranceMm, out, /*include_start*/ false);
+    // A chord over angle a has a sagitta r(1 - cos(a/2)) <= r a^2 / 8: steps of sqrt(8 tol / r) stay within tol.
+    // The points turn about the centre by one rotation each (no trigonometry a point).
+    const double max_step = std::sqrt(8 * kPlanChordToleranceMm / p.radius);
+    const int n = std::clamp(static_cast<int>(std::ceil(std::fabs(p.sweep) / max_step)), 1, kMaxFlattenSegments);
+    const double step = p.sweep / n, c = std::cos(step), s = std::sin(step);
+    double vx = p.start.x - p.centre.x, vy = p.start.y - p.centre.y;
+    for (int k = 1; k < n; ++k) {
+        const double nx = vx * c - vy * s;
+        vy = vx * s + vy * c;
+        vx = nx;
+        out.push_back({p.centre.x + vx, p.centre.y + vy});
+    }
+    out.push_back(p.end);
 }
 
-void close_loop(Cut& cut, double closure_mm, double gap_limit_mm) {
+void close_loop(Cut& cut, std::span<const Piece> pieces, double closure_mm, double gap_limit_mm) {
+    const std::span<const Piece> p = pieces.subspan(cut.first_piece, cut.end_piece - cut.first_piece);
     cut.closed = false;
-    const std::size_t n = cut.pieces.size();
-    const std::size_t candidates = n <= kPlanFullClosureMotions ? n : kPlanLeadMotions;
-    for (std::size_t j = 0; j < n && !cut.closed; ++j) {
-        std::size_t at = 0;
-        Point where;
-        if (returns_at(cut, j, candidates, closure_mm, at, where)) {
-            cut.closed = true;
-            cut.loop_begin = at;
-            cut.loop_end = j + 1;
+    const std::size_t n = p.size();
+    const double closure2 = closure_mm * closure_mm;
+    // First the loops that begin on the lead-in's first pieces (nearly every contour), then any other point passed.
+    for (const std::size_t candidates : {std::min(n, kPlanLeadMotions), n <= kPlanFullClosureMotions ? n : std::size_t{0}}) {
+        for (std::size_t j = 0; j < n && candidates > 0; ++j) {
+            std::size_t at = 0;
+            Point where;
+            if (!returns_at(p, j, candidates, closure2, at, where)) continue;
+            cut.loop_begin = cut.first_piece + static_cast<std::uint32_t>(at);
+            cut.loop_end = cut.first_piece + static_cast<std::uint32_t>(j + 1);
             cut.loop_start = where;
+            measure_loop(cut, pieces);
+            cut.closed = std::fabs(cut.area_mm2) > 0;  // (out and back along itself encloses nothing)
+            if (cut.closed) return;
+        }
+        if (candidates >= n) break;
+    }
+    find_gap(cut, p, gap_limit_mm);
+}
+
+const std::vector<Point>& loop_polygon(Cut& cut, std::span<const Piece> pieces) {
+    if (cut.has_polygon) return cut.polygon;
+    cut.has_polygon = true;
+    cut.polygon.push_back(cut.loop_start);
+    for (std::uint32_t k = cut.loop_begin; k < cut.loop_end; ++k) {
+        Piece p = pieces[k];
+        if (k == cut.loop_begin) p.start = cut.loop_start;  // (a loop closing on a line: from the point)
+        flatten_piece(p, cut.polygon);
+    }
+    if (cut.polygon.size() > 1) cut.polygon.pop_back();  // (the end is the start)
+    return cut.polygon;
+}
+
+std::vector<Point> path_points(const Cut& cut, std::span<const Piece> pieces) {
+    std::vector<Point> pts;
+    if (cut.end_piece == cut.first_piece) return pts;
+    pts.push_back(pieces[cut.first_piece].start);
+    for (std::uint32_t k = cut.first_piece; k < cut.end_piece; ++k) flatten_piece(pieces[k], pts);
+    return pts;
+}
+
+namespace {
+
+// A number in [0, 4) that grows with the angle of (x, y) from the +x axis (cheaper than atan2, same order).
+double diamond_angle(double x, double y) {
+    if (y >= 0) return x >= 0 ? y / (x + y) : 1 - x / (-x + y);
+    return x < 0 ? 2 - y / (-x - y) : 3 + x / (x - y);
+}
+// How far w is turned from u in the arc's direction, as a diamond angle.
+double turned(Point u, Point w, bool ccw) {
+    const double dot = u.x * w.x + u.y * w.y, cross = u.x * w.y - u.y * w.x;
+    return diamond_angle(dot, ccw ? cross : -cross);
+}
+
+// Crossings of the ray from p towards +x with the arc (a point of the circle at p's height is on the arc when it
+// is turned from the start no further than the end is).
+int arc_ray_crossings(const Piece& arc, Point a, Point p) {
+    const double dy = p.y - arc.centre.y;
+    const double h2 = arc.radius * arc.radius - dy * dy;
+    if (h2 <= 0) return 0;
+    const double h = std::sqrt(h2);
+    const bool ccw = arc.sweep > 0;
+    const bool full = std::fabs(arc.sweep) >= 2 * kPi;
+    const Point u{a.x - arc.centre.x, a.y - arc.centre.y}, v{arc.end.x - arc.centre.x, arc.end.y - arc.centre.y};
+    const double reach = full ? 4 : turned(u, v, ccw);
+    int n = 0;
+    for (double wx : {h, -h})
+        if (arc.centre.x + wx > p.x && (full || turned(u, {wx, dy}, ccw) <= reach)) ++n;
+    return n;
+}
+
+}  // namespace
+
+// The quadrant of a vector from the centre: 0 (+x, +y], 1 (-x, +y], 2 (-x, -y], 3 (+x, -y]; turning
+// counter-clockwise from quadrant q into the next passes the circle's extreme q + 1 (mod 4): 0 right, 1 top,
+// 2 left, 3 bottom.
+int quadrant(double x, double y) {
+    if (y > 0 || (y == 0 && x > 0)) return x > 0 ? 0 : 1;
+    return x < 0 ? 2 : 3;
+}
+
+Box piece_box(const Piece& p) {
+    Box b = Box::of(p.start, p.end);
+    if (!p.arc) return b;
+    const bool ccw = p.sweep > 0;
+    double ux = p.start.x - p.centre.x, uy = p.start.y - p.centre.y;
+    double vx = p.end.x - p.centre.x, vy = p.end.y - p.centre.y;
+    if (!ccw) {  // a clockwise arc is the counter-clockwise one mirrored in y
+        uy = -uy;
+        vy = -vy;
+    }
+    const int qs = quadrant(ux, uy), qe = quadrant(vx, vy);
+    int passes = (qe - qs + 4) % 4;
+    const bool wraps = std::fabs(p.sweep) >= 2 * kPi || (qs == qe && ux * vy - uy * vx < 0);
+    if (wraps) passes += 4;
+    const double r = p.radius;
+    for (int k = 1; k <= passes && k <= 4; ++k) {
+        const int extreme = (qs + k) % 4;  // 0 right, 1 top, 2 left, 3 bottom (mirrored back for clockwise)
+        const double ex = extreme == 0 ? r : extreme == 2 ? -r : 0;
+        double ey = extreme == 1 ? r : extreme == 3 ? -r : 0;
+        if (!ccw) ey = -ey;
+        b.add(Point{p.centre.x + ex, p.centre.y + ey});
+    }
+    return b;
+}
+
+bool inside_loop(const Cut& cut, std::span<const Piece> pieces, Point q) {
+    // The ray is nudged off the height of the unit grid, where the tape's points lie, so that it never passes
+    // exactly through a loop's point or touches an arc's top or bottom.
+    const Point p{q.x, q.y + kPlanRayNudgeMm};
+    int crossings = 0;
+    for (std::uint32_t k = cut.loop_begin; k < cut.loop_end; ++k) {
+        const Piece& piece = pieces[k];
+        const Point a = k == cut.loop_begin ? cut.loop_start : piece.start, b = piece.end;
+        if (piece.arc && piece.radius > 0) {
+            crossings += arc_ray_crossings(piece, a, p);
+        } else if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) {
+            ++crossings;
         }
     }
-    if (cut.closed) {
-        flatten_loop(cut);
-        if (std::fabs(cut.area_mm2) > 0) return;
-        cut.closed = false;  // (a path that goes out and back along itself encloses nothing)
-    }
-    find_gap(cut, gap_limit_mm);
-}
-
-double polygon_area(const std::vector<Point>& polygon) {
-    double a = 0;
-    const std::size_t n = polygon.size();
-    for (std::size_t i = 0, j = n - 1; i < n; j = i++) a += (polygon[j].x * polygon[i].y - polygon[i].x * polygon[j].y);
-    return n < 3 ? 0 : a / 2;
+    return crossings % 2 == 1;
 }
 
 bool inside_polygon(const std::vector<Point>& polygon, Point p) {

@@ -28,7 +28,13 @@ struct CutPlan::State {
     bool keep_contours;
     double closure_mm;
     std::vector<plan::Cut> cuts;       // the plate's cuts, in cutting order
-    plan::Cut open[2];                 // the cut of each head in progress
+    std::vector<plan::Piece> pieces;   // their pieces, cut after cut
+    // The cut of each head in progress: its pieces are gathered apart (the heads' motions interleave) and join the
+    // plate's when it ends.
+    plan::Cut open[2];
+    std::vector<plan::Piece> head2_pieces;
+    std::vector<plan::Cut> deferred;   // head 2's cuts that ended while head 1 was cutting, with their pieces
+    std::vector<std::vector<plan::Piece>> deferred_pieces;
     bool cutting[2] = {false, false};
     KerfSide open_kerf[2] = {KerfSide::Off, KerfSide::Off};
     bool mixed_kerf[2] = {false, false};
@@ -36,46 +42,74 @@ struct CutPlan::State {
     bool moved = false;
     Point home, here;                  // where the program started, where head 1 is
     std::uint32_t feed_line = 0;       // the block that set the feed in force (39), 0: the profile's
-    double reported_feed = -1;         // the out-of-range feed last reported (once per change)
+    double checked_feed = -1;          // the feed of the last cut motion (checked, and reported, once per change)
     std::vector<Diagnostic> found;
     std::vector<PlanContour> contours;
 
     explicit State(const Profile& p, bool keep)
         : profile(p), keep_contours(keep), closure_mm(p.arc_tolerance_units * p.unit_mm) {}
 
-    void add(const MotionRecord& m) {
+    // Where head 1 is; a motion that cuts nothing ends the head's cut.
+    void passed(int head, Point start, Point end) {
         if (!moved) {
-            home = m.start;
+            home = start;
             moved = true;
         }
-        if (m.head != 2) here = m.end;
+        if (head == 0) here = end;
+    }
+    // The cut of head `h` gets a piece of line `line`, cut with this kerf.
+    plan::Cut& cut_of(int h, std::uint32_t line, KerfSide kerf, double kerf_mm, double feed) {
+        check_feed(line, feed);
+        plan::Cut& c = open[h];
+        if (!cutting[h]) {
+            c = plan::Cut{};
+            c.first_line = line;
+            cutting[h] = true;
+            open_kerf[h] = kerf;
+            mixed_kerf[h] = false;
+            if (h == 1) head2_pieces.clear();
+            c.first_piece = static_cast<std::uint32_t>(pieces.size());
+        }
+        if (kerf != open_kerf[h]) mixed_kerf[h] = true;
+        c.kerf_width_mm = std::max(c.kerf_width_mm, 2 * kerf_mm);
+        c.last_line = line;
+        return c;
+    }
+    // Head 1's pieces go straight to the plate's; head 2's wait apart (the heads' motions interleave).
+    std::vector<plan::Piece>& pieces_of(int h) { return h == 0 ? pieces : head2_pieces; }
+
+    void add(const MotionRecord& m) {
         const int h = m.head == 2 ? 1 : 0;
+        passed(h, m.start, m.end);
         if (m.kind != MotionKind::Cut) {
             close(h);
             return;
         }
-        check_feed(m.line, m.feed_mm_min);
-        plan::Cut& c = open[h];
-        if (!cutting[h]) {
-            c = plan::Cut{};
-            c.first_line = m.line;
-            cutting[h] = true;
-            open_kerf[h] = m.kerf;
-            mixed_kerf[h] = false;
-        }
-        if (m.kerf != open_kerf[h]) mixed_kerf[h] = true;
-        c.kerf_width_mm = std::max(c.kerf_width_mm, 2 * m.kerf_mm);
-        c.last_line = m.line;
+        plan::Cut& c = cut_of(h, m.line, m.kerf, m.kerf_mm, m.feed_mm_min);
         c.length_mm += m.length_mm;
-        c.box.add(bounding_box(m));
+        std::vector<plan::Piece>& out = pieces_of(h);
         if (m.curve == CurveKind::Parabola) {
+            c.box.add(bounding_box(m));
             std::vector<Point> pts;
             flatten(m, kPlanChordToleranceMm, pts, /*include_start*/ true);
-            for (std::size_t k = 1; k < pts.size(); ++k)
-                c.pieces.push_back({pts[k - 1], pts[k], {}, 0, 0, std::hypot(pts[k].x - pts[k - 1].x, pts[k].y - pts[k - 1].y), m.line, false});
+            for (std::size_t k = 1; k < pts.size(); ++k) out.push_back({pts[k - 1], pts[k], {}, 0, 0, m.line, false});
             return;
         }
-        c.pieces.push_back({m.start, m.end, m.centre, m.sweep, m.radius, m.length_mm, m.line, m.curve == CurveKind::Arc});
+        out.push_back({m.start, m.end, m.centre, m.sweep, m.radius, m.line, m.curve == CurveKind::Arc});
+        c.box.add(plan::piece_box(out.back()));
+    }
+    // A straight motion of head 1 (most of a tape): no record made.
+    void add(const UnitLine& l) {
+        passed(0, l.start, l.end);
+        if (l.kind != MotionKind::Cut) {
+            close(0);
+            return;
+        }
+        plan::Cut& c = cut_of(0, l.line, l.kerf, l.kerf_mm, l.feed_mm_min);
+        c.length_mm += l.length_mm;
+        c.box.add(l.start);
+        c.box.add(l.end);
+        pieces.push_back({l.start, l.end, {}, 0, 0, l.line, false});
     }
 
     void close(int h) {
@@ -84,8 +118,30 @@ struct CutPlan::State {
         plan::Cut& c = open[h];
         c.kerf = mixed_kerf[h] ? KerfSide::Off : open_kerf[h];
         if (c.kerf == KerfSide::Off) c.kerf_width_mm = 0;
+        if (h == 1) {
+            if (cutting[0]) {  // (head 1's cut is filling the plate's pieces: head 2's joins after it)
+                deferred.push_back(std::move(c));
+                deferred_pieces.push_back(std::move(head2_pieces));
+                return;
+            }
+            c.first_piece = static_cast<std::uint32_t>(pieces.size());
+            pieces.insert(pieces.end(), head2_pieces.begin(), head2_pieces.end());
+        }
+        finish_cut(c);
+        if (h == 0 && !deferred.empty()) {
+            for (std::size_t k = 0; k < deferred.size(); ++k) {
+                deferred[k].first_piece = static_cast<std::uint32_t>(pieces.size());
+                pieces.insert(pieces.end(), deferred_pieces[k].begin(), deferred_pieces[k].end());
+                finish_cut(deferred[k]);
+            }
+            deferred.clear();
+            deferred_pieces.clear();
+        }
+    }
+    void finish_cut(plan::Cut& c) {
+        c.end_piece = static_cast<std::uint32_t>(pieces.size());
         c.order = static_cast<int>(cuts.size());
-        plan::close_loop(c, closure_mm, profile.closure_gap_mm);
+        plan::close_loop(c, pieces, closure_mm, profile.closure_gap_mm);
         check_table(c);
         cuts.push_back(std::move(c));
     }
@@ -95,19 +151,17 @@ struct CutPlan::State {
         close(1);
         if (cuts.empty()) return;
         const plan::PlateSettings st{closure_mm, profile.closure_gap_mm, profile.lead_in_required, plate};
-        plan::analyse_plate(cuts, st, found, keep_contours ? &contours : nullptr);
+        plan::analyse_plate(cuts, pieces, st, found, keep_contours ? &contours : nullptr);
         cuts.clear();
+        pieces.clear();
         ++plate;
     }
 
     // W608: a cut at a feed outside feed_range_mm_min, once each time the feed changes.
     void check_feed(std::uint32_t line, double feed) {
-        if (feed >= profile.feed_min_mm_min && feed <= profile.feed_max_mm_min) {
-            reported_feed = -1;
-            return;
-        }
-        if (feed == reported_feed) return;
-        reported_feed = feed;
+        if (feed == checked_feed) return;
+        checked_feed = feed;
+        if (feed >= profile.feed_min_mm_min && feed <= profile.feed_max_mm_min) return;
         Diagnostic d = make_diagnostic(Severity::Warning, DiagCode::W608_FeedOutOfRange, line, 0, Msg::PlanFeed,
                                        {number_text(feed), number_text(profile.feed_min_mm_min),
                                         number_text(profile.feed_max_mm_min)});
@@ -137,8 +191,9 @@ struct CutPlan::State {
             close(0);
             close(1);
         }
-        const bool at_home = moved && std::hypot(here.x - home.x, here.y - home.y) <= kPlanHomeToleranceMm;
-        if (e.kind == EventKind::Stop && at_home && !(e.tools_after & kCuttingTools)) end_plate();
+        if (e.kind == EventKind::Stop && !(e.tools_after & kCuttingTools) && moved &&
+            std::hypot(here.x - home.x, here.y - home.y) <= kPlanHomeToleranceMm)
+            end_plate();
     }
 };
 
@@ -146,7 +201,7 @@ CutPlan::CutPlan(const Profile& profile, bool keep_contours) : s_(std::make_uniq
 CutPlan::~CutPlan() = default;
 
 void CutPlan::on_motion(const MotionRecord& m) { s_->add(m); }
-void CutPlan::on_line(const UnitLine& l) { s_->add(record_of(l)); }
+void CutPlan::on_line(const UnitLine& l) { s_->add(l); }
 void CutPlan::on_event(const MachineEvent& e) { s_->event(e); }
 
 std::vector<Diagnostic> CutPlan::finish() {

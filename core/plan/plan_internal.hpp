@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "essi/diagnostics.hpp"
@@ -15,50 +16,61 @@ namespace essi::plan {
 
 // A programmed motion of a cut, as small as the analysis needs it (parabolas arrive as lines).
 struct Piece {
-    Point start, end, centre;
+    Point start, end;
+    Point centre;      // arcs
     double sweep = 0;  // arcs: signed, radians
-    double radius = 0;
-    double length_mm = 0;
+    double radius = 0; // arcs
     std::uint32_t line = 0;
     bool arc = false;
 };
+// Its exact box (an arc's extremes inside its sweep included) and length.
+[[nodiscard]] Box piece_box(const Piece& p);
+[[nodiscard]] double piece_length(const Piece& p);
 
-// One cut: pierce to torch off, one head.
+// One cut: pierce to torch off, one head. Its pieces are the plate's pieces [first_piece, end_piece).
 struct Cut {
-    std::vector<Piece> pieces;
+    std::uint32_t first_piece = 0, end_piece = 0;
     std::uint32_t first_line = 0, last_line = 0;
-    KerfSide kerf = KerfSide::Off;  // the side in force on the loop (Off when it changes along it)
+    KerfSide kerf = KerfSide::Off;  // the side in force on the whole cut (Off when it changes along it)
     double kerf_width_mm = 0;       // the full width the compensation cuts (0 when off)
     Box box;
     double length_mm = 0;
     int order = 0;                  // cutting order in the plate
 
-    // Its loop, when it holds one: pieces [loop_begin, loop_end) with the loop starting at `loop_start` on the
-    // first of them (its start, or a point on it for a path that closes on a piece rather than at a point).
+    // Its loop, when it holds one: pieces [loop_begin, loop_end) (plate indices), starting at `loop_start` on the
+    // first of them (its start, or a point on it for a path that closes on a line rather than at a point).
     bool closed = false;
-    std::size_t loop_begin = 0, loop_end = 0;
+    std::uint32_t loop_begin = 0, loop_end = 0;
     Point loop_start;
-    std::vector<Point> polygon;     // the loop flattened (kPlanChordToleranceMm), not repeating its first point
     Box loop_box;
-    double area_mm2 = 0;            // signed, of the polygon
+    double area_mm2 = 0;            // signed, exact (arcs as arcs)
+    std::vector<Point> polygon;     // the loop flattened (kPlanChordToleranceMm), made when a test needs it
+    bool has_polygon = false;
     // Left open: how far the end is from where the contour began, and that point's line.
     double gap_mm = 0;
     Point gap_from;
     std::uint32_t gap_line = 0;
 };
 
-// Finds the cut's loop (or its gap) and flattens it: fills closed, loop_*, polygon, area, gap_*.
-// `closure_mm`: ends this close to a point passed close the loop (the arc tolerance in mm).
-void close_loop(Cut& cut, double closure_mm, double gap_limit_mm);
+// Finds the cut's loop (or its gap): fills closed, loop_*, area, gap_*. `closure_mm`: ends this close to a point
+// passed close the loop (the arc tolerance in mm).
+void close_loop(Cut& cut, std::span<const Piece> pieces, double closure_mm, double gap_limit_mm);
+// The loop flattened (once).
+const std::vector<Point>& loop_polygon(Cut& cut, std::span<const Piece> pieces);
+// The whole path flattened, from its first point.
+std::vector<Point> path_points(const Cut& cut, std::span<const Piece> pieces);
 
 // Appends the piece's points within kPlanChordToleranceMm, without its start.
 void flatten_piece(const Piece& p, std::vector<Point>& out);
 
 // The shortest distance between the segments a-b and c-d, and a point where it is reached (on a-b).
 double segment_distance(Point a, Point b, Point c, Point d, Point& where);
+// Whether q lies inside the cut's loop (even-odd, arcs as arcs).
+bool inside_loop(const Cut& cut, std::span<const Piece> pieces, Point q);
+// The containment test's ray runs this far above the point (mm): off the unit grid.
+constexpr double kPlanRayNudgeMm = 1.2345678e-7;
 // Whether p lies inside the closed polygon (even-odd).
 bool inside_polygon(const std::vector<Point>& polygon, Point p);
-double polygon_area(const std::vector<Point>& polygon);
 
 // A plate's cuts analysed: roles by nesting and the rules that need contours (W601-W607, W610, N612).
 struct PlateSettings {
@@ -67,7 +79,7 @@ struct PlateSettings {
     bool lead_in_required = false;
     int plate = 1;
 };
-void analyse_plate(std::vector<Cut>& cuts, const PlateSettings& settings, std::vector<Diagnostic>& out,
-                   std::vector<PlanContour>* contours);
+void analyse_plate(std::vector<Cut>& cuts, std::span<const Piece> pieces, const PlateSettings& settings,
+                   std::vector<Diagnostic>& out, std::vector<PlanContour>* contours);
 
 }  // namespace essi::plan

@@ -1,6 +1,7 @@
 // One plate's cuts analysed (essi/plan.hpp): the same path twice, roles by nesting, the kerf side, the cutting
 // order, collisions and cuts across parts already cut free.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -27,14 +28,15 @@ bool collides_as_part(ContourRole r) { return is_part(r) || r == ContourRole::Lo
 
 class Plate {
 public:
-    Plate(std::vector<Cut>& cuts, const PlateSettings& st, std::vector<Diagnostic>& out)
-        : cuts_(cuts), st_(st), out_(out), nodes_(cuts.size()) {
+    Plate(std::vector<Cut>& cuts, std::span<const Piece> pieces, const PlateSettings& st, std::vector<Diagnostic>& out)
+        : cuts_(cuts), pieces_(pieces), st_(st), out_(out), nodes_(cuts.size()) {
         for (const Cut& c : cuts_) max_width_ = std::max(max_width_, c.kerf_width_mm);
     }
 
     void run() {
         gaps();
         same_paths();
+        find_neighbours();
         nest();
         kerf_sides();
         order();
@@ -48,15 +50,15 @@ public:
             PlanContour pc;
             pc.cut_first_line = c.first_line;
             pc.cut_last_line = c.last_line;
-            pc.loop_first_line = c.pieces[c.loop_begin].line;
-            pc.loop_last_line = c.pieces[c.loop_end - 1].line;
+            pc.loop_first_line = pieces_[c.loop_begin].line;
+            pc.loop_last_line = pieces_[c.loop_end - 1].line;
             pc.plate = st_.plate;
             pc.parent = nodes_[i].parent;
             pc.depth = nodes_[i].depth;
             pc.role = nodes_[i].role;
             pc.area_mm2 = c.area_mm2;
             pc.kerf = c.kerf;
-            pc.lead_in = c.loop_begin > 0;
+            pc.lead_in = c.loop_begin > c.first_piece;
             contours.push_back(pc);
         }
     }
@@ -73,48 +75,51 @@ private:
     }
     static RelatedLocation related(const Cut& c, Msg what) { return {c.first_line, c.last_line, what, {}}; }
     bool usable(std::size_t i) const { return cuts_[i].closed && !nodes_[i].duplicate; }
+    const Piece& first_piece(const Cut& c) const { return pieces_[c.first_piece]; }
+    const Piece& last_piece(const Cut& c) const { return pieces_[c.end_piece - 1]; }
+    const std::vector<Point>& polygon(std::size_t i) { return loop_polygon(cuts_[i], pieces_); }
 
     // --- W601: a contour left open by a small gap ---
     void gaps() {
         for (const Cut& c : cuts_) {
-            if (c.closed || c.pieces.empty() || !(c.gap_mm > st_.closure_mm && c.gap_mm <= st_.gap_limit_mm)) continue;
-            const Point e = c.pieces.back().end;
+            if (c.closed || c.end_piece == c.first_piece || !(c.gap_mm > st_.closure_mm && c.gap_mm <= st_.gap_limit_mm))
+                continue;
+            const Point e = last_piece(c).end;
             Diagnostic d = about(DiagCode::W601_ContourGap, c, {(e.x + c.gap_from.x) / 2, (e.y + c.gap_from.y) / 2},
                                  Msg::PlanGap, {number_text(c.gap_mm), c.gap_line, number_text(st_.closure_mm)});
-            d.line = c.pieces.back().line;
+            d.line = last_piece(c).line;
             d.related.push_back({c.gap_line, c.gap_line, Msg::RelatedContourStart, {}});
             out_.push_back(std::move(d));
         }
     }
 
     // --- W607: the same path twice ---
-    // Candidates share their box and length (to kPlanSamePathToleranceMm, in buckets); they are the same when every
+    // Candidates share their box (to a few kPlanSamePathToleranceMm: sorted by it); they are the same when every
     // point of one lies on the other.
     void same_paths() {
-        std::map<std::tuple<long long, long long, long long, long long>, std::vector<int>> by_box;
         const auto q = [](double v) { return std::llround(v / (4 * kPlanSamePathToleranceMm)); };
+        std::vector<std::pair<std::array<long long, 4>, int>> keyed;
+        keyed.reserve(cuts_.size());
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
-            const Cut& c = cuts_[i];
-            if (c.pieces.empty()) continue;
-            auto& bucket = by_box[{q(c.box.min_x), q(c.box.min_y), q(c.box.max_x), q(c.box.max_y)}];
-            for (int j : bucket) {
-                if (!same_path(cuts_[static_cast<std::size_t>(j)], c)) continue;
-                nodes_[i].duplicate = true;
-                Diagnostic d = about(DiagCode::W607_SamePathTwice, c, c.pieces.front().end, Msg::PlanSamePath,
-                                     {cuts_[static_cast<std::size_t>(j)].first_line, cuts_[static_cast<std::size_t>(j)].last_line});
-                d.related.push_back(related(cuts_[static_cast<std::size_t>(j)], Msg::RelatedFirstCut));
+            const Box& b = cuts_[i].box;
+            if (!b.empty) keyed.push_back({{q(b.min_x), q(b.min_y), q(b.max_x), q(b.max_y)}, static_cast<int>(i)});
+        }
+        std::sort(keyed.begin(), keyed.end());
+        for (std::size_t k = 1; k < keyed.size(); ++k) {
+            for (std::size_t e = k; e-- > 0 && keyed[e].first == keyed[k].first;) {
+                const std::size_t i = static_cast<std::size_t>(keyed[e].second), j = static_cast<std::size_t>(keyed[k].second);
+                const std::size_t first = std::min(i, j), later = std::max(i, j);
+                if (nodes_[first].duplicate || nodes_[later].duplicate || !same_path(first, later)) continue;
+                nodes_[later].duplicate = true;
+                const Cut& a = cuts_[first];
+                const Cut& c = cuts_[later];
+                Diagnostic d = about(DiagCode::W607_SamePathTwice, c, first_piece(c).end, Msg::PlanSamePath,
+                                     {a.first_line, a.last_line});
+                d.related.push_back(related(a, Msg::RelatedFirstCut));
                 out_.push_back(std::move(d));
                 break;
             }
-            if (!nodes_[i].duplicate) bucket.push_back(static_cast<int>(i));
         }
-    }
-    static std::vector<Point> path_points(const Cut& c, bool loop_only) {
-        std::vector<Point> pts;
-        if (loop_only) return c.polygon;
-        pts.push_back(c.pieces.front().start);
-        for (const Piece& p : c.pieces) flatten_piece(p, pts);
-        return pts;
     }
     static bool lies_on(const std::vector<Point>& pts, const std::vector<Point>& path, bool closed) {
         for (Point p : pts) {
@@ -128,36 +133,58 @@ private:
         }
         return true;
     }
-    static bool same_path(const Cut& a, const Cut& b) {
+    bool same_path(std::size_t i, std::size_t j) {
+        const Cut& a = cuts_[i];
+        const Cut& b = cuts_[j];
         if (a.closed != b.closed) return false;
-        if (std::fabs(a.length_mm - b.length_mm) > 4 * kPlanSamePathToleranceMm && !a.closed) return false;
-        if (a.closed && std::fabs(std::fabs(a.area_mm2) - std::fabs(b.area_mm2)) >
-                            kPlanSamePathToleranceMm * (a.loop_box.max_x - a.loop_box.min_x + a.loop_box.max_y - a.loop_box.min_y) * 2)
-            return false;
-        const std::vector<Point> pa = path_points(a, a.closed), pb = path_points(b, b.closed);
-        return lies_on(pb, pa, a.closed) && lies_on(pa, pb, a.closed);
+        if (!a.closed && std::fabs(a.length_mm - b.length_mm) > 4 * kPlanSamePathToleranceMm) return false;
+        if (a.closed) {
+            const double perimeter = 2 * (a.loop_box.max_x - a.loop_box.min_x + a.loop_box.max_y - a.loop_box.min_y);
+            if (std::fabs(std::fabs(a.area_mm2) - std::fabs(b.area_mm2)) > kPlanSamePathToleranceMm * perimeter) return false;
+            return lies_on(polygon(j), polygon(i), true) && lies_on(polygon(i), polygon(j), true);
+        }
+        const std::vector<Point> pa = path_points(a, pieces_), pb = path_points(b, pieces_);
+        return lies_on(pb, pa, false) && lies_on(pa, pb, false);
+    }
+
+    // Each cut's neighbours: the loops whose boxes meet its whole box (grown by the widest kerf), found once in the
+    // grid and used by the nesting, the collisions and the crossings.
+    void find_neighbours() {
+        boxes_.assign(cuts_.size(), Box{});
+        for (std::size_t i = 0; i < cuts_.size(); ++i)
+            if (usable(i)) boxes_[i] = cuts_[i].loop_box;
+        BoxGrid grid(boxes_);
+        const double margin = max_width_ + kPlanTouchToleranceMm;
+        first_neighbour_.assign(cuts_.size() + 1, 0);
+        neighbours_.clear();
+        for (std::size_t i = 0; i < cuts_.size(); ++i) {
+            Box q = cuts_[i].box;
+            q.add(cuts_[i].loop_box);
+            grid.query(q, [&](int j) {
+                if (static_cast<std::size_t>(j) != i && boxes_meet(q, boxes_[static_cast<std::size_t>(j)], margin))
+                    neighbours_.push_back(j);
+            });
+            first_neighbour_[i + 1] = static_cast<std::uint32_t>(neighbours_.size());
+        }
+    }
+    std::span<const int> neighbours(std::size_t i) const {
+        return {neighbours_.data() + first_neighbour_[i], neighbours_.data() + first_neighbour_[i + 1]};
     }
 
     // --- roles by nesting ---
     void nest() {
-        boxes_.assign(cuts_.size(), Box{});
-        for (std::size_t i = 0; i < cuts_.size(); ++i)
-            if (usable(i)) boxes_[i] = cuts_[i].loop_box;
-        grid_ = std::make_unique<BoxGrid>(boxes_);
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
             if (!usable(i)) continue;
             const Cut& a = cuts_[i];
-            const Point p0 = a.polygon.front(), p1 = a.polygon[a.polygon.size() / 2];
             double best = std::numeric_limits<double>::infinity();
-            grid_->query(Box::of(p0, p0), [&](int j) {
+            for (int j : neighbours(i)) {
                 const Cut& b = cuts_[static_cast<std::size_t>(j)];
-                if (static_cast<std::size_t>(j) == i || !b.loop_box.contains(a.loop_box)) return;
+                if (!b.loop_box.contains(a.loop_box)) continue;
                 const double area = std::fabs(b.area_mm2);
-                if (area <= std::fabs(a.area_mm2) || area >= best) return;
-                if (!inside_polygon(b.polygon, p0) || !inside_polygon(b.polygon, p1)) return;
+                if (area <= std::fabs(a.area_mm2) || area >= best || !inside_loop(b, pieces_, a.loop_start)) continue;
                 best = area;
                 nodes_[i].parent = j;
-            });
+            }
         }
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
             if (!usable(i)) continue;
@@ -202,8 +229,8 @@ private:
                 code = DiagCode::N603_KerfInsideLoneContour;
             }
             if (msg == Msg::None) continue;
-            Diagnostic d = about(code, c, c.polygon.front(), msg, {side, travel, other});
-            d.line = c.pieces[c.loop_begin].line;
+            Diagnostic d = about(code, c, c.loop_start, msg, {side, travel, other});
+            d.line = pieces_[c.loop_begin].line;
             out_.push_back(std::move(d));
         }
     }
@@ -220,7 +247,7 @@ private:
             const Cut& parent = cuts_[static_cast<std::size_t>(p)];
             const Cut& first = cuts_[static_cast<std::size_t>(children.front())];
             const bool part = nodes_[static_cast<std::size_t>(p)].role != ContourRole::Hole;
-            Diagnostic d = about(DiagCode::W604_CutBeforeInside, parent, parent.polygon.front(),
+            Diagnostic d = about(DiagCode::W604_CutBeforeInside, parent, parent.loop_start,
                                  part ? Msg::PlanPartBeforeHoles : Msg::PlanHoleBeforeParts,
                                  {children.size(), first.first_line, first.last_line});
             for (int ch : children)
@@ -261,21 +288,18 @@ private:
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
             if (!usable(i) || !collides_as_part(nodes_[i].role)) continue;
             const Cut& a = cuts_[i];
-            double margin = std::max(a.kerf_width_mm, kPlanTouchToleranceMm);
-            Box q = a.loop_box;
-            q.min_x -= margin + max_width_; q.min_y -= margin + max_width_; q.max_x += margin + max_width_; q.max_y += margin + max_width_;
-            grid_->query(q, [&](int j) {
-                if (static_cast<std::size_t>(j) <= i || !collides_as_part(nodes_[static_cast<std::size_t>(j)].role)) return;
-                if (ancestor(j, static_cast<int>(i)) || ancestor(static_cast<int>(i), j)) return;
+            for (int j : neighbours(i)) {
+                if (static_cast<std::size_t>(j) <= i || !collides_as_part(nodes_[static_cast<std::size_t>(j)].role)) continue;
+                if (ancestor(j, static_cast<int>(i)) || ancestor(static_cast<int>(i), j)) continue;
                 const Cut& b = cuts_[static_cast<std::size_t>(j)];
                 const double limit = width_between(a, b);
-                if (!boxes_meet(a.loop_box, b.loop_box, limit)) return;
+                if (!boxes_meet(a.loop_box, b.loop_box, limit)) continue;
                 Point where;
-                const double d = approach(b.polygon, true, a.polygon, a.loop_box, limit, where);
-                if (!(d < limit)) return;
+                const double d = approach(polygon(static_cast<std::size_t>(j)), true, polygon(i), a.loop_box, limit, where);
+                if (!(d < limit)) continue;
                 reported.insert({static_cast<int>(i), j});
                 report_collision(a, b, nodes_[i].role, nodes_[static_cast<std::size_t>(j)].role, d, limit, where);
-            });
+            }
         }
         crossings(reported);
     }
@@ -300,27 +324,52 @@ private:
     }
     // E606: a cut (its whole path) crossing a part cut free before it.
     void crossings(const std::set<std::pair<int, int>>& reported) {
+        std::vector<std::vector<Point>> paths;
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
-            const Cut& c = cuts_[i];
-            if (c.pieces.empty() || nodes_[i].duplicate) continue;
-            std::vector<Point> path;  // (made when a candidate needs it)
+            if (cuts_[i].end_piece == cuts_[i].first_piece || nodes_[i].duplicate) continue;
+            const auto ranges = crossing_ranges(i);
+            Box reach;
+            for (const auto& [first, end] : ranges)
+                for (std::uint32_t k = first; k < end; ++k) reach.add(piece_box(pieces_[k]));
+            if (reach.empty) continue;
+            paths.clear();
             bool done = false;
-            grid_->query(c.box, [&](int j) {
+            for (int j : neighbours(i)) {
                 const Cut& p = cuts_[static_cast<std::size_t>(j)];
-                if (done || static_cast<std::size_t>(j) == i || p.order >= c.order || !is_part(nodes_[static_cast<std::size_t>(j)].role))
-                    return;
-                if (reported.count({std::min<int>(j, static_cast<int>(i)), std::max<int>(j, static_cast<int>(i))})) return;
-                if (!boxes_meet(c.box, p.loop_box, kPlanTouchToleranceMm)) return;
-                if (path.empty()) path = path_points(c, false);
-                Point where;
-                if (approach(path, false, p.polygon, p.loop_box, kPlanTouchToleranceMm, where) > 0) return;
-                Diagnostic d = about(DiagCode::E606_CutCrossesCutPart, c, where, Msg::PlanCutCrossesPart,
-                                     {p.first_line, p.last_line});
-                d.related.push_back(related(p, Msg::RelatedPartCutFree));
-                out_.push_back(std::move(d));
-                done = true;
-            });
+                if (done || p.order >= cuts_[i].order || !is_part(nodes_[static_cast<std::size_t>(j)].role) ||
+                    !boxes_meet(reach, p.loop_box, kPlanTouchToleranceMm))
+                    continue;
+                if (reported.count({std::min<int>(j, static_cast<int>(i)), std::max<int>(j, static_cast<int>(i))})) continue;
+                if (paths.empty())
+                    for (const auto& [first, end] : ranges) paths.push_back(polyline(first, end));
+                for (const std::vector<Point>& path : paths) {
+                    Point where;
+                    if (path.size() < 2 ||
+                        approach(path, false, polygon(static_cast<std::size_t>(j)), p.loop_box, kPlanTouchToleranceMm, where) > 0)
+                        continue;
+                    Diagnostic d = about(DiagCode::E606_CutCrossesCutPart, cuts_[i], where, Msg::PlanCutCrossesPart,
+                                         {p.first_line, p.last_line});
+                    d.related.push_back(related(p, Msg::RelatedPartCutFree));
+                    out_.push_back(std::move(d));
+                    done = true;
+                    break;
+                }
+            }
         }
+    }
+    // The pieces of cut i that may cross a part cut free: the whole path of an open cut or a hole; the lead-in and
+    // lead-out of a contour that counts as a part (its loop is a collision's business).
+    std::array<std::pair<std::uint32_t, std::uint32_t>, 2> crossing_ranges(std::size_t i) const {
+        const Cut& c = cuts_[i];
+        if (c.closed && collides_as_part(nodes_[i].role)) return {{{c.first_piece, c.loop_begin}, {c.loop_end, c.end_piece}}};
+        return {{{c.first_piece, c.end_piece}, {0, 0}}};
+    }
+    std::vector<Point> polyline(std::uint32_t first, std::uint32_t end) const {
+        std::vector<Point> pts;
+        if (first >= end) return pts;
+        pts.push_back(pieces_[first].start);
+        for (std::uint32_t k = first; k < end; ++k) flatten_piece(pieces_[k], pts);
+        return pts;
     }
 
     // --- W610: a contour pierced on its own line ---
@@ -328,25 +377,27 @@ private:
         if (!st_.lead_in_required) return;
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
             const Cut& c = cuts_[i];
-            if (!usable(i) || c.loop_begin > 0 || !(c.loop_start == c.pieces.front().start)) continue;
+            if (!usable(i) || c.loop_begin > c.first_piece || !(c.loop_start == first_piece(c).start)) continue;
             out_.push_back(about(DiagCode::W610_PierceWithoutLeadIn, c, c.loop_start, Msg::PlanNoLeadIn, {}));
         }
     }
 
     std::vector<Cut>& cuts_;
+    std::span<const Piece> pieces_;
     const PlateSettings& st_;
     std::vector<Diagnostic>& out_;
     std::vector<Node> nodes_;
-    std::vector<Box> boxes_;
-    std::unique_ptr<BoxGrid> grid_;
+    std::vector<Box> boxes_;                   // the loops' boxes (empty: no loop), the grid's
+    std::vector<std::uint32_t> first_neighbour_;
+    std::vector<int> neighbours_;
     double max_width_ = 0;  // the widest kerf of the plate's cuts
 };
 
 }  // namespace
 
-void analyse_plate(std::vector<Cut>& cuts, const PlateSettings& settings, std::vector<Diagnostic>& out,
-                   std::vector<PlanContour>* contours) {
-    Plate plate(cuts, settings, out);
+void analyse_plate(std::vector<Cut>& cuts, std::span<const Piece> pieces, const PlateSettings& settings,
+                   std::vector<Diagnostic>& out, std::vector<PlanContour>* contours) {
+    Plate plate(cuts, pieces, settings, out);
     plate.run();
     if (contours) plate.record(*contours);
 }

@@ -121,7 +121,7 @@ private:
 
 struct NestState {
     // The plate: 3000 x 1500 mm in 0.1 mm units, parts placed in columns from the lower left.
-    static constexpr long long kPlateW = 30000, kPlateH = 15000, kMargin = 200, kGap = 300;
+    static constexpr long long kPlateW = 30000, kPlateH = 15000, kMargin = 200, kGap = 350;
     long long col_x = kMargin;   // left edge of the current column
     long long col_w = 0;         // widest part in the current column
     long long cur_y = kMargin;   // next free y in the current column

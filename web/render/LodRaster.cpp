@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "essi/interp.hpp"
 #include "render/Palette.hpp"
@@ -117,8 +118,14 @@ void LodRaster::begin(const Box& bbox, Point origin, int cells) {
     if (!(longer > 0)) return;
     cells_ = std::clamp(cells, kMinCells, kMaxCells);
     cell_ = longer / (cells_ - 2);  // a cell of border on each side
-    min_x_ = static_cast<float>(bbox.min_x - origin.x - cell_);
-    min_y_ = static_cast<float>(bbox.min_y - origin.y - cell_);
+    // The corner is kept as a float (the shader's): rounded down, so that the box's own edge stays out of the
+    // border cell.
+    const auto below = [](double v) {
+        const float f = static_cast<float>(v);
+        return f > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+    };
+    min_x_ = below(bbox.min_x - origin.x - cell_);
+    min_y_ = below(bbox.min_y - origin.y - cell_);
     int lw = std::clamp(static_cast<int>(std::ceil(w / cell_)) + 2, 1, cells_);
     int lh = std::clamp(static_cast<int>(std::ceil(h / cell_)) + 2, 1, cells_);
     width_ = lw;
