@@ -171,3 +171,34 @@ TEST(RenderMarks, AnExampleTapesErrorIsMarkedAtTheEndOfItsMotion) {
     EXPECT_EQ(attr(e, "data-line"), "5");
     EXPECT_EQ(attr(e, "data-x") + "," + attr(e, "data-y"), "200,100");
 }
+
+// The viewer's document (web/app/Document.cpp) places its diagnostics by the same rule once the tape is checked:
+// a mark per diagnostic with a place, and the motions they concern.
+#include "viewer_util.hpp"
+
+TEST(ViewerMarks, TheDocumentPlacesItsDiagnosticsAsTheSvgDoes) {
+    // 1: 7, 2: cut to (100, 0), 3: an arc from (100, 0) about (100, 50) ending off its circle, 4: cut, 5: 8, 6: end.
+    const std::string tape = "7\n+1000+0\n+500+500+0+550+\n+0+1000\n8\n64\n";
+    const auto doc = essi_test::load_document(tape);
+    ASSERT_FALSE(doc->diagnostics.empty());
+    const essi::Diagnostic& d = doc->diagnostics.front();
+    EXPECT_EQ(d.code, essi::DiagCode::E301_ArcEndNotOnCircle);
+    ASSERT_EQ(doc->marks.size(), doc->diagnostics.size());
+    EXPECT_EQ(doc->marks.front().diagnostic, 0u);
+    const auto [a, b] = doc->motions_of_line(d.line);
+    ASSERT_LT(a, b);
+    EXPECT_EQ(doc->marks.front().at, doc->end_of(a));
+    // The same place as `essi render`'s mark.
+    essi::RenderOptions o;
+    const std::string svg = essi::render_svg(tape, *essi::builtin_profile("iso6582"), o).svg;
+    const std::string mark = element_with(svg, "id=\"diagnostic-0\"");
+    EXPECT_EQ(std::stod(attr(mark, "data-x")), doc->marks.front().at.x);
+    EXPECT_EQ(std::stod(attr(mark, "data-y")), doc->marks.front().at.y);
+    // The motions it concerns: its block's.
+    ASSERT_FALSE(doc->concerned_motions.empty());
+    EXPECT_LE(doc->concerned_motions.front().first, a);
+    EXPECT_GE(doc->concerned_motions.front().second, b);
+    const auto [la, lb] = doc->motions_of_lines({d.line, d.line});
+    EXPECT_EQ(la, a);
+    EXPECT_EQ(lb, b);
+}

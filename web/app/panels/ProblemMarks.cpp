@@ -30,14 +30,18 @@ ImU32 color_u32(Rgba c, float alpha) {
 // The area inside every polygon of one diagnostic's overlap, in the drawing area: its rows' spans as rectangles.
 void overlap_area(ImDrawList* dl, const Document& doc, const View& view, const Diagnostic& d) {
     std::vector<std::vector<Point>> screen(d.overlap.size());
-    double top = HUGE_VAL, bottom = -HUGE_VAL;
+    double top = HUGE_VAL, bottom = -HUGE_VAL, left = HUGE_VAL, right = -HUGE_VAL;
     for (std::size_t k = 0; k < d.overlap.size(); ++k)
         for (const Point& p : d.overlap[k]) {
-            screen[k].push_back(view.to_screen({p.x - doc.origin.x, p.y - doc.origin.y}));
-            top = std::min(top, screen[k].back().y);
-            bottom = std::max(bottom, screen[k].back().y);
+            const Point q = view.to_screen({p.x - doc.origin.x, p.y - doc.origin.y});
+            screen[k].push_back(q);
+            top = std::min(top, q.y);
+            bottom = std::max(bottom, q.y);
+            left = std::min(left, q.x);
+            right = std::max(right, q.x);
         }
     const Rect& a = view.area;
+    if (right < a.x || left > a.x + a.w) return;  // (out of view)
     top = std::max(top, static_cast<double>(a.y));
     bottom = std::min(bottom, static_cast<double>(a.y + a.h));
     const ImU32 fill = color_u32(severity_rgba(d.severity), kOverlapAlpha);
