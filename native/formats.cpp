@@ -184,6 +184,19 @@ std::string path_to_uri(std::string_view path) {
     return out;
 }
 
+// A diagnostic's other places (the cut plan's: the other part of a collision, the hole cut after its part ...):
+// SARIF relatedLocations, each a region of lines of the same file and what is there.
+static nlohmann::json sarif_related(const nlohmann::json& artifact, const Diagnostic& d, Lang lang) {
+    nlohmann::json related = nlohmann::json::array();
+    int id = 0;
+    for (const RelatedLocation& r : d.related) {
+        nlohmann::json phys = artifact;
+        phys["region"] = {{"startLine", r.line}, {"endLine", std::max(r.line, r.end_line)}};
+        related.push_back({{"id", id++}, {"physicalLocation", phys}, {"message", {{"text", related_message(r, lang)}}}});
+    }
+    return related;
+}
+
 nlohmann::json sarif_rules(std::string_view docs_url, Lang lang) {
     const std::string base = docs_base(docs_url);
     nlohmann::json rules = nlohmann::json::array();
@@ -238,6 +251,7 @@ nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view p
                                   {"level", sarif_level(d.severity)},
                                   {"message", {{"text", diagnostic_message(d, lang)}}},
                                   {"locations", {{{"physicalLocation", phys}}}}};
+            if (!d.related.empty()) res["relatedLocations"] = sarif_related(artifact, d, lang);
             if (auto f = rule_index.find(id); f != rule_index.end()) res["ruleIndex"] = f->second;
             results.push_back(std::move(res));
         }

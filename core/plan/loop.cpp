@@ -157,32 +157,10 @@ std::vector<Point> path_points(const Cut& cut, std::span<const Piece> pieces) {
 
 namespace {
 
-// A number in [0, 4) that grows with the angle of (x, y) from the +x axis (cheaper than atan2, same order).
-double diamond_angle(double x, double y) {
-    if (y >= 0) return x >= 0 ? y / (x + y) : 1 - x / (-x + y);
-    return x < 0 ? 2 - y / (-x - y) : 3 + x / (x - y);
-}
-// How far w is turned from u in the arc's direction, as a diamond angle.
-double turned(Point u, Point w, bool ccw) {
-    const double dot = u.x * w.x + u.y * w.y, cross = u.x * w.y - u.y * w.x;
-    return diamond_angle(dot, ccw ? cross : -cross);
-}
-
-// Crossings of the ray from p towards +x with the arc (a point of the circle at p's height is on the arc when it
-// is turned from the start no further than the end is).
-int arc_ray_crossings(const Piece& arc, Point a, Point p) {
-    const double dy = p.y - arc.centre.y;
-    const double h2 = arc.radius * arc.radius - dy * dy;
-    if (h2 <= 0) return 0;
-    const double h = std::sqrt(h2);
-    const bool ccw = arc.sweep > 0;
-    const bool full = std::fabs(arc.sweep) >= 2 * kPi;
-    const Point u{a.x - arc.centre.x, a.y - arc.centre.y}, v{arc.end.x - arc.centre.x, arc.end.y - arc.centre.y};
-    const double reach = full ? 4 : turned(u, v, ccw);
-    int n = 0;
-    for (double wx : {h, -h})
-        if (arc.centre.x + wx > p.x && (full || turned(u, {wx, dy}, ccw) <= reach)) ++n;
-    return n;
+// Whether the segment a-b crosses the ray from p towards +x (half-open in y, so that a point the ray passes
+// through counts once for the two segments that meet there).
+bool crosses_ray(Point a, Point b, Point p) {
+    return (a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x;
 }
 
 }  // namespace
@@ -220,19 +198,26 @@ Box piece_box(const Piece& p) {
     return b;
 }
 
-bool inside_loop(const Cut& cut, std::span<const Piece> pieces, Point q) {
-    // The ray is nudged off the height of the unit grid, where the tape's points lie, so that it never passes
-    // exactly through a loop's point or touches an arc's top or bottom.
-    const Point p{q.x, q.y + kPlanRayNudgeMm};
+bool inside_loop(const Cut& cut, std::span<const Piece> pieces, Point p) {
+    // An arc crosses the ray as its chord does when the ray misses its box or its box lies wholly to the right of p
+    // (the curve and the chord then cross the ray's line right of p equally often, mod 2); only an arc whose box
+    // holds p is followed along its chords. (Its end point is its chord's: the loop's pieces meet exactly.)
     int crossings = 0;
+    std::vector<Point> chords;
     for (std::uint32_t k = cut.loop_begin; k < cut.loop_end; ++k) {
-        const Piece& piece = pieces[k];
-        const Point a = k == cut.loop_begin ? cut.loop_start : piece.start, b = piece.end;
-        if (piece.arc && piece.radius > 0) {
-            crossings += arc_ray_crossings(piece, a, p);
-        } else if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) {
-            ++crossings;
+        Piece piece = pieces[k];
+        if (k == cut.loop_begin) piece.start = cut.loop_start;
+        if (piece.arc) {
+            const Box box = piece_box(piece);
+            if (p.y < box.min_y || p.y > box.max_y || p.x > box.max_x) continue;
+            if (p.x >= box.min_x) {
+                chords.assign(1, piece.start);
+                flatten_piece(piece, chords);
+                for (std::size_t c = 1; c < chords.size(); ++c) crossings += crosses_ray(chords[c - 1], chords[c], p) ? 1 : 0;
+                continue;
+            }
         }
+        crossings += crosses_ray(piece.start, piece.end, p) ? 1 : 0;
     }
     return crossings % 2 == 1;
 }

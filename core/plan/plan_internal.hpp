@@ -67,8 +67,6 @@ void flatten_piece(const Piece& p, std::vector<Point>& out);
 double segment_distance(Point a, Point b, Point c, Point d, Point& where);
 // Whether q lies inside the cut's loop (even-odd, arcs as arcs).
 bool inside_loop(const Cut& cut, std::span<const Piece> pieces, Point q);
-// The containment test's ray runs this far above the point (mm): off the unit grid.
-constexpr double kPlanRayNudgeMm = 1.2345678e-7;
 // Whether p lies inside the closed polygon (even-odd).
 bool inside_polygon(const std::vector<Point>& polygon, Point p);
 

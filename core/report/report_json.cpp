@@ -45,6 +45,24 @@ nlohmann::json diagnostic_to_json(const Diagnostic& d, Lang lang) {
     j["line"] = d.line;
     j["column"] = d.column;
     j["message"] = diagnostic_message(d, lang);
+    // The cut plan's (6xx): the contour concerned, the point on the drawing, the other places, the overlap.
+    if (d.contour_first > 0) j["contour"] = {{"first_line", d.contour_first}, {"last_line", d.contour_last}};
+    if (d.has_at) j["at"] = point_to_json(d.at);
+    if (!d.related.empty()) {
+        nlohmann::json related = nlohmann::json::array();
+        for (const RelatedLocation& r : d.related)
+            related.push_back({{"line", r.line}, {"end_line", r.end_line}, {"message", related_message(r, lang)}});
+        j["related"] = std::move(related);
+    }
+    if (!d.overlap.empty()) {
+        nlohmann::json polygons = nlohmann::json::array();
+        for (const std::vector<Point>& polygon : d.overlap) {
+            nlohmann::json points = nlohmann::json::array();
+            for (Point p : polygon) points.push_back({round_for_json(p.x), round_for_json(p.y)});
+            polygons.push_back(std::move(points));
+        }
+        j["overlap"] = std::move(polygons);
+    }
     return j;
 }
 

@@ -45,7 +45,9 @@ struct FileReport {
 // Keeps the first `max` diagnostics of `file` (in source order) and counts the rest in omitted_*.
 void limit_diagnostics(FileReport& file, std::size_t max);
 
-// {"severity","code","line","column","message"}
+// {"severity","code","line","column","message"}, and for the cut plan's (6xx) "contour": {"first_line","last_line"},
+// "at": {"x","y"}, "related": [{"line","end_line","message"}] and "overlap": [[[x, y], ...], ...] (the overlapping
+// area is inside every one of the polygons) when they have them.
 [[nodiscard]] nlohmann::json diagnostic_to_json(const Diagnostic& d, Lang lang = Lang::En);
 
 // [diagnostic_to_json of each]
