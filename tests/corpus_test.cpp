@@ -7,7 +7,9 @@
 //   - comment1: the text outside a 3/4 section on line 7 is an E101 error, and the only error;
 //   - example.txt: every line carrying a `#` annotation (or the `.....` placeholders) is an E101 error;
 //   - invariants on the real tapes: something is cut, one pierce per `7` block, finite boxes and lengths;
-//   - exact hand-computed statistics for PR7.esi, 115_046.esi and PS178.esi (see the comments there).
+//   - exact hand-computed statistics for PR7.esi, 115_046.esi and PS178.esi (see the comments there);
+//   - the cut plan's diagnostics (6xx) of every file are exactly the ones docs/diagnostics.md lists and explains
+//     ("The cut plan on the real tapes"): code and line.
 
 #include <gtest/gtest.h>
 
@@ -16,7 +18,9 @@
 #include <filesystem>
 #include <set>
 #include <sstream>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "essi/diagnostics.hpp"
@@ -279,6 +283,64 @@ TEST(Corpus, PS178ExactStatistics) {
     EXPECT_NEAR(s.cut_bbox.max_y, 37.5, kLengthTolMm);
     EXPECT_NEAR(s.end_position.x, 38.0, kLengthTolMm);
     EXPECT_NEAR(s.end_position.y, -40.0, kLengthTolMm);
+}
+
+// The cut plan's diagnostics (codes 6xx) of each file of the corpus: exactly these, code and line, as listed and
+// explained in docs/diagnostics.md ("The cut plan on the real tapes"). W608: the feed 39+v (v mm/min) is below
+// feed_range_mm_min's 50, at the first cutting motion (167_1's 39+0 falls back to the profile's 1000 mm/min,
+// 18102826's 39+55 is in the range). N603: lone circles and rectangles cut counter-clockwise with 29, the kerf
+// inside (PR002: the circles around (-1420, 370), (-1320, 370) and (-1843, 0) mm, r 90, outside the 2150 x 700 mm
+// rectangle that holds the other two; PR6: the circle around (0, 0), r 20, and the 290 x 210 mm rectangle, which
+// lie across the edge of the last rectangle, not inside it). Every other contour is a part with its kerf outside
+// or a hole of one with its kerf inside, cut before it.
+TEST(Corpus, CutPlanDiagnosticsAreTheDocumentedOnes) {
+    REQUIRE_CORPUS(dir);
+    using Expected = std::vector<std::pair<std::string, unsigned>>;
+    const std::map<std::string, Expected> documented = {
+        {"115_039.esi", {{"W608", 4}}},
+        {"115_046.esi", {{"W608", 4}}},
+        {"115_065.esi", {{"W608", 4}}},
+        {"115_117.esi", {{"W608", 4}}},
+        {"115_192.esi", {{"W608", 4}}},
+        {"167_1.esi", {}},
+        {"18102826.esi", {}},
+        {"192_1.esi", {{"W608", 4}}},
+        {"KH18105-1000.esi", {{"W608", 4}}},
+        {"PR002.esi", {{"W608", 5}, {"N603", 6}, {"N603", 15}, {"N603", 42}}},
+        {"PR003.esi", {{"W608", 5}}},
+        {"PR11.esi", {{"W608", 5}}},
+        {"PR4.esi", {{"W608", 5}}},
+        {"PR5.esi", {{"W608", 5}}},
+        {"PR6.esi", {{"W608", 4}, {"N603", 5}, {"N603", 12}}},
+        {"PR7.esi", {{"W608", 4}}},
+        {"PR8.esi", {{"W608", 5}}},
+        {"PR9.esi", {{"W608", 5}}},
+        {"PS178.esi", {{"W608", 4}}},
+        {"comment1", {}},
+        {"comment2", {}},
+        {"example.txt", {}},
+        {"geom1", {{"W608", 13}}},
+    };
+    const essi::Profile profile = iso();
+    const auto files = corpus_files(dir);
+    EXPECT_EQ(files.size(), documented.size());
+    for (const auto& name : files) {
+        SCOPED_TRACE(name);
+        const auto it = documented.find(name);
+        if (it == documented.end()) {
+            ADD_FAILURE() << "not in the documented list (docs/diagnostics.md, The cut plan on the real tapes)";
+            continue;
+        }
+        const auto r = essi::check_tape(read_file(dir + "/" + name), profile);
+        Expected found;
+        for (const auto& d : r.diagnostics) {
+            if (static_cast<int>(d.code) >= 600 && static_cast<int>(d.code) < 700) found.push_back({essi::code_name(d.code), d.line});
+        }
+        std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) {
+            return a.second != b.second ? a.second < b.second : a.first < b.first;
+        });
+        EXPECT_EQ(found, it->second) << "diagnostics:" << diagnostics_text(r);
+    }
 }
 
 }  // namespace
