@@ -1,5 +1,7 @@
 #include "pipelined_check.hpp"
 
+#include "plate_runner.hpp"
+
 #include <array>
 #include <atomic>
 #include <thread>
@@ -47,7 +49,10 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
         }
     });
 
+    // The cut plan's plates on a third thread: the reader leaves most of its core free.
+    ThreadPlateRunner plates;
     TapeChecker checker(bytes, profile);
+    checker.set_plate_runner(&plates);
     for (std::size_t k = 0;; ++k) {
         Slot& slot = slots[k % slots.size()];
         slot.full.wait(false, std::memory_order_acquire);

@@ -113,6 +113,8 @@ void flatten_piece(const Piece& p, std::vector<Point>& out) {
 
 void close_loop(Cut& cut, std::span<const Piece> pieces, double closure_mm, double gap_limit_mm) {
     const std::span<const Piece> p = pieces.subspan(cut.first_piece, cut.end_piece - cut.first_piece);
+    cut.box = Box{};
+    for (const Piece& q : p) cut.box.add(piece_box(q));
     cut.closed = false;
     const std::size_t n = p.size();
     const double closure2 = closure_mm * closure_mm;

@@ -23,6 +23,26 @@ const char* contour_role_name(ContourRole r) {
     return "?";
 }
 
+namespace {
+
+// A plate handed over: its cuts and pieces, and what its analysis finds.
+struct PlateJob {
+    std::vector<plan::Cut> cuts;
+    std::vector<plan::Piece> pieces;
+    plan::PlateSettings settings;
+    bool keep_contours = false;
+    std::vector<Diagnostic> found;
+    std::vector<PlanContour> contours;
+    void run() {
+        for (plan::Cut& c : cuts) plan::close_loop(c, pieces, settings.closure_mm, settings.gap_limit_mm);
+        plan::analyse_plate(cuts, pieces, settings, found, keep_contours ? &contours : nullptr);
+        std::vector<plan::Cut>().swap(cuts);  // (only the findings are kept until the end)
+        std::vector<plan::Piece>().swap(pieces);
+    }
+};
+
+}  // namespace
+
 struct CutPlan::State {
     const Profile& profile;
     bool keep_contours;
@@ -45,6 +65,8 @@ struct CutPlan::State {
     double checked_feed = -1;          // the feed of the last cut motion (checked, and reported, once per change)
     std::vector<Diagnostic> found;
     std::vector<PlanContour> contours;
+    PlateRunner* runner = nullptr;
+    std::vector<std::unique_ptr<PlateJob>> jobs;  // the plates handed over, in order
 
     explicit State(const Profile& p, bool keep)
         : profile(p), keep_contours(keep), closure_mm(p.arc_tolerance_units * p.unit_mm) {}
@@ -59,7 +81,7 @@ struct CutPlan::State {
     }
     // The cut of head `h` gets a piece of line `line`, cut with this kerf.
     plan::Cut& cut_of(int h, std::uint32_t line, KerfSide kerf, double kerf_mm, double feed) {
-        check_feed(line, feed);
+        if (feed != checked_feed) [[unlikely]] check_feed(line, feed);
         plan::Cut& c = open[h];
         if (!cutting[h]) {
             c = plan::Cut{};
@@ -70,8 +92,8 @@ struct CutPlan::State {
             if (h == 1) head2_pieces.clear();
             c.first_piece = static_cast<std::uint32_t>(pieces.size());
         }
-        if (kerf != open_kerf[h]) mixed_kerf[h] = true;
-        c.kerf_width_mm = std::max(c.kerf_width_mm, 2 * kerf_mm);
+        if (kerf != open_kerf[h]) [[unlikely]] mixed_kerf[h] = true;
+        if (2 * kerf_mm > c.kerf_width_mm) [[unlikely]] c.kerf_width_mm = 2 * kerf_mm;
         c.last_line = line;
         return c;
     }
@@ -89,14 +111,12 @@ struct CutPlan::State {
         c.length_mm += m.length_mm;
         std::vector<plan::Piece>& out = pieces_of(h);
         if (m.curve == CurveKind::Parabola) {
-            c.box.add(bounding_box(m));
             std::vector<Point> pts;
             flatten(m, kPlanChordToleranceMm, pts, /*include_start*/ true);
             for (std::size_t k = 1; k < pts.size(); ++k) out.push_back({pts[k - 1], pts[k], {}, 0, 0, m.line, false});
             return;
         }
         out.push_back({m.start, m.end, m.centre, m.sweep, m.radius, m.line, m.curve == CurveKind::Arc});
-        c.box.add(plan::piece_box(out.back()));
     }
     // A straight motion of head 1 (most of a tape): no record made.
     void add(const UnitLine& l) {
@@ -107,8 +127,6 @@ struct CutPlan::State {
         }
         plan::Cut& c = cut_of(0, l.line, l.kerf, l.kerf_mm, l.feed_mm_min);
         c.length_mm += l.length_mm;
-        c.box.add(l.start);
-        c.box.add(l.end);
         pieces.push_back({l.start, l.end, {}, 0, 0, l.line, false});
     }
 
@@ -141,8 +159,6 @@ struct CutPlan::State {
     void finish_cut(plan::Cut& c) {
         c.end_piece = static_cast<std::uint32_t>(pieces.size());
         c.order = static_cast<int>(cuts.size());
-        plan::close_loop(c, pieces, closure_mm, profile.closure_gap_mm);
-        check_table(c);
         cuts.push_back(std::move(c));
     }
 
@@ -150,35 +166,37 @@ struct CutPlan::State {
         close(0);
         close(1);
         if (cuts.empty()) return;
-        const plan::PlateSettings st{closure_mm, profile.closure_gap_mm, profile.lead_in_required, plate};
-        plan::analyse_plate(cuts, pieces, st, found, keep_contours ? &contours : nullptr);
-        cuts.clear();
-        pieces.clear();
+        auto job = std::make_unique<PlateJob>();
+        job->cuts.swap(cuts);
+        job->pieces.swap(pieces);
+        job->settings = {closure_mm, profile.closure_gap_mm, profile.lead_in_required, plate, profile.table};
+        cuts.reserve(job->cuts.size());  // (the next plate is likely as large)
+        pieces.reserve(job->pieces.size());
+        job->keep_contours = keep_contours;
+        PlateJob* j = job.get();
+        jobs.push_back(std::move(job));
+        if (runner) runner->run([j] { j->run(); });
+        else j->run();
         ++plate;
+    }
+    // After the last plate: every plate's findings, in plate order.
+    void collect() {
+        if (runner) runner->wait();
+        for (const auto& j : jobs) {
+            found.insert(found.end(), std::make_move_iterator(j->found.begin()), std::make_move_iterator(j->found.end()));
+            contours.insert(contours.end(), j->contours.begin(), j->contours.end());
+        }
+        jobs.clear();
     }
 
     // W608: a cut at a feed outside feed_range_mm_min, once each time the feed changes.
     void check_feed(std::uint32_t line, double feed) {
-        if (feed == checked_feed) return;
         checked_feed = feed;
         if (feed >= profile.feed_min_mm_min && feed <= profile.feed_max_mm_min) return;
         Diagnostic d = make_diagnostic(Severity::Warning, DiagCode::W608_FeedOutOfRange, line, 0, Msg::PlanFeed,
                                        {number_text(feed), number_text(profile.feed_min_mm_min),
                                         number_text(profile.feed_max_mm_min)});
         if (feed_line > 0) d.related.push_back({feed_line, feed_line, Msg::RelatedFeedSet, {}});
-        found.push_back(std::move(d));
-    }
-
-    // W611: a cut larger than the table's travel.
-    void check_table(const plan::Cut& c) {
-        if (!profile.table || c.box.empty) return;
-        const double tw = profile.table->max_x_mm - profile.table->min_x_mm, th = profile.table->max_y_mm - profile.table->min_y_mm;
-        const double w = c.box.max_x - c.box.min_x, h = c.box.max_y - c.box.min_y;
-        if (w <= tw && h <= th) return;
-        Diagnostic d = make_diagnostic(Severity::Warning, DiagCode::W611_CutLargerThanTable, c.first_line, 0,
-                                       Msg::PlanLargerThanTable, {number_text(w), number_text(h), number_text(tw), number_text(th)});
-        d.contour_first = c.first_line;
-        d.contour_last = c.last_line;
         found.push_back(std::move(d));
     }
 
@@ -204,8 +222,11 @@ void CutPlan::on_motion(const MotionRecord& m) { s_->add(m); }
 void CutPlan::on_line(const UnitLine& l) { s_->add(l); }
 void CutPlan::on_event(const MachineEvent& e) { s_->event(e); }
 
+void CutPlan::set_runner(PlateRunner* runner) { s_->runner = runner; }
+
 std::vector<Diagnostic> CutPlan::finish() {
     s_->end_plate();
+    s_->collect();
     return std::move(s_->found);
 }
 

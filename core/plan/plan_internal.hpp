@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -52,7 +53,7 @@ struct Cut {
     std::uint32_t gap_line = 0;
 };
 
-// Finds the cut's loop (or its gap): fills closed, loop_*, area, gap_*. `closure_mm`: ends this close to a point
+// Finds the cut's box and its loop (or its gap): fills box, closed, loop_*, area, gap_*. `closure_mm`: ends this close to a point
 // passed close the loop (the arc tolerance in mm).
 void close_loop(Cut& cut, std::span<const Piece> pieces, double closure_mm, double gap_limit_mm);
 // The loop flattened (once).
@@ -76,6 +77,7 @@ struct PlateSettings {
     double gap_limit_mm = 0;    // closure_gap_mm
     bool lead_in_required = false;
     int plate = 1;
+    std::optional<TableLimits> table;  // W611
 };
 void analyse_plate(std::vector<Cut>& cuts, std::span<const Piece> pieces, const PlateSettings& settings,
                    std::vector<Diagnostic>& out, std::vector<PlanContour>* contours);

@@ -34,6 +34,7 @@ public:
     }
 
     void run() {
+        table();
         gaps();
         same_paths();
         find_neighbours();
@@ -78,6 +79,21 @@ private:
     const Piece& first_piece(const Cut& c) const { return pieces_[c.first_piece]; }
     const Piece& last_piece(const Cut& c) const { return pieces_[c.end_piece - 1]; }
     const std::vector<Point>& polygon(std::size_t i) { return loop_polygon(cuts_[i], pieces_); }
+
+    // --- W611: a cut larger than the table's travel ---
+    void table() {
+        if (!st_.table) return;
+        const double tw = st_.table->max_x_mm - st_.table->min_x_mm, th = st_.table->max_y_mm - st_.table->min_y_mm;
+        for (const Cut& c : cuts_) {
+            const double w = c.box.max_x - c.box.min_x, h = c.box.max_y - c.box.min_y;
+            if (c.box.empty || (w <= tw && h <= th)) continue;
+            Diagnostic d = make_diagnostic(Severity::Warning, DiagCode::W611_CutLargerThanTable, c.first_line, 0,
+                                           Msg::PlanLargerThanTable, {number_text(w), number_text(h), number_text(tw), number_text(th)});
+            d.contour_first = c.first_line;
+            d.contour_last = c.last_line;
+            out_.push_back(std::move(d));
+        }
+    }
 
     // --- W601: a contour left open by a small gap ---
     void gaps() {

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string_view>
 #include <vector>
@@ -67,6 +68,18 @@ struct PlanContour {
     bool lead_in = false;
 };
 
+// Where a plate's analysis runs. Without one, a plate is analysed when it ends, on the thread that feeds the plan;
+// natively the pipelined check passes one that analyses a plate on another thread while the next one is read (the
+// core starts no thread). The analysis of a plate depends on nothing but that plate.
+class PlateRunner {
+public:
+    virtual ~PlateRunner() = default;
+    // Runs `job` before wait() returns (it may wait for room first).
+    virtual void run(std::function<void()> job) = 0;
+    // Returns once every job given has run.
+    virtual void wait() = 0;
+};
+
 // The cut plan of one tape, fed the motion stream (a MotionSink): diagnostics come out when a plate ends and at
 // finish(). TapeChecker runs one on every tape it checks.
 class CutPlan final : public MotionSink {
@@ -79,6 +92,8 @@ public:
     void on_motion(const MotionRecord& m) override;
     void on_line(const UnitLine& l) override;
     void on_event(const MachineEvent& e) override;
+    // Plates are analysed by `runner` from now on (null: at once). It must outlive finish().
+    void set_runner(PlateRunner* runner);
     // After the last motion: the last plate analysed; the diagnostics found (unsorted). Call once.
     [[nodiscard]] std::vector<Diagnostic> finish();
     // The contours analysed, when keep_contours.

@@ -53,6 +53,8 @@ public:
     TapeChecker& operator=(const TapeChecker&) = delete;
     // `measures`: measure_motions(chunk), when the caller worked it out ahead (on another thread).
     void check_chunk(const Tape& chunk, std::span<const MotionMeasure> measures = {});
+    // The cut plan's plates are analysed by `runner` (essi/plan.hpp; null: on this thread as they end).
+    void set_plate_runner(PlateRunner* runner) { plan_.set_runner(runner); }
     // After the last chunk: the result (diagnostics sorted). Call once.
     [[nodiscard]] CheckResult finish();
 private:
