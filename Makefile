@@ -54,8 +54,10 @@ bench: setup
 	cmake --preset native
 	cmake --build --preset native -j$(JOBS) --target essi_bench
 	build/native/bin/essi_bench
-	cmake --build --preset native -j$(JOBS) --target essi essi_gen_batch
+	cmake --build --preset native -j$(JOBS) --target essi essi_gen_batch essi_gen_nest
 	scripts/bench_batch
+	@echo "== essi check with every rule of the cut plan, 100 MB nest (goal: 150 MB/s) =="
+	PROFILE=tests/bench/every_rule.profile.json GOAL_MBPS=150 scripts/bench_compare 100
 	cmake --preset wasm
 	@if [ -f third_party/benchmark/CMakeLists.txt ]; then \
 	  cmake --build --preset wasm -j$(JOBS) --target essi_bench && \

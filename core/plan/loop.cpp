@@ -48,24 +48,25 @@ bool returns_at(std::span<const Piece> p, std::size_t j, std::size_t candidates,
     return false;
 }
 
-// The loop's exact signed area (a chord's shoelace term, plus the circular segment of each arc) and box.
-void measure_loop(Cut& cut, std::span<const Piece> p) {
+// The loop's exact signed area (a chord's shoelace term, plus the circular segment of each arc); the boxes of the
+// cut and of its loop, each piece's box made once.
+void measure(Cut& cut, std::span<const Piece> pieces) {
     double twice = 0;
-    Box box;
-    box.add(cut.loop_start);
-    for (std::uint32_t k = cut.loop_begin; k < cut.loop_end; ++k) {
-        const Piece& q = p[k];
+    Box box, loop_box;
+    if (cut.closed) loop_box.add(cut.loop_start);
+    for (std::uint32_t k = cut.first_piece; k < cut.end_piece; ++k) {
+        const Piece& q = pieces[k];
+        const Box b = piece_box(q);
+        box.add(b);
+        if (!cut.closed || k < cut.loop_begin || k >= cut.loop_end) continue;
         const Point a = k == cut.loop_begin ? cut.loop_start : q.start;
         twice += a.x * q.end.y - q.end.x * a.y;
-        if (q.arc) {
-            twice += q.radius * q.radius * (q.sweep - std::sin(q.sweep));
-            box.add(piece_box(q));
-        } else {
-            box.add(q.end);
-        }
+        if (q.arc) twice += q.radius * q.radius * (q.sweep - std::sin(q.sweep));
+        loop_box.add(k == cut.loop_begin && !q.arc ? Box::of(a, q.end) : b);
     }
+    cut.box = box;
+    cut.loop_box = loop_box;
     cut.area_mm2 = twice / 2;
-    cut.loop_box = box;
 }
 
 // The open cut's gap: the point it passed nearest to its end, among those far enough back along the path that
@@ -113,40 +114,38 @@ void flatten_piece(const Piece& p, std::vector<Point>& out) {
 
 void close_loop(Cut& cut, std::span<const Piece> pieces, double closure_mm, double gap_limit_mm) {
     const std::span<const Piece> p = pieces.subspan(cut.first_piece, cut.end_piece - cut.first_piece);
-    cut.box = Box{};
-    for (const Piece& q : p) cut.box.add(piece_box(q));
     cut.closed = false;
     const std::size_t n = p.size();
     const double closure2 = closure_mm * closure_mm;
     // First the loops that begin on the lead-in's first pieces (nearly every contour), then any other point passed.
     for (const std::size_t candidates : {std::min(n, kPlanLeadMotions), n <= kPlanFullClosureMotions ? n : std::size_t{0}}) {
-        for (std::size_t j = 0; j < n && candidates > 0; ++j) {
+        for (std::size_t j = 0; j < n && candidates > 0 && !cut.closed; ++j) {
             std::size_t at = 0;
             Point where;
             if (!returns_at(p, j, candidates, closure2, at, where)) continue;
+            cut.closed = true;
             cut.loop_begin = cut.first_piece + static_cast<std::uint32_t>(at);
             cut.loop_end = cut.first_piece + static_cast<std::uint32_t>(j + 1);
             cut.loop_start = where;
-            measure_loop(cut, pieces);
+            measure(cut, pieces);
             cut.closed = std::fabs(cut.area_mm2) > 0;  // (out and back along itself encloses nothing)
-            if (cut.closed) return;
         }
-        if (candidates >= n) break;
+        if (cut.closed || candidates >= n) break;
     }
+    if (cut.closed) return;
+    measure(cut, pieces);
     find_gap(cut, p, gap_limit_mm);
 }
 
-const std::vector<Point>& loop_polygon(Cut& cut, std::span<const Piece> pieces) {
-    if (cut.has_polygon) return cut.polygon;
-    cut.has_polygon = true;
-    cut.polygon.push_back(cut.loop_start);
+std::vector<Point> loop_polygon(const Cut& cut, std::span<const Piece> pieces) {
+    std::vector<Point> polygon{cut.loop_start};
     for (std::uint32_t k = cut.loop_begin; k < cut.loop_end; ++k) {
         Piece p = pieces[k];
         if (k == cut.loop_begin) p.start = cut.loop_start;  // (a loop closing on a line: from the point)
-        flatten_piece(p, cut.polygon);
+        flatten_piece(p, polygon);
     }
-    if (cut.polygon.size() > 1) cut.polygon.pop_back();  // (the end is the start)
-    return cut.polygon;
+    if (polygon.size() > 1) polygon.pop_back();  // (the end is the start)
+    return polygon;
 }
 
 std::vector<Point> path_points(const Cut& cut, std::span<const Piece> pieces) {
@@ -175,9 +174,8 @@ int quadrant(double x, double y) {
     return x < 0 ? 2 : 3;
 }
 
-Box piece_box(const Piece& p) {
+Box arc_box(const Piece& p) {
     Box b = Box::of(p.start, p.end);
-    if (!p.arc) return b;
     const bool ccw = p.sweep > 0;
     double ux = p.start.x - p.centre.x, uy = p.start.y - p.centre.y;
     double vx = p.end.x - p.centre.x, vy = p.end.y - p.centre.y;
@@ -210,6 +208,12 @@ bool inside_loop(const Cut& cut, std::span<const Piece> pieces, Point p) {
         Piece piece = pieces[k];
         if (k == cut.loop_begin) piece.start = cut.loop_start;
         if (piece.arc) {
+            // (the circle's box first: most arcs of a loop are far from the point)
+            const double r = piece.radius;
+            if (p.y < piece.centre.y - r || p.y > piece.centre.y + r || p.x > piece.centre.x + r) {
+                if (crosses_ray(piece.start, piece.end, p)) ++crossings;  // (the arc bulges past its ends: its chord)
+                continue;
+            }
             const Box box = piece_box(piece);
             if (p.y < box.min_y || p.y > box.max_y || p.x > box.max_x) continue;
             if (p.x >= box.min_x) {

@@ -25,7 +25,8 @@ struct Piece {
     bool arc = false;
 };
 // Its exact box (an arc's extremes inside its sweep included) and length.
-[[nodiscard]] Box piece_box(const Piece& p);
+[[nodiscard]] Box arc_box(const Piece& p);
+[[nodiscard]] inline Box piece_box(const Piece& p) { return p.arc ? arc_box(p) : Box::of(p.start, p.end); }
 [[nodiscard]] double piece_length(const Piece& p);
 
 // One cut: pierce to torch off, one head. Its pieces are the plate's pieces [first_piece, end_piece).
@@ -45,8 +46,6 @@ struct Cut {
     Point loop_start;
     Box loop_box;
     double area_mm2 = 0;            // signed, exact (arcs as arcs)
-    std::vector<Point> polygon;     // the loop flattened (kPlanChordToleranceMm), made when a test needs it
-    bool has_polygon = false;
     // Left open: how far the end is from where the contour began, and that point's line.
     double gap_mm = 0;
     Point gap_from;
@@ -56,8 +55,8 @@ struct Cut {
 // Finds the cut's box and its loop (or its gap): fills box, closed, loop_*, area, gap_*. `closure_mm`: ends this close to a point
 // passed close the loop (the arc tolerance in mm).
 void close_loop(Cut& cut, std::span<const Piece> pieces, double closure_mm, double gap_limit_mm);
-// The loop flattened (once).
-const std::vector<Point>& loop_polygon(Cut& cut, std::span<const Piece> pieces);
+// The loop flattened within kPlanChordToleranceMm, without repeating its first point.
+std::vector<Point> loop_polygon(const Cut& cut, std::span<const Piece> pieces);
 // The whole path flattened, from its first point.
 std::vector<Point> path_points(const Cut& cut, std::span<const Piece> pieces);
 

@@ -78,7 +78,12 @@ private:
     bool usable(std::size_t i) const { return cuts_[i].closed && !nodes_[i].duplicate; }
     const Piece& first_piece(const Cut& c) const { return pieces_[c.first_piece]; }
     const Piece& last_piece(const Cut& c) const { return pieces_[c.end_piece - 1]; }
-    const std::vector<Point>& polygon(std::size_t i) { return loop_polygon(cuts_[i], pieces_); }
+    // The loop of cut i flattened (made once, when a test needs it).
+    const std::vector<Point>& polygon(std::size_t i) {
+        if (polygons_.empty()) polygons_.resize(cuts_.size());
+        if (polygons_[i].empty()) polygons_[i] = loop_polygon(cuts_[i], pieces_);
+        return polygons_[i];
+    }
 
     // --- W611: a cut larger than the table's travel ---
     void table() {
@@ -113,7 +118,7 @@ private:
     // Candidates share their box (to a few kPlanSamePathToleranceMm: sorted by it); they are the same when every
     // point of one lies on the other.
     void same_paths() {
-        const auto q = [](double v) { return std::llround(v / (4 * kPlanSamePathToleranceMm)); };
+        const auto q = [](double v) { return static_cast<long long>(std::floor(v * (1 / (4 * kPlanSamePathToleranceMm)) + 0.5)); };
         std::vector<std::pair<std::array<long long, 4>, int>> keyed;
         keyed.reserve(cuts_.size());
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
@@ -314,13 +319,15 @@ private:
                 const double d = approach(polygon(static_cast<std::size_t>(j)), true, polygon(i), a.loop_box, limit, where);
                 if (!(d < limit)) continue;
                 reported.insert({static_cast<int>(i), j});
-                report_collision(a, b, nodes_[i].role, nodes_[static_cast<std::size_t>(j)].role, d, limit, where);
+                report_collision(i, static_cast<std::size_t>(j), d, limit, where);
             }
         }
         crossings(reported);
     }
-    void report_collision(const Cut& a, const Cut& b, ContourRole ra, ContourRole rb, double d, double width, Point where) {
-        const bool known = ra != ContourRole::Lone && rb != ContourRole::Lone;
+    void report_collision(std::size_t i, std::size_t j, double d, double width, Point where) {
+        const Cut& a = cuts_[i];
+        const Cut& b = cuts_[j];
+        const bool known = nodes_[i].role != ContourRole::Lone && nodes_[j].role != ContourRole::Lone;
         Diagnostic diag;
         if (!known) {
             if (d > kPlanTouchToleranceMm) return;  // (without compensation only a real overlap counts)
@@ -335,7 +342,7 @@ private:
                          {number_text(d), a.first_line, a.last_line, number_text(width)});
             diag.related.push_back(related(a, Msg::RelatedOtherPart));
         }
-        if (d == 0) diag.overlap = {a.polygon, b.polygon};
+        if (d == 0) diag.overlap = {polygon(i), polygon(j)};
         out_.push_back(std::move(diag));
     }
     // E606: a cut (its whole path) crossing a part cut free before it.
@@ -344,9 +351,14 @@ private:
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
             if (cuts_[i].end_piece == cuts_[i].first_piece || nodes_[i].duplicate) continue;
             const auto ranges = crossing_ranges(i);
+            const Cut& c = cuts_[i];
             Box reach;
-            for (const auto& [first, end] : ranges)
-                for (std::uint32_t k = first; k < end; ++k) reach.add(piece_box(pieces_[k]));
+            if (ranges[1].second == 0) {
+                reach = c.box;  // (the whole path)
+            } else {
+                for (const auto& [first, end] : ranges)
+                    for (std::uint32_t k = first; k < end; ++k) reach.add(piece_box(pieces_[k]));
+            }
             if (reach.empty) continue;
             paths.clear();
             bool done = false;
@@ -404,6 +416,7 @@ private:
     std::vector<Diagnostic>& out_;
     std::vector<Node> nodes_;
     std::vector<Box> boxes_;                   // the loops' boxes (empty: no loop), the grid's
+    std::vector<std::vector<Point>> polygons_; // the loops flattened, as made
     std::vector<std::uint32_t> first_neighbour_;
     std::vector<int> neighbours_;
     double max_width_ = 0;  // the widest kerf of the plate's cuts

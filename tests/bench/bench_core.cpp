@@ -3,6 +3,9 @@
 //   read/<eol>     essi::read_tape               bytes -> blocks
 //   interp/<eol>   essi::interpret               blocks -> motion stream (a counting sink), tape read once
 //   check/<eol>    essi::check_tape              the whole pipeline on bytes (what `essi check` runs)
+//   check_every_rule/crlf   the same with the cut plan's optional rules on (lead_in_required, a table: W610, W611)
+//   check_without_plan/crlf the pipeline without the cut plan (reader, interpreter, statistics): check / this is
+//                  what the cut plan costs (issue 15: the viewer's load may grow by at most 20 %)
 //   read_eia       essi::read_tape of the EIA form of the tape (tests/bench/eia_generator.hpp, Woyda table, LF)
 //   check_eia      essi::check_tape of it
 //   wc_l/<eol>     `wc -l` on the same tape as a file: the floor (native only; a child process, timed
@@ -185,6 +188,49 @@ void bm_check(benchmark::State& state, LineEnding eol) {
     state.counters["cut_m"] = cut_m;
 }
 
+// Every rule of the cut plan on: a lead-in asked for, a table as large as the generated plates.
+const essi::Profile& every_rule_profile() {
+    static const essi::Profile p = [] {
+        essi::Profile q;
+        q.lead_in_required = true;
+        q.table = essi::TableLimits{-10, -10, 3010, 1510};
+        return q;
+    }();
+    return p;
+}
+
+void bm_check_every_rule(benchmark::State& state, LineEnding eol) {
+    const std::string& bytes = tape_bytes(eol);
+    std::size_t problems = 0;
+    for (auto _ : state) {
+        const essi::CheckResult result = essi::check_tape(bytes, every_rule_profile());
+        problems = result.diagnostics.size();
+        benchmark::DoNotOptimize(problems);
+    }
+    set_throughput(state, bytes.size());
+    state.counters["errors"] = static_cast<double>(problems);  // (any diagnostic: the nest is clean)
+}
+
+// What check_tape did before the cut plan: the chunks read and interpreted into the statistics only.
+void bm_check_without_plan(benchmark::State& state, LineEnding eol) {
+    const std::string& bytes = tape_bytes(eol);
+    std::size_t errors = 0;
+    for (auto _ : state) {
+        std::vector<essi::Diagnostic> diagnostics;
+        essi::StatsSink stats(profile());
+        essi::Interpreter interpreter(bytes, profile(), stats, nullptr, diagnostics);
+        essi::TapeReader reader(bytes, profile());
+        essi::Tape chunk;
+        while (reader.read_chunk(chunk, essi::kCheckChunkBlocks)) interpreter.run(chunk);
+        interpreter.finish();
+        stats.finish();
+        errors = diagnostics.size();
+        benchmark::DoNotOptimize(errors);
+    }
+    set_throughput(state, bytes.size());
+    state.counters["errors"] = static_cast<double>(errors);
+}
+
 #ifndef __EMSCRIPTEN__
 // The tape as a file in the temp folder (written once per line ending, removed at exit).
 const std::string& tape_file(LineEnding eol) {
@@ -261,6 +307,10 @@ int main(int argc, char** argv) {
             ->Unit(benchmark::kMillisecond)->UseManualTime();
 #endif
     }
+    benchmark::RegisterBenchmark("check_every_rule/crlf", bm_check_every_rule, LineEnding::CrLf)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("check_without_plan/crlf", bm_check_without_plan, LineEnding::CrLf)
+        ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("read_eia", bm_read_eia)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("check_eia", bm_check_eia)->Unit(benchmark::kMillisecond);
     benchmark::RunSpecifiedBenchmarks();
