@@ -305,7 +305,25 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     }
     const double shown = options.view ? std::max({w, h, 1e-3}) : extent;  // (the legend and markers scale with it)
     const double font = shown * 0.022;
-    const double legend_h = font * 4.6;
+    // The colour key: a short sample line and a name per layer, on a second row when one is too narrow.
+    struct Key {
+        std::string_view name, color;
+        const char* dash;
+    };
+    std::vector<Key> keys = {{"cut", kSvgCutColor, ""},
+                             {"mark", kSvgMarkColor, ""},
+                             {"travel", kSvgTravelColor, " stroke-dasharray=\"2 2\""},
+                             {"rapid", kSvgRapidColor, " stroke-dasharray=\"4 3\""}};
+    if (!sink.kerf_path_.empty()) keys.push_back({"kerf", kSvgKerfColor, ""});
+    for (const Key k : {Key{"pierce", kSvgPierceColor, ""}, Key{"error", kSvgErrorColor, ""},
+                        Key{"warning", kSvgWarningColor, ""}, Key{"note", kSvgNoteColor, ""}})
+        keys.push_back(k);
+    const double sample = font * 2;
+    const auto key_width = [&](const Key& k) { return sample + font * (1.0 + 0.62 * static_cast<double>(k.name.size())); };
+    double keys_width = 0;
+    for (const Key& k : keys) keys_width += key_width(k);
+    const std::size_t key_break = keys_width > w + margin ? keys.size() / 2 + 1 : keys.size();  // (the second row's first)
+    const double legend_h = font * (key_break < keys.size() ? 5.9 : 4.6);
     const double vx = box.min_x - margin, vy = -box.max_y - margin;
     const double vw = w + 2 * margin, vh = h + 2 * margin + legend_h;
     const double height_px = std::max(1.0, std::round(options.width_px * vh / vw));
@@ -383,9 +401,7 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
          format_duration(st.estimated_time_s) + ", " + std::to_string(errors) + (errors == 1 ? " error" : " errors") +
          ", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings") + "</text>\n";
     ly += font * 1.3;
-    // The key: a short sample line and a name per layer.
     double kx = lx;
-    const double sample = font * 2;
     auto key = [&](std::string_view name, std::string_view color, const char* dash) {
         s += "<g class=\"key\" data-kind=\"" + std::string(name) + "\"><path d=\"M" + num(kx) + " " + num(ly - font * 0.35) +
              "h" + num(sample) + "\" stroke=\"" + std::string(color) + "\" stroke-width=\"2\"" + dash +
@@ -393,15 +409,13 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
              "\">" + std::string(name) + "</text></g>\n";
         kx += sample + font * (1.0 + 0.62 * static_cast<double>(name.size()));
     };
-    key("cut", kSvgCutColor, "");
-    key("mark", kSvgMarkColor, "");
-    key("travel", kSvgTravelColor, " stroke-dasharray=\"2 2\"");
-    key("rapid", kSvgRapidColor, " stroke-dasharray=\"4 3\"");
-    if (!sink.kerf_path_.empty()) key("kerf", kSvgKerfColor, "");
-    key("pierce", kSvgPierceColor, "");
-    key("error", kSvgErrorColor, "");
-    key("warning", kSvgWarningColor, "");
-    key("note", kSvgNoteColor, "");
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        if (k == key_break) {
+            kx = lx;
+            ly += font * 1.3;
+        }
+        key(keys[k].name, keys[k].color, keys[k].dash);
+    }
     s += "</g>\n</svg>\n";
     out.svg = std::move(s);
     return out;
