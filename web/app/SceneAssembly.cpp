@@ -84,9 +84,10 @@ void SceneAssembly::add_playback_and_selection(const SceneInputs& in, DrawOption
 // The diagnostics: the problems-only view's faint rest and full concerned motions, the active ones highlighted.
 void SceneAssembly::add_problems(const SceneInputs& in, DrawOptions& o) {
     const Document* doc = in.load.document();
-    if (!doc || doc->diagnostics.empty()) return;
+    if (!doc) return;
+    o.dim = in.layers.problems_only;  // (a tape without problems: all of it faint)
+    if (doc->diagnostics.empty()) return;
     const PathBuffers& buffers = in.load.buffers();
-    o.dim = in.layers.problems_only;
     if (o.dim) o.bright = concerned_runs(*doc, buffers);
     o.highlights = diagnostic_highlights(*doc, buffers, active_diagnostics(*doc, in.hovered_mark, in.selection.line));
 }
