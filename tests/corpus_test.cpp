@@ -291,7 +291,8 @@ TEST(Corpus, PS178ExactStatistics) {
 // 18102826's 39+55 is in the range). N603: lone circles and rectangles cut counter-clockwise with 29, the kerf
 // inside (PR002: the circles around (-1420, 370), (-1320, 370) and (-1843, 0) mm, r 90, outside the 2150 x 700 mm
 // rectangle that holds the other two; PR6: the circle around (0, 0), r 20, and the 290 x 210 mm rectangle, which
-// lie across the edge of the last rectangle, not inside it). Every other contour is a part with its kerf outside
+// lie across the edge of the last rectangle, not inside it; N612: that rectangle, cut without compensation, overlaps
+// the 290 x 210 mm one, a hole in the plate by its kerf). Every other contour is a part with its kerf outside
 // or a hole of one with its kerf inside, cut before it.
 TEST(Corpus, CutPlanDiagnosticsAreTheDocumentedOnes) {
     REQUIRE_CORPUS(dir);
@@ -311,7 +312,7 @@ TEST(Corpus, CutPlanDiagnosticsAreTheDocumentedOnes) {
         {"PR11.esi", {{"W608", 5}}},
         {"PR4.esi", {{"W608", 5}}},
         {"PR5.esi", {{"W608", 5}}},
-        {"PR6.esi", {{"W608", 4}, {"N603", 5}, {"N603", 12}}},
+        {"PR6.esi", {{"W608", 4}, {"N603", 5}, {"N603", 12}, {"N612", 20}}},
         {"PR7.esi", {{"W608", 4}}},
         {"PR8.esi", {{"W608", 5}}},
         {"PR9.esi", {{"W608", 5}}},

@@ -24,7 +24,12 @@ struct Node {
 };
 
 bool is_part(ContourRole r) { return r == ContourRole::Part || r == ContourRole::LonePart; }
-bool collides_as_part(ContourRole r) { return is_part(r) || r == ContourRole::Lone; }
+// Contours that can collide: parts, lone contours of unknown role, and holes in the plate (with a part: a hole in the
+// plate overlapping a part cuts into it; two of them make a slot).
+bool collides(ContourRole r) { return is_part(r) || r == ContourRole::Lone || r == ContourRole::LoneHole; }
+bool collides_as_pair(ContourRole a, ContourRole b) {
+    return collides(a) && collides(b) && !(a == ContourRole::LoneHole && b == ContourRole::LoneHole);
+}
 
 class Plate {
 public:
@@ -307,10 +312,11 @@ private:
     void collisions() {
         std::set<std::pair<int, int>> reported;
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
-            if (!usable(i) || !collides_as_part(nodes_[i].role)) continue;
+            if (!usable(i) || !collides(nodes_[i].role)) continue;
             const Cut& a = cuts_[i];
             for (int j : neighbours(i)) {
-                if (static_cast<std::size_t>(j) <= i || !collides_as_part(nodes_[static_cast<std::size_t>(j)].role)) continue;
+                if (static_cast<std::size_t>(j) <= i || !collides_as_pair(nodes_[i].role, nodes_[static_cast<std::size_t>(j)].role))
+                    continue;
                 if (ancestor(j, static_cast<int>(i)) || ancestor(static_cast<int>(i), j)) continue;
                 const Cut& b = cuts_[static_cast<std::size_t>(j)];
                 const double limit = width_between(a, b);
@@ -327,12 +333,20 @@ private:
     void report_collision(std::size_t i, std::size_t j, double d, double width, Point where) {
         const Cut& a = cuts_[i];
         const Cut& b = cuts_[j];
-        const bool known = nodes_[i].role != ContourRole::Lone && nodes_[j].role != ContourRole::Lone;
+        const ContourRole ra = nodes_[i].role, rb = nodes_[j].role;
         Diagnostic diag;
-        if (!known) {
+        if (ra == ContourRole::Lone || rb == ContourRole::Lone) {
             if (d > kPlanTouchToleranceMm) return;  // (without compensation only a real overlap counts)
             diag = about(DiagCode::N612_ContoursOverlap, b, where, Msg::PlanContoursOverlap, {a.first_line, a.last_line});
             diag.related.push_back(related(a, Msg::RelatedOtherContour));
+        } else if (ra == ContourRole::LoneHole || rb == ContourRole::LoneHole) {
+            const bool b_is_hole = rb == ContourRole::LoneHole;
+            diag = about(DiagCode::E605_PartsCollide, b, where, b_is_hole ? Msg::PlanPlateHoleOverlapsPart : Msg::PlanPartOverlapsPlateHole,
+                         {a.first_line, a.last_line, number_text(width)});
+            diag.related.push_back(related(a, b_is_hole ? Msg::RelatedOtherPart : Msg::RelatedPlateHole));
+        } else if (width <= kPlanTouchToleranceMm) {  // (no compensation on either: no kerf width to name)
+            diag = about(DiagCode::E605_PartsCollide, b, where, Msg::PlanPartsTouch, {a.first_line, a.last_line});
+            diag.related.push_back(related(a, Msg::RelatedOtherPart));
         } else if (d == 0) {
             diag = about(DiagCode::E605_PartsCollide, b, where, Msg::PlanPartsOverlap,
                          {a.first_line, a.last_line, number_text(width)});
@@ -389,7 +403,7 @@ private:
     // lead-out of a contour that counts as a part (its loop is a collision's business).
     std::array<std::pair<std::uint32_t, std::uint32_t>, 2> crossing_ranges(std::size_t i) const {
         const Cut& c = cuts_[i];
-        if (c.closed && collides_as_part(nodes_[i].role)) return {{{c.first_piece, c.loop_begin}, {c.loop_end, c.end_piece}}};
+        if (c.closed && collides(nodes_[i].role)) return {{{c.first_piece, c.loop_begin}, {c.loop_end, c.end_piece}}};
         return {{{c.first_piece, c.end_piece}, {0, 0}}};
     }
     std::vector<Point> polyline(std::uint32_t first, std::uint32_t end) const {
@@ -405,9 +419,23 @@ private:
         if (!st_.lead_in_required) return;
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
             const Cut& c = cuts_[i];
-            if (!usable(i) || c.loop_begin > c.first_piece || !(c.loop_start == first_piece(c).start)) continue;
-            out_.push_back(about(DiagCode::W610_PierceWithoutLeadIn, c, c.loop_start, Msg::PlanNoLeadIn, {}));
+            if (!usable(i) || c.loop_begin > c.first_piece || !pierced_on_loop(i)) continue;
+            out_.push_back(about(DiagCode::W610_PierceWithoutLeadIn, c, first_piece(c).start, Msg::PlanNoLeadIn, {}));
         }
+    }
+
+    // Whether cut i's pierce lies on its loop: where the loop starts, or on the loop's way back to its start (an
+    // overcut that runs past the pierce before it closes).
+    bool pierced_on_loop(std::size_t i) {
+        const Cut& c = cuts_[i];
+        const Point pierce = first_piece(c).start;
+        if (c.loop_start == pierce) return true;
+        const std::vector<Point>& loop = polygon(i);
+        for (std::size_t k = 0; k < loop.size(); ++k) {
+            Point where;
+            if (segment_distance(loop[k], loop[(k + 1) % loop.size()], pierce, pierce, where) <= st_.closure_mm) return true;
+        }
+        return false;
     }
 
     std::vector<Cut>& cuts_;

@@ -314,3 +314,50 @@ TEST(CutPlanRules, TheGeneratedNestIsClean) {
     for (const auto& k : c) holes += k.role == ContourRole::Hole ? 1 : 0;
     EXPECT_GT(holes, 300u);
 }
+
+TEST(CutPlanRules, AHoleInThePlateOverAPartWhicheverIsCutFirst) {
+    for (const bool hole_first : {true, false}) {
+        SCOPED_TRACE(hole_first ? "hole first" : "part first");
+        Tape t;
+        if (hole_first) t.hole(260, 100, 20, "29");      // lone, kerf inside: a hole in the plate, over the part's edge
+        t.part_cw(60, 50, 260, 150);
+        if (!hole_first) t.hole(260, 100, 20, "29");
+        const auto d = plan_of(check(t.end()));
+        std::size_t collisions = 0;
+        for (const Diagnostic& x : d) {
+            if (x.code != DiagCode::E605_PartsCollide) continue;
+            ++collisions;
+            EXPECT_NE(x.message.find(hole_first ? "this part overlaps the hole in the plate at lines 7-8"
+                                                : "this hole in the plate (a lone contour with its kerf inside) overlaps the part at lines 7-12"),
+                      std::string::npos)
+                << x.message;
+            EXPECT_EQ(x.overlap.size(), 2u);
+        }
+        EXPECT_EQ(collisions, 1u) << codes_of(d);
+    }
+}
+
+TEST(CutPlanRules, PiercedOnTheLoopWithAnOvercutStillHasNoLeadIn) {
+    // Pierced at (60, 100) on the left side; the loop runs past the pierce up to (60, 120) on its first side.
+    Tape t;
+    t.rapid(60, 100).function("29").function("7").to(60, 150).to(260, 150).to(260, 50).to(60, 50).to(60, 120);
+    t.function("8").function("38");
+    essi::Profile p;
+    p.lead_in_required = true;
+    const auto d = plan_of(check(t.end(), p));
+    ASSERT_EQ(d.size(), 1u) << codes_of(d);
+    EXPECT_EQ(d[0].code, DiagCode::W610_PierceWithoutLeadIn);
+    EXPECT_DOUBLE_EQ(d[0].at.x, 60);
+    EXPECT_DOUBLE_EQ(d[0].at.y, 100);
+}
+
+TEST(CutPlanRules, PartsWithoutCompensationThatTouch) {
+    Tape t;
+    // Two parts, each with a hole (so their role is certain), sharing the edge x = 260 without compensation.
+    t.hole(160, 100, 20, "38").part_cw(60, 50, 260, 150, "38");
+    t.hole(360, 100, 20, "38").part_cw(260, 50, 460, 150, "38", 5);
+    const auto d = plan_of(check(t.end()));
+    ASSERT_EQ(d.size(), 1u) << codes_of(d);
+    EXPECT_EQ(d[0].code, DiagCode::E605_PartsCollide);
+    EXPECT_NE(d[0].message.find("this part touches or overlaps the part at lines 16-21: neither has kerf compensation"), std::string::npos) << d[0].message;
+}
