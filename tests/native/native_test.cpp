@@ -229,4 +229,11 @@ TEST(PipelinedCheck, SameResultAsOneThread) {
         else EXPECT_GE(one.diagnostics.size(), 6u);
         for (int run = 0; run < 3; ++run) essi_test::expect_same_result(check_tape_pipelined(*tape, profile), one, "run " + std::to_string(run));
     }
+    // The cut plan's plates analysed on their own thread (ThreadPlateRunner): the same findings in the same order.
+    // A kerf 40 mm wide makes the nest's parts (35 mm apart) collide on every plate.
+    essi::Profile wide;
+    wide.kerf_units = 400;
+    const essi::CheckResult one = essi::check_tape(valid, wide);
+    EXPECT_GT(one.count(essi::Severity::Error), 100u);
+    for (int run = 0; run < 3; ++run) essi_test::expect_same_result(check_tape_pipelined(valid, wide), one, "wide kerf, run " + std::to_string(run));
 }
