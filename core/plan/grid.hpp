@@ -13,8 +13,13 @@ namespace essi::plan {
 
 class BoxGrid {
 public:
-    // About `cells_per_box` cells per box on average over the boxes' extent; at most kMaxCellsPerAxis a side.
-    explicit BoxGrid(const std::vector<Box>& boxes) : boxes_(boxes), stamp_(boxes.size(), 0) {
+    // About one cell per box over the boxes' extent; at most kMaxCellsPerAxis a side. A grid is built again for
+    // each plate (its arrays kept: a thread's grid is reused, see plate.cpp); `boxes` must outlive the queries.
+    void build(const std::vector<Box>& boxes) {
+        boxes_ = &boxes;
+        stamp_.assign(boxes.size(), 0);
+        generation_ = 0;
+        nx_ = ny_ = 0;
         Box all;
         for (const Box& b : boxes) all.add(b);
         if (all.empty) return;
@@ -30,8 +35,8 @@ public:
         for_each_box_cell([&](std::size_t cell, int) { ++start_[cell + 1]; });
         for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
         ids_.resize(start_.back());
-        std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-        for_each_box_cell([&](std::size_t cell, int id) { ids_[fill[cell]++] = id; });
+        fill_.assign(start_.begin(), start_.end() - 1);
+        for_each_box_cell([&](std::size_t cell, int id) { ids_[fill_[cell]++] = id; });
     }
 
     // Calls f(id) once for each box listed in a cell the query box meets (the caller tests the boxes themselves).
@@ -67,21 +72,23 @@ private:
     }
     template <class F>
     void for_each_box_cell(F&& f) const {
-        for (std::size_t id = 0; id < boxes_.size(); ++id) {
-            if (boxes_[id].empty) continue;
+        for (std::size_t id = 0; id < boxes_->size(); ++id) {
+            const Box& b = (*boxes_)[id];
+            if (b.empty) continue;
             int x0, y0, x1, y1;
-            cells_of(boxes_[id], x0, y0, x1, y1);
+            cells_of(b, x0, y0, x1, y1);
             for (int y = y0; y <= y1; ++y)
                 for (int x = x0; x <= x1; ++x) f(static_cast<std::size_t>(y) * nx_ + x, static_cast<int>(id));
         }
     }
 
-    const std::vector<Box>& boxes_;
+    const std::vector<Box>* boxes_ = nullptr;
     Point origin_;
     double cell_ = 1, inverse_cell_ = 1;
     int nx_ = 0, ny_ = 0;
     std::vector<std::uint32_t> start_;
     std::vector<int> ids_;
+    std::vector<std::uint32_t> fill_;
     std::vector<std::uint32_t> stamp_;
     std::uint32_t generation_ = 0;
 };

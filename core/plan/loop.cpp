@@ -48,6 +48,16 @@ bool returns_at(std::span<const Piece> p, std::size_t j, std::size_t candidates,
     return false;
 }
 
+// Twice the area between an arc of unit radius and its chord, signed as the sweep: s - sin s (a full circle and a
+// quarter, the commonest arcs of a tape, without the sine).
+double circular_segment(double s) {
+    constexpr double kQuarter = kPi / 2;
+    if (s == 2 * kPi || s == -2 * kPi) return s;
+    if (s == kQuarter) return kQuarter - 1;
+    if (s == -kQuarter) return 1 - kQuarter;
+    return s - std::sin(s);
+}
+
 // The loop's exact signed area (a chord's shoelace term, plus the circular segment of each arc); the boxes of the
 // cut and of its loop, each piece's box made once.
 void measure(Cut& cut, std::span<const Piece> pieces) {
@@ -61,7 +71,7 @@ void measure(Cut& cut, std::span<const Piece> pieces) {
         if (!cut.closed || k < cut.loop_begin || k >= cut.loop_end) continue;
         const Point a = k == cut.loop_begin ? cut.loop_start : q.start;
         twice += a.x * q.end.y - q.end.x * a.y;
-        if (q.arc) twice += q.radius * q.radius * (q.sweep - std::sin(q.sweep));
+        if (q.arc) twice += q.radius * q.radius * circular_segment(q.sweep);
         loop_box.add(k == cut.loop_begin && !q.arc ? Box::of(a, q.end) : b);
     }
     cut.box = box;

@@ -179,7 +179,8 @@ private:
         boxes_.assign(cuts_.size(), Box{});
         for (std::size_t i = 0; i < cuts_.size(); ++i)
             if (usable(i)) boxes_[i] = cuts_[i].loop_box;
-        BoxGrid grid(boxes_);
+        thread_local BoxGrid grid;  // (its arrays kept from plate to plate)
+        grid.build(boxes_);
         const double margin = max_width_ + kPlanTouchToleranceMm;
         first_neighbour_.assign(cuts_.size() + 1, 0);
         neighbours_.clear();

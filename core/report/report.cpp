@@ -5,6 +5,7 @@
 
 #include "essi/interp.hpp"
 #include <memory>
+#include "essi/lines.hpp"
 #include "essi/read.hpp"
 
 namespace essi {
@@ -23,10 +24,28 @@ void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
     });
 }
 
+namespace {
+
+// The cut plan's diagnostics name a block by its line: their column is where the block begins (the line's first
+// byte that is not a blank). The lines are indexed only when there is such a diagnostic.
+void block_columns(std::string_view bytes, std::vector<Diagnostic>& diagnostics) {
+    if (diagnostics.empty()) return;
+    LineIndex lines;
+    lines.build(bytes);
+    for (Diagnostic& d : diagnostics) {
+        if (d.line == 0 || d.column > 0) continue;
+        const std::string_view text = lines.line(bytes, d.line);
+        const std::size_t first = text.find_first_not_of(" \t");
+        d.column = static_cast<std::uint32_t>(first == std::string_view::npos ? 0 : first) + 1;
+    }
+}
+
+}  // namespace
+
 // ---- TapeChecker ----
 
 TapeChecker::TapeChecker(std::string_view bytes, const Profile& profile, MotionSink* also)
-    : stats_(profile), plan_(profile), both_(also ? std::make_unique<PlanThenAlso>(plan_, *also) : nullptr),
+    : bytes_(bytes), stats_(profile), plan_(profile), both_(also ? std::make_unique<PlanThenAlso>(plan_, *also) : nullptr),
       interpreter_(bytes, profile, stats_, both_ ? static_cast<MotionSink*>(both_.get()) : &plan_, result_.diagnostics) {}
 
 TapeChecker::~TapeChecker() = default;
@@ -40,6 +59,7 @@ void TapeChecker::check_chunk(const Tape& chunk, std::span<const MotionMeasure> 
 CheckResult TapeChecker::finish() {
     interpreter_.finish();
     std::vector<Diagnostic> plan = plan_.finish();
+    block_columns(bytes_, plan);
     result_.diagnostics.insert(result_.diagnostics.end(), std::make_move_iterator(plan.begin()),
                                std::make_move_iterator(plan.end()));
     result_.stats = stats_.stats();

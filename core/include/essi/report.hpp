@@ -69,6 +69,7 @@ private:
         CutPlan& plan_;
         MotionSink& also_;
     };
+    std::string_view bytes_;
     CheckResult result_;
     StatsSink stats_;
     CutPlan plan_;              // the cut plan's rules (essi/plan.hpp)
