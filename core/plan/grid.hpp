@@ -62,9 +62,13 @@ private:
     static constexpr double kMaxCellsPerAxis = 1024;
 
     void cells_of(const Box& b, int& x0, int& y0, int& x1, int& y1) const {
-        // (a cast truncates towards zero: below the origin is cell 0 either way)
-        const auto cx = [&](double v) { return std::clamp(static_cast<int>((v - origin_.x) * inverse_cell_), 0, nx_ - 1); };
-        const auto cy = [&](double v) { return std::clamp(static_cast<int>((v - origin_.y) * inverse_cell_), 0, ny_ - 1); };
+        // (clamped before the cast: a box far outside the grid is its border cells; NaN is cell 0)
+        const auto cell = [&](double v, double origin, int n) {
+            const double c = (v - origin) * inverse_cell_;
+            return c >= 0 ? static_cast<int>(std::min(c, static_cast<double>(n - 1))) : 0;
+        };
+        const auto cx = [&](double v) { return cell(v, origin_.x, nx_); };
+        const auto cy = [&](double v) { return cell(v, origin_.y, ny_); };
         x0 = cx(b.min_x);
         x1 = cx(b.max_x);
         y0 = cy(b.min_y);

@@ -162,13 +162,13 @@ DxfResult render_dxf(std::string_view bytes, const TapeSetup& setup) {
     header(d);
     DxfSink sink(d, setup.profile);
     const Tape tape = read_tape(bytes, setup.profile, setup.format);
-    r.diagnostics = tape.diagnostics();
-    interpret(tape, bytes, setup.profile, sink, r.diagnostics);
+    std::vector<Diagnostic> drawn;  // (the check's, below: the same list as essi check, the cut plan's too)
+    interpret(tape, bytes, setup.profile, sink, drawn);
     sink.finish();
-    sort_diagnostics(r.diagnostics);
+    r.diagnostics = check_tape(bytes, setup).diagnostics;
     for (const Diagnostic& diag : r.diagnostics) {
         if (diag.line == 0) continue;
-        const Point p = sink.where(diag.line);
+        const Point p = diag.has_at ? diag.at : sink.where(diag.line);
         d.code(0, "POINT");
         d.code(8, kDiagnostics.name);
         d.point(10, p);
