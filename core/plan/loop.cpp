@@ -110,7 +110,7 @@ void flatten_piece(const Piece& p, std::vector<Point>& out) {
     // A chord over angle a has a sagitta r(1 - cos(a/2)) <= r a^2 / 8: steps of sqrt(8 tol / r) stay within tol.
     // The points turn about the centre by one rotation each (no trigonometry a point).
     const double max_step = std::sqrt(8 * kPlanChordToleranceMm / p.radius);
-    const int n = std::clamp(static_cast<int>(std::ceil(std::fabs(p.sweep) / max_step)), 1, kMaxFlattenSegments);
+    const int n = std::clamp(static_cast<int>(std::ceil(std::fabs(p.sweep) / max_step)), 1, kPlanMaxArcChords);
     const double step = p.sweep / n, c = std::cos(step), s = std::sin(step);
     double vx = p.start.x - p.centre.x, vy = p.start.y - p.centre.y;
     for (int k = 1; k < n; ++k) {

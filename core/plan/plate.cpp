@@ -120,8 +120,31 @@ private:
     }
 
     // --- W607: the same path twice ---
-    // Candidates share their box (to a few kPlanSamePathToleranceMm: sorted by it); they are the same when every
-    // point of one lies on the other.
+    // Two cuts are the same path when their pieces end at the same points and their arcs turn about the same centres
+    // (whatever the start and the direction): their sorted points, to kPlanSamePathToleranceMm, are equal. Cuts are
+    // sorted by their box and a hash of those points, and each is compared with the first of its run only, so that
+    // many cuts in one place cost a sort, not all pairs.
+    using Signature = std::vector<std::pair<long long, long long>>;
+    Signature signature(const Cut& c) const {
+        const auto q = [](double v) { return static_cast<long long>(std::floor(v * (1 / kPlanSamePathToleranceMm) + 0.5)); };
+        const std::uint32_t first = c.closed ? c.loop_begin : c.first_piece, end = c.closed ? c.loop_end : c.end_piece;
+        Signature sig;
+        sig.reserve(2 * (end - first) + 1);
+        if (!c.closed) sig.push_back({q(pieces_[first].start.x), q(pieces_[first].start.y)});
+        for (std::uint32_t k = first; k < end; ++k) {
+            const Piece& p = pieces_[k];
+            sig.push_back({q(k + 1 == end && c.closed ? c.loop_start.x : p.end.x), q(k + 1 == end && c.closed ? c.loop_start.y : p.end.y)});
+            if (p.arc) sig.push_back({q(p.centre.x) ^ 0x5bd1e995LL, q(p.centre.y)});  // (a centre is not a point passed)
+        }
+        std::sort(sig.begin(), sig.end());
+        return sig;
+    }
+    static std::uint64_t hash_of(const Signature& sig) {
+        std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the values
+        for (const auto& [x, y] : sig)
+            for (const long long v : {x, y}) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
+        return h;
+    }
     void same_paths() {
         const auto q = [](double v) { return static_cast<long long>(std::floor(v * (1 / (4 * kPlanSamePathToleranceMm)) + 0.5)); };
         std::vector<std::pair<std::array<long long, 4>, int>> keyed;
@@ -131,46 +154,40 @@ private:
             if (!b.empty) keyed.push_back({{q(b.min_x), q(b.min_y), q(b.max_x), q(b.max_y)}, static_cast<int>(i)});
         }
         std::sort(keyed.begin(), keyed.end());
-        for (std::size_t k = 1; k < keyed.size(); ++k) {
-            for (std::size_t e = k; e-- > 0 && keyed[e].first == keyed[k].first;) {
-                const std::size_t i = static_cast<std::size_t>(keyed[e].second), j = static_cast<std::size_t>(keyed[k].second);
-                const std::size_t first = std::min(i, j), later = std::max(i, j);
-                if (nodes_[first].duplicate || nodes_[later].duplicate || !same_path(first, later)) continue;
-                nodes_[later].duplicate = true;
-                const Cut& a = cuts_[first];
-                const Cut& c = cuts_[later];
-                Diagnostic d = about(DiagCode::W607_SamePathTwice, c, first_piece(c).end, Msg::PlanSamePath,
-                                     {a.first_line, a.last_line});
-                d.related.push_back(related(a, Msg::RelatedFirstCut));
-                out_.push_back(std::move(d));
-                break;
+        // Only cuts that share their box (rare) are signed and compared: a run of the sorted boxes at a time.
+        std::vector<std::pair<std::uint64_t, int>> run;
+        std::vector<Signature> sigs;
+        for (std::size_t k = 0, end = 0; k < keyed.size(); k = end) {
+            for (end = k + 1; end < keyed.size() && keyed[end].first == keyed[k].first;) ++end;
+            if (end - k < 2) continue;
+            run.clear();
+            sigs.assign(end - k, {});
+            for (std::size_t m = k; m < end; ++m) {
+                sigs[m - k] = signature(cuts_[static_cast<std::size_t>(keyed[m].second)]);
+                run.push_back({hash_of(sigs[m - k]), static_cast<int>(m - k)});
+            }
+            std::sort(run.begin(), run.end());  // (equal hashes together, in cutting order)
+            for (std::size_t r = 1, first = 0; r < run.size(); ++r) {
+                if (run[r].first != run[first].first) {
+                    first = r;
+                    continue;
+                }
+                const std::size_t a = static_cast<std::size_t>(keyed[k + static_cast<std::size_t>(run[first].second)].second);
+                const std::size_t b = static_cast<std::size_t>(keyed[k + static_cast<std::size_t>(run[r].second)].second);
+                if (cuts_[a].closed == cuts_[b].closed &&
+                    sigs[static_cast<std::size_t>(run[first].second)] == sigs[static_cast<std::size_t>(run[r].second)])
+                    report_same_path(std::min(a, b), std::max(a, b));
             }
         }
     }
-    static bool lies_on(const std::vector<Point>& pts, const std::vector<Point>& path, bool closed) {
-        for (Point p : pts) {
-            double best = std::numeric_limits<double>::infinity();
-            const std::size_t n = path.size();
-            for (std::size_t k = 0; k + (closed ? 0 : 1) < n && best > kPlanSamePathToleranceMm; ++k) {
-                Point where;
-                best = std::min(best, segment_distance(path[k], path[(k + 1) % n], p, p, where));
-            }
-            if (best > kPlanSamePathToleranceMm) return false;
-        }
-        return true;
-    }
-    bool same_path(std::size_t i, std::size_t j) {
-        const Cut& a = cuts_[i];
-        const Cut& b = cuts_[j];
-        if (a.closed != b.closed) return false;
-        if (!a.closed && std::fabs(a.length_mm - b.length_mm) > 4 * kPlanSamePathToleranceMm) return false;
-        if (a.closed) {
-            const double perimeter = 2 * (a.loop_box.max_x - a.loop_box.min_x + a.loop_box.max_y - a.loop_box.min_y);
-            if (std::fabs(std::fabs(a.area_mm2) - std::fabs(b.area_mm2)) > kPlanSamePathToleranceMm * perimeter) return false;
-            return lies_on(polygon(j), polygon(i), true) && lies_on(polygon(i), polygon(j), true);
-        }
-        const std::vector<Point> pa = path_points(a, pieces_), pb = path_points(b, pieces_);
-        return lies_on(pb, pa, false) && lies_on(pa, pb, false);
+    void report_same_path(std::size_t first, std::size_t later) {
+        if (nodes_[later].duplicate) return;
+        nodes_[later].duplicate = true;
+        const Cut& a = cuts_[first];
+        const Cut& c = cuts_[later];
+        Diagnostic d = about(DiagCode::W607_SamePathTwice, c, first_piece(c).end, Msg::PlanSamePath, {a.first_line, a.last_line});
+        d.related.push_back(related(a, Msg::RelatedFirstCut));
+        out_.push_back(std::move(d));
     }
 
     // Each cut's neighbours: the loops whose boxes meet its whole box (grown by the widest kerf), found once in the
@@ -288,25 +305,44 @@ private:
         return std::max({a.kerf_width_mm, b.kerf_width_mm, kPlanTouchToleranceMm});
     }
     // The nearest approach of two closed polygons, stopping at the first below `limit`; `where` on `a`.
+    // The nearest approach of a path `a` to the closed polygon `b` among the segment pairs closer than `limit`,
+    // stopping at the first crossing; `where` on `a`; infinity when no pair is that close. b's segments near a are
+    // put in a grid of their own, so that two long contours (arcs of thousands of chords) cost about their length.
     static double approach(const std::vector<Point>& a, bool a_closed, const std::vector<Point>& b, const Box& b_box,
                            double limit, Point& where) {
+        Box a_box;
+        for (Point p : a) a_box.add(p);
+        std::vector<Box> near;
+        std::vector<std::uint32_t> index;
+        for (std::size_t k = 0; k < b.size(); ++k) {
+            Box seg = Box::of(b[k], b[(k + 1) % b.size()]);
+            if (!boxes_meet(seg, a_box, limit)) continue;
+            seg.min_x -= limit;
+            seg.min_y -= limit;
+            seg.max_x += limit;
+            seg.max_y += limit;
+            near.push_back(seg);
+            index.push_back(static_cast<std::uint32_t>(k));
+        }
         double best = std::numeric_limits<double>::infinity();
-        const std::size_t na = a.size(), nb = b.size();
-        for (std::size_t i = 0; i + (a_closed ? 0 : 1) < na; ++i) {
+        if (near.empty()) return best;
+        BoxGrid grid;
+        grid.build(near);
+        const std::size_t na = a.size();
+        for (std::size_t i = 0; i + (a_closed ? 0 : 1) < na && best > 0; ++i) {
             const Point p = a[i], q = a[(i + 1) % na];
             const Box s = Box::of(p, q);
             if (!boxes_meet(s, b_box, limit)) continue;
-            for (std::size_t k = 0; k < nb; ++k) {
-                const Point r = b[k], t = b[(k + 1) % nb];
-                if (!boxes_meet(s, Box::of(r, t), limit)) continue;
+            grid.query(s, [&](int j) {
+                if (best == 0 || !boxes_meet(s, near[static_cast<std::size_t>(j)], 0)) return;
+                const std::size_t k = index[static_cast<std::size_t>(j)];
                 Point w;
-                const double d = segment_distance(p, q, r, t, w);
+                const double d = segment_distance(p, q, b[k], b[(k + 1) % b.size()], w);
                 if (d < best) {
                     best = d;
                     where = w;
-                    if (best < limit && best == 0) return best;
                 }
-            }
+            });
         }
         return best;
     }

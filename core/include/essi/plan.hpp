@@ -35,6 +35,9 @@ namespace essi {
 
 // Arcs are flattened within this for containment and collision tests (mm): far below a kerf.
 constexpr double kPlanChordToleranceMm = 0.05;
+// An arc is at most this many chords for those tests (a radius up to about 10 m keeps kPlanChordToleranceMm; a
+// larger one is coarser: a tape's bounds, not a plate's, make such arcs).
+constexpr int kPlanMaxArcChords = 1024;
 // Two programmed contours closer than this touch even without compensation (mm).
 constexpr double kPlanTouchToleranceMm = 0.01;
 // Two paths whose points all lie this close are the same path (mm).
