@@ -158,11 +158,11 @@ std::vector<Point> loop_polygon(const Cut& cut, std::span<const Piece> pieces) {
     return polygon;
 }
 
-std::vector<Point> path_points(const Cut& cut, std::span<const Piece> pieces) {
+std::vector<Point> pieces_points(std::span<const Piece> pieces, std::uint32_t first, std::uint32_t end) {
     std::vector<Point> pts;
-    if (cut.end_piece == cut.first_piece) return pts;
-    pts.push_back(pieces[cut.first_piece].start);
-    for (std::uint32_t k = cut.first_piece; k < cut.end_piece; ++k) flatten_piece(pieces[k], pts);
+    if (first >= end) return pts;
+    pts.push_back(pieces[first].start);
+    for (std::uint32_t k = first; k < end; ++k) flatten_piece(pieces[k], pts);
     return pts;
 }
 
@@ -236,16 +236,6 @@ bool inside_loop(const Cut& cut, std::span<const Piece> pieces, Point p) {
         crossings += crosses_ray(piece.start, piece.end, p) ? 1 : 0;
     }
     return crossings % 2 == 1;
-}
-
-bool inside_polygon(const std::vector<Point>& polygon, Point p) {
-    bool in = false;
-    const std::size_t n = polygon.size();
-    for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-        const Point a = polygon[i], b = polygon[j];
-        if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
-    }
-    return in;
 }
 
 double segment_distance(Point a, Point b, Point c, Point d, Point& where) {

@@ -57,8 +57,8 @@ struct Cut {
 void close_loop(Cut& cut, std::span<const Piece> pieces, double closure_mm, double gap_limit_mm);
 // The loop flattened within kPlanChordToleranceMm, without repeating its first point.
 std::vector<Point> loop_polygon(const Cut& cut, std::span<const Piece> pieces);
-// The whole path flattened, from its first point.
-std::vector<Point> path_points(const Cut& cut, std::span<const Piece> pieces);
+// Pieces [first, end) flattened, from the first one's start (an empty list when there are none).
+std::vector<Point> pieces_points(std::span<const Piece> pieces, std::uint32_t first, std::uint32_t end);
 
 // Appends the piece's points within kPlanChordToleranceMm, without its start.
 void flatten_piece(const Piece& p, std::vector<Point>& out);
@@ -67,8 +67,6 @@ void flatten_piece(const Piece& p, std::vector<Point>& out);
 double segment_distance(Point a, Point b, Point c, Point d, Point& where);
 // Whether q lies inside the cut's loop (even-odd, arcs as arcs).
 bool inside_loop(const Cut& cut, std::span<const Piece> pieces, Point q);
-// Whether p lies inside the closed polygon (even-odd).
-bool inside_polygon(const std::vector<Point>& polygon, Point p);
 
 // A plate's cuts analysed: roles by nesting and the rules that need contours (W601-W607, W610, N612).
 struct PlateSettings {

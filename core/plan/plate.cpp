@@ -420,7 +420,7 @@ private:
                     continue;
                 if (reported.count({std::min<int>(j, static_cast<int>(i)), std::max<int>(j, static_cast<int>(i))})) continue;
                 if (paths.empty())
-                    for (const auto& [first, end] : ranges) paths.push_back(polyline(first, end));
+                    for (const auto& [first, end] : ranges) paths.push_back(pieces_points(pieces_, first, end));
                 for (const std::vector<Point>& path : paths) {
                     Point where;
                     if (path.size() < 2 ||
@@ -442,13 +442,6 @@ private:
         const Cut& c = cuts_[i];
         if (c.closed && collides(nodes_[i].role)) return {{{c.first_piece, c.loop_begin}, {c.loop_end, c.end_piece}}};
         return {{{c.first_piece, c.end_piece}, {0, 0}}};
-    }
-    std::vector<Point> polyline(std::uint32_t first, std::uint32_t end) const {
-        std::vector<Point> pts;
-        if (first >= end) return pts;
-        pts.push_back(pieces_[first].start);
-        for (std::uint32_t k = first; k < end; ++k) flatten_piece(pieces_[k], pts);
-        return pts;
     }
 
     // --- W610: a contour pierced on its own line ---
