@@ -86,6 +86,7 @@ struct CutPlan::State {
         if (!cutting[h]) {
             c = plan::Cut{};
             c.first_line = line;
+            c.head = static_cast<std::uint8_t>(h + 1);
             cutting[h] = true;
             open_kerf[h] = kerf;
             mixed_kerf[h] = false;

@@ -38,6 +38,7 @@ struct Cut {
     Box box;
     double length_mm = 0;
     int order = 0;                  // cutting order in the plate
+    std::uint8_t head = 1;          // 2: head 2 of a 3-axis tape (its own coordinates: compared only with its own cuts)
 
     // Its loop, when it holds one: pieces [loop_begin, loop_end) (plate indices), starting at `loop_start` on the
     // first of them (its start, or a point on it for a path that closes on a line rather than at a point).

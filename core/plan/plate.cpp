@@ -147,11 +147,12 @@ private:
     }
     void same_paths() {
         const auto q = [](double v) { return static_cast<long long>(std::floor(v * (1 / (4 * kPlanSamePathToleranceMm)) + 0.5)); };
-        std::vector<std::pair<std::array<long long, 4>, int>> keyed;
+        std::vector<std::pair<std::array<long long, 5>, int>> keyed;  // (the head first: each head's cuts apart)
         keyed.reserve(cuts_.size());
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
             const Box& b = cuts_[i].box;
-            if (!b.empty) keyed.push_back({{q(b.min_x), q(b.min_y), q(b.max_x), q(b.max_y)}, static_cast<int>(i)});
+            if (!b.empty)
+                keyed.push_back({{cuts_[i].head, q(b.min_x), q(b.min_y), q(b.max_x), q(b.max_y)}, static_cast<int>(i)});
         }
         std::sort(keyed.begin(), keyed.end());
         // Only cuts that share their box (rare) are signed and compared: a run of the sorted boxes at a time.
@@ -205,7 +206,8 @@ private:
             Box q = cuts_[i].box;
             q.add(cuts_[i].loop_box);
             grid.query(q, [&](int j) {
-                if (static_cast<std::size_t>(j) != i && boxes_meet(q, boxes_[static_cast<std::size_t>(j)], margin))
+                if (static_cast<std::size_t>(j) != i && cuts_[static_cast<std::size_t>(j)].head == cuts_[i].head &&
+                    boxes_meet(q, boxes_[static_cast<std::size_t>(j)], margin))
                     neighbours_.push_back(j);
             });
             first_neighbour_[i + 1] = static_cast<std::uint32_t>(neighbours_.size());

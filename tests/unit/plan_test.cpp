@@ -361,3 +361,16 @@ TEST(CutPlanRules, PartsWithoutCompensationThatTouch) {
     EXPECT_EQ(d[0].code, DiagCode::E605_PartsCollide);
     EXPECT_NE(d[0].message.find("this part touches or overlaps the part at lines 16-21: neither has kerf compensation"), std::string::npos) << d[0].message;
 }
+
+TEST(CutPlanRules, TheHeadsOfAThreeAxisTapeAreComparedApart) {
+    // Head 2 cuts the same rectangle in its own coordinates (it sits elsewhere on the gantry): not the same path
+    // twice, no collision; each head's contour is lone, with its kerf inside.
+    const std::string tape =
+        "39+1000\n19\n29\n7\n1+100+0\n2+100+0\n1+0+500\n2+0+500\n1-100+0\n2-100+0\n1+0-500\n2+0-500\n8\n38\n64\n";
+    const auto d = plan_of(check(tape));
+    ASSERT_EQ(d.size(), 2u) << codes_of(d);
+    EXPECT_EQ(d[0].code, DiagCode::N603_KerfInsideLoneContour);
+    EXPECT_EQ(d[0].line, 5u);
+    EXPECT_EQ(d[1].code, DiagCode::N603_KerfInsideLoneContour);
+    EXPECT_EQ(d[1].line, 6u);
+}
