@@ -49,8 +49,8 @@ struct CutPlan::State {
     double closure_mm;
     std::vector<plan::Cut> cuts;       // the plate's cuts, in cutting order
     std::vector<plan::Piece> pieces;   // their pieces, cut after cut
-    // The cut of each head in progress: its pieces are gathered apart (the heads' motions interleave) and join the
-    // plate's when it ends.
+    // The cut of each head in progress. Head 1's pieces go straight to the plate's; head 2's are gathered apart (the
+    // heads' motions interleave) and join the plate's when it ends, or after head 1's cut if that is still going.
     plan::Cut open[2];
     std::vector<plan::Piece> head2_pieces;
     std::vector<plan::Cut> deferred;   // head 2's cuts that ended while head 1 was cutting, with their pieces
