@@ -80,7 +80,7 @@ struct CutPlan::State {
         if (head == 0) here = end;
     }
     // The cut of head `h` gets a piece of line `line`, cut with this kerf.
-    plan::Cut& cut_of(int h, std::uint32_t line, KerfSide kerf, double kerf_mm, double feed) {
+    void cut_of(int h, std::uint32_t line, KerfSide kerf, double kerf_mm, double feed) {
         if (feed != checked_feed) [[unlikely]] check_feed(line, feed);
         plan::Cut& c = open[h];
         if (!cutting[h]) {
@@ -96,7 +96,6 @@ struct CutPlan::State {
         if (kerf != open_kerf[h]) [[unlikely]] mixed_kerf[h] = true;
         if (2 * kerf_mm > c.kerf_width_mm) [[unlikely]] c.kerf_width_mm = 2 * kerf_mm;
         c.last_line = line;
-        return c;
     }
     // Head 1's pieces go straight to the plate's; head 2's wait apart (the heads' motions interleave).
     std::vector<plan::Piece>& pieces_of(int h) { return h == 0 ? pieces : head2_pieces; }
@@ -108,8 +107,7 @@ struct CutPlan::State {
             close(h);
             return;
         }
-        plan::Cut& c = cut_of(h, m.line, m.kerf, m.kerf_mm, m.feed_mm_min);
-        c.length_mm += m.length_mm;
+        cut_of(h, m.line, m.kerf, m.kerf_mm, m.feed_mm_min);
         std::vector<plan::Piece>& out = pieces_of(h);
         if (m.curve == CurveKind::Parabola) {
             std::vector<Point> pts;
@@ -126,8 +124,7 @@ struct CutPlan::State {
             close(0);
             return;
         }
-        plan::Cut& c = cut_of(0, l.line, l.kerf, l.kerf_mm, l.feed_mm_min);
-        c.length_mm += l.length_mm;
+        cut_of(0, l.line, l.kerf, l.kerf_mm, l.feed_mm_min);
         pieces.push_back({l.start, l.end, {}, 0, 0, l.line, false});
     }
 

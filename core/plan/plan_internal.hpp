@@ -36,7 +36,6 @@ struct Cut {
     KerfSide kerf = KerfSide::Off;  // the side in force on the whole cut (Off when it changes along it)
     double kerf_width_mm = 0;       // the full width the compensation cuts (0 when off)
     Box box;
-    double length_mm = 0;
     int order = 0;                  // cutting order in the plate
     std::uint8_t head = 1;          // 2: head 2 of a 3-axis tape (its own coordinates: compared only with its own cuts)
 

@@ -23,6 +23,9 @@ struct Node {
     ContourRole role = ContourRole::Lone;
 };
 
+// v in whole steps of `step` (the same-path test's keys and points).
+long long quantized(double v, double step) { return static_cast<long long>(std::floor(v / step + 0.5)); }
+
 bool is_part(ContourRole r) { return r == ContourRole::Part || r == ContourRole::LonePart; }
 // Contours that can collide: parts, lone contours of unknown role, and holes in the plate (with a part: a hole in the
 // plate overlapping a part cuts into it; two of them make a slot).
@@ -126,7 +129,7 @@ private:
     // many cuts in one place cost a sort, not all pairs.
     using Signature = std::vector<std::pair<long long, long long>>;
     Signature signature(const Cut& c) const {
-        const auto q = [](double v) { return static_cast<long long>(std::floor(v * (1 / kPlanSamePathToleranceMm) + 0.5)); };
+        const auto q = [](double v) { return quantized(v, kPlanSamePathToleranceMm); };
         const std::uint32_t first = c.closed ? c.loop_begin : c.first_piece, end = c.closed ? c.loop_end : c.end_piece;
         Signature sig;
         sig.reserve(2 * (end - first) + 1);
@@ -146,7 +149,7 @@ private:
         return h;
     }
     void same_paths() {
-        const auto q = [](double v) { return static_cast<long long>(std::floor(v * (1 / (4 * kPlanSamePathToleranceMm)) + 0.5)); };
+        const auto q = [](double v) { return quantized(v, 4 * kPlanSamePathToleranceMm); };
         std::vector<std::pair<std::array<long long, 5>, int>> keyed;  // (the head first: each head's cuts apart)
         keyed.reserve(cuts_.size());
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
