@@ -662,15 +662,38 @@ void Machine::select_tool_offset(const Block& b, int code) {
     check_table_box(Box::of(at, at), b, Msg::InterpToolOffsetOffTable);
 }
 
+namespace {
+// Whether the table's travel holds the whole box.
+bool table_holds(const TableLimits& t, const Box& box) {
+    return box.min_x >= t.min_x_mm && box.max_x <= t.max_x_mm && box.min_y >= t.min_y_mm && box.max_y <= t.max_y_mm;
+}
+}  // namespace
+
 void Machine::check_table(const MotionRecord& m, const Block& b) {
     if (!profile_.table) return;
+    // Most motions lie well inside the table: a box that holds the whole motion (a line's ends; an arc's ends and
+    // its whole circle) inside the table settles it without the exact box (an arc's extremes, a parabola's). On a
+    // plate that is not turned, the machine box is the program box moved by the zero offset less the tool offset.
+    if (inside_table_ && m.curve != CurveKind::Parabola && !placement_.turns()) {
+        double lo_x = std::min(m.start.x, m.end.x), hi_x = std::max(m.start.x, m.end.x);
+        double lo_y = std::min(m.start.y, m.end.y), hi_y = std::max(m.start.y, m.end.y);
+        if (m.curve == CurveKind::Arc) {
+            const double r = std::max(m.radius, m.end_radius);
+            lo_x = std::min(lo_x, m.centre.x - r);
+            hi_x = std::max(hi_x, m.centre.x + r);
+            lo_y = std::min(lo_y, m.centre.y - r);
+            hi_y = std::max(hi_y, m.centre.y + r);
+        }
+        const Point zero = placement_.zero_offset();
+        const double dx = zero.x - tool_offset_.x, dy = zero.y - tool_offset_.y;
+        if (table_holds(*profile_.table, Box{lo_x + dx, lo_y + dy, hi_x + dx, hi_y + dy, false})) return;
+    }
     check_table_box(placement_.machine_box(m, tool_offset_), b, Msg::InterpMotionOffTable);
 }
 
 void Machine::check_table_box(const Box& box, const Block& b, Msg what) {
     const TableLimits& t = *profile_.table;
-    const bool inside = box.min_x >= t.min_x_mm && box.max_x <= t.max_x_mm && box.min_y >= t.min_y_mm &&
-                        box.max_y <= t.max_y_mm;
+    const bool inside = table_holds(t, box);
     if (!inside && inside_table_) {
         const auto f3 = [](double v) {
             char buf[48];

@@ -58,24 +58,70 @@ double circular_segment(double s) {
     return s - std::sin(s);
 }
 
+// Bounds grown point by point without Box's empty flag (the hot loop of measure()); a Box at the end.
+struct Bounds {
+    double min_x, min_y, max_x, max_y;
+    explicit Bounds(Point p) : min_x(p.x), min_y(p.y), max_x(p.x), max_y(p.y) {}
+    void add(Point p) {
+        min_x = p.x < min_x ? p.x : min_x;
+        max_x = p.x > max_x ? p.x : max_x;
+        min_y = p.y < min_y ? p.y : min_y;
+        max_y = p.y > max_y ? p.y : max_y;
+    }
+    void add(const Box& b) {
+        add(Point{b.min_x, b.min_y});
+        add(Point{b.max_x, b.max_y});
+    }
+    // The piece's exact box (piece_box).
+    void add(const Piece& q) {
+        if (q.arc) {
+            add(arc_box(q));
+            return;
+        }
+        add(q.start);
+        add(q.end);
+    }
+    [[nodiscard]] Box box() const { return {min_x, min_y, max_x, max_y, false}; }
+};
+
 // The loop's exact signed area (a chord's shoelace term, plus the circular segment of each arc); the boxes of the
 // cut and of its loop, each piece's box made once.
 void measure(Cut& cut, std::span<const Piece> pieces) {
+    if (cut.first_piece == cut.end_piece) {
+        cut.box = cut.loop_box = Box{};
+        cut.area_mm2 = 0;
+        return;
+    }
+    Bounds box(pieces[cut.first_piece].start);
+    if (!cut.closed) {
+        for (std::uint32_t k = cut.first_piece; k < cut.end_piece; ++k) box.add(pieces[k]);
+        cut.box = box.box();
+        cut.loop_box = Box{};
+        cut.area_mm2 = 0;
+        return;
+    }
+    for (std::uint32_t k = cut.first_piece; k < cut.loop_begin; ++k) box.add(pieces[k]);
+    // The loop, from loop_start: its first piece's start, or a point on it when it closes on a line.
+    const Piece& head = pieces[cut.loop_begin];
+    Bounds loop(cut.loop_start);
     double twice = 0;
-    Box box, loop_box;
-    if (cut.closed) loop_box.add(cut.loop_start);
-    for (std::uint32_t k = cut.first_piece; k < cut.end_piece; ++k) {
+    for (std::uint32_t k = cut.loop_begin; k < cut.loop_end; ++k) {
         const Piece& q = pieces[k];
-        const Box b = piece_box(q);
-        box.add(b);
-        if (!cut.closed || k < cut.loop_begin || k >= cut.loop_end) continue;
         const Point a = k == cut.loop_begin ? cut.loop_start : q.start;
         twice += a.x * q.end.y - q.end.x * a.y;
-        if (q.arc) twice += q.radius * q.radius * circular_segment(q.sweep);
-        loop_box.add(k == cut.loop_begin && !q.arc ? Box::of(a, q.end) : b);
+        if (q.arc) {
+            twice += q.radius * q.radius * circular_segment(q.sweep);
+            loop.add(arc_box(q));
+        } else {
+            loop.add(a);
+            loop.add(q.end);
+        }
     }
-    cut.box = box;
-    cut.loop_box = loop_box;
+    box.add(loop.box());
+    if (!head.arc) box.add(head.start);  // (the cut's box holds the loop's first piece whole)
+    for (std::uint32_t k = cut.loop_end; k < cut.end_piece; ++k) box.add(pieces[k]);
+    cut.box = box.box();
+    cut.loop_box = loop.box();
     cut.area_mm2 = twice / 2;
 }
 
@@ -129,9 +175,17 @@ void close_loop(Cut& cut, std::span<const Piece> pieces, double closure_mm, doub
     const double closure2 = closure_mm * closure_mm;
     // First the loops that begin on the lead-in's first pieces (nearly every contour), then any other point passed.
     for (const std::size_t candidates : {std::min(n, kPlanLeadMotions), n <= kPlanFullClosureMotions ? n : std::size_t{0}}) {
+        // (an end away from every candidate start, by more than the closure, returns nowhere but on the last piece)
+        Box starts;
+        for (std::size_t i = 0; i < candidates; ++i)
+            if (std::isfinite(p[i].start.x) && std::isfinite(p[i].start.y)) starts.add(p[i].start);
+        const Box near{starts.min_x - closure_mm, starts.min_y - closure_mm, starts.max_x + closure_mm,
+                       starts.max_y + closure_mm, starts.empty};
         for (std::size_t j = 0; j < n && candidates > 0 && !cut.closed; ++j) {
             std::size_t at = 0;
             Point where;
+            const Point e = p[j].end;
+            if (j + 1 != n && !(e.x >= near.min_x && e.x <= near.max_x && e.y >= near.min_y && e.y <= near.max_y)) continue;
             if (!returns_at(p, j, candidates, closure2, at, where)) continue;
             cut.closed = true;
             cut.loop_begin = cut.first_piece + static_cast<std::uint32_t>(at);
@@ -185,7 +239,13 @@ int quadrant(double x, double y) {
 }
 
 Box arc_box(const Piece& p) {
+    const double r = p.radius;
     Box b = Box::of(p.start, p.end);
+    if (std::fabs(p.sweep) >= 2 * kPi) {  // (a full circle, the commonest hole: its four extremes)
+        b.add(Point{p.centre.x - r, p.centre.y - r});
+        b.add(Point{p.centre.x + r, p.centre.y + r});
+        return b;
+    }
     const bool ccw = p.sweep > 0;
     double ux = p.start.x - p.centre.x, uy = p.start.y - p.centre.y;
     double vx = p.end.x - p.centre.x, vy = p.end.y - p.centre.y;
@@ -197,7 +257,6 @@ Box arc_box(const Piece& p) {
     int passes = (qe - qs + 4) % 4;
     const bool wraps = std::fabs(p.sweep) >= 2 * kPi || (qs == qe && ux * vy - uy * vx < 0);
     if (wraps) passes += 4;
-    const double r = p.radius;
     for (int k = 1; k <= passes && k <= 4; ++k) {
         const int extreme = (qs + k) % 4;  // 0 right, 1 top, 2 left, 3 bottom (mirrored back for clockwise)
         const double ex = extreme == 0 ? r : extreme == 2 ? -r : 0;

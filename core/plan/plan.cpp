@@ -128,8 +128,11 @@ struct CutPlan::State {
         pieces.push_back({l.start, l.end, {}, 0, 0, l.line, false});
     }
 
+    // The cut of head `h` ends here, if one is going (called at every motion that cuts nothing and every event).
     void close(int h) {
-        if (!cutting[h]) return;
+        if (cutting[h]) [[unlikely]] end_cut(h);
+    }
+    void end_cut(int h) {
         cutting[h] = false;
         plan::Cut& c = open[h];
         c.kerf = mixed_kerf[h] ? KerfSide::Off : open_kerf[h];

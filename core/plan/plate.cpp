@@ -142,20 +142,24 @@ private:
         std::sort(sig.begin(), sig.end());
         return sig;
     }
-    static std::uint64_t hash_of(const Signature& sig) {
+    static std::uint64_t hash_of(std::span<const std::pair<long long, long long>> values) {
         std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the values
-        for (const auto& [x, y] : sig)
+        for (const auto& [x, y] : values)
             for (const long long v : {x, y}) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
         return h;
     }
     void same_paths() {
         const auto q = [](double v) { return quantized(v, 4 * kPlanSamePathToleranceMm); };
-        std::vector<std::pair<std::array<long long, 5>, int>> keyed;  // (the head first: each head's cuts apart)
+        // Keyed by a hash of the head and the quantized box: a run of equal keys holds every cut with that box
+        // (and, rarely, another whose key is the same by chance: the signatures tell them apart).
+        std::vector<std::pair<std::uint64_t, int>> keyed;
         keyed.reserve(cuts_.size());
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
             const Box& b = cuts_[i].box;
-            if (!b.empty)
-                keyed.push_back({{cuts_[i].head, q(b.min_x), q(b.min_y), q(b.max_x), q(b.max_y)}, static_cast<int>(i)});
+            if (b.empty) continue;
+            const std::array<std::pair<long long, long long>, 3> key{
+                {{cuts_[i].head, q(b.min_x)}, {q(b.min_y), q(b.max_x)}, {q(b.max_y), 0}}};
+            keyed.push_back({hash_of(key), static_cast<int>(i)});
         }
         std::sort(keyed.begin(), keyed.end());
         // Only cuts that share their box (rare) are signed and compared: a run of the sorted boxes at a time.
@@ -178,7 +182,7 @@ private:
                 }
                 const std::size_t a = static_cast<std::size_t>(keyed[k + static_cast<std::size_t>(run[first].second)].second);
                 const std::size_t b = static_cast<std::size_t>(keyed[k + static_cast<std::size_t>(run[r].second)].second);
-                if (cuts_[a].closed == cuts_[b].closed &&
+                if (cuts_[a].closed == cuts_[b].closed && cuts_[a].head == cuts_[b].head &&
                     sigs[static_cast<std::size_t>(run[first].second)] == sigs[static_cast<std::size_t>(run[r].second)])
                     report_same_path(std::min(a, b), std::max(a, b));
             }
