@@ -15,6 +15,9 @@
 namespace essi::plan {
 namespace {
 
+// The sweep that finds a plate's neighbours gives up for the grid past this many comparisons a cut on average.
+constexpr std::size_t kSweepComparisonsPerCut = 48;
+
 struct Node {
     int parent = -1;
     int depth = 0;
@@ -198,26 +201,70 @@ private:
         out_.push_back(std::move(d));
     }
 
-    // Each cut's neighbours: the loops whose boxes meet its whole box (grown by the widest kerf), found once in the
-    // grid and used by the nesting, the collisions and the crossings.
+    // Each cut's neighbours: the loops whose boxes meet its whole box (grown by the widest kerf), in cutting order,
+    // found once and used by the nesting, the collisions and the crossings. A sweep along x over the cuts' boxes
+    // finds them on an ordinary plate (a cut is compared with the few whose x ranges meet its own); a crowded plate
+    // (many cuts over the same x, where the sweep would compare nearly all pairs) uses the uniform grid instead.
     void find_neighbours() {
         boxes_.assign(cuts_.size(), Box{});
         for (std::size_t i = 0; i < cuts_.size(); ++i)
             if (usable(i)) boxes_[i] = cuts_[i].loop_box;
+        const double margin = max_width_ + kPlanTouchToleranceMm;
+        pairs_.clear();
+        if (!sweep_pairs(margin)) grid_pairs(margin);
+        std::sort(pairs_.begin(), pairs_.end());
+        first_neighbour_.assign(cuts_.size() + 1, 0);
+        neighbours_.resize(pairs_.size());
+        for (std::size_t k = 0; k < pairs_.size(); ++k) {
+            ++first_neighbour_[static_cast<std::size_t>(pairs_[k].first) + 1];
+            neighbours_[k] = pairs_[k].second;
+        }
+        for (std::size_t i = 1; i < first_neighbour_.size(); ++i) first_neighbour_[i] += first_neighbour_[i - 1];
+    }
+    // Whether loop j is a neighbour of cut i (the test of both ways of finding them).
+    bool meets(std::size_t i, std::size_t j, double margin) const {
+        return i != j && cuts_[j].head == cuts_[i].head && boxes_meet(cuts_[i].box, boxes_[j], margin);
+    }
+    // The pairs (cut, neighbour) by a sweep along x; false (and no pairs) when the plate is too crowded for it.
+    bool sweep_pairs(double margin) {
+        order_.clear();
+        for (std::size_t i = 0; i < cuts_.size(); ++i)
+            if (!cuts_[i].box.empty && !std::isnan(cuts_[i].box.min_x)) order_.push_back(static_cast<int>(i));
+        std::sort(order_.begin(), order_.end(), [&](int a, int b) {
+            return cuts_[static_cast<std::size_t>(a)].box.min_x < cuts_[static_cast<std::size_t>(b)].box.min_x;
+        });
+        // (a loop lies in its cut's box: two cuts are neighbours only when their boxes' x ranges come this close)
+        const std::size_t budget = kSweepComparisonsPerCut * (order_.size() + 1);
+        std::size_t compared = 0;
+        for (std::size_t a = 0; a < order_.size(); ++a) {
+            const auto i = static_cast<std::size_t>(order_[a]);
+            const double reach = cuts_[i].box.max_x + margin;
+            for (std::size_t b = a + 1; b < order_.size(); ++b) {
+                const auto k = static_cast<std::size_t>(order_[b]);
+                if (!(cuts_[k].box.min_x <= reach)) break;
+                if (++compared > budget) {
+                    pairs_.clear();
+                    return false;
+                }
+                const Box& bi = cuts_[i].box;
+                const Box& bk = cuts_[k].box;
+                if (bk.min_y > bi.max_y + margin || bi.min_y > bk.max_y + margin) continue;  // (apart in y: both ways)
+                if (meets(i, k, margin)) pairs_.push_back({static_cast<int>(i), static_cast<int>(k)});
+                if (meets(k, i, margin)) pairs_.push_back({static_cast<int>(k), static_cast<int>(i)});
+            }
+        }
+        return true;
+    }
+    // The pairs through the grid over the loops' boxes (any plate).
+    void grid_pairs(double margin) {
         thread_local BoxGrid grid;  // (its arrays kept from plate to plate)
         grid.build(boxes_);
-        const double margin = max_width_ + kPlanTouchToleranceMm;
-        first_neighbour_.assign(cuts_.size() + 1, 0);
-        neighbours_.clear();
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
-            Box q = cuts_[i].box;
-            q.add(cuts_[i].loop_box);
-            grid.query(q, [&](int j) {
-                if (static_cast<std::size_t>(j) != i && cuts_[static_cast<std::size_t>(j)].head == cuts_[i].head &&
-                    boxes_meet(q, boxes_[static_cast<std::size_t>(j)], margin))
-                    neighbours_.push_back(j);
+            const Box& b = cuts_[i].box;
+            if (b.empty) continue;
+            grid.query({b.min_x - margin, b.min_y - margin, b.max_x + margin, b.max_y + margin, false}, [&](int j) {
+                if (meets(i, static_cast<std::size_t>(j), margin)) pairs_.push_back({static_cast<int>(i), j});
             });
-            first_neighbour_[i + 1] = static_cast<std::uint32_t>(neighbours_.size());
         }
     }
     std::span<const int> neighbours(std::size_t i) const {
@@ -485,7 +532,9 @@ private:
     std::vector<Box> boxes_;                   // the loops' boxes (empty: no loop), the grid's
     std::vector<std::vector<Point>> polygons_; // the loops flattened, as made
     std::vector<std::uint32_t> first_neighbour_;
-    std::vector<int> neighbours_;
+    std::vector<int> neighbours_;              // each cut's, ascending, from first_neighbour_[i]
+    std::vector<std::pair<int, int>> pairs_;   // (cut, neighbour) as found
+    std::vector<int> order_;                   // the cuts by their boxes' min_x (the sweep)
     double max_width_ = 0;  // the widest kerf of the plate's cuts
 };
 

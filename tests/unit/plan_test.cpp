@@ -242,6 +242,28 @@ TEST(CutPlanRules, CollisionsOverlapAndTooClose) {
     EXPECT_EQ(p[0].code, DiagCode::N612_ContoursOverlap);
 }
 
+// 120 parts in one column (every cut over the same x: too many comparisons for the sweep along x, so the plate's
+// neighbours come from the grid) and the same parts in one row (the sweep): the same finding, the one overlap.
+TEST(CutPlanRules, ACrowdedColumnAndARowGiveTheSameFindings) {
+    for (const bool column : {true, false}) {
+        SCOPED_TRACE(column ? "one column" : "one row");
+        Tape t;
+        const auto corner = [&](int k) { return column ? std::pair{100.0, 100.0 + 20 * k} : std::pair{100.0 + 20 * k, 100.0}; };
+        for (int k = 0; k < 120; ++k) {
+            const auto [x, y] = corner(k);
+            if (k == 60) t.hole(x + 5, y + 5, 2);  // (a hole in part 60, cut before it)
+            t.part_cw(x, y, x + 10, y + 10, "29", 3);
+        }
+        const auto [x, y] = corner(30);
+        t.part_cw(x, y + 5, x + 10, y + 15, "29", 3);  // over part 30 by 5 mm
+        const auto d = plan_of(check(t.end()));
+        ASSERT_EQ(d.size(), 1u) << codes_of(d);
+        EXPECT_EQ(d[0].code, DiagCode::E605_PartsCollide);
+        ASSERT_EQ(d[0].related.size(), 1u);
+        EXPECT_EQ(d[0].related[0].line, 2 + 30 * 13 + 5u);  // (part 30's first cut: 30 parts of 13 lines and the feed before it)
+    }
+}
+
 TEST(CutPlanRules, HolesOverlappingInOnePartMakeASlot) {
     Tape t;
     t.hole(150, 100, 20).hole(170, 100, 20).part_cw(60, 50, 260, 150);

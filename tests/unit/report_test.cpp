@@ -205,6 +205,15 @@ TEST(ReportCheck, TableLimitsE401) {
     // ccw goes down to y = -10
     CheckResult bulge = check_tape("+500+0\n+200+0+100+0+\n64\n", p);
     EXPECT_TRUE(has_code(bulge.diagnostics, DiagCode::E401_LeavesTable)) << dump(bulge.diagnostics);
+    // an arc whose circle leaves the table but which does not: (90,50) -> (78,86) ccw around (30,50), radius 60,
+    // turns 36.87 degrees and passes no extreme of its circle (the exact box, not the circle's, decides)
+    CheckResult short_arc = check_tape("+900+500\n-120+360-600+0+\n64\n", p);
+    EXPECT_FALSE(has_code(short_arc.diagnostics, DiagCode::E401_LeavesTable)) << dump(short_arc.diagnostics);
+    // the same circle's arc on to its top (30,110), beyond max_y 100
+    CheckResult past_top = check_tape("+900+500\n-600+600-600+0+\n64\n", p);
+    const Diagnostic* top = find_code(past_top.diagnostics, DiagCode::E401_LeavesTable);
+    ASSERT_NE(top, nullptr) << dump(past_top.diagnostics);
+    EXPECT_EQ(top->line, 2u);
 }
 
 TEST(ReportCheck, EmptyAndGarbageNeverThrow) {
