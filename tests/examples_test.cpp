@@ -43,6 +43,7 @@
 #include <utility>
 #include <vector>
 
+#include "deferred_plan.hpp"
 #include "essi/diagnostics.hpp"
 #include "essi/dialect.hpp"
 #include "essi/profile.hpp"
@@ -173,6 +174,10 @@ TEST_P(ExampleTape, MatchesExpectedAndTrace) {
     const essi::DialectGuess guess = essi::guess_dialect(bytes, format);
     EXPECT_EQ(guess.profile, profile_name) << "--profile auto chooses " << guess.profile;
     const essi::CheckResult result = essi::check_tape(bytes, *profile, format);
+    {
+        SCOPED_TRACE("the cut plan's plates kept and analysed after the check (the viewer's way for big tapes)");
+        expect_deferred_plan_is_the_same(bytes, *profile, format);
+    }
 
     // --- ok and diagnostics: the multiset of (code, line) ---
     ASSERT_TRUE(expected.contains("ok") && expected["ok"].is_boolean());

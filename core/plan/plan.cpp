@@ -41,7 +41,33 @@ struct PlateJob {
     }
 };
 
+// A plate kept by defer_plates: where each cut is in the stream (its motions are read back to analyse it).
+struct DeferredCut {
+    std::uint32_t first_motion, end_motion, first_line, last_line;
+    double kerf_width_mm;
+    std::uint8_t head;
+    KerfSide kerf;
+};
+struct DeferredPlate {
+    std::vector<DeferredCut> cuts;
+    plan::PlateSettings settings;
+};
+
 }  // namespace
+
+namespace plan {
+
+void append_pieces(const MotionRecord& m, std::vector<Piece>& out) {
+    if (m.curve == CurveKind::Parabola) {
+        std::vector<Point> pts;
+        flatten(m, kPlanChordToleranceMm, pts, /*include_start*/ true);
+        for (std::size_t k = 1; k < pts.size(); ++k) out.push_back({pts[k - 1], pts[k], {}, 0, 0, m.line, false});
+        return;
+    }
+    out.push_back({m.start, m.end, m.centre, m.sweep, m.radius, m.line, m.curve == CurveKind::Arc});
+}
+
+}  // namespace plan
 
 struct CutPlan::State {
     const Profile& profile;
@@ -67,6 +93,13 @@ struct CutPlan::State {
     std::vector<PlanContour> contours;
     PlateRunner* runner = nullptr;
     std::vector<std::unique_ptr<PlateJob>> jobs;  // the plates handed over, in order
+    std::uint32_t next_motion = 0;     // the stream index of the next motion
+    bool ended = false;                // end_input() was called
+    // defer_plates: the store the plates' motions are read back from, and the plates kept (the first
+    // `next_deferred` of them analysed).
+    const MotionStore* store = nullptr;
+    std::vector<DeferredPlate> deferred_plates;
+    std::size_t next_deferred = 0;
 
     explicit State(const Profile& p, bool keep)
         : profile(p), keep_contours(keep), closure_mm(p.arc_tolerance_units * p.unit_mm) {}
@@ -80,12 +113,13 @@ struct CutPlan::State {
         if (head == 0) here = end;
     }
     // The cut of head `h` gets a piece of line `line`, cut with this kerf.
-    void cut_of(int h, std::uint32_t line, KerfSide kerf, double kerf_mm, double feed) {
+    void cut_of(int h, std::uint32_t index, std::uint32_t line, KerfSide kerf, double kerf_mm, double feed) {
         if (feed != checked_feed) [[unlikely]] check_feed(line, feed);
         plan::Cut& c = open[h];
         if (!cutting[h]) {
             c = plan::Cut{};
             c.first_line = line;
+            c.first_motion = index;
             c.head = static_cast<std::uint8_t>(h + 1);
             cutting[h] = true;
             open_kerf[h] = kerf;
@@ -96,36 +130,32 @@ struct CutPlan::State {
         if (kerf != open_kerf[h]) [[unlikely]] mixed_kerf[h] = true;
         if (2 * kerf_mm > c.kerf_width_mm) [[unlikely]] c.kerf_width_mm = 2 * kerf_mm;
         c.last_line = line;
+        c.end_motion = index + 1;
     }
     // Head 1's pieces go straight to the plate's; head 2's wait apart (the heads' motions interleave).
     std::vector<plan::Piece>& pieces_of(int h) { return h == 0 ? pieces : head2_pieces; }
 
     void add(const MotionRecord& m) {
+        const std::uint32_t index = next_motion++;
         const int h = m.head == 2 ? 1 : 0;
         passed(h, m.start, m.end);
         if (m.kind != MotionKind::Cut) {
             close(h);
             return;
         }
-        cut_of(h, m.line, m.kerf, m.kerf_mm, m.feed_mm_min);
-        std::vector<plan::Piece>& out = pieces_of(h);
-        if (m.curve == CurveKind::Parabola) {
-            std::vector<Point> pts;
-            flatten(m, kPlanChordToleranceMm, pts, /*include_start*/ true);
-            for (std::size_t k = 1; k < pts.size(); ++k) out.push_back({pts[k - 1], pts[k], {}, 0, 0, m.line, false});
-            return;
-        }
-        out.push_back({m.start, m.end, m.centre, m.sweep, m.radius, m.line, m.curve == CurveKind::Arc});
+        cut_of(h, index, m.line, m.kerf, m.kerf_mm, m.feed_mm_min);
+        if (!store) plan::append_pieces(m, pieces_of(h));
     }
     // A straight motion of head 1 (most of a tape): no record made.
     void add(const UnitLine& l) {
+        const std::uint32_t index = next_motion++;
         passed(0, l.start, l.end);
         if (l.kind != MotionKind::Cut) {
             close(0);
             return;
         }
-        cut_of(0, l.line, l.kerf, l.kerf_mm, l.feed_mm_min);
-        pieces.push_back({l.start, l.end, {}, 0, 0, l.line, false});
+        cut_of(0, index, l.line, l.kerf, l.kerf_mm, l.feed_mm_min);
+        if (!store) pieces.push_back({l.start, l.end, {}, 0, 0, l.line, false});
     }
 
     // The cut of head `h` ends here, if one is going (called at every motion that cuts nothing and every event).
@@ -163,14 +193,21 @@ struct CutPlan::State {
         cuts.push_back(std::move(c));
     }
 
+    plan::PlateSettings settings() const {
+        return {closure_mm, profile.closure_gap_mm, profile.lead_in_required, plate, profile.table};
+    }
     void end_plate() {
         close(0);
         close(1);
         if (cuts.empty()) return;
+        if (store) {
+            keep_plate();
+            return;
+        }
         auto job = std::make_unique<PlateJob>();
         job->cuts.swap(cuts);
         job->pieces.swap(pieces);
-        job->settings = {closure_mm, profile.closure_gap_mm, profile.lead_in_required, plate, profile.table};
+        job->settings = settings();
         cuts.reserve(job->cuts.size());  // (the next plate is likely as large)
         pieces.reserve(job->pieces.size());
         job->keep_contours = keep_contours;
@@ -180,6 +217,49 @@ struct CutPlan::State {
         else j->run();
         ++plate;
     }
+    // defer_plates: the plate's cuts kept as where they are in the stream.
+    void keep_plate() {
+        DeferredPlate kept{{}, settings()};
+        kept.cuts.reserve(cuts.size());
+        for (const plan::Cut& c : cuts)
+            kept.cuts.push_back({c.first_motion, c.end_motion, c.first_line, c.last_line,
+                                 c.kerf_width_mm, c.head, c.kerf});
+        deferred_plates.push_back(std::move(kept));
+        cuts.clear();
+        pieces.clear();
+        ++plate;
+    }
+    // The next kept plate: its cuts and pieces made again from the store's motions, analysed at once.
+    bool analyse_deferred() {
+        if (next_deferred == deferred_plates.size()) return false;
+        DeferredPlate& kept = deferred_plates[next_deferred++];
+        auto job = std::make_unique<PlateJob>();
+        job->settings = kept.settings;
+        job->keep_contours = keep_contours;
+        for (const DeferredCut& d : kept.cuts) {
+            plan::Cut c;
+            c.first_line = d.first_line;
+            c.last_line = d.last_line;
+            c.first_motion = d.first_motion;
+            c.end_motion = d.end_motion;
+            c.kerf = d.kerf;
+            c.kerf_width_mm = d.kerf_width_mm;
+            c.head = d.head;
+            c.order = static_cast<int>(job->cuts.size());
+            c.first_piece = static_cast<std::uint32_t>(job->pieces.size());
+            for (std::uint32_t k = d.first_motion; k < d.end_motion; ++k) {
+                const MotionRecord m = store->motion(k);
+                if (m.kind == MotionKind::Cut && (m.head == 2) == (d.head == 2)) plan::append_pieces(m, job->pieces);
+            }
+            c.end_piece = static_cast<std::uint32_t>(job->pieces.size());
+            job->cuts.push_back(c);
+        }
+        std::vector<DeferredCut>().swap(kept.cuts);
+        job->run();
+        jobs.push_back(std::move(job));
+        return true;
+    }
+
     // After the last plate: every plate's findings, in plate order.
     void collect() {
         if (runner) runner->wait();
@@ -224,9 +304,21 @@ void CutPlan::on_line(const UnitLine& l) { s_->add(l); }
 void CutPlan::on_event(const MachineEvent& e) { s_->event(e); }
 
 void CutPlan::set_runner(PlateRunner* runner) { s_->runner = runner; }
+void CutPlan::defer_plates(const MotionStore* store) { s_->store = store; }
+
+void CutPlan::end_input() {
+    if (s_->ended) return;
+    s_->ended = true;
+    s_->end_plate();
+}
+
+bool CutPlan::analyse_deferred_plate() { return s_->analyse_deferred(); }
+std::size_t CutPlan::deferred_plates_left() const { return s_->deferred_plates.size() - s_->next_deferred; }
+std::size_t CutPlan::deferred_plates() const { return s_->deferred_plates.size(); }
 
 std::vector<Diagnostic> CutPlan::finish() {
-    s_->end_plate();
+    end_input();
+    while (s_->analyse_deferred()) {}
     s_->collect();
     return std::move(s_->found);
 }

@@ -32,6 +32,7 @@ struct Piece {
 // One cut: pierce to torch off, one head. Its pieces are the plate's pieces [first_piece, end_piece).
 struct Cut {
     std::uint32_t first_piece = 0, end_piece = 0;
+    std::uint32_t first_motion = 0, end_motion = 0;  // its motions in the stream: [first, end) of its head, cutting
     std::uint32_t first_line = 0, last_line = 0;
     KerfSide kerf = KerfSide::Off;  // the side in force on the whole cut (Off when it changes along it)
     double kerf_width_mm = 0;       // the full width the compensation cuts (0 when off)
@@ -51,6 +52,9 @@ struct Cut {
     Point gap_from;
     std::uint32_t gap_line = 0;
 };
+
+// Appends the pieces of a cutting motion (a parabola's chords) to `out`.
+void append_pieces(const MotionRecord& m, std::vector<Piece>& out);
 
 // Finds the cut's box and its loop (or its gap): fills box, closed, loop_*, area, gap_*. `closure_mm`: ends this close to a point
 // passed close the loop (the arc tolerance in mm).

@@ -56,16 +56,32 @@ void TapeChecker::check_chunk(const Tape& chunk, std::span<const MotionMeasure> 
     blocks_ += chunk.program_blocks();
 }
 
-CheckResult TapeChecker::finish() {
+void TapeChecker::finish_reading() {
     interpreter_.finish();
-    std::vector<Diagnostic> plan = plan_.finish();
-    block_columns(bytes_, plan);
-    result_.diagnostics.insert(result_.diagnostics.end(), std::make_move_iterator(plan.begin()),
-                               std::make_move_iterator(plan.end()));
+    plan_.end_input();
     result_.stats = stats_.stats();
     result_.stats.blocks = blocks_;
+}
+
+CheckResult TapeChecker::finish() {
+    finish_reading();
+    std::vector<Diagnostic> plan = plan_findings();
+    result_.diagnostics.insert(result_.diagnostics.end(), std::make_move_iterator(plan.begin()),
+                               std::make_move_iterator(plan.end()));
     sort_diagnostics(result_.diagnostics);
     return std::move(result_);
+}
+
+CheckResult TapeChecker::finish_before_plan() {
+    finish_reading();
+    sort_diagnostics(result_.diagnostics);
+    return std::move(result_);
+}
+
+std::vector<Diagnostic> TapeChecker::plan_findings() {
+    std::vector<Diagnostic> plan = plan_.finish();
+    block_columns(bytes_, plan);
+    return plan;
 }
 
 CheckResult check_tape(std::string_view bytes, const Profile& profile, InputFormat format) {

@@ -12,6 +12,7 @@
 #include "essi/profile.hpp"
 #include "essi/report.hpp"
 #include "../bench/nest_generator.hpp"
+#include "deferred_plan.hpp"
 
 namespace {
 
@@ -395,4 +396,28 @@ TEST(CutPlanRules, TheHeadsOfAThreeAxisTapeAreComparedApart) {
     EXPECT_EQ(d[0].line, 5u);
     EXPECT_EQ(d[1].code, DiagCode::N603_KerfInsideLoneContour);
     EXPECT_EQ(d[1].line, 6u);
+}
+
+// --- Plates kept and analysed later (CutPlan::defer_plates, TapeChecker::defer_plan: the viewer's way) ---
+
+TEST(CutPlanDeferred, KeptPlatesGiveTheDiagnosticsOfTheCheck) {
+    Tape t;
+    t.part_cw(60, 50, 260, 150);
+    t.part_cw(240, 50, 440, 150, "29", 5);      // E605 with the first
+    t.hole(500, 100, 20).part_cw(460, 50, 560, 150);
+    t.part_cw(600, 50, 700, 150).hole(650, 100, 20);  // W604: the part before its hole
+    t.next_plate();
+    t.part_cw(60, 50, 260, 150).part_cw(60, 50, 260, 150);  // W607 on the second plate
+    t.function("39+30").part_cw(300, 50, 400, 150, "29", 50);  // W608, and E606 across the first part
+    const std::string tape = t.end();
+    {
+        SCOPED_TRACE("built tape");
+        const auto found = plan_of(check(tape));
+        EXPECT_GE(found.size(), 5u) << codes_of(found);  // (a tape that has something to compare)
+        expect_deferred_plan_is_the_same(tape, essi::Profile{});
+    }
+    {
+        SCOPED_TRACE("generated nest, several plates, CR LF");
+        expect_deferred_plan_is_the_same(essi::bench::generate_nest_tape(200000, 3), essi::Profile{});
+    }
 }

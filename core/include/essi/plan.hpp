@@ -19,6 +19,7 @@
 // meet, never all pairs.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -83,6 +84,15 @@ public:
     virtual void wait() = 0;
 };
 
+// The motions of the stream a plan was fed, by their index (0: the first one given to on_motion or on_line), for a
+// caller that keeps them anyway (the viewer's document): the plan then keeps only where its cuts are in the stream,
+// and reads their motions back when it analyses a plate (CutPlan::defer_plates).
+class MotionStore {
+public:
+    virtual ~MotionStore() = default;
+    [[nodiscard]] virtual MotionRecord motion(std::size_t index) const = 0;
+};
+
 // The cut plan of one tape, fed the motion stream (a MotionSink): diagnostics come out when a plate ends and at
 // finish(). TapeChecker runs one on every tape it checks.
 class CutPlan final : public MotionSink {
@@ -97,7 +107,19 @@ public:
     void on_event(const MachineEvent& e) override;
     // Plates are analysed by `runner` from now on (null: at once). It must outlive finish().
     void set_runner(PlateRunner* runner);
-    // After the last motion: the last plate analysed; the diagnostics found (unsorted). Call once.
+    // Plates are not analysed when they end but kept as where their cuts are in the stream (a few bytes a cut, not
+    // their motions), to be analysed later from `store` (analyse_deferred_plate, or finish). Before the first
+    // motion; `store` must hold every motion given to this plan by then and outlive it.
+    void defer_plates(const MotionStore* store);
+    // After the last motion: the last plate ended (analysed, handed to the runner, or kept when deferred).
+    void end_input();
+    // Analyses the next plate kept by defer_plates (after end_input, or between motions); false when none is left.
+    bool analyse_deferred_plate();
+    // Plates kept and not analysed yet, and all plates kept so far (for a progress bar).
+    [[nodiscard]] std::size_t deferred_plates_left() const;
+    [[nodiscard]] std::size_t deferred_plates() const;
+    // After the last motion: every plate analysed (end_input first if it was not called); the diagnostics found
+    // (unsorted). Call once.
     [[nodiscard]] std::vector<Diagnostic> finish();
     // The contours analysed, when keep_contours.
     [[nodiscard]] const std::vector<PlanContour>& contours() const;

@@ -57,7 +57,23 @@ public:
     void set_plate_runner(PlateRunner* runner) { plan_.set_runner(runner); }
     // After the last chunk: the result (diagnostics sorted). Call once.
     [[nodiscard]] CheckResult finish();
+
+    // The cut plan's plates kept to be analysed after the check, their motions read back from `store`
+    // (CutPlan::defer_plates): for the viewer, which keeps every motion anyway and shows the drawing first.
+    // Before the first chunk.
+    void defer_plan(const MotionStore* store) { plan_.defer_plates(store); }
+    // After the last chunk, instead of finish(): the result without the cut plan's findings (plan_findings() gives
+    // them). Call once.
+    [[nodiscard]] CheckResult finish_before_plan();
+    // After finish_before_plan: one kept plate analysed (false when none is left), and how many are left of all.
+    bool analyse_plan_plate() { return plan_.analyse_deferred_plate(); }
+    [[nodiscard]] std::size_t plan_plates_left() const { return plan_.deferred_plates_left(); }
+    [[nodiscard]] std::size_t plan_plates() const { return plan_.deferred_plates(); }
+    // After finish_before_plan: the cut plan's diagnostics (the plates not analysed yet are analysed first),
+    // unsorted. Call once.
+    [[nodiscard]] std::vector<Diagnostic> plan_findings();
 private:
+    void finish_reading();  // the interpreter's and the plan's input ended; the statistics taken
     // The cut plan, then `also`: the one more sink the interpreter feeds.
     class PlanThenAlso final : public MotionSink {
     public:
