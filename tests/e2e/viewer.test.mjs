@@ -1856,6 +1856,76 @@ test('comments written in GB 18030 or UTF-8 are shown as written (detected per t
 
 // --- The diagnostics on the drawing (issue 15, point 5; docs/viewer.md "Problems on the drawing") ---
 
+// A tape of `plates` plates of `per` 10 x 10 mm parts (compensated, clockwise, a 3 mm lead-in), written as a nesting
+// program writes them (incremental, 0.1 mm), with two mistakes: a part over another on plate 3, and on plate 7 a
+// part cut before its hole.
+function platesTape(plates, per) {
+  const lines = ['3', 'plates of small parts', '4', '39+1000'];
+  let x = 0, y = 0;
+  const w = (v) => (v < 0 ? '-' : '+') + Math.abs(v);
+  const to = (mx, my) => {
+    const X = Math.round(mx * 10), Y = Math.round(my * 10);
+    lines.push(w(X - x) + w(Y - y));
+    x = X; y = Y;
+  };
+  const rapid = (mx, my) => { lines.push('5'); to(mx, my); lines.push('6'); };
+  const part = (x0, y0) => {
+    rapid(x0 - 3, y0 + 5); lines.push('29', '7');
+    to(x0, y0 + 5); to(x0, y0 + 10); to(x0 + 10, y0 + 10); to(x0 + 10, y0); to(x0, y0); to(x0, y0 + 5);
+    lines.push('8', '38');
+  };
+  const hole = (cx, cy) => {
+    rapid(cx, cy); lines.push('29', '7'); to(cx + 2, cy);
+    lines.push(w(0) + w(0) + w(-20) + w(0) + '+');  // a full circle about (cx, cy), counter-clockwise
+    lines.push('8', '38');
+  };
+  for (let p = 1; p <= plates; ++p) {
+    for (let k = 0; k < per; ++k) {
+      const px = 20 + 20 * (k % 60), py = 20 + 20 * Math.floor(k / 60);
+      if (p === 7 && k === 5) { part(px, py); hole(px + 5, py + 5); continue; }
+      part(px, py);
+      if (p === 3 && k === 10) part(px + 5, py);  // over part 10
+    }
+    rapid(0, 0);
+    lines.push(p === plates ? '64' : '0');
+  }
+  return lines.join('\r\n') + '\r\n';
+}
+
+test('a big tape is drawn before its cut plan is checked; the plan\'s findings then join the list, as essi check has them', async () => {
+  const page = await newPage();
+  const tape = platesTape(25, 600);
+  assert.ok(tape.length > 1e6, `the tape has ${tape.length} bytes: it must be loaded in slices`);
+  const file = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'essi-plan-')), 'plates.esi');
+  fs.writeFileSync(file, tape);
+  // Watch the load from before the drop: the frames that drew the tape, and the stage each frame said.
+  await page.evaluate(() => {
+    window.__watch = [];
+    (function poll() {
+      const s = essikit.state();
+      window.__watch.push({ drawn: s.drawn && s.name === 'plates.esi', stage: s.stage || '', status: s.status,
+                            codes: (s.diagnostics || []).map((d) => d.code) });
+      if (!(s.name === 'plates.esi' && s.status === 'ready')) requestAnimationFrame(poll);
+    })();
+  });
+  const state = await dropFile(page, 'plates.esi', Buffer.from(tape));
+  const watch = await page.evaluate(() => window.__watch);
+  const cli = cliReportOf(file);
+  assert.deepEqual(state.diagnostics.map((d) => [d.severity, d.code, d.line, d.column, d.message]),
+                   cli.diagnostics.map((d) => [d.severity, d.code, d.line, d.column, d.message]));
+  const codes = state.diagnostics.map((d) => d.code);
+  assert.ok(codes.includes('E605') && codes.includes('W604'), codes.join(' '));
+  // The tape was on the screen while the plan was still being checked, without the plan's findings yet.
+  const planning = watch.filter((w) => w.stage === 'checking the cut plan');
+  assert.ok(planning.length >= 1, `no frame said 'checking the cut plan': ${JSON.stringify(watch.map((w) => w.stage))}`);
+  assert.ok(planning.some((w) => w.drawn), 'the tape was not drawn while its plan was checked');
+  assert.ok(planning.every((w) => !w.codes.includes('E605')), 'the plan\'s findings came before the plan was checked');
+  // Each finding has its mark on the drawing once the plan is done.
+  assert.equal(state.marks.count, state.diagnostics.filter((d) => d.line > 0).length);
+  await page.close();
+});
+
+
 const ERROR_MARK_RGB = [255, 102, 89];  // kMarkerColors[Error] (the problems list's error colour)
 
 // Pixels of the error mark's colour in a box of `half` pixels around (x, y).

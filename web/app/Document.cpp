@@ -499,8 +499,18 @@ private:
     bool pierce_pending_ = false;
 };
 
-DocumentLoader::DocumentLoader(std::string name, std::string bytes, TapeSetup setup)
-    : doc_(std::make_unique<Document>()) {
+// The document's motions as the cut plan reads them back (Document::record: the interpreter's own numbers).
+class DocumentLoader::Motions final : public MotionStore {
+public:
+    explicit Motions(const Document& doc) : doc_(doc) {}
+    [[nodiscard]] MotionRecord motion(std::size_t index) const override { return doc_.record(index); }
+
+private:
+    const Document& doc_;
+};
+
+DocumentLoader::DocumentLoader(std::string name, std::string bytes, TapeSetup setup, bool plan_later)
+    : doc_(std::make_unique<Document>()), plan_later_(plan_later) {
     doc_->name = std::move(name);
     doc_->bytes = std::move(bytes);
     doc_->profile = setup.profile;
@@ -546,6 +556,10 @@ bool DocumentLoader::step(double budget_ms) {
         reader_ = std::make_unique<TapeReader>(d.bytes, d.profile, d.setup.format);
         chunk_.reserve(Document::kReadChunkBlocks, 2 * Document::kReadChunkBlocks);  // (no doubling steps)
         checker_ = std::make_unique<TapeChecker>(d.bytes, d.profile, sink_.get());
+        if (plan_later_) {
+            motions_ = std::make_unique<Motions>(d);
+            checker_->defer_plan(motions_.get());
+        }
         if (now_ms() > until) return false;
     }
     if (stage_ == Stage::ReadAndCheck) {  // read and check, a chunk at a time
@@ -574,14 +588,16 @@ bool DocumentLoader::step(double budget_ms) {
         }
     }
     if (stage_ == Stage::Finish) {
-        CheckResult r = checker_->finish();
+        CheckResult r = plan_later_ ? checker_->finish_before_plan() : checker_->finish();
         record_setup(r, d.setup);  // (the note N403 among the diagnostics, as `essi check` has it)
         d.stats = r.stats;
         d.diagnostics = std::move(r.diagnostics);
         d.bbox = d.stats.motion_bbox;
-        checker_.reset();
+        if (!plan_later_) {
+            checker_.reset();
+            sink_.reset();
+        }
         reader_.reset();
-        sink_.reset();
         chunk_ = Tape{};
         shrink_if_loose(d.motions);
         shrink_if_loose(d.arc_centres);
@@ -596,6 +612,26 @@ bool DocumentLoader::step(double budget_ms) {
         stage_ = Stage::Done;
     }
     return true;
+}
+
+bool DocumentLoader::step_plan(Document& doc, double budget_ms) {
+    if (!checker_) return true;
+    const double until = now_ms() + budget_ms;
+    while (checker_->analyse_plan_plate())
+        if (now_ms() > until) return false;
+    std::vector<Diagnostic> found = checker_->plan_findings();
+    doc.diagnostics.insert(doc.diagnostics.end(), std::make_move_iterator(found.begin()), std::make_move_iterator(found.end()));
+    sort_diagnostics(doc.diagnostics);  // (as TapeChecker::finish orders them: the same list as essi check's)
+    doc.place_diagnostics();
+    checker_.reset();
+    sink_.reset();
+    motions_.reset();
+    return true;
+}
+
+float DocumentLoader::plan_progress() const {
+    if (!checker_ || checker_->plan_plates() == 0) return 1.f;
+    return 1.f - static_cast<float>(checker_->plan_plates_left()) / static_cast<float>(checker_->plan_plates());
 }
 
 float DocumentLoader::progress() const {

@@ -23,6 +23,7 @@ constexpr double kLodRefineRatio = 1.5;
 constexpr double kRebuildCoarser = 2;
 constexpr double kRebuildFiner = 16;
 constexpr double kNoLimit = std::numeric_limits<double>::infinity();  // a load at once: no slice budget
+constexpr float kPlanFrom = 0.9f;  // the progress bar's share before the cut plan (tapes loaded in slices)
 
 }  // namespace
 
@@ -33,7 +34,9 @@ void LoadController::start(std::string name, std::string bytes, TapeSetup setup)
     frames_.at_once = bytes.size() < kAtOnceBytes;
     frames_.handed = frame_;
     awaiting_shown_ = false;
-    loader_ = std::make_unique<DocumentLoader>(std::move(name), std::move(bytes), std::move(setup));
+    plan_.reset();  // (the plan of the tape before is not finished: it is dropped with it)
+    // A tape loaded in slices keeps its cut plan's plates for after its drawing; one loaded at once is complete.
+    loader_ = std::make_unique<DocumentLoader>(std::move(name), std::move(bytes), std::move(setup), !frames_.at_once);
     frames_since_start_ = 0;
     started_ = glfwGetTime();
 }
@@ -47,6 +50,7 @@ bool LoadController::step() {
         ++frames_.steps;
         if (!loader_->step(at_once ? kNoLimit : kStepBudgetMs)) return false;
         doc_ = loader_->take();
+        if (loader_->plan_pending()) plan_ = std::move(loader_);
         loader_.reset();
         return true;
     }
@@ -60,11 +64,19 @@ bool LoadController::step() {
 // (LodRaster::cells_for, for zooms between the fit and the segments) is made after them; a rebuild at another
 // tolerance goes before it.
 void LoadController::build(double until) {
+    if (plan_ && !first_build_) {  // the verdict before the finer level of detail
+        step_plan(until);
+        return;
+    }
     if (lod_building_ && (first_build_ || !building_)) {
         step_overview(until);
         if (lod_building_) return;
     }
     if (building_) step_segments(until);
+}
+
+void LoadController::step_plan(double until) {
+    if (plan_->step_plan(*doc_, (until - glfwGetTime()) * 1000.0)) plan_.reset();
 }
 
 void LoadController::step_overview(double until) {
@@ -172,6 +184,7 @@ LoadController::Phase LoadController::phase() const {
     if (loader_) return Phase::Reading;
     if (lod_building_ && first_build_) return Phase::Overview;
     if (building_ && first_build_) return Phase::Segments;
+    if (plan_) return Phase::Plan;
     return Phase::Idle;
 }
 
@@ -180,16 +193,18 @@ float LoadController::progress() const {
     switch (phase()) {
         case Phase::Reading: return loader_->progress();
         case Phase::Overview: return 0.7f + 0.1f * lod_.progress();
+        case Phase::Plan: return kPlanFrom + (1.f - kPlanFrom) * plan_->plan_progress();
         default: break;
     }
-    const float from = renderer_.has_lod() ? 0.8f : 0.7f;
-    return building_ ? from + (1.f - from) * building_->progress() : 1.f;
+    const float from = renderer_.has_lod() ? 0.8f : 0.7f, to = plan_ ? kPlanFrom : 1.f;
+    return building_ ? from + (to - from) * building_->progress() : 1.f;
 }
 
 Msg LoadController::stage() const {
     switch (phase()) {
         case Phase::Reading: return loader_->stage();
         case Phase::Overview: return Msg::UiStageOverview;
+        case Phase::Plan: return Msg::UiStagePlan;
         default: return Msg::UiStageBuilding;
     }
 }

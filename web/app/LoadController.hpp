@@ -1,7 +1,8 @@
 // Loading and the rebuild policy: reads a tape in slices (DocumentLoader), then makes its drawing in slices too
 // — a big tape's level of detail first (with the cells the view needs), then its segments, uploaded as they are
-// made, then the finer level of detail — and makes the segments again when the zoom moves far enough from the
-// chord tolerance they were made at. Every slice takes about kStepBudgetMs; the document is not drawn until its
+// made, then the cut plan's plates (kept while the tape was read: the drawing comes first), then the finer level
+// of detail — and makes the segments again when the zoom moves far enough from the chord tolerance they were
+// made at. Every slice takes about kStepBudgetMs; the document is not drawn until its
 // segments are complete. A tape under kAtOnceBytes is loaded at once instead: read, checked and its drawing made
 // and uploaded in one step, so the first frame after it was handed over shows it (no progress bar).
 #pragma once
@@ -31,6 +32,7 @@ public:
         Reading,   // the DocumentLoader: line index, reading and checking
         Overview,  // the first level of detail of a big tape
         Segments,  // the first build of the segments
+        Plan,      // the cut plan's plates of a tape loaded in slices (its findings join the diagnostics)
     };
 
     explicit LoadController(Renderer& renderer) : renderer_(renderer) {}
@@ -77,7 +79,9 @@ public:
     [[nodiscard]] float progress() const;
     [[nodiscard]] Msg stage() const;  // what the progress bar says (a row of ui.def)
     // Loading or building work left to do (the browser loop also runs slices of it between frames).
-    [[nodiscard]] bool has_work() const { return loader_ != nullptr || lod_building_ || building_ != nullptr; }
+    [[nodiscard]] bool has_work() const {
+        return loader_ != nullptr || lod_building_ || building_ != nullptr || plan_ != nullptr;
+    }
     // The slice may run outside a frame (not before the first frame of a load has shown the progress bar).
     [[nodiscard]] bool may_step_outside_frame() const { return !(loader_ && !frames_.at_once && frames_since_start_ == 0); }
     // The segments are being made again at a new zoom's tolerance (not the load's first build), over the overview.
@@ -105,12 +109,14 @@ private:
     void segments_done();
     void begin_overview(double zoom, double framebuffer_scale);
     void build(double until);  // the drawing's work until `until` (glfwGetTime; infinity: all of it)
+    void step_plan(double until);
 
     Renderer& renderer_;
     bool graphics_ok_ = false;
 
     // Reading
     std::unique_ptr<DocumentLoader> loader_;
+    std::unique_ptr<DocumentLoader> plan_;  // the loader of the drawn document while its cut plan is analysed
     std::string loading_name_;
     std::size_t loading_bytes_ = 0;
     int frames_since_start_ = 0;
