@@ -204,6 +204,7 @@ std::string App::state_json() const {
                  {"drawable_frame", lf.drawable},
                  {"shown_frame", lf.shown},
                  {"complete_frame", lf.complete},
+                 {"planned_frame", lf.planned},
                  {"frames_to_show", lf.shown > 0 ? lf.shown - lf.handed : 0},
                  {"steps", lf.steps},
                  {"progress_frames", lf.progress_frames}};

@@ -76,7 +76,9 @@ void LoadController::build(double until) {
 }
 
 void LoadController::step_plan(double until) {
-    if (plan_->step_plan(*doc_, (until - glfwGetTime()) * 1000.0)) plan_.reset();
+    if (!plan_->step_plan(*doc_, (until - glfwGetTime()) * 1000.0)) return;
+    plan_.reset();
+    frames_.planned = frame_;
 }
 
 void LoadController::step_overview(double until) {

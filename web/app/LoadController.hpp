@@ -46,6 +46,8 @@ public:
         std::uint64_t drawable = 0;   // frames begun when its drawing was complete (read, checked, segments on the GPU)
         std::uint64_t shown = 0;      // the first frame that drew it (its segments or its level of detail); 0: none yet
         std::uint64_t complete = 0;   // the first frame that drew it complete: loaded, no segment left to draw
+        std::uint64_t planned = 0;    // frames begun when its cut plan's findings joined the diagnostics (a tape
+                                      // loaded in slices: after `drawable`); 0: checked with the reading
         std::uint64_t steps = 0;      // slices of work (in frames and between them) until its drawing was complete
         std::uint64_t progress_frames = 0;  // frames that showed its progress bar
     };

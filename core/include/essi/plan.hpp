@@ -14,9 +14,9 @@
 // Plates: a programmed stop (0, 102) with the torch back where the program started ends a plate (as a nesting
 // program cuts several plates in one tape); parts of different plates never collide.
 //
-// Speed: the cuts are kept as their programmed motions (a small record each) until the plate ends; the plate's
-// contours go into a uniform grid over their boxes, so containment and collisions test only contours whose boxes
-// meet, never all pairs.
+// Speed: the cuts are kept as their programmed motions (a small record each) until the plate ends; each cut's
+// neighbours are found by a sweep along x over the cuts' boxes (on a crowded plate, a uniform grid over them), so
+// containment and collisions test only contours whose boxes meet, never all pairs.
 #pragma once
 
 #include <cstddef>
