@@ -57,14 +57,10 @@ struct DeferredPlate {
 
 namespace plan {
 
-void append_pieces(const MotionRecord& m, std::vector<Piece>& out) {
-    if (m.curve == CurveKind::Parabola) {
-        std::vector<Point> pts;
-        flatten(m, kPlanChordToleranceMm, pts, /*include_start*/ true);
-        for (std::size_t k = 1; k < pts.size(); ++k) out.push_back({pts[k - 1], pts[k], {}, 0, 0, m.line, false});
-        return;
-    }
-    out.push_back({m.start, m.end, m.centre, m.sweep, m.radius, m.line, m.curve == CurveKind::Arc});
+void append_parabola(const MotionRecord& m, std::vector<Piece>& out) {
+    std::vector<Point> pts;
+    flatten(m, kPlanChordToleranceMm, pts, /*include_start*/ true);
+    for (std::size_t k = 1; k < pts.size(); ++k) out.push_back({pts[k - 1], pts[k], {}, 0, 0, m.line, false});
 }
 
 }  // namespace plan

@@ -53,8 +53,15 @@ struct Cut {
     std::uint32_t gap_line = 0;
 };
 
-// Appends the pieces of a cutting motion (a parabola's chords) to `out`.
-void append_pieces(const MotionRecord& m, std::vector<Piece>& out);
+// Appends the pieces of a cutting motion to `out`: itself, or a parabola's chords (append_parabola).
+void append_parabola(const MotionRecord& m, std::vector<Piece>& out);
+inline void append_pieces(const MotionRecord& m, std::vector<Piece>& out) {
+    if (m.curve == CurveKind::Parabola) [[unlikely]] {
+        append_parabola(m, out);
+        return;
+    }
+    out.push_back({m.start, m.end, m.centre, m.sweep, m.radius, m.line, m.curve == CurveKind::Arc});
+}
 
 // Finds the cut's box and its loop (or its gap): fills box, closed, loop_*, area, gap_*. `closure_mm`: ends this close to a point
 // passed close the loop (the arc tolerance in mm).
