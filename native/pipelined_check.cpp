@@ -27,11 +27,14 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
         std::atomic<bool> full{false};
     };
     std::array<Slot, kPipelineChunks> slots;
+    // The cut plan's plates, analysed by the reading thread while it would wait for the interpreter.
+    SharedPlateRunner plates;
 
     std::thread reader_thread([&] {
         TapeReader reader(bytes, profile, format);
         for (std::size_t k = 0;; ++k) {
             Slot& slot = slots[k % slots.size()];
+            while (slot.full.load(std::memory_order_acquire) && plates.run_one()) {}
             slot.full.wait(true, std::memory_order_acquire);
             const bool more = reader.read_chunk(slot.chunk, kPipelineChunkBlocks);
             // The arcs' square roots and atan2s, off the interpreting thread, but only while a chunk waits for
@@ -49,8 +52,6 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
         }
     });
 
-    // The cut plan's plates on a third thread: the reader leaves most of its core free.
-    ThreadPlateRunner plates;
     TapeChecker checker(bytes, profile);
     checker.set_plate_runner(&plates);
     for (std::size_t k = 0;; ++k) {

@@ -1,41 +1,38 @@
-// The cut plan's plates analysed on a thread of their own (essi::PlateRunner), while the caller's thread goes on
-// interpreting the tape: the pipelined check's third party.
+// The cut plan's plates (essi::PlateRunner) queued for whichever thread of the pipelined check has time: the reading
+// thread analyses one whenever it would otherwise wait for the interpreter (run_one), and wait() analyses what is
+// left on the caller's thread. It starts no thread of its own: on two cores a third thread slows the two that read
+// and interpret.
 #pragma once
 
 #include <condition_variable>
+#include <cstddef>
 #include <deque>
 #include <functional>
 #include <mutex>
-#include <thread>
 
 #include "essi/plan.hpp"
 
 namespace essi::native {
 
-class ThreadPlateRunner final : public PlateRunner {
+class SharedPlateRunner final : public PlateRunner {
 public:
-    // At most `max_waiting` plates wait for the thread; run() waits for room beyond that (a tape of many plates
-    // does not pile up in memory when the thread falls behind).
-    explicit ThreadPlateRunner(std::size_t max_waiting = kMaxWaitingPlates);
-    ~ThreadPlateRunner() override;
-    ThreadPlateRunner(const ThreadPlateRunner&) = delete;
-    ThreadPlateRunner& operator=(const ThreadPlateRunner&) = delete;
-
+    // At most `max_waiting` plates wait in the queue; run() analyses a plate beyond that at once, on its caller's
+    // thread (a tape of many plates does not pile up in memory when the reader has no time for them).
+    explicit SharedPlateRunner(std::size_t max_waiting = kMaxWaitingPlates) : max_waiting_(max_waiting) {}
     void run(std::function<void()> job) override;
+    // Runs every plate queued, then waits for those another thread is running.
     void wait() override;
+    // Runs the oldest plate queued, if any; false when none was.
+    bool run_one();
 
     static constexpr std::size_t kMaxWaitingPlates = 8;
 
 private:
-    void work();
-
     std::mutex mutex_;
     std::condition_variable changed_;
     std::deque<std::function<void()>> jobs_;
     std::size_t running_ = 0;
     std::size_t max_waiting_;
-    bool stopping_ = false;
-    std::thread thread_;  // (last: started once the rest is ready)
 };
 
 }  // namespace essi::native

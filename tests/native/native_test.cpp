@@ -17,6 +17,7 @@
 #include "essi/diagnostics.hpp"
 #include "formats.hpp"
 #include "pipelined_check.hpp"
+#include "plate_runner.hpp"
 #include "sha256.hpp"
 #include "share_store.hpp"
 #include "temp_dir.hpp"
@@ -94,6 +95,27 @@ TEST(Expand, ExtensionsSniffingAndOrder) {
 TEST(Expand, ParseExtensionList) {
     EXPECT_EQ(parse_extension_list("esi,.NC  txt;;"), (std::vector<std::string>{".esi", ".nc", ".txt"}));
     EXPECT_TRUE(parse_extension_list(" , ").empty());
+}
+
+// Each plate is analysed once, by whichever thread asks: queued up to the bound, at once beyond it, the rest by
+// wait().
+TEST(SharedPlateRunner, EveryPlateRunsOnceWhicheverThreadRunsIt) {
+    essi::native::SharedPlateRunner plates(2);
+    std::atomic<int> ran{0};
+    const auto job = [&] { ++ran; };
+    for (int k = 0; k < 5; ++k) plates.run(job);
+    EXPECT_EQ(ran.load(), 3);  // (two queued, three run by run() itself)
+    EXPECT_TRUE(plates.run_one());
+    EXPECT_EQ(ran.load(), 4);
+    std::thread reader([&] { EXPECT_TRUE(plates.run_one()); });
+    reader.join();
+    EXPECT_EQ(ran.load(), 5);
+    EXPECT_FALSE(plates.run_one());
+    plates.run(job);
+    plates.run(job);
+    plates.wait();
+    EXPECT_EQ(ran.load(), 7);
+    EXPECT_FALSE(plates.run_one());
 }
 
 TEST(ThreadPool, EmitsInOrderWithManyWorkers) {
@@ -229,7 +251,8 @@ TEST(PipelinedCheck, SameResultAsOneThread) {
         else EXPECT_GE(one.diagnostics.size(), 6u);
         for (int run = 0; run < 3; ++run) essi_test::expect_same_result(check_tape_pipelined(*tape, profile), one, "run " + std::to_string(run));
     }
-    // The cut plan's plates analysed on their own thread (ThreadPlateRunner): the same findings in the same order.
+    // The cut plan's plates analysed by the reading thread or at the end (SharedPlateRunner): the same findings in
+    // the same order.
     // A kerf 40 mm wide makes the nest's parts (35 mm apart) collide on every plate.
     essi::Profile wide;
     wide.kerf_units = 400;

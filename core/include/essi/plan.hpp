@@ -73,7 +73,7 @@ struct PlanContour {
 };
 
 // Where a plate's analysis runs. Without one, a plate is analysed when it ends, on the thread that feeds the plan;
-// natively the pipelined check passes one that analyses a plate on another thread while the next one is read (the
+// natively the pipelined check passes one whose plates its reading thread analyses while the interpreter goes on (the
 // core starts no thread). The analysis of a plate depends on nothing but that plate.
 class PlateRunner {
 public:
