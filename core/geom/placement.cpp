@@ -26,12 +26,6 @@ MotionRecord Placement::machine(const MotionRecord& m, Point tool_offset) const 
     return r;  // (a turn keeps sweeps, senses and lengths)
 }
 
-Box Placement::moved(const Box& b, Point tool_offset) const {
-    if (b.empty) return b;
-    const double dx = zero_.x - tool_offset.x, dy = zero_.y - tool_offset.y;
-    return {b.min_x + dx, b.min_y + dy, b.max_x + dx, b.max_y + dy, false};
-}
-
 Box Placement::machine_box(const MotionRecord& m, Point tool_offset) const {
     if (!turns_) return moved(bounding_box(m), tool_offset);
     return bounding_box(machine(m, tool_offset));

@@ -673,20 +673,15 @@ void Machine::check_table(const MotionRecord& m, const Block& b) {
     if (!profile_.table) return;
     // Most motions lie well inside the table: a box that holds the whole motion (a line's ends; an arc's ends and
     // its whole circle) inside the table settles it without the exact box (an arc's extremes, a parabola's). On a
-    // plate that is not turned, the machine box is the program box moved by the zero offset less the tool offset.
+    // plate that is not turned, Placement::moved takes a program box to the machine exactly.
     if (inside_table_ && m.curve != CurveKind::Parabola && !placement_.turns()) {
-        double lo_x = std::min(m.start.x, m.end.x), hi_x = std::max(m.start.x, m.end.x);
-        double lo_y = std::min(m.start.y, m.end.y), hi_y = std::max(m.start.y, m.end.y);
+        Box hull = Box::of(m.start, m.end);
         if (m.curve == CurveKind::Arc) {
             const double r = std::max(m.radius, m.end_radius);
-            lo_x = std::min(lo_x, m.centre.x - r);
-            hi_x = std::max(hi_x, m.centre.x + r);
-            lo_y = std::min(lo_y, m.centre.y - r);
-            hi_y = std::max(hi_y, m.centre.y + r);
+            hull.add(Point{m.centre.x - r, m.centre.y - r});
+            hull.add(Point{m.centre.x + r, m.centre.y + r});
         }
-        const Point zero = placement_.zero_offset();
-        const double dx = zero.x - tool_offset_.x, dy = zero.y - tool_offset_.y;
-        if (table_holds(*profile_.table, Box{lo_x + dx, lo_y + dy, hi_x + dx, hi_y + dy, false})) return;
+        if (table_holds(*profile_.table, placement_.moved(hull, tool_offset_))) return;
     }
     check_table_box(placement_.machine_box(m, tool_offset_), b, Msg::InterpMotionOffTable);
 }

@@ -38,8 +38,13 @@ public:
     [[nodiscard]] MotionRecord machine(const MotionRecord& m, Point tool_offset) const;
     // The exact machine box of a motion.
     [[nodiscard]] Box machine_box(const MotionRecord& m, Point tool_offset) const;
-    // A box in program coordinates moved to the machine: exact only when the plate is not turned.
-    [[nodiscard]] Box moved(const Box& program, Point tool_offset) const;
+    // A box in program coordinates moved to the machine: exact only when the plate is not turned. (Inline: the
+    // interpreter's table check asks it for every motion.)
+    [[nodiscard]] Box moved(const Box& program, Point tool_offset) const {
+        if (program.empty) return program;
+        const double dx = zero_.x - tool_offset.x, dy = zero_.y - tool_offset.y;
+        return {program.min_x + dx, program.min_y + dy, program.max_x + dx, program.max_y + dy, false};
+    }
     [[nodiscard]] bool turns() const { return turns_; }
     [[nodiscard]] Point zero_offset() const { return zero_; }
     // A program direction in machine axes: R(plate rotation) · v.
