@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "essi/sniff.hpp"
+#include "essi/text.hpp"
 #include "file_io.hpp"
 #include "pipelined_check.hpp"
 #include "thread_pool.hpp"
@@ -50,6 +51,44 @@ bool sniff_tape_file(const std::string& path) {
     return looks_like_essi(std::string_view(buf, n));
 }
 
+namespace {
+
+// Whether a file found in a directory is checked: a tape extension, or (unless --no-sniff) a first KB that looks
+// like a tape (essi/sniff.hpp), whatever its extension (or none).
+bool takes_file(const fs::path& file, const ExpandOptions& options) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    const bool known = std::find(options.extensions.begin(), options.extensions.end(), ext) != options.extensions.end();
+    return known || (options.sniff && sniff_tape_file(file.string()));
+}
+
+// The files of `dir` and its subfolders that are taken, in `found`; a folder that cannot be listed (no permission,
+// gone while listed) is an error naming it, and the walk goes on with the rest. Symbolic links to folders are not
+// followed (no loops).
+void walk_directory(const std::string& dir, const ExpandOptions& options, std::vector<std::string>& found,
+                    std::vector<std::string>& errors) {
+    std::vector<fs::path> pending{fs::path(dir)};
+    while (!pending.empty()) {
+        const fs::path folder = std::move(pending.back());
+        pending.pop_back();
+        std::error_code ec;
+        fs::directory_iterator it(folder, ec), end;
+        for (; !ec && it != end; it.increment(ec)) {
+            std::error_code entry_ec;
+            if (it->is_symlink(entry_ec)) {
+                if (it->is_regular_file(entry_ec) && takes_file(it->path(), options)) found.push_back(it->path().string());
+            } else if (it->is_directory(entry_ec)) {
+                pending.push_back(it->path());
+            } else if (it->is_regular_file(entry_ec) && takes_file(it->path(), options)) {
+                found.push_back(it->path().string());
+            }
+        }
+        if (ec) errors.push_back("cannot read " + display_text(folder.string()) + ": " + ec.message());
+    }
+}
+
+}  // namespace
+
 std::vector<std::string> expand_paths(const std::vector<std::string>& args, const ExpandOptions& options,
                                       std::vector<std::string>& errors) {
     std::vector<std::string> files;
@@ -60,19 +99,7 @@ std::vector<std::string> expand_paths(const std::vector<std::string>& args, cons
             continue;
         }
         std::vector<std::string> found;
-        for (fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
-             !ec && it != end; it.increment(ec)) {
-            std::error_code entry_ec;
-            if (!it->is_regular_file(entry_ec)) continue;
-            std::string ext = it->path().extension().string();
-            std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-            const bool known =
-                std::find(options.extensions.begin(), options.extensions.end(), ext) != options.extensions.end();
-            // A file without a tape extension, whatever its extension (or none), is taken when its first KB
-            // looks like a tape (essi/sniff.hpp); --no-sniff turns that off.
-            if (known || (options.sniff && sniff_tape_file(it->path().string()))) found.push_back(it->path().string());
-        }
-        if (ec) errors.push_back("cannot read " + path + ": " + ec.message());
+        walk_directory(path, options, found, errors);
         std::sort(found.begin(), found.end());
         files.insert(files.end(), found.begin(), found.end());
     }
@@ -94,8 +121,9 @@ void check_batch(const std::vector<std::string>& files, const TapeRequest& reque
         } else {
             item.read_ok = true;
             const TapeSetup setup = request.setup(file.bytes);
-            item.report.result = pipelined ? check_tape_pipelined(file.bytes, setup) : check_tape(file.bytes, setup);
-            limit_diagnostics(item.report, options.max_diagnostics);
+            item.report.result = pipelined ? check_tape_pipelined(file.bytes, setup, options.max_diagnostics)
+                                           : check_tape(file.bytes, setup, options.max_diagnostics);
+            limit_diagnostics(item.report.result, options.max_diagnostics);  // (with the setup's note)
         }
         item.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };

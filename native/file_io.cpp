@@ -7,7 +7,6 @@
 #include <new>
 
 #include <fcntl.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -62,6 +61,46 @@ std::string too_large_text(std::uint64_t size, std::uint64_t max_bytes, bool siz
            limit + "; raise --max-size to read it";
 }
 
+namespace {
+
+// A regular file of `size` bytes (at stat time), read into one buffer that nothing initialises first. Not mapped: a
+// file truncated while it is read would kill the process that reads the mapping (SIGBUS); read() instead returns
+// what is there. A file that shrank is taken as it is now; one that grew, up to its size at stat time (which was
+// within --max-size).
+ReadResult read_regular_file(const std::string& path, std::size_t size) {
+    ReadResult r;
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        r.error = std::strerror(errno);
+        return r;
+    }
+    std::shared_ptr<char[]> buffer(new (std::nothrow) char[size]);
+    if (!buffer) {
+        ::close(fd);
+        r.error = "file too large for memory";
+        return r;
+    }
+    std::size_t got = 0;
+    while (got < size) {
+        const ssize_t n = ::read(fd, buffer.get() + got, size - got);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            r.error = std::strerror(errno);
+            ::close(fd);
+            return r;
+        }
+        if (n == 0) break;  // (the file was truncated since stat)
+        got += static_cast<std::size_t>(n);
+    }
+    ::close(fd);
+    r.bytes = std::string_view(buffer.get(), got);
+    r.storage = std::move(buffer);
+    r.ok = true;
+    return r;
+}
+
+}  // namespace
+
 ReadResult read_whole_file(const std::string& path, std::uint64_t max_bytes) {
     ReadResult r;
     try {
@@ -80,54 +119,16 @@ ReadResult read_whole_file(const std::string& path, std::uint64_t max_bytes) {
             return r;
         }
         if (S_ISREG(st.st_mode) && static_cast<std::uint64_t>(st.st_size) > max_bytes) {
-            r.error = too_large_text(static_cast<std::uint64_t>(st.st_size), max_bytes, true);  // not mapped
+            r.error = too_large_text(static_cast<std::uint64_t>(st.st_size), max_bytes, true);  // not read
             return r;
         }
-        if (S_ISREG(st.st_mode) && st.st_size > 0) {
-            // Regular file: map it read-only. A tape of 100 MB costs no copy and no allocation.
-            const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-            if (fd < 0) {
-                r.error = std::strerror(errno);
-                return r;
-            }
-            const auto size = static_cast<std::size_t>(st.st_size);
-            void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
-            ::close(fd);
-            if (p != MAP_FAILED) {
-                r.mapping = std::shared_ptr<const void>(p, [size](const void* q) { ::munmap(const_cast<void*>(q), size); });
-                r.bytes = std::string_view(static_cast<const char*>(p), size);
-                r.ok = true;
-                return r;
-            }
-            // mmap refused (some special file systems): fall through to reading.
-        }
+        if (S_ISREG(st.st_mode) && st.st_size > 0) return read_regular_file(path, static_cast<std::size_t>(st.st_size));
         std::FILE* f = std::fopen(path.c_str(), "rb");
         if (f == nullptr) {
             r.error = std::strerror(errno);
             return r;
         }
-        bool ok = true;
-        if (S_ISREG(st.st_mode) && st.st_size > 0) {
-            // Regular file: one allocation, one read.
-            const auto size = static_cast<std::size_t>(st.st_size);
-            r.owned.resize(size);
-            const std::size_t n = std::fread(r.owned.data(), 1, size, f);
-            r.owned.resize(n);
-            if (n < size && std::ferror(f)) {
-                r.error = std::strerror(errno);
-                ok = false;
-            } else if (n == size) {
-                // The file may have grown since stat(): take the rest too (rare, so only then
-                // does the string grow past the size we allocated).
-                const int c = std::fgetc(f);
-                if (c != EOF) {
-                    r.owned.push_back(static_cast<char>(c));
-                    ok = read_chunks(f, r.owned, r.error, max_bytes);
-                }
-            }
-        } else {
-            ok = read_chunks(f, r.owned, r.error, max_bytes);
-        }
+        const bool ok = read_chunks(f, r.owned, r.error, max_bytes);
         std::fclose(f);
         r.ok = ok;
         if (!ok) r.owned.clear();

@@ -8,14 +8,14 @@
 
 namespace essi::native {
 
-// A file's bytes: mapped into memory for regular files (no copy, no page clearing), read into `owned`
-// for streams. `bytes` views whichever holds them and stays valid while the ReadResult lives.
+// A file's bytes: read into `storage` for regular files (one read, no page clearing), into `owned` for streams.
+// `bytes` views whichever holds them and stays valid while the ReadResult lives.
 struct ReadResult {
     bool ok = false;
     std::string_view bytes;  // the whole file
     std::string error;       // "No such file or directory" when !ok
     std::string owned;       // the bytes of a stream (or a file that could not be mapped)
-    std::shared_ptr<const void> mapping;  // unmaps on destruction
+    std::shared_ptr<const char[]> storage;  // the bytes of a regular file
 };
 
 // The largest input the CLI reads by default (`--max-size`): far above any real tape, far below the memory of

@@ -205,12 +205,19 @@ nlohmann::json sarif_rules(std::string_view docs_url, Lang lang) {
         const std::string summary(code_summary(c, lang));
         const std::string uri = base + "diagnostics.md#" + code_anchor(c);
         const int group = static_cast<int>(c) / 100;
-        const char* area = group == 1 ? "read" : group == 2 ? "interpret" : group == 3 ? "geometry" : "machine";
+        const char* area = group == 1   ? "read"
+                           : group == 2 ? "interpret"
+                           : group == 3 ? "geometry"
+                           : group == 4 ? "machine"
+                           : group == 5 ? "conversion"
+                                        : "cut-plan";
         rules.push_back({
             {"id", id},
             {"shortDescription", {{"text", summary}}},
             {"fullDescription", {{"text", summary}}},
-            {"help", {{"text", summary + " See " + uri}, {"markdown", summary + " See [" + id + "](" + uri + ")."}}},
+            {"help",
+             {{"text", format_message(Msg::ReportSeeDocs, lang, {summary, uri})},
+              {"markdown", format_message(Msg::ReportSeeDocsMarkdown, lang, {summary, id, uri})}}},
             {"helpUri", uri},
             {"defaultConfiguration", {{"level", sarif_level(default_severity(c))}}},
             {"properties", {{"tags", {"essi", area}}}},

@@ -191,6 +191,7 @@ struct CheckOptions {
     unsigned jobs = 0;           // 0 = all cores
     std::string fail_on = "error";
     long long max_diagnostics = -1;  // -1 = all
+    long long max_per_code = -1;     // -1 = the profile's max_per_code
     bool quiet = false;
     std::string docs_url = std::string(essi::native::kDefaultDocsUrl);
     std::uint64_t max_size = essi::native::kDefaultMaxInputBytes;
@@ -199,8 +200,9 @@ struct CheckOptions {
 int run_check(const std::vector<std::string>& paths, const CheckOptions& o) {
     using namespace essi::native;
     const auto t0 = std::chrono::steady_clock::now();
-    const auto request = resolve_request(o.profile, o.input);
+    auto request = resolve_request(o.profile, o.input);
     if (!request) return kExitUsage;
+    if (o.max_per_code >= 0) request->max_per_code = static_cast<std::size_t>(o.max_per_code);
     const std::string& profile_name = request->profile_name;
     bool io_failed = false;
 
@@ -306,48 +308,56 @@ int run_render(const RenderCliOptions& o) {
         const std::size_t n = std::strlen(ext);
         return s.size() > n && s.compare(s.size() - n, n, ext) == 0;
     };
+    const bool png = o.png || ends_with(o.output, ".png");
+    const auto say = [](essi::Msg m, essi::MessageArgs args) { err("essi render: " + essi::format_message(m, g_lang, args) + "\n"); };
+    const auto cannot_write = [&](const std::string& path) {
+        say(essi::Msg::CliCannotWrite, {essi::display_text(path), std::strerror(errno)});
+        return kExitUsage;
+    };
     if (o.format == "dxf" || (o.format.empty() && ends_with(o.output, ".dxf"))) {
+        if (png) {
+            say(essi::Msg::RenderDxfIsNoPicture, {o.png ? std::string("--png") : essi::display_text(o.output)});
+            return kExitUsage;
+        }
         const essi::DxfResult dxf = essi::render_dxf(file.bytes, setup);
         std::string output = o.output;
         if (output.empty()) output = (o.path == "-" ? std::string("stdin") : std::filesystem::path(o.path).filename().string()) + ".dxf";
-        if (!write_file(output, dxf.text)) {
-            err("essi render: cannot write " + output + ": " + std::strerror(errno) + "\n");
-            return kExitUsage;
-        }
-        if (output != "-") err("essi render: wrote " + output + "\n");
+        if (!write_file(output, dxf.text)) return cannot_write(output);
+        if (output != "-") say(essi::Msg::RenderWrote, {essi::display_text(output)});
         const bool errors = std::any_of(dxf.diagnostics.begin(), dxf.diagnostics.end(),
                                         [](const essi::Diagnostic& d) { return d.severity == essi::Severity::Error; });
         return finish(errors ? kExitTapeErrors : kExitOk);
     }
     const essi::RenderResult r = essi::render_svg(file.bytes, setup.profile, options, setup.format);
     std::string output = o.output;
-    const bool png = o.png || (output.size() > 4 && output.compare(output.size() - 4, 4, ".png") == 0);
     if (output.empty()) {
         const std::string base = o.path == "-" ? std::string("stdin") : std::filesystem::path(o.path).filename().string();
         output = base + (png ? ".png" : ".svg");
     }
     if (png) {
         if (output == "-") {
-            err("essi render: --png needs a file name (-o OUT.png)\n");
+            say(essi::Msg::RenderPngNeedsFile, {});
             return kExitUsage;
         }
         const std::string tmp = output + ".tmp.svg";
-        if (!write_file(tmp, r.svg)) {
-            err("essi render: cannot write " + tmp + ": " + std::strerror(errno) + "\n");
-            return kExitUsage;
-        }
+        if (!write_file(tmp, r.svg)) return cannot_write(tmp);
         const bool ok = run_program({"rsvg-convert", "--background-color=white", "-o", output, tmp});
         std::remove(tmp.c_str());
         if (!ok) {
-            err("essi render: rsvg-convert failed or is not installed (apt-get install librsvg2-bin; scripts/setup "
-                "installs it); write an SVG instead\n");
+            std::remove(output.c_str());  // (no empty or partial picture left behind)
+            say(essi::Msg::RenderNoRsvg, {});
+            return kExitUsage;
+        }
+        std::error_code ec;
+        if (std::filesystem::file_size(output, ec) == 0 || ec) {
+            std::remove(output.c_str());
+            say(essi::Msg::RenderPngEmpty, {essi::display_text(output)});
             return kExitUsage;
         }
     } else if (!write_file(output, r.svg)) {
-        err("essi render: cannot write " + output + ": " + std::strerror(errno) + "\n");
-        return kExitUsage;
+        return cannot_write(output);
     }
-    if (output != "-") err("essi render: wrote " + output + "\n");
+    if (output != "-") say(essi::Msg::RenderWrote, {essi::display_text(output)});
     return finish(r.result.ok() ? kExitOk : kExitTapeErrors);
 }
 
@@ -355,8 +365,7 @@ void report_errors_briefly(const std::vector<FileReport>& reports) {
     for (const FileReport& r : reports) {
         const std::size_t n = r.result.count(essi::Severity::Error);
         if (n > 0)
-            err("essi: " + r.display_path() + " has " + std::to_string(n) + (n == 1 ? " error" : " errors") +
-                " (see essi check " + r.display_path() + ")\n");
+            err("essi: " + essi::format_message(essi::Msg::ReportHasErrors, g_lang, {r.display_path(), n}) + "\n");
     }
 }
 
@@ -369,12 +378,13 @@ struct ConvertCliOptions {
     std::string input = "auto";
     bool absolute = false;
     bool incremental = false;
+    bool force = false;
     std::uint64_t max_size = essi::native::kDefaultMaxInputBytes;
 };
 
-// essi convert: the tape read as --input/--profile say, run, and written in --to for --to-profile (default: the
-// profile it was read with). Warnings and errors on stderr; exit 1 when the tape has errors (the output is still
-// written: what the machine would run of it).
+// essi convert: the tape read as --input/--profile say, checked as essi check does, run, and written in --to for
+// --to-profile (default: the profile it was read with). Warnings and errors on stderr; a tape with errors exits 1
+// and nothing is written, unless --force (then what the machine would run of it is written, and it still exits 1).
 int run_convert(const ConvertCliOptions& o) {
     const auto tape = load_tape(o.path, o.profile, o.input, o.max_size);
     if (!tape) return kExitUsage;
@@ -382,6 +392,7 @@ int run_convert(const ConvertCliOptions& o) {
     essi::ConvertOptions options;
     options.to = o.to == "eia" ? essi::OutputFormat::Eia : o.to == "gcode" ? essi::OutputFormat::Gcode : essi::OutputFormat::Essi;
     options.absolute = o.absolute;
+    options.force = o.force;
     if (o.to_profile.empty()) {
         options.target = setup.profile;
     } else {
@@ -391,6 +402,10 @@ int run_convert(const ConvertCliOptions& o) {
     }
     const essi::ConvertResult r = essi::convert_tape(tape->file.bytes, setup, options);
     for (const essi::Diagnostic& d : r.diagnostics) err(essi::diagnostic_line(o.path, d, g_lang) + "\n");
+    if (r.refused) {
+        err("essi convert: " + essi::format_message(essi::Msg::ConvertRefused, g_lang, {essi::display_text(o.path)}) + "\n");
+        return finish(kExitTapeErrors);
+    }
     if (!write_file(o.output, r.text)) {
         err("essi convert: cannot write " + essi::display_text(o.output) + ": " + std::strerror(errno) + "\n");
         return kExitUsage;
@@ -527,6 +542,11 @@ int main(int argc, char** argv) {
                       "At most N diagnostics per file (the rest are counted in a note)")
         ->check(CLI::Range(0LL, 1LL << 40))
         ->type_name("N");
+    check->add_option("--max-per-code", check_opts.max_per_code,
+                      "At most N diagnostics of one code per file, then one that counts the rest (default: the "
+                      "profile's max_per_code, 1000; 0: no limit)")
+        ->check(CLI::Range(0LL, 1000000000LL))
+        ->type_name("N");
     check->add_flag("-q,--quiet", check_opts.quiet,
                     "Text: only errors, warnings and the summary; json/junit/sarif: no summary on stderr");
     check->add_option("--docs-url", check_opts.docs_url,
@@ -578,6 +598,9 @@ int main(int argc, char** argv) {
     auto* absolute_flag = convert->add_flag("--absolute", convert_opts.absolute, "Absolute coordinates (82, G90)");
     convert->add_flag("--incremental", convert_opts.incremental, "Incremental coordinates (81, G91; the default)")
         ->excludes(absolute_flag);
+    convert->add_flag("--force", convert_opts.force,
+                      "Write the tape even when it has errors (what the machine would run of it; the exit code is "
+                      "still 1)");
     add_max_size_option(convert, convert_opts.max_size);
     convert->add_option("-o,--output", convert_opts.output, "Output file ('-' = stdout, the default)");
     convert->add_option("FILE", convert_opts.path, "Tape file ('-' reads standard input)")->required();

@@ -8,14 +8,15 @@
 
 namespace essi::native {
 
-CheckResult check_tape_pipelined(std::string_view bytes, const TapeSetup& setup) {
-    CheckResult r = check_tape_pipelined(bytes, setup.profile, setup.format);
+CheckResult check_tape_pipelined(std::string_view bytes, const TapeSetup& setup, std::size_t max_diagnostics) {
+    CheckResult r = check_tape_pipelined(bytes, setup.profile, setup.format, max_diagnostics);
     record_setup(r, setup);
     return r;
 }
 
-CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile, InputFormat format) {
-    if (bytes.size() < kPipelineMinBytes) return check_tape(bytes, profile, format);
+CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile, InputFormat format,
+                                 std::size_t max_diagnostics) {
+    if (bytes.size() < kPipelineMinBytes) return check_tape(bytes, profile, format, max_diagnostics);
 
     // A ring of chunks: the reader fills slot k, the checker empties it, in order. A slot changes hands through
     // its atomic `full` flag (C++20 wait/notify: a short spin, then a futex), so a thread that is only a little
@@ -53,6 +54,7 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
     });
 
     TapeChecker checker(bytes, profile);
+    checker.set_max_diagnostics(max_diagnostics);
     checker.set_plate_runner(&plates);
     for (std::size_t k = 0;; ++k) {
         Slot& slot = slots[k % slots.size()];

@@ -15,8 +15,10 @@ constexpr std::size_t kPipelineChunkBlocks = 16384;
 constexpr int kPipelineChunks = 4;
 
 [[nodiscard]] CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
-                                               InputFormat format = InputFormat::Essi);
+                                               InputFormat format = InputFormat::Essi,
+                                               std::size_t max_diagnostics = static_cast<std::size_t>(-1));
 // The check of a tape as `setup` reads it (check_tape(bytes, setup) on two cores).
-[[nodiscard]] CheckResult check_tape_pipelined(std::string_view bytes, const TapeSetup& setup);
+[[nodiscard]] CheckResult check_tape_pipelined(std::string_view bytes, const TapeSetup& setup,
+                                               std::size_t max_diagnostics = static_cast<std::size_t>(-1));
 
 }  // namespace essi::native

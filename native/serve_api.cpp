@@ -2,6 +2,7 @@
 #include "tape_request.hpp"
 
 #if defined(ESSI_HAVE_HTTPLIB)
+#include <algorithm>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -113,7 +114,8 @@ void check_tape(const httplib::Request& req, httplib::Response& res, const std::
 
 // POST /api/convert?to=essi|eia|gcode&profile=P|auto&to_profile=Q&absolute=1&input=...&format=json: the
 // converted program as text/plain (the count of warnings in X-Essi-Warnings), or with format=json
-// {"text", "diagnostics"}; 422 with the diagnostics when the tape has errors (as `essi convert` exits 1).
+// {"text", "diagnostics"}; 422 with the diagnostics when the tape has errors (as `essi convert` exits 1), unless
+// force=1 (then the text of what the machine would run, with X-Essi-Errors).
 void convert(const httplib::Request& req, httplib::Response& res, const std::string& body) {
     const auto request = tape_request(req, res);
     if (!request) return;
@@ -131,14 +133,18 @@ void convert(const httplib::Request& req, httplib::Response& res, const std::str
         options.target = *target;
     }
     options.absolute = param_or(req, "absolute", "0") == "1";
+    options.force = param_or(req, "force", "0") == "1";
     const ConvertResult r = convert_tape(body, setup, options);
     const nlohmann::json diagnostics = diagnostics_to_json(r.diagnostics);
-    if (!r.ok()) {
+    if (r.refused) {
         res.status = 422;
         return res.set_content(dump({{"error", "the tape has errors"}, {"diagnostics", diagnostics}}), "application/json");
     }
     if (param_or(req, "format", "text") == "json")
         return res.set_content(dump({{"text", r.text}, {"diagnostics", diagnostics}}), "application/json");
+    const auto errors = std::count_if(r.diagnostics.begin(), r.diagnostics.end(),
+                                      [](const Diagnostic& d) { return d.severity == Severity::Error; });
+    if (errors > 0) res.set_header("X-Essi-Errors", std::to_string(errors));
     res.set_header("X-Essi-Warnings", std::to_string(r.diagnostics.size()));
     res.set_content(r.text, "text/plain; charset=us-ascii");
 }

@@ -1,6 +1,8 @@
 // The message catalogue's texts and the template formatter (essi/i18n.hpp).
 #include "essi/i18n.hpp"
+#include "essi/text.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 
@@ -29,7 +31,15 @@ constexpr char kListItem = '\x1d'; // between two alternatives of a list
 constexpr char kNestedSep = '\x18';
 constexpr char kNestedItem = '\x19';
 
-bool is_packing_byte(char c) { return c == kArgSep || c == kArgMsg || c == kArgList || c == kListItem; }
+
+// A text argument into the packed form as safe text (essi::display_text): every byte that is not part of valid
+// UTF-8, and every control character (the packing bytes among them), is written \xNN, so that no message ever
+// carries raw input bytes (a tape's, a file name's) into a report, a terminal or a markup file.
+void append_text_arg(std::string& packed, std::string_view text) {
+    const bool plain = std::all_of(text.begin(), text.end(), [](char c) { return c >= 0x20 && c < 0x7F; });
+    if (plain) packed += text;
+    else packed += display_text(text);
+}
 
 std::string argument_text(std::string_view a, Lang lang);
 
@@ -152,7 +162,7 @@ MessageArgs::MessageArgs(std::initializer_list<Arg> args) {
             packed_ += a.owned;
             continue;
         }
-        for (char c : a.text) packed_ += is_packing_byte(c) ? '?' : c;
+        append_text_arg(packed_, a.text);
     }
 }
 
@@ -171,7 +181,7 @@ MessageArgs::Arg MessageArgs::Arg::alternatives(const std::vector<std::string>& 
     std::string packed;
     for (const std::string& item : items) {
         if (!packed.empty()) packed += kListItem;
-        for (char c : item) packed += is_packing_byte(c) ? '?' : c;
+        append_text_arg(packed, item);
     }
     return list_arg('o', std::move(packed));
 }

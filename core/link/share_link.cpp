@@ -1,5 +1,6 @@
 // Share link fragments (essi/share_link.hpp).
 #include "essi/share_link.hpp"
+#include "essi/profile.hpp"
 
 #include <array>
 #include <cmath>
@@ -47,6 +48,25 @@ std::string form_decode(std::string_view s) {
     return out;
 }
 
+// form_decode's inverse: letters, digits and - _ . ~ as they are, every other byte as %XX (so '+' is "%2B").
+std::string form_encode(std::string_view s) {
+    static constexpr char kHex[] = "0123456789ABCDEF";
+    std::string out;
+    out.reserve(s.size());
+    for (const char ch : s) {
+        const auto c = static_cast<unsigned char>(ch);
+        if ((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_' ||
+            c == '.' || c == '~') {
+            out += ch;
+        } else {
+            out += '%';
+            out += kHex[c >> 4];
+            out += kHex[c & 15];
+        }
+    }
+    return out;
+}
+
 // A finite number written in full (no trailing text), as "12.5" or "-3e2".
 std::optional<double> parse_number(const std::string& s) {
     if (s.empty() || s.size() > 32) return std::nullopt;
@@ -79,14 +99,6 @@ bool is_store_id(std::string_view s) {
     return true;
 }
 
-bool is_profile_name(std::string_view s) {
-    if (s.empty() || s.size() > 64) return false;
-    for (char c : s)
-        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '.' ||
-              c == '+' || c == '-'))
-            return false;
-    return true;
-}
 
 // A problem, in English and as a message.
 void add_problem(ShareLink& link, Message m) {
@@ -122,7 +134,7 @@ void read_field(std::string_view key, const std::string& value, ShareLink& link)
         if (bytes && !bytes->empty()) link.packed = std::move(*bytes);
         else problem(Msg::LinkBadTape);
     } else if (key == "p") {
-        if (is_profile_name(value)) link.profile = value;
+        if (is_valid_profile_name(value)) link.profile = value;
         else problem(Msg::LinkBadProfile);
     } else if (key == "pj") {
         auto bytes = base64url_decode(value);
@@ -169,9 +181,9 @@ std::string share_view_query(const ShareView& view, std::uint32_t line) {
 }
 
 std::string share_reading_query(std::string_view profile, std::string_view profile_json, std::string_view input) {
-    std::string q = "p=" + std::string(profile);  // (profile names need no escaping: letters, digits, _ . + -)
+    std::string q = "p=" + form_encode(profile);  // ("iso6582+custom": the '+' would be read as a space)
     if (!profile_json.empty()) q += "&pj=" + base64url_encode(profile_json);
-    if (!input.empty()) q += "&i=" + std::string(input);
+    if (!input.empty()) q += "&i=" + form_encode(input);
     return q;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "essi/geom.hpp"
@@ -26,10 +27,17 @@ public:
         origin_ = {all.min_x, all.min_y};
         const double w = std::max(all.max_x - all.min_x, 1e-9), h = std::max(all.max_y - all.min_y, 1e-9);
         const double cell = std::sqrt(w * h / static_cast<double>(std::max<std::size_t>(boxes.size(), 1)));
-        cell_ = std::max(cell, std::max(w, h) / kMaxCellsPerAxis);
-        inverse_cell_ = 1 / cell_;
-        nx_ = static_cast<int>(w / cell_) + 1;
-        ny_ = static_cast<int>(h / cell_) + 1;
+        // Boxes that each cover many cells (contours piled over each other) would list each box in most cells: the
+        // cells grow until the entries are at most kEntriesPerBox a box (one cell holds every box once at worst).
+        const std::size_t max_entries = kEntriesPerBox * boxes.size() + kEntriesBase;
+        for (cell_ = std::max(cell, std::max(w, h) / kMaxCellsPerAxis);; cell_ *= 2) {
+            inverse_cell_ = 1 / cell_;
+            nx_ = static_cast<int>(w / cell_) + 1;
+            ny_ = static_cast<int>(h / cell_) + 1;
+            std::size_t entries = 0;
+            for_each_box_span([&](std::size_t cells) { entries += cells; });
+            if (entries <= max_entries || (nx_ == 1 && ny_ == 1)) break;
+        }
         // Two passes (count, then fill): one array of ids, cell by cell.
         start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
         for_each_box_cell([&](std::size_t cell, int) { ++start_[cell + 1]; });
@@ -40,6 +48,7 @@ public:
     }
 
     // Calls f(id) once for each box listed in a cell the query box meets (the caller tests the boxes themselves).
+    // When f returns a bool, false stops the query.
     template <class F>
     void query(const Box& q, F&& f) {
         if (q.empty || nx_ == 0) return;
@@ -53,13 +62,29 @@ public:
                     const int id = ids_[k];
                     if (stamp_[id] == generation_) continue;
                     stamp_[id] = generation_;
-                    f(id);
+                    if constexpr (std::is_same_v<decltype(f(id)), bool>) {
+                        if (!f(id)) return;
+                    } else {
+                        f(id);
+                    }
                 }
             }
     }
 
 private:
     static constexpr double kMaxCellsPerAxis = 1024;
+    static constexpr std::size_t kEntriesPerBox = 16, kEntriesBase = 65536;
+
+    // f(cells) for each box: how many cells it covers.
+    template <class F>
+    void for_each_box_span(F&& f) const {
+        for (const Box& b : *boxes_) {
+            if (b.empty) continue;
+            int x0, y0, x1, y1;
+            cells_of(b, x0, y0, x1, y1);
+            f(static_cast<std::size_t>(x1 - x0 + 1) * static_cast<std::size_t>(y1 - y0 + 1));
+        }
+    }
 
     void cells_of(const Box& b, int& x0, int& y0, int& x1, int& y1) const {
         // (clamped before the cast: a box far outside the grid is its border cells; NaN is cell 0)

@@ -3,6 +3,7 @@
 #include "essi/plan.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "essi/interp.hpp"
@@ -32,12 +33,16 @@ struct PlateJob {
     plan::PlateSettings settings;
     bool keep_contours = false;
     std::vector<Diagnostic> found;
+    DiagnosticCap cap;  // max_per_code within the plate (what it left out is counted for the tape)
     std::vector<PlanContour> contours;
+    std::atomic<bool> done{false};  // run() has returned (on whichever thread ran it)
     void run() {
+        cap = DiagnosticCap(settings.max_per_code);
         for (plan::Cut& c : cuts) plan::close_loop(c, pieces, settings.closure_mm, settings.gap_limit_mm);
-        plan::analyse_plate(cuts, pieces, settings, found, keep_contours ? &contours : nullptr);
-        std::vector<plan::Cut>().swap(cuts);  // (only the findings are kept until the end)
+        plan::analyse_plate(cuts, pieces, settings, found, cap, keep_contours ? &contours : nullptr);
+        std::vector<plan::Cut>().swap(cuts);  // (only the findings are kept until they are folded in)
         std::vector<plan::Piece>().swap(pieces);
+        done.store(true, std::memory_order_release);
     }
 };
 
@@ -85,10 +90,12 @@ struct CutPlan::State {
     Point home, here;                  // where the program started, where head 1 is
     std::uint32_t feed_line = 0;       // the block that set the feed in force (39), 0: the profile's
     double checked_feed = -1;          // the feed of the last cut motion (checked, and reported, once per change)
-    std::vector<Diagnostic> found;
+    std::vector<Diagnostic> found;     // as far as `cap` admits them: the stream's, then each plate's in plate order
+    DiagnosticCap cap;                 // max_per_code for the tape
     std::vector<PlanContour> contours;
     PlateRunner* runner = nullptr;
     std::vector<std::unique_ptr<PlateJob>> jobs;  // the plates handed over, in order
+    std::size_t folded = 0;            // jobs[0, folded) are folded into `found` (and freed)
     std::uint32_t next_motion = 0;     // the stream index of the next motion
     bool ended = false;                // end_input() was called
     // defer_plates: the store the plates' motions are read back from, and the plates kept (the first
@@ -98,7 +105,7 @@ struct CutPlan::State {
     std::size_t next_deferred = 0;
 
     explicit State(const Profile& p, bool keep)
-        : profile(p), keep_contours(keep), closure_mm(p.arc_tolerance_units * p.unit_mm) {}
+        : profile(p), keep_contours(keep), closure_mm(p.arc_tolerance_units * p.unit_mm), cap(p.max_per_code) {}
 
     // Where head 1 is; a motion that cuts nothing ends the head's cut.
     void passed(int head, Point start, Point end) {
@@ -190,7 +197,7 @@ struct CutPlan::State {
     }
 
     plan::PlateSettings settings() const {
-        return {closure_mm, profile.closure_gap_mm, profile.lead_in_required, plate, profile.table};
+        return {closure_mm, profile.closure_gap_mm, profile.lead_in_required, plate, profile.table, profile.max_per_code};
     }
     void end_plate() {
         close(0);
@@ -212,6 +219,18 @@ struct CutPlan::State {
         if (runner) runner->run([j] { j->run(); });
         else j->run();
         ++plate;
+        fold_done();
+    }
+    // The findings of the plates analysed so far, in plate order, through the tape's cap; their jobs freed. So at
+    // most the runner's waiting plates hold findings beside the tape's `found`, however many plates a tape has.
+    void fold_done() {
+        while (folded < jobs.size() && jobs[folded]->done.load(std::memory_order_acquire)) {
+            PlateJob& j = *jobs[folded];
+            cap.move_admitted(j.found, found);
+            cap.add_omitted(j.cap);
+            contours.insert(contours.end(), j.contours.begin(), j.contours.end());
+            jobs[folded++].reset();
+        }
     }
     // defer_plates: the plate's cuts kept as where they are in the stream.
     void keep_plate() {
@@ -253,17 +272,17 @@ struct CutPlan::State {
         std::vector<DeferredCut>().swap(kept.cuts);
         job->run();
         jobs.push_back(std::move(job));
+        fold_done();
         return true;
     }
 
     // After the last plate: every plate's findings, in plate order.
     void collect() {
         if (runner) runner->wait();
-        for (const auto& j : jobs) {
-            found.insert(found.end(), std::make_move_iterator(j->found.begin()), std::make_move_iterator(j->found.end()));
-            contours.insert(contours.end(), j->contours.begin(), j->contours.end());
-        }
+        fold_done();
         jobs.clear();
+        folded = 0;
+        cap.append_summaries(found);
     }
 
     // W608: a cut at a feed outside feed_range_mm_min, once each time the feed changes.
@@ -274,12 +293,13 @@ struct CutPlan::State {
                                        {number_text(feed), number_text(profile.feed_min_mm_min),
                                         number_text(profile.feed_max_mm_min)});
         if (feed_line > 0) d.related.push_back({feed_line, feed_line, Msg::RelatedFeedSet, {}});
-        found.push_back(std::move(d));
+        if (cap.admit(d)) found.push_back(std::move(d));
     }
 
     void event(const MachineEvent& e) {
         if (e.kind == EventKind::Function && e.code == fn::kFeed) feed_line = e.line;
-        if (e.kind == EventKind::Dwell && e.value > profile.max_dwell_s)
+        if (e.kind == EventKind::Dwell && e.value > profile.max_dwell_s &&
+            cap.admit(DiagCode::W609_DwellTooLong, e.line, Severity::Warning))
             found.push_back(make_diagnostic(Severity::Warning, DiagCode::W609_DwellTooLong, e.line, 0, Msg::PlanDwell,
                                             {number_text(e.value), number_text(profile.max_dwell_s)}));
         if (!(e.tools_after & kCuttingTools)) {

@@ -10,6 +10,7 @@
 #include "essi/diagnostics.hpp"
 #include "essi/geom.hpp"
 #include "essi/motion.hpp"
+#include "essi/diagnostic_cap.hpp"
 #include "essi/plan.hpp"
 #include "essi/profile.hpp"
 
@@ -86,8 +87,10 @@ struct PlateSettings {
     bool lead_in_required = false;
     int plate = 1;
     std::optional<TableLimits> table;  // W611
+    std::size_t max_per_code = kDefaultMaxPerCode;
 };
+// The plate's diagnostics go to `out` as far as `cap` (max_per_code within the plate) admits them; it counts the rest.
 void analyse_plate(std::vector<Cut>& cuts, std::span<const Piece> pieces, const PlateSettings& settings,
-                   std::vector<Diagnostic>& out, std::vector<PlanContour>* contours);
+                   std::vector<Diagnostic>& out, DiagnosticCap& cap, std::vector<PlanContour>* contours);
 
 }  // namespace essi::plan

@@ -17,6 +17,12 @@ namespace {
 
 // The sweep that finds a plate's neighbours gives up for the grid past this many comparisons a cut on average.
 constexpr std::size_t kSweepComparisonsPerCut = 48;
+// The grid's search for neighbours stops (N613) once it has found this many pairs, or looked at this many
+// candidates, a cut on average (plus a base for small plates): a real nest has a few neighbours a cut; contours
+// piled over each other would have every pair. So the pairs a plate compares are at most
+// kPairsPerCut * cuts + kPairsBase, whatever the plate.
+constexpr std::size_t kPairsPerCut = 64, kPairsBase = 65536;
+constexpr std::size_t kVisitsPerCut = 1024, kVisitsBase = 1 << 20;
 
 struct Node {
     int parent = -1;
@@ -39,8 +45,9 @@ bool collides_as_pair(ContourRole a, ContourRole b) {
 
 class Plate {
 public:
-    Plate(std::vector<Cut>& cuts, std::span<const Piece> pieces, const PlateSettings& st, std::vector<Diagnostic>& out)
-        : cuts_(cuts), pieces_(pieces), st_(st), out_(out), nodes_(cuts.size()) {
+    Plate(std::vector<Cut>& cuts, std::span<const Piece> pieces, const PlateSettings& st, std::vector<Diagnostic>& out,
+          DiagnosticCap& cap)
+        : cuts_(cuts), pieces_(pieces), st_(st), out_(out), cap_(cap), nodes_(cuts.size()) {
         for (const Cut& c : cuts_) max_width_ = std::max(max_width_, c.kerf_width_mm);
     }
 
@@ -107,7 +114,7 @@ private:
                                            Msg::PlanLargerThanTable, {number_text(w), number_text(h), number_text(tw), number_text(th)});
             d.contour_first = c.first_line;
             d.contour_last = c.last_line;
-            out_.push_back(std::move(d));
+            emit(std::move(d));
         }
     }
 
@@ -121,7 +128,7 @@ private:
                                  Msg::PlanGap, {number_text(c.gap_mm), c.gap_line, number_text(st_.closure_mm)});
             d.line = last_piece(c).line;
             d.related.push_back({c.gap_line, c.gap_line, Msg::RelatedContourStart, {}});
-            out_.push_back(std::move(d));
+            emit(std::move(d));
         }
     }
 
@@ -198,7 +205,7 @@ private:
         const Cut& c = cuts_[later];
         Diagnostic d = about(DiagCode::W607_SamePathTwice, c, first_piece(c).end, Msg::PlanSamePath, {a.first_line, a.last_line});
         d.related.push_back(related(a, Msg::RelatedFirstCut));
-        out_.push_back(std::move(d));
+        emit(std::move(d));
     }
 
     // Each cut's neighbours: the loops whose boxes meet its whole box (grown by the widest kerf), in cutting order,
@@ -255,16 +262,27 @@ private:
         }
         return true;
     }
-    // The pairs through the grid over the loops' boxes (any plate).
+    // The pairs through the grid over the loops' boxes (any plate), within the budget of pairs and candidates
+    // (N613 past it: the cuts from there on get no more neighbours).
     void grid_pairs(double margin) {
         thread_local BoxGrid grid;  // (its arrays kept from plate to plate)
         grid.build(boxes_);
-        for (std::size_t i = 0; i < cuts_.size(); ++i) {
+        const std::size_t max_pairs = kPairsPerCut * cuts_.size() + kPairsBase;
+        const std::size_t max_visits = kVisitsPerCut * cuts_.size() + kVisitsBase;
+        std::size_t visits = 0;
+        for (std::size_t i = 0; i < cuts_.size() && !crowded_; ++i) {
             const Box& b = cuts_[i].box;
             if (b.empty) continue;
             grid.query({b.min_x - margin, b.min_y - margin, b.max_x + margin, b.max_y + margin, false}, [&](int j) {
                 if (meets(i, static_cast<std::size_t>(j), margin)) pairs_.push_back({static_cast<int>(i), j});
+                crowded_ = pairs_.size() >= max_pairs || ++visits >= max_visits;
+                return !crowded_;
             });
+        }
+        if (crowded_) {
+            const Cut& first = cuts_.front();
+            emit(make_diagnostic(Severity::Note, DiagCode::N613_PlateTooCrowded, first.first_line, 0, Msg::PlanPlateCrowded,
+                                 {first.first_line, cuts_.back().last_line, pairs_.size(), kPairsPerCut}));
         }
     }
     std::span<const int> neighbours(std::size_t i) const {
@@ -331,7 +349,7 @@ private:
             if (msg == Msg::None) continue;
             Diagnostic d = about(code, c, c.loop_start, msg, {side, travel, other});
             d.line = pieces_[c.loop_begin].line;
-            out_.push_back(std::move(d));
+            emit(std::move(d));
         }
     }
 
@@ -352,7 +370,7 @@ private:
                                  {children.size(), first.first_line, first.last_line});
             for (int ch : children)
                 d.related.push_back(related(cuts_[static_cast<std::size_t>(ch)], part ? Msg::RelatedHoleAfter : Msg::RelatedPartAfter));
-            out_.push_back(std::move(d));
+            emit(std::move(d));
         }
     }
 
@@ -427,9 +445,13 @@ private:
         const Cut& a = cuts_[i];
         const Cut& b = cuts_[j];
         const ContourRole ra = nodes_[i].role, rb = nodes_[j].role;
+        const bool lone = ra == ContourRole::Lone || rb == ContourRole::Lone;
+        if (lone && d > kPlanTouchToleranceMm) return;  // (without compensation only a real overlap counts)
+        // (counted before it is made: N parts in one place make N² / 2 collisions, each with its overlap polygons)
+        const DiagCode code = lone ? DiagCode::N612_ContoursOverlap : DiagCode::E605_PartsCollide;
+        if (!cap_.admit(code, b.first_line, default_severity(code))) return;
         Diagnostic diag;
-        if (ra == ContourRole::Lone || rb == ContourRole::Lone) {
-            if (d > kPlanTouchToleranceMm) return;  // (without compensation only a real overlap counts)
+        if (lone) {
             diag = about(DiagCode::N612_ContoursOverlap, b, where, Msg::PlanContoursOverlap, {a.first_line, a.last_line});
             diag.related.push_back(related(a, Msg::RelatedOtherContour));
         } else if (ra == ContourRole::LoneHole || rb == ContourRole::LoneHole) {
@@ -485,7 +507,7 @@ private:
                     Diagnostic d = about(DiagCode::E606_CutCrossesCutPart, cuts_[i], where, Msg::PlanCutCrossesPart,
                                          {p.first_line, p.last_line});
                     d.related.push_back(related(p, Msg::RelatedPartCutFree));
-                    out_.push_back(std::move(d));
+                    emit(std::move(d));
                     done = true;
                     break;
                 }
@@ -506,7 +528,7 @@ private:
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
             const Cut& c = cuts_[i];
             if (!usable(i) || c.loop_begin > c.first_piece || !pierced_on_loop(i)) continue;
-            out_.push_back(about(DiagCode::W610_PierceWithoutLeadIn, c, first_piece(c).start, Msg::PlanNoLeadIn, {}));
+            emit(about(DiagCode::W610_PierceWithoutLeadIn, c, first_piece(c).start, Msg::PlanNoLeadIn, {}));
         }
     }
 
@@ -524,10 +546,15 @@ private:
         return false;
     }
 
+    void emit(Diagnostic d) {
+        if (cap_.admit(d)) out_.push_back(std::move(d));
+    }
+
     std::vector<Cut>& cuts_;
     std::span<const Piece> pieces_;
     const PlateSettings& st_;
     std::vector<Diagnostic>& out_;
+    DiagnosticCap& cap_;  // max_per_code within the plate: the rest are counted, not made
     std::vector<Node> nodes_;
     std::vector<Box> boxes_;                   // the loops' boxes (empty: no loop), the grid's
     std::vector<std::vector<Point>> polygons_; // the loops flattened, as made
@@ -535,14 +562,15 @@ private:
     std::vector<int> neighbours_;              // each cut's, ascending, from first_neighbour_[i]
     std::vector<std::pair<int, int>> pairs_;   // (cut, neighbour) as found
     std::vector<int> order_;                   // the cuts by their boxes' min_x (the sweep)
+    bool crowded_ = false;                     // the search for neighbours stopped at its budget (N613)
     double max_width_ = 0;  // the widest kerf of the plate's cuts
 };
 
 }  // namespace
 
 void analyse_plate(std::vector<Cut>& cuts, std::span<const Piece> pieces, const PlateSettings& settings,
-                   std::vector<Diagnostic>& out, std::vector<PlanContour>* contours) {
-    Plate plate(cuts, pieces, settings, out);
+                   std::vector<Diagnostic>& out, DiagnosticCap& cap, std::vector<PlanContour>* contours) {
+    Plate plate(cuts, pieces, settings, out, cap);
     plate.run();
     if (contours) plate.record(*contours);
 }

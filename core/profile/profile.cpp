@@ -198,6 +198,7 @@ constexpr Range kGapRange{0, 1e6};                  // mm: closure_gap_mm
 constexpr Range kPositionRange{-1e9, 1e9};          // mm: offsets and table limits
 constexpr Range kRotationRange{-360, 360};          // degrees
 constexpr std::size_t kMaxZeroOffsets = 100;        // entries of zero_offsets
+constexpr std::uint64_t kMaxPerCodeLimit = 1000000000;  // max_per_code (0: no limit)
 
 // A point given as {"x_mm": ..., "y_mm": ...} (an offset): the error names `where` ("\"tool_offsets.marker\"", or
 // a ProfileZeroOffsetEntry).
@@ -334,8 +335,9 @@ void apply_keys(const json& j, Profile& p, std::vector<Message>& errors) {
     };
 
     if (auto it = j.find("name"); it != j.end()) {
-        if (it->is_string()) p.name = it->get<std::string>();
-        else errors.push_back({Msg::ProfileNameNotString});
+        if (!it->is_string()) errors.push_back({Msg::ProfileNameNotString});
+        else if (const std::string& name = it->get_ref<const std::string&>(); is_valid_profile_name(name)) p.name = name;
+        else errors.push_back({Msg::ProfileNameText, {kMaxProfileNameBytes, excerpt(name, kMaxKeyChars)}});
     }
     choice("dialect", p.dialect,
            {{"iso6582", Dialect::Iso6582}, {"woyda", Dialect::Woyda}, {"hypertherm", Dialect::Hypertherm}});
@@ -382,6 +384,12 @@ void apply_keys(const json& j, Profile& p, std::vector<Message>& errors) {
     number("closure_gap_mm", p.closure_gap_mm, kGapRange);
     number("max_dwell_s", p.max_dwell_s, kSecondsRange);
     boolean("lead_in_required", p.lead_in_required);
+    if (auto it = j.find("max_per_code"); it != j.end()) {
+        if (it->is_number_unsigned() && it->get<std::uint64_t>() <= kMaxPerCodeLimit)
+            p.max_per_code = static_cast<std::size_t>(it->get<std::uint64_t>());
+        else
+            errors.push_back({Msg::ProfileWholeNumber, {"max_per_code", kMaxPerCodeLimit}});
+    }
     if (auto it = j.find("feed_range_mm_min"); it != j.end()) {
         const bool pair = it->is_array() && it->size() == 2 && (*it)[0].is_number() && (*it)[1].is_number();
         const double lo = pair ? (*it)[0].get<double>() : 0, hi = pair ? (*it)[1].get<double>() : 0;
@@ -427,7 +435,7 @@ void apply_keys(const json& j, Profile& p, std::vector<Message>& errors) {
         "optional_ignore", "rapid_single_block", "kerf_value", "kerf", "default_dwell_s", "dwell_unit_s", "feed_mm_min",
         "rapid_mm_min", "pierce_time_s", "setup_offset_x_mm", "setup_offset_y_mm", "zero_offsets", "zero_offset",
         "plate_rotation_deg", "tool_offsets", "table", "eia", "closure_gap_mm", "feed_range_mm_min", "max_dwell_s",
-        "lead_in_required"};
+        "lead_in_required", "max_per_code"};
     for (auto it = j.begin(); it != j.end(); ++it) {
         bool known = false;
         for (const char* k : kKnownKeys) known = known || it.key() == k;
@@ -519,6 +527,10 @@ ProfileResult parse_profile(std::string_view json_text) {
     return parse_onto(json_text, [] { return builtin_profile(kDefaultProfile); });
 }
 
+bool is_valid_profile_name(std::string_view name) {
+    return !name.empty() && name.size() <= kMaxProfileNameBytes && display_text(name) == name;
+}
+
 std::string profile_to_json(const Profile& p) {
     ordered_json j;
     j["name"] = p.name;
@@ -561,6 +573,7 @@ std::string profile_to_json(const Profile& p) {
     j["feed_range_mm_min"] = {p.feed_min_mm_min, p.feed_max_mm_min};
     j["max_dwell_s"] = p.max_dwell_s;
     j["lead_in_required"] = p.lead_in_required;
+    j["max_per_code"] = p.max_per_code;
     j["eia"] = eia_to_json(p.eia);
     return j.dump(2, ' ', false, ordered_json::error_handler_t::replace);
 }

@@ -53,6 +53,7 @@ bool reads_letter(char letter, const EiaDialect& e) {
 struct Word {
     char letter = 0;
     std::uint32_t offset = 0;
+    std::uint32_t length = 0;  // its bytes in the line, letter included (what a message quotes of it)
     long long mantissa = 0;
     int decimals = 0;
     [[nodiscard]] double value() const {
@@ -161,6 +162,12 @@ private:
                            [&](const EndCode& e) { return e.function < 0 && e.mark == mark; });
     }
     [[nodiscard]] std::uint32_t column(std::uint32_t offset) const { return offset - line_begin_ + 1; }
+    // The digits and points of a number written from `begin`, before `end` (the line's end): what a message quotes.
+    [[nodiscard]] std::string_view number_text_at(std::uint32_t begin, std::uint32_t end) const {
+        std::uint32_t p = begin;
+        while (p < end && ((src_[p] >= '0' && src_[p] <= '9') || src_[p] == '.')) ++p;
+        return src_.substr(begin, p - begin);
+    }
     // The first CR or LF at or after `pos` (essi/lines.hpp's rule), or `size`.
     [[nodiscard]] std::uint32_t line_end(std::uint32_t pos, std::uint32_t size) const {
         const char* p = src_.data() + pos;
@@ -260,7 +267,7 @@ bool EiaReader::parse_words(std::uint32_t begin, std::uint32_t end, std::vector<
                 if (++digits > kMaxNumberDigits)
                     return error(DiagCode::E122_EiaBadNumber, w.offset, Msg::EiaNumberTooLong,
                                  {std::string(1, letter), kMaxNumberDigits,
-                                  excerpt(src_.substr(number_start, end - number_start), kExcerptChars)});
+                                  excerpt(number_text_at(number_start, end), kExcerptChars)});
                 w.mantissa = w.mantissa * 10 + (src_[p] - '0');
                 if (point) ++w.decimals;
             }
@@ -270,6 +277,7 @@ bool EiaReader::parse_words(std::uint32_t begin, std::uint32_t end, std::vector<
             return error(DiagCode::E122_EiaBadNumber, w.offset, Msg::EiaLetterWithoutNumber,
                          {std::string(1, letter), letter == 'G' || letter == 'M' ? "01" : "12.5"});
         if (negative) w.mantissa = -w.mantissa;
+        w.length = p - w.offset;
         words.push_back(w);
     }
     return true;
@@ -479,7 +487,7 @@ void EiaReader::translate(const std::vector<Word>& words, LineResult& out, State
         const int n = w.code_number();
         if (n < 0) {
             unknown(w, Msg::EiaNotACode,
-                    {std::string(1, w.letter) + excerpt(src_.substr(w.offset + 1, 8), 8), std::string(1, w.letter)});
+                    {excerpt(src_.substr(w.offset, w.length), kExcerptChars), std::string(1, w.letter)});
             continue;
         }
         const GRole role = w.letter == 'G' ? g_role_[static_cast<std::size_t>(n)] : GRole::Function;

@@ -13,8 +13,21 @@ namespace essi {
 bool CheckResult::ok() const { return count(Severity::Error) == 0; }
 
 std::size_t CheckResult::count(Severity s) const {
-    return static_cast<std::size_t>(
-        std::count_if(diagnostics.begin(), diagnostics.end(), [&](const Diagnostic& d) { return d.severity == s; }));
+    const std::size_t omitted = s == Severity::Error ? omitted_errors : s == Severity::Warning ? omitted_warnings : omitted_notes;
+    return omitted + static_cast<std::size_t>(std::count_if(diagnostics.begin(), diagnostics.end(),
+                                                            [&](const Diagnostic& d) { return d.severity == s; }));
+}
+
+void limit_diagnostics(CheckResult& r, std::size_t max) {
+    if (r.diagnostics.size() <= max) return;
+    for (std::size_t i = max; i < r.diagnostics.size(); ++i) {
+        switch (r.diagnostics[i].severity) {
+            case Severity::Error: ++r.omitted_errors; break;
+            case Severity::Warning: ++r.omitted_warnings; break;
+            case Severity::Note: ++r.omitted_notes; break;
+        }
+    }
+    r.diagnostics.erase(r.diagnostics.begin() + static_cast<std::ptrdiff_t>(max), r.diagnostics.end());
 }
 
 void sort_diagnostics(std::vector<Diagnostic>& diagnostics) {
@@ -45,15 +58,35 @@ void block_columns(std::string_view bytes, std::vector<Diagnostic>& diagnostics)
 // ---- TapeChecker ----
 
 TapeChecker::TapeChecker(std::string_view bytes, const Profile& profile, MotionSink* also)
-    : bytes_(bytes), stats_(profile), plan_(profile), both_(also ? std::make_unique<PlanThenAlso>(plan_, *also) : nullptr),
+    : bytes_(bytes), cap_(profile.max_per_code), stats_(profile), plan_(profile),
+      both_(also ? std::make_unique<PlanThenAlso>(plan_, *also) : nullptr),
       interpreter_(bytes, profile, stats_, both_ ? static_cast<MotionSink*>(both_.get()) : &plan_, result_.diagnostics) {}
 
 TapeChecker::~TapeChecker() = default;
 
 void TapeChecker::check_chunk(const Tape& chunk, std::span<const MotionMeasure> measures) {
+    const std::size_t first = result_.diagnostics.size();
     result_.diagnostics.insert(result_.diagnostics.end(), chunk.diagnostics().begin(), chunk.diagnostics().end());
     interpreter_.run(chunk, measures);
     blocks_ += chunk.program_blocks();
+    if (result_.diagnostics.size() > first) [[unlikely]] keep_diagnostics_from(first);
+}
+
+// The chunk's diagnostics (from `first` on) through max_per_code; past twice max_kept_ the list is sorted and cut
+// back to max_kept_: a stable sort keeps equal positions in the order found, so the first max_kept_ stay what they
+// would be had every diagnostic been kept until the end.
+void TapeChecker::keep_diagnostics_from(std::size_t first) {
+    cap_.filter(result_.diagnostics, first);
+    if (result_.diagnostics.size() / 2 >= max_kept_ && result_.diagnostics.size() - max_kept_ >= max_kept_) {
+        sort_diagnostics(result_.diagnostics);
+        limit_diagnostics(result_, max_kept_);
+    }
+}
+
+void TapeChecker::finish_diagnostics() {
+    cap_.append_summaries(result_.diagnostics);
+    sort_diagnostics(result_.diagnostics);
+    limit_diagnostics(result_, max_kept_);
 }
 
 void TapeChecker::finish_reading() {
@@ -68,13 +101,13 @@ CheckResult TapeChecker::finish() {
     std::vector<Diagnostic> plan = plan_findings();
     result_.diagnostics.insert(result_.diagnostics.end(), std::make_move_iterator(plan.begin()),
                                std::make_move_iterator(plan.end()));
-    sort_diagnostics(result_.diagnostics);
+    finish_diagnostics();
     return std::move(result_);
 }
 
 CheckResult TapeChecker::finish_before_plan() {
     finish_reading();
-    sort_diagnostics(result_.diagnostics);
+    finish_diagnostics();
     return std::move(result_);
 }
 
@@ -84,10 +117,11 @@ std::vector<Diagnostic> TapeChecker::plan_findings() {
     return plan;
 }
 
-CheckResult check_tape(std::string_view bytes, const Profile& profile, InputFormat format) {
+CheckResult check_tape(std::string_view bytes, const Profile& profile, InputFormat format, std::size_t max_diagnostics) {
     // A chunk at a time: each chunk is interpreted while it is still in cache, and the whole tape is
     // never held (a 100 MB tape would cost some 200 MB of blocks).
     TapeChecker checker(bytes, profile);
+    checker.set_max_diagnostics(max_diagnostics);
     TapeReader reader(bytes, profile, format);
     Tape chunk;
     while (reader.read_chunk(chunk, kCheckChunkBlocks)) checker.check_chunk(chunk);
@@ -108,8 +142,8 @@ void record_setup(CheckResult& result, const TapeSetup& setup) {
     }
 }
 
-CheckResult check_tape(std::string_view bytes, const TapeSetup& setup) {
-    CheckResult r = check_tape(bytes, setup.profile, setup.format);
+CheckResult check_tape(std::string_view bytes, const TapeSetup& setup, std::size_t max_diagnostics) {
+    CheckResult r = check_tape(bytes, setup.profile, setup.format, max_diagnostics);
     record_setup(r, setup);
     return r;
 }

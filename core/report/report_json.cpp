@@ -25,18 +25,6 @@ double round_for_json(double value) {
     return r == 0 ? 0.0 : r;  // no "-0.0" in reports
 }
 
-void limit_diagnostics(FileReport& file, std::size_t max) {
-    auto& diags = file.result.diagnostics;
-    if (diags.size() <= max) return;
-    for (std::size_t i = max; i < diags.size(); ++i) {
-        switch (diags[i].severity) {
-            case Severity::Error: ++file.omitted_errors; break;
-            case Severity::Warning: ++file.omitted_warnings; break;
-            case Severity::Note: ++file.omitted_notes; break;
-        }
-    }
-    diags.resize(max);
-}
 
 nlohmann::json diagnostic_to_json(const Diagnostic& d, Lang lang) {
     nlohmann::json j = nlohmann::json::object();

@@ -62,6 +62,8 @@ std::string file_report_text(const FileReport& r, bool quiet, Lang lang) {
     if (r.omitted() > 0)
         out += r.display_path() + ": " + std::string(severity_text(Severity::Note, lang)) + ": " + omitted_text(r, lang) + "\n";
     if (!quiet) {
+        if (r.result.auto_profile)
+            out += format_message(Msg::ReportAutoProfile, lang, {r.display_path(), r.result.profile}) + "\n";
         out += file_stats_line(r, lang);
         out += '\n';
     }
@@ -99,7 +101,7 @@ std::string format_duration(double seconds) {
 }
 
 std::string diagnostic_line(std::string_view path, const Diagnostic& d, Lang lang) {
-    std::string s(path);
+    std::string s = display_text(path);  // (a file name is any bytes)
     if (d.line > 0) {
         s += ':';
         s += std::to_string(d.line);

@@ -219,6 +219,13 @@ bool ConvertResult::ok() const {
 
 ConvertResult convert_tape(std::string_view bytes, const TapeSetup& source, const ConvertOptions& options) {
     ConvertResult r;
+    CheckResult check = check_tape(bytes, source);
+    const bool errors = !check.ok();
+    r.diagnostics = std::move(check.diagnostics);
+    if (errors && !options.force) {
+        r.refused = true;
+        return r;
+    }
     // G-code is written in mm to 4 decimals, whatever the target's ESSI unit.
     ConvertOptions o = options;
     if (o.to == OutputFormat::Gcode) o.target.unit_mm = detail::kGcodeUnitMm;
@@ -229,8 +236,8 @@ ConvertResult convert_tape(std::string_view bytes, const TapeSetup& source, cons
         case OutputFormat::Gcode: writer = detail::make_gcode_writer(source.profile, o, r.diagnostics); break;
     }
     const Tape tape = read_tape(bytes, source.profile, source.format);
-    r.diagnostics.insert(r.diagnostics.end(), tape.diagnostics().begin(), tape.diagnostics().end());
-    interpret(tape, bytes, source.profile, *writer, r.diagnostics);
+    std::vector<Diagnostic> checked_again;  // (the check's own, already in r.diagnostics)
+    interpret(tape, bytes, source.profile, *writer, checked_again);
     writer->close();
     r.text = writer->finish();
     sort_diagnostics(r.diagnostics);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "essi/dialect.hpp"
+#include "essi/report.hpp"
 #include "essi/write.hpp"
 #include "paths.hpp"
 #include "test_util.hpp"
@@ -31,7 +32,7 @@ Stream stream_of(const std::string& text, const TapeSetup& setup) {
     diags = tape.diagnostics();
     interpret(tape, text, setup.profile, sink, diags);
     s.motions = sink.motions;
-    for (const Diagnostic& d : diags) s.errors = s.errors || d.severity == Severity::Error;
+    s.errors = !check_tape(text, setup).ok();  // (the kerf path's and the cut plan's errors too: not converted)
     return s;
 }
 
@@ -173,9 +174,11 @@ TEST(Convert, WritersText) {
     const ConvertResult g = convert_tape(tape, setup_of(InputFormat::Essi, woyda), o);
     EXPECT_EQ(g.text, "G17 G21 G40 G90 G91.1 G94\nM3 $0 S1\nG41.1 D2\nG1 X100 Y0 F600\nG3 X100 Y0 I0 J50\nM5 $0\n"
                       "G4 P2\n(ESSI 45: Torch head lower)\nG40\nM2\n");
-    ASSERT_EQ(g.diagnostics.size(), 1u);  // 45 has no G-code counterpart
-    EXPECT_EQ(g.diagnostics[0].code, DiagCode::W501_NoCounterpart);
-    EXPECT_EQ(g.diagnostics[0].line, 9u);
+    // The check's (N603: the kerf inside a lone contour), then the conversion's: 45 has no G-code counterpart.
+    ASSERT_EQ(g.diagnostics.size(), 2u);
+    EXPECT_EQ(g.diagnostics[0].code, DiagCode::N603_KerfInsideLoneContour);
+    EXPECT_EQ(g.diagnostics[1].code, DiagCode::W501_NoCounterpart);
+    EXPECT_EQ(g.diagnostics[1].line, 9u);
 }
 
 TEST(Convert, ParabolasBecomeArcsWithinTheTolerance) {
@@ -223,4 +226,33 @@ TEST(Convert, HeadTwoKeepsItsAddressInEssiAndIsSaidLeftOutOfEia) {
     ASSERT_NE(w501, eia.diagnostics.end());
     EXPECT_NE(w501->message.find("head 2's motions"), std::string::npos) << w501->message;
     EXPECT_EQ(eia.text.find("X250"), std::string::npos) << eia.text;  // (head 2's cut is not written as head 1's)
+}
+
+// A tape that essi check rejects is not converted (every rule: the kerf path's E307, the cut plan's E605) unless
+// forced; then the same diagnostics come with what the machine would run.
+TEST(Convert, ATapeWithErrorsIsRefusedUnlessForced) {
+    for (const char* name : {"bad_kerf_gouge.esi", "plan_collision.esi", "plan_kerf.esi", "plan_cross.esi"}) {
+        SCOPED_TRACE(name);
+        const std::string text = read_file(examples_dir() + "/" + name);
+        const TapeSetup source = setup_tape(text, std::nullopt, std::nullopt);
+        const CheckResult check = check_tape(text, source);
+        ASSERT_FALSE(check.ok());
+        for (OutputFormat to : {OutputFormat::Essi, OutputFormat::Eia, OutputFormat::Gcode}) {
+            ConvertOptions o;
+            o.to = to;
+            o.target = source.profile;
+            const ConvertResult refused = convert_tape(text, source, o);
+            EXPECT_TRUE(refused.refused);
+            EXPECT_TRUE(refused.text.empty());
+            EXPECT_FALSE(refused.ok());
+            ASSERT_EQ(refused.diagnostics.size(), check.diagnostics.size());
+            for (std::size_t i = 0; i < check.diagnostics.size(); ++i)
+                EXPECT_EQ(refused.diagnostics[i].code, check.diagnostics[i].code);
+            o.force = true;
+            const ConvertResult forced = convert_tape(text, source, o);
+            EXPECT_FALSE(forced.refused);
+            EXPECT_FALSE(forced.text.empty());
+            EXPECT_FALSE(forced.ok());
+        }
+    }
 }

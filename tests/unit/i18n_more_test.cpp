@@ -46,13 +46,13 @@ TEST(I18nMore, MessagesWithTheirOwnArgumentsAreWordedInTheReadersLanguage) {
               "(woyda: `135+2` setzt die Anzahl Brenner in Zeile 9; woyda: `/` beendet das Programm in Zeile 29) x");
     EXPECT_EQ(essi::format_template("({0}) {1}", Lang::Zh, args),
               "(woyda:第 9 行 `135+2` 设定割炬数量;woyda:第 29 行 `/` 结束程序) x");
-    // One message, and one whose arguments hold a list and the bytes the nesting uses: nothing leaks out.
+    // One message, and one whose arguments hold a list and the bytes the nesting uses: nothing leaks out (\xNN).
     EXPECT_EQ(essi::format_template("{0}|{1}", Lang::De, {MessageArgs::Arg(slash), "y"}),
               "woyda: `/` beendet das Programm in Zeile 29|y");
     const Message list{Msg::ReadNoProgramEnd, {MessageArgs::Arg::alternatives({"63", "64"})}};
     const Message odd{Msg::DialectEvidence, {"a\x18" "b", "c\x19" "d\x1f" "e", Msg::EvidenceEndsProgram, 1}};
     EXPECT_EQ(essi::format_template("{0}|{1}", Lang::Zh, {MessageArgs::Arg::messages({list, odd}), "z"}),
-              "控制带结束时没有程序结束;最后一个程序块应为 63 或 64;a?b:第 1 行 `c?d?e` 结束程序|z");
+              "控制带结束时没有程序结束;最后一个程序块应为 63 或 64;a\\x18b:第 1 行 `c\\x19d\\x1Fe` 结束程序|z");
     EXPECT_EQ(essi::format_template("[{0}]", Lang::En, {MessageArgs::Arg::messages({})}), "[]");
     EXPECT_EQ(list.text(Lang::En), "the tape ends without an end of program; expected 63 or 64 as the last block");
 }

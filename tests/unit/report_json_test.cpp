@@ -146,7 +146,7 @@ TEST(ReportJson, LimitDiagnosticsCountsTheRest) {
     f.result.diagnostics = {diag(essi::Severity::Warning, essi::DiagCode::W109_WhitespaceSkipped, 1, 1, "w"),
                             diag(essi::Severity::Error, essi::DiagCode::E101_InvalidCharacter, 2, 1, "e"),
                             diag(essi::Severity::Error, essi::DiagCode::E101_InvalidCharacter, 3, 1, "e")};
-    essi::limit_diagnostics(f, 1);
+    essi::limit_diagnostics(f.result, 1);
     EXPECT_EQ(f.result.diagnostics.size(), 1u);
     EXPECT_EQ(f.omitted(), 2u);
     EXPECT_EQ(f.errors(), 2u);

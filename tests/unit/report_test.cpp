@@ -191,6 +191,23 @@ TEST(ReportCheck, ArcErrorFromGeometry) {
     EXPECT_TRUE(has_code(r.diagnostics, DiagCode::E301_ArcEndNotOnCircle)) << dump(r.diagnostics);
 }
 
+// The carriage is on the table again once a motion ends on it: the next exit is reported too, even right after.
+TEST(ReportCheck, TableLimitsE401AtEveryExit) {
+    Profile p;
+    p.table = TableLimits{0, 0, 100, 100};
+    // (50,0) on; (250,0) off; back to (50,0): on; (250,0) off again; back; then (50,150): off a third time
+    const CheckResult r = check_tape("+500+0\n+2000+0\n-2000+0\n+2000+0\n-2000+0\n+0+1500\n64\n", p);
+    std::vector<std::uint32_t> lines;
+    for (const Diagnostic& d : r.diagnostics)
+        if (d.code == DiagCode::E401_LeavesTable) lines.push_back(d.line);
+    EXPECT_EQ(lines, (std::vector<std::uint32_t>{2, 4, 6})) << dump(r.diagnostics);
+    // Moving about off the table is one exit.
+    const CheckResult off = check_tape("+500+0\n+2000+0\n+100+0\n-100+0\n64\n", p);
+    std::size_t n = 0;
+    for (const Diagnostic& d : off.diagnostics) n += d.code == DiagCode::E401_LeavesTable;
+    EXPECT_EQ(n, 1u) << dump(off.diagnostics);
+}
+
 TEST(ReportCheck, TableLimitsE401) {
     Profile p;
     p.table = TableLimits{0, 0, 100, 100};

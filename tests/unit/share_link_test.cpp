@@ -32,7 +32,7 @@ TEST(ShareLink, ReadsTheStoreLink) {
 }
 
 TEST(ShareLink, EachBadFieldIsAProblemAndTheRestIsUsed) {
-    const ShareLink l = parse_share_fragment("c=1,2,0&l=-4&share=ABC&t=a$b&p=../x&n=ok.esi&future=1");
+    const ShareLink l = parse_share_fragment("c=1,2,0&l=-4&share=ABC&t=a$b&p=a%0Ab&n=ok.esi&future=1");
     EXPECT_FALSE(l.view.has_value());  // zoom 0
     EXPECT_EQ(l.line, 0u);
     EXPECT_TRUE(l.store_id.empty());
@@ -100,6 +100,18 @@ TEST(ShareLink, CarriesHowTheTapeWasRead) {
     EXPECT_TRUE(plain.profile_json.empty());
     EXPECT_TRUE(plain.input.empty());
     EXPECT_FALSE(plain.tape_bytes.has_value());
+}
+
+// A profile's name goes through the link as it is: '+' (a user profile on a built-in's base), spaces, UTF-8.
+TEST(ShareLink, AProfileNameReadsBackAsWritten) {
+    for (const std::string name : {"iso6582+custom", "Werk 2 – Plasma", "a&b=c%d#e"}) {
+        const std::string query = share_reading_query(name, "{}", "essi");
+        const ShareLink l = parse_share_fragment(query + "&t=eA");
+        EXPECT_TRUE(l.problems.empty()) << name << ": " << l.problems.front();
+        EXPECT_EQ(l.profile, name) << query;
+        EXPECT_EQ(l.input, "essi");
+    }
+    EXPECT_EQ(share_reading_query("iso6582+custom", "", ""), "p=iso6582%2Bcustom");
 }
 
 TEST(ShareLink, BadReadingFieldsAreProblems) {

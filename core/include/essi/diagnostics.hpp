@@ -99,6 +99,7 @@ enum class DiagCode : std::uint16_t {
     W610_PierceWithoutLeadIn = 610,   // a contour pierced on its own line (profile lead_in_required)
     W611_CutLargerThanTable = 611,    // a cut larger than the table's travel
     N612_ContoursOverlap = 612,       // two contours of unknown role overlap: a collision if both are parts
+    N613_PlateTooCrowded = 613,       // contours piled over each other: not every pair of them was compared
 };
 
 // Another place a diagnostic concerns: the other contour of a collision, the hole cut after its part, the block

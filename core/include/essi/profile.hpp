@@ -64,6 +64,9 @@ struct TableLimits {
     double min_x_mm = 0, min_y_mm = 0, max_x_mm = 0, max_y_mm = 0;
 };
 
+// The default of Profile::max_per_code.
+constexpr std::size_t kDefaultMaxPerCode = 1000;
+
 struct Profile {
     std::string name = "iso6582";
     Dialect dialect = Dialect::Iso6582;
@@ -113,6 +116,10 @@ struct Profile {
     double max_dwell_s = 120.0;                    // a longer dwell: W609
     bool lead_in_required = false;                 // a contour pierced on its own line: W610
 
+    // At most this many diagnostics of one code are listed, then one that says how many more (0: all;
+    // essi/diagnostic_cap.hpp)
+    std::size_t max_per_code = kDefaultMaxPerCode;
+
     static constexpr const char* kDefaultZeroOffset = "G54";
     // The active zero offset (the entry `zero_offset` names; parse_profile makes sure it exists).
     [[nodiscard]] Point active_zero_offset() const {
@@ -148,6 +155,11 @@ struct ProfileResult {
     std::vector<Diagnostic> diagnostics;
 };
 [[nodiscard]] ProfileResult parse_profile(std::string_view json_text);
+
+// A profile's name is printed in every report and message and carried by share links: 1 to 64 bytes of valid UTF-8
+// without control characters.
+constexpr std::size_t kMaxProfileNameBytes = 64;
+[[nodiscard]] bool is_valid_profile_name(std::string_view name);
 
 // The profile as JSON text (every key), for `essi profile show` and round-trip tests.
 [[nodiscard]] std::string profile_to_json(const Profile& profile);

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "essi/diagnostic_cap.hpp"
 #include "essi/diagnostics.hpp"
 #include "essi/dialect.hpp"
 #include "essi/geom.hpp"
@@ -29,15 +30,25 @@ struct CheckResult {
     std::string profile;
     bool auto_profile = false;
     std::vector<std::string> dialect_evidence;
-    [[nodiscard]] bool ok() const;  // no error
-    [[nodiscard]] std::size_t count(Severity s) const;
+    // Diagnostics left out by a limit on their number (limit_diagnostics, --max-diagnostics), by severity: the
+    // verdict and the counts include them.
+    std::size_t omitted_errors = 0, omitted_warnings = 0, omitted_notes = 0;
+    [[nodiscard]] bool ok() const;  // no error, listed or left out
+    [[nodiscard]] std::size_t count(Severity s) const;  // listed and left out
+    [[nodiscard]] std::size_t omitted() const { return omitted_errors + omitted_warnings + omitted_notes; }
 };
 
+// Keeps the first `max` diagnostics of `r` (in their order) and counts the rest in its omitted_*.
+void limit_diagnostics(CheckResult& r, std::size_t max);
+
+// `max_diagnostics`: at most that many are kept (TapeChecker::set_max_diagnostics).
 [[nodiscard]] CheckResult check_tape(std::string_view bytes, const Profile& profile,
-                                     InputFormat format = InputFormat::Essi);
+                                     InputFormat format = InputFormat::Essi,
+                                     std::size_t max_diagnostics = static_cast<std::size_t>(-1));
 // The check of a tape as `setup` reads it (essi/dialect.hpp: format and profile given or found), with the
 // setup's note (N403) among the diagnostics and the setup in the result.
-[[nodiscard]] CheckResult check_tape(std::string_view bytes, const TapeSetup& setup);
+[[nodiscard]] CheckResult check_tape(std::string_view bytes, const TapeSetup& setup,
+                                     std::size_t max_diagnostics = static_cast<std::size_t>(-1));
 // The result's record of `setup` (format, profile, evidence, note): for callers that run their own TapeChecker.
 void record_setup(CheckResult& result, const TapeSetup& setup);
 
@@ -55,6 +66,10 @@ public:
     void check_chunk(const Tape& chunk, std::span<const MotionMeasure> measures = {});
     // The cut plan's plates are analysed by `runner` (essi/plan.hpp; null: on this thread as they end).
     void set_plate_runner(PlateRunner* runner) { plan_.set_runner(runner); }
+    // At most `max` diagnostics are kept (the first by line and column, as limit_diagnostics on the sorted
+    // result would keep them; the rest counted): the memory the check's diagnostics take is bounded by it too.
+    // Before the first chunk.
+    void set_max_diagnostics(std::size_t max) { max_kept_ = max; }
     // After the last chunk: the result (diagnostics sorted). Call once.
     [[nodiscard]] CheckResult finish();
 
@@ -74,6 +89,8 @@ public:
     [[nodiscard]] std::vector<Diagnostic> plan_findings();
 private:
     void finish_reading();  // the interpreter's and the plan's input ended; the statistics taken
+    void keep_diagnostics_from(std::size_t first);  // max_per_code on the new ones, then max_kept_
+    void finish_diagnostics();  // the summaries of max_per_code, sorted, cut to max_kept_
     // The cut plan, then `also`: the one more sink the interpreter feeds.
     class PlanThenAlso final : public MotionSink {
     public:
@@ -87,6 +104,8 @@ private:
     };
     std::string_view bytes_;
     CheckResult result_;
+    DiagnosticCap cap_;        // max_per_code for the diagnostics of the reader and the interpreter
+    std::size_t max_kept_ = static_cast<std::size_t>(-1);
     StatsSink stats_;
     CutPlan plan_;              // the cut plan's rules (essi/plan.hpp)
     std::unique_ptr<PlanThenAlso> both_;

@@ -26,24 +26,16 @@ constexpr int kJsonLengthDecimals = 6;
 // One checked tape: the path as the user gave it and the pipeline's result.
 struct FileReport {
     std::string path;
-    CheckResult result;
-    // Diagnostics dropped by `--max-diagnostics` (not in result.diagnostics), by severity. The verdict and the
-    // counts below include them.
-    std::size_t omitted_errors = 0;
-    std::size_t omitted_warnings = 0;
-    std::size_t omitted_notes = 0;
+    CheckResult result;  // its omitted_*: the diagnostics `--max-diagnostics` left out
 
     // The path as every report writes it: valid UTF-8 without control characters (essi/text.hpp). `path`
     // keeps the bytes as given (a SARIF URI is made from them).
     [[nodiscard]] std::string display_path() const { return display_text(path); }
-    [[nodiscard]] std::size_t omitted() const { return omitted_errors + omitted_warnings + omitted_notes; }
-    [[nodiscard]] std::size_t errors() const { return result.count(Severity::Error) + omitted_errors; }
-    [[nodiscard]] std::size_t warnings() const { return result.count(Severity::Warning) + omitted_warnings; }
+    [[nodiscard]] std::size_t omitted() const { return result.omitted(); }
+    [[nodiscard]] std::size_t errors() const { return result.count(Severity::Error); }
+    [[nodiscard]] std::size_t warnings() const { return result.count(Severity::Warning); }
     [[nodiscard]] bool ok() const { return errors() == 0; }
 };
-
-// Keeps the first `max` diagnostics of `file` (in source order) and counts the rest in omitted_*.
-void limit_diagnostics(FileReport& file, std::size_t max);
 
 // {"severity","code","line","column","message"}, and for the cut plan's (6xx) "contour": {"first_line","last_line"},
 // "at": {"x","y"}, "related": [{"line","end_line","message"}] and "overlap": [[[x, y], ...], ...] (the overlapping

@@ -29,7 +29,7 @@ struct ShareLink {
     std::string name;                   // n=NAME, decoded (%XX and '+'); empty: none given
     std::string store_id;               // share=ID: 64 lower-case hex digits (SHA-256)
     std::string packed;                 // t=DATA, base64url-decoded: the deflate-raw bytes of the tape
-    std::string profile;                // p=NAME: the profile to read the tape with (letters, digits, _ . + -)
+    std::string profile;                // p=NAME: the profile to read the tape with (is_valid_profile_name)
     std::string profile_json;           // pj=DATA, base64url-decoded: a user profile (its JSON), when p names it
     std::string input;                  // i=essi|eia: the format the sender read the tape as; empty: from the content
     std::optional<std::uint64_t> tape_bytes;  // b=BYTES: the tape's length, to tell a whole tape from a cut one

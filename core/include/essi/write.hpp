@@ -22,15 +22,19 @@ struct ConvertOptions {
     OutputFormat to = OutputFormat::Essi;
     Profile target;           // the dialect written (units, end code, EIA table)
     bool absolute = false;    // 82 / G92 (Woyda) / G90 instead of incremental
+    bool force = false;       // write a tape that has errors too (--force): what the machine would run of it
 };
 
 struct ConvertResult {
-    std::string text;                     // the converted program
-    std::vector<Diagnostic> diagnostics;  // the source's check and the conversion's warnings (W5xx), sorted
+    std::string text;                     // the converted program (empty when refused)
+    std::vector<Diagnostic> diagnostics;  // the source's check (as essi check has it) and the conversion's
+                                          // warnings (W5xx), sorted
+    bool refused = false;                 // the tape has errors and options.force was not given: nothing written
     [[nodiscard]] bool ok() const;        // no error
 };
 
-// Reads `bytes` as `source` says, runs the program and writes it in options.to. Never throws.
+// Checks `bytes` as `source` says (check_tape: every rule, the kerf path and the cut plan included); when the tape
+// has no error, or options.force, runs the program and writes it in options.to. Never throws.
 [[nodiscard]] ConvertResult convert_tape(std::string_view bytes, const TapeSetup& source, const ConvertOptions& options);
 
 }  // namespace essi

@@ -1,0 +1,145 @@
+// The bounds on diagnostics (essi/diagnostic_cap.hpp, TapeChecker::set_max_diagnostics): at most max_per_code of a
+// code and then one summary of that code; at most max_diagnostics kept while the tape is checked, the same ones
+// that cutting the whole list afterwards would keep.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "essi/diagnostic_cap.hpp"
+#include "essi/diagnostics.hpp"
+#include "essi/profile.hpp"
+#include "essi/report.hpp"
+
+using namespace essi;
+
+namespace {
+
+std::string word(long long v) { return (v < 0 ? "-" : "+") + std::to_string(v < 0 ? -v : v); }
+
+// `n` thin rectangles (100 mm x 10 mm, counter-clockwise, kerf right: parts), all pierced at the origin and fanned
+// out at different angles over a quarter turn: every two of them overlap at the origin, so every pair collides.
+std::string fan_of_parts(int n) {
+    std::string t = "39+1000\n30+20\n";
+    for (int k = 0; k < n; ++k) {
+        const double a = 1.5707963267948966 * k / n;
+        const long long ax = std::llround(1000 * std::cos(a)), ay = std::llround(1000 * std::sin(a));
+        const long long bx = std::llround(-100 * std::sin(a)), by = std::llround(100 * std::cos(a));
+        t += "7\n" + word(ax) + word(ay) + "\n" + word(bx) + word(by) + "\n" + word(-ax) + word(-ay) + "\n" + word(-bx) +
+             word(-by) + "\n8\n";
+    }
+    return t + "38\n64\n";
+}
+
+std::size_t count_code(const CheckResult& r, DiagCode c) {
+    return static_cast<std::size_t>(
+        std::count_if(r.diagnostics.begin(), r.diagnostics.end(), [&](const Diagnostic& d) { return d.code == c; }));
+}
+
+const Diagnostic* summary_of(const CheckResult& r, DiagCode c) {
+    for (const Diagnostic& d : r.diagnostics)
+        if (d.code == c && d.msg == Msg::DiagnosticsOmittedOfCode) return &d;
+    return nullptr;
+}
+
+// A line per block that ends with a blank: one W109 a line.
+std::string blanks_tape(int lines) {
+    std::string t;
+    for (int i = 0; i < lines; ++i) t += "+10+0 \n";
+    return t + "64\n";
+}
+
+}  // namespace
+
+TEST(DiagnosticCap, KeepsTheFirstOfACodeAndCountsTheRest) {
+    DiagnosticCap cap(2);
+    EXPECT_TRUE(cap.admit(DiagCode::W109_WhitespaceSkipped, 1, Severity::Warning));
+    EXPECT_TRUE(cap.admit(DiagCode::W109_WhitespaceSkipped, 2, Severity::Warning));
+    EXPECT_TRUE(cap.admit(DiagCode::E101_InvalidCharacter, 3, Severity::Error));
+    EXPECT_FALSE(cap.admit(DiagCode::W109_WhitespaceSkipped, 7, Severity::Warning));
+    EXPECT_FALSE(cap.admit(DiagCode::W109_WhitespaceSkipped, 5, Severity::Warning));
+    cap.add_omitted(DiagCode::W109_WhitespaceSkipped, 10, 4, Severity::Warning);
+    std::vector<Diagnostic> out;
+    cap.append_summaries(out);
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_EQ(out[0].code, DiagCode::W109_WhitespaceSkipped);
+    EXPECT_EQ(out[0].severity, Severity::Warning);
+    EXPECT_EQ(out[0].line, 4u);  // the first left out
+    EXPECT_EQ(out[0].message, "12 more W109 diagnostics not listed (at most 2 of a code: --max-per-code)");
+    DiagnosticCap all(0);
+    for (int i = 0; i < 5000; ++i) EXPECT_TRUE(all.admit(DiagCode::W109_WhitespaceSkipped, 1, Severity::Warning));
+}
+
+TEST(DiagnosticCap, PartsCollidingInOnePlaceCostMaxPerCodeFindings) {
+    const std::string tape = fan_of_parts(60);  // 1 770 pairs
+    Profile p;
+    p.max_per_code = 0;
+    const CheckResult all = check_tape(tape, p);
+    EXPECT_EQ(count_code(all, DiagCode::E605_PartsCollide), 60u * 59u / 2u);
+    p.max_per_code = 100;
+    const CheckResult capped = check_tape(tape, p);
+    EXPECT_EQ(count_code(capped, DiagCode::E605_PartsCollide), 101u);  // 100 and the summary
+    const Diagnostic* s = summary_of(capped, DiagCode::E605_PartsCollide);
+    ASSERT_NE(s, nullptr);
+    EXPECT_EQ(s->severity, Severity::Error);
+    EXPECT_EQ(s->message, "1670 more E605 diagnostics not listed (at most 100 of a code: --max-per-code)");
+    EXPECT_FALSE(capped.ok());
+    // The statistics do not depend on the cap.
+    EXPECT_EQ(capped.stats.pierces, all.stats.pierces);
+    EXPECT_DOUBLE_EQ(capped.stats.cut_length_mm, all.stats.cut_length_mm);
+}
+
+TEST(DiagnosticCap, TheDefaultIsAThousandOfACode) {
+    EXPECT_EQ(Profile{}.max_per_code, 1000u);
+    const CheckResult r = check_tape(blanks_tape(1500), Profile{});
+    EXPECT_EQ(count_code(r, DiagCode::W109_WhitespaceSkipped), 1001u);
+    const Diagnostic* s = summary_of(r, DiagCode::W109_WhitespaceSkipped);
+    ASSERT_NE(s, nullptr);
+    EXPECT_EQ(s->line, 1001u);
+    EXPECT_EQ(s->column, 1u);
+    EXPECT_EQ(s->message, "500 more W109 diagnostics not listed (at most 1000 of a code: --max-per-code)");
+    EXPECT_EQ(diagnostic_message(*s, Lang::De),
+              "500 weitere Meldungen W109 nicht aufgeführt (höchstens 1000 je Code: --max-per-code)");
+}
+
+TEST(DiagnosticCap, ProfileKeyMaxPerCode) {
+    const ProfileResult ok = parse_profile(R"({"max_per_code": 0})");
+    ASSERT_TRUE(ok.profile);
+    EXPECT_EQ(ok.profile->max_per_code, 0u);
+    EXPECT_NE(profile_to_json(*ok.profile).find("\"max_per_code\": 0"), std::string::npos);
+    for (const char* bad : {R"({"max_per_code": -1})", R"({"max_per_code": 1.5})", R"({"max_per_code": "10"})",
+                            R"({"max_per_code": 10000000000})"}) {
+        const ProfileResult r = parse_profile(bad);
+        EXPECT_FALSE(r.profile) << bad;
+        ASSERT_FALSE(r.diagnostics.empty()) << bad;
+        EXPECT_NE(r.diagnostics[0].message.find("\"max_per_code\" must be a whole number from 0 to 1000000000"),
+                  std::string::npos)
+            << r.diagnostics[0].message;
+    }
+}
+
+// Cut while the tape is checked, the list is what cutting the whole sorted list afterwards keeps, and the
+// left-out are counted by severity.
+TEST(DiagnosticCap, MaxDiagnosticsWhileCheckingKeepsWhatCuttingAfterwardsKeeps) {
+    Profile p;
+    p.max_per_code = 0;
+    for (const std::string& tape : {blanks_tape(3000), fan_of_parts(40) + "+10+0 \n"}) {
+        for (std::size_t max : {0u, 1u, 10u, 777u}) {
+            CheckResult after = check_tape(tape, p);
+            const std::size_t errors = after.count(Severity::Error), warnings = after.count(Severity::Warning);
+            limit_diagnostics(after, max);
+            const CheckResult during = check_tape(tape, p, InputFormat::Essi, max);
+            ASSERT_EQ(during.diagnostics.size(), after.diagnostics.size()) << max;
+            for (std::size_t i = 0; i < during.diagnostics.size(); ++i) {
+                EXPECT_EQ(during.diagnostics[i].code, after.diagnostics[i].code) << i;
+                EXPECT_EQ(during.diagnostics[i].line, after.diagnostics[i].line) << i;
+                EXPECT_EQ(during.diagnostics[i].message, after.diagnostics[i].message) << i;
+            }
+            EXPECT_EQ(during.count(Severity::Error), errors);
+            EXPECT_EQ(during.count(Severity::Warning), warnings);
+            EXPECT_EQ(during.omitted(), after.omitted());
+        }
+    }
+}
