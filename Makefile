@@ -6,7 +6,8 @@
 #                unit suite once more built with ASan + UBSan (build/sanitize)
 #   make native  build/native/bin/essi (+ tests, bench)      make wasm   build/wasm/bin/*.js, build/wasm/web/
 #   make bench   the core benchmarks natively and under node, then the viewer's browser benchmark
-#   make fuzz    each libFuzzer target (read_interp, read_eia, profile, share_link, serve_request) for 60 s (clang++-14; FUZZ_SECONDS, FUZZ_TARGETS)
+#   make fuzz    each libFuzzer target (read_interp, read_eia, profile, share_link, serve_request) for 60 s (clang++-14, UBSan;
+#                FUZZ_SECONDS, FUZZ_RUNS, FUZZ_TARGETS, FUZZ_PRESET=fuzz for ASan + UBSan)
 #   make clean   remove build/
 SHELL := /bin/bash
 JOBS ?= 2
@@ -68,21 +69,26 @@ bench: setup
 	cmake --build --preset wasm -j$(JOBS) --target essi_viewer
 	node tests/e2e/bench.mjs
 
-# libFuzzer + ASan + UBSan, each target (tests/fuzz/fuzz_NAME.cpp) for FUZZ_SECONDS. New inputs go to
+# libFuzzer, each target (tests/fuzz/fuzz_NAME.cpp) for FUZZ_SECONDS (or FUZZ_RUNS executions). FUZZ_PRESET=fuzz-fast
+# (the default: UBSan only, -O2, the volume runs of docs/fuzzing.md) or fuzz (ASan + UBSan). New inputs go to
 # build/fuzz/corpus/NAME (the saved corpus tests/fuzz/corpus/NAME is read only); crashes are written to
-# build/fuzz/artifacts/. The ESSI target reads long inputs (whole generated tapes are in its corpus) with a
-# dictionary of ESSI tokens; the EIA target has its own (read_eia.dict). Promote interesting inputs by hand.
+# build/fuzz/artifacts/; each target's last status line goes to build/fuzz/NAME.log. The ESSI target reads long
+# inputs (whole generated tapes are in its corpus) with a dictionary of ESSI tokens; the EIA target has its own
+# (read_eia.dict). Promote interesting inputs by hand. scripts/fuzz_table prints docs/fuzzing.md's table.
 FUZZ_TARGETS ?= read_interp read_eia profile share_link serve_request
+FUZZ_PRESET ?= fuzz-fast
+FUZZ_RUNS ?= -1
 fuzz: setup
-	cmake --preset fuzz
-	cmake --build --preset fuzz -j$(JOBS)
+	cmake --preset $(FUZZ_PRESET)
+	cmake --build --preset $(FUZZ_PRESET) -j$(JOBS)
 	@for t in $(FUZZ_TARGETS); do \
 	  mkdir -p build/fuzz/corpus/$$t build/fuzz/artifacts; \
 	  dict=""; [ -f tests/fuzz/$$t.dict ] && dict="-dict=tests/fuzz/$$t.dict"; \
-	  len=4096; [ $$t = read_interp ] && len=131072; \
-	  echo "== essi_fuzz_$$t ($(FUZZ_SECONDS) s, max_len $$len)"; \
-	  build/fuzz/bin/essi_fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -max_len=$$len -timeout=10 $$dict \
-	    -artifact_prefix=build/fuzz/artifacts/$$t- build/fuzz/corpus/$$t tests/fuzz/corpus/$$t || exit 1; \
+	  echo "== essi_fuzz_$$t ($(FUZZ_PRESET), $(FUZZ_SECONDS) s, runs $(FUZZ_RUNS), max_len 4096)"; \
+	  build/$(FUZZ_PRESET)/bin/essi_fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -runs=$(FUZZ_RUNS) -max_len=4096 \
+	    -timeout=10 -print_final_stats=1 $$dict -artifact_prefix=build/fuzz/artifacts/$$t- \
+	    build/fuzz/corpus/$$t tests/fuzz/corpus/$$t 2>&1 | tee build/fuzz/$$t.log | grep -E "^#[0-9]+.*(pulse|DONE)|^stat::|ERROR|SUMMARY" ; \
+	  [ $${PIPESTATUS[0]} -eq 0 ] || exit 1; \
 	done
 
 clean:

@@ -32,6 +32,7 @@
 #include "essi/render_svg.hpp"
 #include "essi/text.hpp"
 #include "tape_request.hpp"
+#include "terminal_text.hpp"
 #include "serve.hpp"
 #include "thread_pool.hpp"
 #include "file_io.hpp"
@@ -59,10 +60,20 @@ constexpr int kExitUsage = 2;  // bad arguments, unreadable file or profile, out
 
 constexpr int kJsonIndent = 2;
 
+// The terminal's charset (UTF-8, or GB 18030 / GBK / GB 2312 by the locale): what people read is written in it.
+const essi::native::TerminalText g_terminal(std::getenv("LC_ALL"), std::getenv("LC_CTYPE"), std::getenv("LANG"));
+
+// Output as it is: JSON, SARIF, JUnit, GitHub annotations, tapes, traces, pictures (UTF-8 or bytes by their format).
 void out(std::string_view s) { std::fwrite(s.data(), 1, s.size(), stdout); }
+// Output for people (the text formats): in the terminal's charset.
+void out_text(std::string_view s) {
+    const std::string t = g_terminal(s);
+    std::fwrite(t.data(), 1, t.size(), stdout);
+}
 
 void err(std::string_view s) {
-    std::fwrite(s.data(), 1, s.size(), stderr);
+    const std::string t = g_terminal(s);
+    std::fwrite(t.data(), 1, t.size(), stderr);
 }
 
 std::string join(const std::vector<std::string>& v, std::string_view sep) {
@@ -227,7 +238,7 @@ int run_check(const std::vector<std::string>& paths, const CheckOptions& o) {
             io_failed = true;
         }
         if (o.format == "text") {
-            if (item.read_ok) out(text_file_block(item, o.quiet, g_lang));
+            if (item.read_ok) out_text(text_file_block(item, o.quiet, g_lang));
         } else if (o.format == "github") {
             out(github_file_block(item, g_lang));
         } else {
@@ -250,7 +261,7 @@ int run_check(const std::vector<std::string>& paths, const CheckOptions& o) {
         out("\n");
     }
     const std::string summary = batch_summary_line(totals, profile_name, seconds, g_lang) + "\n";
-    if (streamed) out(summary);
+    if (streamed) (o.format == "text" ? out_text : out)(summary);
     else if (!o.quiet) err(summary);
 
     if (io_failed) return finish(kExitUsage);
@@ -427,7 +438,7 @@ int run_stats(const std::vector<std::string>& paths, const std::string& format, 
         for (const FileReport& r : reports) {
             if (!first) out("\n");
             first = false;
-            out(essi::stats_block(r, g_lang));
+            out_text(essi::stats_block(r, g_lang));
         }
     }
     report_errors_briefly(reports);
@@ -459,7 +470,8 @@ int run_diff(const std::vector<std::string>& paths, const std::string& format, c
     const essi::TapeContours cb = essi::tape_contours(b->file.bytes, b->setup);
     const essi::TapeDiff d = essi::diff_contours(ca.contours, cb.contours);
     const essi::DiffSide sa{paths[0], &ca}, sb{paths[1], &cb};
-    out(format == "json" ? essi::diff_json(sa, sb, d) : essi::diff_text(sa, sb, d, g_lang));
+    if (format == "json") out(essi::diff_json(sa, sb, d));
+    else out_text(essi::diff_text(sa, sb, d, g_lang));
     return finish(d.same() ? kExitOk : kExitTapeErrors);
 }
 
@@ -545,7 +557,7 @@ int main(int argc, char** argv) {
     check->add_option("--max-per-code", check_opts.max_per_code,
                       "At most N diagnostics of one code per file, then one that counts the rest (default: the "
                       "profile's max_per_code, 1000; 0: no limit)")
-        ->check(CLI::Range(0LL, 1000000000LL))
+        ->check(CLI::Range(0LL, static_cast<long long>(essi::kMaxPerCodeLimit)))
         ->type_name("N");
     check->add_flag("-q,--quiet", check_opts.quiet,
                     "Text: only errors, warnings and the summary; json/junit/sarif: no summary on stderr");

@@ -2,11 +2,12 @@
 
 namespace essi::native {
 
-void SharedPlateRunner::run(std::function<void()> job) {
+void SharedPlateRunner::run(std::function<void()> job, std::size_t motions) {
     {
         std::lock_guard lock(mutex_);
-        if (jobs_.size() < max_waiting_) {
-            jobs_.push_back(std::move(job));
+        if (jobs_.size() < max_waiting_ && waiting_motions_ + motions <= kMaxWaitingMotions) {
+            jobs_.push_back({std::move(job), motions});
+            waiting_motions_ += motions;
             return;
         }
     }
@@ -14,15 +15,16 @@ void SharedPlateRunner::run(std::function<void()> job) {
 }
 
 bool SharedPlateRunner::run_one() {
-    std::function<void()> job;
+    Job job;
     {
         std::lock_guard lock(mutex_);
         if (jobs_.empty()) return false;
         job = std::move(jobs_.front());
         jobs_.pop_front();
+        waiting_motions_ -= job.motions;
         ++running_;
     }
-    job();
+    job.run();
     {
         std::lock_guard lock(mutex_);
         --running_;

@@ -99,6 +99,16 @@ std::optional<TapeRequest> tape_request(const httplib::Request& req, httplib::Re
         json_error(res, 400, "unknown input '" + param_or(req, "input", "auto") + "'; expected essi, eia or auto");
         return std::nullopt;
     }
+    if (req.has_param("max_per_code")) {
+        const std::string v = req.get_param_value("max_per_code");
+        const bool digits = !v.empty() && v.size() <= 10 && v.find_first_not_of("0123456789") == std::string::npos;
+        if (!digits || std::stoull(v) > kMaxPerCodeLimit) {
+            json_error(res, 400, "max_per_code='" + v + "': expected a whole number from 0 to " +
+                                     std::to_string(kMaxPerCodeLimit) + " (0: no limit)");
+            return std::nullopt;
+        }
+        r.max_per_code = static_cast<std::size_t>(std::stoull(v));
+    }
     return r;
 }
 

@@ -97,6 +97,7 @@ struct CutPlan::State {
     std::vector<std::unique_ptr<PlateJob>> jobs;  // the plates handed over, in order
     std::size_t folded = 0;            // jobs[0, folded) are folded into `found` (and freed)
     std::uint32_t next_motion = 0;     // the stream index of the next motion
+    std::size_t plate_motions = 0;     // cutting motions of the plate so far (its part: kPlanMaxPlateMotions)
     bool ended = false;                // end_input() was called
     // defer_plates: the store the plates' motions are read back from, and the plates kept (the first
     // `next_deferred` of them analysed).
@@ -130,6 +131,7 @@ struct CutPlan::State {
             if (h == 1) head2_pieces.clear();
             c.first_piece = static_cast<std::uint32_t>(pieces.size());
         }
+        ++plate_motions;
         if (kerf != open_kerf[h]) [[unlikely]] mixed_kerf[h] = true;
         if (2 * kerf_mm > c.kerf_width_mm) [[unlikely]] c.kerf_width_mm = 2 * kerf_mm;
         c.last_line = line;
@@ -194,6 +196,15 @@ struct CutPlan::State {
         c.end_piece = static_cast<std::uint32_t>(pieces.size());
         c.order = static_cast<int>(cuts.size());
         cuts.push_back(std::move(c));
+        if (plate_motions >= kPlanMaxPlateMotions && !cutting[0] && !cutting[1]) [[unlikely]] split_plate();
+    }
+    // The plate so far is analysed as a part of its own (N614 after its last cut): a plate's memory is bounded.
+    void split_plate() {
+        const std::uint32_t last = cuts.back().last_line;
+        if (cap.admit(DiagCode::N614_PlateSplit, last, Severity::Note))
+            found.push_back(make_diagnostic(Severity::Note, DiagCode::N614_PlateSplit, last, 0, Msg::PlanPlateSplit,
+                                            {last, kPlanMaxPlateMotions}));
+        end_plate();
     }
 
     plan::PlateSettings settings() const {
@@ -202,6 +213,8 @@ struct CutPlan::State {
     void end_plate() {
         close(0);
         close(1);
+        const std::size_t motions = plate_motions;
+        plate_motions = 0;
         if (cuts.empty()) return;
         if (store) {
             keep_plate();
@@ -216,7 +229,7 @@ struct CutPlan::State {
         job->keep_contours = keep_contours;
         PlateJob* j = job.get();
         jobs.push_back(std::move(job));
-        if (runner) runner->run([j] { j->run(); });
+        if (runner) runner->run([j] { j->run(); }, motions);
         else j->run();
         ++plate;
         fold_done();

@@ -198,7 +198,6 @@ constexpr Range kGapRange{0, 1e6};                  // mm: closure_gap_mm
 constexpr Range kPositionRange{-1e9, 1e9};          // mm: offsets and table limits
 constexpr Range kRotationRange{-360, 360};          // degrees
 constexpr std::size_t kMaxZeroOffsets = 100;        // entries of zero_offsets
-constexpr std::uint64_t kMaxPerCodeLimit = 1000000000;  // max_per_code (0: no limit)
 
 // A point given as {"x_mm": ..., "y_mm": ...} (an offset): the error names `where` ("\"tool_offsets.marker\"", or
 // a ProfileZeroOffsetEntry).
@@ -473,6 +472,38 @@ std::string builtin_names_text() {
     return s;
 }
 
+// Where and why the JSON parser stopped: line and column (1-based, bytes) of its last byte read (`byte`, 1-based;
+// 0 when the parser does not say: then where the quoted token of its reason first is) and its reason ("number
+// overflow parsing '1e999'", "unexpected end of input ...").
+Message json_error_message(std::string_view text, const json::exception& e, std::size_t byte) {
+    if (byte == 0) {
+        const std::string what = e.what();
+        const std::size_t open = what.find('\''), close = what.rfind('\'');
+        if (open != std::string::npos && close > open + 1) {
+            const std::size_t found = text.find(what.substr(open + 1, close - open - 1));
+            if (found != std::string_view::npos) byte = found + 1;
+        }
+    }
+    const std::size_t at = std::min<std::size_t>(byte == 0 ? 0 : byte - 1, text.size());
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < at; ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    std::string reason = e.what();
+    // ("[json.exception.parse_error.101] parse error at line 1, column 2: REASON", "[json.exception...406] REASON")
+    if (const std::size_t c = reason.find("column "); c != std::string::npos) {
+        if (const std::size_t colon = reason.find(": ", c); colon != std::string::npos) reason.erase(0, colon + 2);
+    } else if (reason.rfind("[json.", 0) == 0) {
+        if (const std::size_t end = reason.find("] "); end != std::string::npos) reason.erase(0, end + 2);
+    }
+    return {Msg::ProfileNotJsonAt, {line, column, excerpt(reason, 160)}};
+}
+
 // Parses profile JSON onto its base: the built-in named by "base", else `no_base` (the default profile for a
 // user's file; Profile{} for the default profile's own file, which sets every key).
 ProfileResult parse_onto(std::string_view json_text, const std::function<std::optional<Profile>()>& no_base) {
@@ -481,9 +512,14 @@ ProfileResult parse_onto(std::string_view json_text, const std::function<std::op
         result.diagnostics.push_back(
             make_diagnostic(Severity::Error, DiagCode::E402_BadProfile, 0, 0, m.msg, std::move(m.args)));
     };
-    const json j = json::parse(json_text.begin(), json_text.end(), nullptr, /*allow_exceptions=*/false);
-    if (j.is_discarded()) {
-        bad({Msg::ProfileNotJson});
+    json j;
+    try {
+        j = json::parse(json_text.begin(), json_text.end());
+    } catch (const json::parse_error& e) {
+        bad(json_error_message(json_text, e, e.byte));
+        return result;
+    } catch (const json::exception& e) {  // (a number beyond a double: out_of_range)
+        bad(json_error_message(json_text, e, 0));
         return result;
     }
     if (!j.is_object()) {

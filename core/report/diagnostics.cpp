@@ -55,6 +55,7 @@ constexpr std::array kCodes = {
     CodeRow{DiagCode::W611_CutLargerThanTable, Msg::CodeW611},
     CodeRow{DiagCode::N612_ContoursOverlap, Msg::CodeN612},
     CodeRow{DiagCode::N613_PlateTooCrowded, Msg::CodeN613},
+    CodeRow{DiagCode::N614_PlateSplit, Msg::CodeN614},
     CodeRow{DiagCode::E115_TooManyErrors, Msg::CodeE115},
     CodeRow{DiagCode::E116_MisplacedMark, Msg::CodeE116},
     CodeRow{DiagCode::E117_TapeTooLarge, Msg::CodeE117},
@@ -122,7 +123,8 @@ namespace {
 // Codes whose default severity is a note: the ones named N... in the enum.
 bool is_note_code(DiagCode code) {
     return code == DiagCode::N403_OtherDialect || code == DiagCode::N603_KerfInsideLoneContour ||
-           code == DiagCode::N612_ContoursOverlap || code == DiagCode::N613_PlateTooCrowded;
+           code == DiagCode::N612_ContoursOverlap || code == DiagCode::N613_PlateTooCrowded ||
+           code == DiagCode::N614_PlateSplit;
 }
 }  // namespace
 

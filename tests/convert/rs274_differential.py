@@ -179,7 +179,7 @@ def main():
         for tape in tapes:
             name = os.path.relpath(tape)
             gcode = os.path.join(tmp, "t.ngc")
-            conv = subprocess.run([essi, "convert", "--to", "gcode", "--absolute", "--profile", "auto", tape, "-o", gcode],
+            conv = subprocess.run([essi, "convert", "--to", "gcode", "--force", "--absolute", "--profile", "auto", tape, "-o", gcode],
                                   capture_output=True, text=True)
             if conv.returncode not in (0, 1):
                 print(f"FAIL {name}: essi convert failed: {conv.stderr.strip()[:300]}")

@@ -103,7 +103,7 @@ TEST(SharedPlateRunner, EveryPlateRunsOnceWhicheverThreadRunsIt) {
     essi::native::SharedPlateRunner plates(2);
     std::atomic<int> ran{0};
     const auto job = [&] { ++ran; };
-    for (int k = 0; k < 5; ++k) plates.run(job);
+    for (int k = 0; k < 5; ++k) plates.run(job, 10);
     EXPECT_EQ(ran.load(), 3);  // (two queued, three run by run() itself)
     EXPECT_TRUE(plates.run_one());
     EXPECT_EQ(ran.load(), 4);
@@ -111,11 +111,29 @@ TEST(SharedPlateRunner, EveryPlateRunsOnceWhicheverThreadRunsIt) {
     reader.join();
     EXPECT_EQ(ran.load(), 5);
     EXPECT_FALSE(plates.run_one());
-    plates.run(job);
-    plates.run(job);
+    plates.run(job, 10);
+    plates.run(job, 10);
     plates.wait();
     EXPECT_EQ(ran.load(), 7);
     EXPECT_FALSE(plates.run_one());
+}
+
+// Plates wait only while their motions together stay within kMaxWaitingMotions: large plates do not pile up.
+TEST(SharedPlateRunner, LargePlatesDoNotPileUp) {
+    essi::native::SharedPlateRunner plates(8);
+    std::atomic<int> ran{0};
+    const auto job = [&] { ++ran; };
+    const std::size_t half = essi::native::SharedPlateRunner::kMaxWaitingMotions / 2;
+    plates.run(job, half);
+    plates.run(job, half);
+    EXPECT_EQ(ran.load(), 0);  // (both wait: together exactly the bound)
+    plates.run(job, 1);
+    EXPECT_EQ(ran.load(), 1);  // (over the bound: run at once)
+    EXPECT_TRUE(plates.run_one());
+    plates.run(job, 1);
+    EXPECT_EQ(ran.load(), 2);  // (room again: it waits)
+    plates.wait();
+    EXPECT_EQ(ran.load(), 4);
 }
 
 TEST(ThreadPool, EmitsInOrderWithManyWorkers) {
@@ -152,7 +170,7 @@ TEST(Batch, SameResultsForAnyJobCountAndLimit) {
     const auto files = expand_paths({d.string()}, ExpandOptions{}, errors);
     ASSERT_EQ(files.size(), 20u);
     std::vector<std::string> seen1, seen2;
-    const TapeRequest iso_request{std::nullopt, essi::builtin_profile("iso6582"), "iso6582"};
+    const TapeRequest iso_request{std::nullopt, essi::builtin_profile("iso6582"), "iso6582", std::nullopt};
     BatchOptions o;
     o.jobs = 1;
     check_batch(files, iso_request, o, [&](BatchItem&& it) { seen1.push_back(it.report.path + ":" + std::to_string(it.report.errors())); });

@@ -10,6 +10,7 @@
 
 #include "essi/diagnostic_cap.hpp"
 #include "essi/diagnostics.hpp"
+#include "essi/plan.hpp"
 #include "essi/profile.hpp"
 #include "essi/report.hpp"
 
@@ -142,4 +143,39 @@ TEST(DiagnosticCap, MaxDiagnosticsWhileCheckingKeepsWhatCuttingAfterwardsKeeps) 
             EXPECT_EQ(during.omitted(), after.omitted());
         }
     }
+}
+
+// Contours piled over each other: the search for neighbours stops at its budget and says so (N613), once.
+TEST(PlanBounds, PiledContoursAreComparedWithinABudget) {
+    const CheckResult r = check_tape(fan_of_parts(800), Profile{});  // 800 parts, every pair overlapping
+    ASSERT_EQ(count_code(r, DiagCode::N613_PlateTooCrowded), 1u);
+    const Diagnostic* n = nullptr;
+    for (const Diagnostic& d : r.diagnostics)
+        if (d.code == DiagCode::N613_PlateTooCrowded) n = &d;
+    EXPECT_EQ(n->line, 4u);  // the plate's first cut (its first motion)
+    EXPECT_EQ(n->severity, Severity::Note);
+    EXPECT_NE(n->message.find("the search for colliding pairs stopped after"), std::string::npos) << n->message;
+    EXPECT_EQ(count_code(r, DiagCode::E605_PartsCollide), 1001u);  // (the cap, and its summary)
+    // An ordinary number of neighbours: no note.
+    EXPECT_EQ(count_code(check_tape(fan_of_parts(30), Profile{}), DiagCode::N613_PlateTooCrowded), 0u);
+}
+
+// A plate of more cutting motions than kPlanMaxPlateMotions is analysed in parts, N614 at the end of each part.
+TEST(PlanBounds, AHugePlateIsAnalysedInParts) {
+    std::string tape = "39+2000\n";
+    const std::size_t squares = kPlanMaxPlateMotions / 4 + 10;
+    for (std::size_t k = 0; k < squares; ++k) tape += "5\n+200+0\n6\n30\n7\n+100+0\n+0+100\n-100+0\n+0-100\n8\n38\n";
+    tape += "64\n";
+    const CheckResult r = check_tape(tape, Profile{});
+    ASSERT_EQ(count_code(r, DiagCode::N614_PlateSplit), 1u);
+    for (const Diagnostic& d : r.diagnostics) {
+        if (d.code != DiagCode::N614_PlateSplit) continue;
+        // The part ends with the cut that reaches the limit: square kPlanMaxPlateMotions / 4 (11 lines each, after
+        // the feed's line), at its last motion, the line before its `8`.
+        const std::size_t last_line = 11 * (kPlanMaxPlateMotions / 4) - 1;
+        EXPECT_EQ(d.line, last_line);
+        EXPECT_EQ(d.message, "the plate is analysed in parts of at most 131072 cutting motions: the cuts after line " +
+                                 std::to_string(last_line) + " are not compared with those up to it");
+    }
+    EXPECT_TRUE(r.ok());
 }

@@ -182,9 +182,17 @@ TEST(I18nMore, ProfileErrorsInEachLanguage) {
     const essi::ProfileResult not_json = essi::parse_profile("{");
     ASSERT_EQ(not_json.diagnostics.size(), 1u);
     EXPECT_EQ(not_json.diagnostics[0].message,
-              "the text is not valid JSON; expected an object such as {\"base\": \"woyda\", \"feed_mm_min\": 1200}");
+              "the text is not valid JSON at line 1, column 2 (syntax error while parsing object key - unexpected end "
+              "of input; expected string literal); expected an object such as {\"base\": \"woyda\", \"feed_mm_min\": 1200}");
     EXPECT_EQ(essi::diagnostic_message(not_json.diagnostics[0], Lang::Zh),
-              "文本不是有效的 JSON;应为 {\"base\": \"woyda\", \"feed_mm_min\": 1200} 这样的对象");
+              "文本在第 1 行第 2 列不是有效的 JSON(syntax error while parsing object key - unexpected end of input; "
+              "expected string literal);应为 {\"base\": \"woyda\", \"feed_mm_min\": 1200} 这样的对象");
+    // A number beyond a double: where it is, and why.
+    const essi::ProfileResult huge = essi::parse_profile("{\"name\": \"x\",\n  \"unit_mm\": 1e999}");
+    ASSERT_EQ(huge.diagnostics.size(), 1u);
+    EXPECT_EQ(huge.diagnostics[0].message,
+              "the text is not valid JSON at line 2, column 14 (number overflow parsing '1e999'); expected an object "
+              "such as {\"base\": \"woyda\", \"feed_mm_min\": 1200}");
     const essi::ProfileResult base = essi::parse_profile(R"({"base": "nope"})");
     ASSERT_EQ(base.diagnostics.size(), 1u);
     EXPECT_EQ(essi::diagnostic_message(base.diagnostics[0], Lang::De),

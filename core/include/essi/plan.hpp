@@ -49,6 +49,10 @@ constexpr double kPlanHomeToleranceMm = 0.5;
 // motions; longer cuts are compared with their first kPlanLeadMotions points only.
 constexpr std::size_t kPlanFullClosureMotions = 512;
 constexpr std::size_t kPlanLeadMotions = 4;
+// A plate is analysed in parts of at most this many cutting motions (the first cut that ends past it closes the
+// part; N614 says where): the memory a plate takes is bounded whatever the tape (about 160 bytes a motion while it
+// is analysed), at the price of not comparing cuts of different parts. A real plate has far fewer.
+constexpr std::size_t kPlanMaxPlateMotions = std::size_t{1} << 17;
 
 enum class ContourRole : std::uint8_t {
     Part,     // holds holes, or lies inside a hole (even depth >= 2)
@@ -78,8 +82,9 @@ struct PlanContour {
 class PlateRunner {
 public:
     virtual ~PlateRunner() = default;
-    // Runs `job` before wait() returns (it may wait for room first).
-    virtual void run(std::function<void()> job) = 0;
+    // Runs `job` before wait() returns (it may wait for room first); `motions`: the plate's cutting motions, what
+    // its memory is in proportion to.
+    virtual void run(std::function<void()> job, std::size_t motions) = 0;
     // Returns once every job given has run.
     virtual void wait() = 0;
 };

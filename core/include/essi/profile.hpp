@@ -6,6 +6,7 @@
 #include "essi/i18n.hpp"
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -64,8 +65,9 @@ struct TableLimits {
     double min_x_mm = 0, min_y_mm = 0, max_x_mm = 0, max_y_mm = 0;
 };
 
-// The default of Profile::max_per_code.
+// The default of Profile::max_per_code, and the largest value it takes (0: no limit).
 constexpr std::size_t kDefaultMaxPerCode = 1000;
+constexpr std::uint64_t kMaxPerCodeLimit = 1000000000;
 
 struct Profile {
     std::string name = "iso6582";
