@@ -19,6 +19,14 @@ namespace essi {
 
 namespace {
 
+// A scale factor or a width in mm a pixel, with its significant digits (num's 3 decimals would make the width of
+// 2 pixels of a 1 mm drawing 0.002).
+std::string scale_text(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.9g", v);
+    return buf;
+}
+
 // A number for SVG: 3 decimals (1 µm), trailing zeros dropped.
 std::string num(double v) {
     if (!std::isfinite(v)) v = 0;
@@ -173,7 +181,10 @@ private:
 };
 
 // The contour each diagnostic concerns, and its related places (dashed, lighter), under the marks.
-void write_highlights(std::string& s, const std::vector<Diagnostic>& diagnostics, const SvgSink& sink) {
+// `px`: mm a pixel of the SVG. Every stroke width and dash is given in mm (its pixels times px), not with
+// vector-effect="non-scaling-stroke": rsvg-convert (the PNG) ignores that, and a tape of a kilometre had strokes
+// of a thousandth of a pixel.
+void write_highlights(std::string& s, const std::vector<Diagnostic>& diagnostics, const SvgSink& sink, double px) {
     s += "<g id=\"highlights\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
     for (std::size_t k = 0; k < diagnostics.size(); ++k) {
         const Diagnostic& d = diagnostics[k];
@@ -184,15 +195,15 @@ void write_highlights(std::string& s, const std::vector<Diagnostic>& diagnostics
             if (!path.empty())
                 s += "<path class=\"contour-highlight\" data-diagnostic=\"" + index + "\" data-lines=\"" + range_text(r) +
                      "\" stroke=\"" + color + "\" stroke-opacity=\"" + num(kContourOpacity) + "\" stroke-width=\"" +
-                     num(kContourWidthPx) + "\" vector-effect=\"non-scaling-stroke\" d=\"" + path + "\"/>\n";
+                     scale_text(kContourWidthPx * px) + "\" d=\"" + path + "\"/>\n";
         }
         for (const RelatedLocation& rel : d.related) {
             const LineRange r{rel.line, std::max(rel.line, rel.end_line)};
             const std::string path = rel.line > 0 ? sink.lines_path(r) : std::string();
             if (path.empty()) continue;
             s += "<path class=\"related\" data-diagnostic=\"" + index + "\" data-lines=\"" + range_text(r) + "\" stroke=\"" +
-                 color + "\" stroke-opacity=\"" + num(kRelatedOpacity) + "\" stroke-width=\"" + num(kRelatedWidthPx) +
-                 "\" stroke-dasharray=\"6 4\" vector-effect=\"non-scaling-stroke\" d=\"" + path + "\"><title>" +
+                 color + "\" stroke-opacity=\"" + num(kRelatedOpacity) + "\" stroke-width=\"" + scale_text(kRelatedWidthPx * px) +
+                 "\" stroke-dasharray=\"" + scale_text(6 * px) + " " + scale_text(4 * px) + "\" d=\"" + path + "\"><title>" +
                  xml_escape(related_message(rel, Lang::En)) + "</title></path>\n";
         }
     }
@@ -228,7 +239,7 @@ void write_overlaps(std::string& s, const std::vector<Diagnostic>& diagnostics) 
 void write_marks(std::string& s, const std::vector<Diagnostic>& diagnostics,
                  const std::vector<std::optional<Point>>& places, const std::string& title, double px) {
     const double r = kSvgMarkRadiusPx * px;
-    s += "<g id=\"diagnostics\" stroke-width=\"2\">\n";
+    s += "<g id=\"diagnostics\" stroke-width=\"" + scale_text(2 * px) + "\">\n";
     for (std::size_t k = 0; k < diagnostics.size(); ++k) {
         if (!places[k]) continue;
         const Diagnostic& d = diagnostics[k];
@@ -241,18 +252,17 @@ void write_marks(std::string& s, const std::vector<Diagnostic>& diagnostics,
              std::to_string(d.line) + "\" data-x=\"" + num(p.x) + "\" data-y=\"" + num(p.y) + "\" data-r-px=\"" +
              num(kSvgMarkRadiusPx) + "\" stroke=\"" + color + "\" fill=\"" + color + "\" fill-opacity=\"" +
              num(kMarkFillOpacity) + "\"><title>" + xml_escape(tip) + "</title>";
-        s += "<circle cx=\"" + num(p.x) + "\" cy=\"" + num(-p.y) + "\" r=\"" + num(r) + "\" vector-effect=\"non-scaling-stroke\"/>";
+        s += "<circle cx=\"" + num(p.x) + "\" cy=\"" + num(-p.y) + "\" r=\"" + num(r) + "\"/>";
         if (d.severity == Severity::Error)
             s += "<path d=\"M" + num(p.x - r) + " " + num(-p.y - r) + "L" + num(p.x + r) + " " + num(-p.y + r) + "M" +
-                 num(p.x - r) + " " + num(-p.y + r) + "L" + num(p.x + r) + " " + num(-p.y - r) +
-                 "\" vector-effect=\"non-scaling-stroke\"/>";
+                 num(p.x - r) + " " + num(-p.y + r) + "L" + num(p.x + r) + " " + num(-p.y - r) + "\"/>";
         s += "</g>\n";
     }
     s += "</g>\n";
 }
 
 // The problems only: what the diagnostics concern drawn again in its colours over the faint drawing.
-void write_concerned(std::string& s, const std::vector<LineRange>& wanted, const SvgSink& sink) {
+void write_concerned(std::string& s, const std::vector<LineRange>& wanted, const SvgSink& sink, double px) {
     s += "<g id=\"concerned\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
     const std::pair<MotionKind, std::string_view> kinds[] = {{MotionKind::Rapid, kSvgRapidColor},
                                                               {MotionKind::Travel, kSvgTravelColor},
@@ -263,7 +273,7 @@ void write_concerned(std::string& s, const std::vector<LineRange>& wanted, const
         for (const LineRange& r : wanted) d += sink.lines_path(r, kind);
         if (!d.empty())
             s += "<path class=\"concerned " + std::string(motion_kind_name(kind)) + "\" stroke=\"" + std::string(color) +
-                 "\" stroke-width=\"2\" vector-effect=\"non-scaling-stroke\" d=\"" + d + "\"/>\n";
+                 "\" stroke-width=\"" + scale_text(2 * px) + "\" d=\"" + d + "\"/>\n";
     }
     s += "</g>\n";
 }
@@ -328,6 +338,11 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     const double vw = w + 2 * margin, vh = h + 2 * margin + legend_h;
     const double height_px = std::max(1.0, std::round(options.width_px * vh / vw));
     const double marker_r = shown * 0.006;
+    const double px = vw / options.width_px;  // mm a pixel of the SVG (stroke widths: write_highlights)
+    const auto stroke = [&](double width_px) { return " stroke-width=\"" + scale_text(width_px * px) + "\""; };
+    const auto dashes = [&](double on_px, double off_px) {
+        return " stroke-dasharray=\"" + scale_text(on_px * px) + " " + scale_text(off_px * px) + "\"";
+    };
 
     const std::size_t errors = out.result.count(Severity::Error), warnings = out.result.count(Severity::Warning),
                       notes = out.result.count(Severity::Note);
@@ -349,20 +364,20 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
         MotionKind kind;
         const char* name;
         std::string_view color;
-        const char* extra;
+        std::string extra;
     };
     const Layer layers[] = {
-        {MotionKind::Rapid, "rapid", kSvgRapidColor, " stroke-width=\"1\" stroke-dasharray=\"4 3\""},
-        {MotionKind::Travel, "travel", kSvgTravelColor, " stroke-width=\"1\" stroke-dasharray=\"2 2\""},
-        {MotionKind::Mark, "mark", kSvgMarkColor, " stroke-width=\"1.5\""},
-        {MotionKind::Cut, "cut", kSvgCutColor, " stroke-width=\"2\""},
+        {MotionKind::Rapid, "rapid", kSvgRapidColor, stroke(1) + dashes(4, 3)},
+        {MotionKind::Travel, "travel", kSvgTravelColor, stroke(1) + dashes(2, 2)},
+        {MotionKind::Mark, "mark", kSvgMarkColor, stroke(1.5)},
+        {MotionKind::Cut, "cut", kSvgCutColor, stroke(2)},
     };
     for (const Layer& l : layers) {
         const std::string& d = sink.paths_[static_cast<std::size_t>(l.kind)];
         if (d.empty()) continue;
         if (!options.show_travel && (l.kind == MotionKind::Rapid || l.kind == MotionKind::Travel)) continue;
         s += "<path id=\"" + std::string(l.name) + "\" class=\"" + l.name + "\" stroke=\"" + std::string(l.color) +
-             "\"" + l.extra + " vector-effect=\"non-scaling-stroke\" d=\"" + d + "\"/>\n";
+             "\"" + l.extra + " d=\"" + d + "\"/>\n";
     }
     // The kerf: the cut's real width (a band as wide as the kerf along the compensated path) and the torch's path.
     for (const auto& [width, d] : sink.kerf_bands_)
@@ -370,49 +385,51 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
              "\" stroke-opacity=\"0.25\" stroke-width=\"" + num(width) + "\" d=\"" + d + "\"/>\n";
     if (!sink.kerf_path_.empty())
         s += "<path id=\"kerf\" class=\"kerf\" stroke=\"" + std::string(kSvgKerfColor) +
-             "\" stroke-width=\"1\" vector-effect=\"non-scaling-stroke\" d=\"" + sink.kerf_path_ + "\"/>\n";
-    s += "</g>\n<g id=\"pierces\" fill=\"none\" stroke=\"" + std::string(kSvgPierceColor) + "\" stroke-width=\"1.5\"" +
+             "\"" + stroke(1) + " d=\"" + sink.kerf_path_ + "\"/>\n";
+    s += "</g>\n<g id=\"pierces\" fill=\"none\" stroke=\"" + std::string(kSvgPierceColor) + "\"" + stroke(1.5) +
          (options.problems_only ? " opacity=\"" + num(kSvgDimOpacity) + "\"" : std::string()) + ">\n";
     for (const Point& p : sink.pierces_)
-        s += "<circle class=\"pierce\" cx=\"" + num(p.x) + "\" cy=\"" + num(-p.y) + "\" r=\"" + num(marker_r) +
-             "\" vector-effect=\"non-scaling-stroke\"/>\n";
+        s += "<circle class=\"pierce\" cx=\"" + num(p.x) + "\" cy=\"" + num(-p.y) + "\" r=\"" + num(marker_r) + "\"/>\n";
     s += "</g>\n";
-    if (options.problems_only) write_concerned(s, wanted, sink);
+    if (options.problems_only) write_concerned(s, wanted, sink, px);
     write_overlaps(s, diagnostics);
-    write_highlights(s, diagnostics, sink);
-    write_marks(s, diagnostics, places.places(), options.title, vw / options.width_px);
+    write_highlights(s, diagnostics, sink, px);
+    write_marks(s, diagnostics, places.places(), options.title, px);
 
-    // Legend: below the drawing.
-    const double lx = vx + margin * 0.5;
-    double ly = -box.min_y + margin + font * 1.2;
+    // Legend: below the drawing, written in the SVG's pixels inside a group scaled to mm (a font of 22 000 mm made
+    // the PNG's font library fail on a tape of a kilometre).
+    const double lx = vx + margin * 0.5, ly0 = -box.min_y + margin;
+    const double font_px = font / px, sample_px = sample / px;
+    double ly = font_px * 1.2;
     char timebuf[32];
     std::snprintf(timebuf, sizeof timebuf, "%.1f", st.estimated_time_s);
     char cutbuf[64];
     std::snprintf(cutbuf, sizeof cutbuf, "%.3f", st.cut_length_mm);
-    s += "<g id=\"legend\" font-family=\"sans-serif\" font-size=\"" + num(font) + "\" fill=\"#202020\">\n";
-    s += "<text id=\"legend-file\" x=\"" + num(lx) + "\" y=\"" + num(ly) + "\" font-weight=\"bold\">" +
-         xml_escape(options.title) + "</text>\n";
-    ly += font * 1.3;
-    s += "<text id=\"legend-numbers\" x=\"" + num(lx) + "\" y=\"" + num(ly) + "\" data-cut-length-mm=\"" + cutbuf +
+    s += "<g id=\"legend\" transform=\"translate(" + num(lx) + " " + num(ly0) + ") scale(" + scale_text(px) +
+         ")\" font-family=\"sans-serif\" font-size=\"" + num(font_px) + "\" fill=\"#202020\">\n";
+    s += "<text id=\"legend-file\" x=\"0\" y=\"" + num(ly) + "\" font-weight=\"bold\">" + xml_escape(options.title) +
+         "</text>\n";
+    ly += font_px * 1.3;
+    s += "<text id=\"legend-numbers\" x=\"0\" y=\"" + num(ly) + "\" data-cut-length-mm=\"" + cutbuf +
          "\" data-pierces=\"" + std::to_string(st.pierces) + "\" data-time-s=\"" + timebuf + "\" data-errors=\"" +
          std::to_string(errors) + "\" data-warnings=\"" + std::to_string(warnings) +
          "\" data-notes=\"" + std::to_string(notes) + "\">cut " + cutbuf + " mm, " +
          std::to_string(st.pierces) + (st.pierces == 1 ? " pierce" : " pierces") + ", time " +
          format_duration(st.estimated_time_s) + ", " + std::to_string(errors) + (errors == 1 ? " error" : " errors") +
          ", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings") + "</text>\n";
-    ly += font * 1.3;
-    double kx = lx;
+    ly += font_px * 1.3;
+    double kx = 0;
     auto key = [&](std::string_view name, std::string_view color, const char* dash) {
-        s += "<g class=\"key\" data-kind=\"" + std::string(name) + "\"><path d=\"M" + num(kx) + " " + num(ly - font * 0.35) +
-             "h" + num(sample) + "\" stroke=\"" + std::string(color) + "\" stroke-width=\"2\"" + dash +
-             " vector-effect=\"non-scaling-stroke\"/><text x=\"" + num(kx + sample + font * 0.3) + "\" y=\"" + num(ly) +
+        s += "<g class=\"key\" data-kind=\"" + std::string(name) + "\"><path d=\"M" + num(kx) + " " +
+             num(ly - font_px * 0.35) + "h" + num(sample_px) + "\" stroke=\"" + std::string(color) +
+             "\" stroke-width=\"2\"" + dash + "/><text x=\"" + num(kx + sample_px + font_px * 0.3) + "\" y=\"" + num(ly) +
              "\">" + std::string(name) + "</text></g>\n";
-        kx += sample + font * (1.0 + 0.62 * static_cast<double>(name.size()));
+        kx += sample_px + font_px * (1.0 + 0.62 * static_cast<double>(name.size()));
     };
     for (std::size_t k = 0; k < keys.size(); ++k) {
         if (k == key_break) {
-            kx = lx;
-            ly += font * 1.3;
+            kx = 0;
+            ly += font_px * 1.3;
         }
         key(keys[k].name, keys[k].color, keys[k].dash);
     }

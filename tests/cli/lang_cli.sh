@@ -24,7 +24,11 @@ expect "--lang zh" "错误 E101: 意外的字符" "${clean_env[@]}" "$essi" chec
 expect "--lang de summary" "1 Datei geprüft (Profil iso6582)" "${clean_env[@]}" "$essi" check --lang de "$tape"
 expect "no language set: English" "1 file checked" "${clean_env[@]}" "$essi" check "$tape"
 expect "LANG=de_DE.UTF-8" "Fehler E101" "${clean_env[@]}" LANG=de_DE.UTF-8 "$essi" check "$tape"
-expect "LANG=zh_CN.GB18030" "错误 E101" "${clean_env[@]}" LANG=zh_CN.GB18030 "$essi" check "$tape"
+# A GB 18030 locale: Chinese, written in GB 18030 for its terminal (text reports and stderr); JSON stays UTF-8.
+from_gb18030() { "$@" 2>&1 | iconv -f GB18030 -t UTF-8; }
+expect "LANG=zh_CN.GB18030" "错误 E101" from_gb18030 "${clean_env[@]}" LANG=zh_CN.GB18030 "$essi" check "$tape"
+expect "LANG=zh_CN.GB18030: the summary on stderr" "已检查 1 个文件" from_gb18030 "${clean_env[@]}" LANG=zh_CN.GB18030 "$essi" check "$tape"
+expect "LANG=zh_CN.GB18030: JSON in UTF-8" '"message": "意外的字符' "${clean_env[@]}" LANG=zh_CN.GB18030 "$essi" check --format json "$tape"
 expect "LANG=fr_FR.UTF-8: English" "error E101" "${clean_env[@]}" LANG=fr_FR.UTF-8 "$essi" check "$tape"
 expect "LC_MESSAGES before LANG" "错误 E101" "${clean_env[@]}" LANG=de_DE.UTF-8 LC_MESSAGES=zh_CN.UTF-8 "$essi" check "$tape"
 expect "LC_ALL before both" "error E101" "${clean_env[@]}" LANG=de_DE.UTF-8 LC_MESSAGES=zh_CN.UTF-8 LC_ALL=C "$essi" check "$tape"

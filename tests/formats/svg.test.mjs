@@ -126,3 +126,49 @@ test('Chromium draws the SVG: pixels of the cut colour and the pierce colour app
     await browser.close();
   }
 });
+
+// A square of 1 km and one of 100 km, drawn to PNG by rsvg-convert: the cut is there (its strokes were given in mm
+// a pixel too thin to show, or none; at 100 km the legend's font made rsvg-convert fail and a 0-byte PNG was left).
+test('PNG of tapes of 1 km and 100 km: the cut shows, the legend is drawn', { skip: !fs.existsSync('/usr/bin/rsvg-convert') && 'rsvg-convert not installed' }, async () => {
+  const dir = tempDir('png-extent');
+  const browser = await chromium.launch({ executablePath: chromiumPath, args: ['--no-sandbox'] });
+  try {
+    const profile = path.join(dir, 'mm.profile.json');
+    write(profile, '{"name": "mm units", "unit_mm": 1}');  // (100 km in 0.1 mm would be a word of 10 digits)
+    for (const km of [1, 100]) {
+      const u = km * 1000000;  // mm
+      const tape = path.join(dir, `square_${km}km.esi`);
+      write(tape, `7\n+${u}+0\n+0+${u}\n-${u}+0\n+0-${u}\n8\n64\n`);
+      const out = path.join(dir, `square_${km}km.png`);
+      const r = essi(['render', tape, '--profile', profile, '--width', '600', '-o', out]);
+      assert.equal(r.status, 0, r.stderr);
+      assert.doesNotMatch(r.stderr, /WARNING|failed/, r.stderr);
+      const b64 = fs.readFileSync(out).toString('base64');
+      const page = await browser.newPage();
+      const counts = await page.evaluate(async ({ b64, cut }) => {
+        const img = new Image();
+        img.src = 'data:image/png;base64,' + b64;
+        await img.decode();
+        const c = document.createElement('canvas');
+        c.width = img.naturalWidth;
+        c.height = img.naturalHeight;
+        const g = c.getContext('2d');
+        g.drawImage(img, 0, 0);
+        const px = g.getImageData(0, 0, c.width, c.height).data;
+        const rgb = [1, 3, 5].map((i) => parseInt(cut.slice(i, i + 2), 16));
+        let red = 0, dark = 0;
+        for (let i = 0; i < px.length; i += 4) {
+          if (Math.abs(px[i] - rgb[0]) < 40 && Math.abs(px[i + 1] - rgb[1]) < 40 && Math.abs(px[i + 2] - rgb[2]) < 40) red++;
+          if (px[i] < 80 && px[i + 1] < 80 && px[i + 2] < 80) dark++;  // the legend's text
+        }
+        return { red, dark, w: c.width };
+      }, { b64, cut: CUT });
+      await page.close();
+      assert.equal(counts.w, 600);
+      assert.ok(counts.red > 4 * 500, `${km} km: cut-coloured pixels ${counts.red}`);  // (4 sides of ~545 px)
+      assert.ok(counts.dark > 200, `${km} km: legend pixels ${counts.dark}`);
+    }
+  } finally {
+    await browser.close();
+  }
+});

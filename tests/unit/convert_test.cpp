@@ -256,3 +256,17 @@ TEST(Convert, ATapeWithErrorsIsRefusedUnlessForced) {
         }
     }
 }
+
+// ISO's program end (64) has a word in iso6582's EIA table (M30): the EIA written ends the program, and reads back
+// as 64.
+TEST(Convert, IsoProgramEndIsM30InEia) {
+    const Profile iso = *builtin_profile("iso6582");
+    ConvertOptions o;
+    o.to = OutputFormat::Eia;
+    o.target = iso;
+    const ConvertResult r = convert_tape("7\n+1000+0\n8\n64\n", setup_of(InputFormat::Essi, iso), o);
+    EXPECT_EQ(r.text, "%\nG91\nM70\nG01 X100 Y0\nM71\nM30\n");
+    EXPECT_TRUE(r.diagnostics.empty()) << r.diagnostics.front().message;
+    const CheckResult back = check_tape(r.text, iso, InputFormat::Eia);
+    EXPECT_TRUE(back.diagnostics.empty()) << back.diagnostics.front().message;
+}
