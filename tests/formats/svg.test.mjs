@@ -19,6 +19,25 @@ async function render(tape, extra = []) {
   return { text, svg: (await parseStringPromise(text)).svg, json, out };
 }
 
+// A page with window.imagePixels(src): the image's RGBA pixels as a canvas draws them, and its size.
+async function pixelPage(browser) {
+  const page = await browser.newPage();
+  await page.evaluate(() => {
+    window.imagePixels = async (src) => {
+      const img = new Image();
+      img.src = src;
+      await img.decode();
+      const c = document.createElement('canvas');
+      c.width = img.naturalWidth;
+      c.height = img.naturalHeight;
+      const g = c.getContext('2d');
+      g.drawImage(img, 0, 0);
+      return { px: g.getImageData(0, 0, c.width, c.height).data, w: c.width, h: c.height };
+    };
+  });
+  return page;
+}
+
 const all = (node, name) => {  // every element `name` below node
   const found = [];
   (function walk(n) {
@@ -96,18 +115,11 @@ test('Chromium draws the SVG: pixels of the cut colour and the pierce colour app
   const { text } = await render('examples/absolute_offset.esi', ['--width', '800']);
   const browser = await chromium.launch({ executablePath: chromiumPath, args: ['--no-sandbox'] });
   try {
-    const page = await browser.newPage();
-    const counts = await page.evaluate(async ({ svgText, colors }) => {
-      const img = new Image();
-      img.src = 'data:image/svg+xml;base64,' + btoa(unescape(encodeURIComponent(svgText)));
-      await img.decode();
-      const c = document.createElement('canvas');
-      c.width = img.naturalWidth;
-      c.height = img.naturalHeight;
-      const g = c.getContext('2d');
-      g.drawImage(img, 0, 0);
-      const px = g.getImageData(0, 0, c.width, c.height).data;
-      const out = { size: [c.width, c.height], white: 0 };
+    const page = await pixelPage(browser);
+    const src = 'data:image/svg+xml;base64,' + Buffer.from(text).toString('base64');
+    const counts = await page.evaluate(async ({ src, colors }) => {
+      const { px, w, h } = await window.imagePixels(src);
+      const out = { size: [w, h], white: 0 };
       const rgb = colors.map((h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 16)));
       colors.forEach((h) => { out[h] = 0; });
       for (let i = 0; i < px.length; i += 4) {
@@ -117,7 +129,7 @@ test('Chromium draws the SVG: pixels of the cut colour and the pierce colour app
         });
       }
       return out;
-    }, { svgText: text, colors: [CUT, PIERCE] });
+    }, { src, colors: [CUT, PIERCE] });
     assert.equal(counts.size[0], 800);
     assert.ok(counts[CUT] > 500, `cut-coloured pixels: ${counts[CUT]}`);
     assert.ok(counts[PIERCE] > 10, `pierce-coloured pixels: ${counts[PIERCE]}`);
@@ -144,24 +156,16 @@ test('PNG of tapes of 1 km and 100 km: the cut shows, the legend is drawn', { sk
       assert.equal(r.status, 0, r.stderr);
       assert.doesNotMatch(r.stderr, /WARNING|failed/, r.stderr);
       const b64 = fs.readFileSync(out).toString('base64');
-      const page = await browser.newPage();
+      const page = await pixelPage(browser);
       const counts = await page.evaluate(async ({ b64, cut }) => {
-        const img = new Image();
-        img.src = 'data:image/png;base64,' + b64;
-        await img.decode();
-        const c = document.createElement('canvas');
-        c.width = img.naturalWidth;
-        c.height = img.naturalHeight;
-        const g = c.getContext('2d');
-        g.drawImage(img, 0, 0);
-        const px = g.getImageData(0, 0, c.width, c.height).data;
+        const { px, w } = await window.imagePixels('data:image/png;base64,' + b64);
         const rgb = [1, 3, 5].map((i) => parseInt(cut.slice(i, i + 2), 16));
         let red = 0, dark = 0;
         for (let i = 0; i < px.length; i += 4) {
           if (Math.abs(px[i] - rgb[0]) < 40 && Math.abs(px[i + 1] - rgb[1]) < 40 && Math.abs(px[i + 2] - rgb[2]) < 40) red++;
           if (px[i] < 80 && px[i + 1] < 80 && px[i + 2] < 80) dark++;  // the legend's text
         }
-        return { red, dark, w: c.width };
+        return { red, dark, w };
       }, { b64, cut: CUT });
       await page.close();
       assert.equal(counts.w, 600);
