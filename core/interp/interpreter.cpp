@@ -152,7 +152,7 @@ private:
     }
     void set_tools(std::uint8_t tools) { tools_ = tools; }
     void check_table(const MotionRecord& m, const Block& b);
-    void check_table_box(const Box& box, Point end, const Block& b, Msg what);
+    void check_table_box(const Box& box, const Block& b, Msg what);
 
     // The function's name in the reader's language (a message argument).
     [[nodiscard]] MessageArgs::Arg function_name(int code) const {
@@ -659,7 +659,7 @@ void Machine::select_tool_offset(const Block& b, int code) {
     if (stats_) stats_->set_tool_offset(next);
     if (!profile_.table) return;
     const Point at = placement_.machine(to_mm(pos_[0]), tool_offset_);
-    check_table_box(Box::of(at, at), at, b, Msg::InterpToolOffsetOffTable);
+    check_table_box(Box::of(at, at), b, Msg::InterpToolOffsetOffTable);
 }
 
 namespace {
@@ -683,13 +683,17 @@ void Machine::check_table(const MotionRecord& m, const Block& b) {
         }
         if (table_holds(*profile_.table, placement_.moved(hull, tool_offset_))) return;
     }
-    check_table_box(placement_.machine_box(m, tool_offset_), placement_.machine(m.end, tool_offset_), b,
-                    Msg::InterpMotionOffTable);
+    check_table_box(placement_.machine_box(m, tool_offset_), b, Msg::InterpMotionOffTable);
+    // The carriage is on the table again once a motion ends on it (its box need not be), so that the next motion
+    // that leaves it is reported too.
+    if (!inside_table_) {
+        const Point end = placement_.machine(m.end, tool_offset_);
+        inside_table_ = table_holds(*profile_.table, Box::of(end, end));
+    }
 }
 
-// E401 at the block that leaves the table (its machine box not on it) while the carriage was on it; the carriage
-// is on it again once a motion ends on it, so that the next exit is reported too.
-void Machine::check_table_box(const Box& box, Point end, const Block& b, Msg what) {
+// E401 at the block that leaves the table (its machine box not on it) while the carriage was on it.
+void Machine::check_table_box(const Box& box, const Block& b, Msg what) {
     const TableLimits& t = *profile_.table;
     const bool inside = table_holds(t, box);
     if (!inside && inside_table_) {
@@ -702,7 +706,7 @@ void Machine::check_table_box(const Box& box, Point end, const Block& b, Msg wha
              {what, f3(box.min_x), f3(box.max_x), f3(box.min_y), f3(box.max_y), f3(t.min_x_mm), f3(t.max_x_mm),
               f3(t.min_y_mm), f3(t.max_y_mm)});
     }
-    inside_table_ = table_holds(t, Box::of(end, end));
+    inside_table_ = inside;
 }
 
 // The block after 83 (zero offset): its two words are the new origin. Returns true when the block was that
