@@ -57,6 +57,8 @@ bench: setup
 	build/native/bin/essi_bench
 	cmake --build --preset native -j$(JOBS) --target essi essi_gen_batch essi_gen_nest
 	scripts/bench_batch
+	@echo "== peak memory of essi check, every rule (bound: 4 bytes per input byte + 64 MB) =="
+	scripts/bench_memory
 	@echo "== essi check with every rule of the cut plan, 100 MB nest (goal: 150 MB/s) =="
 	PROFILE=tests/bench/every_rule.profile.json GOAL_MBPS=150 scripts/bench_compare 100
 	cmake --preset wasm
