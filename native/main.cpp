@@ -59,6 +59,42 @@ constexpr int kExitUsage = 2;  // bad arguments, unreadable file or profile, out
 
 constexpr int kJsonIndent = 2;
 
+// The transform of every SIZE option (--max-size, --max-body, --max-store): a whole number
+// of bytes with an optional 1024-based suffix (B, K/KB/KiB, M/MB/MiB, G/GB/GiB, T, P, E; any case), rewritten as
+// the number of bytes. A sign, a fraction or a value over 2^64 - 1 is an error (CLI11's AsSizeValue read "-1" and
+// "18446744073709551616" as the largest value: no limit).
+std::string parse_size_option(std::string& text) {
+    const std::string usage = "'" + essi::display_text(text.substr(0, 40)) +
+                              "' is not a size: expected a whole number of bytes up to 18446744073709551615, "
+                              "with an optional suffix KB, MB, GB, TB, PB or EB (1024-based)";
+    std::size_t i = 0;
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    std::uint64_t value = 0;
+    const std::size_t digits_at = i;
+    for (; i < text.size() && text[i] >= '0' && text[i] <= '9'; ++i) {
+        const unsigned digit = static_cast<unsigned>(text[i] - '0');
+        if (value > (UINT64_MAX - digit) / 10) return usage;
+        value = value * 10 + digit;
+    }
+    if (i == digits_at) return usage;
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    std::string unit;
+    for (; i < text.size() && !std::isspace(static_cast<unsigned char>(text[i])); ++i) unit += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i])));
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    if (i != text.size()) return usage;
+    static constexpr std::string_view kPrefixes = "kmgtpe";
+    int shift = 0;
+    if (!unit.empty() && unit != "b") {
+        const std::size_t p = kPrefixes.find(unit[0]);
+        const std::string_view rest = std::string_view(unit).substr(1);
+        if (p == std::string_view::npos || !(rest.empty() || rest == "b" || rest == "i" || rest == "ib")) return usage;
+        shift = 10 * static_cast<int>(p + 1);
+    }
+    if (shift > 0 && value > (UINT64_MAX >> shift)) return usage;
+    text = std::to_string(value << shift);
+    return {};
+}
+
 void out(std::string_view s) { std::fwrite(s.data(), 1, s.size(), stdout); }
 
 void err(std::string_view s) {
@@ -479,7 +515,7 @@ int main(int argc, char** argv) {
     const auto add_max_size_option = [](CLI::App* sub, std::uint64_t& value) {
         sub->add_option("--max-size", value,
                         "Largest input read, file or standard input (suffixes KB MB GB: 1024-based; default 1GB)")
-            ->transform(CLI::AsSizeValue(false))
+            ->transform(CLI::Validator(parse_size_option, "", ""))
             ->type_name("SIZE");
     };
 
@@ -621,7 +657,7 @@ int main(int argc, char** argv) {
                       "Folder of the share store (SQLite); default $XDG_DATA_HOME/essikit, else ./essi-data")
         ->type_name("DIR");
     const auto size_option = [serve](const char* name, std::uint64_t& value, const char* help) {
-        serve->add_option(name, value, help)->transform(CLI::AsSizeValue(false))->type_name("SIZE")->capture_default_str();
+        serve->add_option(name, value, help)->transform(CLI::Validator(parse_size_option, "", ""))->type_name("SIZE")->capture_default_str();
     };
     size_option("--max-body", serve_opts.max_body, "Largest request body in bytes (suffixes KB MB GB: 1024-based)");
     size_option("--max-store", serve_opts.max_store, "Largest total size of the stored shares (oldest go first)");
