@@ -74,9 +74,10 @@ HostPolicy host_policy(const ServeOptions& o) {
 void add_policies(HardenedServer& server, const ServeOptions& o) {
     // The error response of a refused request (its body, if any, is not read), or 0.
     const auto refuse = [hosts = host_policy(o)](const httplib::Request& req, httplib::Response& res) {
-        const Refusal r = check_request(req, hosts);
+        const Refusal r = check_request(req, hosts, method_refusal);
         if (r.status == 0) return 0;
         json_error(res, r.status, r.message);
+        if (!r.allow.empty()) res.set_header("Allow", r.allow);
         close_connection_after_response();
         return r.status;
     };
@@ -88,6 +89,7 @@ void add_policies(HardenedServer& server, const ServeOptions& o) {
         const int status = refuse(req, res);
         return status ? status : 100;
     });
+    server.set_request_setup(normalize_request);
     server.set_response_finisher([](const httplib::Request&, httplib::Response& res) { add_security_headers(res); });
     server.set_exception_handler([](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
         std::string what = "unknown exception";

@@ -194,31 +194,6 @@ void delete_share(ShareStore& store, const httplib::Request& req, httplib::Respo
     }
 }
 
-void add_method_errors(httplib::Server& server) {
-    const auto not_allowed = [](const char* allowed) {
-        return [allowed](const httplib::Request& req, httplib::Response& res) {
-            res.set_header("Allow", allowed);
-            json_error(res, 405, req.method + " is not allowed on " + req.path + "; use " + allowed);
-            close_connection_after_response();
-        };
-    };
-    const auto no_endpoint = [](const httplib::Request& req, httplib::Response& res) {
-        json_error(res, 404, "no API endpoint " + req.path);
-        close_connection_after_response();
-    };
-    const auto ignore_body = [](auto handler) {
-        return [handler](const httplib::Request& req, httplib::Response& res, const Reader&) { handler(req, res); };
-    };
-    server.Get("/api/check", not_allowed("POST"));
-    server.Get("/api/convert", not_allowed("POST"));
-    server.Put("/api/check", ignore_body(not_allowed("POST")));
-    server.Delete("/api/check", ignore_body(not_allowed("POST")));
-    server.Get("/api/share", not_allowed("POST"));
-    server.Post(R"(/api/share/.*)", ignore_body(not_allowed("GET, DELETE")));
-    server.Get(R"(/api/.*)", no_endpoint);
-    server.Post(R"(/.*)", ignore_body(no_endpoint));
-}
-
 }  // namespace
 
 void json_error(httplib::Response& res, int status, const std::string& message) {
@@ -251,7 +226,20 @@ void add_api_routes(httplib::Server& server, const std::shared_ptr<ApiContext>& 
         delete_share(*ctx->store, req, res);
         close_connection_after_response();  // a DELETE body (if any) is not read
     });
-    add_method_errors(server);
+}
+
+Refusal method_refusal(const httplib::Request& req) {
+    const std::string& p = req.path;
+    const auto only = [&req](std::initializer_list<const char*> methods, const char* allow) -> Refusal {
+        for (const char* m : methods)
+            if (req.method == m) return {};
+        return {405, req.method + " is not allowed on " + req.path + "; use " + allow, allow};
+    };
+    if (p == "/api/health") return only({"GET", "HEAD"}, "GET, HEAD");
+    if (p == "/api/check" || p == "/api/convert" || p == "/api/share") return only({"POST"}, "POST");
+    if (p.rfind("/api/share/", 0) == 0 && p.find('/', 11) == std::string::npos) return only({"GET", "HEAD", "DELETE"}, "GET, HEAD, DELETE");
+    if (p == "/api" || p.rfind("/api/", 0) == 0) return {404, "no API endpoint " + p, ""};
+    return only({"GET", "HEAD"}, "GET, HEAD");  // the viewer's files and the examples
 }
 
 }  // namespace essi::native

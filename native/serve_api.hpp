@@ -11,6 +11,7 @@
 #include <string>
 
 #include "serve_limits.hpp"
+#include "serve_security.hpp"
 #include "share_store.hpp"
 
 namespace essi::native {
@@ -25,6 +26,10 @@ struct ApiContext {
 };
 
 void add_api_routes(httplib::Server& server, const std::shared_ptr<ApiContext>& ctx);
+
+// The methods each path takes, checked before routing: 405 with an Allow header for another method on an API
+// endpoint or a file, 404 for a path under /api/ that is no endpoint; status 0 when the request may be routed.
+[[nodiscard]] Refusal method_refusal(const httplib::Request& req);
 
 // A JSON error body {"error","status"}; never throws on bytes that are not UTF-8 (they become U+FFFD).
 void json_error(httplib::Response& res, int status, const std::string& message);

@@ -193,7 +193,7 @@ void HardenedServer::serve_connection(socket_t sock) {
 bool HardenedServer::serve_request(httplib::Stream& strm, bool last) {
     t_close_after = false;
     bool closed = false;
-    const bool ok = process_request(strm, last, closed, nullptr);
+    const bool ok = process_request(strm, last, closed, setup_);
     if (t_worker) t_worker->release();  // (the guard took a worker slot for the request)
     t_worker = nullptr;
     return ok && !closed && !t_close_after;

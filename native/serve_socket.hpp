@@ -13,6 +13,7 @@
 #include <httplib.h>
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -38,6 +39,8 @@ public:
     void set_request_guard(HandlerWithResponse guard) { guard_ = std::move(guard); }
     // Runs on every response just before it is written (headers common to all responses).
     void set_response_finisher(Handler finisher) { finisher_ = std::move(finisher); }
+    // Runs on every request once its headers are read, before anything else (may rewrite headers).
+    void set_request_setup(std::function<void(httplib::Request&)> setup) { setup_ = std::move(setup); }
     // After bind: a listen backlog of SOMAXCONN instead of cpp-httplib 0.11's 5, so that a burst of connections
     // waits in the kernel's queue instead of having its SYNs dropped (each retried only after 1 s, then 3 s).
     void widen_backlog();
@@ -56,6 +59,7 @@ private:
     Semaphore workers_;
     HandlerWithResponse guard_;
     Handler finisher_;
+    std::function<void(httplib::Request&)> setup_;
 };
 
 // Ends the connection after the current response (a request refused before its body was read).
