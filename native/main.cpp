@@ -59,7 +59,7 @@ constexpr int kExitUsage = 2;  // bad arguments, unreadable file or profile, out
 
 constexpr int kJsonIndent = 2;
 
-// The transform of every SIZE option (--max-size, --max-body, --max-store): a whole number
+// The transform of every SIZE option (--max-size, --max-body, --max-store, --min-transfer-rate): a whole number
 // of bytes with an optional 1024-based suffix (B, K/KB/KiB, M/MB/MiB, G/GB/GiB, T, P, E; any case), rewritten as
 // the number of bytes. A sign, a fraction or a value over 2^64 - 1 is an error (CLI11's AsSizeValue read "-1" and
 // "18446744073709551616" as the largest value: no limit).
@@ -661,6 +661,9 @@ int main(int argc, char** argv) {
     };
     size_option("--max-body", serve_opts.max_body, "Largest request body in bytes (suffixes KB MB GB: 1024-based)");
     size_option("--max-store", serve_opts.max_store, "Largest total size of the stored shares (oldest go first)");
+    size_option("--min-transfer-rate", serve_opts.min_transfer_rate,
+                "Slowest average rate, per second, of a request body or a response after the first --request-timeout "
+                "seconds (default 1MB)");
     const auto limit_option = [serve](const char* name, auto& value, int max, const char* help) {
         serve->add_option(name, value, help)->check(CLI::Range(1, max))->capture_default_str();
     };
@@ -669,7 +672,8 @@ int main(int argc, char** argv) {
     limit_option("--max-client-connections", serve_opts.max_client_connections, 100000,
                  "Connections open at once from one client address (more get 429)");
     limit_option("--request-timeout", serve_opts.request_timeout_s, 3600,
-                 "Seconds a client has to send a request (plus 1 s per 64 KB of body)");
+                 "Seconds a client has to send its request line and headers (and the grace before --min-transfer-rate)");
+    limit_option("--body-timeout", serve_opts.body_timeout_s, 86400, "Seconds a request body may take in all");
     limit_option("--max-large-requests", serve_opts.max_large_requests, 1024,
                  "Requests with a body over 1 MB handled at once (bounds the server's memory)");
     serve->add_option("--allowed-host", serve_opts.allowed_hosts,

@@ -59,6 +59,8 @@ ConnectionLimits connection_limits(const ServeOptions& o) {
     l.max_client_connections = std::max<std::size_t>(o.max_client_connections, 1);
     l.threads = static_cast<std::size_t>(std::max(o.threads, 1));
     l.request_timeout_s = std::max(o.request_timeout_s, 1);
+    l.min_rate = static_cast<double>(std::max<std::uint64_t>(o.min_transfer_rate, 1));
+    l.body_timeout_s = std::max(o.body_timeout_s, 1);
     return l;
 }
 
@@ -106,6 +108,10 @@ void add_policies(HardenedServer& server, const ServeOptions& o) {
     });
     server.set_error_handler([](const httplib::Request&, httplib::Response& res) {
         if (!res.body.empty()) return;
+        if (const auto failure = read_failure()) {  // the request line or headers hit a limit
+            json_error(res, failure->status, failure->message);
+            return;
+        }
         const int s = res.status;
         json_error(res, s, s == 404 ? "not found" : s == 400 ? "bad request" : s == 413 ? "request too large" : "HTTP error " + std::to_string(s));
     });

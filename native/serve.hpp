@@ -35,7 +35,9 @@ struct ServeOptions {
     unsigned share_rate = 30;                // uploads per minute per client address (0 = no limit)
     std::size_t max_connections = 256;
     std::size_t max_client_connections = 32;
-    int request_timeout_s = 10;
+    int request_timeout_s = 10;              // the request line and headers; the grace before min_transfer_rate
+    std::uint64_t min_transfer_rate = 1ull << 20;  // bytes per second of a body or a response (on average)
+    int body_timeout_s = 120;                // a whole body
     std::size_t max_large_requests = 2;      // requests with a body over kLargeBody handled at once
 };
 

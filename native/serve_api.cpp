@@ -31,9 +31,11 @@ std::string dump(const nlohmann::json& j, int indent = -1) {
     return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-// The Content-Length the client declared; nullopt for a chunked body (size unknown until read).
+// The length of the body the request declares: its Content-Length, nullopt for a chunked body (unknown until
+// read), 0 when it declares neither (RFC 9112: no body). check_request refused every other framing.
 std::optional<std::uint64_t> declared_length(const httplib::Request& req) {
-    if (!req.has_header("Content-Length")) return std::nullopt;
+    if (req.has_header("Transfer-Encoding")) return std::nullopt;
+    if (!req.has_header("Content-Length")) return 0;
     return std::strtoull(req.get_header_value("Content-Length").c_str(), nullptr, 10);
 }
 
@@ -48,7 +50,8 @@ bool is_large(const httplib::Request& req) {
     return !n || *n > kLargeBody;
 }
 
-// The body, read here (not parsed); nullopt with the error response set when it is over max_body or cut short.
+// The body, read here (not parsed); nullopt with the error response set when it is over max_body, too slow or
+// cut short.
 std::optional<std::string> read_body(const httplib::Request& req, httplib::Response& res, const Reader& reader,
                                      std::uint64_t max_body) {
     const auto n = declared_length(req);
@@ -57,6 +60,10 @@ std::optional<std::string> read_body(const httplib::Request& req, httplib::Respo
         return std::nullopt;
     }
     std::string body;
+    if (n && *n == 0) {
+        body_read_to_end();
+        return body;
+    }
     if (n) body.reserve(static_cast<std::size_t>(*n));
     bool over = false;
     const bool ok = reader([&](const char* data, std::size_t len) {
@@ -69,10 +76,12 @@ std::optional<std::string> read_body(const httplib::Request& req, httplib::Respo
         return std::nullopt;
     }
     if (!ok) {
-        json_error(res, 400, "the request body was cut short");
+        const auto why = read_failure();
+        json_error(res, why ? why->status : 400, why ? why->message : "the request body was cut short");
         close_connection_after_response();
         return std::nullopt;
     }
+    body_read_to_end();
     return body;
 }
 

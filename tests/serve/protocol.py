@@ -1,15 +1,22 @@
 #!/usr/bin/env python3
-"""`essi serve` against malformed HTTP on raw loopback sockets (docs/security.md): the body's framing must be
-unambiguous; every method an endpoint does not take gets 405 with Allow; Accept-Encoding is read with its q-values.
-Loopback only; stops by itself (90 s alarm). Usage: protocol.py PATH/TO/essi"""
+"""`essi serve` against malformed and greedy HTTP on raw loopback sockets (docs/security.md): after a request the
+server refused by itself (400, 414), after a header timeout or an unread body the connection is closed and its
+remaining bytes are never answered as a second request; headers are bounded in bytes and lines (431); a body must
+arrive whole within --body-timeout even at a rate above --min-transfer-rate, so a slow sender frees its
+large-request slot in time; the body's framing must be unambiguous; every method an endpoint does not take gets 405
+with Allow; Accept-Encoding is read with its q-values. Loopback only; stops by itself (90 s alarm).
+Usage: protocol.py PATH/TO/essi"""
 import gzip
 import signal
 import socket
 import sys
+import threading
 import time
 
 from serve_common import Report, start_server, stop_server
 
+REQUEST_TIMEOUT_S = 2
+BODY_TIMEOUT_S = 3
 
 
 def exchange(port, data, wait_s=6.0):
@@ -63,6 +70,37 @@ def get(port, path, extra=""):
     return f"GET {path} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\n{extra}\r\n".encode()
 
 
+def connection_endings(port, report):
+    health = get(port, "/api/health")
+    # A request line httplib cannot parse (four words), then a valid request on the same connection.
+    got, closed, _ = exchange(port, b"GET /x HTTP/1.1 junk\r\nHost: 127.0.0.1\r\n\r\n" + health)
+    report.check(statuses(got) == [400] and closed, f"bad request line then a request: answers {statuses(got)} (one 400), closed: {closed}")
+    # A request line over 8 KB (414) whose "body" is another request.
+    smuggled = b"GET /api/health HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n"
+    long_line = b"GET /" + b"a" * 9000 + b" HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: %d\r\n\r\n" % len(smuggled) + smuggled
+    got, closed, _ = exchange(port, long_line)
+    report.check(statuses(got) == [414] and closed, f"request line of 9 KB then bytes: answers {statuses(got)} (one 414), closed: {closed}")
+    # A GET with a body that is another request: the body is not read, so the connection ends after the answer.
+    got, closed, _ = exchange(port, get(port, "/api/health", f"Content-Length: {len(smuggled)}\r\n") + smuggled)
+    report.check(statuses(got) == [200] and closed, f"GET with a body holding a request: answers {statuses(got)} (one 200), closed: {closed}")
+    # Keep-alive still works for requests without a body.
+    got, closed, _ = exchange(port, health + health + get(port, "/api/health", "Connection: close\r\n"))
+    report.check(statuses(got) == [200, 200, 200], f"three pipelined GETs: answers {statuses(got)}")
+
+
+def header_limits(port, report):
+    # Headers sent in part, then nothing: 408 after --request-timeout, and the connection closed at once.
+    got, closed, seconds = exchange(port, b"GET /api/health HTTP/1.1\r\nHost: 127.0.0.1\r\n", wait_s=REQUEST_TIMEOUT_S + 4)
+    report.check(statuses(got) == [408] and b"--request-timeout" in body_of(got) and closed and seconds < REQUEST_TIMEOUT_S + 1.5,
+                 f"headers cut short: {statuses(got)} {body_of(got)[:90]!r}, closed after {seconds:.1f} s "
+                 f"(--request-timeout {REQUEST_TIMEOUT_S})")
+    lines = b"".join(b"X-Pad-%d: a\r\n" % i for i in range(200))
+    got, closed, _ = exchange(port, b"GET /api/health HTTP/1.1\r\nHost: 127.0.0.1\r\n" + lines + b"\r\n")
+    report.check(statuses(got) == [431] and closed, f"200 header lines: {statuses(got)} (431), closed: {closed}")
+    got, closed, _ = exchange(port, b"GET /api/health HTTP/1.1\r\nHost: 127.0.0.1\r\nX-Big: " + b"a" * 100000 + b"\r\n\r\n")
+    report.check(statuses(got) == [431] and closed, f"a header line of 100 KB: {statuses(got)} (431), closed: {closed}")
+
+
 def framing(port, report):
     def post(headers, body=b"7\n"):
         return (f"POST /api/check HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/octet-stream\r\n{headers}\r\n").encode() + body
@@ -107,14 +145,74 @@ def encodings(port, report):
         report.check(statuses(got) == [200] and ok, f"Accept-Encoding: {value} -> Content-Encoding {encoding} (want {'gzip' if gzipped else 'none'})")
 
 
+def slow_body(port, report):
+    """A body at 4 KB/s (above --min-transfer-rate 1KB) declaring 1 MB: cut off with 408 after --body-timeout."""
+    with socket.create_connection(("127.0.0.1", port), timeout=5) as s:
+        s.sendall(b"POST /api/check HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/octet-stream\r\n"
+                  b"Content-Length: 1000000\r\n\r\n")
+        s.setblocking(False)
+        t0, got, end = time.monotonic(), b"", None
+        while time.monotonic() - t0 < BODY_TIMEOUT_S + 4 and end is None:
+            try:
+                s.send(b"+100+0\n" * 58)
+            except OSError:
+                pass
+            try:
+                chunk = s.recv(4096)
+                got += chunk
+                if not chunk:
+                    end = time.monotonic() - t0
+            except BlockingIOError:
+                pass
+            except OSError:
+                end = time.monotonic() - t0
+            time.sleep(0.1)
+    report.check(statuses(got) == [408] and b"--body-timeout" in body_of(got) and end is not None and BODY_TIMEOUT_S - 0.5 < end < BODY_TIMEOUT_S + 2,
+                 f"a body at 4 KB/s: {statuses(got)} {body_of(got)[:80]!r}, closed after {end} s (--body-timeout {BODY_TIMEOUT_S})")
+
+
+def large_slot(port, report):
+    """--max-large-requests 1: while a slow sender holds the one slot, another 2 MB check waits for it and is
+    answered once the slow one is cut off, within --body-timeout (not after the slow body's 1 MB at 4 KB/s)."""
+    stop = threading.Event()
+
+    def hog():
+        with socket.create_connection(("127.0.0.1", port), timeout=5) as s:
+            s.sendall(b"POST /api/check HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/octet-stream\r\n"
+                      b"Content-Length: 3000000\r\n\r\n")
+            while not stop.is_set():
+                try:
+                    s.sendall(b"+100+0\n" * 58)
+                except OSError:
+                    return
+                time.sleep(0.1)
+
+    t = threading.Thread(target=hog)
+    t.start()
+    time.sleep(0.5)
+    body = b"+100+0\n" * 300000
+    request = (f"POST /api/check HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/octet-stream\r\n"
+               f"Content-Length: {len(body)}\r\nConnection: close\r\n\r\n").encode() + body
+    got, _, seconds = exchange(port, request, wait_s=BODY_TIMEOUT_S + 6)
+    stop.set()
+    t.join()
+    report.check(statuses(got) == [200] and seconds < BODY_TIMEOUT_S + 3,
+                 f"a 2 MB check behind a slow sender holding the only large slot: {statuses(got)} after {seconds:.1f} s")
+
+
 def main(essi):
     signal.alarm(90)
     report = Report()
-    proc, port, _ = start_server(essi, "--max-body", "4MB")
+    proc, port, _ = start_server(essi, "--request-timeout", str(REQUEST_TIMEOUT_S), "--body-timeout", str(BODY_TIMEOUT_S),
+                                 "--min-transfer-rate", "1KB", "--max-large-requests", "1", "--max-body", "4MB")
     try:
+        connection_endings(port, report)
+        header_limits(port, report)
         framing(port, report)
         methods(port, report)
         encodings(port, report)
+        slow_body(port, report)
+        large_slot(port, report)
     finally:
         stop_server(proc)
     return report.finish()
