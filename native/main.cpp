@@ -673,9 +673,14 @@ int main(int argc, char** argv) {
                  "Connections open at once from one client address (more get 429)");
     limit_option("--request-timeout", serve_opts.request_timeout_s, 3600,
                  "Seconds a client has to send its request line and headers (and the grace before --min-transfer-rate)");
-    limit_option("--body-timeout", serve_opts.body_timeout_s, 86400, "Seconds a request body may take in all");
+    limit_option("--body-timeout", serve_opts.body_timeout_s, 86400,
+                 "Seconds a request body may take in all; also the longest wait for a slot (then 503)");
     limit_option("--max-large-requests", serve_opts.max_large_requests, 1024,
                  "Requests with a body over 1 MB handled at once (bounds the server's memory)");
+    limit_option("--max-checks", serve_opts.max_checks, 1024,
+                 "Checks and conversions running at once, whatever the size of their tape (bounds the server's memory)");
+    limit_option("--max-diagnostics", serve_opts.max_diagnostics, 100000000,
+                 "Diagnostics in an /api/check or /api/convert answer (the rest are counted: diagnostics_omitted)");
     serve->add_option("--allowed-host", serve_opts.allowed_hosts,
                       "A Host name served besides localhost, 127.0.0.1, ::1 and --host (repeatable; DNS rebinding)")
         ->type_name("NAME");

@@ -10,6 +10,7 @@
 #include <malloc.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -139,8 +140,14 @@ void configure_server(HardenedServer& server, const ServeOptions& o, std::shared
     server.set_payload_max_length(static_cast<std::size_t>(o.max_body));
     server.set_tcp_nodelay(true);  // no 40 ms Nagle + delayed-ACK stall between the headers and the body
     add_policies(server, o);
-    add_api_routes(server, std::make_shared<ApiContext>(std::move(store), o.max_body,
-                                                        std::max<std::size_t>(o.max_large_requests, 1), o.share_rate));
+    ApiLimits limits;
+    limits.max_body = o.max_body;
+    limits.max_large_requests = std::max<std::size_t>(o.max_large_requests, 1);
+    limits.max_checks = std::max<std::size_t>(o.max_checks, 1);
+    limits.max_diagnostics = o.max_diagnostics;
+    limits.share_rate = o.share_rate;
+    limits.slot_wait = std::chrono::seconds(std::max(o.body_timeout_s, 1));
+    add_api_routes(server, std::make_shared<ApiContext>(std::move(store), limits));
     add_static_routes(server, StaticFiles{o.web_root, o.examples_dir, o.share_store_js});
 }
 

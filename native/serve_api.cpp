@@ -2,9 +2,12 @@
 #include "tape_request.hpp"
 
 #if defined(ESSI_HAVE_HTTPLIB)
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -41,6 +44,14 @@ std::optional<std::uint64_t> declared_length(const httplib::Request& req) {
 
 void too_large(httplib::Response& res, std::uint64_t max_body) {
     json_error(res, 413, "request body too large: the limit is " + std::to_string(max_body) + " bytes (--max-body)");
+    close_connection_after_response();
+}
+
+// A slot that stayed taken for as long as a request may wait: 503 with Retry-After, the body left unread.
+void busy(httplib::Response& res, const std::string& slots, std::chrono::milliseconds waited) {
+    res.set_header("Retry-After", "5");
+    json_error(res, 503, "server busy: every slot for " + slots + " stayed taken for " +
+                             std::to_string(std::chrono::duration_cast<std::chrono::seconds>(waited).count()) + " s; retry later");
     close_connection_after_response();
 }
 
@@ -85,6 +96,12 @@ std::optional<std::string> read_body(const httplib::Request& req, httplib::Respo
     return body;
 }
 
+// The response's body without a copy (Response::set_content copies its string).
+void set_body(httplib::Response& res, std::string&& text, const char* type) {
+    res.body = std::move(text);
+    res.set_header("Content-Type", type);
+}
+
 std::string param_or(const httplib::Request& req, const char* key, const char* fallback) {
     return req.has_param(key) ? req.get_param_value(key) : std::string(fallback);
 }
@@ -110,20 +127,23 @@ std::optional<TapeRequest> tape_request(const httplib::Request& req, httplib::Re
     return r;
 }
 
-void check_tape(const httplib::Request& req, httplib::Response& res, const std::string& body) {
+void check_tape(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& body) {
     const auto request = tape_request(req, res);
     if (!request) return;
     FileReport report;
     report.path = param_or(req, "name", "-");
     report.result = check_tape_pipelined(body, request->setup(body));
+    limit_diagnostics(report, limits.max_diagnostics);
     const FileReport one[] = {std::move(report)};
-    res.set_content(dump(report_to_json(one, request->profile_name), 2) + "\n", "application/json");
+    std::string text = dump(report_to_json(one, request->profile_name), 2);
+    text += '\n';
+    set_body(res, std::move(text), "application/json");
 }
 
 // POST /api/convert?to=essi|eia|gcode&profile=P|auto&to_profile=Q&absolute=1&input=...&format=json: the
 // converted program as text/plain (the count of warnings in X-Essi-Warnings), or with format=json
 // {"text", "diagnostics"}; 422 with the diagnostics when the tape has errors (as `essi convert` exits 1).
-void convert(const httplib::Request& req, httplib::Response& res, const std::string& body) {
+void convert(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& body) {
     const auto request = tape_request(req, res);
     if (!request) return;
     const std::string to = param_or(req, "to", "");
@@ -140,16 +160,23 @@ void convert(const httplib::Request& req, httplib::Response& res, const std::str
         options.target = *target;
     }
     options.absolute = param_or(req, "absolute", "0") == "1";
-    const ConvertResult r = convert_tape(body, setup, options);
-    const nlohmann::json diagnostics = diagnostics_to_json(r.diagnostics);
-    if (!r.ok()) {
+    ConvertResult r = convert_tape(body, setup, options);
+    const bool ok = r.ok();
+    const std::size_t all = r.diagnostics.size();
+    if (all > limits.max_diagnostics) r.diagnostics.resize(limits.max_diagnostics);  // (sorted: the first ones)
+    nlohmann::json out{{"diagnostics", diagnostics_to_json(r.diagnostics)}};
+    if (all > limits.max_diagnostics) out["diagnostics_omitted"] = all - limits.max_diagnostics;
+    if (!ok) {
         res.status = 422;
-        return res.set_content(dump({{"error", "the tape has errors"}, {"diagnostics", diagnostics}}), "application/json");
+        out["error"] = "the tape has errors";
+        return set_body(res, dump(out), "application/json");
     }
-    if (param_or(req, "format", "text") == "json")
-        return res.set_content(dump({{"text", r.text}, {"diagnostics", diagnostics}}), "application/json");
-    res.set_header("X-Essi-Warnings", std::to_string(r.diagnostics.size()));
-    res.set_content(r.text, "text/plain; charset=us-ascii");
+    if (param_or(req, "format", "text") == "json") {
+        out["text"] = std::move(r.text);
+        return set_body(res, dump(out), "application/json");
+    }
+    res.set_header("X-Essi-Warnings", std::to_string(all));
+    set_body(res, std::move(r.text), "text/plain; charset=us-ascii");
 }
 
 void share_tape(ShareStore& store, httplib::Response& res, const std::string& body) {
@@ -165,15 +192,22 @@ void share_tape(ShareStore& store, httplib::Response& res, const std::string& bo
     res.set_content(dump(j), "application/json");
 }
 
-// Runs `handle` on the body read within the limits (a large body waits for a slot first).
+// Runs `handle` on the body read within the limits: a large body waits for a large-body slot before it is read,
+// and `work` (the check slots, or null) is taken once it is read; neither wait holds a worker slot.
 template <class Handle>
-void with_body(ApiContext& ctx, const httplib::Request& req, httplib::Response& res, const Reader& reader, Handle handle) {
-    BodyReading reading;  // no worker slot while waiting for a large-body slot or for the client's bytes
-    SemaphoreHold hold(is_large(req) ? &ctx.large_bodies : nullptr);
+void with_body(ApiContext& ctx, const httplib::Request& req, httplib::Response& res, const Reader& reader,
+               Semaphore* work, Handle handle) {
+    const ApiLimits& l = ctx.limits;
+    BodyReading reading;  // no worker slot while waiting for a slot or for the client's bytes
+    const SemaphoreHold large(is_large(req) ? &ctx.large_bodies : nullptr, l.slot_wait);
+    if (!large.held()) return busy(res, "large requests (--max-large-requests " + std::to_string(l.max_large_requests) + ")", l.slot_wait);
     reading.start_clock();
-    std::optional<std::string> body = read_body(req, res, reader, ctx.max_body);
+    std::optional<std::string> body = read_body(req, res, reader, l.max_body);
+    if (!body) return;
+    const SemaphoreHold running(work, l.slot_wait);
+    if (!running.held()) return busy(res, "checks (--max-checks " + std::to_string(l.max_checks) + ")", l.slot_wait);
     reading.done();
-    if (body) handle(*body);
+    handle(*body);
 }
 
 bool valid_id(const std::string& id, httplib::Response& res) {
@@ -212,15 +246,15 @@ void json_error(httplib::Response& res, int status, const std::string& message) 
 
 void add_api_routes(httplib::Server& server, const std::shared_ptr<ApiContext>& ctx) {
     server.Get("/api/health", [ctx](const httplib::Request&, httplib::Response& res) {
-        res.set_content(dump({{"ok", true}, {"version", ESSIKIT_VERSION}, {"max_body", ctx->max_body},
+        res.set_content(dump({{"ok", true}, {"version", ESSIKIT_VERSION}, {"max_body", ctx->limits.max_body},
                               {"profiles", builtin_profile_names()}}),
                         "application/json");
     });
     server.Post("/api/check", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
-        with_body(*ctx, req, res, reader, [&](const std::string& body) { check_tape(req, res, body); });
+        with_body(*ctx, req, res, reader, &ctx->checks, [&](const std::string& body) { check_tape(ctx->limits, req, res, body); });
     });
     server.Post("/api/convert", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
-        with_body(*ctx, req, res, reader, [&](const std::string& body) { convert(req, res, body); });
+        with_body(*ctx, req, res, reader, &ctx->checks, [&](const std::string& body) { convert(ctx->limits, req, res, body); });
     });
     server.Post("/api/share", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
         if (const unsigned wait = ctx->share_rate.try_take(client_key(req.remote_addr))) {
@@ -228,7 +262,7 @@ void add_api_routes(httplib::Server& server, const std::shared_ptr<ApiContext>& 
             json_error(res, 429, "too many shares from this address (--share-rate); retry in " + std::to_string(wait) + " s");
             return close_connection_after_response();
         }
-        with_body(*ctx, req, res, reader, [&](const std::string& body) { share_tape(*ctx->store, res, body); });
+        with_body(*ctx, req, res, reader, nullptr, [&](const std::string& body) { share_tape(*ctx->store, res, body); });
     });
     server.Get(R"(/api/share/([^/]*))", [ctx](const httplib::Request& req, httplib::Response& res) { get_share(*ctx->store, req, res); });
     server.Delete(R"(/api/share/([^/]*))", [ctx](const httplib::Request& req, httplib::Response& res, const Reader&) {
