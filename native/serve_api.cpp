@@ -216,13 +216,21 @@ bool valid_id(const std::string& id, httplib::Response& res) {
     return false;
 }
 
-void get_share(ShareStore& store, const httplib::Request& req, httplib::Response& res) {
+// The tape is streamed from the store in pieces of 64 KB (never whole in memory); a share deleted or evicted
+// while it is sent ends the connection before its Content-Length.
+void get_share(const std::shared_ptr<ShareStore>& store, const httplib::Request& req, httplib::Response& res) {
     const std::string id = req.matches[1];
     if (!valid_id(id, res)) return;
-    auto tape = store.get(id);
-    if (!tape) return json_error(res, 404, "no shared tape " + id + " (never stored, expired or deleted)");
+    const auto size = store->size_of(id);
+    if (!size) return json_error(res, 404, "no shared tape " + id + " (never stored, expired or deleted)");
     res.set_header("Cache-Control", "private, no-cache");  // content-addressed, but it can expire or be deleted
-    res.set_content(std::move(*tape), "text/plain; charset=us-ascii");
+    constexpr const char* kType = "text/plain; charset=us-ascii";
+    if (*size == 0) return res.set_content("", kType);
+    res.set_content_provider(static_cast<std::size_t>(*size), kType, [store, id](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+        std::vector<char> buf(std::min<std::size_t>(length, 64 * 1024));
+        const std::int64_t n = store->read(id, offset, buf.data(), buf.size());
+        return n > 0 && sink.write(buf.data(), static_cast<std::size_t>(n));
+    });
 }
 
 void delete_share(ShareStore& store, const httplib::Request& req, httplib::Response& res) {
@@ -264,7 +272,7 @@ void add_api_routes(httplib::Server& server, const std::shared_ptr<ApiContext>& 
         }
         with_body(*ctx, req, res, reader, nullptr, [&](const std::string& body) { share_tape(*ctx->store, res, body); });
     });
-    server.Get(R"(/api/share/([^/]*))", [ctx](const httplib::Request& req, httplib::Response& res) { get_share(*ctx->store, req, res); });
+    server.Get(R"(/api/share/([^/]*))", [ctx](const httplib::Request& req, httplib::Response& res) { get_share(ctx->store, req, res); });
     server.Delete(R"(/api/share/([^/]*))", [ctx](const httplib::Request& req, httplib::Response& res, const Reader&) {
         delete_share(*ctx->store, req, res);
         close_connection_after_response();  // a DELETE body (if any) is not read
