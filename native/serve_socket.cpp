@@ -167,12 +167,18 @@ private:
 
 // One thread per connection, at most `max` at once: enqueue() waits for a free one, which stops the accept
 // loop (the kernel's backlog holds the next connections) instead of queueing sockets without bound.
+// When all are taken, `evict` is asked to close a waiting connection (WaitingConnections::evict_one).
 class ConnectionThreads : public httplib::TaskQueue {
 public:
-    explicit ConnectionThreads(std::size_t max) : max_(max) {}
+    ConnectionThreads(std::size_t max, std::function<bool()> evict) : max_(max), evict_(std::move(evict)) {}
     void enqueue(std::function<void()> fn) override {
         std::unique_lock lock(mutex_);
-        cv_.wait(lock, [this] { return running_ < max_; });
+        while (running_ >= max_) {
+            lock.unlock();
+            const bool freeing = evict_ && evict_();
+            lock.lock();
+            cv_.wait_for(lock, std::chrono::milliseconds(freeing ? 20 : 200), [this] { return running_ < max_; });
+        }
         ++running_;
         std::thread([this, fn = std::move(fn)] {
             fn();
@@ -191,6 +197,7 @@ private:
     std::condition_variable cv_;
     std::size_t running_ = 0;
     std::size_t max_;
+    std::function<bool()> evict_;
 };
 
 void refuse(socket_t sock) {
@@ -212,13 +219,14 @@ thread_local DeadlineStream* t_stream = nullptr;   // the connection this thread
 HardenedServer::HardenedServer(const ConnectionLimits& limits)
     : limits_(limits), slots_(limits.max_connections, limits.max_client_connections), workers_(limits.threads) {
     const std::size_t max = limits.max_connections;
-    new_task_queue = [max] { return new ConnectionThreads(max); };
+    new_task_queue = [this, max] { return new ConnectionThreads(max, [this] { return waiting_.evict_one(); }); };
     set_keep_alive_timeout(limits.keep_alive_timeout_s);
     set_socket_options(exclusive_socket_options);
     set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
         if (!t_worker) workers_.acquire();
         t_worker = &workers_;
         t_routed = true;
+        if (t_stream) waiting_.busy(t_stream->socket());
         t_body_unread = req.has_header("Transfer-Encoding") || (req.has_header("Content-Length") && req.get_header_value("Content-Length") != "0");
         return guard_ ? guard_(req, res) : HandlerResponse::Unhandled;
     });
@@ -246,10 +254,12 @@ void HardenedServer::serve_connection(socket_t sock) {
     for (std::size_t left = keep_alive_max_count_; left > 0 && svr_sock_ != INVALID_SOCKET; --left) {
         // The first request may take request_timeout_s to begin, the next ones keep_alive_timeout_s.
         const int wait_s = left == keep_alive_max_count_ ? limits_.request_timeout_s : limits_.keep_alive_timeout_s;
+        waiting_.wait(sock);
         if (!wait_for(sock, POLLIN, wait_s * 1000)) break;
         strm.begin_request();
         if (!serve_request(strm, left == 1)) break;
     }
+    waiting_.leave(sock);
     t_stream = nullptr;
 }
 
@@ -262,6 +272,40 @@ bool HardenedServer::serve_request(httplib::Stream& strm, bool last) {
     // Not routed: httplib answered by itself (a request line or headers it could not read, 414, 416), and what
     // follows on the connection is the rest of that request, not a new one; so is an unread body.
     return ok && !closed && !t_close_after && t_routed && !t_body_unread;
+}
+
+void WaitingConnections::wait(socket_t sock) {
+    std::lock_guard lock(mutex_);
+    Entry& e = entries_[sock];
+    e.since = Clock::now();
+    e.waiting = true;
+}
+
+void WaitingConnections::busy(socket_t sock) {
+    std::lock_guard lock(mutex_);
+    if (auto it = entries_.find(sock); it != entries_.end()) it->second.waiting = false;
+}
+
+void WaitingConnections::leave(socket_t sock) {
+    std::lock_guard lock(mutex_);
+    entries_.erase(sock);
+}
+
+bool WaitingConnections::evict_one() {
+    std::lock_guard lock(mutex_);
+    const auto now = Clock::now();
+    auto oldest = entries_.end();
+    for (auto it = entries_.begin(); it != entries_.end(); ++it) {
+        if (it->second.evicted) return true;  // one is already on its way out
+        if (it->second.waiting && now - it->second.since >= std::chrono::milliseconds(kEvictAfterMs) &&
+            (oldest == entries_.end() || it->second.since < oldest->second.since)) {
+            oldest = it;
+        }
+    }
+    if (oldest == entries_.end()) return false;
+    oldest->second.evicted = true;
+    ::shutdown(oldest->first, SHUT_RDWR);  // its poll and recv end at once; its thread closes it
+    return true;
 }
 
 BodyReading::BodyReading() : worker_(t_worker) {

@@ -12,6 +12,9 @@
 //   - a connection is kept for the next request only when this one was routed and its body read to the end: the
 //     bytes after a request httplib refused itself (400, 414, 416) or a body left unread are never read as a
 //     request.
+//   - when all max_connections threads are taken, a new connection closes the one that has waited longest (at
+//     least kEvictAfterMs) for its request or in its request line and headers (WaitingConnections): slow
+//     senders of headers cannot keep new clients out, only delay them by about kEvictAfterMs.
 //   - at most max_client_connections connections per client address; the next one gets a 429 and is closed.
 //   - at most `threads` requests are handled at once; a handler gives its slot back while it waits for and
 //     reads its body (BodyReading), so slow uploads do not hold them.
@@ -21,8 +24,11 @@
 #if defined(ESSI_HAVE_HTTPLIB)
 #include <httplib.h>
 
+#include <chrono>
 #include <cstddef>
 #include <functional>
+#include <map>
+#include <mutex>
 #include <memory>
 #include <optional>
 #include <string>
@@ -42,9 +48,29 @@ struct ConnectionLimits {
     int body_timeout_s = 120;         // a whole body
 };
 
+inline constexpr int kEvictAfterMs = 1000;              // a connection waiting this long may be closed for a new one
 inline constexpr std::size_t kMaxHeadBytes = 64 * 1024;  // the request line and headers together
 inline constexpr std::size_t kMaxHeadLines = 128;        // the request line, the headers and the blank line
 inline constexpr std::size_t kMaxLineBytes = 64 * 1024;  // any line read (a chunk size too)
+
+// The connections waiting for a request or still reading its head, by socket, with the time they began to wait.
+class WaitingConnections {
+public:
+    void wait(socket_t sock);  // from now, `sock` waits for a request (or its head)
+    void busy(socket_t sock);  // its request was read: it may no longer be closed for a new connection
+    void leave(socket_t sock);  // before the socket is closed
+    // Shuts down the connection waiting longest (at least kEvictAfterMs); true when one was, or is still going.
+    bool evict_one();
+
+private:
+    struct Entry {
+        std::chrono::steady_clock::time_point since;
+        bool waiting = true;
+        bool evicted = false;
+    };
+    std::mutex mutex_;
+    std::map<socket_t, Entry> entries_;
+};
 
 class HardenedServer : public httplib::Server {
 public:
@@ -69,6 +95,7 @@ private:
     // One request from `strm` (the last of the connection when `last`); false when the connection ends.
     bool serve_request(httplib::Stream& strm, bool last);
     ConnectionLimits limits_;
+    WaitingConnections waiting_;
     ClientSlots slots_;
     Semaphore workers_;
     HandlerWithResponse guard_;
