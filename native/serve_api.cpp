@@ -96,10 +96,26 @@ std::optional<std::string> read_body(const httplib::Request& req, httplib::Respo
     return body;
 }
 
-// The response's body without a copy (Response::set_content copies its string).
-void set_body(httplib::Response& res, std::string&& text, const char* type) {
-    res.body = std::move(text);
-    res.set_header("Content-Type", type);
+// What a request holds until its answer is written: its large-body and check slots (held() or not).
+struct Slots {
+    std::unique_ptr<SemaphoreHold> large, running;
+};
+using Keep = std::shared_ptr<Slots>;
+
+// The response's body without a copy (Response::set_content copies its string). An answer over kLargeBody is
+// sent from `text` held with `keep` until it is written (or the connection drops): the slots the request took stay
+// taken while the answer is in memory, so the answers of big conversions count against --max-checks, not only
+// their work (such an answer is sent uncompressed).
+void set_body(httplib::Response& res, std::string&& text, const char* type, const Keep& keep = nullptr) {
+    if (!keep || text.size() <= kLargeBody) {
+        res.body = std::move(text);
+        res.set_header("Content-Type", type);
+        return;
+    }
+    auto held = std::make_shared<std::pair<std::string, Keep>>(std::move(text), keep);
+    res.set_content_provider(held->first.size(), type, [held](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+        return sink.write(held->first.data() + offset, std::min<std::size_t>(length, 1 << 20));
+    });
 }
 
 std::string param_or(const httplib::Request& req, const char* key, const char* fallback) {
@@ -127,7 +143,7 @@ std::optional<TapeRequest> tape_request(const httplib::Request& req, httplib::Re
     return r;
 }
 
-void check_tape(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& body) {
+void check_tape(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& body, const Keep& keep) {
     const auto request = tape_request(req, res);
     if (!request) return;
     FileReport report;
@@ -137,13 +153,13 @@ void check_tape(const ApiLimits& limits, const httplib::Request& req, httplib::R
     const FileReport one[] = {std::move(report)};
     std::string text = dump(report_to_json(one, request->profile_name), 2);
     text += '\n';
-    set_body(res, std::move(text), "application/json");
+    set_body(res, std::move(text), "application/json", keep);
 }
 
 // POST /api/convert?to=essi|eia|gcode&profile=P|auto&to_profile=Q&absolute=1&input=...&format=json: the
 // converted program as text/plain (the count of warnings in X-Essi-Warnings), or with format=json
 // {"text", "diagnostics"}; 422 with the diagnostics when the tape has errors (as `essi convert` exits 1).
-void convert(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& body) {
+void convert(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& body, const Keep& keep) {
     const auto request = tape_request(req, res);
     if (!request) return;
     const std::string to = param_or(req, "to", "");
@@ -169,14 +185,14 @@ void convert(const ApiLimits& limits, const httplib::Request& req, httplib::Resp
     if (!ok) {
         res.status = 422;
         out["error"] = "the tape has errors";
-        return set_body(res, dump(out), "application/json");
+        return set_body(res, dump(out), "application/json", keep);
     }
     if (param_or(req, "format", "text") == "json") {
         out["text"] = std::move(r.text);
-        return set_body(res, dump(out), "application/json");
+        return set_body(res, dump(out), "application/json", keep);
     }
     res.set_header("X-Essi-Warnings", std::to_string(all));
-    set_body(res, std::move(r.text), "text/plain; charset=us-ascii");
+    set_body(res, std::move(r.text), "text/plain; charset=us-ascii", keep);
 }
 
 void share_tape(ShareStore& store, httplib::Response& res, const std::string& body) {
@@ -193,21 +209,23 @@ void share_tape(ShareStore& store, httplib::Response& res, const std::string& bo
 }
 
 // Runs `handle` on the body read within the limits: a large body waits for a large-body slot before it is read,
-// and `work` (the check slots, or null) is taken once it is read; neither wait holds a worker slot.
+// and `work` (the check slots, or null) is taken once it is read; neither wait holds a worker slot. The slots
+// are released when the handler returns, or once its answer is written when set_body keeps them.
 template <class Handle>
 void with_body(ApiContext& ctx, const httplib::Request& req, httplib::Response& res, const Reader& reader,
                Semaphore* work, Handle handle) {
     const ApiLimits& l = ctx.limits;
     BodyReading reading;  // no worker slot while waiting for a slot or for the client's bytes
-    const SemaphoreHold large(is_large(req) ? &ctx.large_bodies : nullptr, l.slot_wait);
-    if (!large.held()) return busy(res, "large requests (--max-large-requests " + std::to_string(l.max_large_requests) + ")", l.slot_wait);
+    const Keep slots = std::make_shared<Slots>();
+    slots->large = std::make_unique<SemaphoreHold>(is_large(req) ? &ctx.large_bodies : nullptr, l.slot_wait);
+    if (!slots->large->held()) return busy(res, "large requests (--max-large-requests " + std::to_string(l.max_large_requests) + ")", l.slot_wait);
     reading.start_clock();
     std::optional<std::string> body = read_body(req, res, reader, l.max_body);
     if (!body) return;
-    const SemaphoreHold running(work, l.slot_wait);
-    if (!running.held()) return busy(res, "checks (--max-checks " + std::to_string(l.max_checks) + ")", l.slot_wait);
+    slots->running = std::make_unique<SemaphoreHold>(work, l.slot_wait);
+    if (!slots->running->held()) return busy(res, "checks (--max-checks " + std::to_string(l.max_checks) + ")", l.slot_wait);
     reading.done();
-    handle(*body);
+    handle(*body, slots);
 }
 
 bool valid_id(const std::string& id, httplib::Response& res) {
@@ -259,10 +277,10 @@ void add_api_routes(httplib::Server& server, const std::shared_ptr<ApiContext>& 
                         "application/json");
     });
     server.Post("/api/check", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
-        with_body(*ctx, req, res, reader, &ctx->checks, [&](const std::string& body) { check_tape(ctx->limits, req, res, body); });
+        with_body(*ctx, req, res, reader, &ctx->checks, [&](const std::string& body, const Keep& keep) { check_tape(ctx->limits, req, res, body, keep); });
     });
     server.Post("/api/convert", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
-        with_body(*ctx, req, res, reader, &ctx->checks, [&](const std::string& body) { convert(ctx->limits, req, res, body); });
+        with_body(*ctx, req, res, reader, &ctx->checks, [&](const std::string& body, const Keep& keep) { convert(ctx->limits, req, res, body, keep); });
     });
     server.Post("/api/share", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
         if (const unsigned wait = ctx->share_rate.try_take(client_key(req.remote_addr))) {
@@ -270,7 +288,7 @@ void add_api_routes(httplib::Server& server, const std::shared_ptr<ApiContext>& 
             json_error(res, 429, "too many shares from this address (--share-rate); retry in " + std::to_string(wait) + " s");
             return close_connection_after_response();
         }
-        with_body(*ctx, req, res, reader, nullptr, [&](const std::string& body) { share_tape(*ctx->store, res, body); });
+        with_body(*ctx, req, res, reader, nullptr, [&](const std::string& body, const Keep&) { share_tape(*ctx->store, res, body); });
     });
     server.Get(R"(/api/share/([^/]*))", [ctx](const httplib::Request& req, httplib::Response& res) { get_share(ctx->store, req, res); });
     server.Delete(R"(/api/share/([^/]*))", [ctx](const httplib::Request& req, httplib::Response& res, const Reader&) {
