@@ -145,6 +145,22 @@ def encodings(port, report):
         report.check(statuses(got) == [200] and ok, f"Accept-Encoding: {value} -> Content-Encoding {encoding} (want {'gzip' if gzipped else 'none'})")
 
 
+def diagnostics_cap(port, report):
+    """--max-diagnostics 2: a tape with 3 warnings (a blank at each line's end) is answered with 2 and the count of
+    the third."""
+    import json
+    tape = b"+100+0 \n" * 3
+    got, _, _ = exchange(port, (f"POST /api/check HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/octet-stream\r\n"
+                                f"Content-Length: {len(tape)}\r\nConnection: close\r\n\r\n").encode() + tape)
+    try:
+        f = json.loads(body_of(got))["files"][0]
+        kept, omitted = len(f["diagnostics"]), f.get("diagnostics_omitted")
+    except (ValueError, KeyError, IndexError):
+        kept, omitted = None, None
+    report.check(statuses(got) == [200] and kept == 2 and omitted == 1,
+                 f"--max-diagnostics 2 on 3 warnings: {kept} kept, diagnostics_omitted {omitted}")
+
+
 def slow_body(port, report):
     """A body at 4 KB/s (above --min-transfer-rate 1KB) declaring 1 MB: cut off with 408 after --body-timeout."""
     with socket.create_connection(("127.0.0.1", port), timeout=5) as s:
@@ -204,13 +220,15 @@ def main(essi):
     signal.alarm(90)
     report = Report()
     proc, port, _ = start_server(essi, "--request-timeout", str(REQUEST_TIMEOUT_S), "--body-timeout", str(BODY_TIMEOUT_S),
-                                 "--min-transfer-rate", "1KB", "--max-large-requests", "1", "--max-body", "4MB")
+                                 "--min-transfer-rate", "1KB", "--max-large-requests", "1", "--max-body", "4MB",
+                                 "--max-diagnostics", "2")
     try:
         connection_endings(port, report)
         header_limits(port, report)
         framing(port, report)
         methods(port, report)
         encodings(port, report)
+        diagnostics_cap(port, report)
         slow_body(port, report)
         large_slot(port, report)
     finally:

@@ -105,7 +105,7 @@ size_flag() {  # size_flag NAME VALUE COMMAND...
 }
 for v in -1 18446744073709551616 16EB 1.5MB +5 5XB; do
   size_flag --max-size "$v" "$essi" check "$tape"
-  for flag in --max-body --max-store; do size_flag "$flag" "$v" "$essi" serve --port 0 --web-root "$tmp/web" --data "$tmp/data3"; done
+  for flag in --max-body --max-store --min-transfer-rate; do size_flag "$flag" "$v" "$essi" serve --port 0 --web-root "$tmp/web" --data "$tmp/data3"; done
 done
 "$essi" check --max-size 18446744073709551615 "$tape" > /dev/null 2>&1 && "$essi" check --max-size '15 EB' "$tape" > /dev/null 2>&1 && \
   "$essi" check --max-size 1kib "$tape" > /dev/null 2>&1 && pass "--max-size 2^64-1, '15 EB' and 1kib are sizes" || fail "valid sizes refused"
