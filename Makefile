@@ -56,6 +56,7 @@ bench: setup
 	build/native/bin/essi_bench
 	cmake --build --preset native -j$(JOBS) --target essi essi_gen_batch essi_gen_nest
 	scripts/bench_batch
+	scripts/bench_serve_limits
 	@echo "== essi check with every rule of the cut plan, 100 MB nest (goal: 150 MB/s) =="
 	PROFILE=tests/bench/every_rule.profile.json GOAL_MBPS=150 scripts/bench_compare 100
 	cmake --preset wasm
