@@ -95,14 +95,28 @@ public:
             if (bytes_ >= kMaxHeadBytes) return fail(Failure::head_too_large);
             size = std::min(size, kMaxHeadBytes - bytes_);
         }
-        if (!is_readable()) {
-            if (phase_ == Phase::head) return fail(Failure::head_timeout);
-            return fail(total_deadline() <= rate_deadline() ? Failure::body_timeout : Failure::body_too_slow);
-        }
         ssize_t n;
-        while ((n = recv(sock_, ptr, size, 0)) < 0 && errno == EINTR) {
+        if (buffered()) {
+            n = static_cast<ssize_t>(std::min(size, buf_len_ - buf_pos_));
+            std::memcpy(ptr, buf_ + buf_pos_, static_cast<std::size_t>(n));
+            buf_pos_ += static_cast<std::size_t>(n);
+        } else {
+            if (!is_readable()) {
+                if (phase_ == Phase::head) return fail(Failure::head_timeout);
+                return fail(total_deadline() <= rate_deadline() ? Failure::body_timeout : Failure::body_too_slow);
+            }
+            // Small reads (cpp-httplib reads lines a byte at a time) are served from one recv of up to 4 KB.
+            char* into = size >= sizeof buf_ ? ptr : buf_;
+            while ((n = recv(sock_, into, size >= sizeof buf_ ? size : sizeof buf_, 0)) < 0 && errno == EINTR) {
+            }
+            if (n <= 0) return n;
+            if (into == buf_) {
+                buf_len_ = static_cast<std::size_t>(n);
+                n = static_cast<ssize_t>(std::min(size, buf_len_));
+                std::memcpy(ptr, buf_, static_cast<std::size_t>(n));
+                buf_pos_ = static_cast<std::size_t>(n);
+            }
         }
-        if (n <= 0) return n;
         bytes_ += static_cast<std::size_t>(n);
         // cpp-httplib reads lines (the request line, headers, chunk sizes) a byte at a time, into a string that
         // grows until the line ends: a line is cut at kMaxLineBytes, the head at kMaxHeadLines lines.
@@ -134,6 +148,8 @@ public:
     socket_t socket() const override { return sock_; }
     const std::string& remote_ip() const { return remote_.ip; }
     [[nodiscard]] Failure failure() const { return failure_; }
+    // Bytes received and not read yet (the start of a next request on the connection).
+    [[nodiscard]] bool buffered() const { return buf_pos_ < buf_len_; }
     [[nodiscard]] const ConnectionLimits& limits() const { return limits_; }
 
 private:
@@ -163,6 +179,8 @@ private:
     std::size_t lines_ = 0;  // lines of the head
     std::size_t line_ = 0;   // bytes of the line being read a byte at a time
     Failure failure_ = Failure::none;
+    char buf_[4096];
+    std::size_t buf_pos_ = 0, buf_len_ = 0;
 };
 
 // One thread per connection, at most `max` at once: enqueue() waits for a free one, which stops the accept
@@ -255,7 +273,7 @@ void HardenedServer::serve_connection(socket_t sock) {
         // The first request may take request_timeout_s to begin, the next ones keep_alive_timeout_s.
         const int wait_s = left == keep_alive_max_count_ ? limits_.request_timeout_s : limits_.keep_alive_timeout_s;
         waiting_.wait(sock);
-        if (!wait_for(sock, POLLIN, wait_s * 1000)) break;
+        if (!strm.buffered() && !wait_for(sock, POLLIN, wait_s * 1000)) break;
         strm.begin_request();
         if (!serve_request(strm, left == 1)) break;
     }
