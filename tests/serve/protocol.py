@@ -3,8 +3,10 @@
 server refused by itself (400, 414), after a header timeout or an unread body the connection is closed and its
 remaining bytes are never answered as a second request; headers are bounded in bytes and lines (431); a body must
 arrive whole within --body-timeout even at a rate above --min-transfer-rate, so a slow sender frees its
-large-request slot in time; the body's framing must be unambiguous; every method an endpoint does not take gets 405
-with Allow; Accept-Encoding is read with its q-values. Loopback only; stops by itself (90 s alarm).
+large-request slot in time; a request that finds no check slot within --body-timeout gets 503 (an unread answer keeps
+its slot); the body's framing must be unambiguous; every method an endpoint does not take gets 405 with Allow;
+Accept-Encoding is read with its q-values; --max-diagnostics cuts an answer. Loopback only; stops by itself (90 s
+alarm).
 Usage: protocol.py PATH/TO/essi"""
 import gzip
 import signal
@@ -216,6 +218,30 @@ def large_slot(port, report):
                  f"a 2 MB check behind a slow sender holding the only large slot: {statuses(got)} after {seconds:.1f} s")
 
 
+def busy_check_slot(essi, report):
+    """--max-checks 1 --body-timeout 1: a conversion whose 19 MB answer is not read keeps the only check slot (the
+    answer is in memory until it is written), so a check sent meanwhile gets 503 with Retry-After after 1 s."""
+    proc, port, _ = start_server(essi, "--max-checks", "1", "--body-timeout", "1", "--max-body", "20MB")
+    try:
+        tape = b"+100+0\n" * (19 * 1024 * 1024 // 7)
+        hog = socket.create_connection(("127.0.0.1", port), timeout=10)
+        hog.sendall((f"POST /api/convert?to=essi HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/octet-stream\r\n"
+                     f"Content-Length: {len(tape)}\r\n\r\n").encode() + tape)
+        time.sleep(2)  # converted and being written: the answer fills the socket buffers and waits
+        tape = b"+100+0\n"
+        got, closed, seconds = exchange(port, (f"POST /api/check HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: "
+                                               f"application/octet-stream\r\nContent-Length: {len(tape)}\r\n\r\n").encode() + tape)
+        report.check(statuses(got) == [503] and header(got, "Retry-After") == "5" and b"--max-checks 1" in body_of(got) and closed,
+                     f"a check while the only check slot holds an unread answer: {statuses(got)} {body_of(got)[:100]!r} after {seconds:.1f} s")
+        hog.close()
+        time.sleep(0.5)
+        got, _, _ = exchange(port, (f"POST /api/check HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/octet-stream\r\n"
+                                    f"Content-Length: {len(tape)}\r\nConnection: close\r\n\r\n").encode() + tape)
+        report.check(statuses(got) == [200], f"... and once that client is gone: {statuses(got)}")
+    finally:
+        stop_server(proc)
+
+
 def main(essi):
     signal.alarm(90)
     report = Report()
@@ -233,6 +259,7 @@ def main(essi):
         large_slot(port, report)
     finally:
         stop_server(proc)
+    busy_check_slot(essi, report)
     return report.finish()
 
 
