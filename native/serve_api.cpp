@@ -75,7 +75,16 @@ std::optional<std::string> read_body(const httplib::Request& req, httplib::Respo
         body_read_to_end();
         return body;
     }
-    if (n) body.reserve(static_cast<std::size_t>(*n));
+    if (n) {
+        body.reserve(static_cast<std::size_t>(*n));
+    } else {
+        // A chunked body of unknown length: room for the largest allowed (up to 1 GB) is reserved without being
+        // touched (buffers over 1 MB are mmapped: only the pages written count), so it never grows by copies.
+        try {
+            body.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(max_body, 1ull << 30)));
+        } catch (const std::exception&) {  // (no address space for it: grow as it comes)
+        }
+    }
     bool over = false;
     const bool ok = reader([&](const char* data, std::size_t len) {
         over = body.size() + len > max_body;
