@@ -59,6 +59,7 @@ bench: setup
 	scripts/bench_batch
 	@echo "== peak memory of essi check, every rule (bound: 4 bytes per input byte + 64 MB) =="
 	scripts/bench_memory
+	scripts/bench_serve_limits
 	@echo "== essi check with every rule of the cut plan, 100 MB nest (goal: 150 MB/s) =="
 	PROFILE=tests/bench/every_rule.profile.json GOAL_MBPS=150 scripts/bench_compare 100
 	cmake --preset wasm

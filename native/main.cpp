@@ -60,6 +60,42 @@ constexpr int kExitUsage = 2;  // bad arguments, unreadable file or profile, out
 
 constexpr int kJsonIndent = 2;
 
+// The transform of every SIZE option (--max-size, --max-body, --max-store, --min-transfer-rate): a whole number
+// of bytes with an optional 1024-based suffix (B, K/KB/KiB, M/MB/MiB, G/GB/GiB, T, P, E; any case), rewritten as
+// the number of bytes. A sign, a fraction or a value over 2^64 - 1 is an error (CLI11's AsSizeValue read "-1" and
+// "18446744073709551616" as the largest value: no limit).
+std::string parse_size_option(std::string& text) {
+    const std::string usage = "'" + essi::display_text(text.substr(0, 40)) +
+                              "' is not a size: expected a whole number of bytes up to 18446744073709551615, "
+                              "with an optional suffix KB, MB, GB, TB, PB or EB (1024-based)";
+    std::size_t i = 0;
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    std::uint64_t value = 0;
+    const std::size_t digits_at = i;
+    for (; i < text.size() && text[i] >= '0' && text[i] <= '9'; ++i) {
+        const unsigned digit = static_cast<unsigned>(text[i] - '0');
+        if (value > (UINT64_MAX - digit) / 10) return usage;
+        value = value * 10 + digit;
+    }
+    if (i == digits_at) return usage;
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    std::string unit;
+    for (; i < text.size() && !std::isspace(static_cast<unsigned char>(text[i])); ++i) unit += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i])));
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    if (i != text.size()) return usage;
+    static constexpr std::string_view kPrefixes = "kmgtpe";
+    int shift = 0;
+    if (!unit.empty() && unit != "b") {
+        const std::size_t p = kPrefixes.find(unit[0]);
+        const std::string_view rest = std::string_view(unit).substr(1);
+        if (p == std::string_view::npos || !(rest.empty() || rest == "b" || rest == "i" || rest == "ib")) return usage;
+        shift = 10 * static_cast<int>(p + 1);
+    }
+    if (shift > 0 && value > (UINT64_MAX >> shift)) return usage;
+    text = std::to_string(value << shift);
+    return {};
+}
+
 // The terminal's charset (UTF-8, or GB 18030 / GBK / GB 2312 by the locale): what people read is written in it.
 const essi::native::TerminalText g_terminal(std::getenv("LC_ALL"), std::getenv("LC_CTYPE"), std::getenv("LANG"));
 
@@ -506,7 +542,7 @@ int main(int argc, char** argv) {
     const auto add_max_size_option = [](CLI::App* sub, std::uint64_t& value) {
         sub->add_option("--max-size", value,
                         "Largest input read, file or standard input (suffixes KB MB GB: 1024-based; default 1GB)")
-            ->transform(CLI::AsSizeValue(false))
+            ->transform(CLI::Validator(parse_size_option, "", ""))
             ->type_name("SIZE");
     };
 
@@ -656,10 +692,13 @@ int main(int argc, char** argv) {
                       "Folder of the share store (SQLite); default $XDG_DATA_HOME/essikit, else ./essi-data")
         ->type_name("DIR");
     const auto size_option = [serve](const char* name, std::uint64_t& value, const char* help) {
-        serve->add_option(name, value, help)->transform(CLI::AsSizeValue(false))->type_name("SIZE")->capture_default_str();
+        serve->add_option(name, value, help)->transform(CLI::Validator(parse_size_option, "", ""))->type_name("SIZE")->capture_default_str();
     };
     size_option("--max-body", serve_opts.max_body, "Largest request body in bytes (suffixes KB MB GB: 1024-based)");
     size_option("--max-store", serve_opts.max_store, "Largest total size of the stored shares (oldest go first)");
+    size_option("--min-transfer-rate", serve_opts.min_transfer_rate,
+                "Slowest average rate, per second, of a request body or a response after the first --request-timeout "
+                "seconds (default 1MB)");
     const auto limit_option = [serve](const char* name, auto& value, int max, const char* help) {
         serve->add_option(name, value, help)->check(CLI::Range(1, max))->capture_default_str();
     };
@@ -668,9 +707,15 @@ int main(int argc, char** argv) {
     limit_option("--max-client-connections", serve_opts.max_client_connections, 100000,
                  "Connections open at once from one client address (more get 429)");
     limit_option("--request-timeout", serve_opts.request_timeout_s, 3600,
-                 "Seconds a client has to send a request (plus 1 s per 64 KB of body)");
+                 "Seconds a client has to send its request line and headers (and the grace before --min-transfer-rate)");
+    limit_option("--body-timeout", serve_opts.body_timeout_s, 86400,
+                 "Seconds a request body may take in all; also the longest wait for a slot (then 503)");
     limit_option("--max-large-requests", serve_opts.max_large_requests, 1024,
                  "Requests with a body over 1 MB handled at once (bounds the server's memory)");
+    limit_option("--max-checks", serve_opts.max_checks, 1024,
+                 "Checks and conversions running at once, whatever the size of their tape (bounds the server's memory)");
+    limit_option("--max-diagnostics", serve_opts.max_diagnostics, 100000000,
+                 "Diagnostics in an /api/check or /api/convert answer (the rest are counted: diagnostics_omitted)");
     serve->add_option("--allowed-host", serve_opts.allowed_hosts,
                       "A Host name served besides localhost, 127.0.0.1, ::1 and --host (repeatable; DNS rebinding)")
         ->type_name("NAME");

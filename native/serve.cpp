@@ -10,6 +10,7 @@
 #include <malloc.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -59,6 +60,8 @@ ConnectionLimits connection_limits(const ServeOptions& o) {
     l.max_client_connections = std::max<std::size_t>(o.max_client_connections, 1);
     l.threads = static_cast<std::size_t>(std::max(o.threads, 1));
     l.request_timeout_s = std::max(o.request_timeout_s, 1);
+    l.min_rate = static_cast<double>(std::max<std::uint64_t>(o.min_transfer_rate, 1));
+    l.body_timeout_s = std::max(o.body_timeout_s, 1);
     return l;
 }
 
@@ -74,9 +77,10 @@ HostPolicy host_policy(const ServeOptions& o) {
 void add_policies(HardenedServer& server, const ServeOptions& o) {
     // The error response of a refused request (its body, if any, is not read), or 0.
     const auto refuse = [hosts = host_policy(o)](const httplib::Request& req, httplib::Response& res) {
-        const Refusal r = check_request(req, hosts);
+        const Refusal r = check_request(req, hosts, method_refusal);
         if (r.status == 0) return 0;
         json_error(res, r.status, r.message);
+        if (!r.allow.empty()) res.set_header("Allow", r.allow);
         close_connection_after_response();
         return r.status;
     };
@@ -88,6 +92,7 @@ void add_policies(HardenedServer& server, const ServeOptions& o) {
         const int status = refuse(req, res);
         return status ? status : 100;
     });
+    server.set_request_setup(normalize_request);
     server.set_response_finisher([](const httplib::Request&, httplib::Response& res) { add_security_headers(res); });
     server.set_exception_handler([](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
         std::string what = "unknown exception";
@@ -104,6 +109,10 @@ void add_policies(HardenedServer& server, const ServeOptions& o) {
     });
     server.set_error_handler([](const httplib::Request&, httplib::Response& res) {
         if (!res.body.empty()) return;
+        if (const auto failure = read_failure()) {  // the request line or headers hit a limit
+            json_error(res, failure->status, failure->message);
+            return;
+        }
         const int s = res.status;
         json_error(res, s, s == 404 ? "not found" : s == 400 ? "bad request" : s == 413 ? "request too large" : "HTTP error " + std::to_string(s));
     });
@@ -131,8 +140,14 @@ void configure_server(HardenedServer& server, const ServeOptions& o, std::shared
     server.set_payload_max_length(static_cast<std::size_t>(o.max_body));
     server.set_tcp_nodelay(true);  // no 40 ms Nagle + delayed-ACK stall between the headers and the body
     add_policies(server, o);
-    add_api_routes(server, std::make_shared<ApiContext>(std::move(store), o.max_body,
-                                                        std::max<std::size_t>(o.max_large_requests, 1), o.share_rate));
+    ApiLimits limits;
+    limits.max_body = o.max_body;
+    limits.max_large_requests = std::max<std::size_t>(o.max_large_requests, 1);
+    limits.max_checks = std::max<std::size_t>(o.max_checks, 1);
+    limits.max_diagnostics = o.max_diagnostics;
+    limits.share_rate = o.share_rate;
+    limits.slot_wait = std::chrono::seconds(std::max(o.body_timeout_s, 1));
+    add_api_routes(server, std::make_shared<ApiContext>(std::move(store), limits));
     add_static_routes(server, StaticFiles{o.web_root, o.examples_dir, o.share_store_js});
 }
 

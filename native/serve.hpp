@@ -35,8 +35,12 @@ struct ServeOptions {
     unsigned share_rate = 30;                // uploads per minute per client address (0 = no limit)
     std::size_t max_connections = 256;
     std::size_t max_client_connections = 32;
-    int request_timeout_s = 10;
+    int request_timeout_s = 10;              // the request line and headers; the grace before min_transfer_rate
+    std::uint64_t min_transfer_rate = 1ull << 20;  // bytes per second of a body or a response (on average)
+    int body_timeout_s = 120;                // a whole body; also the longest wait for a slot (then 503)
     std::size_t max_large_requests = 2;      // requests with a body over kLargeBody handled at once
+    std::size_t max_checks = 2;              // checks and conversions running at once, whatever their size
+    std::size_t max_diagnostics = 10000;     // diagnostics in an /api/check or /api/convert answer
 };
 
 // Serves until the process is stopped. Prints "essi serve: http://HOST:PORT/ ..." on stdout once listening.

@@ -40,6 +40,13 @@ void Semaphore::acquire() {
     --free_;
 }
 
+bool Semaphore::try_acquire_for(std::chrono::milliseconds wait) {
+    std::unique_lock lock(mutex_);
+    if (!cv_.wait_for(lock, wait, [this] { return free_ > 0; })) return false;
+    --free_;
+    return true;
+}
+
 void Semaphore::release() {
     {
         std::lock_guard lock(mutex_);

@@ -2,7 +2,7 @@
 //   ClientSlots  connections open at once, in all and per client address (--max-connections,
 //                --max-client-connections)
 //   Semaphore    a counting semaphore: requests handled at once (--threads), large bodies at once
-//                (--max-large-requests)
+//                (--max-large-requests), checks and conversions at once (--max-checks)
 //   RateLimit    uploads per minute per client address (--share-rate)
 #pragma once
 
@@ -39,6 +39,8 @@ class Semaphore {
 public:
     explicit Semaphore(std::size_t count) : free_(count) {}
     void acquire();
+    // acquire() waiting at most `wait`; false (nothing taken) when no slot came free in time.
+    bool try_acquire_for(std::chrono::milliseconds wait);
     void release();
 
 private:
@@ -47,16 +49,22 @@ private:
     std::size_t free_;
 };
 
-// Holds a Semaphore for a scope (nothing when `sem` is null).
+// Holds a Semaphore for a scope (nothing when `sem` is null). With a `wait`, gives up after it: then held() is
+// false and nothing is released.
 class SemaphoreHold {
 public:
     explicit SemaphoreHold(Semaphore* sem) : sem_(sem) { if (sem_) sem_->acquire(); }
+    SemaphoreHold(Semaphore* sem, std::chrono::milliseconds wait) : sem_(sem) {
+        if (sem_ && !sem_->try_acquire_for(wait)) sem_ = nullptr, held_ = false;
+    }
     ~SemaphoreHold() { if (sem_) sem_->release(); }
+    [[nodiscard]] bool held() const { return held_; }
     SemaphoreHold(const SemaphoreHold&) = delete;
     SemaphoreHold& operator=(const SemaphoreHold&) = delete;
 
 private:
     Semaphore* sem_;
+    bool held_ = true;
 };
 
 // At most `per_minute` events per client in any 60 s window (0 = no limit).

@@ -3,6 +3,7 @@
 #if defined(ESSI_HAVE_HTTPLIB)
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <regex>
 #include <set>
 
@@ -50,6 +51,38 @@ bool content_type_ok(const httplib::Request& req) {
     type = type.substr(0, type.find(';'));
     type.erase(std::remove_if(type.begin(), type.end(), [](unsigned char c) { return std::isspace(c); }), type.end());
     return type == "application/octet-stream" || type == "text/plain" || type == "application/x-www-form-urlencoded";
+}
+
+bool all_digits(std::string_view s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) { return c >= '0' && c <= '9'; });
+}
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+    return s;
+}
+
+// qvalue = ( "0" [ "." 0*3DIGIT ] ) / ( "1" [ "." 0*3("0") ] )   (RFC 9110 §12.4.2)
+bool valid_qvalue(std::string_view v) {
+    if (v.empty() || (v[0] != '0' && v[0] != '1')) return false;
+    if (v.size() == 1) return true;
+    const std::string_view decimals = v.substr(2);
+    if (v[1] != '.' || decimals.size() > 3) return false;
+    if (!decimals.empty() && !all_digits(decimals)) return false;
+    return v[0] == '0' || decimals.find_first_not_of('0') == std::string_view::npos;
+}
+
+// The problem with how the request's body is delimited (RFC 9112 §6), or "" (request smuggling, ambiguity).
+std::string framing_problem(const httplib::Request& req) {
+    const auto lengths = req.headers.equal_range("Content-Length");
+    for (auto it = lengths.first; it != lengths.second; ++it) {
+        if (!all_digits(it->second) || it->second.size() > 18) return "Content-Length '" + it->second.substr(0, 40) + "' is not a number of bytes";
+        if (it->second != lengths.first->second) return "conflicting Content-Length headers";
+    }
+    if (req.headers.count("Transfer-Encoding") > 1) return "more than one Transfer-Encoding header";
+    if (req.has_header("Transfer-Encoding") && req.has_header("Content-Length")) return "both Content-Length and Transfer-Encoding";
+    return {};
 }
 
 void set_if_absent(httplib::Response& res, const char* name, const char* value) {
@@ -115,7 +148,7 @@ std::string host_name(std::string_view host_header) {
     return h;
 }
 
-Refusal check_request(const httplib::Request& req, const HostPolicy& hosts) {
+Refusal check_request(const httplib::Request& req, const HostPolicy& hosts, MethodPolicy methods) {
     if (!is_clean_text(req.path) || !params_clean(req)) {
         return {400, "the path or a query parameter is not valid UTF-8 or contains a NUL byte"};
     }
@@ -123,13 +156,54 @@ Refusal check_request(const httplib::Request& req, const HostPolicy& hosts) {
     if (!host_allowed(req, hosts)) {
         return {403, "Host '" + host_name(req.get_header_value("Host")) + "' is not served here (--allowed-host NAME allows it)"};
     }
+    if (methods) {
+        if (Refusal r = methods(req); r.status != 0) return r;
+    }
     if (is_write(req.method) && cross_origin(req)) {
         return {403, "cross-origin writes are refused: " + req.method + " only from this server's own pages"};
+    }
+    if (const std::string problem = framing_problem(req); !problem.empty()) return {400, "bad request: " + problem};
+    if (req.has_header("Transfer-Encoding") && lower(trim(req.get_header_value("Transfer-Encoding"))) != "chunked") {
+        return {501, "Transfer-Encoding '" + req.get_header_value("Transfer-Encoding").substr(0, 40) + "' is not supported: only chunked"};
     }
     if (req.method == "POST" && !content_type_ok(req)) {
         return {415, "POST needs Content-Type: application/octet-stream (or text/plain); the body is the tape"};
     }
     return {};
+}
+
+bool accepts_gzip(std::string_view accept_encoding) {
+    std::optional<bool> gzip, any;  // what the gzip (x-gzip) and * elements say
+    while (!accept_encoding.empty()) {
+        const std::size_t comma = accept_encoding.find(',');
+        std::string_view element = accept_encoding.substr(0, comma);
+        accept_encoding = comma == std::string_view::npos ? std::string_view() : accept_encoding.substr(comma + 1);
+        const std::size_t semi = element.find(';');
+        const std::string coding = lower(trim(element.substr(0, semi)));
+        bool wanted = true;  // no q: 1
+        if (semi != std::string_view::npos) {
+            std::string_view params = element.substr(semi + 1);
+            const std::size_t eq = params.find('=');
+            const std::string name = lower(trim(params.substr(0, eq)));
+            const std::string_view value = eq == std::string_view::npos ? std::string_view() : trim(params.substr(eq + 1));
+            if (name != "q" || !valid_qvalue(value)) continue;  // an element with another parameter is ignored
+            wanted = value.find_first_not_of("0.") != std::string_view::npos;
+        }
+        if (coding == "gzip" || coding == "x-gzip") gzip = wanted;
+        else if (coding == "*") any = wanted;
+    }
+    return gzip ? *gzip : any.value_or(false);
+}
+
+void normalize_request(httplib::Request& req) {
+    std::string accepted;  // every Accept-Encoding header, as one list
+    const auto values = req.headers.equal_range("Accept-Encoding");
+    for (auto it = values.first; it != values.second; ++it) accepted += (accepted.empty() ? "" : ",") + it->second;
+    const bool gzip = accepts_gzip(accepted);
+    req.headers.erase("Accept-Encoding");
+    if (gzip) req.headers.emplace("Accept-Encoding", "gzip");
+    req.headers.erase("Range");
+    req.ranges.clear();
 }
 
 void add_security_headers(httplib::Response& res) {

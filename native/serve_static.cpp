@@ -66,13 +66,6 @@ void send_index(const fs::path& path, httplib::Response& res) {
     res.set_content(std::move(html), "text/html; charset=utf-8");
 }
 
-// Whether the client takes a gzip-encoded body (Accept-Encoding lists gzip without q=0).
-bool accepts_gzip(const httplib::Request& req) {
-    const std::string accepted = req.get_header_value("Accept-Encoding");
-    const std::size_t at = accepted.find("gzip");
-    return at != std::string::npos && accepted.compare(at + 4, 4, ";q=0") != 0;
-}
-
 void send_viewer_file(const StaticFiles& files, const std::string& name, const httplib::Request& req,
                       httplib::Response& res) {
     const auto it = std::find_if(std::begin(kViewerFiles), std::end(kViewerFiles), [&](const Served& s) { return name == s.name; });
@@ -85,7 +78,7 @@ void send_viewer_file(const StaticFiles& files, const std::string& name, const h
     if (name == "essi_viewer.wasm") {
         res.set_header("Vary", "Accept-Encoding");
         const fs::path gz = path.string() + ".gz";
-        if (accepts_gzip(req) && fs::is_regular_file(gz, ec)) {
+        if (accepts_gzip(req.get_header_value("Accept-Encoding")) && fs::is_regular_file(gz, ec)) {
             res.set_header("Content-Encoding", "gzip");
             return send_file(gz, it->type, res);
         }

@@ -1,5 +1,6 @@
 #include "share_store.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -187,6 +188,35 @@ std::optional<std::string> ShareStore::get(std::string_view id) {
     const void* data = sqlite3_column_blob(st.s, 0);
     const int n = sqlite3_column_bytes(st.s, 0);
     return std::string(static_cast<const char*>(data ? data : ""), static_cast<std::size_t>(n));
+}
+
+std::optional<std::uint64_t> ShareStore::size_of(std::string_view id) {
+    std::lock_guard lock(mutex_);
+    std::string ignored;
+    delete_expired(unix_now(), ignored);
+    Stmt st;
+    if (sqlite3_prepare_v2(db_, "SELECT size FROM shares WHERE id = ?1", -1, &st.s, nullptr) != SQLITE_OK) return std::nullopt;
+    bind_text(st.s, 1, id);
+    if (sqlite3_step(st.s) != SQLITE_ROW) return std::nullopt;
+    return static_cast<std::uint64_t>(sqlite3_column_int64(st.s, 0));
+}
+
+std::int64_t ShareStore::read(std::string_view id, std::uint64_t offset, char* out, std::size_t n) {
+    std::lock_guard lock(mutex_);
+    Stmt st;
+    if (sqlite3_prepare_v2(db_, "SELECT rowid FROM shares WHERE id = ?1", -1, &st.s, nullptr) != SQLITE_OK) return -1;
+    bind_text(st.s, 1, id);
+    if (sqlite3_step(st.s) != SQLITE_ROW) return -1;
+    sqlite3_blob* blob = nullptr;
+    if (sqlite3_blob_open(db_, "main", "shares", "content", sqlite3_column_int64(st.s, 0), 0, &blob) != SQLITE_OK) {
+        sqlite3_blob_close(blob);
+        return -1;
+    }
+    const auto size = static_cast<std::uint64_t>(sqlite3_blob_bytes(blob));
+    const std::size_t take = offset >= size ? 0 : static_cast<std::size_t>(std::min<std::uint64_t>(n, size - offset));
+    const bool ok = take == 0 || sqlite3_blob_read(blob, out, static_cast<int>(take), static_cast<int>(offset)) == SQLITE_OK;
+    sqlite3_blob_close(blob);
+    return ok ? static_cast<std::int64_t>(take) : -1;
 }
 
 ShareStore::Removal ShareStore::remove(std::string_view id, std::string_view token) {

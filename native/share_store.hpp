@@ -41,6 +41,11 @@ public:
     PutResult put(std::string_view bytes);
     // The tape stored under `id`, nullopt when there is none (or it expired: then it is deleted).
     std::optional<std::string> get(std::string_view id);
+    // The size of the tape stored under `id`, as get() finds it (without reading the tape).
+    std::optional<std::uint64_t> size_of(std::string_view id);
+    // Reads up to `n` bytes of the tape `id` from `offset` into `out` (SQLite's incremental blob I/O: never the
+    // whole tape in memory); the count read, 0 at the end, -1 when the tape is no longer there.
+    std::int64_t read(std::string_view id, std::uint64_t offset, char* out, std::size_t n);
     enum class Removal { removed, missing, wrong_token, failed };
     // Deletes the share `id` when `token` is the delete token its upload returned.
     Removal remove(std::string_view id, std::string_view token);

@@ -1,5 +1,5 @@
-// The share store's limits (native/share_store.cpp): delete tokens, expiry, the size bound, and stores made
-// before delete tokens existed.
+// The share store (native/share_store.cpp): delete tokens, expiry, the size bound, reading a tape in pieces,
+// and stores made before delete tokens existed.
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 #include <unistd.h>
@@ -40,6 +40,25 @@ TEST(ShareStoreLimits, DeleteNeedsTheUploadersToken) {
     EXPECT_FALSE(store->get(put.id));
     EXPECT_EQ(store->remove(put.id, put.delete_token), ShareStore::Removal::missing);
     fs::remove_all(d);
+}
+
+TEST(ShareStoreLimits, ATapeIsReadInPieces) {
+    const fs::path d = temp_dir("pieces");
+    auto store = open_store(d);
+    std::string tape;
+    for (int i = 0; i < 30000; ++i) tape += "+" + std::to_string(i) + "+0\n";
+    const auto put = store->put(tape);
+    ASSERT_TRUE(put.ok) << put.error;
+    ASSERT_EQ(store->size_of(put.id), tape.size());
+    std::string back;
+    char buf[4096];
+    for (std::int64_t n; (n = store->read(put.id, back.size(), buf, sizeof buf)) > 0;) back.append(buf, static_cast<std::size_t>(n));
+    EXPECT_EQ(back, tape);
+    EXPECT_EQ(store->read(put.id, tape.size() + 5, buf, sizeof buf), 0);
+    EXPECT_FALSE(store->size_of(sha256_hex("never stored")));
+    EXPECT_EQ(store->read(sha256_hex("never stored"), 0, buf, sizeof buf), -1);
+    ASSERT_EQ(store->remove(put.id, put.delete_token), ShareStore::Removal::removed);
+    EXPECT_EQ(store->read(put.id, 0, buf, sizeof buf), -1);  // deleted while it was sent: the sending stops
 }
 
 TEST(ShareStoreLimits, ExpiredSharesAreGoneAndDeleted) {

@@ -95,4 +95,18 @@ second=$!
 for _ in $(seq 1 100); do kill -0 "$second" 2>/dev/null || break; sleep 0.05; done
 if kill -0 "$second" 2>/dev/null; then kill "$second"; wait "$second" 2>/dev/null; fail "a second server on port $port started"
 else wait "$second"; rc=$?; [ $rc -eq 2 ] && grep -q 'cannot listen' "$tmp/second.err" && pass "second server on the same port: exit 2" || fail "second server: rc=$rc $(cat "$tmp/second.err")"; fi
+
+# --- size options: a sign, a fraction or a value over 2^64 - 1 is a usage error (exit 2), never "no limit" ----------
+size_flag() {  # size_flag NAME VALUE COMMAND...
+  local name="$1" value="$2"; shift 2
+  timeout 10 "$@" "$name" "$value" > "$tmp/size.out" 2> "$tmp/size.err"; local rc=$?
+  if [ $rc -eq 2 ] && grep -q -- "$name: '$value' is not a size" "$tmp/size.err"; then pass "$name $value: exit 2, '$(head -1 "$tmp/size.err" | cut -c1-60)...'"
+  else fail "$name $value: rc=$rc $(head -c 200 "$tmp/size.err")"; fi
+}
+for v in -1 18446744073709551616 16EB 1.5MB +5 5XB; do
+  size_flag --max-size "$v" "$essi" check "$tape"
+  for flag in --max-body --max-store --min-transfer-rate; do size_flag "$flag" "$v" "$essi" serve --port 0 --web-root "$tmp/web" --data "$tmp/data3"; done
+done
+"$essi" check --max-size 18446744073709551615 "$tape" > /dev/null 2>&1 && "$essi" check --max-size '15 EB' "$tape" > /dev/null 2>&1 && \
+  "$essi" check --max-size 1kib "$tape" > /dev/null 2>&1 && pass "--max-size 2^64-1, '15 EB' and 1kib are sizes" || fail "valid sizes refused"
 finish

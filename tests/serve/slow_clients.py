@@ -2,7 +2,9 @@
 """`essi serve` with 8 request threads against 64 slow clients (48 send their headers a byte at a time, 16 their
 body; from 32 loopback addresses) and one greedy client (40 idle connections from one address): a normal client still gets
 GET /api/health answered in under a second, the slow clients are cut off after --request-timeout (so are a slow
-body and, after 5 s, an idle kept-alive connection), and the greedy client's connections beyond --max-client-connections get 429. Loopback only; stops by itself (60 s alarm).
+body and, after 5 s, an idle kept-alive connection), and the greedy client's connections beyond --max-client-connections get 429; with every connection taken by slow
+senders of headers, a new client is still answered (the one waiting longest is closed for it). Loopback only;
+stops by itself (80 s alarm).
 Usage: slow_clients.py PATH/TO/essi"""
 import signal
 import socket
@@ -116,8 +118,32 @@ def idle_and_slow_body(port, report):
     body.close()
 
 
+def full_table(essi, report):
+    """--max-connections 16, all held by clients sending their headers a byte per 0.3 s (request timeout 10 s): a
+    new client gets GET /api/health answered within 3 s, because the connection waiting longest is closed for it."""
+    proc, port, _ = start_server(essi, "--max-connections", "16", "--request-timeout", "10")
+    try:
+        slow = []
+        for i in range(16):
+            s = socket.create_connection(("127.0.0.1", port), timeout=2, source_address=(f"127.0.0.{2 + i % 4}", 0))
+            s.setblocking(False)
+            slow.append(s)
+        trickle = Trickle(slow, f"GET /api/health HTTP/1.1\r\nHost: 127.0.0.1\r\nX-Pad: {'a' * 200}\r\n".encode())
+        trickle.run(1.5, 0.3)
+        status, seconds = timed_get(port, timeout=8, source="127.0.0.100")
+        report.check(status.startswith("HTTP/1.1 200") and seconds < 3.0,
+                     f"all 16 connections taken by slow headers: a new client answered {status!r} in {seconds:.2f} s")
+        trickle.run(0.3, 0.3)
+        closed = sum(1 for s in slow if closed_by_server(s))
+        report.check(closed >= 1, f"{closed} of the 16 slow connections closed to make room")
+        for s in slow:
+            s.close()
+    finally:
+        stop_server(proc)
+
+
 def main(essi):
-    signal.alarm(60)
+    signal.alarm(80)
     report = Report()
     proc, port, _ = start_server(essi, "--threads", "8", "--request-timeout", str(TIMEOUT_S),
                                  "--max-client-connections", str(PER_CLIENT))
@@ -157,6 +183,7 @@ def main(essi):
             s.close()
     finally:
         stop_server(proc)
+    full_table(essi, report)
     return report.finish()
 
 
