@@ -145,26 +145,6 @@ double pseudo_angle(Point from, Point to) {
     return x >= 0 ? (y >= 0 ? q : 4 + q) : 2 - q;
 }
 
-// Whether moving the piece's start or end keeps it running forwards (a trimmed line or arc that would run
-// backwards is a gouge): for an arc, the new ends must lie in the old ones' order along its sense.
-bool runs_forward(const MotionRecord& r, Point new_start, Point new_end) {
-    if (r.curve == CurveKind::Line) return dot(new_end - new_start, r.end - r.start) >= -kKerfLengthEpsilon;
-    if (norm(new_end - new_start) <= kKerfLengthEpsilon) return true;
-    // Where the new ends lie along the arc's sense, from its old start (pseudo-angles): a sub-arc of the old one
-    // runs forwards. (A full circle's old end is a whole turn on.)
-    const auto along = [&](Point q) {
-        const Point a = r.start - r.centre, b = q - r.centre;
-        return r.ccw ? pseudo_angle(a, b) : pseudo_angle(b, a);
-    };
-    const auto near = [](Point p, Point q) { return norm(p - q) <= kKerfLengthEpsilon; };
-    const bool full = std::abs(r.sweep) >= 2 * kPi - 1e-12;
-    const double old_end = full ? 4.0 : along(r.end);
-    const double s = near(new_start, r.start) ? 0.0 : along(new_start);
-    const double e = near(new_end, r.end) ? old_end : along(new_end);
-    constexpr double kSlack = 1e-12;
-    return s <= e + kSlack && e <= old_end + kSlack;
-}
-
 // The centre of an entry arc that runs from `torch` to `end` (on the programmed arc's offset): on the line from
 // the programmed centre through `end`, as far from the torch as from `end`.
 Point entry_arc_centre(Point centre, Point end, Point torch) {
@@ -346,7 +326,6 @@ void KerfPath::take_chords(Piece& first) {
 void KerfPath::enter(const MotionRecord& m) {
     Piece& first = next_piece();
     offset_piece(m, first);
-    entry_offset_ = first.rec;
     if (m.curve == CurveKind::Line) {
         const Point dir = unit(m.end - torch_);
         const Point t = norm(m.end - torch_) > kKerfLengthEpsilon ? dir : unit(m.end - m.start);
@@ -354,9 +333,9 @@ void KerfPath::enter(const MotionRecord& m) {
         first.tangent_end = t;
     } else if (m.curve == CurveKind::Arc) {
         // The end moves along its radius; the centre moves along the same line until it is as far from the
-        // torch as from the new end.
+        // torch as from the new end. The corner after it turns from the programmed arc's direction at its end
+        // (LinuxCNC's; the entry's own is the opposite when its centre lies beyond the end): offset_piece's.
         first.rec.centre = entry_arc_centre(m.centre, first.rec.end, torch_);
-        first.tangent_end = arc_tangent(first.rec.end, first.rec.centre, m.ccw);
     }
     first.rec.start = torch_;
     reshape(first.rec);
@@ -409,7 +388,7 @@ void KerfPath::turn_corner(Piece& next, const MotionRecord& m) {
         // else joined round the corner (also a concave turn of a line into a line: the join crosses the
         // contour, as LinuxCNC cuts it).
         concave = torch_outside(next.rec) ||
-                  (next.rec.curve == CurveKind::Line && torch_outside(open_is_entry_ ? entry_offset_ : open_piece().rec));
+                  (next.rec.curve == CurveKind::Line && torch_outside(open_piece().rec));
         convex = !concave;
     }
     if (convex) {
@@ -445,12 +424,12 @@ bool KerfPath::torch_outside(const MotionRecord& r) const {
 
 // Whether the open piece may end at `x`: a line must not run against its programmed direction, an arc must not
 // sweep more than its programmed sweep (plus LinuxCNC's slack of 0.0254 rad) from its start to `x` (a sweep
-// that wraps round means the end passed the start). An entry line always may (LinuxCNC: its start is the
-// torch, before the contour).
+// that wraps round means the end passed the start). An entry always may (LinuxCNC checks no entry, line or
+// arc: it starts at the torch, off the contour).
 bool KerfPath::open_may_end_at(Point x) {
     const Piece& p = open_piece();
     const MotionRecord& a = p.rec;
-    if (open_is_entry_) return a.curve != CurveKind::Arc || runs_forward(a, a.start, x);
+    if (open_is_entry_) return true;
     if (a.curve != CurveKind::Arc) return dot(x - a.start, p.tangent_end) >= -kKerfLengthEpsilon;
     if (norm(x - a.start) <= kKerfLengthEpsilon) return true;
     const Point u = a.start - a.centre, v = x - a.centre;
@@ -480,10 +459,11 @@ void KerfPath::check_open_end(const MotionRecord& m) {
 // where it ends.
 bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
     MotionRecord& a = open_piece().rec;
-    const MotionRecord& before = open_is_entry_ ? entry_offset_ : a;
+    const MotionRecord& before = a;
     const MotionRecord& after = next.rec;
     // The offset of each programmed motion as a whole: a line through the untrimmed end along the programmed
-    // direction (a piece that starts where a nearly tangent one ended is not on it), a circle about the centre.
+    // direction (a piece that starts where a nearly tangent one ended is not on it; an entry's: along its own),
+    // a circle about the centre (an entry arc's: its own, the centre it keeps).
     Carrier ca, cb;
     if (before.curve == CurveKind::Arc) {
         ca = {false, {}, {}, before.centre, before.end_radius};
@@ -524,7 +504,6 @@ bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
         return false;
     }
     a.end = x;
-    if (open_is_entry_ && a.curve == CurveKind::Arc) a.centre = entry_arc_centre(entry_offset_.centre, a.end, a.start);
     reshape(a);
     emit_open();
     next.rec.start = x;

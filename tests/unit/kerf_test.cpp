@@ -235,6 +235,24 @@ TEST(KerfPath, LineIntoArcNearlyReversedIsTrimmedWhenTheTorchIsOutside) {
     EXPECT_FALSE(out.motions[1].ccw);
 }
 
+// G3 X0 Y0 I0 J5 as the entry (centre moved to (0,-5.5), radius 4.5), then a line turning 45° to the left: the
+// concave corner trims the entry on its own circle, which keeps its centre (rs274: ARC_FEED to (0.3967, -1.0175)
+// about (0, -5.5), STRAIGHT_FEED to (-9.2929, -10.7071)), not on the programmed arc's offset.
+TEST(KerfPath, EntryArcIsTrimmedOnItsOwnCircle) {
+    Contour c({0, -10});
+    c.arc(0, 0, 0, -5, true).line(-10, -10);
+    std::vector<KerfGouge> gouges;
+    const Collect out = compensate(c.records, &gouges);
+    EXPECT_TRUE(gouges.empty());
+    ASSERT_EQ(out.motions.size(), 2u);
+    expect_end(out.motions[0], 0.396694, -1.017519, CurveKind::Arc);
+    EXPECT_NEAR(out.motions[0].centre.x, 0, 1e-12);
+    EXPECT_NEAR(out.motions[0].centre.y, -5.5, 1e-12);
+    EXPECT_NEAR(out.motions[0].radius, 4.5, 1e-12);
+    EXPECT_TRUE(out.motions[0].ccw);
+    expect_end(out.motions[1], -9.292893, -10.707107, CurveKind::Line);
+}
+
 // Right of the direction of travel mirrors left: a square run the other way round with kerf right gives the
 // mirror image of the left square.
 TEST(KerfPath, RightIsTheMirrorOfLeft) {

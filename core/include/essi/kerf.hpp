@@ -18,7 +18,8 @@
 //     where the compensation ends;
 //   - entry: the first motion with compensation runs from where the torch is to the compensated end of its own
 //     piece (a line: its end shifted along the normal of the entry's own direction; an arc: to its end moved
-//     along the radius, about a centre on the same radius line that is equally far from both ends);
+//     along the radius, about a centre on the same radius line that is equally far from both ends, which a trim
+//     keeps; the corner after it turns from the programmed arc's direction); an entry is never a gouge;
 //   - exit: the last compensated piece ends at its end shifted along its normal; the first motion without
 //     compensation runs from there to its programmed end.
 // Pieces carry the programmed motion's line, block, kind, tools, feed and kerf; a join arc carries those of
@@ -107,10 +108,8 @@ private:
     int open_index_ = 0;
     Piece& open_piece() { return pieces_[open_index_]; }
     Piece& next_piece() { return pieces_[1 - open_index_]; }
-    // The open piece is an entry (it starts at the torch): a concave corner after it trims where the offset of
-    // its programmed motion meets the next piece, not the entry itself.
+    // The open piece is an entry (it starts at the torch): a concave corner after it may trim it anywhere.
     bool open_is_entry_ = false;
-    MotionRecord entry_offset_;
     std::vector<Piece> chords_;  // a parabola's chords after the first
     double side_ = 1;    // +1: left of the direction of travel, -1: right
     double radius_ = 0;  // the offset (mm)
