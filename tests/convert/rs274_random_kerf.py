@@ -2,7 +2,7 @@
 """Differential test of the kerf-compensated path against LinuxCNC on random contours (docs/semantics.md §8).
 
 A fixed seed makes COUNT (default 1000) closed contours of lines and arcs, each cut with kerf compensation (29 or
-30, a width of 1 to 4 mm) from a lead-in line and left by a rapid after 38. Every corner turns by an angle drawn
+30, a width of 1 to 4 mm) from a lead-in (a line, or in half of them an arc) and left by a rapid after 38. Every corner turns by an angle drawn
 over 0–180° to either side, a fifth of them between 170° and 180°. The contours are one ESSI tape in units of
 0.0001 mm (a profile with `unit_mm` 0.0001), so `essi convert --to gcode --absolute` writes the same coordinates
 (4 decimals); every arc ends exactly on its circle (its end is its start's radius vector turned by the angle of a
@@ -128,6 +128,44 @@ class Contour:
         self.heading = math.atan2(sense * w[0], -sense * w[1])
         self.end_heading = self.heading
 
+    def arc_lead_in(self, heading):
+        """Makes the lead-in an arc that ends at the start travelling in `heading` (when one fits: its chord longer
+        than the offset, and its compensated centre on the same side of its compensated end as its own centre;
+        rs274 trims an entry arc whose centre moved beyond its end at a point off the next piece's offset)."""
+        rng = self.rng
+        for _ in range(20):
+            a, b, c = rng.choice(TRIPLES)
+            sense = rng.choice((1, -1))
+            radius = rng.uniform(5, 20) * UNITS_PER_MM
+            # from the centre to the end, a multiple of c; the start is the end turned back by the triple's angle
+            d = heading - sense * math.pi / 2
+            v_end = (int(round(math.cos(d) * radius / c)) * c, int(round(math.sin(d) * radius / c)) * c)
+            centre = (self.start[0] - v_end[0], self.start[1] - v_end[1])
+            v_start = ((v_end[0] * a + sense * v_end[1] * b) // c, (-sense * v_end[0] * b + v_end[1] * a) // c)
+            start = (centre[0] + v_start[0], centre[1] + v_start[1])
+            r = self.offset_mm * UNITS_PER_MM
+            if math.hypot(self.start[0] - start[0], self.start[1] - start[1]) < r + 0.5 * UNITS_PER_MM:
+                continue
+            # the compensated end and the entry's centre (docs/semantics.md §8, entry)
+            inside = (self.side == 29) == (sense > 0)
+            big_r = math.hypot(*v_end)
+            k = (big_r - r if inside else big_r + r) / big_r
+            end = (centre[0] + k * v_end[0], centre[1] + k * v_end[1])
+            u = ((end[0] - centre[0]) / (k * big_r), (end[1] - centre[1]) / (k * big_r))
+            ct = (centre[0] - start[0], centre[1] - start[1])
+            den = 2 * (u[0] * ct[0] + u[1] * ct[1] + k * big_r)
+            if den == 0:
+                continue
+            s = ((k * big_r) ** 2 - ct[0] ** 2 - ct[1] ** 2) / den
+            moved = (centre[0] + s * u[0], centre[1] + s * u[1])
+            if (moved[0] - end[0]) * (centre[0] - end[0]) + (moved[1] - end[1]) * (centre[1] - end[1]) <= 0:
+                continue
+            self.lead_start = start
+            self.lead_in = (word(self.start[0] - start[0]) + word(self.start[1] - start[1]) + word(centre[0] - start[0]) +
+                            word(centre[1] - start[1]) + ("+" if sense > 0 else "-"))
+            self.end_heading = math.atan2(sense * v_end[0], -sense * v_end[1])
+            return
+
     def build(self):
         rng = self.rng
         pieces = rng.randrange(3, 8)
@@ -140,6 +178,8 @@ class Contour:
         self.lead_start = lead_start
         self.lead_in = word(self.start[0] - lead_start[0]) + word(self.start[1] - lead_start[1])
         self.end_heading = math.atan2(self.start[1] - lead_start[1], self.start[0] - lead_start[0])
+        if rng.random() < 0.5:
+            self.arc_lead_in(lead_heading)
         self.heading = first_heading
         for i in range(pieces):
             if i > 0:
