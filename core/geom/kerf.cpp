@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <optional>
 
 #include "essi/geom.hpp"
 
@@ -458,8 +457,7 @@ void KerfPath::check_open_end(const MotionRecord& m) {
 // they do not meet or the piece before would have to run backwards (false: no trim). The next piece is checked
 // where it ends.
 bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
-    MotionRecord& a = open_piece().rec;
-    const MotionRecord& before = a;
+    MotionRecord& before = open_piece().rec;
     const MotionRecord& after = next.rec;
     // The offset of each programmed motion as a whole: a line through the untrimmed end along the programmed
     // direction (a piece that starts where a nearly tangent one ended is not on it; an entry's: along its own),
@@ -468,8 +466,8 @@ bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
     if (before.curve == CurveKind::Arc) {
         ca = {false, {}, {}, before.centre, before.end_radius};
     } else {
-        ca.p = a.end;  // (an entry's: the end LinuxCNC's entry has, on the normal of the entry's own direction)
-        ca.d = open_piece().chord ? unit(a.end - a.start) : open_piece().tangent_end;
+        ca.p = before.end;  // (an entry's: on the normal of the entry's own direction, as LinuxCNC's)
+        ca.d = open_piece().chord ? unit(before.end - before.start) : open_piece().tangent_end;
     }
     if (after.curve == CurveKind::Arc) {
         cb = {false, {}, {}, after.centre, after.radius};
@@ -503,8 +501,8 @@ bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
         gouge(m, Msg::GeomKerfGouge, {mm(radius_)});
         return false;
     }
-    a.end = x;
-    reshape(a);
+    before.end = x;
+    reshape(before);
     emit_open();
     next.rec.start = x;
     next.start_moved = true;
