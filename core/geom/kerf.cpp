@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <optional>
 
 #include "essi/geom.hpp"
 
@@ -91,8 +90,16 @@ struct Points {
     [[nodiscard]] const Point* end() const { return p + n; }
 };
 
-// The intersections of two pieces (lines and arcs of the compensated path), each taken as a whole line or circle.
-Points intersections(const MotionRecord& a, const MotionRecord& b) {
+// A piece of the compensated path as a whole line (a point and its unit direction) or circle.
+struct Carrier {
+    bool line = true;
+    Point p, d;       // a line: a point on it, its direction
+    Point c;          // a circle: its centre and radius
+    double r = 0;
+};
+
+// The intersections of two lines or circles.
+Points intersections(const Carrier& a, const Carrier& b) {
     Points out;
     const auto line_circle = [&](Point p, Point d, Point c, double r) {
         // |p + s d - c| = r, d a unit vector
@@ -104,27 +111,23 @@ Points intersections(const MotionRecord& a, const MotionRecord& b) {
         out.push_back(p + (-bq - root) * d);
         out.push_back(p + (-bq + root) * d);
     };
-    const bool a_line = a.curve == CurveKind::Line, b_line = b.curve == CurveKind::Line;
-    if (a_line && b_line) {
-        const Point da = b.start - a.start;
-        const Point u = a.end - a.start, v = b.end - b.start;
-        const double den = cross(u, v);
+    if (a.line && b.line) {
+        const double den = cross(a.d, b.d);
         if (den == 0) return out;
-        out.push_back(a.start + (cross(da, v) / den) * u);
-    } else if (a_line || b_line) {
-        const MotionRecord& l = a_line ? a : b;
-        const MotionRecord& c = a_line ? b : a;
-        line_circle(l.start, unit(l.end - l.start), c.centre, a_line ? c.radius : c.end_radius);
+        out.push_back(a.p + (cross(b.p - a.p, b.d) / den) * a.d);
+    } else if (a.line || b.line) {
+        const Carrier& l = a.line ? a : b;
+        const Carrier& c = a.line ? b : a;
+        line_circle(l.p, l.d, c.c, c.r);
     } else {
-        // circle a (its end radius) with circle b (its start radius)
-        const double r0 = a.end_radius, r1 = b.radius;
-        const Point d = b.centre - a.centre;
+        const double r0 = a.r, r1 = b.r;
+        const Point d = b.c - a.c;
         const double dist = norm(d);
         if (dist == 0 || dist > r0 + r1 || dist < std::abs(r0 - r1)) return out;
         const double along = (dist * dist + r0 * r0 - r1 * r1) / (2 * dist);
         const double h = std::sqrt(std::max(0.0, r0 * r0 - along * along));
         const Point e = (1 / dist) * d;
-        const Point m = a.centre + along * e;
+        const Point m = a.c + along * e;
         out.push_back(m + h * left_normal(e));
         out.push_back(m - h * left_normal(e));
     }
@@ -139,26 +142,6 @@ double pseudo_angle(Point from, Point to) {
     if (a == 0) return 0;
     const double q = y / a;  // in [-1, 1]: the "diamond angle"
     return x >= 0 ? (y >= 0 ? q : 4 + q) : 2 - q;
-}
-
-// Whether moving the piece's start or end keeps it running forwards (a trimmed line or arc that would run
-// backwards is a gouge): for an arc, the new ends must lie in the old ones' order along its sense.
-bool runs_forward(const MotionRecord& r, Point new_start, Point new_end) {
-    if (r.curve == CurveKind::Line) return dot(new_end - new_start, r.end - r.start) >= -kKerfLengthEpsilon;
-    if (norm(new_end - new_start) <= kKerfLengthEpsilon) return true;
-    // Where the new ends lie along the arc's sense, from its old start (pseudo-angles): a sub-arc of the old one
-    // runs forwards. (A full circle's old end is a whole turn on.)
-    const auto along = [&](Point q) {
-        const Point a = r.start - r.centre, b = q - r.centre;
-        return r.ccw ? pseudo_angle(a, b) : pseudo_angle(b, a);
-    };
-    const auto near = [](Point p, Point q) { return norm(p - q) <= kKerfLengthEpsilon; };
-    const bool full = std::abs(r.sweep) >= 2 * kPi - 1e-12;
-    const double old_end = full ? 4.0 : along(r.end);
-    const double s = near(new_start, r.start) ? 0.0 : along(new_start);
-    const double e = near(new_end, r.end) ? old_end : along(new_end);
-    constexpr double kSlack = 1e-12;
-    return s <= e + kSlack && e <= old_end + kSlack;
 }
 
 // The centre of an entry arc that runs from `torch` to `end` (on the programmed arc's offset): on the line from
@@ -225,6 +208,7 @@ void KerfPath::event(const MachineEvent& e) {
 
 void KerfPath::finish() {
     if (!open_) return;
+    check_open_end(open_piece().rec);
     emit_open();
     open_ = false;
 }
@@ -257,6 +241,7 @@ void KerfPath::motion(const MotionRecord& m) {
         return;
     }
     if (open_ && (side != side_ || m.kerf_mm != radius_)) {
+        check_open_end(m);
         emit_open();  // a new side or width: the open piece ends as it stands, the next one enters anew
         open_ = false;
     }
@@ -279,6 +264,8 @@ void KerfPath::offset_piece(const MotionRecord& m, Piece& p) {
         p.rec.start = m.start + shift;
         p.rec.end = m.end + shift;
         p.tangent_end = p.tangent_start = t;
+        p.chord = false;
+        p.start_moved = false;
     } else if (m.curve == CurveKind::Arc) {
         // Left of a ccw arc is its centre: the radius shrinks; a cw arc's grows. The angles stay.
         const double grow = m.ccw ? -off : off;
@@ -293,6 +280,10 @@ void KerfPath::offset_piece(const MotionRecord& m, Piece& p) {
         p.rec.length_mm = std::abs(m.sweep) * (p.rec.radius + p.rec.end_radius) / 2;
         p.tangent_end = end_tangent(m);
         p.tangent_start = start_tangent(m);
+        p.sweep = std::abs(m.sweep);
+        p.start_radius = m.start - m.centre;
+        p.chord = false;
+        p.start_moved = false;
     } else {
         const ParabolaGeom& g = m.parabola;
         const double step = std::sqrt(8 * chord_tolerance_mm_ * g.p);
@@ -306,7 +297,7 @@ void KerfPath::offset_piece(const MotionRecord& m, Piece& p) {
             const Point q = at(i);
             const Point chord = unit(q - prev);
             Piece c{m, i == n ? m.end : parabola_point(g, g.t0 + (g.t1 - g.t0) * i / n), chord,
-                    i == 1 ? start_tangent(m) : chord};
+                    i == 1 ? start_tangent(m) : chord, 0, {}, true};
             c.rec.curve = CurveKind::Line;
             c.rec.start = prev;
             c.rec.end = q;
@@ -334,7 +325,6 @@ void KerfPath::take_chords(Piece& first) {
 void KerfPath::enter(const MotionRecord& m) {
     Piece& first = next_piece();
     offset_piece(m, first);
-    entry_offset_ = first.rec;
     if (m.curve == CurveKind::Line) {
         const Point dir = unit(m.end - torch_);
         const Point t = norm(m.end - torch_) > kKerfLengthEpsilon ? dir : unit(m.end - m.start);
@@ -342,9 +332,9 @@ void KerfPath::enter(const MotionRecord& m) {
         first.tangent_end = t;
     } else if (m.curve == CurveKind::Arc) {
         // The end moves along its radius; the centre moves along the same line until it is as far from the
-        // torch as from the new end.
+        // torch as from the new end. The corner after it turns from the programmed arc's direction at its end
+        // (LinuxCNC's; the entry's own is the opposite when its centre lies beyond the end): offset_piece's.
         first.rec.centre = entry_arc_centre(m.centre, first.rec.end, torch_);
-        first.tangent_end = arc_tangent(first.rec.end, first.rec.centre, m.ccw);
     }
     first.rec.start = torch_;
     reshape(first.rec);
@@ -355,6 +345,7 @@ void KerfPath::enter(const MotionRecord& m) {
 
 // A motion without compensation after compensated ones: from the compensated position to its programmed end.
 void KerfPath::leave(const MotionRecord& m) {
+    check_open_end(m);
     emit_open();
     open_ = false;
     MotionRecord exit = m;
@@ -388,12 +379,22 @@ void KerfPath::turn_corner(Piece& next, const MotionRecord& m) {
     // atan2(s, c) exceeds kKerfCornerTolerance when s cos(tol) > c sin(tol).
     const Point ta = open_piece().tangent_end, tb = next.tangent_start;
     const double c = dot(ta, tb), s = -side_ * cross(ta, tb);
-    const bool reversal = c < -kCosCornerTolerance;  // (turns back: convex from either side)
-    const bool convex = reversal || s * kCosCornerTolerance > c * kSinCornerTolerance;
-    const bool concave = !reversal && -s * kCosCornerTolerance > c * kSinCornerTolerance;
+    bool convex = s * kCosCornerTolerance > c * kSinCornerTolerance;
+    bool concave = -s * kCosCornerTolerance > c * kSinCornerTolerance;
+    if (c < -kCosCornerTolerance) {
+        // Within the tolerance of a full reversal, either way round (LinuxCNC's rule): trimmed when the torch is
+        // outside the next piece's arc, or the next piece is a line and the torch is outside the arc before;
+        // else joined round the corner (also a concave turn of a line into a line: the join crosses the
+        // contour, as LinuxCNC cuts it).
+        concave = torch_outside(next.rec) ||
+                  (next.rec.curve == CurveKind::Line && torch_outside(open_piece().rec));
+        convex = !concave;
+    }
     if (convex) {
         // Around the corner on an arc of the offset radius about the programmed corner (a rapid goes straight to
-        // where the arc would end, as LinuxCNC's G0).
+        // where the arc would end, as LinuxCNC's G0). Before a line the open piece is checked as it ends
+        // (LinuxCNC's: not before an arc).
+        if (m.curve == CurveKind::Line) check_open_end(m);
         emit_open();
         MotionRecord join = m;
         join.curve = m.kind == MotionKind::Rapid ? CurveKind::Line : CurveKind::Arc;
@@ -412,36 +413,99 @@ void KerfPath::turn_corner(Piece& next, const MotionRecord& m) {
     const Point gap = next.rec.start - torch_;
     const bool moved = dot(gap, gap) > kKerfLengthEpsilon * kKerfLengthEpsilon;
     next.rec.start = torch_;
+    next.start_moved = moved;
     if (moved) reshape(next.rec, is_full_circle(next.rec));
 }
 
-// A concave corner: both pieces end at their intersection nearest the corner. A gouge when they do not meet or
-// one of them would run backwards; false (no trim) when they do not meet or the piece before would.
+bool KerfPath::torch_outside(const MotionRecord& r) const {
+    return r.curve == CurveKind::Arc && (side_ > 0) != r.ccw;
+}
+
+// Whether the open piece may end at `x`: a line must not run against its programmed direction, an arc must not
+// sweep more than its programmed sweep (plus LinuxCNC's slack of 0.0254 rad) from its start to `x` (a sweep
+// that wraps round means the end passed the start). An entry always may (LinuxCNC checks no entry, line or
+// arc: it starts at the torch, off the contour).
+bool KerfPath::open_may_end_at(Point x) {
+    const Piece& p = open_piece();
+    const MotionRecord& a = p.rec;
+    if (open_is_entry_) return true;
+    if (a.curve != CurveKind::Arc) return dot(x - a.start, p.tangent_end) >= -kKerfLengthEpsilon;
+    if (norm(x - a.start) <= kKerfLengthEpsilon) return true;
+    const Point u = a.start - a.centre, v = x - a.centre;
+    // Within the programmed sweep (the common case, without trigonometry: pseudo-angles are monotone)
+    const Point w = p.corner - a.centre;
+    const double along = a.ccw ? pseudo_angle(u, v) : pseudo_angle(v, u);
+    const double programmed = p.sweep >= 2 * kPi - 1e-12 ? 4.0
+                              : a.ccw                    ? pseudo_angle(p.start_radius, w)
+                                                         : pseudo_angle(w, p.start_radius);
+    if (along > 0 && along <= programmed) return true;
+    double sweep = std::atan2(a.ccw ? cross(u, v) : cross(v, u), dot(u, v));
+    if (sweep <= 0) sweep += 2 * kPi;
+    return sweep <= p.sweep + kKerfArcSweepSlack;
+}
+
+// The open piece ends as it is (the compensation ends, or the program): a gouge if it runs backwards (only a
+// piece whose start moved can).
+void KerfPath::check_open_end(const MotionRecord& m) {
+    if (!open_ || !open_piece().start_moved || open_may_end_at(open_piece().rec.end)) return;
+    gouge(m, Msg::GeomKerfGouge, {mm(radius_)});
+}
+
+// A concave corner: both pieces end at their intersection (of the two, the one LinuxCNC takes: for a line and
+// an arc, the one ahead of the arc's centre along the line when the torch is inside the arc, else the one
+// behind; for two arcs, the one on the side of the line between the centres given by the senses). A gouge when
+// they do not meet or the piece before would have to run backwards (false: no trim). The next piece is checked
+// where it ends.
 bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
-    MotionRecord& a = open_piece().rec;
-    const Point near = 0.5 * (a.end + next.rec.start);
-    std::optional<Point> best;
-    for (const Point& x : intersections(open_is_entry_ ? entry_offset_ : a, next.rec))
-        if (!best || norm(x - near) < norm(*best - near)) best = x;
-    if (!best) {
+    MotionRecord& before = open_piece().rec;
+    const MotionRecord& after = next.rec;
+    // The offset of each programmed motion as a whole: a line through the untrimmed end along the programmed
+    // direction (a piece that starts where a nearly tangent one ended is not on it; an entry's: along its own),
+    // a circle about the centre (an entry arc's: its own, the centre it keeps).
+    Carrier ca, cb;
+    if (before.curve == CurveKind::Arc) {
+        ca = {false, {}, {}, before.centre, before.end_radius};
+    } else {
+        ca.p = before.end;  // (an entry's: on the normal of the entry's own direction, as LinuxCNC's)
+        ca.d = open_piece().chord ? unit(before.end - before.start) : open_piece().tangent_end;
+    }
+    if (after.curve == CurveKind::Arc) {
+        cb = {false, {}, {}, after.centre, after.radius};
+    } else {
+        cb.p = after.start;
+        cb.d = unit(after.end - after.start);
+    }
+    const Points xs = intersections(ca, cb);
+    if (xs.n == 0) {
         gouge(m, Msg::GeomKerfPiecesDoNotMeet, {mm(radius_)});
         return false;
     }
-    const auto report = [&] {
+    Point x = xs.p[0];
+    if (xs.n == 2) {
+        // key(q): the larger is taken
+        const auto key = [&](Point q) {
+            if (ca.line) {
+                const double k = dot(q - cb.c, ca.d);
+                return torch_outside(after) ? -k : k;
+            }
+            if (cb.line) {
+                const double k = dot(q - ca.c, cb.d);
+                return torch_outside(before) ? k : -k;
+            }
+            const double k = cross(cb.c - ca.c, q - ca.c);
+            return torch_outside(before) == after.ccw ? -k : k;
+        };
+        if (key(xs.p[1]) > key(x)) x = xs.p[1];
+    }
+    if (!open_may_end_at(x)) {
         gouge(m, Msg::GeomKerfGouge, {mm(radius_)});
-    };
-    if (!runs_forward(a, a.start, *best)) {
-        report();
         return false;
     }
-    // The piece before still ends at the intersection (as rs274 has it before it stops); a next piece that runs
-    // backwards from there is drawn as the torch would go: into the contour.
-    if (!runs_forward(next.rec, *best, next.rec.end)) report();
-    a.end = *best;
-    if (open_is_entry_ && a.curve == CurveKind::Arc) a.centre = entry_arc_centre(entry_offset_.centre, a.end, a.start);
-    reshape(a);
+    before.end = x;
+    reshape(before);
     emit_open();
-    next.rec.start = *best;
+    next.rec.start = x;
+    next.start_moved = true;
     reshape(next.rec);
     return true;
 }

@@ -638,7 +638,7 @@ test('copy and export: a problem, a line, the inspector and the report as essi c
   assert.equal(csv.length, 2 + state.diagnostics.length);  // (the header, a row each, the last line end)
   // (the first problem is the cut plan's note on its lone contour, the gouge's error further down)
   assert.match(csv[1], new RegExp(`^${file.replace('.', '\\.')},note,N603,${line},1,`));
-  assert.ok(csv.some((row) => /^bad_kerf_gouge\.esi,error,E307,13,1,/.test(row)), csv.join('\n'));
+  assert.ok(csv.some((row) => /^bad_kerf_gouge\.esi,error,E307,14,1,/.test(row)), csv.join('\n'));
   await page.close();
 });
 

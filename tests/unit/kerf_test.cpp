@@ -168,18 +168,89 @@ TEST(KerfPath, LineIntoArcTrimsAtTheirIntersection) {
     expect_end(out.motions[4], 20, 1, CurveKind::Line);
 }
 
-// A slot narrower than the kerf: rs274 stops with "Straight feed in concave corner cannot be reached by the tool
-// without gouging" at X9.5 Y5; the compensated path names that motion and goes on.
+// A slot narrower than the kerf: the piece of X9.5 Y5 runs backwards from the trim, and rs274 stops with
+// "Straight feed in concave corner cannot be reached by the tool without gouging" at the convex corner after it,
+// converting X9.5 Y10; the compensated path names that motion and goes on.
 TEST(KerfPath, NarrowSlotIsAGougeNamingItsMotion) {
     Contour c({0, -10});
     c.line(0, 0).line(10, 0).line(10, 5).line(9.5, 5).line(9.5, 10).kerf(KerfSide::Off).line(25, -10);
     std::vector<KerfGouge> gouges;
     const Collect out = compensate(c.records, &gouges);
     ASSERT_EQ(gouges.size(), 1u);
-    EXPECT_EQ(gouges[0].line, 4u);
+    EXPECT_EQ(gouges[0].line, 5u);
     const std::string why = essi::format_message(gouges[0].msg, essi::Lang::En, gouges[0].args);
     EXPECT_NE(why.find("gouge"), std::string::npos) << why;
     EXPECT_EQ(out.motions.back().end, (Point{25, -10}));
+}
+
+// Two 100 mm lines turning 178° to the left, kerf left 5 mm (29+100): within 0.05 rad of a full reversal rs274
+// joins them round the tip as at a convex corner (G41 D1 of 10 mm: the arc to (99.8255, -4.9970) about
+// (100, 0), clockwise), and takes the program: the join crosses the contour, and nothing is a gouge.
+TEST(KerfPath, LineIntoLineNearlyReversedIsJoinedAsLinuxCncDoes) {
+    const double a = 178 * kPi / 180;
+    Contour c({0, 0}, KerfSide::Left, 5);
+    c.line(100, 0).line(100 + 100 * std::cos(a), 100 * std::sin(a));
+    std::vector<KerfGouge> gouges;
+    const Collect out = compensate(c.records, &gouges);
+    EXPECT_TRUE(gouges.empty());
+    ASSERT_EQ(out.motions.size(), 3u);
+    expect_end(out.motions[0], 100, 5, CurveKind::Line);
+    expect_end(out.motions[1], 99.825503, -4.996954, CurveKind::Arc);
+    EXPECT_FALSE(out.motions[1].ccw);
+    EXPECT_NEAR(out.motions[1].centre.x, 100, 1e-12);
+    EXPECT_NEAR(out.motions[1].centre.y, 0, 1e-12);
+    EXPECT_NEAR(out.motions[1].sweep, -182 * kPi / 180, 1e-9);
+    expect_end(out.motions[2], -0.113580, -1.507004, CurveKind::Line);
+}
+
+// The same at 175°: the corner is concave, the entry is trimmed 114.5 mm back (rs274: to (-14.5188, 5); an
+// entry never runs backwards for it) and the second line then runs backwards from there. rs274 refuses the
+// program where that line ends, at G40: the gouge names the motion after the compensation.
+TEST(KerfPath, PieceRunningBackwardsIsAGougeWhereItEnds) {
+    const double a = 175 * kPi / 180;
+    Contour c({0, 0}, KerfSide::Left, 5);
+    c.line(100, 0).line(100 + 100 * std::cos(a), 100 * std::sin(a)).kerf(KerfSide::Off).line(0, 0);
+    std::vector<KerfGouge> gouges;
+    const Collect out = compensate(c.records, &gouges);
+    ASSERT_EQ(gouges.size(), 1u);
+    EXPECT_EQ(gouges[0].line, 3u);
+    ASSERT_EQ(out.motions.size(), 3u);
+    expect_end(out.motions[0], -14.518768, 5, CurveKind::Line);
+}
+
+// A line into an arc whose start turns 178.5° to the left, kerf left 1 mm, outside the clockwise arc
+// (29/7/+1000+0/-487+513+13+500-/8/38/64): rs274 trims both at (87.0970, 1), the intersection behind the
+// arc's centre along the line, and does not join them round the corner.
+TEST(KerfPath, LineIntoArcNearlyReversedIsTrimmedWhenTheTorchIsOutside) {
+    Contour c({0, 0});
+    c.line(100, 0).arc(51.3, 51.3, 101.3, 50, false);
+    std::vector<KerfGouge> gouges;
+    const Collect out = compensate(c.records, &gouges);
+    EXPECT_TRUE(gouges.empty());
+    ASSERT_EQ(out.motions.size(), 2u);
+    expect_end(out.motions[0], 87.097050, 1, CurveKind::Line);
+    expect_end(out.motions[1], 50.300338, 51.325991, CurveKind::Arc);
+    EXPECT_NEAR(out.motions[1].centre.x, 101.3, 1e-12);
+    EXPECT_NEAR(out.motions[1].centre.y, 50, 1e-12);
+    EXPECT_FALSE(out.motions[1].ccw);
+}
+
+// G3 X0 Y0 I0 J5 as the entry (centre moved to (0,-5.5), radius 4.5), then a line turning 45° to the left: the
+// concave corner trims the entry on its own circle, which keeps its centre (rs274: ARC_FEED to (0.3967, -1.0175)
+// about (0, -5.5), STRAIGHT_FEED to (-9.2929, -10.7071)), not on the programmed arc's offset.
+TEST(KerfPath, EntryArcIsTrimmedOnItsOwnCircle) {
+    Contour c({0, -10});
+    c.arc(0, 0, 0, -5, true).line(-10, -10);
+    std::vector<KerfGouge> gouges;
+    const Collect out = compensate(c.records, &gouges);
+    EXPECT_TRUE(gouges.empty());
+    ASSERT_EQ(out.motions.size(), 2u);
+    expect_end(out.motions[0], 0.396694, -1.017519, CurveKind::Arc);
+    EXPECT_NEAR(out.motions[0].centre.x, 0, 1e-12);
+    EXPECT_NEAR(out.motions[0].centre.y, -5.5, 1e-12);
+    EXPECT_NEAR(out.motions[0].radius, 4.5, 1e-12);
+    EXPECT_TRUE(out.motions[0].ccw);
+    expect_end(out.motions[1], -9.292893, -10.707107, CurveKind::Line);
 }
 
 // Right of the direction of travel mirrors left: a square run the other way round with kerf right gives the

@@ -6,13 +6,20 @@
 //   - a line is shifted along its left or right normal; an arc keeps its centre and its radius grows or shrinks;
 //     a parabola is offset point by point within the chord tolerance (as lines);
 //   - at a convex corner the offset pieces are joined by an arc of the offset radius around the programmed
-//     corner (before a rapid: a straight line to where that arc ends); at a concave corner they are trimmed at their intersection; a corner that turns less than
+//     corner (before a rapid: a straight line to where that arc ends); at a concave corner they are trimmed at
+//     the intersection of their programmed motions' offsets that LinuxCNC takes; a corner that turns less than
 //     kKerfCornerTolerance is neither: the next piece starts where the last one ended;
-//   - a concave corner the torch cannot get into without cutting into the piece before or after it (the trimmed
-//     piece would run backwards, or the pieces do not meet) is a gouge (KerfGouge, E307 in the check);
+//   - a corner within kKerfCornerTolerance of a full reversal is trimmed when the torch is outside the next
+//     piece's arc, or the next piece is a line and the torch is outside the arc before; else it is joined,
+//     whichever way it turns (two lines turning back 178° towards the kerf side: a 182° join round the tip);
+//   - a gouge (KerfGouge, E307 in the check) where LinuxCNC refuses the program: a concave corner whose pieces
+//     do not meet or whose piece before would run backwards to the intersection, and a piece trimmed at its start
+//     that runs backwards to its end, found at its next concave corner, at a convex corner before a line, or
+//     where the compensation ends;
 //   - entry: the first motion with compensation runs from where the torch is to the compensated end of its own
 //     piece (a line: its end shifted along the normal of the entry's own direction; an arc: to its end moved
-//     along the radius, about a centre on the same radius line that is equally far from both ends);
+//     along the radius, about a centre on the same radius line that is equally far from both ends, which a trim
+//     keeps; the corner after it turns from the programmed arc's direction); an entry is never a gouge;
 //   - exit: the last compensated piece ends at its end shifted along its normal; the first motion without
 //     compensation runs from there to its programmed end.
 // Pieces carry the programmed motion's line, block, kind, tools, feed and kerf; a join arc carries those of
@@ -34,6 +41,8 @@ namespace essi {
 // Corners whose direction changes by less than this (radians) are neither joined nor trimmed (LinuxCNC's
 // TOLERANCE_CONCAVE_CORNER).
 constexpr double kKerfCornerTolerance = 0.05;
+// A trimmed arc may sweep this much more than programmed (radians) before it is a gouge (LinuxCNC's, in mm).
+constexpr double kKerfArcSweepSlack = 0.0254;
 // Lengths below this (mm) are zero for the compensated path (a trimmed piece may end where it starts).
 constexpr double kKerfLengthEpsilon = 1e-9;
 
@@ -69,12 +78,19 @@ private:
         Point corner;
         Point tangent_end;
         Point tangent_start;  // the programmed direction of travel at the start
+        double sweep = 0;     // an arc's programmed sweep (radians, unsigned)
+        Point start_radius;   // an arc's programmed start less its centre
+        bool chord = false;   // one of a parabola's chords
+        bool start_moved = false;  // its start is not its offset start (trimmed, or where the piece before ended)
     };
     void enter(const MotionRecord& m);
     void leave(const MotionRecord& m);
     void follow(const MotionRecord& m);
     void turn_corner(Piece& next, const MotionRecord& m);
     bool trim_concave(Piece& next, const MotionRecord& m);
+    [[nodiscard]] bool torch_outside(const MotionRecord& r) const;
+    bool open_may_end_at(Point x);
+    void check_open_end(const MotionRecord& m);
     void emit_open();
     void emit(const MotionRecord& rec);
     void gouge(const MotionRecord& m, Msg why, MessageArgs args);
@@ -92,10 +108,8 @@ private:
     int open_index_ = 0;
     Piece& open_piece() { return pieces_[open_index_]; }
     Piece& next_piece() { return pieces_[1 - open_index_]; }
-    // The open piece is an entry (it starts at the torch): a concave corner after it trims where the offset of
-    // its programmed motion meets the next piece, not the entry itself.
+    // The open piece is an entry (it starts at the torch): a concave corner after it may trim it anywhere.
     bool open_is_entry_ = false;
-    MotionRecord entry_offset_;
     std::vector<Piece> chords_;  // a parabola's chords after the first
     double side_ = 1;    // +1: left of the direction of travel, -1: right
     double radius_ = 0;  // the offset (mm)
