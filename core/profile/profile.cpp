@@ -472,6 +472,9 @@ std::string builtin_names_text() {
     return s;
 }
 
+// What a message quotes of the JSON parser's reason (escaped first: its quote of the text may hold any bytes).
+constexpr std::size_t kMaxJsonReasonBytes = 100;
+
 // Where and why the JSON parser stopped: line and column (1-based, bytes) of its last byte read (`byte`, 1-based;
 // 0 when the parser does not say: then where the quoted token of its reason first is) and its reason ("number
 // overflow parsing '1e999'", "unexpected end of input ...").
@@ -501,7 +504,8 @@ Message json_error_message(std::string_view text, const json::exception& e, std:
     } else if (reason.rfind("[json.", 0) == 0) {
         if (const std::size_t end = reason.find("] "); end != std::string::npos) reason.erase(0, end + 2);
     }
-    return {Msg::ProfileNotJsonAt, {line, column, excerpt(reason, 160)}};
+    if (const std::size_t last = reason.find("; last read: "); last != std::string::npos) reason.erase(last);
+    return {Msg::ProfileNotJsonAt, {line, column, excerpt(display_text(reason), kMaxJsonReasonBytes)}};
 }
 
 // Parses profile JSON onto its base: the built-in named by "base", else `no_base` (the default profile for a
