@@ -42,16 +42,22 @@ def post_check(port, body, statuses, i):
         statuses[i] = str(e)
 
 
+def checks_at_once(port, body):
+    """REQUESTS checks of `body` posted at once; their HTTP statuses (or errors)."""
+    statuses = [None] * REQUESTS
+    threads = [threading.Thread(target=post_check, args=(port, body, statuses, i)) for i in range(REQUESTS)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(100)
+    return statuses
+
+
 def many_small_checks(essi, report):
     proc, port, _ = start_server(essi, "--threads", str(REQUESTS), "--max-checks", str(CHECKS))
     try:
         body = b"+100+0 \n" * 38400  # 300 KB: a W109 on every line
-        statuses = [None] * REQUESTS
-        threads = [threading.Thread(target=post_check, args=(port, body, statuses, i)) for i in range(REQUESTS)]
-        for t in threads:
-            t.start()
-        for t in threads:
-            t.join(100)
+        statuses = checks_at_once(port, body)
         report.check(statuses == [200] * REQUESTS, f"{REQUESTS} x 300 KB checks answered: {statuses}")
         peak = vm_hwm_mb(proc.pid)
         bound = BASE_MB + CHECKS * PER_CHECK_MB
@@ -69,12 +75,7 @@ def main(essi):
     try:
         body = b"+100+0\n" * (BODY_MB * 1024 * 1024 // 7)
         idle = vm_hwm_mb(proc.pid)
-        statuses = [None] * REQUESTS
-        threads = [threading.Thread(target=post_check, args=(port, body, statuses, i)) for i in range(REQUESTS)]
-        for t in threads:
-            t.start()
-        for t in threads:
-            t.join(100)
+        statuses = checks_at_once(port, body)
         report.check(statuses == [200] * REQUESTS, f"{REQUESTS} x {BODY_MB} MB checks answered: {statuses}")
         peak = vm_hwm_mb(proc.pid)
         bound = BASE_MB + LARGE * PER_LARGE_MB
