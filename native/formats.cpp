@@ -1,4 +1,5 @@
 #include "formats.hpp"
+#include "essi_version.hpp"
 
 #include <cctype>
 #include <cstdio>
@@ -7,9 +8,6 @@
 #include "essi/diagnostics.hpp"
 #include "essi/text_report.hpp"
 
-#ifndef ESSIKIT_VERSION
-#define ESSIKIT_VERSION "0.1.0"
-#endif
 
 namespace essi::native {
 
@@ -130,7 +128,8 @@ std::string junit_report(std::span<const BatchItem> items, std::string_view prof
     x += "  <testsuite name=\"essi check (profile " + xml_escape(profile_name) + ")\" " + counts +
          " skipped=\"0\" time=\"" + fmt_time(seconds) + "\">\n";
     x += "    <properties>\n      <property name=\"profile\" value=\"" + xml_escape(profile_name) +
-         "\"/>\n      <property name=\"essi.version\" value=\"" ESSIKIT_VERSION "\"/>\n    </properties>\n";
+         "\"/>\n      <property name=\"essi.version\" value=\"" + std::string(kVersion) +
+         "\"/>\n    </properties>\n";
     for (const BatchItem& it : items) {
         const FileReport& r = it.report;
         const std::string path = xml_escape(r.display_path());
@@ -275,8 +274,8 @@ nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view p
          {{"driver",
            {{"name", "essi"},
             {"fullName", "essikit essi check (ESSI / ISO 6582 cutting tapes)"},
-            {"version", ESSIKIT_VERSION},
-            {"semanticVersion", ESSIKIT_VERSION},
+            {"version", kVersion},
+            {"semanticVersion", kVersion},
             {"informationUri", base + "cli.md"},
             {"rules", sarif_rules(docs_url, lang)}}}}},
         {"invocations", {std::move(invocation)}},

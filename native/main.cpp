@@ -28,6 +28,7 @@
 #include "essi/report.hpp"
 #include "essi/trace.hpp"
 #include "batch.hpp"
+#include "essi_version.hpp"
 #include "formats.hpp"
 #include "essi/render_svg.hpp"
 #include "essi/text.hpp"
@@ -41,9 +42,6 @@
 #include "essi/diff.hpp"
 #include "essi/text_report.hpp"
 
-#ifndef ESSIKIT_VERSION
-#define ESSIKIT_VERSION "0.1.0"
-#endif
 
 extern char** environ;
 
@@ -529,7 +527,8 @@ int run_profile_list() {
 
 int main(int argc, char** argv) {
     CLI::App app{"essi: check, measure and trace ESSI cutting tapes (ISO 6582)", "essi"};
-    app.set_version_flag("--version", std::string("essi ") + ESSIKIT_VERSION);
+    app.set_version_flag("--version", std::string("essi ") + essi::native::kVersion + " (commit " +
+                                              essi::native::kGitCommit + ")");
     app.require_subcommand(1);
 
     std::string format = "text";

@@ -1,4 +1,5 @@
 #include "serve_api.hpp"
+#include "essi_version.hpp"
 #include "tape_request.hpp"
 
 #if defined(ESSI_HAVE_HTTPLIB)
@@ -20,9 +21,6 @@
 #include "serve_socket.hpp"
 #include "sha256.hpp"
 
-#ifndef ESSIKIT_VERSION
-#define ESSIKIT_VERSION "0.1.0"
-#endif
 
 namespace essi::native {
 
@@ -296,7 +294,7 @@ void json_error(httplib::Response& res, int status, const std::string& message) 
 
 void add_api_routes(httplib::Server& server, const std::shared_ptr<ApiContext>& ctx) {
     server.Get("/api/health", [ctx](const httplib::Request&, httplib::Response& res) {
-        res.set_content(dump({{"ok", true}, {"version", ESSIKIT_VERSION}, {"max_body", ctx->limits.max_body},
+        res.set_content(dump({{"ok", true}, {"version", kVersion}, {"max_body", ctx->limits.max_body},
                               {"profiles", builtin_profile_names()}}),
                         "application/json");
     });

@@ -10,6 +10,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { createRequire } from 'node:module';
+import { spawnSync } from 'node:child_process';
 import Ajv04 from 'ajv-draft-04';
 import Ajv2020 from 'ajv/dist/2020.js';
 import addFormats from 'ajv-formats';
@@ -212,4 +213,18 @@ test('batch: --fail-on, --quiet, --max-diagnostics and exit codes', () => {
   assert.doesNotThrow(() => JSON.parse(j.stdout));
   assert.match(j.stderr, /files checked/);
   assert.equal(essi(['check', '--format', 'json', '--quiet', d]).stderr, '');
+});
+
+// One version (CMake's project(VERSION)) and the commit the binary was built from, in --version, SARIF and JUnit.
+test('--version names the version of CMakeLists.txt and the git commit; SARIF and JUnit the same version', async () => {
+  const version = fs.readFileSync(path.join(sourceDir, 'CMakeLists.txt'), 'utf8').match(/project\(essikit VERSION ([0-9.]+)/)[1];
+  const git = spawnSync('git', ['-C', sourceDir, 'rev-parse', '--short=12', 'HEAD'], { encoding: 'utf8' });
+  const commit = git.status === 0 ? git.stdout.trim() : 'unknown';
+  const r = essi(['--version']);
+  assert.equal(r.status, 0);
+  assert.equal(r.stdout.trim(), `essi ${version} (commit ${commit})`);
+  const sarif = JSON.parse(essi(['check', '--format', 'sarif', path.join(examplesDir, 'crlf.esi')]).stdout);
+  assert.equal(sarif.runs[0].tool.driver.version, version);
+  const junit = essi(['check', '--format', 'junit', path.join(examplesDir, 'crlf.esi')]).stdout;
+  assert.match(junit, new RegExp(`<property name="essi.version" value="${version.replace(/\./g, '\\.')}"/>`));
 });
