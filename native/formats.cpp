@@ -1,5 +1,6 @@
 #include "formats.hpp"
 #include "essi_version.hpp"
+#include "sha256.hpp"
 
 #include <cctype>
 #include <cstdio>
@@ -284,6 +285,42 @@ nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view p
         {"properties", {{"profile", std::string(profile_name)}}},
     };
     return {{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"}, {"version", "2.1.0"}, {"runs", {std::move(run)}}};
+}
+
+std::string_view codeclimate_severity(Severity s) {
+    switch (s) {
+        case Severity::Error: return "critical";
+        case Severity::Warning: return "minor";
+        case Severity::Note: break;
+    }
+    return "info";
+}
+
+nlohmann::json codeclimate_report(std::span<const BatchItem> items, Lang lang) {
+    nlohmann::json issues = nlohmann::json::array();
+    const auto issue = [&](const std::string& path, std::string_view check, std::uint32_t line, std::string_view severity,
+                           const std::string& description, const std::string& english) {
+        const std::string key = path + '\0' + std::string(check) + '\0' + std::to_string(line) + '\0' + english;
+        issues.push_back({{"type", "issue"},
+                          {"description", description},
+                          {"check_name", check},
+                          {"categories", {"Bug Risk"}},
+                          {"fingerprint", sha256_hex(key).substr(0, 32)},
+                          {"severity", severity},
+                          {"location", {{"path", path}, {"lines", {{"begin", std::max<std::uint32_t>(line, 1)}}}}}});
+    };
+    for (const BatchItem& it : items) {
+        const std::string path = it.report.display_path();
+        if (!it.read_ok) {
+            issue(path, "unreadable", 1, "blocker", format_message(Msg::ReportCannotRead, lang, {path, it.error}),
+                  it.error);
+            continue;
+        }
+        for (const Diagnostic& d : it.report.result.diagnostics)
+            issue(path, code_name(d.code), d.line, codeclimate_severity(d.severity), diagnostic_message(d, lang),
+                  d.message);
+    }
+    return issues;
 }
 
 }  // namespace essi::native

@@ -62,4 +62,14 @@ constexpr std::string_view kDefaultDocsUrl = "https://essikit.invalid/docs/";
                                           std::string_view docs_url,
                                           Lang lang = Lang::En);
 
+// --- GitLab Code Quality (Code Climate issues) -------------------------------------------------------------
+// GitLab's severity of a diagnostic: an error is "critical" (the tape cannot be cut as it is), a warning "minor",
+// a note "info".
+[[nodiscard]] std::string_view codeclimate_severity(Severity s);
+// [{"type": "issue", "description", "check_name" (the code), "categories", "fingerprint", "severity",
+// "location": {"path", "lines": {"begin"}}}, ...]: every diagnostic of every file read (an unreadable file is one
+// "blocker" issue, check_name "unreadable"). The fingerprint is the SHA-256 of the path, the code, the line and the
+// English message: the same finding has the same fingerprint in every run, whatever --lang.
+[[nodiscard]] nlohmann::json codeclimate_report(std::span<const BatchItem> items, Lang lang = Lang::En);
+
 }  // namespace essi::native

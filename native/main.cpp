@@ -293,6 +293,9 @@ int run_check(const std::vector<std::string>& paths, const CheckOptions& o) {
     } else if (o.format == "sarif") {
         out(sarif_report(kept, profile_name, o.docs_url, g_lang).dump(kJsonIndent));
         out("\n");
+    } else if (o.format == "codeclimate") {
+        out(codeclimate_report(kept, g_lang).dump(kJsonIndent));
+        out("\n");
     }
     const std::string summary = batch_summary_line(totals, profile_name, seconds, g_lang) + "\n";
     if (streamed) (o.format == "text" ? out_text : out)(summary);
@@ -569,8 +572,8 @@ int main(int argc, char** argv) {
     CheckOptions check_opts;
     CLI::App* check = app.add_subcommand("check", "Check tapes: diagnostics, statistics and a summary");
     check->add_option("--format", check_opts.format, "Output format")
-        ->check(CLI::IsMember({"text", "json", "junit", "sarif", "github"}))
-        ->type_name("text|json|junit|sarif|github")
+        ->check(CLI::IsMember({"text", "json", "junit", "sarif", "github", "codeclimate"}))
+        ->type_name("text|json|junit|sarif|github|codeclimate")
         ->capture_default_str();
     check->add_option("--profile", check_opts.profile, kProfileHelp)->type_name("NAME|FILE|auto");
     add_input_option(check, check_opts.input);

@@ -228,3 +228,30 @@ test('--version names the version of CMakeLists.txt and the git commit; SARIF an
   const junit = essi(['check', '--format', 'junit', path.join(examplesDir, 'crlf.esi')]).stdout;
   assert.match(junit, new RegExp(`<property name="essi.version" value="${version.replace(/\./g, '\\.')}"/>`));
 });
+
+// GitLab Code Quality: every diagnostic an issue with GitLab's fields; the fingerprint the same in every run and
+// language, unique per finding.
+test('codeclimate: GitLab Code Quality issues with stable fingerprints', () => {
+  const run = (lang) => {
+    const r = essi(['check', '--format', 'codeclimate', '--lang', lang, '--profile', 'auto', examplesDir]);
+    assert.equal(r.status, 1, r.stderr);  // (the bad_ examples)
+    return JSON.parse(r.stdout);
+  };
+  const en = run('en'), de = run('de'), again = run('en');
+  const json = JSON.parse(essi(['check', '--format', 'json', '--profile', 'auto', examplesDir]).stdout);
+  assert.equal(en.length, json.files.reduce((n, f) => n + f.diagnostics.length, 0));
+  for (const i of en) {
+    assert.equal(i.type, 'issue');
+    assert.match(i.check_name, /^[EWN]\d{3}$/);
+    assert.ok(['info', 'minor', 'major', 'critical', 'blocker'].includes(i.severity));
+    assert.equal(i.severity, { E: 'critical', W: 'minor', N: 'info' }[i.check_name[0]]);
+    assert.match(i.fingerprint, /^[0-9a-f]{32}$/);
+    assert.ok(i.location.path.startsWith(examplesDir));
+    assert.ok(Number.isInteger(i.location.lines.begin) && i.location.lines.begin >= 1);
+    assert.ok(i.description.length > 0);
+  }
+  assert.equal(new Set(en.map((i) => i.fingerprint)).size, en.length);
+  assert.deepEqual(again.map((i) => i.fingerprint), en.map((i) => i.fingerprint));
+  assert.deepEqual(de.map((i) => i.fingerprint), en.map((i) => i.fingerprint));
+  assert.notDeepEqual(de.map((i) => i.description), en.map((i) => i.description));
+});
