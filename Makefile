@@ -1,5 +1,6 @@
-# essikit — entry points. Every target first runs scripts/setup, which installs what is missing
-# (Debian packages, ImGui and Google Benchmark sources) and returns in a second when everything is there.
+# essikit — entry points. Every target first runs scripts/setup with what it needs (native, wasm, test, fuzz), which
+# installs what is missing of that (Debian packages, ImGui and Google Benchmark sources, npm packages) and returns in a
+# second when everything is there.
 #
 #   make run     build both runtimes (CLI + browser viewer) and start `essi serve` on http://127.0.0.1:8080/
 #   make test    build both runtimes and run the whole suite natively and under node (WASM) + browser e2e, and the
@@ -16,42 +17,49 @@ FUZZ_SECONDS ?= 60
 # docs/toolchain.md: every emcc link at -O1+ needs Debian's acorn module on NODE_PATH.
 export NODE_PATH := /usr/share/nodejs
 
-.PHONY: all setup native wasm sanitize test run bench fuzz clean
+.PHONY: all setup setup-test native wasm sanitize test run bench fuzz clean
+
+setup-test:
+	@scripts/setup test
 
 all: native
 
+# Each target installs what it needs first (scripts/setup NEED): `make native` no Emscripten, Chromium or LinuxCNC.
 setup:
-	@scripts/setup
+	@scripts/setup all
 
-native: setup
+native:
+	@scripts/setup native
 	cmake --preset native
 	cmake --build --preset native -j$(JOBS)
 
-wasm: setup
+wasm:
+	@scripts/setup wasm
 	cmake --preset wasm
 	cmake --build --preset wasm -j$(JOBS)
 
 # The unit suite and the fuzz corpus replay with AddressSanitizer + UndefinedBehaviorSanitizer.
-sanitize: setup
+sanitize:
+	@scripts/setup native
 	cmake --preset sanitize
 	cmake --build --preset sanitize -j$(JOBS)
 
 # Runs the three ctest presets (each even if one before failed), prints their summaries, and ends with one
 # combined line in ctest's format; fails if any run failed.
-test: setup native wasm sanitize
+test: setup-test native wasm sanitize
 	@scripts/ctest-both
 
 # Builds the CLI and the viewer, then serves the viewer (build/wasm/web) and examples/ until Ctrl+C.
 # HOST and PORT change the address (make run PORT=8081).
 HOST ?= 127.0.0.1
 PORT ?= 8080
-run: setup native wasm
+run: native wasm
 	@test -x build/native/bin/essi || { echo "make run: build/native/bin/essi was not built"; exit 2; }
 	@test -f build/wasm/web/essi_viewer.wasm || { echo "make run: the viewer was not built (build/wasm/web)"; exit 2; }
 	@echo "make run: open http://$(HOST):$(PORT)/ in a browser and drop a tape on the page (Ctrl+C stops)"
 	exec build/native/bin/essi serve --host $(HOST) --port $(PORT)
 
-bench: setup
+bench: setup-test
 	cmake --preset native
 	cmake --build --preset native -j$(JOBS) --target essi_bench
 	build/native/bin/essi_bench
@@ -81,7 +89,8 @@ bench: setup
 FUZZ_TARGETS ?= read_interp read_eia profile share_link serve_request
 FUZZ_PRESET ?= fuzz-fast
 FUZZ_RUNS ?= -1
-fuzz: setup
+fuzz:
+	@scripts/setup fuzz
 	cmake --preset $(FUZZ_PRESET)
 	cmake --build --preset $(FUZZ_PRESET) -j$(JOBS)
 	@for t in $(FUZZ_TARGETS); do \
