@@ -34,6 +34,7 @@
 #include "essi/text.hpp"
 #include "tape_request.hpp"
 #include "terminal_text.hpp"
+#include "completions.hpp"
 #include "serve.hpp"
 #include "thread_pool.hpp"
 #include "file_io.hpp"
@@ -742,6 +743,13 @@ int main(int argc, char** argv) {
         for (CLI::App* nested : sub->get_subcommands(every)) add_lang(nested);
     }
 
+    // Hidden (no group): the shell completions, made from the definition above (completions.hpp).
+    std::string completion_shell;
+    CLI::App* completions = app.add_subcommand("completions", "Print the completion script of a shell")->group("");
+    completions->add_option("SHELL", completion_shell, "bash, zsh or fish")
+        ->required()
+        ->check(CLI::IsMember({"bash", "zsh", "fish"}));
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -767,5 +775,10 @@ int main(int argc, char** argv) {
     if (*show) return run_profile_show(show_arg);
     if (*list) return run_profile_list();
     if (*serve) return essi::native::run_serve(serve_opts);
+    if (*completions) {
+        out(essi::native::completion_script(completion_shell,
+                                            essi::native::completion_spec(app, essi::builtin_profile_names())));
+        return kExitOk;
+    }
     return kExitUsage;
 }
