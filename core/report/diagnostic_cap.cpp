@@ -27,7 +27,6 @@ void DiagnosticCap::add_omitted(DiagCode code, std::uint64_t n, std::uint32_t li
     if (c.omitted == 0) c.severity = severity;
     c.omitted += n;
     c.first_omitted_line = std::min(c.first_omitted_line, line);
-    omitted_any_ = true;
 }
 
 void DiagnosticCap::add_omitted(const DiagnosticCap& other) {

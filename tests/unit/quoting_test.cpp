@@ -77,7 +77,7 @@ TEST(Quoting, AProfileNameIsPrintableAndShort) {
     const ProfileResult ok = parse_profile(R"({"name": "Werk 2 – Plasma 零件"})");
     ASSERT_TRUE(ok.profile);
     EXPECT_EQ(ok.profile->name, "Werk 2 – Plasma 零件");
-    for (const std::string bad : {std::string(R"({"name": "a\u001b[2Jb"})"), std::string(R"({"name": "two\nlines"})"),
+    for (const std::string& bad : {std::string(R"({"name": "a\u001b[2Jb"})"), std::string(R"({"name": "two\nlines"})"),
                                   std::string(R"({"name": ""})"), R"({"name": ")" + std::string(65, 'n') + "\"}"}) {
         const ProfileResult r = parse_profile(bad);
         EXPECT_FALSE(r.profile) << bad;

@@ -28,8 +28,6 @@ public:
     void filter(std::vector<Diagnostic>& d, std::size_t from = 0);
     // Moves the admitted diagnostics of `from` to the end of `to`, in their order.
     void move_admitted(std::vector<Diagnostic>& from, std::vector<Diagnostic>& to);
-    // Whether a diagnostic was left out.
-    [[nodiscard]] bool omitted_any() const { return omitted_any_; }
     // One diagnostic for each code that had some left out: "N more E605 diagnostics are not listed (at most M of a
     // code: --max-per-code)", at the line of the first left out, with that code and severity.
     void append_summaries(std::vector<Diagnostic>& out) const;
@@ -43,7 +41,6 @@ private:
     };
     [[nodiscard]] Count& count(DiagCode code);
     std::size_t max_;
-    bool omitted_any_ = false;
     std::vector<Count> counts_;  // by code number
 };
 
