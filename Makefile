@@ -9,7 +9,8 @@
 #   make bench   the core benchmarks natively and under node, then the viewer's browser benchmark
 #   make fuzz    each libFuzzer target (read_interp, read_eia, profile, share_link, serve_request) for 60 s (clang++-14, UBSan;
 #                FUZZ_SECONDS, FUZZ_RUNS, FUZZ_TARGETS, FUZZ_PRESET=fuzz for ASan + UBSan)
-#   make clean   remove build/
+#   make dist    dist/: the static essi's tarball, the Debian package and the npm package (docs/install.md)
+#   make clean   remove build/ and dist/
 SHELL := /bin/bash
 JOBS ?= 2
 FUZZ_SECONDS ?= 60
@@ -17,7 +18,7 @@ FUZZ_SECONDS ?= 60
 # docs/toolchain.md: every emcc link at -O1+ needs Debian's acorn module on NODE_PATH.
 export NODE_PATH := /usr/share/nodejs
 
-.PHONY: all setup setup-test native wasm sanitize test run bench fuzz clean
+.PHONY: all setup setup-test native wasm sanitize test run bench fuzz dist clean
 
 setup-test:
 	@scripts/setup test
@@ -46,7 +47,7 @@ sanitize:
 
 # Runs the three ctest presets (each even if one before failed), prints their summaries, and ends with one
 # combined line in ctest's format; fails if any run failed.
-test: setup-test native wasm sanitize
+test: setup-test native wasm sanitize dist
 	@scripts/ctest-both
 
 # Builds the CLI and the viewer, then serves the viewer (build/wasm/web) and examples/ until Ctrl+C.
@@ -103,5 +104,21 @@ fuzz:
 	  [ $${PIPESTATUS[0]} -eq 0 ] || exit 1; \
 	done
 
+# The packages, from the viewer's WASM build (compiled into both essi binaries): docs/install.md.
+#   dist/essi-VERSION-linux-x86_64.tar.gz   the static essi (preset dist-static), man page, completions, examples
+#   dist/essikit_VERSION_amd64.deb          essi built against Debian's shared libraries (preset dist-deb), CPack
+dist:
+	@scripts/setup dist
+	cmake --preset wasm
+	cmake --build --preset wasm -j$(JOBS) --target essi_viewer
+	cmake --preset dist-static
+	cmake --build --preset dist-static -j$(JOBS) --target dist_tarball
+	cmake --preset dist-deb
+	cmake --build --preset dist-deb -j$(JOBS)
+	rm -f dist/essikit_*_amd64.deb
+	cd build/dist-deb && cpack -G DEB
+	rm -rf dist/_CPack_Packages
+	@ls -l dist/
+
 clean:
-	rm -rf build
+	rm -rf build dist

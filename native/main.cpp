@@ -689,7 +689,9 @@ int main(int argc, char** argv) {
     CLI::App* serve = app.add_subcommand("serve", "Serve the browser viewer, the example tapes and the check/share API");
     serve->add_option("--host", serve_opts.host, "Address to listen on")->capture_default_str();
     serve->add_option("--port", serve_opts.port, "Port (0 picks a free one)")->check(CLI::Range(0, 65535))->capture_default_str();
-    serve->add_option("--web-root", serve_opts.web_root, "The built viewer (index.html, essi_viewer.js/.wasm)")->capture_default_str();
+    serve->add_option("--web-root", serve_opts.web_root,
+                      "The built viewer (index.html, essi_viewer.js/.wasm); empty: the viewer compiled into essi (make dist)")
+        ->capture_default_str();
     serve->add_option("--examples", serve_opts.examples_dir, "Folder of example tapes served at /examples/")->capture_default_str();
     serve->add_option("--data", serve_opts.data_dir,
                       "Folder of the share store (SQLite); default $XDG_DATA_HOME/essikit, else ./essi-data")

@@ -20,6 +20,7 @@
 #include "share_store.hpp"
 
 #if defined(ESSI_HAVE_HTTPLIB)
+#include "embedded_web.hpp"
 #include "serve_api.hpp"
 #include "serve_security.hpp"
 #include "serve_socket.hpp"
@@ -39,6 +40,7 @@ int run_serve(const ServeOptions&) {
 namespace {
 
 bool viewer_built(const std::string& web_root) {
+    if (web_root.empty()) return find_embedded_web_file("index.html") != nullptr;
     std::error_code ec;
     return fs::exists(fs::path(web_root) / "index.html", ec) && fs::exists(fs::path(web_root) / "essi_viewer.wasm", ec);
 }
@@ -156,7 +158,7 @@ int run_serve(const ServeOptions& o) {
         std::fprintf(stderr,
                      "essi serve: the viewer is not built in %s (build it with: emcmake cmake --preset wasm && "
                      "cmake --build --preset wasm --target essi_viewer, or make run)\n",
-                     o.web_root.c_str());
+                     o.web_root.empty() ? "this essi (--web-root names none)" : o.web_root.c_str());
         return 2;
     }
     const std::string data_dir = o.data_dir.empty() ? default_data_dir() : o.data_dir;
@@ -179,7 +181,7 @@ int run_serve(const ServeOptions& o) {
     server.widen_backlog();
     const std::string shown = o.host.find(':') != std::string::npos ? "[" + o.host + "]" : o.host;
     std::printf("essi serve: http://%s:%d/  (viewer %s, examples %s, data %s; Ctrl+C stops)\n", shown.c_str(), bound,
-                o.web_root.c_str(), o.examples_dir.empty() ? "-" : o.examples_dir.c_str(), store->path().c_str());
+                o.web_root.empty() ? "built in" : o.web_root.c_str(), o.examples_dir.empty() ? "-" : o.examples_dir.c_str(), store->path().c_str());
     std::fflush(stdout);
     return server.listen_after_bind() ? 0 : 2;
 }

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "embedded_web.hpp"
 #include "serve_security.hpp"
 
 namespace essi::native {
@@ -58,22 +59,44 @@ std::string read_small_file(const fs::path& path) {
     return text;
 }
 
-// The page itself: read whole (12 KB) to send the CSP that allows exactly its inline scripts and styles.
-void send_index(const fs::path& path, httplib::Response& res) {
-    std::string html = read_small_file(path);
+// The page itself: read whole (20 KB) to send the CSP that allows exactly its inline scripts and styles.
+void send_index(std::string html, httplib::Response& res) {
     if (html.empty()) return not_found(res);
     res.set_header("Content-Security-Policy", viewer_csp(html));
     res.set_content(std::move(html), "text/html; charset=utf-8");
+}
+
+// Sends `bytes`, which live as long as the program (the embedded files), without copying them.
+void send_static_bytes(std::string_view bytes, const char* type, httplib::Response& res) {
+    res.set_content_provider(bytes.size(), type, [bytes](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+        return sink.write(bytes.data() + offset, std::min<std::size_t>(length, 64 * 1024));
+    });
+}
+
+// A file of the viewer compiled into essi (StaticFiles::web_root empty): gzip-encoded to clients that take it.
+void send_embedded_file(const Served& served, const httplib::Request& req, httplib::Response& res) {
+    const EmbeddedFile* file = find_embedded_web_file(served.name);
+    if (file == nullptr) return not_found(res);
+    const std::string_view name = served.name;
+    if (name == "index.html") {
+        send_index(std::string(file->bytes), res);
+    } else {
+        res.set_header("Vary", "Accept-Encoding");
+        const bool gzip = accepts_gzip(req.get_header_value("Accept-Encoding"));
+        if (gzip) res.set_header("Content-Encoding", "gzip");
+        send_static_bytes(gzip ? file->gzip : file->bytes, served.type, res);
+    }
 }
 
 void send_viewer_file(const StaticFiles& files, const std::string& name, const httplib::Request& req,
                       httplib::Response& res) {
     const auto it = std::find_if(std::begin(kViewerFiles), std::end(kViewerFiles), [&](const Served& s) { return name == s.name; });
     if (it == std::end(kViewerFiles)) return not_found(res);
+    if (files.web_root.empty()) return send_embedded_file(*it, req, res);
     fs::path path = fs::path(files.web_root) / name;
     std::error_code ec;
     if (name == "share_store.js" && !fs::exists(path, ec) && !files.share_store_js.empty()) path = files.share_store_js;
-    if (name == "index.html") return send_index(path, res);
+    if (name == "index.html") return send_index(read_small_file(path), res);
     // The program's gzip twin (made by the build, web/CMakeLists.txt: 40 % of its size) for clients that take it.
     if (name == "essi_viewer.wasm") {
         res.set_header("Vary", "Accept-Encoding");

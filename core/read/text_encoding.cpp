@@ -1,12 +1,11 @@
-// Comments' text encoding: detection and decoding (essi/text_encoding.hpp). The decoder is the C library's iconv
-// (glibc natively, musl under Emscripten: both have GB 18030).
+// Comments' text encoding: detection and decoding (essi/text_encoding.hpp). The decoder is essi/charset.hpp's
+// (ICU natively, iconv under Emscripten).
 #include "essi/text_encoding.hpp"
-
-#include <iconv.h>
 
 #include <cctype>
 #include <cstdio>
 
+#include "essi/charset.hpp"
 #include "essi/text.hpp"
 
 namespace essi {
@@ -30,13 +29,11 @@ std::string hex_escape(unsigned char c) {
     return buf;
 }
 
-// GB 18030 through iconv, character by character where iconv stops (a malformed byte becomes \xNN).
+// GB 18030 character by character (essi/charset.hpp): a byte that starts no character the converter takes
+// becomes \xNN.
 std::string decode_gb18030(std::string_view bytes) {
-    iconv_t cd = iconv_open("UTF-8", "GB18030");
-    if (cd == reinterpret_cast<iconv_t>(-1)) return display_text(bytes);  // (no converter: as bytes)
     std::string out;
     out.reserve(bytes.size() * 3 / 2 + 8);
-    char buf[256];
     std::size_t i = 0;
     while (i < bytes.size()) {
         const auto c = static_cast<unsigned char>(bytes[i]);
@@ -46,20 +43,15 @@ std::string decode_gb18030(std::string_view bytes) {
             continue;
         }
         const std::size_t n = gb18030_char_length(bytes, i);
-        char* in = const_cast<char*>(bytes.data() + i);
-        std::size_t in_left = n;
-        char* o = buf;
-        std::size_t out_left = sizeof buf;
-        if (n == 0 || iconv(cd, &in, &in_left, &o, &out_left) == static_cast<std::size_t>(-1) || in_left != 0) {
-            iconv(cd, nullptr, nullptr, nullptr, nullptr);  // (back to the initial state)
+        const std::optional<std::string> utf8 = n == 0 ? std::nullopt : gb18030_char_to_utf8(bytes.substr(i, n));
+        if (!utf8) {
             out += hex_escape(c);
             ++i;
             continue;
         }
-        out.append(buf, static_cast<std::size_t>(o - buf));
+        out += *utf8;
         i += n;
     }
-    iconv_close(cd);
     return out;
 }
 

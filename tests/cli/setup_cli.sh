@@ -12,7 +12,7 @@ native="$(bash "$root/scripts/setup" --list native)"
 for p in emscripten chromium linuxcnc-uspace clang-14 xvfb; do
   if has "$native" "$p"; then fail "native installs $p"; else pass "native leaves out $p"; fi
 done
-for p in cmake ninja-build libcli11-dev nlohmann-json3-dev libcpp-httplib-dev libglfw3-dev; do
+for p in cmake ninja-build libcli11-dev nlohmann-json3-dev libcpp-httplib-dev libglfw3-dev libicu-dev; do
   if has "$native" "$p"; then pass "native installs $p"; else fail "native lacks $p"; fi
 done
 wasm="$(bash "$root/scripts/setup" --list wasm)"
@@ -21,6 +21,12 @@ test_list="$(bash "$root/scripts/setup" --list test)"
 for p in emscripten chromium linuxcnc-uspace libpolyclipping-dev librsvg2-bin xvfb; do
   if has "$test_list" "$p"; then pass "test installs $p"; else fail "test lacks $p"; fi
 done
+dist="$(bash "$root/scripts/setup" --list dist)"
+for p in emscripten lintian systemd libicu-dev; do
+  if has "$dist" "$p"; then pass "dist installs $p"; else fail "dist lacks $p"; fi
+done
+if has "$dist" chromium; then fail "dist installs chromium"; else pass "dist leaves out chromium"; fi
+if has "$test_list" lintian; then pass "test installs lintian (make test checks the packages)"; else fail "test lacks lintian"; fi
 fuzz="$(bash "$root/scripts/setup" --list fuzz)"
 if has "$fuzz" clang-14 && has "$fuzz" libclang-rt-14-dev; then pass "fuzz: clang-14"; else fail "fuzz: $fuzz"; fi
 out="$(bash "$root/scripts/setup" nonsense 2>&1)"; rc=$?

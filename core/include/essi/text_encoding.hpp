@@ -25,7 +25,7 @@ enum class TextEncoding : unsigned char {
 [[nodiscard]] TextEncoding detect_text_encoding(std::string_view bytes);
 
 // `bytes` as UTF-8: as they are for Utf8 (malformed bytes as \xNN, control characters too: display_text), decoded
-// through iconv for Gb18030 (a byte that is no GB 18030 character as \xNN).
+// by essi/charset.hpp for Gb18030 (a byte that is no GB 18030 character as \xNN).
 [[nodiscard]] std::string decode_text(std::string_view bytes, TextEncoding encoding);
 
 }  // namespace essi
