@@ -10,6 +10,7 @@
 
 #include "essi/sniff.hpp"
 #include "essi/text.hpp"
+#include "essi/pipeline.hpp"
 #include "file_io.hpp"
 #include "pipelined_check.hpp"
 #include "thread_pool.hpp"

@@ -25,7 +25,7 @@
 #include "essi/dxf.hpp"
 #include "essi/profile.hpp"
 #include "essi/write.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "essi/trace.hpp"
 #include "batch.hpp"
 #include "essi_version.hpp"

@@ -5,6 +5,7 @@
 #include <array>
 #include <atomic>
 #include <thread>
+#include "essi/pipeline.hpp"
 
 namespace essi::native {
 

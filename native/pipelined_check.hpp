@@ -4,7 +4,7 @@
 
 #include <string_view>
 
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 
 namespace essi::native {
 

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "essi/profile.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "essi/report_json.hpp"
 #include "essi/write.hpp"
 #include "pipelined_check.hpp"

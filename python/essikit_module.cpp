@@ -11,7 +11,7 @@
 
 #include "essi/dialect.hpp"
 #include "essi/profile.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "essi/report_json.hpp"
 #include "essi/trace.hpp"
 #include "essi/write.hpp"

@@ -25,7 +25,7 @@
 
 #include "essi/diagnostics.hpp"
 #include "essi/profile.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "essi/trace.hpp"
 #include "paths.hpp"
 

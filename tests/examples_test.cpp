@@ -47,7 +47,7 @@
 #include "essi/diagnostics.hpp"
 #include "essi/dialect.hpp"
 #include "essi/profile.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "essi/trace.hpp"
 #include "paths.hpp"
 

@@ -7,7 +7,7 @@
 #include "essi/geom.hpp"
 #include "essi/interp.hpp"
 #include "essi/kerf.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 
 namespace essi {
 namespace {

@@ -8,7 +8,7 @@
 #include "essi/functions.hpp"
 #include "essi/geom.hpp"
 #include "essi/interp.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "essi/text.hpp"
 
 namespace essi {

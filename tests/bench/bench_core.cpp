@@ -37,7 +37,7 @@
 #include "essi/interp.hpp"
 #include "essi/profile.hpp"
 #include "essi/read.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "eia_generator.hpp"
 #include "nest_generator.hpp"
 

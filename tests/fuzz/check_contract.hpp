@@ -15,7 +15,7 @@
 #include <string_view>
 
 #include "essi/lines.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 
 namespace essi_fuzz {
 

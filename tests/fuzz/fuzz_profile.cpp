@@ -13,7 +13,7 @@
 #include <string_view>
 
 #include "essi/profile.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "../unit/test_util.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "file_io.hpp"
 #include "temp_dir.hpp"
 

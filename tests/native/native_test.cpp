@@ -15,6 +15,7 @@
 #include "../bench/nest_generator.hpp"
 #include "../unit/test_util.hpp"
 #include "essi/diagnostics.hpp"
+#include "essi/pipeline.hpp"
 #include "formats.hpp"
 #include "pipelined_check.hpp"
 #include "plate_runner.hpp"

@@ -10,7 +10,7 @@
 
 #include "essi/plan.hpp"
 #include "essi/read.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 
 // Every motion the checker passes on, kept as records: the store the kept plates are read back from.
 class RecordedMotions final : public essi::MotionSink, public essi::MotionStore {

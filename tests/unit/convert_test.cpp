@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "essi/dialect.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "essi/write.hpp"
 #include "paths.hpp"
 #include "test_util.hpp"

@@ -12,7 +12,7 @@
 #include "essi/diagnostics.hpp"
 #include "essi/plan.hpp"
 #include "essi/profile.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 
 using namespace essi;
 

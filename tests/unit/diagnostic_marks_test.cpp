@@ -1,5 +1,5 @@
 // Where diagnostics are drawn (essi/diagnostic_marks.hpp) and how `essi render`'s SVG draws them
-// (core/report/render_svg.cpp): a mark per diagnostic at its place, a constant size in the SVG's pixels, notes too,
+// (core/draw/render_svg.cpp): a mark per diagnostic at its place, a constant size in the SVG's pixels, notes too,
 // the contour concerned, the related places, a collision's overlapping area and the problems-only view.
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include "essi/dialect.hpp"
 #include "essi/profile.hpp"
 #include "essi/read.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "essi/trace.hpp"
 
 using namespace essi;

@@ -10,7 +10,7 @@
 #include "essi/functions.hpp"
 #include "essi/profile.hpp"
 #include "essi/read.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "essi/text.hpp"
 #include "essi/write.hpp"
 #include "test_util.hpp"

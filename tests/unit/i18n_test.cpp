@@ -6,7 +6,7 @@
 #include "essi/diagnostics.hpp"
 #include "essi/i18n.hpp"
 #include "essi/profile.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "essi/text.hpp"
 #include "essi/text_report.hpp"
 

@@ -9,7 +9,7 @@
 
 #include "../bench/nest_generator.hpp"
 #include "essi/interp.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "paths.hpp"
 #include "test_util.hpp"
 

@@ -6,7 +6,7 @@
 
 #include "../bench/nest_generator.hpp"
 #include "essi/profile.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 
 namespace {
 

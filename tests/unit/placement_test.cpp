@@ -7,7 +7,7 @@
 
 #include "essi/placement.hpp"
 #include "essi/profile.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "essi/trace.hpp"
 
 namespace essi {

@@ -10,7 +10,7 @@
 #include "essi/diagnostics.hpp"
 #include "essi/plan.hpp"
 #include "essi/profile.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "../bench/nest_generator.hpp"
 #include "deferred_plan.hpp"
 

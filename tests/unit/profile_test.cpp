@@ -7,6 +7,7 @@
 #include <string>
 
 #include "essi/profile.hpp"
+#include "essi/pipeline.hpp"
 #include "test_util.hpp"
 
 using namespace essi;

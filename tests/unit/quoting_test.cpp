@@ -8,7 +8,7 @@
 
 #include "essi/diagnostics.hpp"
 #include "essi/profile.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "essi/text.hpp"
 
 using namespace essi;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "essi/read.hpp"
+#include "essi/pipeline.hpp"
 #include "test_util.hpp"
 
 using namespace essi;

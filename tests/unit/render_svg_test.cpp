@@ -1,4 +1,4 @@
-// `essi render`'s SVG (core/report/render_svg.cpp): layers, the legend, the pierces; and a view of a part of the
+// `essi render`'s SVG (core/draw/render_svg.cpp): layers, the legend, the pierces; and a view of a part of the
 // tape (the viewer's Export: the view as SVG).
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "../bench/nest_generator.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "essi/text_report.hpp"
 #include "paths.hpp"
 #include "test_util.hpp"

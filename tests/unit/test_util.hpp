@@ -17,7 +17,7 @@
 #include "essi/motion.hpp"
 #include "essi/profile.hpp"
 #include "essi/read.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 
 namespace essi_test {
 

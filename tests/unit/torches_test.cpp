@@ -5,7 +5,7 @@
 #include <string>
 
 #include "essi/profile.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 #include "test_util.hpp"
 
 using namespace essi;

@@ -12,6 +12,7 @@
 #include "viewer_util.hpp"
 #include "essi/interp.hpp"
 #include "essi/read.hpp"
+#include "essi/pipeline.hpp"
 #include "paths.hpp"
 #include "test_util.hpp"
 

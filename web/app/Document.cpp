@@ -13,6 +13,7 @@
 #include "app/Format.hpp"
 #include "essi/functions.hpp"
 #include "essi/interp.hpp"
+#include "essi/pipeline.hpp"
 
 namespace essi::viewer {
 

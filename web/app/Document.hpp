@@ -19,7 +19,7 @@
 #include "essi/dialect.hpp"
 #include "essi/profile.hpp"
 #include "essi/read.hpp"
-#include "essi/report.hpp"
+#include "essi/pipeline.hpp"
 
 namespace essi::viewer {
 

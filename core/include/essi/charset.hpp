@@ -1,8 +1,8 @@
 // Conversions between UTF-8 and the Chinese charsets of GB/T 22217 shops (GB 18030, GBK, GB 2312): one
 // implementation per platform, chosen by CMake (core/CMakeLists.txt, ESSI_CHARSET):
-//   core/read/charset/charset_icu.cpp    ICU's converters (native builds; links statically, so the static `essi`
+//   core/base/charset/charset_icu.cpp    ICU's converters (native builds; links statically, so the static `essi`
 //                                         decodes GB 18030 in an empty root, where glibc's iconv has no modules)
-//   core/read/charset/charset_iconv.cpp  the C library's iconv (Emscripten's musl, which has GB 18030 built in)
+//   core/base/charset/charset_iconv.cpp  the C library's iconv (Emscripten's musl, which has GB 18030 built in)
 #pragma once
 
 #include <optional>

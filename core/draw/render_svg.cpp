@@ -14,6 +14,7 @@
 #include "essi/read.hpp"
 #include "essi/text.hpp"
 #include "essi/text_report.hpp"
+#include "essi/pipeline.hpp"
 
 namespace essi {
 
