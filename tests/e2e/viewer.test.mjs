@@ -1162,7 +1162,7 @@ test('machine coordinates: the program turned and placed as it lies on the table
   await page.evaluate(() => essikit.setCoordinates('machine'));
   let state = await page.evaluate(() => essikit.state());
   assert.equal(state.view.coordinates, 'machine');
-  // machine = G55 (1500, 250) + R(3.5 deg) program (docs/semantics.md section 11)
+  // machine = G55 (1500, 250) + R(3.5 deg) program (docs/semantics.md section 12)
   const a = 3.5 * Math.PI / 180;
   const machine = ([x, y]) => [1500 + Math.cos(a) * x - Math.sin(a) * y, 250 + Math.sin(a) * x + Math.cos(a) * y];
   assert.ok(Math.abs(state.view.rotation[0] - Math.cos(a)) < 1e-12 && Math.abs(state.view.rotation[1] - Math.sin(a)) < 1e-12,
