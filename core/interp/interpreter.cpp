@@ -188,7 +188,7 @@ private:
     // Machine state
     IPoint pos_[kHeads];            // per head, machine axes, unit increments
     IPoint origin_;                 // origin of absolute coordinates (83), program axes
-    const Placement placement_{profile_};  // the program on the machine (§11)
+    const Placement placement_{profile_};  // the program on the machine (§12)
     Point tool_offset_;             // where the tool in use sits from the centre torch (11, 114; 12 cancels)
     AxisMapping mapping_;           // 21-28
     bool mirrors_ = false;          // mapping_.mirrors(), kept with it (asked for every motion)
@@ -651,7 +651,7 @@ inline void Machine::after_motion(const Block& b) {
 }
 
 // 11, 114, 12 (and a 63 that cancels): the tool offset changes and the carriage moves by it at once, so that the
-// tool is over the contour (§11); a carriage that leaves the table there is E401 at this block.
+// tool is over the contour (§12); a carriage that leaves the table there is E401 at this block.
 void Machine::select_tool_offset(const Block& b, int code) {
     const Point next = tool_offset_after(profile_, code, tool_offset_);
     if (next == tool_offset_) return;

@@ -230,7 +230,7 @@ bool parse_offset(const json& v, const MessageArgs::Arg& where, Point& out, std:
 }
 
 // zero_offsets, zero_offset, plate_rotation_deg, tool_offsets and the older setup_offset_x_mm/_y_mm (the
-// default entry), docs/semantics.md §11.
+// default entry), docs/semantics.md §12.
 void apply_placement_keys(const json& j, Profile& p, std::vector<Message>& errors) {
     for (const char* axis : {"setup_offset_x_mm", "setup_offset_y_mm"}) {
         const auto it = j.find(axis);

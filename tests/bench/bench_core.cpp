@@ -5,7 +5,7 @@
 //   check/<eol>    essi::check_tape              the whole pipeline on bytes (what `essi check` runs)
 //   check_every_rule/crlf   the same with the cut plan's optional rules on (lead_in_required, a table: W610, W611)
 //   check_without_plan/crlf the pipeline without the cut plan (reader, interpreter, statistics): check / this is
-//                  what the cut plan costs (issue 15: the viewer's load may grow by at most 20 %)
+//                  what the cut plan costs (docs/performance.md: the viewer's load may grow by at most 20 %)
 //   read_eia       essi::read_tape of the EIA form of the tape (tests/bench/eia_generator.hpp, Woyda table, LF)
 //   check_eia      essi::check_tape of it
 //   wc_l/<eol>     `wc -l` on the same tape as a file: the floor (native only; a child process, timed

@@ -1,4 +1,4 @@
-// Browser tests of the viewer (issue 3): headless Debian Chromium driven by playwright-core, run by node:test.
+// Browser tests of the viewer: headless Debian Chromium driven by playwright-core, run by node:test.
 //
 //   node --test tests/e2e/          (ctest: the `e2e` test of the native preset)
 //
@@ -434,7 +434,7 @@ test('essi serve serves the viewer and the examples', async (t) => {
   }
 });
 
-// ---- every item of issue 3, one test each ------------------------------------------------------------------
+// ---- the viewer's features, one test each -------------------------------------------------------------------
 
 async function loadExample(page, file) {
   const text = fs.readFileSync(path.join(examplesDir, file), 'utf8');
@@ -1162,7 +1162,7 @@ test('machine coordinates: the program turned and placed as it lies on the table
   await page.evaluate(() => essikit.setCoordinates('machine'));
   let state = await page.evaluate(() => essikit.state());
   assert.equal(state.view.coordinates, 'machine');
-  // machine = G55 (1500, 250) + R(3.5 deg) program (docs/semantics.md section 11)
+  // machine = G55 (1500, 250) + R(3.5 deg) program (docs/semantics.md section 12)
   const a = 3.5 * Math.PI / 180;
   const machine = ([x, y]) => [1500 + Math.cos(a) * x - Math.sin(a) * y, 250 + Math.sin(a) * x + Math.cos(a) * y];
   assert.ok(Math.abs(state.view.rotation[0] - Math.cos(a)) < 1e-12 && Math.abs(state.view.rotation[1] - Math.sin(a)) < 1e-12,
@@ -1259,10 +1259,10 @@ test('a share link of a megabyte or two is made and opens (no 4 MB cap, the link
   await page.close();
 });
 
-// Issue 14: most real tapes are small. One under 1 MB is read, checked, its drawing made and uploaded when it is
-// handed over, and the first frame after that draws all of it (no progress bar, no slices, no image filled over
-// frames): state().load counts it in the viewer's frames. A bigger one is loaded in slices with the progress bar, as
-// before. (No timing here: `make bench` measures it.)
+// Most real tapes are small. One under 1 MB is read, checked, its drawing made and uploaded when it is handed
+// over, and the first frame after that draws all of it (no progress bar, no slices, no image filled over frames):
+// state().load counts it in the viewer's frames. A bigger one is loaded in slices with the progress bar. (No timing
+// here: `make bench` measures it.)
 test('a tape under 1 MB is drawn complete in the first frame after the drop; a 2 MB tape shows the progress bar', async () => {
   const page = await newPage();
   await page.mouse.move(5, 890);  // (no hover over the drawing)
@@ -1425,7 +1425,7 @@ test('a zoomed-in view of a big tape fills over several frames while the page ke
   await page.close();
 });
 
-// The budget of issue 3: the page's memory for a tape stays below 2 x its bytes + what the core's Tape of it holds
+// The memory budget (docs/performance.md): the page's memory for a tape stays below 2 x its bytes + what the core's Tape of it holds
 // (tape_memory_bytes: 12 bytes a block, 4 a word). Checked on the viewer's own count and on the WASM heap: the
 // peak of malloc's footprint (what HEAPU8 must hold; it never shrinks) and HEAPU8's growth. Returns the state.
 async function assertMemoryBudget(mb) {
@@ -1854,7 +1854,7 @@ test('comments written in GB 18030 or UTF-8 are shown as written (detected per t
   await ctx.close();
 });
 
-// --- The diagnostics on the drawing (issue 15, point 5; docs/viewer.md "Problems on the drawing") ---
+// --- The diagnostics on the drawing (docs/viewer.md "Problems on the drawing") ---
 
 // A tape of `plates` plates of `per` 10 x 10 mm parts (compensated, clockwise, a 3 mm lead-in), written as a nesting
 // program writes them (incremental, 0.1 mm), with two mistakes: a part over another on plate 3, and on plate 7 a

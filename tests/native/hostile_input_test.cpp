@@ -41,8 +41,9 @@ TEST(HostileInput, AWordOfTwoBillionDigitsIsE104NotAWrongCoordinate) {
     for (const essi::Diagnostic& d : f.diagnostics) EXPECT_LT(d.message.size(), 300u) << d.message.substr(0, 300);
 }
 
-// A tape truncated while it is checked: the check of a mapped file touched pages that no longer existed and the
-// process died of SIGBUS (rc 135, no message, the batch lost). The bytes read stay the bytes checked.
+// A tape truncated while it is checked: a reader that mapped the file would touch pages that no longer exist and
+// die of SIGBUS (rc 135, no message, the batch lost). The file is read, not mapped: the bytes read stay the bytes
+// checked.
 TEST(HostileInput, ATapeTruncatedWhileItIsCheckedIsCheckedAsItWasRead) {
     const std::filesystem::path dir = temp_dir("truncated");
     const std::filesystem::path file = dir / "t.esi";

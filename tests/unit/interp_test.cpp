@@ -1,5 +1,5 @@
 // Phase 2 (interp): the effect of every machine function on the emitted motion stream
-// (docs/semantics.md §3-§11). Expectations are worked out by hand; the unit is 0.1 mm.
+// (docs/semantics.md §3-§10, §12). Expectations are worked out by hand; the unit is 0.1 mm.
 #include <gtest/gtest.h>
 
 #include <cmath>

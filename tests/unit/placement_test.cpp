@@ -1,4 +1,4 @@
-// The placement chain (core/geom/placement.cpp, docs/semantics.md §11): machine = zero offset + R(plate rotation)
+// The placement chain (core/geom/placement.cpp, docs/semantics.md §12): machine = zero offset + R(plate rotation)
 // · program − tool offset, in the statistics' machine boxes, in E401 and in `essi trace --machine`.
 #include <gtest/gtest.h>
 

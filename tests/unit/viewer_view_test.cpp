@@ -108,7 +108,7 @@ TEST(ViewerView, FitUsesTheTurnedBoxesExtent) {
     EXPECT_DOUBLE_EQ(v.cy, 50);
 }
 
-// Machine coordinates are the placement without a tool offset (docs/semantics.md §11).
+// Machine coordinates are the placement without a tool offset (docs/semantics.md §12).
 TEST(ViewerCoordinates, MachineCoordinatesAreThePlacementWithoutTheToolOffset) {
     essi::Profile p;
     p.zero_offsets["G54"] = {500, 20};

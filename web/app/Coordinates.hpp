@@ -1,6 +1,6 @@
 // The coordinates the viewer shows its numbers and its grid in (docs/viewer.md, "Coordinates"): the tape's
 // program coordinates, or the machine's: where the contours lie on the table, the placement of docs/semantics.md
-// §11 (essi::Placement: zero offset + R(plate rotation) · program) without a tool offset.
+// §12 (essi::Placement: zero offset + R(plate rotation) · program) without a tool offset.
 #pragma once
 
 #include <optional>

@@ -16,7 +16,7 @@ struct Rect {
 };
 
 // The machine's view orientation: where the tape's +x points on the screen (the world turned by quarter turns,
-// counter-clockwise). ISO drawings: +x right, +y up; Woyda's operator's view (ESSI-SEMANTICS §3): +x back (up),
+// counter-clockwise). ISO drawings: +x right, +y up; Woyda's operator's view (docs/semantics.md §3): +x back (up),
 // +y left, one quarter turn.
 enum class Orientation : int { XRight = 0, XUp = 1, XLeft = 2, XDown = 3 };
 

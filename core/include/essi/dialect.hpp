@@ -1,5 +1,5 @@
 // Which reading applies to a tape: its input format (ESSI or EIA, from the content) and its dialect (the built-in
-// profile its evidence points to: `--profile auto`), with the evidence in words (docs/semantics.md §12).
+// profile its evidence points to: `--profile auto`), with the evidence in words (docs/semantics.md §11).
 #pragma once
 
 #include <optional>

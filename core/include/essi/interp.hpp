@@ -1,5 +1,5 @@
 // Phase 2, interp: walks the blocks with the machine state (tools, modes, transforms 21-28, 81/82/83,
-// kerf, feed, heads) and emits the motion stream to a sink (docs/semantics.md §3-§11).
+// kerf, feed, heads) and emits the motion stream to a sink (docs/semantics.md §3-§10, §12).
 #pragma once
 
 #include <memory>

@@ -1,4 +1,4 @@
-// Phase 3, geom: where the program lies on the machine (docs/semantics.md §11, the ISG chain):
+// Phase 3, geom: where the program lies on the machine (docs/semantics.md §12, the ISG chain):
 //
 //   machine = zero offset + R(plate rotation) · program − tool offset
 //

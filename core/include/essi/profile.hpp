@@ -103,7 +103,7 @@ struct Profile {
     // a machine axis; default +y, the transverse axis)
     Point torch_direction{0, 1};
 
-    // Machine placement (§11): machine = zero offset + R(plate rotation) · program − tool offset
+    // Machine placement (§12): machine = zero offset + R(plate rotation) · program − tool offset
     std::map<std::string, Point> zero_offsets{{kDefaultZeroOffset, {}}};  // a G54-G59-like table, mm
     std::string zero_offset = kDefaultZeroOffset;  // the active entry
     double plate_rotation_deg = 0;                 // counter-clockwise about the program origin
@@ -131,7 +131,7 @@ struct Profile {
 };
 
 // Unit increments (the program's axes after 21-28, from the program start) to program millimetres: units x
-// unit_mm (docs/semantics.md §3, §11). The one formula for the interpreter's positions and the viewer's motions;
+// unit_mm (docs/semantics.md §3, §12). The one formula for the interpreter's positions and the viewer's motions;
 // the machine's coordinates are the placement's (essi/placement.hpp).
 [[nodiscard]] inline Point units_to_mm(const Profile& p, long long x, long long y) {
     return {static_cast<double>(x) * p.unit_mm, static_cast<double>(y) * p.unit_mm};

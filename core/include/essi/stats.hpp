@@ -23,7 +23,7 @@ struct Stats {
     double estimated_time_s = 0;   // along the compensated path
     Box cut_bbox;                  // empty when nothing is cut (program coordinates)
     Box motion_bbox;               // all motion (program coordinates)
-    Box machine_cut_bbox;          // the same in machine coordinates (§11: zero offset, plate rotation, tool offsets)
+    Box machine_cut_bbox;          // the same in machine coordinates (§12: zero offset, plate rotation, tool offsets)
     Box machine_motion_bbox;       // ... and where the carriage goes when a tool offset is selected
     Point end_position;            // machine position at the end (head 1)
 };
@@ -121,7 +121,7 @@ private:
         Stats& stats_;
     };
 
-    // Machine boxes (§11). While the plate is not turned and no tool offset was ever selected ("plain"), they are
+    // Machine boxes (§12). While the plate is not turned and no tool offset was ever selected ("plain"), they are
     // the program's moved by the zero offset, worked out once at the end; from the first tool offset on, every
     // motion adds its machine box.
     void go_explicit() {

@@ -29,7 +29,7 @@ constexpr int kTraceDecimals = 3;
 using TraceWriter = std::function<void(std::string_view)>;
 
 // What the trace shows: the motion stream as programmed (program coordinates), or the torch's path (the
-// kerf-compensated path, docs/semantics.md §8: `essi trace --kerf`), in machine coordinates (§11: `--machine`),
+// kerf-compensated path, docs/semantics.md §8: `essi trace --kerf`), in machine coordinates (§12: `--machine`),
 // or both.
 struct TraceView {
     bool kerf = false;

@@ -130,7 +130,7 @@ void measure(ImDrawList* dl, const Document* doc, const Measure& m, const View& 
     measure_window(m, b, cs, view.area);
 }
 
-// The machine's table (the profile's `table`, docs/semantics.md §11) where it lies under the program: turned and
+// The machine's table (the profile's `table`, docs/semantics.md §12) where it lies under the program: turned and
 // moved back through the placement; and the plate on it, the box of what is cut. Only with a table.
 void table_and_plate(ImDrawList* dl, const Document& doc, const View& view, Point o) {
     if (!doc.profile.table) return;

@@ -33,7 +33,7 @@ void stats_table(const Document& doc) {
     stats_row(Msg::UiStatMark, length_text(s.mark_length_mm));
     stats_row(Msg::UiStatTravel, length_text(s.travel_length_mm));
     stats_row(Msg::UiStatOfItRapid, length_text(s.rapid_length_mm), true);
-    // The machine's box (§11), where the placement moves it (a profile with zero offsets, a plate rotation ...).
+    // The machine's box (§12), where the placement moves it (a profile with zero offsets, a plate rotation ...).
     const Box& mb = s.machine_cut_bbox;
     if (!mb.empty && !(mb.min_x == s.cut_bbox.min_x && mb.min_y == s.cut_bbox.min_y && mb.max_x == s.cut_bbox.max_x &&
                        mb.max_y == s.cut_bbox.max_y))
