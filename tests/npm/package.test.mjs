@@ -24,6 +24,16 @@ const env = { ...process.env, LANG: 'C.UTF-8' };
 delete env.LC_ALL;
 delete env.LC_MESSAGES;
 
+// The test's own npm packages (tests/npm/package.json, installed by scripts/setup test).
+const testRequire = createRequire(path.join(here, 'package.json'));
+function testPackage(name) {
+  try {
+    return testRequire(name);
+  } catch {
+    throw new Error(`npm_package needs ${name} in tests/npm/node_modules (scripts/setup test)`);
+  }
+}
+
 const tapes = fs.readdirSync(examples).filter((f) => /\.(esi|eia)$/.test(f)).sort();
 
 // What a test needs and cannot find is a failure that says so (never a skip).
@@ -100,10 +110,59 @@ describe('the package', () => {
     api = await import(pathToFileURL(path.join(app, 'node_modules', 'essikit', 'index.js')));
     assert.equal(await api.version(), version);
   });
+
+  test('its TypeScript declarations type-check a program that uses every name', () => {
+    need(api, 'the installed package (the test before)');
+    const tsc = path.join(path.dirname(testRequire.resolve('typescript/package.json')), 'bin', 'tsc');
+    fs.writeFileSync(path.join(app, 'uses.mts'), kTypeScriptUse);
+    const r = runProgram('node', [tsc, '--noEmit', '--strict', '--module', 'nodenext', '--moduleResolution', 'nodenext',
+      '--target', 'es2022', '--lib', 'es2022,dom', 'uses.mts'], { cwd: app });
+    assert.equal(r.code, 0, r.stdout.toString());
+    // and a wrong use is caught (the declarations are read, not ignored)
+    fs.writeFileSync(path.join(app, 'wrong.mts'), "import { check } from 'essikit';\nconst n: number = await check('x');\n");
+    const wrong = runProgram('node', [tsc, '--noEmit', '--module', 'nodenext', '--moduleResolution', 'nodenext',
+      '--target', 'es2022', 'wrong.mts'], { cwd: app });
+    assert.notEqual(wrong.code, 0);
+    assert.match(wrong.stdout.toString(), /Type 'Report' is not assignable to type 'number'/);
+  });
 });
+
+// Every name of the API and the element, as a TypeScript program uses them.
+const kTypeScriptUse = `
+import { check, stats, trace, convert, diff, profiles, version, run, EssikitError, type Report } from 'essikit';
+import { EssiViewer } from 'essikit/viewer';
+
+export async function uses(): Promise<void> {
+  const report: Report = await check('+1+1\\n', { profile: 'auto', input: 'essi', lang: 'de', name: 'x.esi', maxDiagnostics: 3 });
+  const ok: boolean = report.files[0].ok;
+  const perFile = (await stats(new Uint8Array(3), { input: 'eia', profile: { name: 'shop' } })).files;
+  const records: string = await trace(new ArrayBuffer(2), { kerf: true, machine: false, decimals: 4 });
+  const gcode: string = await convert('x', { to: 'gcode', toProfile: 'woyda', absolute: true, force: true });
+  const changes = await diff('a', 'b', { names: ['a.esi', 'b.esi'], profile: 'woyda' });
+  const names: string[] = await profiles();
+  const v: string = await version();
+  const r = await run(['check', '-'], { stdin: 'x', files: { 'a.esi': 'y' } });
+  const code: number = r.code;
+  const out: Uint8Array = r.stdout;
+  try { await check('x'); } catch (e) { if (e instanceof EssikitError) console.log(e.exitCode, e.stderr, e.diagnostics.join()); }
+  const viewer = document.querySelector('essi-viewer')!;
+  viewer.addEventListener('essi-load', (e) => console.log(e.detail.name, e.detail.ok, e.detail.summary.errors));
+  viewer.addEventListener('essi-select', (e) => console.log(e.detail.line, e.detail.motion));
+  const shown: Report = await viewer.load(new Uint8Array(1), 'y.esi');
+  const last: Report | null = viewer.report;
+  const element: EssiViewer = viewer;
+  console.log(ok, perFile, records, gcode, changes, names, v, code, out, shown, last, element, element.viewer);
+}
+`;
 
 // Each subcommand of every example: native essi, npx essikit (same arguments, same files) and the API.
 describe('the API and npx essikit give what essi gives, for every example', { concurrency: 2 }, () => {
+  let validateReport;  // docs/report-schema.json (JSON Schema 2020-12)
+  before(() => {
+    const Ajv2020 = testPackage('ajv/dist/2020.js');
+    const schema = JSON.parse(fs.readFileSync(path.join(root, 'docs', 'report-schema.json'), 'utf8'));
+    validateReport = new (Ajv2020.default || Ajv2020)({ allErrors: true, strict: false }).compile(schema);
+  });
   const npx = (args) => runProgram('npx', ['--no', 'essikit', ...args], { cwd: app });
   const same = async (args) => {
     const [want, got] = await Promise.all([runAsync(essiBin, args), runAsync('npx', ['--no', 'essikit', ...args], { cwd: app })]);
@@ -123,7 +182,9 @@ describe('the API and npx essikit give what essi gives, for every example', { co
       // check and stats: JSON (no timing field: the run's seconds are only on stderr's summary line)
       for (const sub of ['check', 'stats']) {
         const want = await same([sub, '--format', 'json', '--profile', profile, file]);
-        assert.deepEqual(await api[sub](bytes, options), JSON.parse(want.stdout));
+        const got = await api[sub](bytes, options);
+        assert.deepEqual(got, JSON.parse(want.stdout));
+        if (sub === 'check') assert.ok(validateReport(got), JSON.stringify(validateReport.errors));
       }
       const trace = await same(['trace', '--profile', profile, file]);
       assert.equal(await api.trace(bytes, options), trace.stdout.toString());
