@@ -32,21 +32,25 @@ export class EssiViewer extends HTMLElement {
     style.textContent = kStyle;
     this._frame = document.createElement('iframe');
     this._frame.title = 'essikit viewer';
+    this._frame.src = kPage.href;      // (loaded once the element is in a document)
     root.append(style, this._frame);
     this._report = null;
     this._tape = null;                 // {name, bytes} of the tape shown
     this._queue = Promise.resolve();   // loads and re-checks, one after the other
     this._window = null;               // the frame's window once its viewer runs
     this._started = null;
+    this._connected = false;
   }
 
   connectedCallback() {
-    if (!this._frame.getAttribute('src')) this._frame.src = kPage.href;
+    if (this._connected) return;
+    this._connected = true;
     if (this.hasAttribute('src')) this._loadSrc(this.getAttribute('src'));
   }
 
   attributeChangedCallback(name, before, after) {
-    if (before === after || !this.isConnected || !this._frame.getAttribute('src')) return;
+    // (the attributes the element starts with are read when it is first connected and when the viewer starts)
+    if (before === after || !this._connected) return;
     if (name === 'src') {
       if (after) this._loadSrc(after);
     } else if (name === 'theme') {
@@ -101,8 +105,11 @@ export class EssiViewer extends HTMLElement {
     if (!this._started) {
       this._started = new Promise((resolve, reject) => {
         const ready = () => {
+          const doc = this._frame.contentDocument;
+          if (!doc || doc.URL !== kPage.href || doc.readyState !== 'complete') return;  // (about:blank, not yet)
+          this._frame.removeEventListener('load', ready);
           const win = this._frame.contentWindow;
-          if (!win || !win.essikit) return reject(new Error(`<essi-viewer>: ${kPage} is not the essikit viewer`));
+          if (!win.essikit) return reject(new Error(`<essi-viewer>: ${kPage} is not the essikit viewer`));
           win.essikit.ready.then(async () => {
             this._window = win;
             win.essikitSelected = (line, motion) => this._selected(line, motion);
@@ -112,9 +119,8 @@ export class EssiViewer extends HTMLElement {
             resolve(win);
           }, reject);
         };
-        const doc = this._frame.contentDocument;
-        if (doc && doc.readyState === 'complete' && doc.URL === kPage.href) ready();
-        else this._frame.addEventListener('load', ready, { once: true });
+        this._frame.addEventListener('load', ready);
+        ready();
       });
     }
     return this._started;

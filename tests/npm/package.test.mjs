@@ -348,6 +348,26 @@ describe('<essi-viewer> on a static page', () => {
     const loads = await page.evaluate(() => window.loads);
     assert.equal(loads.length, 2);
     assert.deepEqual(loads[1], { name: 'bad.esi', ok: false, profile: 'auto', summary: badWant.summary });
+
+    // The attributes after the start: profile and lang check the tape again (essi-load), theme changes the viewer.
+    const nativeBad = (...args) => {
+      const r = JSON.parse(runProgram(essiBin, ['check', '--format', 'json', ...args, '-'],
+        { input: Buffer.from(bad, 'latin1') }).stdout);
+      r.files[0].path = 'bad.esi';
+      return r;
+    };
+    await page.evaluate(() => document.getElementById('viewer').setAttribute('profile', 'woyda'));
+    await page.waitForFunction(() => window.loads.length === 3, null, { timeout: 60000 });
+    assert.deepEqual(await page.evaluate(() => document.getElementById('viewer').report), nativeBad('--profile', 'woyda'));
+    assert.equal(await page.evaluate(() => document.getElementById('viewer').viewer.state().profile), 'woyda');
+    await page.evaluate(() => document.getElementById('viewer').setAttribute('lang', 'de'));
+    await page.waitForFunction(() => window.loads.length === 4, null, { timeout: 60000 });
+    assert.deepEqual(await page.evaluate(() => document.getElementById('viewer').report),
+      nativeBad('--profile', 'woyda', '--lang', 'de'));
+    await page.evaluate(() => document.getElementById('viewer').setAttribute('theme', 'dark'));
+    await page.waitForFunction(() => document.getElementById('viewer').viewer.state().theme === 'dark', null,
+      { timeout: 10000 });
+    assert.equal(await page.evaluate(() => document.getElementById('viewer').viewer.state().lang), 'de');
     assert.deepEqual(problems, []);
   });
 });
