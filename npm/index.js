@@ -70,9 +70,12 @@ export async function run(args, { files = {}, stdin } = {}) {
   let read = 0;
   const stdout = new ByteSink();
   const stderr = new ByteSink();
-  const instance = await createEssikit({
+  let failed;
+  const failure = new Promise((_, reject) => { failed = reject; });
+  failure.catch(() => {});  // (an abort in main() throws from callMain below; the race is over by then)
+  const instance = await Promise.race([failure, createEssikit({
     instantiateWasm(imports, receive) {
-      WebAssembly.instantiate(module, imports).then((inst) => receive(inst, module));
+      WebAssembly.instantiate(module, imports).then((inst) => receive(inst, module), failed);
       return {};
     },
     // The environment of a plain POSIX shell: no locale of the browser or of node's process; --lang says it.
@@ -82,7 +85,8 @@ export async function run(args, { files = {}, stdin } = {}) {
     stderr: (byte) => { if (byte !== null) stderr.push(byte); },
     print: () => {},
     printErr: () => {},
-  });
+    onAbort: (what) => failed(new Error(`essikit: the WebAssembly program stopped: ${what}`)),
+  })]);
   for (const [path, data] of Object.entries(files)) {
     const slash = path.lastIndexOf('/');
     if (slash > 0) instance.FS.mkdirTree(path.slice(0, slash));
