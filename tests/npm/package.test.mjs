@@ -337,6 +337,9 @@ describe('<essi-viewer> on a static page', () => {
     // essi-select: a line selected in the viewer (as a click on it would) reaches the page.
     await page.evaluate(() => document.getElementById('viewer').viewer.selectLine(5));
     await page.waitForFunction(() => window.selections.some((s) => s.line === 5), null, { timeout: 30000 });
+    const [selected, selection] = await page.evaluate(() =>
+      [window.selections.at(-1), document.getElementById('viewer').viewer.state().selection]);
+    assert.deepEqual(selected, { line: selection.line, motion: selection.motion });
 
     // load(bytes, name): another tape, another essi-load with its report.
     const bad = fs.readFileSync(path.join(examples, 'bad_arc_off_circle.esi'), 'latin1');
