@@ -151,7 +151,9 @@ export async function uses(): Promise<void> {
   const shown: Report = await viewer.load(new Uint8Array(1), 'y.esi');
   const last: Report | null = viewer.report;
   const element: EssiViewer = viewer;
-  console.log(ok, perFile, records, gcode, changes, names, v, code, out, shown, last, element, element.viewer);
+  const state = element.viewer?.state();
+  element.viewer?.selectLine(3);
+  console.log(ok, perFile, records, gcode, changes, names, v, code, out, shown, last, state);
 }
 `;
 
