@@ -107,10 +107,12 @@ fuzz:
 # The packages, from the viewer's WASM build (compiled into both essi binaries): docs/install.md.
 #   dist/essi-VERSION-linux-x86_64.tar.gz   the static essi (preset dist-static), man page, completions, examples
 #   dist/essikit_VERSION_amd64.deb          essi built against Debian's shared libraries (preset dist-deb), CPack
+#   dist/essikit-VERSION.tgz                the npm package (the wasm preset's target essi_npm, scripts/pack_npm)
 dist:
 	@scripts/setup dist
 	cmake --preset wasm
-	cmake --build --preset wasm -j$(JOBS) --target essi_viewer
+	cmake --build --preset wasm -j$(JOBS) --target essi_viewer essi_npm
+	scripts/pack_npm build/wasm dist
 	cmake --preset dist-static
 	cmake --build --preset dist-static -j$(JOBS) --target dist_tarball
 	cmake --preset dist-deb

@@ -1,5 +1,6 @@
 // essi: the command-line tool. check / stats / trace / profile (docs/cli.md).
 // Exit codes: 0 no errors, 1 a tape has errors, 2 usage or I/O problem.
+// ESSI_NO_SERVE (the npm package's build, npm/CMakeLists.txt): everything but `essi serve`.
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -35,7 +36,9 @@
 #include "tape_request.hpp"
 #include "terminal_text.hpp"
 #include "completions.hpp"
+#ifndef ESSI_NO_SERVE
 #include "serve.hpp"
+#endif
 #include "thread_pool.hpp"
 #include "file_io.hpp"
 #include "pipelined_check.hpp"
@@ -318,8 +321,13 @@ bool write_file(const std::string& path, std::string_view bytes) {
     return std::fclose(f) == 0 && ok;
 }
 
-// Runs `argv` (looked up on PATH) and waits; true when it exits with 0.
+// Runs `argv` (looked up on PATH) and waits; true when it exits with 0. Under Emscripten (the npm package) there are
+// no processes: false, and `render --png` says it needs rsvg-convert.
 bool run_program(const std::vector<std::string>& args) {
+#ifdef __EMSCRIPTEN__
+    (void)args;
+    return false;
+#else
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
@@ -328,6 +336,7 @@ bool run_program(const std::vector<std::string>& args) {
     int status = 0;
     if (waitpid(pid, &status, 0) < 0) return false;
     return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+#endif
 }
 
 struct RenderCliOptions {
@@ -682,6 +691,7 @@ int main(int argc, char** argv) {
         ->type_name("NAME|FILE");
     CLI::App* list = profile->add_subcommand("list", "List the built-in profiles");
 
+#ifndef ESSI_NO_SERVE
     essi::native::ServeOptions serve_opts;
     serve_opts.web_root = ESSI_DEFAULT_WEB_ROOT;
     serve_opts.examples_dir = ESSI_DEFAULT_EXAMPLES_DIR;
@@ -731,6 +741,7 @@ int main(int argc, char** argv) {
         ->type_name("DURATION");
     serve->add_option("--share-rate", serve_opts.share_rate, "Uploads per minute per client address (0: no limit)")
         ->capture_default_str();
+#endif
 
     // --lang on every command: the language of the messages and reports (else the POSIX environment's).
     std::string lang_arg;
@@ -776,7 +787,9 @@ int main(int argc, char** argv) {
     if (*convert) return run_convert(convert_opts);
     if (*show) return run_profile_show(show_arg);
     if (*list) return run_profile_list();
+#ifndef ESSI_NO_SERVE
     if (*serve) return essi::native::run_serve(serve_opts);
+#endif
     if (*completions) {
         out(essi::native::completion_script(completion_shell,
                                             essi::native::completion_spec(app, essi::builtin_profile_names())));

@@ -1,6 +1,7 @@
 #include "pipelined_check.hpp"
 
 #include "plate_runner.hpp"
+#include "thread_pool.hpp"
 
 #include <array>
 #include <atomic>
@@ -17,7 +18,8 @@ CheckResult check_tape_pipelined(std::string_view bytes, const TapeSetup& setup,
 
 CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile, InputFormat format,
                                  std::size_t max_diagnostics) {
-    if (bytes.size() < kPipelineMinBytes) return check_tape(bytes, profile, format, max_diagnostics);
+    // (without threads, e.g. under Emscripten without pthreads: the same check on this thread)
+    if (bytes.size() < kPipelineMinBytes || !kHaveThreads) return check_tape(bytes, profile, format, max_diagnostics);
 
     // A ring of chunks: the reader fills slot k, the checker empties it, in order. A slot changes hands through
     // its atomic `full` flag (C++20 wait/notify: a short spin, then a futex), so a thread that is only a little

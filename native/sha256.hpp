@@ -1,4 +1,5 @@
-// SHA-256 (FIPS 180-4) through OpenSSL's EVP interface (Debian libssl-dev): the content address of shared tapes.
+// SHA-256 (FIPS 180-4) through OpenSSL's EVP interface (Debian libssl-dev): the content address of shared tapes and
+// codeclimate's fingerprints. Under Emscripten (npm/: no OpenSSL) the same digest written out in sha256.cpp.
 #pragma once
 
 #include <string>

@@ -9,13 +9,14 @@
 namespace essi::native {
 
 unsigned hardware_jobs() {
+    if (!kHaveThreads) return 1;
     const unsigned n = std::thread::hardware_concurrency();
     return n == 0 ? 1 : n;
 }
 
 void for_each_ordered(std::size_t n, unsigned jobs, const std::function<void(std::size_t)>& work,
                       const std::function<void(std::size_t)>& emit, std::size_t window) {
-    if (jobs <= 1 || n <= 1) {
+    if (jobs <= 1 || n <= 1 || !kHaveThreads) {
         for (std::size_t i = 0; i < n; ++i) {
             work(i);
             emit(i);

@@ -390,6 +390,11 @@ void App::frame() {
     const bool prepared = scene_.prepare(in, renderer_, graphics_ok_);
     load_.note_frame(prepared && scene_.tape_drawn());
     in_frame_ = false;
+    if (selection_.line != announced_.line || selection_.motion != announced_.motion) {
+        announced_ = selection_;
+        platform::selection_changed(selection_.line, selection_.motion == Selection::npos
+                                                         ? -1 : static_cast<long long>(selection_.motion));
+    }
 }
 
 void App::draw_panels() {

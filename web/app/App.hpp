@@ -252,6 +252,7 @@ private:
     Layers layers_;
     Playback playback_;
     Selection selection_;
+    Selection announced_;  // the selection the page last heard of (platform::selection_changed)
     Input input_;
     UiState ui_;
 };

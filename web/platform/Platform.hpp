@@ -5,9 +5,11 @@
 //   ShareEmscripten.cpp    / ShareGlfw.cpp       share links (URL fragment)
 //   SettingsEmscripten.cpp / SettingsGlfw.cpp    settings kept across sessions (localStorage, a file)
 //   FontsEmscripten.cpp    / FontsGlfw.cpp       the CJK font, loaded when a text needs it (UiFonts)
+//   SelectionEmscripten.cpp / SelectionGlfw.cpp  the selection told to the page (window.essikitSelected)
 //   ApiEmscripten.cpp                            window.essikit (exported C functions)
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -72,5 +74,9 @@ void open_example(App& app, const std::string& name);
 void load_cjk_font(UiFonts& fonts);
 // This build has a CJK font to load (scripts/setup installs fonts-wqy-microhei).
 [[nodiscard]] bool has_cjk_font();
+
+// The selected line (0: none) and motion (-1: none) changed: the page hears of it through
+// window.essikitSelected(line, motion) (<essi-viewer> fires essi-select); nothing natively.
+void selection_changed(std::uint32_t line, long long motion);
 
 }  // namespace essi::viewer::platform
