@@ -58,10 +58,12 @@ protected:
 
     // A diagnostic at `offset` of the current line; E115 and nothing more once kMaxReadErrors errors are reached.
     void report(Severity sev, DiagCode code, std::uint32_t offset, Msg msg, MessageArgs args = {});
-    // Appends a block on the current line; its words (`packed`'s count) have been appended before it.
+    // Appends a block on the current line; its words (`packed`'s count) have been appended before it. A block
+    // other than % or a comment starts the program, and reports a % that came in the program before it (W112).
     void push_block(std::uint32_t offset, BlockKind kind, std::uint16_t code, std::uint8_t packed);
     // The block just pushed ends the program.
     void mark_program_end();
+    // Whether the profile ends the program with function `code`, or with the mark '/' or '='.
     [[nodiscard]] bool is_end_function(long long code) const {
         return code >= 0 && code < fn::kCodeCount && end_function_[static_cast<std::size_t>(code)];
     }
