@@ -1,14 +1,16 @@
-// essi/charset.hpp through the C library's iconv (the Emscripten build: musl has GB 18030 built in).
+// essi/charset.hpp through the C library's iconv (the Emscripten build: musl decodes GBK and GB 18030's two-byte
+// characters; it has no encoder for them, so utf8_to_charset gives nullopt and the text stays UTF-8).
 #include <iconv.h>
 
 #include <cerrno>
 
+#include "charset_platform.hpp"
 #include "essi/charset.hpp"
 
 namespace essi {
 namespace {
 
-constexpr auto kNoConverter = reinterpret_cast<iconv_t>(-1);
+const auto kNoConverter = reinterpret_cast<iconv_t>(-1);  // (iconv_open's failure)
 constexpr auto kIconvFailed = static_cast<std::size_t>(-1);
 
 // An iconv descriptor closed when it goes out of scope.
@@ -29,7 +31,7 @@ private:
 
 }  // namespace
 
-std::optional<std::string> gb18030_char_to_utf8(std::string_view character) {
+std::optional<std::string> detail::gb18030_two_byte_to_utf8(std::string_view character) {
     const Iconv cd("UTF-8", "GB18030");
     if (!cd.ok()) return std::nullopt;
     char buf[16];

@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "charset_platform.hpp"
 #include "essi/charset.hpp"
 
 namespace essi {
@@ -31,7 +32,7 @@ constexpr char16_t kQuestionMark = u'?';
 
 }  // namespace
 
-std::optional<std::string> gb18030_char_to_utf8(std::string_view character) {
+std::optional<std::string> detail::gb18030_two_byte_to_utf8(std::string_view character) {
     const Converter gb = strict_converter("GB18030");
     if (!gb) return std::nullopt;
     UChar utf16[4];
