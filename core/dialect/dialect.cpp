@@ -242,6 +242,16 @@ DialectGuess guess_dialect(std::string_view bytes, InputFormat format) {
     return g;
 }
 
+bool parse_input_choice(std::string_view text, std::optional<InputFormat>& format) {
+    if (text == "auto" || text.empty()) {
+        format.reset();
+        return true;
+    }
+    const auto named = parse_input_format(text);
+    if (named) format = named;
+    return named.has_value();
+}
+
 TapeSetup setup_tape(std::string_view bytes, std::optional<InputFormat> format, const std::optional<Profile>& profile) {
     TapeSetup s;
     s.format = format ? *format : detect_input_format(bytes);

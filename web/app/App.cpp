@@ -160,9 +160,7 @@ void App::load(std::string name, std::string bytes, std::optional<ViewRequest> v
 
 void App::load_shared(std::string name, std::string bytes, const ShareLink& link) {
     use_link_profile(link);
-    input_format_.reset();
-    if (link.input == "essi") input_format_ = InputFormat::Essi;
-    if (link.input == "eia") input_format_ = InputFormat::Eia;
+    input_format_ = link.input;
     ui_.link_problem = {};
     read(std::move(name), std::move(bytes), std::nullopt);
 }
@@ -541,7 +539,7 @@ std::string App::share_query() const {
     const bool user_profile = dropped_profile_ && profile_name_ == dropped_profile_->name;
     return share_view_query({view_.cx + o.x, view_.cy + o.y, view_.zoom}, selection_.line) + "&" +
            share_reading_query(profile_name_, user_profile ? profile_to_json(*dropped_profile_) : std::string(),
-                               d ? input_format_name(d->setup.format) : "");
+                               d ? std::optional(d->setup.format) : std::nullopt);
 }
 
 FileReport App::report() const {
@@ -607,7 +605,7 @@ std::string App::export_text(const std::string& format) const {
         return format == "report-csv" ? diagnostics_csv(one, ui_lang()) : report_to_json(one, profile_name_, ui_lang()).dump(2) + "\n";
     }
     ConvertOptions o;
-    o.to = format == "eia" ? OutputFormat::Eia : format == "gcode" ? OutputFormat::Gcode : OutputFormat::Essi;
+    o.to = parse_output_format(format).value_or(OutputFormat::Essi);
     o.target = d->profile;
     o.absolute = format == "gcode";  // (G-code for LinuxCNC: absolute, as CAM posts write it)
     return convert_tape(d->bytes, d->setup, o).text;
