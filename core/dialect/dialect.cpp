@@ -32,8 +32,7 @@ template <class F>
 bool for_each_line_of(std::string_view part, std::uint32_t line, F& f) {
     std::size_t pos = 0;
     while (pos < part.size()) {
-        std::size_t end = pos;
-        while (end < part.size() && !is_line_end(part[end])) ++end;
+        const std::size_t end = find_line_end(part, pos);
         const std::string_view t = trim(part.substr(pos, end - pos));
         if (!t.empty() && !f(line, t)) return false;
         if (end >= part.size()) break;

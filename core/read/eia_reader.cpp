@@ -168,14 +168,6 @@ private:
         while (p < end && ((src_[p] >= '0' && src_[p] <= '9') || src_[p] == '.')) ++p;
         return src_.substr(begin, p - begin);
     }
-    // The first CR or LF at or after `pos` (essi/lines.hpp's rule), or `size`.
-    [[nodiscard]] std::uint32_t line_end(std::uint32_t pos, std::uint32_t size) const {
-        const char* p = src_.data() + pos;
-        const auto* lf = static_cast<const char*>(std::memchr(p, '\n', size - pos));
-        const char* stop = lf ? lf : src_.data() + size;
-        const auto* cr = static_cast<const char*>(std::memchr(p, '\r', static_cast<std::size_t>(stop - p)));
-        return static_cast<std::uint32_t>((cr ? cr : stop) - src_.data());
-    }
 
     std::string_view src_;
     const Profile& profile_;
@@ -603,7 +595,7 @@ bool EiaReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
     std::uint32_t pos = pos_;
     LineResult& r = line_out_;
     while (pos < size && !stopped_ && !after_end_seen_) {
-        const std::uint32_t end = line_end(pos, size);
+        const auto end = static_cast<std::uint32_t>(find_line_end(src_.substr(0, size), pos));
         line_begin_ = pos;
         const std::string_view text = trim(src_.substr(pos, end - pos));
         const auto text_at = static_cast<std::uint32_t>(text.empty() ? pos : text.data() - src_.data());

@@ -34,8 +34,8 @@ constexpr std::array<std::uint8_t, 256> make_classes() {
     t['-'] = kMinus;
     t[' '] = kSpace;
     t['\t'] = kSpace;
-    t['\r'] = kLineEnd;
-    t['\n'] = kLineEnd;
+    for (int c = 0; c < 256; ++c)
+        if (is_line_end(static_cast<unsigned char>(c))) t[c] = kLineEnd;
     t['%'] = kPercent;
     t['/'] = kSlash;
     t['='] = kEquals;
@@ -164,8 +164,8 @@ template <bool bounded>
         ++n;
         p = after;
     }
-    // Not a plain line? (Two compares as written: is_line_end's form costs 2 % of the reader here.)
-    if (p == first || (!(bounded && p == stop) && *p != '\n' && *p != '\r')) return false;
+    // Not a plain line?
+    if (p == first || (!(bounded && p == stop) && is_not_line_end(*p))) return false;
     out.lead_digits = lead_digits;
     out.lead = lead;
     out.words = n;
@@ -336,9 +336,8 @@ bool EssiReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
             if (pos >= size || stopped_ || chunk_blocks_ >= max_blocks) break;
         }
         // The line at `pos` needs the general path.
-        std::uint32_t end = pos;
         line_begin_ = pos;
-        while (end < size && !is_line_end(data[end])) ++end;
+        const auto end = static_cast<std::uint32_t>(find_line_end({data, size}, pos));
         const std::uint32_t from = pos + skip_;
         skip_ = 0;
         if (ended_) after_end_line(from, end);

@@ -12,6 +12,7 @@
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
 #include "essi/geom.hpp"
+#include "essi/lines.hpp"
 #include "essi/profile.hpp"
 #include "essi/render_svg.hpp"
 #include "essi/share_link.hpp"
@@ -302,12 +303,10 @@ void App::require_comment_glyphs(const Document& d) {
         const auto high = std::find_if(d.bytes.begin() + static_cast<std::ptrdiff_t>(at), d.bytes.end(),
                                        [](char c) { return static_cast<unsigned char>(c) >= 0x80; });
         if (high == d.bytes.end()) break;
+        const std::string_view bytes = d.bytes;
         const std::size_t i = static_cast<std::size_t>(high - d.bytes.begin());
-        const std::size_t before = d.bytes.find_last_of("\r\n", i);
-        const std::size_t begin = before == std::string::npos ? 0 : before + 1;
-        std::size_t end = d.bytes.find_first_of("\r\n", i);
-        if (end == std::string::npos) end = d.bytes.size();
-        text += decode_text(std::string_view(d.bytes).substr(begin, std::min(end - begin, kMaxLineBytes)), text_encoding());
+        const std::size_t begin = find_line_start(bytes, i), end = find_line_end(bytes, i);
+        text += decode_text(bytes.substr(begin, std::min(end - begin, kMaxLineBytes)), text_encoding());
         at = end;
     }
     if (!text.empty()) fonts_.require_glyphs(text);
