@@ -14,6 +14,8 @@
 #include "essi/functions.hpp"
 #include "essi/interp.hpp"
 #include "essi/pipeline.hpp"
+#include "essi/stats.hpp"
+#include "essi/text.hpp"
 
 namespace essi::viewer {
 
@@ -328,8 +330,8 @@ std::string tools_label(std::uint8_t tools, Lang lang) {
 }
 
 namespace {
-std::string xy(Point p) { return fmt("%.3f, %.3f", p.x, p.y); }
-std::string mm3(double v) { return fmt("%.3f", v); }
+std::string xy(Point p) { return mm_text(p.x) + ", " + mm_text(p.y); }
+constexpr int kSweepDecimals = 3;  // degrees
 }  // namespace
 
 std::string describe_motion(const MotionRecord& m, Lang lang) {
@@ -337,21 +339,21 @@ std::string describe_motion(const MotionRecord& m, Lang lang) {
     std::string s;
     switch (m.curve) {
         case CurveKind::Line:
-            s = format_message(Msg::UiMotionLine, lang, {kind, xy(m.start), xy(m.end), mm3(m.length_mm)});
+            s = format_message(Msg::UiMotionLine, lang, {kind, xy(m.start), xy(m.end), mm_text(m.length_mm)});
             break;
         case CurveKind::Arc: {
             const bool full = std::fabs(std::fabs(m.sweep) - 2 * kPi) < kFullTurnTolerance;
             s = format_message(Msg::UiMotionArc, lang,
-                               {kind, full ? Msg::UiFullCircle : Msg::UiArc, m.ccw ? Msg::UiCcw : Msg::UiCw, mm3(m.radius),
-                                xy(m.centre), xy(m.start), xy(m.end), mm3(m.sweep * 180.0 / kPi), mm3(m.length_mm)});
+                               {kind, full ? Msg::UiFullCircle : Msg::UiArc, m.ccw ? Msg::UiCcw : Msg::UiCw, mm_text(m.radius),
+                                xy(m.centre), xy(m.start), xy(m.end), fixed_text(m.sweep * 180.0 / kPi, kSweepDecimals), mm_text(m.length_mm)});
             if (std::fabs(m.end_radius - m.radius) > kSameRadiusMm)
-                s += " " + format_message(Msg::UiArcEndRadius, lang, {mm3(m.end_radius)});
+                s += " " + format_message(Msg::UiArcEndRadius, lang, {mm_text(m.end_radius)});
             break;
         }
         case CurveKind::Parabola: {
             const ParabolaGeom& g = m.parabola;
             s = format_message(Msg::UiMotionParabola, lang,
-                               {kind, xy(g.vertex), xy(g.n), mm3(g.p), xy(m.start), xy(m.end), mm3(m.length_mm)});
+                               {kind, xy(g.vertex), xy(g.n), mm_text(g.p), xy(m.start), xy(m.end), mm_text(m.length_mm)});
             break;
         }
     }
