@@ -139,8 +139,7 @@ float Document::feed_of(std::size_t i) const {
 }
 
 double Document::duration_s(std::size_t i) const {
-    const double feed = feed_of(i);
-    double t = feed > 0 ? record(i).length_mm / feed * 60.0 : 0.0;
+    double t = motion_time_s(record(i).length_mm, feed_of(i));
     if (std::binary_search(pierces.begin(), pierces.end(), static_cast<std::uint32_t>(i))) t += profile.pierce_time_s;
     return t;
 }
@@ -446,12 +445,7 @@ public:
         add(m);
     }
 
-    void on_event(const MachineEvent& e) override {
-        // The pierce is drawn at the first cutting motion after cutting starts (the statistics' rule).
-        if (starts_cutting(tools_, e.tools_after)) pierce_pending_ = true;
-        if ((e.tools_after & kCuttingTools) == 0) pierce_pending_ = false;
-        tools_ = e.tools_after;
-    }
+    void on_event(const MachineEvent& e) override { pierces_.on_tools(e.tools_after); }
 
 private:
     // The compact form has no kerf value where compensation is off: a motion whose kerf is not 0 there (which the
@@ -490,16 +484,14 @@ private:
     }
     void add(const Motion& m) {
         Document& d = doc_;
-        if (pierce_pending_ && (m.tools & kCuttingTools)) d.pierces.push_back(static_cast<std::uint32_t>(d.motions.size()));
-        pierce_pending_ = false;
+        if (pierces_.at_motion(m.tools)) d.pierces.push_back(static_cast<std::uint32_t>(d.motions.size()));
         d.motions.push_back(m);
     }
 
     Document& doc_;
     const float rapid_feed_ = static_cast<float>(doc_.profile.rapid_mm_min);
     Point last_end_;  // of the motion before (a motion that starts elsewhere is a jump)
-    std::uint8_t tools_ = 0;
-    bool pierce_pending_ = false;
+    PierceTracker pierces_;  // the statistics' pierces, each at its motion
 };
 
 // The document's motions as the cut plan reads them back (Document::record: the interpreter's own numbers).
