@@ -123,6 +123,16 @@ std::string join(const std::vector<std::string>& v, std::string_view sep) {
     return s;
 }
 
+// What --input and --to accept: the core's names of the formats (in the enum's order), then `more`.
+template <class Format, std::size_t N>
+std::vector<std::string> format_names(const Format (&formats)[N], const char* (*name)(Format),
+                                      std::vector<std::string> more = {}) {
+    std::vector<std::string> names;
+    for (const Format f : formats) names.emplace_back(name(f));
+    names.insert(names.end(), more.begin(), more.end());
+    return names;
+}
+
 // A built-in profile name, or else a JSON profile file. Prints the problem and returns nullopt when
 // neither works. An empty argument is the default profile.
 std::optional<essi::Profile> resolve_profile(const std::string& arg) {
@@ -154,7 +164,7 @@ essi::native::ReadResult read_tape_file(const std::string& path, std::uint64_t m
 // --profile and --input: "auto" leaves the choice to each tape's content (essi/dialect.hpp).
 std::optional<essi::native::TapeRequest> resolve_request(const std::string& profile_arg, const std::string& input_arg) {
     essi::native::TapeRequest r;
-    if (!essi::native::parse_input_format(input_arg, r.input)) {
+    if (!essi::parse_input_choice(input_arg, r.input)) {
         err("essi: unknown --input '" + essi::display_text(input_arg) + "'; expected essi, eia or auto\n");
         return std::nullopt;
     }
@@ -448,7 +458,7 @@ int run_convert(const ConvertCliOptions& o) {
     if (!tape) return kExitUsage;
     const essi::TapeSetup& setup = tape->setup;
     essi::ConvertOptions options;
-    options.to = o.to == "eia" ? essi::OutputFormat::Eia : o.to == "gcode" ? essi::OutputFormat::Gcode : essi::OutputFormat::Essi;
+    options.to = essi::parse_output_format(o.to).value_or(essi::OutputFormat::Essi);  // (--to is checked: one of them)
     options.absolute = o.absolute;
     options.force = o.force;
     if (o.to_profile.empty()) {
@@ -562,10 +572,11 @@ int main(int argc, char** argv) {
         "Built-in profile name (see `essi profile list`), a JSON profile file, or auto (the dialect the tape's "
         "evidence shows); default iso6582";
     constexpr const char* kInputHelp = "Tape format: essi, eia, or auto (from the content; the default)";
-    const auto add_input_option = [](CLI::App* sub, std::string& value) {
+    const std::vector<std::string> input_names = format_names(essi::kInputFormats, essi::input_format_name, {"auto"});
+    const auto add_input_option = [&input_names](CLI::App* sub, std::string& value) {
         sub->add_option("--input", value, kInputHelp)
-            ->check(CLI::IsMember({"essi", "eia", "auto"}))
-            ->type_name("essi|eia|auto")
+            ->check(CLI::IsMember(input_names))
+            ->type_name(join(input_names, "|"))
             ->capture_default_str();
     };
     const auto add_profile_option = [&](CLI::App* sub) {
@@ -647,8 +658,8 @@ int main(int argc, char** argv) {
     CLI::App* convert = app.add_subcommand("convert", "Write a tape as ESSI, EIA (RS-274) or G-code for LinuxCNC");
     convert->add_option("--to", convert_opts.to, "Target format")
         ->required()
-        ->check(CLI::IsMember({"essi", "eia", "gcode"}))
-        ->type_name("essi|eia|gcode");
+        ->check(CLI::IsMember(format_names(essi::kOutputFormats, essi::output_format_name)))
+        ->type_name(join(format_names(essi::kOutputFormats, essi::output_format_name), "|"));
     convert->add_option("--profile", convert_opts.profile, kProfileHelp)->type_name("NAME|FILE|auto");
     convert->add_option("--to-profile", convert_opts.to_profile,
                         "The dialect written (units, end code, EIA table): a built-in name or a JSON profile file; "

@@ -8,7 +8,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <memory>
 #include <string>
@@ -32,23 +31,6 @@ constexpr std::size_t kMaxReadErrors = 100;
 
 // A byte as two hex digits ("C3"), as the messages quote it.
 [[nodiscard]] std::string hex_byte(unsigned char c);
-
-// The first CR or LF at or after `pos` (essi/lines.hpp's rule), or `size`. Searched a window at a time, so that
-// on a tape with only one kind of line end the other is not looked for up to the end of the bytes at every line.
-[[nodiscard]] inline std::uint32_t find_line_end(const char* data, std::uint32_t pos, std::uint32_t size) {
-    constexpr std::uint32_t kWindow = 4096;
-    for (;;) {
-        const std::uint32_t n = std::min(size - pos, kWindow);
-        const char* const p = data + pos;
-        const auto* lf = static_cast<const char*>(std::memchr(p, '\n', n));
-        const char* const stop = lf != nullptr ? lf : p + n;
-        const auto* cr = static_cast<const char*>(std::memchr(p, '\r', static_cast<std::size_t>(stop - p)));
-        if (cr != nullptr) return static_cast<std::uint32_t>(cr - data);
-        if (lf != nullptr) return static_cast<std::uint32_t>(lf - data);
-        pos += n;
-        if (pos == size) return size;
-    }
-}
 
 // The state every front end keeps, and what reading a block, an error and the program's end does to it.
 class ReaderState : public BlockReader {
@@ -165,7 +147,7 @@ bool ReaderDriver<Format>::read_chunk(Tape& chunk, std::size_t max_blocks) {
     while (pos < size && !stopped_ && !after_end_seen_) {
         pos = format().read_run(pos, size, max_blocks);
         if (pos >= size || stopped_) break;
-        const std::uint32_t end = find_line_end(src_.data(), pos, size);
+        const auto end = static_cast<std::uint32_t>(find_line_end({src_.data(), size}, pos));
         line_begin_ = pos;
         if (!format().read_line(pos, end, max_blocks)) break;
         if (end >= size) {

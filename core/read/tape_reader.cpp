@@ -10,6 +10,12 @@ std::unique_ptr<BlockReader> make_eia_reader(std::string_view bytes, const Profi
 
 const char* input_format_name(InputFormat f) { return f == InputFormat::Eia ? "eia" : "essi"; }
 
+std::optional<InputFormat> parse_input_format(std::string_view name) {
+    for (const InputFormat f : kInputFormats)
+        if (name == input_format_name(f)) return f;
+    return std::nullopt;
+}
+
 std::unique_ptr<BlockReader> make_block_reader(InputFormat format, std::string_view bytes, const Profile& profile) {
     switch (format) {
         case InputFormat::Essi: break;

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <memory>
 #include <new>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <type_traits>
@@ -209,7 +210,10 @@ private:
 // The formats a tape can be written in. Each has its front end in core/read/ (one file each, a BlockReader driven
 // by the chunk loop of core/read/reader_driver.hpp): ESSI (essi_reader.cpp), EIA RS-274 (eia_reader.cpp).
 enum class InputFormat : std::uint8_t { Essi, Eia };
+inline constexpr InputFormat kInputFormats[] = {InputFormat::Essi, InputFormat::Eia};
 [[nodiscard]] const char* input_format_name(InputFormat f);  // "essi", "eia"
+// The format a name names ("essi", "eia": input_format_name's), nullopt for any other text.
+[[nodiscard]] std::optional<InputFormat> parse_input_format(std::string_view name);
 
 // A front end: bytes -> blocks with their positions (byte offset, line), a chunk at a time, every problem a
 // diagnostic (never an exception). The blocks mean the same whatever format they were read from: the interpreter
