@@ -32,8 +32,10 @@ private:
 }  // namespace
 
 std::optional<std::string> detail::gb18030_two_byte_to_utf8(std::string_view character) {
-    const Iconv cd("UTF-8", "GB18030");
+    // One descriptor a thread, opened on first use: a comment is decoded a character at a time.
+    thread_local const Iconv cd("UTF-8", "GB18030");
     if (!cd.ok()) return std::nullopt;
+    iconv(cd.get(), nullptr, nullptr, nullptr, nullptr);  // (the initial state, after a character it refused)
     char buf[16];
     char* in = const_cast<char*>(character.data());
     std::size_t in_left = character.size();

@@ -33,8 +33,10 @@ constexpr char16_t kQuestionMark = u'?';
 }  // namespace
 
 std::optional<std::string> detail::gb18030_two_byte_to_utf8(std::string_view character) {
-    const Converter gb = strict_converter("GB18030");
+    // One converter a thread, opened on first use: a comment is decoded a character at a time.
+    thread_local const Converter gb = strict_converter("GB18030");
     if (!gb) return std::nullopt;
+    ucnv_resetToUnicode(gb.get());  // (after a character it refused)
     UChar utf16[4];
     UErrorCode err = U_ZERO_ERROR;
     const int32_t n16 = ucnv_toUChars(gb.get(), utf16, 4, character.data(), static_cast<int32_t>(character.size()), &err);
