@@ -15,6 +15,7 @@
 #include "essi/profile.hpp"
 #include "essi/pipeline.hpp"
 #include "essi/report_json.hpp"
+#include "essi/share_link.hpp"
 #include "essi/write.hpp"
 #include "pipelined_check.hpp"
 #include "serve.hpp"
@@ -143,7 +144,7 @@ std::optional<TapeRequest> tape_request(const httplib::Request& req, httplib::Re
             return std::nullopt;
         }
     }
-    if (!parse_input_format(param_or(req, "input", "auto"), r.input)) {
+    if (!parse_input_choice(param_or(req, "input", "auto"), r.input)) {
         json_error(res, 400, "unknown input '" + param_or(req, "input", "auto") + "'; expected essi, eia or auto");
         return std::nullopt;
     }
@@ -183,9 +184,7 @@ void convert(const ApiLimits& limits, const httplib::Request& req, httplib::Resp
     if (!request) return;
     const std::string to = param_or(req, "to", "");
     ConvertOptions options;
-    if (to == "essi") options.to = OutputFormat::Essi;
-    else if (to == "eia") options.to = OutputFormat::Eia;
-    else if (to == "gcode") options.to = OutputFormat::Gcode;
+    if (const auto format = parse_output_format(to)) options.to = *format;
     else return json_error(res, 400, "to=" + std::string(to.empty() ? "(none)" : "'" + to + "'") + ": expected essi, eia or gcode");
     const TapeSetup setup = request->setup(body);
     options.target = setup.profile;
@@ -251,7 +250,7 @@ void with_body(ApiContext& ctx, const httplib::Request& req, httplib::Response& 
 }
 
 bool valid_id(const std::string& id, httplib::Response& res) {
-    if (is_sha256_hex(id)) return true;
+    if (is_store_id(id)) return true;
     json_error(res, 400, "bad share id '" + id + "': expected 64 lower-case hex digits (SHA-256)");
     return false;
 }

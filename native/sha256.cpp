@@ -101,11 +101,4 @@ std::string sha256_hex(std::string_view bytes) {
 #endif
 }
 
-bool is_sha256_hex(std::string_view s) {
-    if (s.size() != 64) return false;
-    for (char c : s)
-        if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'))) return false;
-    return true;
-}
-
 }  // namespace essi::native

@@ -10,7 +10,4 @@ namespace essi::native {
 // The digest of `bytes` as 64 lower-case hex digits.
 [[nodiscard]] std::string sha256_hex(std::string_view bytes);
 
-// True for 64 lower-case hex digits (a share id).
-[[nodiscard]] bool is_sha256_hex(std::string_view s);
-
 }  // namespace essi::native

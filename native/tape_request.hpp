@@ -23,7 +23,4 @@ struct TapeRequest {
     }
 };
 
-// "essi", "eia" or "auto" (nullopt); false when the text is none of them.
-[[nodiscard]] bool parse_input_format(std::string_view text, std::optional<InputFormat>& out);
-
 }  // namespace essi::native

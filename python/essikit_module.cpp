@@ -39,9 +39,7 @@ essi::Lang lang_of(const std::string& lang) {
 essi::TapeSetup setup_of(std::string_view bytes, const std::string& profile, const std::string& profile_json,
                          const std::string& input) {
     std::optional<essi::InputFormat> format;
-    if (input == "essi") format = essi::InputFormat::Essi;
-    else if (input == "eia") format = essi::InputFormat::Eia;
-    else if (!input.empty() && input != "auto") throw SetupError("input '" + input + "': expected essi, eia or auto", "[]");
+    if (!essi::parse_input_choice(input, format)) throw SetupError("input '" + input + "': expected essi, eia or auto", "[]");
     std::optional<essi::Profile> p;
     if (!profile_json.empty()) {
         essi::ProfileResult r = essi::parse_profile(profile_json);
@@ -93,9 +91,7 @@ py::tuple convert(py::bytes data, const std::string& to, const std::string& prof
     const essi::Lang l = lang_of(lang);
     const essi::TapeSetup setup = setup_of(bytes, profile, profile_json, input);
     essi::ConvertOptions o;
-    if (to == "essi") o.to = essi::OutputFormat::Essi;
-    else if (to == "eia") o.to = essi::OutputFormat::Eia;
-    else if (to == "gcode") o.to = essi::OutputFormat::Gcode;
+    if (const auto format = essi::parse_output_format(to)) o.to = *format;
     else throw SetupError("to '" + to + "': expected essi, eia or gcode", "[]");
     o.target = setup.profile;
     o.absolute = absolute;

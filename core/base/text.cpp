@@ -88,17 +88,19 @@ std::string display_text(std::string_view s) {
     return out;
 }
 
-namespace {
-std::string printf_text(const char* format, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, v);
+std::string fixed_text(double v, int decimals) {
+    if (!std::isfinite(v)) return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
+    char buf[400];  // (the widest double, 1e308, in full)
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    if (buf[0] == '-' && std::string_view(buf).find_first_not_of("-0.") == std::string_view::npos) return buf + 1;
     return buf;
 }
-}  // namespace
+
+std::string mm_text(double mm) { return fixed_text(mm, kMmDecimals); }
 
 std::string length_text(double mm) {
-    if (!(std::fabs(mm) >= 10000)) return printf_text("%.3f mm", mm);
-    const std::string digits = printf_text("%.3f", std::fabs(mm) / 1000);  // "184377.775"
+    if (!(std::fabs(mm) >= 10000)) return mm_text(mm) + " mm";
+    const std::string digits = mm_text(std::fabs(mm) / 1000);  // "184377.775"
     const std::size_t point = digits.find('.');
     std::string out = mm < 0 ? "-" : "";
     for (std::size_t i = 0; i < point; ++i) {

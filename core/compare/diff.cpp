@@ -217,12 +217,7 @@ namespace {
 constexpr ContourChange kChanges[] = {ContourChange::Same, ContourChange::Moved, ContourChange::Changed,
                                       ContourChange::Removed, ContourChange::Added};
 
-std::string mm3(double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.3f", std::fabs(v) < 5e-4 ? 0.0 : v);
-    return buf;
-}
-std::string signed_mm3(double v) { return (v >= 0 ? "+" : "") + mm3(v); }
+std::string signed_mm_text(double v) { return (v >= 0 ? "+" : "") + mm_text(v); }
 
 std::string lines_text(const Contour& c, Lang lang) {
     return c.first_line == c.last_line ? format_message(Msg::DiffLine, lang, {c.first_line})
@@ -231,14 +226,14 @@ std::string lines_text(const Contour& c, Lang lang) {
 
 std::string contour_text(const Contour& c, Lang lang) {
     return format_message(Msg::DiffContour, lang,
-                          {c.kind == MotionKind::Mark ? Msg::DiffKindMark : Msg::DiffKindCut, mm3(c.length_mm),
-                           mm3(c.start.x), mm3(c.start.y)});
+                          {c.kind == MotionKind::Mark ? Msg::DiffKindMark : Msg::DiffKindCut, mm_text(c.length_mm),
+                           mm_text(c.start.x), mm_text(c.start.y)});
 }
 
 std::string side_text(const char* label, const DiffSide& s, Lang lang) {
     const CheckResult& r = s.tape->check;
     return format_message(Msg::DiffSide, lang,
-                          {label, display_text(s.name), r.profile, s.tape->contours.size(), mm3(r.stats.cut_length_mm),
+                          {label, display_text(s.name), r.profile, s.tape->contours.size(), mm_text(r.stats.cut_length_mm),
                            r.stats.pierces, format_duration(r.stats.estimated_time_s)}) +
            "\n";
 }
@@ -285,8 +280,8 @@ std::string difference_text(const TapeContours& a, const TapeContours& b, const 
         case ContourChange::Same: break;
         case ContourChange::Moved:
             return format_message(Msg::DiffMoved, lang,
-                                  {lines_text(of_a(), lang), lines_text(of_b(), lang), signed_mm3(d.offset.x),
-                                   signed_mm3(d.offset.y), contour_text(of_a(), lang)});
+                                  {lines_text(of_a(), lang), lines_text(of_b(), lang), signed_mm_text(d.offset.x),
+                                   signed_mm_text(d.offset.y), contour_text(of_a(), lang)});
         case ContourChange::Changed:
             return format_message(Msg::DiffChanged, lang,
                                   {lines_text(of_a(), lang), lines_text(of_b(), lang), contour_text(of_a(), lang),
@@ -315,7 +310,7 @@ std::string diff_text(const DiffSide& a, const DiffSide& b, const TapeDiff& d, L
     std::string stats;
     for (const StatChange& c : stat_changes(a.tape->check.stats, b.tape->check.stats)) {
         if (std::fabs(c.b - c.a) < 5e-4) continue;
-        const auto value = [&](double v) { return c.count ? number_text(v) : mm3(v); };
+        const auto value = [&](double v) { return c.count ? number_text(v) : mm_text(v); };
         if (!stats.empty()) stats += text(Msg::ListSeparator, lang);
         stats += std::string(text(c.word, lang)) + " " + value(c.a) + " -> " + value(c.b) + " (" +
                  (c.b >= c.a ? "+" : "") + value(c.b - c.a) + ")";

@@ -32,8 +32,7 @@ template <class F>
 bool for_each_line_of(std::string_view part, std::uint32_t line, F& f) {
     std::size_t pos = 0;
     while (pos < part.size()) {
-        std::size_t end = pos;
-        while (end < part.size() && !is_line_end(part[end])) ++end;
+        const std::size_t end = find_line_end(part, pos);
         const std::string_view t = trim(part.substr(pos, end - pos));
         if (!t.empty() && !f(line, t)) return false;
         if (end >= part.size()) break;
@@ -240,6 +239,16 @@ DialectGuess guess_dialect(std::string_view bytes, InputFormat format) {
             }
     }
     return g;
+}
+
+bool parse_input_choice(std::string_view text, std::optional<InputFormat>& format) {
+    if (text == "auto" || text.empty()) {
+        format.reset();
+        return true;
+    }
+    const auto named = parse_input_format(text);
+    if (named) format = named;
+    return named.has_value();
 }
 
 TapeSetup setup_tape(std::string_view bytes, std::optional<InputFormat> format, const std::optional<Profile>& profile) {

@@ -404,17 +404,16 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     double ly = font_px * 1.2;
     char timebuf[32];
     std::snprintf(timebuf, sizeof timebuf, "%.1f", st.estimated_time_s);
-    char cutbuf[64];
-    std::snprintf(cutbuf, sizeof cutbuf, "%.3f", st.cut_length_mm);
+    const std::string cut_mm = mm_text(st.cut_length_mm);
     s += "<g id=\"legend\" transform=\"translate(" + num(lx) + " " + num(ly0) + ") scale(" + scale_text(px) +
          ")\" font-family=\"sans-serif\" font-size=\"" + num(font_px) + "\" fill=\"#202020\">\n";
     s += "<text id=\"legend-file\" x=\"0\" y=\"" + num(ly) + "\" font-weight=\"bold\">" + xml_escape(options.title) +
          "</text>\n";
     ly += font_px * 1.3;
-    s += "<text id=\"legend-numbers\" x=\"0\" y=\"" + num(ly) + "\" data-cut-length-mm=\"" + cutbuf +
+    s += "<text id=\"legend-numbers\" x=\"0\" y=\"" + num(ly) + "\" data-cut-length-mm=\"" + cut_mm +
          "\" data-pierces=\"" + std::to_string(st.pierces) + "\" data-time-s=\"" + timebuf + "\" data-errors=\"" +
          std::to_string(errors) + "\" data-warnings=\"" + std::to_string(warnings) +
-         "\" data-notes=\"" + std::to_string(notes) + "\">cut " + cutbuf + " mm, " +
+         "\" data-notes=\"" + std::to_string(notes) + "\">cut " + cut_mm + " mm, " +
          std::to_string(st.pierces) + (st.pierces == 1 ? " pierce" : " pierces") + ", time " +
          format_duration(st.estimated_time_s) + ", " + std::to_string(errors) + (errors == 1 ? " error" : " errors") +
          ", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings") + "</text>\n";

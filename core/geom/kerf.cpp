@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "essi/geom.hpp"
+#include "essi/text.hpp"
 
 namespace essi {
 namespace {
@@ -155,11 +156,6 @@ Point entry_arc_centre(Point centre, Point end, Point torch) {
     return centre + s * u;
 }
 
-std::string mm(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3f", v);
-    return buf;
-}
 
 }  // namespace
 
@@ -448,7 +444,7 @@ bool KerfPath::open_may_end_at(Point x) {
 // piece whose start moved can).
 void KerfPath::check_open_end(const MotionRecord& m) {
     if (!open_ || !open_piece().start_moved || open_may_end_at(open_piece().rec.end)) return;
-    gouge(m, Msg::GeomKerfGouge, {mm(radius_)});
+    gouge(m, Msg::GeomKerfGouge, {mm_text(radius_)});
 }
 
 // A concave corner: both pieces end at their intersection (of the two, the one LinuxCNC takes: for a line and
@@ -477,7 +473,7 @@ bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
     }
     const Points xs = intersections(ca, cb);
     if (xs.n == 0) {
-        gouge(m, Msg::GeomKerfPiecesDoNotMeet, {mm(radius_)});
+        gouge(m, Msg::GeomKerfPiecesDoNotMeet, {mm_text(radius_)});
         return false;
     }
     Point x = xs.p[0];
@@ -498,7 +494,7 @@ bool KerfPath::trim_concave(Piece& next, const MotionRecord& m) {
         if (key(xs.p[1]) > key(x)) x = xs.p[1];
     }
     if (!open_may_end_at(x)) {
-        gouge(m, Msg::GeomKerfGouge, {mm(radius_)});
+        gouge(m, Msg::GeomKerfGouge, {mm_text(radius_)});
         return false;
     }
     before.end = x;

@@ -107,15 +107,10 @@ FunctionInfo iso_row(int code) {
     return unassigned(code);
 }
 
-// A number as printf's %.4g and %.3f write it (400 bytes hold any double in either).
+// A value as printf's %.4g writes it (400 bytes hold any double).
 std::string g4_text(double v) {
     char buf[400];
     std::snprintf(buf, sizeof buf, "%.4g", v);
-    return buf;
-}
-std::string f3_text(double v) {
-    char buf[400];
-    std::snprintf(buf, sizeof buf, "%.3f", v);
     return buf;
 }
 
@@ -183,7 +178,7 @@ std::string kerf_offset_text(KerfSide side, double offset_mm, Lang lang) {
     const Msg sentence = side == KerfSide::Left    ? Msg::FnKerfTorchLeft
                          : side == KerfSide::Right ? Msg::FnKerfTorchRight
                                                    : Msg::FnKerfTorchOff;
-    return format_message(sentence, lang, {f3_text(offset_mm), f3_text(offset_mm * 2)});
+    return format_message(sentence, lang, {mm_text(offset_mm), mm_text(offset_mm * 2)});
 }
 
 std::string describe_function(int code, bool has_value, double value, const Profile& profile, Lang lang) {

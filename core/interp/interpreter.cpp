@@ -35,12 +35,6 @@ MotionMeasure measure_arc(IPoint s, IPoint e, IPoint c, bool tape_ccw) {
 // interpreter works those out).
 bool has_measure(const Block& b) { return b.kind == BlockKind::Motion && b.word_count() == 5; }
 
-std::string mm_text(double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.3f mm", v);
-    return buf;
-}
-
 // The function table flattened to one byte of flags per code, once per dialect and process: half the blocks of a
 // tape are functions, and a short tape (a server request, a fuzz input) must not pay for searching the table.
 constexpr int kFunctionCodes = fn::kCodeCount;
@@ -697,14 +691,9 @@ void Machine::check_table_box(const Box& box, const Block& b, Msg what) {
     const TableLimits& t = *profile_.table;
     const bool inside = table_holds(t, box);
     if (!inside && inside_table_) {
-        const auto f3 = [](double v) {
-            char buf[48];
-            std::snprintf(buf, sizeof buf, "%.3f", v);
-            return std::string(buf);
-        };
         warn(DiagCode::E401_LeavesTable, b, Msg::InterpLeavesTable,
-             {what, f3(box.min_x), f3(box.max_x), f3(box.min_y), f3(box.max_y), f3(t.min_x_mm), f3(t.max_x_mm),
-              f3(t.min_y_mm), f3(t.max_y_mm)});
+             {what, mm_text(box.min_x), mm_text(box.max_x), mm_text(box.min_y), mm_text(box.max_y),
+              mm_text(t.min_x_mm), mm_text(t.max_x_mm), mm_text(t.min_y_mm), mm_text(t.max_y_mm)});
     }
     inside_table_ = inside;
 }

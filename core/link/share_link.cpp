@@ -92,14 +92,6 @@ std::optional<ShareView> parse_view(const std::string& v) {
     return view;
 }
 
-bool is_store_id(std::string_view s) {
-    if (s.size() != 64) return false;
-    for (char c : s)
-        if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'))) return false;
-    return true;
-}
-
-
 // A problem, in English and as a message.
 void add_problem(ShareLink& link, Message m) {
     link.problems.push_back(m.text(Lang::En));
@@ -141,8 +133,8 @@ void read_field(std::string_view key, const std::string& value, ShareLink& link)
         if (bytes && !bytes->empty() && bytes->size() <= kMaxShareProfileBytes) link.profile_json = std::move(*bytes);
         else problem(Msg::LinkBadProfileJson, kMaxShareProfileBytes);
     } else if (key == "i") {
-        if (value == "essi" || value == "eia") link.input = value;
-        else problem(Msg::LinkBadInput);
+        link.input = parse_input_format(value);
+        if (!link.input) problem(Msg::LinkBadInput);
     } else if (key == "b") {
         const auto n = parse_number(value);
         if (n && *n >= 0 && *n <= 1e15 && *n == std::floor(*n)) link.tape_bytes = static_cast<std::uint64_t>(*n);
@@ -151,6 +143,13 @@ void read_field(std::string_view key, const std::string& value, ShareLink& link)
 }
 
 }  // namespace
+
+bool is_store_id(std::string_view s) {
+    if (s.size() != kStoreIdDigits) return false;
+    for (char c : s)
+        if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'))) return false;
+    return true;
+}
 
 ShareLink parse_share_fragment(std::string_view fragment) {
     ShareLink link;
@@ -180,10 +179,11 @@ std::string share_view_query(const ShareView& view, std::uint32_t line) {
     return buf;
 }
 
-std::string share_reading_query(std::string_view profile, std::string_view profile_json, std::string_view input) {
+std::string share_reading_query(std::string_view profile, std::string_view profile_json,
+                                std::optional<InputFormat> input) {
     std::string q = "p=" + form_encode(profile);  // ("iso6582+custom": the '+' would be read as a space)
     if (!profile_json.empty()) q += "&pj=" + base64url_encode(profile_json);
-    if (!input.empty()) q += "&i=" + form_encode(input);
+    if (input) q += "&i=" + form_encode(input_format_name(*input));
     return q;
 }
 

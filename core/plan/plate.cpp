@@ -111,7 +111,7 @@ private:
             const double w = c.box.max_x - c.box.min_x, h = c.box.max_y - c.box.min_y;
             if (c.box.empty || (w <= tw && h <= th)) continue;
             Diagnostic d = make_diagnostic(Severity::Warning, DiagCode::W611_CutLargerThanTable, c.first_line, 0,
-                                           Msg::PlanLargerThanTable, {number_text(w), number_text(h), number_text(tw), number_text(th)});
+                                           Msg::PlanLargerThanTable, {mm_text(w), mm_text(h), mm_text(tw), mm_text(th)});
             d.contour_first = c.first_line;
             d.contour_last = c.last_line;
             emit(std::move(d));
@@ -125,7 +125,7 @@ private:
                 continue;
             const Point e = last_piece(c).end;
             Diagnostic d = about(DiagCode::W601_ContourGap, c, {(e.x + c.gap_from.x) / 2, (e.y + c.gap_from.y) / 2},
-                                 Msg::PlanGap, {number_text(c.gap_mm), c.gap_line, number_text(st_.closure_mm)});
+                                 Msg::PlanGap, {mm_text(c.gap_mm), c.gap_line, mm_text(st_.closure_mm)});
             d.line = last_piece(c).line;
             d.related.push_back({c.gap_line, c.gap_line, Msg::RelatedContourStart, {}});
             emit(std::move(d));
@@ -457,18 +457,18 @@ private:
         } else if (ra == ContourRole::LoneHole || rb == ContourRole::LoneHole) {
             const bool b_is_hole = rb == ContourRole::LoneHole;
             diag = about(DiagCode::E605_PartsCollide, b, where, b_is_hole ? Msg::PlanPlateHoleOverlapsPart : Msg::PlanPartOverlapsPlateHole,
-                         {a.first_line, a.last_line, number_text(width)});
+                         {a.first_line, a.last_line, mm_text(width)});
             diag.related.push_back(related(a, b_is_hole ? Msg::RelatedOtherPart : Msg::RelatedPlateHole));
         } else if (width <= kPlanTouchToleranceMm) {  // (no compensation on either: no kerf width to name)
             diag = about(DiagCode::E605_PartsCollide, b, where, Msg::PlanPartsTouch, {a.first_line, a.last_line});
             diag.related.push_back(related(a, Msg::RelatedOtherPart));
         } else if (d == 0) {
             diag = about(DiagCode::E605_PartsCollide, b, where, Msg::PlanPartsOverlap,
-                         {a.first_line, a.last_line, number_text(width)});
+                         {a.first_line, a.last_line, mm_text(width)});
             diag.related.push_back(related(a, Msg::RelatedOtherPart));
         } else {
             diag = about(DiagCode::E605_PartsCollide, b, where, Msg::PlanPartsTooClose,
-                         {number_text(d), a.first_line, a.last_line, number_text(width)});
+                         {mm_text(d), a.first_line, a.last_line, mm_text(width)});
             diag.related.push_back(related(a, Msg::RelatedOtherPart));
         }
         if (d == 0) diag.overlap = {polygon(i), polygon(j)};

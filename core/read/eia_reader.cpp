@@ -16,11 +16,11 @@
 #include "essi/function_codes.hpp"
 #include "essi/read.hpp"
 #include "essi/text.hpp"
+#include "reader_driver.hpp"
 
 namespace essi {
 namespace {
 
-constexpr std::size_t kMaxReadErrors = 100;    // then E115: reading stops
 constexpr int kMaxNumberDigits = 12;           // digits of a number (before and after the point together)
 constexpr long long kMaxCodeNumber = 999;      // G and M numbers have at most 3 digits
 constexpr std::size_t kExcerptChars = 16;      // what a message quotes of a word
@@ -93,12 +93,6 @@ struct LineResult {
     std::vector<LineDiagnostic> diagnostics;
 };
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-    return s;
-}
-
 std::string word_text(char letter, int number) {
     char buf[16];
     std::snprintf(buf, sizeof buf, "%c%02d", letter, number);
@@ -107,16 +101,17 @@ std::string word_text(char letter, int number) {
 
 }  // namespace
 
-class EiaReader final : public BlockReader {
+class EiaReader final : public detail::ReaderDriver<EiaReader> {
 public:
-    EiaReader(std::string_view bytes, const Profile& profile) : src_(bytes), profile_(profile) { make_tables(); }
+    EiaReader(std::string_view bytes, const Profile& profile) : ReaderDriver(bytes, profile, Msg::EiaTooManyErrors) {
+        make_tables();
+    }
 
-    bool read_chunk(Tape& chunk, std::size_t max_blocks) override;
     void reserve_whole(Tape& tape) const override;
-    [[nodiscard]] std::unique_ptr<BlockReader> clone() const override { return std::make_unique<EiaReader>(*this); }
-    [[nodiscard]] std::size_t state_bytes() const override { return sizeof(EiaReader); }
 
 private:
+    friend class detail::ReaderDriver<EiaReader>;
+
     // The machine state the reader keeps (see the file's comment), changed only by committed lines.
     struct State {
         ArcMode arc = ArcMode::None;
@@ -132,8 +127,12 @@ private:
         [[nodiscard]] const Word* first() const;
     };
 
+    // What the driver asks of a front end (reader_driver.hpp).
+    bool read_line(std::uint32_t begin, std::uint32_t end, std::size_t max_blocks);
+    void end_tape(Tape& chunk);
+
     void make_tables();
-    void read_line(std::uint32_t begin, std::uint32_t end, LineResult& out, State& st);
+    void read_block(std::uint32_t begin, std::uint32_t end, LineResult& out, State& st);
     bool parse_words(std::uint32_t begin, std::uint32_t end, std::vector<Word>& words, LineResult& out) const;
     bool check_order(const std::vector<Word>& words, LineResult& out) const;
     void translate(const std::vector<Word>& words, LineResult& out, State& st) const;
@@ -151,34 +150,14 @@ private:
     void function(std::uint32_t offset, int code, LineResult& out) const;
     void function_value(std::uint32_t offset, int code, double value, LineResult& out) const;
     void commit(const LineResult& r);
-    void push_block(const LineResult::Out& o);
-    void report(Severity sev, DiagCode code, std::uint32_t offset, Msg msg, MessageArgs args = {});
-    [[nodiscard]] bool is_end_function(int code) const {
-        return std::any_of(profile_.end_codes.begin(), profile_.end_codes.end(),
-                           [&](const EndCode& e) { return e.function == code; });
-    }
-    [[nodiscard]] bool is_end_mark(char mark) const {
-        return std::any_of(profile_.end_codes.begin(), profile_.end_codes.end(),
-                           [&](const EndCode& e) { return e.function < 0 && e.mark == mark; });
-    }
-    [[nodiscard]] std::uint32_t column(std::uint32_t offset) const { return offset - line_begin_ + 1; }
+    void put_block(const LineResult::Out& o);
     // The digits and points of a number written from `begin`, before `end` (the line's end): what a message quotes.
     [[nodiscard]] std::string_view number_text_at(std::uint32_t begin, std::uint32_t end) const {
         std::uint32_t p = begin;
         while (p < end && ((src_[p] >= '0' && src_[p] <= '9') || src_[p] == '.')) ++p;
         return src_.substr(begin, p - begin);
     }
-    // The first CR or LF at or after `pos` (essi/lines.hpp's rule), or `size`.
-    [[nodiscard]] std::uint32_t line_end(std::uint32_t pos, std::uint32_t size) const {
-        const char* p = src_.data() + pos;
-        const auto* lf = static_cast<const char*>(std::memchr(p, '\n', size - pos));
-        const char* stop = lf ? lf : src_.data() + size;
-        const auto* cr = static_cast<const char*>(std::memchr(p, '\r', static_cast<std::size_t>(stop - p)));
-        return static_cast<std::uint32_t>((cr ? cr : stop) - src_.data());
-    }
 
-    std::string_view src_;
-    const Profile& profile_;
     // The dialect's words by number (make_tables): the function of each G and M, the role of each G.
     std::array<std::int16_t, kMaxCodeNumber + 1> g_function_{}, m_function_{}, g_value_{}, m_value_{};
     std::array<GRole, kMaxCodeNumber + 1> g_role_{};
@@ -186,32 +165,11 @@ private:
     std::array<std::int8_t, 256> letter_rank_{};  // a letter's place in eia.letters, -1 when not allowed
     std::vector<Word> words_;           // the line's words (kept: no allocation a line)
     LineResult line_out_;               // the line's blocks and diagnostics (likewise)
-    Tape* chunk_ = nullptr;
     State state_;
-    std::uint32_t pos_ = 0;
-    std::uint32_t line_ = 1;
-    std::uint32_t line_begin_ = 0;
-    std::uint32_t last_line_ = 0;
-    std::uint32_t end_line_ = 0;
-    std::size_t total_blocks_ = 0, chunk_blocks_ = 0, chunk_comments_ = 0;
-    std::size_t errors_ = 0;
-    bool started_ = false, finished_ = false, stopped_ = false, ended_ = false, after_end_seen_ = false;
-    bool program_started_ = false;
-    std::uint32_t percent_line_ = 0, percent_column_ = 0;  // a % in the program, reported if a block follows
     // Coordinates rounded to the unit (W125, one warning for the tape at the first).
     std::size_t rounded_ = 0;
     std::uint32_t rounded_line_ = 0, rounded_column_ = 0;
 };
-
-void EiaReader::report(Severity sev, DiagCode code, std::uint32_t offset, Msg msg, MessageArgs args) {
-    if (stopped_) return;
-    diagnostics_of(*chunk_).push_back(make_diagnostic(sev, code, line_, column(offset), msg, std::move(args)));
-    if (sev == Severity::Error && ++errors_ >= kMaxReadErrors) {
-        diagnostics_of(*chunk_).push_back(make_diagnostic(Severity::Error, DiagCode::E115_TooManyErrors, line_,
-                                                          column(offset), Msg::EiaTooManyErrors, {kMaxReadErrors}));
-        stopped_ = true;
-    }
-}
 
 void EiaReader::reserve_whole(Tape& tape) const {
     const std::size_t lines = static_cast<std::size_t>(std::count(src_.begin(), src_.end(), '\n')) + 1;
@@ -244,11 +202,9 @@ bool EiaReader::parse_words(std::uint32_t begin, std::uint32_t end, std::vector<
         if (letter_rank_[static_cast<unsigned char>(letter)] < 0) {
             std::string expected;
             for (char l : profile_.eia.letters) expected += (expected.empty() ? "" : " ") + std::string(1, l);
-            if (c >= 0x80 || c < 0x20) {
-                char hex[4];
-                std::snprintf(hex, sizeof hex, "%02X", c);
-                return error(DiagCode::E119_EiaUnknownLetter, p, Msg::EiaUnknownByte, {hex, expected, profile_.name});
-            }
+            if (c >= 0x80 || c < 0x20)
+                return error(DiagCode::E119_EiaUnknownLetter, p, Msg::EiaUnknownByte,
+                             {detail::hex_byte(c), expected, profile_.name});
             return error(DiagCode::E119_EiaUnknownLetter, p, Msg::EiaUnknownChar,
                          {src_.substr(p, 1), expected, profile_.name});
         }
@@ -546,27 +502,16 @@ void EiaReader::translate(const std::vector<Word>& words, LineResult& out, State
         if (after_code[k] >= 0) function(after_offset[k], after_code[k], out);
 }
 
-void EiaReader::read_line(std::uint32_t begin, std::uint32_t end, LineResult& out, State& st) {
+void EiaReader::read_block(std::uint32_t begin, std::uint32_t end, LineResult& out, State& st) {
     words_.clear();
     if (!parse_words(begin, end, words_, out) || words_.empty()) return;
     if (!check_order(words_, out)) return;
     translate(words_, out, st);
 }
 
-void EiaReader::push_block(const LineResult::Out& o) {
-    Tape& t = *chunk_;
-    if (percent_line_ != 0 && o.kind != BlockKind::Comment) {
-        diagnostics_of(t).push_back(make_diagnostic(Severity::Warning, DiagCode::W112_MisplacedPercent, percent_line_,
-                                                    percent_column_, Msg::ReadMisplacedPercent));
-        percent_line_ = 0;
-    }
-    if (o.kind == BlockKind::Comment) ++chunk_comments_;
-    if (chunk_blocks_ % Tape::kWordIndexStride == 0) word_index_of(t).push_back(static_cast<std::uint32_t>(words_of(t).size()));
-    blocks_of(t).push_back(Block{o.offset, line_, o.code, o.kind, o.packed});
-    for (int k = 0; k < o.words; ++k) words_of(t).push_back(o.w[k]);
-    ++chunk_blocks_;
-    last_line_ = line_;
-    if (o.kind != BlockKind::Percent && o.kind != BlockKind::Comment) program_started_ = true;
+void EiaReader::put_block(const LineResult::Out& o) {
+    words_of(chunk()).append(o.w, static_cast<std::size_t>(o.words));
+    push_block(o.offset, o.kind, o.code, o.packed);
 }
 
 void EiaReader::commit(const LineResult& r) {
@@ -582,88 +527,59 @@ void EiaReader::commit(const LineResult& r) {
     }
     for (const LineResult::Out& o : r.blocks) {
         if (ended_) break;
-        push_block(o);
-        if (o.kind == BlockKind::Function && is_end_function(o.code)) {
-            ended_ = true;
-            end_line_ = line_;
-            mark_program_end(*chunk_);
-        }
+        put_block(o);
+        if (o.kind == BlockKind::Function && is_end_function(o.code)) mark_program_end();
     }
 }
 
-bool EiaReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
-    if (finished_) return false;
-    chunk_ = &chunk;
-    chunk_blocks_ = 0;
-    chunk_comments_ = 0;
-    const bool ended_before = ended_;
-    if (begin_chunk(chunk, total_blocks_, !started_, src_)) stopped_ = true;
-    started_ = true;
-    const auto size = static_cast<std::uint32_t>(std::min<std::size_t>(src_.size(), std::numeric_limits<std::uint32_t>::max()));
-    std::uint32_t pos = pos_;
+// A line: its blocks are worked out first (read_block, on a copy of the machine state), then committed with its
+// diagnostics unless they do not fit in the chunk.
+bool EiaReader::read_line(std::uint32_t begin, std::uint32_t end, std::size_t max_blocks) {
+    const std::string_view text = detail::trim_blanks(src_.substr(begin, end - begin));
+    const auto text_at = static_cast<std::uint32_t>(text.empty() ? begin : text.data() - src_.data());
     LineResult& r = line_out_;
-    while (pos < size && !stopped_ && !after_end_seen_) {
-        const std::uint32_t end = line_end(pos, size);
-        line_begin_ = pos;
-        const std::string_view text = trim(src_.substr(pos, end - pos));
-        const auto text_at = static_cast<std::uint32_t>(text.empty() ? pos : text.data() - src_.data());
-        r.blocks.clear();
-        r.diagnostics.clear();
-        State st = state_;
-        if (text.empty()) {
-        } else if (text == "%") {
-            r.blocks.push_back({text_at, BlockKind::Percent, Block::kNoCode, 0, 0, {}});
-        } else if (ended_) {
-            report(Severity::Warning, DiagCode::W110_ContentAfterEnd, text_at, Msg::ReadContentAfterEnd, {end_line_});
-            after_end_seen_ = true;
-            break;
-        } else if (text.size() == 1 && is_end_mark(text[0])) {
-            r.blocks.push_back({text_at, BlockKind::EndMark, Block::kNoCode, 0, 0, {}});
-        } else if (text.front() == '(' && text.back() == ')' && text.find(')') == text.size() - 1) {
-            r.blocks.push_back({text_at, BlockKind::Comment, Block::kNoCode, 0, 0, {}});
-        } else {
-            read_line(pos, end, r, st);
-        }
-        // A line's blocks go into one chunk: stop before a line that does not fit (it is read again next time).
-        if (chunk_blocks_ > 0 && chunk_blocks_ + r.blocks.size() > max_blocks) break;
-        if (r.blocks.size() == 1 && r.blocks[0].kind == BlockKind::Percent) {
-            push_block(r.blocks[0]);
-            if (program_started_ && !ended_) {
-                percent_line_ = line_;
-                percent_column_ = column(text_at);
-            }
-        } else {
-            if (!r.blocks.empty() && r.blocks[0].kind == BlockKind::EndMark) {
-                push_block(r.blocks[0]);
-                ended_ = true;
-                end_line_ = line_;
-                mark_program_end(chunk);
-            } else {
-                commit(r);
-            }
-            state_ = st;
-        }
-        if (end >= size) {
-            pos = size;
-            break;
-        }
-        pos = past_line_end(reinterpret_cast<const unsigned char*>(src_.data()), end, size);
-        ++line_;
+    r.blocks.clear();
+    r.diagnostics.clear();
+    State st = state_;
+    if (text.empty()) {
+    } else if (text == "%") {
+        r.blocks.push_back({text_at, BlockKind::Percent, Block::kNoCode, 0, 0, {}});
+    } else if (ended_) {
+        report(Severity::Warning, DiagCode::W110_ContentAfterEnd, text_at, Msg::ReadContentAfterEnd, {end_line_});
+        after_end_seen_ = true;
+        return false;
+    } else if (text.size() == 1 && is_end_mark(text[0])) {
+        r.blocks.push_back({text_at, BlockKind::EndMark, Block::kNoCode, 0, 0, {}});
+    } else if (text.front() == '(' && text.back() == ')' && text.find(')') == text.size() - 1) {
+        r.blocks.push_back({text_at, BlockKind::Comment, Block::kNoCode, 0, 0, {}});
+    } else {
+        read_block(begin, end, r, st);
     }
-    pos_ = pos;
-    total_blocks_ += blocks_of(chunk).size();
-    finish_chunk(chunk, ended_before, ended_, chunk_comments_);
-    const bool input_done = pos >= size || stopped_ || after_end_seen_;
-    if (!input_done) return true;
-    finished_ = true;
-    if (stopped_) return true;
-    if (rounded_ > 0) {
-        diagnostics_of(chunk).push_back(make_diagnostic(Severity::Warning, DiagCode::W125_EiaRounded, rounded_line_,
-                                                        rounded_column_, Msg::EiaRounded,
-                                                        {rounded_, excerpt(std::to_string(profile_.unit_mm), 8), profile_.name}));
+    // A line's blocks go into one chunk: stop before a line that does not fit (it is read again next time).
+    if (chunk_blocks_ > 0 && chunk_blocks_ + r.blocks.size() > max_blocks) return false;
+    if (r.blocks.size() == 1 && r.blocks[0].kind == BlockKind::Percent) {
+        put_block(r.blocks[0]);
+        if (program_started_ && !ended_) {
+            percent_line_ = line_;
+            percent_column_ = column(text_at);
+        }
+        return true;
     }
-    report_tape_end(chunk, profile_, total_blocks_, ended_, last_line_);
+    if (!r.blocks.empty() && r.blocks[0].kind == BlockKind::EndMark) {
+        put_block(r.blocks[0]);
+        mark_program_end();
+    } else {
+        commit(r);
+    }
+    state_ = st;
     return true;
+}
+
+void EiaReader::end_tape(Tape& chunk) {
+    if (rounded_ == 0) return;
+    diagnostics_of(chunk).push_back(make_diagnostic(Severity::Warning, DiagCode::W125_EiaRounded, rounded_line_,
+                                                    rounded_column_, Msg::EiaRounded,
+                                                    {rounded_, excerpt(std::to_string(profile_.unit_mm), 8), profile_.name}));
 }
 
 std::unique_ptr<BlockReader> make_eia_reader(std::string_view bytes, const Profile& profile) {

@@ -5,18 +5,15 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <cstdio>
-#include <limits>
-
-#include "essi/read.hpp"
 
 #include "essi/function_codes.hpp"
+#include "essi/read.hpp"
 #include "essi/text.hpp"
+#include "reader_driver.hpp"
 
 namespace essi {
 namespace {
 
-constexpr std::size_t kMaxReadErrors = 100;    // then E115: reading stops (a binary file, most likely)
 constexpr int kMaxWordDigits = 9;              // significant digits of a dimension word or value
 constexpr int kMaxFunctionDigits = 3;          // ISO 6582 3.4.1
 // Words of a line read by the fast path; a line with more goes the general way (it is an error anyway).
@@ -34,8 +31,8 @@ constexpr std::array<std::uint8_t, 256> make_classes() {
     t['-'] = kMinus;
     t[' '] = kSpace;
     t['\t'] = kSpace;
-    t['\r'] = kLineEnd;
-    t['\n'] = kLineEnd;
+    for (int c = 0; c < 256; ++c)
+        if (is_line_end(static_cast<unsigned char>(c))) t[c] = kLineEnd;
     t['%'] = kPercent;
     t['/'] = kSlash;
     t['='] = kEquals;
@@ -164,8 +161,8 @@ template <bool bounded>
         ++n;
         p = after;
     }
-    // Not a plain line? (Two compares as written: is_line_end's form costs 2 % of the reader here.)
-    if (p == first || (!(bounded && p == stop) && *p != '\n' && *p != '\r')) return false;
+    // Not a plain line?
+    if (p == first || (!(bounded && p == stop) && is_not_line_end(*p))) return false;
     out.lead_digits = lead_digits;
     out.lead = lead;
     out.words = n;
@@ -174,40 +171,21 @@ template <bool bounded>
     return true;
 }
 
-// A byte as two hex digits ("C3"), as the messages quote it.
-std::string hex_byte(unsigned char c) {
-    char buf[4];
-    std::snprintf(buf, sizeof buf, "%02X", c);
-    return buf;
-}
-
 // The digits a message quotes of a number (essi::excerpt).
 constexpr std::size_t kExcerptDigits = 12;
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-    return s;
-}
-
 }  // namespace
 
-class EssiReader final : public BlockReader {
+class EssiReader final : public detail::ReaderDriver<EssiReader> {
 public:
-    EssiReader(std::string_view bytes, const Profile& profile) : src_(bytes), profile_(profile) {
-        for (const EndCode& e : profile.end_codes)
-            if (e.function >= 0 && e.function < kFunctionCodes) end_function_[e.function] = true;
-    }
+    EssiReader(std::string_view bytes, const Profile& profile) : ReaderDriver(bytes, profile, Msg::ReadTooManyErrors) {}
 
-    // Reads up to `max_blocks` more blocks into `chunk` (emptied first). Returns false once the whole
-    // tape has been read and the last diagnostics given.
-    bool read_chunk(Tape& chunk, std::size_t max_blocks) override;
     // Reserves the exact room the whole tape needs in `tape` (one cheap counting pass).
     void reserve_whole(Tape& tape) const override;
-    [[nodiscard]] std::unique_ptr<BlockReader> clone() const override { return std::make_unique<EssiReader>(*this); }
-    [[nodiscard]] std::size_t state_bytes() const override { return sizeof(EssiReader); }
 
 private:
+    friend class detail::ReaderDriver<EssiReader>;
+
     // One line's parse, before classification.
     struct LineParse {
         std::size_t lead_digits = 0;  // digits of the leading unsigned number as written (a line may hold 4 G)
@@ -219,87 +197,23 @@ private:
         int mark = 0;                 // '%', '/' or '=' when the block is that mark
     };
 
-    void read_line(std::uint32_t begin, std::uint32_t end);
+    // What the driver asks of a front end (reader_driver.hpp).
+    void begin_tape();
+    std::uint32_t read_run(std::uint32_t pos, std::uint32_t size, std::size_t max_blocks);
+    bool read_line(std::uint32_t begin, std::uint32_t end, std::size_t max_blocks);
+    void end_tape(Tape& chunk);
+
     std::uint32_t read_plain_lines(std::uint32_t pos, std::uint32_t size, std::size_t max_blocks);
+    void read_block(std::uint32_t begin, std::uint32_t end);
     void classify(std::uint32_t first, const LineParse& lp, std::size_t words_before);
     void read_ignored_line(std::uint32_t begin, std::uint32_t end);
     void after_end_line(std::uint32_t begin, std::uint32_t end);
     bool parse_words(std::uint32_t begin, std::uint32_t end, LineParse& lp);
-    void push_block(std::uint32_t offset, BlockKind kind, std::uint16_t code, std::uint8_t packed);
-    // The block just pushed ends the program.
-    void mark_program_end() {
-        ended_ = true;
-        end_line_ = line_;
-        BlockReader::mark_program_end(tape());
-    }
-    void report(Severity sev, DiagCode code, std::uint32_t offset, Msg msg, MessageArgs args = {});
-    [[nodiscard]] bool is_end_function(long long code) const;
-    [[nodiscard]] bool is_end_mark(char mark) const;
-    [[nodiscard]] std::uint32_t column(std::uint32_t offset) const { return offset - line_begin_ + 1; }
 
-    static constexpr int kFunctionCodes = fn::kCodeCount;
-    std::array<bool, kFunctionCodes> end_function_{};  // the profile's end codes, by function code
-
-    std::string_view src_;
-    const Profile& profile_;
-    Tape* chunk_ = nullptr;             // the chunk being filled
-    Tape& tape() { return *chunk_; }
-    std::uint32_t pos_ = 0;             // next byte to read
     std::uint32_t skip_ = 0;            // a UTF-8 byte order mark: reported, then the line is read without it
-    bool started_ = false;
-    std::uint32_t end_line_ = 0;        // line of the block that ended the program
-    bool finished_ = false;             // the closing diagnostics have been given
-    std::size_t total_blocks_ = 0;      // blocks of all earlier chunks
-    std::size_t chunk_blocks_ = 0;      // blocks in the chunk being filled
-    std::size_t chunk_comments_ = 0;    // comment blocks among them
-    std::uint32_t line_ = 1;
-    std::uint32_t line_begin_ = 0;
-    std::size_t errors_ = 0;
-    bool stopped_ = false;          // too many errors: nothing more is read
-    bool after_end_seen_ = false;   // content after the end was reported: nothing more is read
-    bool in_ignore_ = false;
+    bool in_ignore_ = false;            // inside a 3 ... 4 section
     std::uint32_t ignore_line_ = 0, ignore_column_ = 0;
-    bool ended_ = false;
-    bool program_started_ = false;  // a block other than % has been read
-    // A % after the program has started is a rewind-stop mark when nothing follows it; it is reported
-    // (W112) only when another block comes after it.
-    std::uint32_t percent_line_ = 0, percent_column_ = 0;
-    std::uint32_t last_line_ = 0;
 };
-
-void EssiReader::report(Severity sev, DiagCode code, std::uint32_t offset, Msg msg, MessageArgs args) {
-    if (stopped_) return;
-    diagnostics_of(tape()).push_back(make_diagnostic(sev, code, line_, column(offset), msg, std::move(args)));
-    if (sev == Severity::Error && ++errors_ >= kMaxReadErrors) {
-        diagnostics_of(tape()).push_back(make_diagnostic(Severity::Error, DiagCode::E115_TooManyErrors, line_,
-                                                         column(offset), Msg::ReadTooManyErrors, {kMaxReadErrors}));
-        stopped_ = true;
-    }
-}
-
-bool EssiReader::is_end_function(long long code) const {
-    return code >= 0 && code < kFunctionCodes && end_function_[static_cast<std::size_t>(code)];
-}
-
-bool EssiReader::is_end_mark(char mark) const {
-    return std::any_of(profile_.end_codes.begin(), profile_.end_codes.end(),
-                       [&](const EndCode& e) { return e.function < 0 && e.mark == mark; });
-}
-
-void EssiReader::push_block(std::uint32_t offset, BlockKind kind, std::uint16_t code, std::uint8_t packed) {
-    if (percent_line_ != 0 && kind != BlockKind::Comment) [[unlikely]] {
-        diagnostics_of(tape()).push_back(make_diagnostic(Severity::Warning, DiagCode::W112_MisplacedPercent, percent_line_,
-                                                         percent_column_, Msg::ReadMisplacedPercent));
-        percent_line_ = 0;
-    }
-    Tape& t = *chunk_;
-    if (kind == BlockKind::Comment) ++chunk_comments_;
-    if (chunk_blocks_ % Tape::kWordIndexStride == 0)
-        word_index_of(t).push_back(static_cast<std::uint32_t>(words_of(t).size()) - (packed & Block::kWordCountMask));
-    blocks_of(t).push_back(Block{offset, line_, code, kind, packed});
-    ++chunk_blocks_;
-    last_line_ = line_;
-}
 
 void EssiReader::reserve_whole(Tape& tape) const {
     // A block per line, a word per sign (but at most kMaxBlockWords a block are kept), and the fast path's room
@@ -311,60 +225,35 @@ void EssiReader::reserve_whole(Tape& tape) const {
     word_index_of(tape).reserve(blocks_of(tape).capacity() / Tape::kWordIndexStride + 1);
 }
 
-bool EssiReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
-    if (finished_) return false;
-    chunk_ = &chunk;
-    chunk_blocks_ = 0;
-    chunk_comments_ = 0;
-    const bool ended_before = ended_;
-    if (begin_chunk(chunk, total_blocks_, !started_, src_)) stopped_ = true;
-    if (!started_) {
-        started_ = true;
-        if (!stopped_ && src_.substr(0, 3) == "\xEF\xBB\xBF") {
-            report(Severity::Error, DiagCode::E102_NonAsciiByte, 0, Msg::ReadByteOrderMark);
-            skip_ = 3;
-        }
-    }
+void EssiReader::begin_tape() {
+    if (src_.substr(0, 3) != "\xEF\xBB\xBF") return;
+    report(Severity::Error, DiagCode::E102_NonAsciiByte, 0, Msg::ReadByteOrderMark);
+    skip_ = 3;
+}
 
-    const char* data = src_.data();
-    const auto size = static_cast<std::uint32_t>(std::min<std::size_t>(src_.size(), std::numeric_limits<std::uint32_t>::max()));
-    std::uint32_t pos = pos_;
-    while (pos < size && !stopped_ && !after_end_seen_ && chunk_blocks_ < max_blocks) {
-        // The common case first: a run of blocks of digits and signs, read in one pass.
-        if (skip_ == 0 && !ended_ && !in_ignore_ && percent_line_ == 0) {
-            pos = read_plain_lines(pos, size, max_blocks);
-            if (pos >= size || stopped_ || chunk_blocks_ >= max_blocks) break;
-        }
-        // The line at `pos` needs the general path.
-        std::uint32_t end = pos;
-        line_begin_ = pos;
-        while (end < size && !is_line_end(data[end])) ++end;
-        const std::uint32_t from = pos + skip_;
-        skip_ = 0;
-        if (ended_) after_end_line(from, end);
-        else if (in_ignore_) read_ignored_line(from, end);
-        else read_line(from, end);
-        if (end >= size) {
-            pos = size;
-            break;
-        }
-        pos = past_line_end(reinterpret_cast<const unsigned char*>(data), end, size);
-        ++line_;
-    }
-    pos_ = pos;
-    total_blocks_ += blocks_of(chunk).size();
-    finish_chunk(chunk, ended_before, ended_, chunk_comments_);
+// The common case first: a run of lines of digits and signs, read in one pass, unless the line at `pos` needs the
+// general path's state (a byte order mark to skip, the end, an ignore section, a % to report).
+std::uint32_t EssiReader::read_run(std::uint32_t pos, std::uint32_t size, std::size_t max_blocks) {
+    if (skip_ != 0 || ended_ || in_ignore_ || percent_line_ != 0) return pos;
+    return read_plain_lines(pos, size, max_blocks);
+}
 
-    const bool input_done = pos >= size || stopped_ || after_end_seen_;
-    if (!input_done) return true;
-    finished_ = true;
-    if (stopped_) return true;
-    if (in_ignore_) {
-        diagnostics_of(chunk).push_back(make_diagnostic(Severity::Error, DiagCode::E107_UnclosedIgnore, ignore_line_,
-                                                        ignore_column_, Msg::ReadUnclosedIgnore, {ignore_line_}));
-    }
-    report_tape_end(chunk, profile_, total_blocks_, ended_, last_line_);
+// A line the general way: after the end, in an ignore section, or a block. A line gives at most one block: none
+// is read into a full chunk.
+bool EssiReader::read_line(std::uint32_t begin, std::uint32_t end, std::size_t max_blocks) {
+    if (chunk_blocks_ >= max_blocks) return false;
+    const std::uint32_t from = begin + skip_;
+    skip_ = 0;
+    if (ended_) after_end_line(from, end);
+    else if (in_ignore_) read_ignored_line(from, end);
+    else read_block(from, end);
     return true;
+}
+
+void EssiReader::end_tape(Tape& chunk) {
+    if (!in_ignore_) return;
+    diagnostics_of(chunk).push_back(make_diagnostic(Severity::Error, DiagCode::E107_UnclosedIgnore, ignore_line_,
+                                                    ignore_column_, Msg::ReadUnclosedIgnore, {ignore_line_}));
 }
 
 // Reads lines made only of digits and signs (almost every line of a real tape) from `pos` on, one pass
@@ -375,7 +264,7 @@ bool EssiReader::read_chunk(Tape& chunk, std::size_t max_blocks) {
 std::uint32_t EssiReader::read_plain_lines(std::uint32_t pos, std::uint32_t size, std::size_t max_blocks) {
     const auto* const base = reinterpret_cast<const unsigned char*>(src_.data());
     const unsigned char* const stop = base + size;
-    Tape& t = *chunk_;
+    Tape& t = chunk();
     std::uint32_t line = line_;
     std::size_t blocks = chunk_blocks_;
     const std::size_t blocks_before = blocks;
@@ -501,7 +390,7 @@ std::uint32_t EssiReader::read_plain_lines(std::uint32_t pos, std::uint32_t size
 
 void EssiReader::read_ignored_line(std::uint32_t begin, std::uint32_t end) {
     const std::string_view text = src_.substr(begin, end - begin);
-    const std::string_view t = trim(text);
+    const std::string_view t = detail::trim_blanks(text);
     if (t == "4") {
         in_ignore_ = false;
         push_block(begin + static_cast<std::uint32_t>(text.find('4')), BlockKind::Function, fn::kIgnoreOff, 0);
@@ -511,7 +400,7 @@ void EssiReader::read_ignored_line(std::uint32_t begin, std::uint32_t end) {
 }
 
 void EssiReader::after_end_line(std::uint32_t begin, std::uint32_t end) {
-    const std::string_view t = trim(src_.substr(begin, end - begin));
+    const std::string_view t = detail::trim_blanks(src_.substr(begin, end - begin));
     if (t.empty()) return;
     if (t == "%") {  // a rewind-stop mark after the program is accepted (kept, but not part of the program)
         push_block(begin + static_cast<std::uint32_t>(src_.substr(begin, end - begin).find('%')), BlockKind::Percent,
@@ -548,7 +437,7 @@ bool EssiReader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& 
         if (lp.words == 1 && word_negative) lp.value_negative = true;
         if (lp.words == 5 && word_negative) lp.sign_flags |= Block::kTcNegative;
         if (lp.words == 6 && word_negative) lp.sign_flags |= Block::kTpNegative;
-        words_of(tape()).push_back(static_cast<std::int32_t>(word_negative ? -word_value : word_value));
+        words_of(chunk()).push_back(static_cast<std::int32_t>(word_negative ? -word_value : word_value));
         return true;
     };
     for (std::uint32_t i = begin; i < end; ++i) {
@@ -595,7 +484,7 @@ bool EssiReader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& 
                 break;
             case kHigh:
                 report(Severity::Error, DiagCode::E102_NonAsciiByte, i, Msg::ReadNonAscii,
-                       {hex_byte(c), c == 0xEF && i + 2 < end && data[i + 1] == 0xBB && data[i + 2] == 0xBF
+                       {detail::hex_byte(c), c == 0xEF && i + 2 < end && data[i + 1] == 0xBB && data[i + 2] == 0xBF
                                          ? MessageArgs::Arg(Msg::ReadBomHint)
                                          : MessageArgs::Arg("")});
                 return false;
@@ -619,9 +508,9 @@ invalid:
                                                                             : MessageArgs::Arg("");
             if (c >= 0x21 && c < 0x7F)
                 report(Severity::Error, DiagCode::E101_InvalidCharacter, i, Msg::ReadUnexpectedChar,
-                       {std::string_view(reinterpret_cast<const char*>(data + i), 1), hex_byte(c), hint});
+                       {std::string_view(reinterpret_cast<const char*>(data + i), 1), detail::hex_byte(c), hint});
             else
-                report(Severity::Error, DiagCode::E101_InvalidCharacter, i, Msg::ReadUnexpectedByte, {hex_byte(c), hint});
+                report(Severity::Error, DiagCode::E101_InvalidCharacter, i, Msg::ReadUnexpectedByte, {detail::hex_byte(c), hint});
             return false;
         }
     }
@@ -639,14 +528,13 @@ misplaced_mark:
     return false;
 }
 
-void EssiReader::read_line(std::uint32_t begin, std::uint32_t end) {
+void EssiReader::read_block(std::uint32_t begin, std::uint32_t end) {
     if (begin == end) return;  // empty block
-    const std::size_t words_before = words_of(tape()).size();
+    const std::size_t words_before = words_of(chunk()).size();
     LineParse lp;
     if (!parse_words(begin, end, lp)) {
-        words_of(tape()).truncate(words_before);
+        words_of(chunk()).truncate(words_before);
         push_block(begin, BlockKind::Invalid, Block::kNoCode, 0);
-        program_started_ = true;
         return;
     }
     if (lp.blank) return;  // only blanks: an empty block
@@ -660,9 +548,8 @@ void EssiReader::classify(std::uint32_t first, const LineParse& lp, std::size_t 
 
     auto fail = [&](DiagCode code, Msg msg, MessageArgs args) {
         report(Severity::Error, code, first, msg, std::move(args));
-        words_of(tape()).truncate(words_before);
+        words_of(chunk()).truncate(words_before);
         push_block(first, BlockKind::Invalid, Block::kNoCode, 0);
-        program_started_ = true;
     };
 
     if (lp.mark == '%') {
@@ -674,7 +561,6 @@ void EssiReader::classify(std::uint32_t first, const LineParse& lp, std::size_t 
         push_block(first, BlockKind::Percent, Block::kNoCode, 0);
         return;
     }
-    program_started_ = true;
     if (lp.mark) {  // '/' or '=' configured as an end of program
         push_block(first, BlockKind::EndMark, Block::kNoCode, 0);
         mark_program_end();

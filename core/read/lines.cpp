@@ -11,21 +11,45 @@ namespace {
 
 constexpr std::uint64_t bytes_of(unsigned char c) { return 0x0101010101010101ULL * c; }
 
+// The first control character (a byte below 0x0E: CR, LF, and rarely a tab or worse) of the eight bytes at p + i
+// (all there to read), or i + 8 when none of them is one. The lowest flagged byte is always one (the others may
+// be borrows of it).
+std::size_t next_control_byte(const char* p, std::size_t i) {
+    std::uint64_t w;
+    std::memcpy(&w, p + i, 8);
+    const std::uint64_t below = (w - bytes_of(0x0E)) & ~w & bytes_of(0x80);
+    if (below == 0) return i + 8;
+    return i + static_cast<std::size_t>(std::countr_zero(below)) / 8;  // (little-endian: WASM, x86, ARM)
+}
+
 }  // namespace
 
+std::size_t find_line_end(std::string_view bytes, std::size_t pos) {
+    const char* p = bytes.data();
+    const std::size_t n = bytes.size();
+    while (pos < n) {
+        if (pos + 8 <= n) {
+            const std::size_t at = next_control_byte(p, pos);
+            if (at == pos + 8) {
+                pos = at;
+                continue;
+            }
+            pos = at;
+        }
+        if (is_line_end(p[pos])) return pos;
+        ++pos;
+    }
+    return n;
+}
+
 std::uint32_t column_of(std::string_view bytes, std::uint32_t offset) {
-    std::uint32_t begin = offset;
-    while (begin > 0 && !is_line_end(bytes[begin - 1])) --begin;
-    return offset - begin + 1;
+    return offset - static_cast<std::uint32_t>(find_line_start(bytes, offset)) + 1;
 }
 
 std::string_view line_text(std::string_view bytes, std::uint32_t offset) {
     if (offset > bytes.size()) return {};
-    std::size_t begin = offset;
-    while (begin > 0 && !is_line_end(bytes[begin - 1])) --begin;
-    std::size_t end = offset;
-    while (end < bytes.size() && !is_line_end(bytes[end])) ++end;
-    return bytes.substr(begin, end - begin);
+    const std::size_t begin = find_line_start(bytes, offset);
+    return bytes.substr(begin, find_line_end(bytes, offset) - begin);
 }
 
 bool LineIndex::build(std::string_view bytes, std::size_t max_bytes) {
@@ -41,17 +65,13 @@ bool LineIndex::build(std::string_view bytes, std::size_t max_bytes) {
     std::size_t i = pos_;
     const std::size_t stop = n - i > max_bytes ? i + max_bytes : n;
     while (i < stop) {
-        // Eight bytes at a time to the next control character (a byte below 0x0E: CR, LF, and rarely a tab or
-        // worse): the lowest flagged byte is always one (the others may be borrows of it).
-        if (i + 8 <= n) {
-            std::uint64_t w;
-            std::memcpy(&w, p + i, 8);
-            const std::uint64_t below = (w - bytes_of(0x0E)) & ~w & bytes_of(0x80);
-            if (below == 0) {
-                i += 8;
+        if (i + 8 <= n) {  // eight bytes at a time to the next control character
+            const std::size_t at = next_control_byte(p, i);
+            if (at == i + 8) {
+                i = at;
                 continue;
             }
-            i += static_cast<std::size_t>(std::countr_zero(below)) / 8;  // (little-endian: WASM, x86, ARM)
+            i = at;
         }
         const char c = p[i++];
         if (!is_line_end(c)) continue;
@@ -70,14 +90,12 @@ std::string_view LineIndex::line(std::string_view bytes, std::size_t n) const {
     if (n == 0 || n > lines_) return {};
     std::size_t i = starts_[(n - 1) / kStride];
     for (std::size_t skip = (n - 1) % kStride; skip > 0; --skip) {
-        while (i < bytes.size() && !is_line_end(bytes[i])) ++i;
+        i = find_line_end(bytes, i);
         if (i >= bytes.size()) return {};
         const char c = bytes[i++];
         if (i < bytes.size() && is_line_end_pair(c, bytes[i])) ++i;
     }
-    std::size_t end = i;
-    while (end < bytes.size() && !is_line_end(bytes[end])) ++end;
-    return bytes.substr(i, end - i);
+    return bytes.substr(i, find_line_end(bytes, i) - i);
 }
 
 }  // namespace essi

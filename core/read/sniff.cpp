@@ -46,8 +46,7 @@ bool looks_like_essi(std::string_view head) {
     bool digit_seen = false, in_comment = false;
     std::size_t pos = 0;
     while (pos < head.size()) {
-        std::size_t end = pos;
-        while (end < head.size() && !is_line_end(head[end])) ++end;
+        const std::size_t end = find_line_end(head, pos);
         const std::string_view line = trim_blanks(head.substr(pos, end - pos));
         pos = end + 1;
         if (line.empty()) continue;

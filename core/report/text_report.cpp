@@ -12,17 +12,7 @@ namespace essi {
 
 namespace {
 
-std::string fixed(double v, int decimals = kTextLengthDecimals) {
-    if (!std::isfinite(v)) return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    std::string s = buf;
-    // No "-0.000": a value that rounds to zero is zero.
-    if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
-    return s;
-}
-
-std::string mm(double v) { return fixed(v) + " mm"; }
+std::string mm(double v) { return mm_text(v) + " mm"; }
 
 std::string verdict(const FileReport& f, Lang lang) {
     const std::size_t errors = f.errors();
@@ -93,7 +83,7 @@ std::string diagnostics_csv(std::span<const FileReport> files, Lang lang) {
 }
 
 std::string format_duration(double seconds) {
-    if (!std::isfinite(seconds) || seconds < 0) return fixed(seconds, 1) + " s";
+    if (!std::isfinite(seconds) || seconds < 0) return fixed_text(seconds, 1) + " s";
     const auto total = static_cast<unsigned long long>(std::llround(seconds));
     char buf[64];
     std::snprintf(buf, sizeof buf, "%llu:%02llu:%02llu", total / 3600, (total / 60) % 60, total % 60);
@@ -154,16 +144,16 @@ std::string stats_block(const FileReport& file, Lang lang) {
     rows.emplace_back(key(Msg::StatsBlocks), std::to_string(st.blocks));
     rows.emplace_back(key(Msg::StatsMotions), std::to_string(st.motions));
     rows.emplace_back(key(Msg::StatsEstimatedTime),
-                      fixed(st.estimated_time_s, 1) + " s (" + format_duration(st.estimated_time_s) + ")");
+                      fixed_text(st.estimated_time_s, 1) + " s (" + format_duration(st.estimated_time_s) + ")");
     if (st.cut_bbox.empty) {
         rows.emplace_back(key(Msg::StatsCutBox), key(Msg::StatsNone));
     } else {
-        rows.emplace_back(key(Msg::StatsCutBox), "x " + fixed(st.cut_bbox.min_x) + " .. " + fixed(st.cut_bbox.max_x) + ", y " +
-                                          fixed(st.cut_bbox.min_y) + " .. " + fixed(st.cut_bbox.max_y) + " mm (" +
-                                          fixed(st.cut_bbox.max_x - st.cut_bbox.min_x) + " x " +
-                                          fixed(st.cut_bbox.max_y - st.cut_bbox.min_y) + " mm)");
+        rows.emplace_back(key(Msg::StatsCutBox), "x " + mm_text(st.cut_bbox.min_x) + " .. " + mm_text(st.cut_bbox.max_x) + ", y " +
+                                          mm_text(st.cut_bbox.min_y) + " .. " + mm_text(st.cut_bbox.max_y) + " mm (" +
+                                          mm_text(st.cut_bbox.max_x - st.cut_bbox.min_x) + " x " +
+                                          mm_text(st.cut_bbox.max_y - st.cut_bbox.min_y) + " mm)");
     }
-    rows.emplace_back(key(Msg::StatsEndPosition), "x " + fixed(st.end_position.x) + ", y " + fixed(st.end_position.y) + " mm");
+    rows.emplace_back(key(Msg::StatsEndPosition), "x " + mm_text(st.end_position.x) + ", y " + mm_text(st.end_position.y) + " mm");
 
     std::size_t width = 0;
     for (const auto& [k, v] : rows) width = std::max(width, display_width(k) + 1);

@@ -213,6 +213,12 @@ const char* output_format_name(OutputFormat f) {
     return "essi";
 }
 
+std::optional<OutputFormat> parse_output_format(std::string_view name) {
+    for (const OutputFormat f : kOutputFormats)
+        if (name == output_format_name(f)) return f;
+    return std::nullopt;
+}
+
 bool ConvertResult::ok() const {
     return std::none_of(diagnostics.begin(), diagnostics.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
 }

@@ -2033,7 +2033,9 @@ test('a collision: its overlapping area filled, its contour and the other part h
   assert.equal(s.marks.hovered.message, collisions[0].message);
   assert.ok(s.marks.hovered.related.length >= 1, JSON.stringify(s.marks.hovered));
   assert.equal(s.marks.hovered.overlap_polygons, 2);
-  assert.ok(s.marks.hovered.contour, 'a collision concerns a contour');
+  // the diagnostic as the report has it: the same contour, {first_line, last_line}
+  assert.deepEqual(s.marks.hovered.contour, collisions[0].contour, 'a collision concerns a contour');
+  assert.ok(s.marks.hovered.contour.first_line > 0 && s.marks.hovered.contour.first_line <= s.marks.hovered.contour.last_line);
   await page.screenshot({ path: path.join(shots, 'collision-hover.png') });
   await page.close();
 });

@@ -64,3 +64,45 @@ TEST(LineIndex, LinesOfTheReadersBlocks) {
 }
 
 }  // namespace
+
+namespace {
+
+// find_line_end against the rule written out plainly, from every position of text with tabs, control bytes,
+// lines longer than eight bytes and every kind of line end.
+TEST(Lines, FindLineEndIsTheFirstCrOrLf) {
+    const std::string text = "+100+200\n\t7\r\n0123456789abcdefghij\x01\x0B\x0D\n\r\n\x0C" "end";
+    for (std::size_t pos = 0; pos <= text.size(); ++pos) {
+        std::size_t want = pos;
+        while (want < text.size() && text[want] != '\n' && text[want] != '\r') ++want;
+        EXPECT_EQ(essi::find_line_end(text, pos), want) << "from " << pos;
+    }
+    EXPECT_EQ(essi::find_line_end("", 0), 0u);
+    EXPECT_EQ(essi::find_line_end("abc", 3), 3u);
+    EXPECT_EQ(essi::find_line_end(std::string(100, 'x') + "\r", 0), 100u);
+    EXPECT_EQ(essi::find_line_end(std::string(100, '\t'), 5), 100u);
+}
+
+TEST(Lines, FindLineStartIsAfterTheLineEndBefore) {
+    const std::string text = "ab\r\ncd\nef";
+    EXPECT_EQ(essi::find_line_start(text, 0), 0u);
+    EXPECT_EQ(essi::find_line_start(text, 2), 0u);  // (the CR ends line 1)
+    EXPECT_EQ(essi::find_line_start(text, 3), 3u);  // (the LF after it: an empty start, as line_text has it)
+    EXPECT_EQ(essi::find_line_start(text, 5), 4u);
+    EXPECT_EQ(essi::find_line_start(text, 9), 7u);
+    EXPECT_EQ(essi::line_text(text, 5), "cd");
+    EXPECT_EQ(essi::line_text(text, 8), "ef");
+    EXPECT_EQ(essi::column_of(text, 8), 2u);
+}
+
+// Tapes with CR line ends only: a line's end is found without a search to the end of the bytes (an EIA tape of
+// 20 000 such lines is read at once).
+TEST(Lines, CrOnlyTapesReadLineByLine) {
+    std::string tape = "%\r";
+    for (int i = 0; i < 20000; ++i) tape += "G01 X1 Y1\r";
+    tape += "M30\r";
+    std::size_t lines = 0;
+    for (std::size_t pos = 0; pos < tape.size(); pos = essi::find_line_end(tape, pos) + 1) ++lines;
+    EXPECT_EQ(lines, 20002u);
+}
+
+}  // namespace

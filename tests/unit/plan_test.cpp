@@ -158,7 +158,7 @@ TEST(CutPlanRules, GapWithItsSizeAndPlace) {
     ASSERT_EQ(d.size(), 1u) << codes_of(d);
     EXPECT_EQ(d[0].code, DiagCode::W601_ContourGap);
     EXPECT_EQ(d[0].line, 11u);
-    EXPECT_NE(d[0].message.find("stops 2 mm short"), std::string::npos) << d[0].message;
+    EXPECT_NE(d[0].message.find("stops 2.000 mm short"), std::string::npos) << d[0].message;
     EXPECT_NE(d[0].message.find("began at line 8"), std::string::npos) << d[0].message;
     ASSERT_TRUE(d[0].has_at);
     EXPECT_DOUBLE_EQ(d[0].at.x, 61);  // halfway across the gap
@@ -231,7 +231,7 @@ TEST(CutPlanRules, CollisionsOverlapAndTooClose) {
     ASSERT_EQ(d[0].related.size(), 1u);
     EXPECT_EQ(d[0].related[0].line, 7u);
     EXPECT_EQ(d[1].code, DiagCode::E605_PartsCollide);
-    EXPECT_NE(d[1].message.find("comes within 1 mm of the part at lines 20-25, closer than the kerf width (2 mm)"),
+    EXPECT_NE(d[1].message.find("comes within 1.000 mm of the part at lines 20-25, closer than the kerf width (2.000 mm)"),
               std::string::npos)
         << d[1].message;
     EXPECT_TRUE(d[1].overlap.empty());
@@ -317,7 +317,7 @@ TEST(CutPlanRules, FeedDwellLeadInAndTableFromTheProfile) {
     ASSERT_EQ(d[1].related.size(), 1u);
     EXPECT_EQ(d[1].related[0].line, 2u);  // where 39+30 is
     EXPECT_EQ(d[2].code, DiagCode::W611_CutLargerThanTable);  // the first cut, 200 mm on a 150 mm table
-    EXPECT_NE(d[2].message.find("this cut is 200 x 100 mm, larger than the table's travel (150 x 1000 mm)"), std::string::npos)
+    EXPECT_NE(d[2].message.find("this cut is 200.000 x 100.000 mm, larger than the table's travel (150.000 x 1000.000 mm)"), std::string::npos)
         << d[2].message;
     EXPECT_EQ(d[3].code, DiagCode::W610_PierceWithoutLeadIn);  // the second part (110 mm wide) fits and has a lead-in
     // The defaults: no lead-in asked for, no table.

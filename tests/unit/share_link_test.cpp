@@ -84,39 +84,39 @@ TEST(ShareLink, ViewQueryReadsBack) {
 
 TEST(ShareLink, CarriesHowTheTapeWasRead) {
     const std::string profile = R"({"name": "my-shop", "base": "woyda", "unit_mm": 0.01})";
-    const std::string query = share_reading_query("my-shop", profile, "eia");
+    const std::string query = share_reading_query("my-shop", profile, InputFormat::Eia);
     EXPECT_EQ(query.rfind("p=my-shop&pj=", 0), 0u) << query;
     const ShareLink l = parse_share_fragment("c=1,2,3&l=0&" + query + "&n=a.eia&b=1234&t=" + base64url_encode("x"));
     EXPECT_TRUE(l.problems.empty()) << l.problems.front();
     EXPECT_EQ(l.profile, "my-shop");
     EXPECT_EQ(l.profile_json, profile);
-    EXPECT_EQ(l.input, "eia");
+    EXPECT_EQ(l.input, InputFormat::Eia);
     ASSERT_TRUE(l.tape_bytes.has_value());
     EXPECT_EQ(*l.tape_bytes, 1234u);
     // a built-in profile, the format from the content: p only
-    EXPECT_EQ(share_reading_query("auto", "", ""), "p=auto");
+    EXPECT_EQ(share_reading_query("auto", "", std::nullopt), "p=auto");
     const ShareLink plain = parse_share_fragment("p=auto&t=eA");
     EXPECT_EQ(plain.profile, "auto");
     EXPECT_TRUE(plain.profile_json.empty());
-    EXPECT_TRUE(plain.input.empty());
+    EXPECT_FALSE(plain.input.has_value());
     EXPECT_FALSE(plain.tape_bytes.has_value());
 }
 
 // A profile's name goes through the link as it is: '+' (a user profile on a built-in's base), spaces, UTF-8.
 TEST(ShareLink, AProfileNameReadsBackAsWritten) {
     for (const std::string name : {"iso6582+custom", "Werk 2 – Plasma", "a&b=c%d#e"}) {
-        const std::string query = share_reading_query(name, "{}", "essi");
+        const std::string query = share_reading_query(name, "{}", InputFormat::Essi);
         const ShareLink l = parse_share_fragment(query + "&t=eA");
         EXPECT_TRUE(l.problems.empty()) << name << ": " << l.problems.front();
         EXPECT_EQ(l.profile, name) << query;
-        EXPECT_EQ(l.input, "essi");
+        EXPECT_EQ(l.input, InputFormat::Essi);
     }
-    EXPECT_EQ(share_reading_query("iso6582+custom", "", ""), "p=iso6582%2Bcustom");
+    EXPECT_EQ(share_reading_query("iso6582+custom", "", std::nullopt), "p=iso6582%2Bcustom");
 }
 
 TEST(ShareLink, BadReadingFieldsAreProblems) {
     const ShareLink l = parse_share_fragment("i=gcode&b=-1&pj=" + base64url_encode(std::string(kMaxShareProfileBytes + 1, 'x')) + "&p=ok");
-    EXPECT_TRUE(l.input.empty());
+    EXPECT_FALSE(l.input.has_value());
     EXPECT_FALSE(l.tape_bytes.has_value());
     EXPECT_TRUE(l.profile_json.empty());
     EXPECT_EQ(l.profile, "ok");
@@ -124,4 +124,23 @@ TEST(ShareLink, BadReadingFieldsAreProblems) {
     EXPECT_EQ(l.problems[0].rfind("i: expected essi or eia", 0), 0u) << l.problems[0];
     EXPECT_EQ(l.problems[1].rfind("b: expected the tape's length", 0), 0u) << l.problems[1];
     EXPECT_EQ(l.problems[2].rfind("pj: expected a profile's JSON", 0), 0u) << l.problems[2];
+}
+
+// A store id is a SHA-256 as `essi serve` names it: 64 lower-case hex digits, nothing else (the link and the server
+// both ask is_store_id).
+TEST(ShareLink, StoreIdIsSixtyFourLowerCaseHexDigits) {
+    const std::string id = "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1";
+    EXPECT_TRUE(is_store_id(id));
+    EXPECT_TRUE(is_store_id(std::string(64, '0')));
+    EXPECT_FALSE(is_store_id(""));
+    EXPECT_FALSE(is_store_id("abc"));
+    EXPECT_FALSE(is_store_id(id.substr(1)));                  // 63 digits
+    EXPECT_FALSE(is_store_id(id + "0"));                      // 65 digits
+    EXPECT_FALSE(is_store_id(std::string(64, 'A')));          // upper case
+    EXPECT_FALSE(is_store_id(std::string(63, 'a') + "/"));
+    EXPECT_FALSE(is_store_id(std::string(63, 'a') + "g"));
+    EXPECT_EQ(parse_share_fragment("share=" + id).store_id, id);
+    const ShareLink bad = parse_share_fragment("share=" + std::string(64, 'A'));
+    EXPECT_TRUE(bad.store_id.empty());
+    EXPECT_EQ(bad.problems.size(), 1u);
 }

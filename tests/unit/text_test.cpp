@@ -1,6 +1,8 @@
 // Safe text for reports (essi/text.hpp): UTF-8 validation and \xNN for what is not printable text.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "essi/functions.hpp"
@@ -65,3 +67,35 @@ TEST(Text, KerfValuesSayWidthOrOffset) {
         << essi::describe_function(29, false, 0, iso);
     EXPECT_NE(essi::describe_function(30, true, 30, iso).find("kerf width 3 mm"), std::string::npos);
 }
+
+namespace {
+
+// Millimetres in messages (mm_text): three decimals, rounded, and never a negative zero.
+TEST(Text, MillimetresHaveThreeDecimals) {
+    EXPECT_EQ(essi::mm_text(12.5), "12.500");
+    EXPECT_EQ(essi::mm_text(-3), "-3.000");
+    EXPECT_EQ(essi::mm_text(0), "0.000");
+    EXPECT_EQ(essi::mm_text(1234.56789), "1234.568");
+    EXPECT_EQ(essi::mm_text(0.0004), "0.000");
+    EXPECT_EQ(essi::mm_text(-0.0004), "0.000");  // (not "-0.000")
+    EXPECT_EQ(essi::mm_text(-0.0), "0.000");
+    EXPECT_EQ(essi::mm_text(-0.0006), "-0.001");
+    EXPECT_EQ(essi::mm_text(3000), "3000.000");
+    EXPECT_EQ(essi::mm_text(1e12), "1000000000000.000");
+    EXPECT_EQ(essi::mm_text(std::numeric_limits<double>::infinity()), "inf");
+    EXPECT_EQ(essi::mm_text(-std::numeric_limits<double>::infinity()), "-inf");
+    EXPECT_EQ(essi::mm_text(std::nan("")), "nan");
+    EXPECT_EQ(essi::mm_text(1e308).size(), 309u + 4u);  // every digit of the widest double
+}
+
+TEST(Text, FixedTextTakesItsDecimals) {
+    EXPECT_EQ(essi::fixed_text(90, 1), "90.0");
+    EXPECT_EQ(essi::fixed_text(-0.04, 1), "0.0");
+    EXPECT_EQ(essi::fixed_text(2.25, 0), "2");
+    EXPECT_EQ(essi::fixed_text(-1.5, 2), "-1.50");
+    EXPECT_EQ(essi::length_text(1234.5674), "1234.567 mm");
+    EXPECT_EQ(essi::length_text(-0.0001), "0.000 mm");
+    EXPECT_EQ(essi::length_text(184377775), "184 377.775 m");
+}
+
+}  // namespace

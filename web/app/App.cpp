@@ -12,6 +12,7 @@
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
 #include "essi/geom.hpp"
+#include "essi/lines.hpp"
 #include "essi/profile.hpp"
 #include "essi/render_svg.hpp"
 #include "essi/share_link.hpp"
@@ -160,9 +161,7 @@ void App::load(std::string name, std::string bytes, std::optional<ViewRequest> v
 
 void App::load_shared(std::string name, std::string bytes, const ShareLink& link) {
     use_link_profile(link);
-    input_format_.reset();
-    if (link.input == "essi") input_format_ = InputFormat::Essi;
-    if (link.input == "eia") input_format_ = InputFormat::Eia;
+    input_format_ = link.input;
     ui_.link_problem = {};
     read(std::move(name), std::move(bytes), std::nullopt);
 }
@@ -304,12 +303,10 @@ void App::require_comment_glyphs(const Document& d) {
         const auto high = std::find_if(d.bytes.begin() + static_cast<std::ptrdiff_t>(at), d.bytes.end(),
                                        [](char c) { return static_cast<unsigned char>(c) >= 0x80; });
         if (high == d.bytes.end()) break;
+        const std::string_view bytes = d.bytes;
         const std::size_t i = static_cast<std::size_t>(high - d.bytes.begin());
-        const std::size_t before = d.bytes.find_last_of("\r\n", i);
-        const std::size_t begin = before == std::string::npos ? 0 : before + 1;
-        std::size_t end = d.bytes.find_first_of("\r\n", i);
-        if (end == std::string::npos) end = d.bytes.size();
-        text += decode_text(std::string_view(d.bytes).substr(begin, std::min(end - begin, kMaxLineBytes)), text_encoding());
+        const std::size_t begin = find_line_start(bytes, i), end = find_line_end(bytes, i);
+        text += decode_text(bytes.substr(begin, std::min(end - begin, kMaxLineBytes)), text_encoding());
         at = end;
     }
     if (!text.empty()) fonts_.require_glyphs(text);
@@ -541,7 +538,7 @@ std::string App::share_query() const {
     const bool user_profile = dropped_profile_ && profile_name_ == dropped_profile_->name;
     return share_view_query({view_.cx + o.x, view_.cy + o.y, view_.zoom}, selection_.line) + "&" +
            share_reading_query(profile_name_, user_profile ? profile_to_json(*dropped_profile_) : std::string(),
-                               d ? input_format_name(d->setup.format) : "");
+                               d ? std::optional(d->setup.format) : std::nullopt);
 }
 
 FileReport App::report() const {
@@ -607,7 +604,7 @@ std::string App::export_text(const std::string& format) const {
         return format == "report-csv" ? diagnostics_csv(one, ui_lang()) : report_to_json(one, profile_name_, ui_lang()).dump(2) + "\n";
     }
     ConvertOptions o;
-    o.to = format == "eia" ? OutputFormat::Eia : format == "gcode" ? OutputFormat::Gcode : OutputFormat::Essi;
+    o.to = parse_output_format(format).value_or(OutputFormat::Essi);
     o.target = d->profile;
     o.absolute = format == "gcode";  // (G-code for LinuxCNC: absolute, as CAM posts write it)
     return convert_tape(d->bytes, d->setup, o).text;

@@ -128,15 +128,13 @@ json toolbar_json(const UiState& ui) {
             {"menu_open", ui.toolbar_menu_open}};
 }
 
-// One diagnostic as a mark's tooltip says it: in the viewer's language.
+// One diagnostic as a mark's tooltip says it: as the report writes it (essi/report_json.hpp), in the viewer's
+// language, with its index in the document's diagnostics and the count of its overlap polygons.
 json mark_diagnostic_json(const Diagnostic& d, std::size_t index) {
-    json related = json::array();
-    for (const RelatedLocation& r : d.related)
-        related.push_back({{"line", r.line}, {"end_line", r.end_line}, {"message", related_message(r, ui_lang())}});
-    return {{"diagnostic", index},   {"code", code_name(d.code)}, {"severity", severity_name(d.severity)},
-            {"line", d.line},         {"message", diagnostic_message(d, ui_lang())}, {"related", related},
-            {"contour", d.contour_first > 0 ? json::array({d.contour_first, d.contour_last}) : json(nullptr)},
-            {"overlap_polygons", d.overlap.size()}};
+    json j = diagnostic_to_json(d, ui_lang());
+    j["diagnostic"] = index;
+    j["overlap_polygons"] = d.overlap.size();
+    return j;
 }
 
 // The diagnostics' marks (docs/viewer.md, "Problems on the drawing"): where each is (program mm and page pixels),

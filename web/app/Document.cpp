@@ -14,6 +14,8 @@
 #include "essi/functions.hpp"
 #include "essi/interp.hpp"
 #include "essi/pipeline.hpp"
+#include "essi/stats.hpp"
+#include "essi/text.hpp"
 
 namespace essi::viewer {
 
@@ -137,8 +139,7 @@ float Document::feed_of(std::size_t i) const {
 }
 
 double Document::duration_s(std::size_t i) const {
-    const double feed = feed_of(i);
-    double t = feed > 0 ? record(i).length_mm / feed * 60.0 : 0.0;
+    double t = motion_time_s(record(i).length_mm, feed_of(i));
     if (std::binary_search(pierces.begin(), pierces.end(), static_cast<std::uint32_t>(i))) t += profile.pierce_time_s;
     return t;
 }
@@ -328,8 +329,8 @@ std::string tools_label(std::uint8_t tools, Lang lang) {
 }
 
 namespace {
-std::string xy(Point p) { return fmt("%.3f, %.3f", p.x, p.y); }
-std::string mm3(double v) { return fmt("%.3f", v); }
+std::string xy(Point p) { return mm_text(p.x) + ", " + mm_text(p.y); }
+constexpr int kSweepDecimals = 3;  // degrees
 }  // namespace
 
 std::string describe_motion(const MotionRecord& m, Lang lang) {
@@ -337,21 +338,21 @@ std::string describe_motion(const MotionRecord& m, Lang lang) {
     std::string s;
     switch (m.curve) {
         case CurveKind::Line:
-            s = format_message(Msg::UiMotionLine, lang, {kind, xy(m.start), xy(m.end), mm3(m.length_mm)});
+            s = format_message(Msg::UiMotionLine, lang, {kind, xy(m.start), xy(m.end), mm_text(m.length_mm)});
             break;
         case CurveKind::Arc: {
             const bool full = std::fabs(std::fabs(m.sweep) - 2 * kPi) < kFullTurnTolerance;
             s = format_message(Msg::UiMotionArc, lang,
-                               {kind, full ? Msg::UiFullCircle : Msg::UiArc, m.ccw ? Msg::UiCcw : Msg::UiCw, mm3(m.radius),
-                                xy(m.centre), xy(m.start), xy(m.end), mm3(m.sweep * 180.0 / kPi), mm3(m.length_mm)});
+                               {kind, full ? Msg::UiFullCircle : Msg::UiArc, m.ccw ? Msg::UiCcw : Msg::UiCw, mm_text(m.radius),
+                                xy(m.centre), xy(m.start), xy(m.end), fixed_text(m.sweep * 180.0 / kPi, kSweepDecimals), mm_text(m.length_mm)});
             if (std::fabs(m.end_radius - m.radius) > kSameRadiusMm)
-                s += " " + format_message(Msg::UiArcEndRadius, lang, {mm3(m.end_radius)});
+                s += " " + format_message(Msg::UiArcEndRadius, lang, {mm_text(m.end_radius)});
             break;
         }
         case CurveKind::Parabola: {
             const ParabolaGeom& g = m.parabola;
             s = format_message(Msg::UiMotionParabola, lang,
-                               {kind, xy(g.vertex), xy(g.n), mm3(g.p), xy(m.start), xy(m.end), mm3(m.length_mm)});
+                               {kind, xy(g.vertex), xy(g.n), mm_text(g.p), xy(m.start), xy(m.end), mm_text(m.length_mm)});
             break;
         }
     }
@@ -444,12 +445,7 @@ public:
         add(m);
     }
 
-    void on_event(const MachineEvent& e) override {
-        // The pierce is drawn at the first cutting motion after cutting starts (the statistics' rule).
-        if (starts_cutting(tools_, e.tools_after)) pierce_pending_ = true;
-        if ((e.tools_after & kCuttingTools) == 0) pierce_pending_ = false;
-        tools_ = e.tools_after;
-    }
+    void on_event(const MachineEvent& e) override { pierces_.on_tools(e.tools_after); }
 
 private:
     // The compact form has no kerf value where compensation is off: a motion whose kerf is not 0 there (which the
@@ -488,16 +484,14 @@ private:
     }
     void add(const Motion& m) {
         Document& d = doc_;
-        if (pierce_pending_ && (m.tools & kCuttingTools)) d.pierces.push_back(static_cast<std::uint32_t>(d.motions.size()));
-        pierce_pending_ = false;
+        if (pierces_.at_motion(m.tools)) d.pierces.push_back(static_cast<std::uint32_t>(d.motions.size()));
         d.motions.push_back(m);
     }
 
     Document& doc_;
     const float rapid_feed_ = static_cast<float>(doc_.profile.rapid_mm_min);
     Point last_end_;  // of the motion before (a motion that starts elsewhere is a jump)
-    std::uint8_t tools_ = 0;
-    bool pierce_pending_ = false;
+    PierceTracker pierces_;  // the statistics' pierces, each at its motion
 };
 
 // The document's motions as the cut plan reads them back (Document::record: the interpreter's own numbers).

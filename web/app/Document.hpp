@@ -107,7 +107,7 @@ struct Document {
     std::vector<std::pair<std::uint32_t, float>> kerfs;
     // (first motion, mm/min) whenever the feed changes, over the motions without kFlagRapidFeed
     std::vector<std::pair<std::uint32_t, float>> feeds;
-    std::vector<std::uint32_t> pierces;   // motions that start where a cutting tool came on (display only)
+    std::vector<std::uint32_t> pierces;   // the motions the statistics' pierces are at (essi::PierceTracker)
     LineIndex line_index;                 // where each line starts (the core's rule, essi/lines.hpp)
     // Made after the check (DocumentLoader's last stage): a mark per diagnostic that has a place, and the motions
     // the diagnostics concern (their blocks, contours and related places: [first, last) ranges, sorted, merged).
@@ -135,8 +135,8 @@ struct Document {
     [[nodiscard]] Point end_of(std::size_t i) const;
     [[nodiscard]] Point start_of(std::size_t i) const;
     [[nodiscard]] float feed_of(std::size_t i) const;
-    // The machine time of motion i, as the statistics estimate it along the programmed path: its length at its
-    // feed (rapid at the profile's rapid speed), plus the profile's pierce time where a cut starts.
+    // The machine time of motion i along the programmed path: essi::motion_time_s of its length and feed (rapid at
+    // the profile's rapid speed), plus the profile's pierce time where a pierce is (`pierces`).
     [[nodiscard]] double duration_s(std::size_t i) const;
     [[nodiscard]] float kerf_of(std::size_t i) const;
     // The centre of arc i (an arc motion), without working out the rest of its record.

@@ -267,7 +267,7 @@ EMSCRIPTEN_KEEPALIVE const char* essi_parse_share(const char* fragment) {
     j["view"] = link.view ? nlohmann::json::array({link.view->x, link.view->y, link.view->zoom}) : nlohmann::json();
     j["share"] = link.store_id;
     j["profile"] = link.profile;
-    j["input"] = link.input;
+    j["input"] = link.input ? essi::input_format_name(*link.input) : "";
     j["bytes"] = link.tape_bytes ? nlohmann::json(*link.tape_bytes) : nlohmann::json();
     j["problems"] = link.problems;
     j["packed_len"] = link.packed.size();

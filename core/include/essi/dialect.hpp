@@ -38,6 +38,10 @@ struct TapeSetup {
     std::optional<Diagnostic> note;      // N403 when the given profile is not the one the evidence clearly shows
     std::vector<Message> evidence_messages{};  // the evidence to be worded in any language (.text(lang))
 };
+// The format asked for (`--input`, the server's and the Python module's `input`): a format's name
+// (parse_input_format), or "auto" or "" for the content's choice (nullopt, as setup_tape takes it). False for any
+// other text.
+[[nodiscard]] bool parse_input_choice(std::string_view text, std::optional<InputFormat>& format);
 // `format`: nullopt = from the content; `profile`: nullopt = auto.
 [[nodiscard]] TapeSetup setup_tape(std::string_view bytes, std::optional<InputFormat> format,
                                    const std::optional<Profile>& profile);

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <memory>
 #include <new>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <type_traits>
@@ -206,10 +207,13 @@ private:
     bool has_end_ = false;
 };
 
-// The formats a tape can be written in. Each has its front end in core/read/ (one file each, a BlockReader):
-// ESSI (essi_reader.cpp), EIA RS-274 (eia_reader.cpp).
+// The formats a tape can be written in. Each has its front end in core/read/ (one file each, a BlockReader driven
+// by the chunk loop of core/read/reader_driver.hpp): ESSI (essi_reader.cpp), EIA RS-274 (eia_reader.cpp).
 enum class InputFormat : std::uint8_t { Essi, Eia };
+inline constexpr InputFormat kInputFormats[] = {InputFormat::Essi, InputFormat::Eia};
 [[nodiscard]] const char* input_format_name(InputFormat f);  // "essi", "eia"
+// The format a name names ("essi", "eia": input_format_name's), nullopt for any other text.
+[[nodiscard]] std::optional<InputFormat> parse_input_format(std::string_view name);
 
 // A front end: bytes -> blocks with their positions (byte offset, line), a chunk at a time, every problem a
 // diagnostic (never an exception). The blocks mean the same whatever format they were read from: the interpreter
@@ -240,19 +244,6 @@ protected:
     static std::size_t& first_block_of(Tape& t) { return t.first_block_; }
     static std::size_t& program_blocks_of(Tape& t) { return t.program_blocks_; }
     static bool& has_end_of(Tape& t) { return t.has_end_; }
-    // The chunk-keeping every front end does the same way:
-    // empties `chunk` for the blocks from `first_block` on; when `bytes` are too large for 32-bit positions, E117
-    // and true (nothing is read);
-    [[nodiscard]] static bool begin_chunk(Tape& chunk, std::size_t first_block, bool first_chunk, std::string_view bytes);
-    // the block just pushed ends the program;
-    static void mark_program_end(Tape& chunk);
-    // the chunk's program blocks: all, up to the end block, none when the end came in an earlier chunk; comments
-    // (only before the end) do not count.
-    static void finish_chunk(Tape& chunk, bool ended_before, bool ended, std::size_t comments);
-    // The closing diagnostics every front end gives at the end of the bytes: E113 when the tape held no block,
-    // W114 when it has no end of program (unless the profile ends it at the end of the data).
-    static void report_tape_end(Tape& chunk, const Profile& profile, std::size_t total_blocks, bool ended,
-                                std::uint32_t last_line);
 };
 
 // The front end of `format` for `bytes` and `profile` (both must outlive it: it keeps references).

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "essi/i18n.hpp"
+#include "essi/read.hpp"
 
 namespace essi {
 
@@ -31,7 +32,7 @@ struct ShareLink {
     std::string packed;                 // t=DATA, base64url-decoded: the deflate-raw bytes of the tape
     std::string profile;                // p=NAME: the profile to read the tape with (is_valid_profile_name)
     std::string profile_json;           // pj=DATA, base64url-decoded: a user profile (its JSON), when p names it
-    std::string input;                  // i=essi|eia: the format the sender read the tape as; empty: from the content
+    std::optional<InputFormat> input;   // i=essi|eia: the format the sender read the tape as; nullopt: from the content
     std::optional<std::uint64_t> tape_bytes;  // b=BYTES: the tape's length, to tell a whole tape from a cut one
     std::vector<std::string> problems;  // each field that could not be read, in words (the rest is still used)
     std::vector<Message> problem_messages;  // the same problems, to be worded in any language (problems: English)
@@ -45,6 +46,10 @@ constexpr std::size_t kMaxShareNameBytes = 255;
 // A user profile in a link: a profile file is a few KB; more is refused (reported, the link's profile unused).
 constexpr std::size_t kMaxShareProfileBytes = 64 * 1024;
 
+// A tape's id in `essi serve`'s store (share=ID): its SHA-256, 64 lower-case hex digits; anything else is not one.
+constexpr std::size_t kStoreIdDigits = 64;
+[[nodiscard]] bool is_store_id(std::string_view s);
+
 // Reads a fragment (with or without its leading '#'). Never throws; unknown keys are ignored (newer links).
 [[nodiscard]] ShareLink parse_share_fragment(std::string_view fragment);
 
@@ -52,9 +57,9 @@ constexpr std::size_t kMaxShareProfileBytes = 64 * 1024;
 [[nodiscard]] std::string share_view_query(const ShareView& view, std::uint32_t line);
 
 // "p=PROFILE[&pj=JSON][&i=FORMAT]": how the tape was read. `profile_json` non-empty for a user profile (`profile`
-// is then its name); `input` "essi" or "eia", or empty (the content decides).
+// is then its name); `input` the format it was read as, or nullopt (the content decides).
 [[nodiscard]] std::string share_reading_query(std::string_view profile, std::string_view profile_json,
-                                              std::string_view input);
+                                              std::optional<InputFormat> input);
 
 // RFC 4648 base64url without padding, and its decoder (padding and line breaks refused: nullopt).
 [[nodiscard]] std::string base64url_encode(std::string_view bytes);

@@ -28,6 +28,36 @@ struct Stats {
     Point end_position;            // machine position at the end (head 1)
 };
 
+// The time a motion of `length_mm` takes at `feed_mm_min` (none without a feed): what the statistics estimate
+// along the compensated path, and what the viewer's playback gives each motion.
+[[nodiscard]] constexpr double motion_time_s(double length_mm, double feed_mm_min) {
+    return feed_mm_min > 0 ? length_mm / feed_mm_min * 60.0 : 0.0;
+}
+
+// Where the pierces fall in the motion stream. A pierce is made when a cutting tool comes on (starts_cutting: the
+// statistics count it and its time then); it is at the first motion after that, when that motion cuts (the
+// viewer's marker and the playback's pierce time). Tools that go off before any motion leave the pierce at none.
+class PierceTracker {
+public:
+    // The tools on after an event: true when it makes a pierce.
+    bool on_tools(std::uint8_t tools_after) {
+        const bool pierce = starts_cutting(tools_, tools_after);
+        tools_ = tools_after;
+        if (pierce) [[unlikely]] pending_ = true;
+        return pierce;
+    }
+    // A motion with `tools` on: true when it is where the pierce made before it is (the cutting tools still on).
+    bool at_motion(std::uint8_t tools) {
+        const bool here = pending_ && (tools & tools_ & kCuttingTools) != 0;
+        pending_ = false;
+        return here;
+    }
+
+private:
+    std::uint8_t tools_ = 0;  // on before the current event
+    bool pending_ = false;    // a pierce made, no motion since
+};
+
 // Accumulates statistics from the motion stream. The programmed motions give the lengths and boxes; their
 // compensated path (a KerfPath inside, §8) gives the time and the compensated cut length. Call finish() after the
 // last motion.
@@ -73,11 +103,10 @@ public:
     // Several torches pierce together: each pierce counts, the pierce time once.
     void count_event(EventKind kind, double value, std::uint8_t tools_after, std::uint8_t torches = 1) {
         if (kind == EventKind::Dwell) stats_.estimated_time_s += value;
-        if (starts_cutting(tools_, tools_after)) {
+        if (pierces_.on_tools(tools_after)) {
             stats_.pierces += torches;
             stats_.estimated_time_s += profile_.pierce_time_s;
         }
-        tools_ = tools_after;
     }
     // The tool offset in force from now on (11, 114, 12: the interpreter calls it): the carriage moves at once.
     void set_tool_offset(Point offset) {
@@ -114,7 +143,7 @@ private:
         }
         static void add(Stats& s, MotionKind kind, double length_mm, double feed_mm_min, int torches) {
             if (kind == MotionKind::Cut) s.cut_length_compensated_mm += length_mm * torches;
-            if (feed_mm_min > 0) s.estimated_time_s += length_mm / feed_mm_min * 60.0;
+            s.estimated_time_s += motion_time_s(length_mm, feed_mm_min);
         }
 
     private:
@@ -197,7 +226,7 @@ private:
 
     const Profile& profile_;
     Stats stats_;
-    std::uint8_t tools_ = 0;  // tools on before the current event (pierce counting)
+    PierceTracker pierces_;
     TorchPath torch_path_;
     KerfPath kerf_;
     Placement placement_;

@@ -24,11 +24,19 @@ namespace essi {
 // character boundary) and "...", so that a message never grows with the input.
 [[nodiscard]] std::string excerpt(std::string_view text, std::size_t max_bytes);
 
-// A number as a message writes it: up to 6 significant digits, no trailing zeros ("1400", "0.5", "1e+09").
+// A number as a message writes it: up to 10 significant digits, no trailing zeros ("1400", "0.5", "3600001",
+// "1e+10"): a value of a tape or a setting of a profile, as it was written.
 [[nodiscard]] std::string number_text(double v);
+// A number with `decimals` decimals, never "-0.000" (a value that rounds to zero is zero); "inf", "-inf" and "nan"
+// for what is not a finite number.
+[[nodiscard]] std::string fixed_text(double v, int decimals);
+// Millimetres measured on a tape or its machine (a length, a size, a position, a distance, a tolerance), as every
+// message and report writes them: kMmDecimals decimals, without the unit ("12.500", "-3.000", "0.000").
+constexpr int kMmDecimals = 3;  // 1 micrometre
+[[nodiscard]] std::string mm_text(double mm);
 // Text for XML (JUnit, SVG): & < > " ' as entities, control characters but tab, CR and LF as '?'.
 [[nodiscard]] std::string xml_escape(std::string_view s);
-// A length as people read it: "1234.567 mm" below 10 m, "184 377.775 m" (thousands apart) from 10 m on.
+// A length as people read it: "1234.567 mm" below 10 m (mm_text), "184 377.775 m" (thousands apart) from 10 m on.
 [[nodiscard]] std::string length_text(double mm);
 
 }  // namespace essi

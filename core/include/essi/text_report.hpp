@@ -14,9 +14,6 @@ namespace essi {
 
 // Every text is in `lang` (the message catalogue, essi/i18n.hpp); numbers, codes and paths are the same in all.
 
-// Lengths in text output: millimetres with this many decimals (1 micrometre).
-constexpr int kTextLengthDecimals = 3;
-
 // "path:12:5: error E301: message" (without position: "path: error E402: message"), no newline.
 [[nodiscard]] std::string diagnostic_line(std::string_view path, const Diagnostic& d, Lang lang = Lang::En);
 

@@ -5,6 +5,7 @@
 // or kept as a comment and reported.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,7 +17,10 @@
 namespace essi {
 
 enum class OutputFormat : std::uint8_t { Essi, Eia, Gcode };
+inline constexpr OutputFormat kOutputFormats[] = {OutputFormat::Essi, OutputFormat::Eia, OutputFormat::Gcode};
 [[nodiscard]] const char* output_format_name(OutputFormat f);  // "essi", "eia", "gcode"
+// The format a name names (output_format_name's), nullopt for any other text.
+[[nodiscard]] std::optional<OutputFormat> parse_output_format(std::string_view name);
 
 struct ConvertOptions {
     OutputFormat to = OutputFormat::Essi;
