@@ -169,6 +169,8 @@ private:
 
     void title();
     void heading(const SheetSection& s, double first_row_h);
+    [[nodiscard]] std::pair<Text, Text> field(const SheetField& f) const;
+    [[nodiscard]] double fields_height(const SheetSection& s) const;
     void fields(const SheetSection& s);
     void table(const SheetTable& t);
     [[nodiscard]] std::vector<double> column_widths(const SheetTable& t) const;
@@ -206,8 +208,9 @@ void Pages::write() {
             heading(s, sheet_.drawing.height_mm + legend_height());
             drawing();
         } else {
-            const double first = text(s.fields.empty() ? s.note : s.fields.front().value, kBodyFont).height() * 2;
-            heading(s, first);
+            // A section of fields stays on one page; a table may run on once its header and first row are on it.
+            const double first = s.fields.empty() ? text(s.note, kBodyFont).height() * 2 : fields_height(s);
+            heading(s, std::min(first, kContentBottomMm - kSheetMarginMm - 20));
             if (!s.fields.empty()) fields(s);
             if (s.table) table(*s.table);
         }
@@ -245,10 +248,23 @@ void Pages::heading(const SheetSection& s, double first_row_h) {
     y_ += 1.5;
 }
 
+// A field: the label in its column, the value beside it (both wrap).
+std::pair<Pages::Text, Pages::Text> Pages::field(const SheetField& f) const {
+    return {text(f.label, kBodyFont, kFieldLabelWidthMm - 2), text(f.value, kBodyFont, kSheetContentWidthMm - kFieldLabelWidthMm)};
+}
+
+double Pages::fields_height(const SheetSection& s) const {
+    double h = 0;
+    for (const SheetField& f : s.fields) {
+        const auto [label, value] = field(f);
+        h += std::max(label.height(), value.height()) + kRowPadMm;
+    }
+    return h;
+}
+
 void Pages::fields(const SheetSection& s) {
     for (const SheetField& f : s.fields) {
-        const Text label = text(f.label, kBodyFont, kFieldLabelWidthMm - 2);
-        const Text value = text(f.value, kBodyFont, kSheetContentWidthMm - kFieldLabelWidthMm);
+        const auto [label, value] = field(f);
         const double h = std::max(label.height(), value.height()) + kRowPadMm;
         need(h);
         show(label, kSheetMarginMm, y_, kMuted);

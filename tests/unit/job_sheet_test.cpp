@@ -164,7 +164,7 @@ TEST(JobSheet, NoPartsSectionsWithoutTheCoresParts) {
 TEST(JobSheet, PartsThroughTheSeamNumberTheDrawing) {
     Checked c = sheet_of("kerf_parts.esi", Lang::De);
     essi::SheetParts parts;
-    parts.groups.push_back({1, 2, 100, 50, 4800.25});
+    parts.groups.push_back({1, 2, 100, 50, 4800.26});
     parts.groups.push_back({2, 1, 30, 30, 706.86});
     parts.parts = {{1, {10, 10}}, {1, {130, 10}}, {2, {60, 80}}};
     parts.plates.push_back({1, 3000, 1500, 0.734, essi::Box{2000, 0, 3000, 1500, false}});
