@@ -148,14 +148,17 @@ SheetTable table_of(std::initializer_list<Msg> columns, Lang lang) {
     t.numeric.assign(t.columns.size(), true);
     return t;
 }
+void add_row(SheetTable& t, std::vector<std::string> cells, std::optional<Severity> severity = std::nullopt) {
+    t.rows.push_back(std::move(cells));
+    t.row_severity.push_back(severity);
+}
 
 SheetSection parts_section(const SheetParts& parts, Lang lang) {
     SheetSection s = fields_section("parts", Msg::SheetParts, lang);
     SheetTable t = table_of({Msg::SheetPartGroup, Msg::SheetPartCount, Msg::SheetPartSize, Msg::SheetPartArea}, lang);
     for (const SheetPartGroup& g : parts.groups) {
-        t.rows.push_back({std::to_string(g.number), std::to_string(g.count), size_text(g.width_mm, g.height_mm),
-                          fixed_text(g.area_mm2, 1) + " mm²"});
-        t.row_severity.emplace_back();
+        add_row(t, {std::to_string(g.number), std::to_string(g.count), size_text(g.width_mm, g.height_mm),
+                    fixed_text(g.area_mm2, 1) + " mm²"});
     }
     s.table = std::move(t);
     return s;
@@ -168,9 +171,8 @@ SheetSection plates_section(const SheetParts& parts, Lang lang) {
         const std::string remnant = p.remnant && !p.remnant->empty
                                         ? size_text(p.remnant->max_x - p.remnant->min_x, p.remnant->max_y - p.remnant->min_y)
                                         : std::string(text(Msg::StatsNone, lang));
-        t.rows.push_back({std::to_string(p.number), size_text(p.width_mm, p.height_mm),
-                          fixed_text(100 * p.utilisation, 1) + " %", remnant});
-        t.row_severity.emplace_back();
+        add_row(t, {std::to_string(p.number), size_text(p.width_mm, p.height_mm), fixed_text(100 * p.utilisation, 1) + " %",
+                    remnant});
     }
     s.table = std::move(t);
     return s;
@@ -205,9 +207,10 @@ SheetSection diagnostics_section(const CheckResult& result, Lang lang) {
     SheetTable t = table_of({Msg::SheetSeverity, Msg::SheetCode, Msg::SheetLine, Msg::SheetMessage}, lang);
     t.numeric = {false, false, true, false};
     for (const Diagnostic& d : result.diagnostics) {
-        t.rows.push_back({std::string(severity_text(d.severity, lang)), code_name(d.code),
-                          d.line > 0 ? std::to_string(d.line) : std::string(), diagnostic_message(d, lang)});
-        t.row_severity.emplace_back(d.severity);
+        add_row(t,
+                {std::string(severity_text(d.severity, lang)), code_name(d.code),
+                 d.line > 0 ? std::to_string(d.line) : std::string(), diagnostic_message(d, lang)},
+                d.severity);
     }
     if (!t.rows.empty()) s.table = std::move(t);
     if (result.omitted() > 0)
@@ -224,7 +227,7 @@ std::vector<SheetLegendEntry> legend_of(const SheetDrawing& d, Lang lang) {
     for (const auto& [kind, word] : kinds)
         if (!d.paths[static_cast<std::size_t>(kind)].empty())
             legend.push_back({SheetLegendEntry::Sample::Stroke, std::string(text(word, lang)), kind});
-    if (!d.pierces.empty()) legend.push_back({SheetLegendEntry::Sample::Pierce, std::string(text(Msg::UiPierce, lang))});
+    if (!d.pierces.empty()) legend.push_back({SheetLegendEntry::Sample::Pierce, std::string(text(Msg::SheetPierceKey, lang))});
     for (const Severity sev : {Severity::Error, Severity::Warning, Severity::Note}) {
         const bool marked = std::any_of(d.marks.begin(), d.marks.end(),
                                         [sev](const SheetDrawing::Mark& m) { return m.severity == sev; });

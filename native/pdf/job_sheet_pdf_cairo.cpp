@@ -188,6 +188,8 @@ private:
     [[nodiscard]] double legend_height() const;
     void legend();
     void legend_sample(const SheetLegendEntry& e, double x, double y);
+    void set_stroke(const SheetStroke& s);
+    void pierce(Point c);
     void mark(Point c, Severity s);
     void label(Point c, const std::string& s);
     void note(const std::string& s);
@@ -365,12 +367,7 @@ void Pages::draw_motions(double x0, double y0) {
     cairo_set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
     cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
     for (const MotionKind kind : kSheetDrawOrder) {
-        const SheetStroke s = sheet_stroke(kind);
-        const Rgb c = rgb(s.color);
-        cairo_set_source_rgb(cr_, c.r, c.g, c.b);
-        cairo_set_line_width(cr_, s.width_mm);
-        const double dashes[] = {s.dash_mm, s.dash_mm};
-        cairo_set_dash(cr_, dashes, s.dash_mm > 0 ? 2 : 0, 0);
+        set_stroke(sheet_stroke(kind));
         for (const std::vector<Point>& line : d.paths[static_cast<std::size_t>(kind)]) {
             if (line.size() < 2) continue;
             for (std::size_t i = 0; i < line.size(); ++i) {
@@ -381,15 +378,27 @@ void Pages::draw_motions(double x0, double y0) {
         }
     }
     cairo_set_dash(cr_, nullptr, 0, 0);
-    const Rgb pierce = rgb(kSvgPierceColor);
-    cairo_set_source_rgb(cr_, pierce.r, pierce.g, pierce.b);
-    cairo_set_line_width(cr_, 0.2);
     for (const Point& p : d.pierces) {
         const Point c = d.to_paper(p);
-        cairo_new_sub_path(cr_);
-        cairo_arc(cr_, x0 + c.x, y0 + c.y, kSheetPierceRadiusMm, 0, 2 * G_PI);
-        cairo_stroke(cr_);
+        pierce({x0 + c.x, y0 + c.y});
     }
+}
+
+void Pages::set_stroke(const SheetStroke& s) {
+    const Rgb c = rgb(s.color);
+    cairo_set_source_rgb(cr_, c.r, c.g, c.b);
+    cairo_set_line_width(cr_, s.width_mm);
+    const double dashes[] = {s.dash_mm, s.dash_mm};
+    cairo_set_dash(cr_, dashes, s.dash_mm > 0 ? 2 : 0, 0);
+}
+
+void Pages::pierce(Point c) {
+    const Rgb color = rgb(kSvgPierceColor);
+    cairo_set_source_rgb(cr_, color.r, color.g, color.b);
+    cairo_set_line_width(cr_, 0.2);
+    cairo_new_sub_path(cr_);
+    cairo_arc(cr_, c.x, c.y, kSheetPierceRadiusMm, 0, 2 * G_PI);
+    cairo_stroke(cr_);
 }
 
 void Pages::draw_marks(double x0, double y0) {
@@ -471,28 +480,14 @@ void Pages::legend_sample(const SheetLegendEntry& e, double x, double y) {
     if (!draw_) return;
     const Point centre{x + kSampleWidthMm / 2, y + kSampleHeightMm / 2};
     switch (e.sample) {
-        case SheetLegendEntry::Sample::Stroke: {
-            const SheetStroke s = sheet_stroke(e.kind);
-            const Rgb c = rgb(s.color);
-            cairo_set_source_rgb(cr_, c.r, c.g, c.b);
-            cairo_set_line_width(cr_, s.width_mm);
-            const double dashes[] = {s.dash_mm, s.dash_mm};
-            cairo_set_dash(cr_, dashes, s.dash_mm > 0 ? 2 : 0, 0);
+        case SheetLegendEntry::Sample::Stroke:
+            set_stroke(sheet_stroke(e.kind));
             cairo_move_to(cr_, x + 0.5, centre.y);
             cairo_line_to(cr_, x + kSampleWidthMm - 0.5, centre.y);
             cairo_stroke(cr_);
             cairo_set_dash(cr_, nullptr, 0, 0);
             break;
-        }
-        case SheetLegendEntry::Sample::Pierce: {
-            const Rgb c = rgb(kSvgPierceColor);
-            cairo_set_source_rgb(cr_, c.r, c.g, c.b);
-            cairo_set_line_width(cr_, 0.2);
-            cairo_new_sub_path(cr_);
-            cairo_arc(cr_, centre.x, centre.y, kSheetPierceRadiusMm, 0, 2 * G_PI);
-            cairo_stroke(cr_);
-            break;
-        }
+        case SheetLegendEntry::Sample::Pierce: pierce(centre); break;
         case SheetLegendEntry::Sample::Mark: mark(centre, e.severity); break;
         case SheetLegendEntry::Sample::Label: label(centre, "1"); break;
     }
