@@ -2,19 +2,17 @@
 // orientation, the coordinates, the language, the tape's name and verdict, the message. Items that do not fit in
 // the window's width (German is longer; a 1024 px screen) go, in their order, into the overflow menu (») at the end
 // of the bar, where they work as in the bar (docs/viewer.md, "Languages").
-#include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <array>
 #include <initializer_list>
 #include <vector>
 
-#include "app/App.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
+#include "app/Language.hpp"
 #include "essi/dialect.hpp"
 #include "essi/profile.hpp"
-#include "platform/Platform.hpp"
 #include "render/UiFonts.hpp"
 
 namespace essi::viewer::panels {
@@ -56,21 +54,23 @@ void tooltip(Msg tip) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(tip));
 }
 
-std::string profile_shown(const App& app) {
+using Parts = Panels::Parts;
+
+std::string profile_shown(const Session& session) {
     // "auto: woyda" while the tape's evidence chose the dialect
-    const Document* doc = app.document();
-    return app.profile_name() == kAutoProfile && doc ? "auto: " + doc->profile.name : app.profile_name();
+    const Document* doc = session.document();
+    return session.profile_name() == kAutoProfile && doc ? "auto: " + doc->profile.name : session.profile_name();
 }
 
-std::vector<std::string> profile_choices(const App& app) {
+std::vector<std::string> profile_choices(const Session& session) {
     std::vector<std::string> names{std::string(kAutoProfile)};
     for (const std::string& n : builtin_profile_names()) names.push_back(n);
-    if (app.dropped_profile()) names.push_back(app.dropped_profile()->name);  // (a profile file dropped on the page)
+    if (session.dropped_profile()) names.push_back(session.dropped_profile()->name);  // (a profile file dropped on the page)
     return names;
 }
 
-Msg compare_label(const App& app) {
-    return app.compare() ? Msg::UiEndCompare : app.compare_pending() ? Msg::UiCompareDropB : Msg::UiCompare;
+Msg compare_label(const CompareMode& compare) {
+    return compare.result() ? Msg::UiEndCompare : compare.pending() ? Msg::UiCompareDropB : Msg::UiCompare;
 }
 
 // The tape's name and "ok" or its error and warning counts.
@@ -81,7 +81,7 @@ std::string verdict_text(const Document& doc) {
     return tr(Msg::UiVerdictErrors, {e, w});
 }
 
-float item_width(App& app, Item item) {
+float item_width(const Parts& p, Item item) {
     switch (item) {
         case Item::Open: return button_width(tr(Msg::UiOpen));
         case Item::Paste: return button_width(tr(Msg::UiPaste));
@@ -91,10 +91,10 @@ float item_width(App& app, Item item) {
         case Item::Measure: return checkbox_width(tr(Msg::UiMeasure));
         case Item::Help: return button_width(tr(Msg::UiHelp));
         case Item::Panels: return button_width(tr(Msg::UiPanels));
-        case Item::Compare: return button_width(tr(compare_label(app)));
+        case Item::Compare: return button_width(tr(compare_label(p.compare)));
         case Item::Profile: {
-            float w = combo_width({profile_shown(app)});
-            for (const std::string& n : profile_choices(app)) w = std::max(w, combo_width({n}));
+            float w = combo_width({profile_shown(p.session)});
+            for (const std::string& n : profile_choices(p.session)) w = std::max(w, combo_width({n}));
             return w;
         }
         case Item::Orientation:
@@ -103,7 +103,7 @@ float item_width(App& app, Item item) {
         case Item::Language:
             return combo_width({lang_native_name(Lang::En), lang_native_name(Lang::De), lang_native_name(Lang::Zh)});
         case Item::Verdict: {
-            const Document* doc = app.document();
+            const Document* doc = p.session.document();
             if (!doc) return 0;
             return text_width(doc->name.c_str()) + ImGui::GetStyle().ItemSpacing.x + text_width(verdict_text(*doc).c_str());
         }
@@ -112,7 +112,7 @@ float item_width(App& app, Item item) {
 }
 
 // Downloads: the tape as ESSI, EIA or G-code (essi convert), its drawing as DXF, its report, the view.
-void export_menu(App& app) {
+void export_menu(Exports& exports) {
     if (!ImGui::BeginPopup("export")) return;
     // (format names are no words: they stay as they are)
     const std::pair<std::string, const char*> formats[] = {
@@ -125,97 +125,98 @@ void export_menu(App& app) {
         {tr(Msg::UiExportProblemsCsv), "report-csv"},
         {tr(Msg::UiExportViewSvg), "view-svg"}};
     for (const auto& [label, format] : formats)
-        if (ImGui::Selectable(label.c_str())) app.export_file(format);
-    if (ImGui::Selectable(tr(Msg::UiExportViewPng))) app.export_view_png();
+        if (ImGui::Selectable(label.c_str())) exports.export_file(format);
+    if (ImGui::Selectable(tr(Msg::UiExportViewPng))) exports.export_view_png();
     ImGui::EndPopup();
 }
 
 // The side panels: shown or hidden ([ and ]), the theme, the problems-only view (P), the widths back to their defaults.
-void panels_menu(App& app) {
+void panels_menu(Preferences& preferences, const PanelLayout& layout) {
     if (!ImGui::BeginPopup("panels")) return;
-    PanelLayout l = app.ui().layout;
+    PanelLayout l = layout;
     bool changed = ImGui::Checkbox((std::string(tr(Msg::UiPanelLeft)) + "  [###left").c_str(), &l.left_shown);
     changed |= ImGui::Checkbox((std::string(tr(Msg::UiPanelRight)) + "  ]###right").c_str(), &l.right_shown);
-    bool light = app.light_theme();
-    if (ImGui::Checkbox(tr_id(Msg::UiLightTheme, "light").c_str(), &light)) app.set_light_theme(light);
-    bool problems = app.problems_only();
+    bool light = preferences.light_theme();
+    if (ImGui::Checkbox(tr_id(Msg::UiLightTheme, "light").c_str(), &light)) preferences.set_light_theme(light);
+    bool problems = preferences.problems_only();
     if (ImGui::Checkbox((std::string(tr(Msg::UiProblemsOnly)) + "  P###problems").c_str(), &problems))
-        app.set_problems_only(problems);
+        preferences.set_problems_only(problems);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiProblemsOnlyTip));
     if (ImGui::Selectable(tr_id(Msg::UiDefaultLayout, "default").c_str())) {
         l = PanelLayout{};
         changed = true;
     }
-    if (changed) app.set_layout(l);
+    if (changed) preferences.set_layout(l);
     ImGui::EndPopup();
 }
 
 // One item, in the bar or in the overflow menu (the same widgets). True when a button did what it does (the menu
 // closes then).
-bool draw_item(App& app, Item item, float width) {
+bool draw_item(const Parts& p, Item item, float width) {
     switch (item) {
         case Item::Open: {
             const bool clicked = ImGui::Button(tr_id(Msg::UiOpen, "open").c_str());
-            if (clicked) platform::open_file_dialog(app);
+            if (clicked) p.platform.open_file_dialog();
             // (the page opens the file picker in the click on this rectangle: FilesEmscripten.cpp)
-            platform::open_button_at(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+            p.platform.open_button_at(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
                                      ImGui::GetItemRectSize().y);
             tooltip(Msg::UiOpenTip);
             return clicked;
         }
         case Item::Paste: {
             const bool clicked = ImGui::Button(tr_id(Msg::UiPaste, "paste").c_str());
-            if (clicked) platform::paste(app);
+            if (clicked) p.platform.paste();
             tooltip(Msg::UiPasteTip);
             return clicked;
         }
         case Item::Share: {
             const bool clicked = ImGui::Button(tr_id(Msg::UiShareLink, "share").c_str());
-            if (clicked) app.share();
+            if (clicked) p.shares.share();
             tooltip(Msg::UiShareTip);
             return clicked;
         }
         case Item::Export:
             if (ImGui::Button(tr_id(Msg::UiExport, "export").c_str())) ImGui::OpenPopup("export");
             tooltip(Msg::UiExportTip);
-            export_menu(app);
+            export_menu(p.exports);
             return false;
         case Item::Fit: {
             const bool clicked = ImGui::Button(tr_id(Msg::UiFit, "fit").c_str());
-            if (clicked) app.fit();
+            if (clicked) p.navigation.fit();
             tooltip(Msg::UiFitTip);
             return clicked;
         }
         case Item::Measure: {
-            Measure& measure = app.input().measure;
+            Measure& measure = p.measure;
             const bool clicked = ImGui::Checkbox(tr_id(Msg::UiMeasure, "measure").c_str(), &measure.active);
             if (clicked) measure.points = 0;
             return clicked;
         }
         case Item::Help: {
             const bool clicked = ImGui::Button(tr_id(Msg::UiHelp, "help").c_str());
-            if (clicked) app.ui().help = !app.ui().help;
+            if (clicked) p.ui.help = !p.ui.help;
             return clicked;
         }
         case Item::Panels:
             if (ImGui::Button(tr_id(Msg::UiPanels, "panels").c_str())) ImGui::OpenPopup("panels");
             tooltip(Msg::UiPanelsTip);
-            panels_menu(app);
+            panels_menu(p.preferences, p.ui.layout);
             return false;
         case Item::Compare: {
-            const bool clicked = ImGui::Button(tr_id(compare_label(app), "compare").c_str());
+            const bool clicked = ImGui::Button(tr_id(compare_label(p.compare), "compare").c_str());
             if (clicked) {
-                if (app.compare()) app.end_compare();
-                else app.begin_compare();
+                if (p.compare.result()) p.compare.end();
+                else p.compare.begin(p.session.document());
             }
             tooltip(Msg::UiCompareTip);
             return clicked;
         }
         case Item::Profile: {
             ImGui::SetNextItemWidth(width);
-            if (ImGui::BeginCombo("##profile", profile_shown(app).c_str())) {
-                for (const std::string& n : profile_choices(app))
-                    if (ImGui::Selectable(n.c_str(), n == app.profile_name()) && n != app.profile_name()) app.set_profile(n);
+            if (ImGui::BeginCombo("##profile", profile_shown(p.session).c_str())) {
+                for (const std::string& n : profile_choices(p.session))
+                    if (ImGui::Selectable(n.c_str(), n == p.session.profile_name()) && n != p.session.profile_name())
+                        p.session.set_profile(n);
                 ImGui::EndCombo();
             }
             tooltip(Msg::UiProfileTip);
@@ -223,12 +224,12 @@ bool draw_item(App& app, Item item, float width) {
         }
         case Item::Orientation: {
             // The machine's view orientation (View::turns): where the tape's +x points on the screen; kept.
-            const int turns = app.view().turns;
+            const int turns = p.navigation.view().turns;
             ImGui::SetNextItemWidth(width);
             if (ImGui::BeginCombo("##orientation", tr(kOrientations[static_cast<std::size_t>(turns)]))) {
                 for (int q = 0; q < 4; ++q)
                     if (ImGui::Selectable(tr(kOrientations[static_cast<std::size_t>(q)]), q == turns) && q != turns)
-                        app.set_orientation(q);
+                        p.navigation.set_orientation(q);
                 ImGui::EndCombo();
             }
             tooltip(Msg::UiOrientTip);
@@ -236,31 +237,31 @@ bool draw_item(App& app, Item item, float width) {
         }
         case Item::Coordinates: {
             // Program or machine coordinates (Coordinates): the numbers, the grid and the drawing's turn; kept.
-            const int machine = app.machine_coordinates() ? 1 : 0;
+            const int machine = p.navigation.machine_coordinates() ? 1 : 0;
             ImGui::SetNextItemWidth(width);
             if (ImGui::BeginCombo("##coordinates", tr(kCoordinates[static_cast<std::size_t>(machine)]))) {
                 for (int k = 0; k < 2; ++k)
                     if (ImGui::Selectable(tr(kCoordinates[static_cast<std::size_t>(k)]), k == machine) && k != machine)
-                        app.set_machine_coordinates(k == 1);
+                        p.navigation.set_machine_coordinates(k == 1);
                 ImGui::EndCombo();
             }
             tooltip(Msg::UiCoordinatesTip);
             return false;
         }
         case Item::Language: {
-            // Each language by its own name; kept across sessions (App::set_language).
-            const Lang now = app.language();
+            // Each language by its own name; kept across sessions (Preferences::set_language).
+            const Lang now = p.preferences.language();
             ImGui::SetNextItemWidth(width);
             if (ImGui::BeginCombo("##language", std::string(lang_native_name(now)).c_str())) {
                 for (const Lang l : kLanguages)
-                    if (ImGui::Selectable(std::string(lang_native_name(l)).c_str(), l == now) && l != now) app.set_language(l);
+                    if (ImGui::Selectable(std::string(lang_native_name(l)).c_str(), l == now) && l != now) p.preferences.set_language(l);
                 ImGui::EndCombo();
             }
             tooltip(Msg::UiLanguageTip);
             return false;
         }
         case Item::Verdict: {
-            const Document* doc = app.document();
+            const Document* doc = p.session.document();
             if (!doc) return false;
             ImGui::TextUnformatted(doc->name.c_str());
             ImGui::SameLine();
@@ -274,28 +275,26 @@ bool draw_item(App& app, Item item, float width) {
 }
 
 // Draws one item in a group and notes where it is (state().toolbar).
-bool placed_item(App& app, const ItemInfo& info, float width, bool in_menu) {
+bool placed_item(const Parts& p, const ItemInfo& info, float width, bool in_menu) {
     ImGui::BeginGroup();
-    const bool acted = draw_item(app, info.item, width);
+    const bool acted = draw_item(p, info.item, width);
     ImGui::EndGroup();
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    app.ui().toolbar.push_back({info.id, Rect{a.x, a.y, b.x - a.x, b.y - a.y}, in_menu});
+    p.ui.toolbar.push_back({info.id, Rect{a.x, a.y, b.x - a.x, b.y - a.y}, in_menu});
     return acted;
 }
 
-// The message (App::notify): in the bar when it fits after the items (which end at `bar_end`), else over the top
-// of the drawing.
-void message(App& app, float bar_end, float right) {
-    const UiState& ui = app.ui();
-    if (ui.message.empty() || glfwGetTime() >= ui.message_until) return;
-    const std::string text = ui.message.text();
+// The message (Notices): in the bar when it fits after the items (which end at `bar_end`), else over the top of
+// the drawing area `area`.
+void message(const Notices& notices, const Rect& area, float bar_end, float right) {
+    if (!notices.shown()) return;
+    const std::string text = notices.message().text();
     const float gap = ImGui::GetStyle().ItemSpacing.x * 2;
     if (bar_end + gap + text_width(text.c_str()) <= right) {
         ImGui::SameLine(0, gap);
         ImGui::TextColored(to_vec4(kMessageColor), "%s", text.c_str());
         return;
     }
-    const Rect& area = app.view().area;
     ImGui::SetNextWindowPos(ImVec2(area.x + area.w / 2, area.y + 8), ImGuiCond_Always, ImVec2(0.5f, 0.f));
     ImGui::Begin("##toolbar message", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
@@ -308,23 +307,23 @@ void message(App& app, float bar_end, float right) {
 
 }  // namespace
 
-void toolbar(App& app) {
+void Panels::toolbar() {
     ImGuiIO& io = ImGui::GetIO();
     const ImGuiStyle& style = ImGui::GetStyle();
-    ui_fonts().require_glyphs(lang_native_name(Lang::Zh));  // (the language switch names 中文 in every language)
+    p_.fonts.require_glyphs(lang_native_name(Lang::Zh));  // (the language switch names 中文 in every language)
     ImGui::SetNextWindowPos(ImVec2(0, 0));
     ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, kToolbarHeight));
     ImGui::Begin("##toolbar", nullptr, kPanelFlags | ImGuiWindowFlags_NoDecoration);
-    UiState& ui = app.ui();
+    UiState& ui = p_.ui;
     ui.toolbar.clear();
     ui.toolbar_more = Rect{0, 0, 0, 0};
 
     // How many items fit in the bar, in their order (with room for the overflow button when some do not).
     std::vector<ItemInfo> items(std::begin(kItems), std::end(kItems));
-    if (!app.document()) std::erase_if(items, [](const ItemInfo& i) { return i.item == Item::Verdict; });
+    if (!p_.session.document()) std::erase_if(items, [](const ItemInfo& i) { return i.item == Item::Verdict; });
     const std::size_t n = items.size();
     std::vector<float> widths(n);
-    for (std::size_t k = 0; k < n; ++k) widths[k] = item_width(app, items[k].item);
+    for (std::size_t k = 0; k < n; ++k) widths[k] = item_width(p_, items[k].item);
     const float right = io.DisplaySize.x - style.WindowPadding.x;
     const float more_w = button_width(kMoreLabel);
     const auto row_end = [&](std::size_t count) {  // where `count` items end
@@ -339,7 +338,7 @@ void toolbar(App& app) {
     float bar_end = style.WindowPadding.x;
     for (std::size_t k = 0; k < fit; ++k) {
         if (k > 0) ImGui::SameLine();
-        placed_item(app, items[k], widths[k], false);
+        placed_item(p_, items[k], widths[k], false);
         bar_end = ImGui::GetItemRectMax().x;
     }
     ui.toolbar_menu_open = false;
@@ -356,14 +355,14 @@ void toolbar(App& app) {
                 ui.toolbar.push_back({items[k].id, Rect{0, 0, 0, 0}, true});
                 continue;
             }
-            if (placed_item(app, items[k], widths[k], true)) ImGui::CloseCurrentPopup();
+            if (placed_item(p_, items[k], widths[k], true)) ImGui::CloseCurrentPopup();
         }
         if (open) {
             ui.toolbar_menu_open = true;
             ImGui::EndPopup();
         }
     }
-    message(app, bar_end, right);
+    message(p_.notices, p_.navigation.view().area, bar_end, right);
     ImGui::End();
 }
 
