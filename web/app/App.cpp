@@ -21,10 +21,11 @@ App::App(PlatformServices& platform)
       exports_(session_, navigation_, notices_, platform),
       shares_(session_, navigation_, notices_, ui_, platform),
       input_({session_, navigation_, layers_, playback_, measure_, shares_, preferences_, ui_, platform}),
-      panels_({session_, load_, navigation_, layers_, playback_, measure_, compare_, comments_, exports_, shares_,
-               preferences_, notices_, ui_, fonts_, renderer_, scene_, platform, graphics_ok_}),
-      automation_({session_, load_, navigation_, layers_, playback_, measure_, compare_, comments_, exports_, shares_,
-                   preferences_, notices_, ui_, fonts_, renderer_, ui_renderer_, scene_}) {}
+      parts_{session_,  load_,      navigation_, layers_,   playback_,    measure_, compare_,
+             comments_, exports_,   shares_,     preferences_, notices_,  ui_,       fonts_,
+             renderer_, ui_renderer_, scene_,    platform,     graphics_ok_},
+      panels_(parts_),
+      automation_(parts_) {}
 
 bool App::init_graphics() {
     fonts_.update(framebuffer_scale());  // (the atlas, before ui_renderer_ uploads it)

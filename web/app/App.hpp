@@ -33,6 +33,7 @@
 #include "app/Session.hpp"
 #include "app/ShareLinks.hpp"
 #include "app/UiState.hpp"
+#include "app/ViewerParts.hpp"
 #include "app/panels/Panels.hpp"
 #include "render/Renderer.hpp"
 #include "render/UiFonts.hpp"
@@ -91,6 +92,7 @@ private:
     Exports exports_;
     ShareLinks shares_;
     Input input_;
+    ViewerParts parts_;  // (what the panels and the page's API are given)
     panels::Panels panels_;
     Automation automation_;
     Selection announced_;  // the selection the page last heard of (PlatformServices::selection_changed)

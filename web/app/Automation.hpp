@@ -11,50 +11,15 @@
 #include <string_view>
 #include <vector>
 
-#include "app/CommentText.hpp"
-#include "app/Compare.hpp"
-#include "app/Exports.hpp"
-#include "app/Layers.hpp"
-#include "app/LoadController.hpp"
-#include "app/Measure.hpp"
-#include "app/Navigation.hpp"
-#include "app/Notices.hpp"
-#include "app/Playback.hpp"
-#include "app/Preferences.hpp"
-#include "app/SceneAssembly.hpp"
-#include "app/Session.hpp"
-#include "app/ShareLinks.hpp"
-#include "app/UiState.hpp"
+#include "app/ViewerParts.hpp"
 #include "essi/share_link.hpp"
 #include "essi/text_encoding.hpp"
-#include "render/Renderer.hpp"
-#include "render/UiFonts.hpp"
-#include "render/UiRenderer.hpp"
 
 namespace essi::viewer {
 
 class Automation {
 public:
-    // What the page reads and changes.
-    struct Parts {
-        Session& session;
-        const LoadController& load;
-        Navigation& navigation;
-        Layers& layers;
-        Playback& playback;
-        const Measure& measure;
-        CompareMode& compare;
-        CommentText& comments;
-        Exports& exports;
-        ShareLinks& shares;
-        Preferences& preferences;
-        const Notices& notices;
-        UiState& ui;
-        UiFonts& fonts;
-        const Renderer& renderer;
-        const UiRenderer& ui_renderer;
-        const SceneAssembly& scene;
-    };
+    using Parts = ViewerParts;
     explicit Automation(const Parts& parts) : p_(parts) {}
 
     // --- What the page reads (AutomationState.cpp) ---

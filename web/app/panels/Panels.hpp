@@ -7,50 +7,14 @@
 
 #include <imgui.h>
 
-#include "app/CommentText.hpp"
-#include "app/Compare.hpp"
-#include "app/Exports.hpp"
-#include "app/Layers.hpp"
-#include "app/LoadController.hpp"
-#include "app/Measure.hpp"
-#include "app/Navigation.hpp"
-#include "app/Notices.hpp"
-#include "app/Playback.hpp"
-#include "app/PlatformServices.hpp"
-#include "app/Preferences.hpp"
-#include "app/SceneAssembly.hpp"
-#include "app/Session.hpp"
-#include "app/ShareLinks.hpp"
-#include "app/UiState.hpp"
+#include "app/ViewerParts.hpp"
 #include "app/panels/Layout.hpp"
-#include "render/Renderer.hpp"
-#include "render/UiFonts.hpp"
 
 namespace essi::viewer::panels {
 
 class Panels {
 public:
-    // What the panels show and change.
-    struct Parts {
-        Session& session;
-        const LoadController& load;
-        Navigation& navigation;
-        Layers& layers;
-        Playback& playback;
-        Measure& measure;
-        CompareMode& compare;
-        CommentText& comments;
-        Exports& exports;
-        ShareLinks& shares;
-        Preferences& preferences;
-        const Notices& notices;
-        UiState& ui;
-        UiFonts& fonts;
-        const Renderer& renderer;
-        const SceneAssembly& scene;
-        PlatformServices& platform;
-        const bool& graphics_ok;  // the drawing programs compiled
-    };
+    using Parts = ViewerParts;
     explicit Panels(const Parts& parts) : p_(parts) {}
 
     // A frame's panels (between ImGui::NewFrame and ImGui::Render).

@@ -150,126 +150,124 @@ void panels_menu(Preferences& preferences, const PanelLayout& layout) {
     ImGui::EndPopup();
 }
 
+// A button with its tooltip (none: Msg::None); true when it was clicked.
+bool button(Msg label, const char* id, Msg tip) {
+    const bool clicked = ImGui::Button(tr_id(label, id).c_str());
+    if (tip != Msg::None) tooltip(tip);
+    return clicked;
+}
+
+bool open_button(PlatformServices& platform) {
+    const bool clicked = ImGui::Button(tr_id(Msg::UiOpen, "open").c_str());
+    if (clicked) platform.open_file_dialog();
+    // (the page opens the file picker in the click on this rectangle: FilesEmscripten.cpp)
+    platform.open_button_at(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                            ImGui::GetItemRectSize().y);
+    tooltip(Msg::UiOpenTip);
+    return clicked;
+}
+
+void profile_combo(Session& session, float width) {
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::BeginCombo("##profile", profile_shown(session).c_str())) {
+        for (const std::string& n : profile_choices(session))
+            if (ImGui::Selectable(n.c_str(), n == session.profile_name()) && n != session.profile_name()) session.set_profile(n);
+        ImGui::EndCombo();
+    }
+    tooltip(Msg::UiProfileTip);
+}
+
+// The machine's view orientation (View::turns): where the tape's +x points on the screen; kept.
+void orientation_combo(Navigation& navigation, float width) {
+    const int turns = navigation.view().turns;
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::BeginCombo("##orientation", tr(kOrientations[static_cast<std::size_t>(turns)]))) {
+        for (int q = 0; q < 4; ++q)
+            if (ImGui::Selectable(tr(kOrientations[static_cast<std::size_t>(q)]), q == turns) && q != turns)
+                navigation.set_orientation(q);
+        ImGui::EndCombo();
+    }
+    tooltip(Msg::UiOrientTip);
+}
+
+// Program or machine coordinates (Coordinates): the numbers, the grid and the drawing's turn; kept.
+void coordinates_combo(Navigation& navigation, float width) {
+    const int machine = navigation.machine_coordinates() ? 1 : 0;
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::BeginCombo("##coordinates", tr(kCoordinates[static_cast<std::size_t>(machine)]))) {
+        for (int k = 0; k < 2; ++k)
+            if (ImGui::Selectable(tr(kCoordinates[static_cast<std::size_t>(k)]), k == machine) && k != machine)
+                navigation.set_machine_coordinates(k == 1);
+        ImGui::EndCombo();
+    }
+    tooltip(Msg::UiCoordinatesTip);
+}
+
+// Each language by its own name; kept across sessions (Preferences::set_language).
+void language_combo(Preferences& preferences, float width) {
+    const Lang now = preferences.language();
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::BeginCombo("##language", std::string(lang_native_name(now)).c_str())) {
+        for (const Lang l : kLanguages)
+            if (ImGui::Selectable(std::string(lang_native_name(l)).c_str(), l == now) && l != now) preferences.set_language(l);
+        ImGui::EndCombo();
+    }
+    tooltip(Msg::UiLanguageTip);
+}
+
+void verdict(const Document* doc) {
+    if (!doc) return;
+    ImGui::TextUnformatted(doc->name.c_str());
+    ImGui::SameLine();
+    const std::size_t e = doc->count(Severity::Error), w = doc->count(Severity::Warning);
+    const ImVec4 colour = e > 0 ? severity_color(Severity::Error) : w > 0 ? severity_color(Severity::Warning) : to_vec4(kOkColor);
+    ImGui::TextColored(colour, "%s", verdict_text(*doc).c_str());
+}
+
 // One item, in the bar or in the overflow menu (the same widgets). True when a button did what it does (the menu
 // closes then).
 bool draw_item(const Parts& p, Item item, float width) {
     switch (item) {
-        case Item::Open: {
-            const bool clicked = ImGui::Button(tr_id(Msg::UiOpen, "open").c_str());
-            if (clicked) p.platform.open_file_dialog();
-            // (the page opens the file picker in the click on this rectangle: FilesEmscripten.cpp)
-            p.platform.open_button_at(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
-                                     ImGui::GetItemRectSize().y);
-            tooltip(Msg::UiOpenTip);
-            return clicked;
-        }
-        case Item::Paste: {
-            const bool clicked = ImGui::Button(tr_id(Msg::UiPaste, "paste").c_str());
-            if (clicked) p.platform.paste();
-            tooltip(Msg::UiPasteTip);
-            return clicked;
-        }
-        case Item::Share: {
-            const bool clicked = ImGui::Button(tr_id(Msg::UiShareLink, "share").c_str());
-            if (clicked) p.shares.share();
-            tooltip(Msg::UiShareTip);
-            return clicked;
-        }
+        case Item::Open: return open_button(p.platform);
+        case Item::Paste:
+            if (!button(Msg::UiPaste, "paste", Msg::UiPasteTip)) return false;
+            p.platform.paste();
+            return true;
+        case Item::Share:
+            if (!button(Msg::UiShareLink, "share", Msg::UiShareTip)) return false;
+            p.shares.share();
+            return true;
         case Item::Export:
-            if (ImGui::Button(tr_id(Msg::UiExport, "export").c_str())) ImGui::OpenPopup("export");
-            tooltip(Msg::UiExportTip);
+            if (button(Msg::UiExport, "export", Msg::UiExportTip)) ImGui::OpenPopup("export");
             export_menu(p.exports);
             return false;
-        case Item::Fit: {
-            const bool clicked = ImGui::Button(tr_id(Msg::UiFit, "fit").c_str());
-            if (clicked) p.navigation.fit();
-            tooltip(Msg::UiFitTip);
-            return clicked;
-        }
+        case Item::Fit:
+            if (!button(Msg::UiFit, "fit", Msg::UiFitTip)) return false;
+            p.navigation.fit();
+            return true;
         case Item::Measure: {
-            Measure& measure = p.measure;
-            const bool clicked = ImGui::Checkbox(tr_id(Msg::UiMeasure, "measure").c_str(), &measure.active);
-            if (clicked) measure.points = 0;
+            const bool clicked = ImGui::Checkbox(tr_id(Msg::UiMeasure, "measure").c_str(), &p.measure.active);
+            if (clicked) p.measure.points = 0;
             return clicked;
         }
-        case Item::Help: {
-            const bool clicked = ImGui::Button(tr_id(Msg::UiHelp, "help").c_str());
-            if (clicked) p.ui.help = !p.ui.help;
-            return clicked;
-        }
+        case Item::Help:
+            if (!button(Msg::UiHelp, "help", Msg::None)) return false;
+            p.ui.help = !p.ui.help;
+            return true;
         case Item::Panels:
-            if (ImGui::Button(tr_id(Msg::UiPanels, "panels").c_str())) ImGui::OpenPopup("panels");
-            tooltip(Msg::UiPanelsTip);
+            if (button(Msg::UiPanels, "panels", Msg::UiPanelsTip)) ImGui::OpenPopup("panels");
             panels_menu(p.preferences, p.ui.layout);
             return false;
-        case Item::Compare: {
-            const bool clicked = ImGui::Button(tr_id(compare_label(p.compare), "compare").c_str());
-            if (clicked) {
-                if (p.compare.result()) p.compare.end();
-                else p.compare.begin(p.session.document());
-            }
-            tooltip(Msg::UiCompareTip);
-            return clicked;
-        }
-        case Item::Profile: {
-            ImGui::SetNextItemWidth(width);
-            if (ImGui::BeginCombo("##profile", profile_shown(p.session).c_str())) {
-                for (const std::string& n : profile_choices(p.session))
-                    if (ImGui::Selectable(n.c_str(), n == p.session.profile_name()) && n != p.session.profile_name())
-                        p.session.set_profile(n);
-                ImGui::EndCombo();
-            }
-            tooltip(Msg::UiProfileTip);
-            return false;
-        }
-        case Item::Orientation: {
-            // The machine's view orientation (View::turns): where the tape's +x points on the screen; kept.
-            const int turns = p.navigation.view().turns;
-            ImGui::SetNextItemWidth(width);
-            if (ImGui::BeginCombo("##orientation", tr(kOrientations[static_cast<std::size_t>(turns)]))) {
-                for (int q = 0; q < 4; ++q)
-                    if (ImGui::Selectable(tr(kOrientations[static_cast<std::size_t>(q)]), q == turns) && q != turns)
-                        p.navigation.set_orientation(q);
-                ImGui::EndCombo();
-            }
-            tooltip(Msg::UiOrientTip);
-            return false;
-        }
-        case Item::Coordinates: {
-            // Program or machine coordinates (Coordinates): the numbers, the grid and the drawing's turn; kept.
-            const int machine = p.navigation.machine_coordinates() ? 1 : 0;
-            ImGui::SetNextItemWidth(width);
-            if (ImGui::BeginCombo("##coordinates", tr(kCoordinates[static_cast<std::size_t>(machine)]))) {
-                for (int k = 0; k < 2; ++k)
-                    if (ImGui::Selectable(tr(kCoordinates[static_cast<std::size_t>(k)]), k == machine) && k != machine)
-                        p.navigation.set_machine_coordinates(k == 1);
-                ImGui::EndCombo();
-            }
-            tooltip(Msg::UiCoordinatesTip);
-            return false;
-        }
-        case Item::Language: {
-            // Each language by its own name; kept across sessions (Preferences::set_language).
-            const Lang now = p.preferences.language();
-            ImGui::SetNextItemWidth(width);
-            if (ImGui::BeginCombo("##language", std::string(lang_native_name(now)).c_str())) {
-                for (const Lang l : kLanguages)
-                    if (ImGui::Selectable(std::string(lang_native_name(l)).c_str(), l == now) && l != now) p.preferences.set_language(l);
-                ImGui::EndCombo();
-            }
-            tooltip(Msg::UiLanguageTip);
-            return false;
-        }
-        case Item::Verdict: {
-            const Document* doc = p.session.document();
-            if (!doc) return false;
-            ImGui::TextUnformatted(doc->name.c_str());
-            ImGui::SameLine();
-            const std::size_t e = doc->count(Severity::Error), w = doc->count(Severity::Warning);
-            const ImVec4 colour = e > 0 ? severity_color(Severity::Error) : w > 0 ? severity_color(Severity::Warning) : to_vec4(kOkColor);
-            ImGui::TextColored(colour, "%s", verdict_text(*doc).c_str());
-            return false;
-        }
+        case Item::Compare:
+            if (!button(compare_label(p.compare), "compare", Msg::UiCompareTip)) return false;
+            if (p.compare.result()) p.compare.end();
+            else p.compare.begin(p.session.document());
+            return true;
+        case Item::Profile: profile_combo(p.session, width); return false;
+        case Item::Orientation: orientation_combo(p.navigation, width); return false;
+        case Item::Coordinates: coordinates_combo(p.navigation, width); return false;
+        case Item::Language: language_combo(p.preferences, width); return false;
+        case Item::Verdict: verdict(p.session.document()); return false;
     }
     return false;
 }
@@ -305,6 +303,45 @@ void message(const Notices& notices, const Rect& area, float bar_end, float righ
     ImGui::End();
 }
 
+// How many items fit in the bar, in their order (with room for the overflow button when some do not), the bar
+// ending at `right`.
+std::size_t items_that_fit(const std::vector<float>& widths, float right) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const auto row_end = [&](std::size_t count) {  // where `count` items end
+        float x = style.WindowPadding.x;
+        for (std::size_t k = 0; k < count; ++k) x += widths[k] + (k > 0 ? style.ItemSpacing.x : 0);
+        return x;
+    };
+    const std::size_t n = widths.size();
+    std::size_t fit = n;
+    if (row_end(n) > right)
+        while (fit > 0 && row_end(fit) + (fit > 0 ? style.ItemSpacing.x : 0) + button_width(kMoreLabel) > right) --fit;
+    return fit;
+}
+
+// The overflow button (») and its menu, with items [first, end); where the bar ends now.
+float overflow_menu(const Parts& p, const std::vector<ItemInfo>& items, const std::vector<float>& widths,
+                    std::size_t first) {
+    UiState& ui = p.ui;
+    if (ImGui::Button(kMoreLabel)) ImGui::OpenPopup("more");
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    ui.toolbar_more = Rect{a.x, a.y, b.x - a.x, b.y - a.y};
+    tooltip(Msg::UiMoreTip);
+    const bool open = ImGui::BeginPopup("more");
+    for (std::size_t k = first; k < items.size(); ++k) {
+        if (!open) {
+            ui.toolbar.push_back({items[k].id, Rect{0, 0, 0, 0}, true});
+            continue;
+        }
+        if (placed_item(p, items[k], widths[k], true)) ImGui::CloseCurrentPopup();
+    }
+    if (open) {
+        ui.toolbar_menu_open = true;
+        ImGui::EndPopup();
+    }
+    return b.x;
+}
+
 }  // namespace
 
 void Panels::toolbar() {
@@ -317,50 +354,23 @@ void Panels::toolbar() {
     UiState& ui = p_.ui;
     ui.toolbar.clear();
     ui.toolbar_more = Rect{0, 0, 0, 0};
+    ui.toolbar_menu_open = false;
 
-    // How many items fit in the bar, in their order (with room for the overflow button when some do not).
     std::vector<ItemInfo> items(std::begin(kItems), std::end(kItems));
     if (!p_.session.document()) std::erase_if(items, [](const ItemInfo& i) { return i.item == Item::Verdict; });
-    const std::size_t n = items.size();
-    std::vector<float> widths(n);
-    for (std::size_t k = 0; k < n; ++k) widths[k] = item_width(p_, items[k].item);
+    std::vector<float> widths(items.size());
+    for (std::size_t k = 0; k < items.size(); ++k) widths[k] = item_width(p_, items[k].item);
     const float right = io.DisplaySize.x - style.WindowPadding.x;
-    const float more_w = button_width(kMoreLabel);
-    const auto row_end = [&](std::size_t count) {  // where `count` items end
-        float x = style.WindowPadding.x;
-        for (std::size_t k = 0; k < count; ++k) x += widths[k] + (k > 0 ? style.ItemSpacing.x : 0);
-        return x;
-    };
-    std::size_t fit = n;
-    if (row_end(n) > right)
-        while (fit > 0 && row_end(fit) + (fit > 0 ? style.ItemSpacing.x : 0) + more_w > right) --fit;
-
+    const std::size_t fit = items_that_fit(widths, right);
     float bar_end = style.WindowPadding.x;
     for (std::size_t k = 0; k < fit; ++k) {
         if (k > 0) ImGui::SameLine();
         placed_item(p_, items[k], widths[k], false);
         bar_end = ImGui::GetItemRectMax().x;
     }
-    ui.toolbar_menu_open = false;
-    if (fit < n) {
+    if (fit < items.size()) {
         if (fit > 0) ImGui::SameLine();
-        if (ImGui::Button(kMoreLabel)) ImGui::OpenPopup("more");
-        const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-        ui.toolbar_more = Rect{a.x, a.y, b.x - a.x, b.y - a.y};
-        bar_end = b.x;
-        tooltip(Msg::UiMoreTip);
-        const bool open = ImGui::BeginPopup("more");
-        for (std::size_t k = fit; k < n; ++k) {
-            if (!open) {
-                ui.toolbar.push_back({items[k].id, Rect{0, 0, 0, 0}, true});
-                continue;
-            }
-            if (placed_item(p_, items[k], widths[k], true)) ImGui::CloseCurrentPopup();
-        }
-        if (open) {
-            ui.toolbar_menu_open = true;
-            ImGui::EndPopup();
-        }
+        bar_end = overflow_menu(p_, items, widths, fit);
     }
     message(p_.notices, p_.navigation.view().area, bar_end, right);
     ImGui::End();
