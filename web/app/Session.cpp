@@ -51,13 +51,13 @@ Session::Session(const Parts& parts)
     for (const std::string& name : recent_) fonts_.require_glyphs(name);
 }
 
-void Session::load(std::string name, std::string bytes, std::optional<ViewRequest> view) {
+void Session::load(std::string name, std::string bytes) {
     if (use_profile_file(name, bytes)) return;
     if (compare_.pending() && document()) return compare_with(std::move(name), bytes);
     compare_.forget();      // (a new tape: a comparison was of the one before)
     input_format_.reset();  // (a new tape: its content says what it is)
     link_problem_ = {};
-    read(std::move(name), std::move(bytes), view);
+    read(std::move(name), std::move(bytes), std::nullopt);
 }
 
 void Session::load_shared(std::string name, std::string bytes, const ShareLink& link) {

@@ -50,8 +50,8 @@ public:
 
     // --- Opening ---
     // A file's bytes: a profile file (`.json`: the tape is read again with it), the other revision in compare
-    // mode, or a tape to read. `view`, when given, replaces the fit at the end.
-    void load(std::string name, std::string bytes, std::optional<ViewRequest> view = std::nullopt);
+    // mode, or a tape to read.
+    void load(std::string name, std::string bytes);
     // A share link's tape, read as its sender read it: the link's profile (a built-in name, or the user profile it
     // carries) and input format (essi/share_link.hpp). The page applies the link's view after it.
     void load_shared(std::string name, std::string bytes, const ShareLink& link);
