@@ -102,7 +102,8 @@ void place_drawing(SheetDrawing& d, const Stats& stats) {
 std::string mm_unit(double v) { return mm_text(v) + " mm"; }
 std::string size_text(double w, double h) { return mm_text(w) + " x " + mm_text(h) + " mm"; }
 
-// The statistics that go under "Time and cost" rather than "Statistics".
+// The statistics that go under "Time and cost" rather than "Statistics" (every row of stats_rows about time or
+// money belongs in this list).
 bool is_time_or_cost(Msg key) { return key == Msg::StatsEstimatedTime; }
 
 SheetSection fields_section(std::string id, Msg title, Lang lang) {

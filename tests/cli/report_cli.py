@@ -6,7 +6,10 @@ diagnostic's code, German and Chinese labels, the Chinese extracted as character
 The HTML is parsed as XML (well-formed) and by html.parser, and holds the same numbers. A tool that is missing
 fails the test and says so (scripts/setup test installs poppler-utils).
 
-    report_cli.py ESSI EXAMPLES_DIR
+    report_cli.py ESSI EXAMPLES_DIR [WASM_BUILD]
+
+With WASM_BUILD (build/wasm) holding the npm package's CLI (targets essikit_cli, essikit_api), that build is run
+too: it has no PDF, says so (exit 2), and writes the same HTML as essi.
 """
 import hashlib
 import html.parser
@@ -20,6 +23,7 @@ import tempfile
 import xml.etree.ElementTree as ET
 
 ESSI, EXAMPLES = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+WASM_BUILD = os.path.abspath(sys.argv[3]) if len(sys.argv) > 3 else None
 EPOCH = "1764201600"  # 2025-11-27 00:00 UTC: a fixed date on the sheet (SOURCE_DATE_EPOCH)
 failures = 0
 
@@ -107,6 +111,31 @@ def parse_html(path):
     c.close()
     assert not c.stack, f"unclosed {c.stack}"
     return text, " ".join(c.text), c.ids
+
+
+# The npm package's CLI (npm/bin/essikit.js does the same): the program with node's file system and environment.
+NODE_RUNNER = ("const cli = require(process.argv[1]); cli({wasmBinary: require('fs').readFileSync(process.argv[2]), "
+               "arguments: process.argv.slice(3), preRun: [(m) => { Object.assign(m.ENV, process.env); }]});")
+
+
+def check_wasm_build(tape, tmp):
+    lib = os.path.join(WASM_BUILD or "", "npm", "essikit", "lib")
+    cjs, wasm = os.path.join(lib, "essikit_cli.cjs"), os.path.join(lib, "essikit_api.wasm")
+    node = shutil.which("node")
+    if not (WASM_BUILD and os.path.exists(cjs) and os.path.exists(wasm) and node):
+        print(f"skip - the WebAssembly build's CLI: {cjs} or node not there (cmake --build --preset wasm)")
+        return
+    env = dict(os.environ, SOURCE_DATE_EPOCH=EPOCH, LANG="C.UTF-8")
+
+    def essikit(args):
+        return subprocess.run([node, "-e", NODE_RUNNER, cjs, wasm] + args, capture_output=True, env=env)
+
+    r = essikit(["report", tape, "-o", os.path.join(tmp, "wasm.pdf")])
+    check(r.returncode == 2 and b"no PDF writer" in r.stderr and not os.path.exists(os.path.join(tmp, "wasm.pdf")),
+          f"WebAssembly: no PDF, said, exit 2 ({r.stderr.decode().strip()})")
+    native_html = run(["report", tape, "--format", "html", "-o", "-"]).stdout
+    r = essikit(["report", tape, "--format", "html", "-o", "-"])
+    check(r.returncode == 1 and r.stdout == native_html, "WebAssembly: the same HTML as essi's")
 
 
 def main():
@@ -199,6 +228,7 @@ def main():
     check(f"{listed - 5} more diagnostics not shown (--max-diagnostics 5)" in pdf_text(os.path.join(tmp, "few.pdf")),
           f"--max-diagnostics 5: the other {listed - 5} counted")
 
+    check_wasm_build(tape, tmp)
     shutil.rmtree(tmp)
     print(f"{failures} failed" if failures else "all passed")
     return 1 if failures else 0
