@@ -228,7 +228,8 @@ std::vector<SheetLegendEntry> legend_of(const SheetDrawing& d, Lang lang) {
     for (const auto& [kind, word] : kinds)
         if (!d.paths[static_cast<std::size_t>(kind)].empty())
             legend.push_back({SheetLegendEntry::Sample::Stroke, std::string(text(word, lang)), kind});
-    if (!d.pierces.empty()) legend.push_back({SheetLegendEntry::Sample::Pierce, std::string(text(Msg::SheetPierceKey, lang))});
+    if (!d.pierces.empty())
+        legend.push_back({SheetLegendEntry::Sample::Pierce, std::string(text(Msg::SheetPierceKey, lang))});
     for (const Severity sev : {Severity::Error, Severity::Warning, Severity::Note}) {
         const bool marked = std::any_of(d.marks.begin(), d.marks.end(),
                                         [sev](const SheetDrawing::Mark& m) { return m.severity == sev; });

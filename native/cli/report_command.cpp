@@ -1,9 +1,11 @@
 // essi report: a tape's job sheet as PDF or HTML (essi/job_sheet.hpp, native/job_sheet_pdf.hpp; docs/cli.md).
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -26,7 +28,7 @@ struct ReportOptions {
     std::string format;  // pdf or html; "" = by the output's extension
     std::string profile;
     std::string input = "auto";
-    std::size_t max_diagnostics = kSheetDefaultMaxDiagnostics;
+    long long max_diagnostics = static_cast<long long>(kSheetDefaultMaxDiagnostics);
     std::uint64_t max_size = native::kDefaultMaxInputBytes;
 };
 
@@ -87,7 +89,9 @@ int run_report(const ReportOptions& o) {
     in.sha256 = native::sha256_hex(tape->file.bytes);
     in.created_unix = sheet_time();
     in.lang = lang();
-    in.max_diagnostics = o.max_diagnostics;
+    const auto max_diagnostics = static_cast<unsigned long long>(o.max_diagnostics);  // (0 .. 2^40, checked)
+    in.max_diagnostics = static_cast<std::size_t>(
+        std::min<unsigned long long>(max_diagnostics, std::numeric_limits<std::size_t>::max()));
     const JobSheetResult sheet = job_sheet(tape->file.bytes, tape->setup, in);
 
     const std::string output = output_path(o, *format);
@@ -121,7 +125,7 @@ Subcommand define_report(CLI::App& essi) {
     add_input_option(report, o->input);
     report->add_option("--max-diagnostics", o->max_diagnostics,
                        "At most N diagnostics listed and marked (the rest are counted in a note)")
-        ->check(CLI::Range(std::size_t{0}, std::size_t{1} << 40))
+        ->check(CLI::Range(0LL, 1LL << 40))
         ->type_name("N")
         ->capture_default_str();
     add_max_size_option(report, o->max_size);

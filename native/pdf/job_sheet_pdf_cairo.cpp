@@ -252,7 +252,8 @@ void Pages::heading(const SheetSection& s, double first_row_h) {
 
 // A field: the label in its column, the value beside it (both wrap).
 std::pair<Pages::Text, Pages::Text> Pages::field(const SheetField& f) const {
-    return {text(f.label, kBodyFont, kFieldLabelWidthMm - 2), text(f.value, kBodyFont, kSheetContentWidthMm - kFieldLabelWidthMm)};
+    return {text(f.label, kBodyFont, kFieldLabelWidthMm - 2),
+            text(f.value, kBodyFont, kSheetContentWidthMm - kFieldLabelWidthMm)};
 }
 
 double Pages::fields_height(const SheetSection& s) const {

@@ -96,8 +96,8 @@ TEST(JobSheet, TheOpenDiagnosticsAreListedAndMarked) {
     const essi::SheetSection* d = section(c.sheet.sheet, "diagnostics");
     ASSERT_TRUE(d && d->table);
     ASSERT_EQ(d->table->rows.size(), 2u);
-    EXPECT_EQ(d->table->rows[0], (std::vector<std::string>{"error", "E605", "24",
-                                                           essi::diagnostic_message(c.sheet.result.diagnostics[0], Lang::En)}));
+    const std::string message = essi::diagnostic_message(c.sheet.result.diagnostics[0], Lang::En);
+    EXPECT_EQ(d->table->rows[0], (std::vector<std::string>{"error", "E605", "24", message}));
     EXPECT_EQ(d->table->rows[1][1], "E605");
     EXPECT_EQ(d->table->rows[1][2], "37");
     EXPECT_EQ(d->table->row_severity[0], essi::Severity::Error);
