@@ -18,6 +18,7 @@ h1 { font-size: 16pt; margin: 0 0 1mm; }
 p.tape { font-size: 11pt; margin: 0 0 3mm; overflow-wrap: anywhere; }
 h2 { font-size: 11pt; margin: 5mm 0 1.5mm; padding-bottom: 0.5mm; border-bottom: 0.3mm solid #999; break-after: avoid; }
 table { border-collapse: collapse; width: 100%; }
+table.fields { break-inside: avoid; }
 table.fields th { width: 50mm; text-align: left; font-weight: normal; color: #555; vertical-align: top;
                   padding: 0.4mm 2mm 0.4mm 0; }
 table.fields td { padding: 0.4mm 0; vertical-align: top; overflow-wrap: anywhere; }
