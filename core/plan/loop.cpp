@@ -148,6 +148,12 @@ void find_gap(Cut& cut, std::span<const Piece> p, double gap_limit_mm) {
 
 double piece_length(const Piece& p) { return p.arc ? std::fabs(p.sweep) * p.radius : dist(p.start, p.end); }
 
+std::uint32_t motion_of_piece(const Cut& cut, std::span<const Piece> pieces, std::uint32_t k) {
+    std::uint32_t motion = 0;
+    for (std::uint32_t i = cut.first_piece + 1; i <= k; ++i) motion += pieces[i].continues ? 0 : 1;
+    return motion;
+}
+
 void flatten_piece(const Piece& p, std::vector<Point>& out) {
     if (!p.arc || p.radius <= kPlanChordToleranceMm) {
         out.push_back(p.end);

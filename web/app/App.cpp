@@ -215,7 +215,7 @@ void App::show_contour(std::size_t index, bool of_b) {
     if (!compare_) return;
     const auto& contours = of_b ? compare_->b.contours : compare_->a.contours;
     if (index >= contours.size()) return;
-    const Contour& c = contours[index];
+    const DiffContour& c = contours[index];
     if (!of_b) select_line(c.first_line, false);
     const Document* d = document();
     if (d) view_.fit(c.box, d->origin, 80);

@@ -8,10 +8,10 @@ namespace {
 
 constexpr double kCompareChordMm = 0.05;  // arcs drawn as chords within this (a hair at any useful zoom)
 
-std::vector<std::vector<Point>> flattened(const std::vector<Contour>& contours) {
+std::vector<std::vector<Point>> flattened(const std::vector<DiffContour>& contours) {
     std::vector<std::vector<Point>> out;
     out.reserve(contours.size());
-    for (const Contour& c : contours) {
+    for (const DiffContour& c : contours) {
         std::vector<Point> pts;
         for (std::size_t k = 0; k < c.path.size(); ++k) flatten(c.path[k], kCompareChordMm, pts, k == 0);
         out.push_back(std::move(pts));
