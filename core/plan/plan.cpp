@@ -63,7 +63,7 @@ namespace plan {
 
 void append_parabola(const MotionRecord& m, std::vector<Piece>& out) {
     std::vector<Point> pts;
-    flatten(m, kPlanChordToleranceMm, pts, /*include_start*/ true);
+    flatten(m, kPlanChordToleranceMm, pts, /*include_start*/ true, kPlanMaxArcChords);
     for (std::size_t k = 1; k < pts.size(); ++k) out.push_back({pts[k - 1], pts[k], {}, 0, 0, m.line, false, k > 1});
 }
 
@@ -94,6 +94,10 @@ struct CutPlan::State {
     std::vector<std::unique_ptr<PlateJob>> jobs;  // the plates handed over, in order
     std::size_t folded = 0;            // jobs[0, folded) are folded into `found` (and freed)
     std::size_t plate_motions = 0;     // cutting motions of the plate so far (its part: kPlanMaxPlateMotions)
+    std::size_t plate_points = 0;      // their points flattened, as held (its part: kPlanMaxPlatePoints)
+    std::size_t cut_points[2] = {0, 0};  // the open cut's points flattened
+    bool too_long[2] = {false, false};   // the open cut has more than kPlanMaxPlatePoints: left out (N615)
+    std::size_t overlap_points_left = kPlanMaxOverlapPointsPerTape;  // for the collisions' overlap polygons
     bool ended = false;                // end_input() was called
     // defer_plates: the store the plates' motions are read back from, and the plates kept (the first
     // `next_deferred` of them analysed).
@@ -123,16 +127,40 @@ struct CutPlan::State {
         c.kerf = kerf;
         if (c.head == 2) head2_pieces.clear();
         c.first_piece = static_cast<std::uint32_t>(pieces.size());
+        const int h = c.head == 2 ? 1 : 0;
+        cut_points[h] = 0;
+        too_long[h] = false;
     }
-    // The cut `c` gets a motion of line `line`, cut with this kerf.
-    void cut_of(plan::Cut& c, std::uint32_t line, KerfSide kerf, double kerf_mm, double feed) {
+    // The cut `c` of head `h` gets a motion of line `line` and `points` points, cut with this kerf.
+    void cut_of(plan::Cut& c, int h, std::uint32_t line, KerfSide kerf, double kerf_mm, double feed,
+                std::size_t points) {
         if (feed != checked_feed) [[unlikely]] check_feed(line, feed);
         ++plate_motions;
+        count_points(c, h, points);
         if (kerf != c.kerf) [[unlikely]] c.kerf_changed = true;
         if (2 * kerf_mm > c.kerf_width_mm) [[unlikely]] c.kerf_width_mm = 2 * kerf_mm;
     }
     // Head 1's pieces go straight to the plate's; head 2's wait apart (the heads' motions interleave).
     std::vector<plan::Piece>& pieces_of(int h) { return h == 0 ? pieces : head2_pieces; }
+    // The open cut of head `h` grows by `points`; past kPlanMaxPlatePoints it is left out and its pieces dropped.
+    void count_points(const plan::Cut& c, int h, std::size_t points) {
+        cut_points[h] += points;
+        if (cut_points[h] > kPlanMaxPlatePoints) [[unlikely]] {
+            drop_long_cut(c, h, points);
+            return;
+        }
+        plate_points += points;
+    }
+    [[gnu::noinline]] void drop_long_cut(const plan::Cut& c, int h, std::size_t points) {
+        if (too_long[h]) return;
+        too_long[h] = true;
+        plate_points -= cut_points[h] - points;  // (what the cut added before this motion)
+        if (h == 0) pieces.resize(c.first_piece);
+        else head2_pieces.clear();
+    }
+    // Whether the pieces of head `h`'s motion are kept (not when the plate's motions are read back from a store, nor
+    // for a cut left out).
+    bool keeps_pieces(int h) const { return !store && !too_long[h]; }
 
     void add(const MotionRecord& m) {
         const int h = m.head == 2 ? 1 : 0;
@@ -140,20 +168,23 @@ struct CutPlan::State {
         const auto began = [&](plan::Cut& cut) { begin_cut(cut, m.kerf); };
         plan::Cut* c = cuts_found.motion(m, began, cut_ended());
         if (!c) return;
-        cut_of(*c, m.line, m.kerf, m.kerf_mm, m.feed_mm_min);
-        if (!store) plan::append_pieces(m, pieces_of(h));
+        cut_of(*c, h, m.line, m.kerf, m.kerf_mm, m.feed_mm_min, plan::plan_points(m));
+        if (keeps_pieces(h)) plan::append_pieces(m, pieces_of(h));
     }
     // A straight motion of head 1 (most of a tape): no record made.
-    void add(const UnitLine& l) {
+    [[gnu::flatten]] void add(const UnitLine& l) {
         passed(0, l.start, l.end);
         const auto began = [&](plan::Cut& cut) { begin_cut(cut, l.kerf); };
         plan::Cut* c = cuts_found.motion(l, began, cut_ended());
         if (!c) return;
-        cut_of(*c, l.line, l.kerf, l.kerf_mm, l.feed_mm_min);
-        if (!store) pieces.push_back({l.start, l.end, {}, 0, 0, l.line, false});
+        cut_of(*c, 0, l.line, l.kerf, l.kerf_mm, l.feed_mm_min, 1);
+        if (keeps_pieces(0)) pieces.push_back({l.start, l.end, {}, 0, 0, l.line, false});
     }
 
     void end_cut(plan::Cut& c) {
+        const int h = c.head == 2 ? 1 : 0;
+        c.points = too_long[h] ? 0 : cut_points[h];
+        if (too_long[h]) [[unlikely]] leave_out(c);
         if (c.kerf_changed) c.kerf = KerfSide::Off;
         if (c.kerf == KerfSide::Off) c.kerf_width_mm = 0;
         const bool head2 = c.head == 2;
@@ -177,18 +208,35 @@ struct CutPlan::State {
             deferred_pieces.clear();
         }
     }
+    // A cut of more points than a plate's part holds: no pieces and no motions (a store gives none back), so the
+    // plate's tests pass over it; N615 says so.
+    void leave_out(plan::Cut& c) {
+        c.end_motion = c.first_motion;
+        if (!cap.admit(DiagCode::N615_CutTooLong, c.first_line, Severity::Note)) return;
+        Diagnostic d = make_diagnostic(Severity::Note, DiagCode::N615_CutTooLong, c.first_line, 0, Msg::PlanCutTooLong,
+                                       {c.first_line, c.last_line, kPlanMaxPlatePoints});
+        d.contour_first = c.first_line;
+        d.contour_last = c.last_line;
+        found.push_back(std::move(d));
+    }
     void finish_cut(plan::Cut& c) {
         c.end_piece = static_cast<std::uint32_t>(pieces.size());
         c.order = static_cast<int>(cuts.size());
         cuts.push_back(std::move(c));
-        if (plate_motions >= kPlanMaxPlateMotions && !cutting(0) && !cutting(1)) [[unlikely]] split_plate();
+        if ((plate_motions >= kPlanMaxPlateMotions || plate_points >= kPlanMaxPlatePoints) && !cutting(0) &&
+            !cutting(1)) [[unlikely]]
+            split_plate();
     }
     // The plate so far is analysed as a part of its own (N614 after its last cut): a plate's memory is bounded.
     void split_plate() {
         const std::uint32_t last = cuts.back().last_line;
-        if (cap.admit(DiagCode::N614_PlateSplit, last, Severity::Note))
-            found.push_back(make_diagnostic(Severity::Note, DiagCode::N614_PlateSplit, last, 0, Msg::PlanPlateSplit,
-                                            {last, kPlanMaxPlateMotions}));
+        if (cap.admit(DiagCode::N614_PlateSplit, last, Severity::Note)) {
+            const bool by_motions = plate_motions >= kPlanMaxPlateMotions;
+            found.push_back(make_diagnostic(
+                Severity::Note, DiagCode::N614_PlateSplit, last, 0,
+                by_motions ? Msg::PlanPlateSplit : Msg::PlanPlateSplitPoints,
+                {last, by_motions ? kPlanMaxPlateMotions : kPlanMaxPlatePoints}));
+        }
         end_plate();
     }
 
@@ -197,8 +245,11 @@ struct CutPlan::State {
     }
     // The plate ends (no cut is going on).
     void end_plate() {
-        const std::size_t motions = plate_motions;
+        // (the runner's queue weighs a plate by its motions, or by its points at the scale of the motions' limit)
+        const std::size_t weight =
+            std::max(plate_motions, plate_points / (kPlanMaxPlatePoints / kPlanMaxPlateMotions));
         plate_motions = 0;
+        plate_points = 0;
         if (cuts.empty()) return;
         if (store) {
             keep_plate();
@@ -213,7 +264,7 @@ struct CutPlan::State {
         job->keep_contours = keep_contours;
         PlateJob* j = job.get();
         jobs.push_back(std::move(job));
-        if (runner) runner->run([j] { j->run(); }, motions);
+        if (runner) runner->run([j] { j->run(); }, weight);
         else j->run();
         ++plate;
         fold_done();
@@ -223,7 +274,9 @@ struct CutPlan::State {
     void fold_done() {
         while (folded < jobs.size() && jobs[folded]->done.load(std::memory_order_acquire)) {
             PlateJob& j = *jobs[folded];
+            const std::size_t first_new = found.size();
             cap.move_admitted(j.found, found);
+            for (std::size_t k = first_new; k < found.size(); ++k) keep_overlap_within_budget(found[k]);
             cap.add_omitted(j.cap);
             const int before = static_cast<int>(contours.size());  // (the plate's parents: in the plate's list)
             for (PlanContour& c : j.contours) {
@@ -232,6 +285,19 @@ struct CutPlan::State {
             }
             jobs[folded++].reset();
         }
+    }
+    // A collision keeps its overlap polygons while the tape's so far hold at most kPlanMaxOverlapPointsPerTape
+    // points; later ones go without (the report's size stays bounded whatever the collisions).
+    void keep_overlap_within_budget(Diagnostic& d) {
+        std::size_t points = 0;
+        for (const std::vector<Point>& polygon : d.overlap) points += polygon.size();
+        if (points == 0) return;
+        if (points > overlap_points_left) {
+            d.overlap.clear();
+            overlap_points_left = 0;
+            return;
+        }
+        overlap_points_left -= points;
     }
     // defer_plates: the plate's cuts kept as where they are in the stream.
     void keep_plate() {
@@ -260,7 +326,9 @@ struct CutPlan::State {
             c.first_piece = static_cast<std::uint32_t>(job->pieces.size());
             for (std::uint32_t k = c.first_motion; k < c.end_motion; ++k) {
                 const MotionRecord m = store->motion(k);
-                if (of_contour(c, m)) plan::append_pieces(m, job->pieces);
+                if (!of_contour(c, m)) continue;
+                plan::append_pieces(m, job->pieces);
+                c.points += plan::plan_points(m);
             }
             c.end_piece = static_cast<std::uint32_t>(job->pieces.size());
             job->cuts.push_back(c);

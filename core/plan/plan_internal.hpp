@@ -41,6 +41,7 @@ struct Cut : Contour {
     bool closed = false;            // it holds a loop
     double kerf_width_mm = 0;       // the full width the compensation cuts (0 when off)
     Box box;
+    std::size_t points = 0;         // its pieces' points flattened (plan_points of its motions)
 
     // Its loop, when it holds one: pieces [loop_begin, loop_end) (plate indices), starting at `loop_start` on the
     // first of them (its start, or a point on it for a path that closes on a line rather than at a point).
@@ -53,6 +54,16 @@ struct Cut : Contour {
     Point gap_from;
     std::uint32_t gap_line = 0;
 };
+
+// The chords of an arc of `radius` and `sweep` for the plan's tests: within kPlanChordToleranceMm, at most
+// kPlanMaxArcChords.
+[[nodiscard]] int arc_chords(double radius, double sweep);
+// The points a cutting motion adds to its contour flattened for the plan's tests (a plate's budget,
+// kPlanMaxPlatePoints): a line 1, an arc its chords, a parabola its pieces.
+[[nodiscard]] std::size_t curve_points(const MotionRecord& m);  // (an arc or a parabola)
+[[nodiscard]] inline std::size_t plan_points(const MotionRecord& m) {
+    return m.curve == CurveKind::Line ? 1 : curve_points(m);
+}
 
 // Appends the pieces of a cutting motion to `out`: itself, or a parabola's chords (append_parabola).
 void append_parabola(const MotionRecord& m, std::vector<Piece>& out);

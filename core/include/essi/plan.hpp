@@ -40,6 +40,12 @@ constexpr double kPlanChordToleranceMm = 0.05;
 // An arc is at most this many chords for those tests (a radius up to about 10 m keeps kPlanChordToleranceMm; a
 // larger one is coarser: a tape's bounds, not a plate's, make such arcs).
 constexpr int kPlanMaxArcChords = 1024;
+// A collision's overlap polygons (E605, N612) are at most this many points each: a longer contour's outline keeps
+// this many of its points, evenly spread.
+constexpr std::size_t kPlanMaxOverlapPoints = 256;
+// The overlap polygons of a tape's collisions hold at most this many points together: the collisions after that
+// (in the report's order) have none.
+constexpr std::size_t kPlanMaxOverlapPointsPerTape = std::size_t{1} << 16;
 // Two programmed contours closer than this touch even without compensation (mm).
 constexpr double kPlanTouchToleranceMm = 0.01;
 // Two paths whose points all lie this close are the same path (mm).
@@ -54,6 +60,10 @@ constexpr std::size_t kPlanLeadMotions = 4;
 // part; N614 says where): the memory a plate takes is bounded whatever the tape (about 160 bytes a motion while it
 // is analysed), at the price of not comparing cuts of different parts. A real plate has far fewer.
 constexpr std::size_t kPlanMaxPlateMotions = std::size_t{1} << 17;
+// A plate is also analysed in parts of at most this many points of its contours flattened (a line is one point, an
+// arc or a parabola up to kPlanMaxArcChords): big arcs make long polygons. A single cut of more points than this
+// is left out of the cut plan's tests (N615): what a plate holds while it is analysed stays bounded.
+constexpr std::size_t kPlanMaxPlatePoints = std::size_t{1} << 19;
 
 enum class ContourRole : std::uint8_t {
     Part,     // holds holes, or lies inside a hole (even depth >= 2)
