@@ -292,6 +292,89 @@ void apply_placement_keys(const json& j, Profile& p, std::vector<Message>& error
 }
 
 
+// The plate: its material and size (docs/semantics.md §9, "Parts and plates").
+constexpr Range kPlateRange{1e-6, 1e6};            // mm: a plate's size and thickness
+constexpr Range kDensityRange{1e-6, 1e6};          // kg/m³
+
+// One number of an object of numbers: its key, where it goes, its range.
+struct NumberField {
+    const char* key;
+    double* out;
+    Range range;
+};
+// A text of an object: 1 to `max_bytes` bytes of printable UTF-8.
+struct TextField {
+    const char* key;
+    std::string* out;
+    std::size_t max_bytes;
+};
+
+// The value of `key`: null (`out` reset) or an object read by `read` (into a value that becomes `out` when it has
+// no error). `example` shows the object in the message when the value is neither.
+template <class T, class Read>
+void null_or_object(const json& j, const char* key, std::optional<T>& out, const char* example,
+                    std::vector<Message>& errors, Read read) {
+    const auto it = j.find(key);
+    if (it == j.end()) return;
+    if (it->is_null()) {
+        out.reset();
+        return;
+    }
+    if (!it->is_object()) {
+        errors.push_back({Msg::ProfileNullOrObject, {key, example}});
+        return;
+    }
+    T value{};
+    const std::size_t before = errors.size();
+    read(*it, value);
+    if (errors.size() == before) out = std::move(value);
+}
+
+// The numbers and texts of `object` (the value of the key `name`), each needed; any other key is unknown.
+void read_fields(const json& object, const char* name, std::initializer_list<NumberField> fields,
+                 std::initializer_list<TextField> texts, std::vector<Message>& errors) {
+    const std::string quoted = std::string("\"") + name + "\"";
+    for (const NumberField& f : fields) {
+        const auto v = object.find(f.key);
+        const std::string key = std::string(name) + "." + f.key;
+        if (v == object.end()) {
+            errors.push_back({Msg::ProfileNeedsNumber, {quoted, f.key, number_text(f.range.min), number_text(f.range.max)}});
+        } else if (!v->is_number()) {
+            errors.push_back({Msg::ProfileMustBeNumber, {key}});
+        } else if (!(v->get<double>() >= f.range.min && v->get<double>() <= f.range.max)) {
+            errors.push_back({Msg::ProfileOutOfRange, {key, number_text(f.range.min), number_text(f.range.max),
+                                                       number_text(v->get<double>())}});
+        } else {
+            *f.out = v->get<double>();
+        }
+    }
+    for (const TextField& f : texts) {
+        const auto v = object.find(f.key);
+        const std::string* t = v != object.end() && v->is_string() ? &v->get_ref<const std::string&>() : nullptr;
+        if (t != nullptr && !t->empty() && t->size() <= f.max_bytes && display_text(*t) == *t) *f.out = *t;
+        else errors.push_back({Msg::ProfileText, {std::string(name) + "." + f.key, f.max_bytes}});
+    }
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        const auto named = [&](const char* k) { return it.key() == k; };
+        const bool known = std::any_of(fields.begin(), fields.end(), [&](const NumberField& f) { return named(f.key); }) ||
+                           std::any_of(texts.begin(), texts.end(), [&](const TextField& t) { return named(t.key); });
+        if (!known) errors.push_back({Msg::ProfileUnknownKey, {std::string(name) + "." + excerpt(it.key(), kMaxKeyChars)}});
+    }
+}
+
+void apply_plate_keys(const json& j, Profile& p, std::vector<Message>& errors) {
+    null_or_object(j, "material", p.material, R"({"name": "S355", "thickness_mm": 15, "density_kg_m3": 7850})", errors,
+                   [&](const json& v, Material& m) {
+                       read_fields(v, "material",
+                                   {{"thickness_mm", &m.thickness_mm, kPlateRange},
+                                    {"density_kg_m3", &m.density_kg_m3, kDensityRange}},
+                                   {{"name", &m.name, kMaxProfileNameBytes}}, errors);
+                   });
+    null_or_object(j, "plate_mm", p.plate, R"({"x": 3000, "y": 1500})", errors, [&](const json& v, PlateSize& s) {
+        read_fields(v, "plate_mm", {{"x", &s.x_mm, kPlateRange}, {"y", &s.y_mm, kPlateRange}}, {}, errors);
+    });
+}
+
 
 void apply_keys(const json& j, Profile& p, std::vector<Message>& errors) {
     auto number = [&](const char* key, double& out, Range range) {
@@ -379,6 +462,7 @@ void apply_keys(const json& j, Profile& p, std::vector<Message>& errors) {
     number("feed_mm_min", p.feed_mm_min, kSpeedRange);
     number("rapid_mm_min", p.rapid_mm_min, kSpeedRange);
     number("pierce_time_s", p.pierce_time_s, kSecondsRange);
+    apply_plate_keys(j, p, errors);
     apply_placement_keys(j, p, errors);
     number("closure_gap_mm", p.closure_gap_mm, kGapRange);
     number("max_dwell_s", p.max_dwell_s, kSecondsRange);
@@ -434,7 +518,7 @@ void apply_keys(const json& j, Profile& p, std::vector<Message>& errors) {
         "optional_ignore", "rapid_single_block", "kerf_value", "kerf", "default_dwell_s", "dwell_unit_s", "feed_mm_min",
         "rapid_mm_min", "pierce_time_s", "setup_offset_x_mm", "setup_offset_y_mm", "zero_offsets", "zero_offset",
         "plate_rotation_deg", "tool_offsets", "table", "eia", "closure_gap_mm", "feed_range_mm_min", "max_dwell_s",
-        "lead_in_required", "max_per_code"};
+        "lead_in_required", "max_per_code", "material", "plate_mm"};
     for (auto it = j.begin(); it != j.end(); ++it) {
         bool known = false;
         for (const char* k : kKnownKeys) known = known || it.key() == k;
@@ -614,6 +698,11 @@ std::string profile_to_json(const Profile& p) {
     j["max_dwell_s"] = p.max_dwell_s;
     j["lead_in_required"] = p.lead_in_required;
     j["max_per_code"] = p.max_per_code;
+    j["material"] = p.material ? ordered_json{{"name", p.material->name},
+                                              {"thickness_mm", p.material->thickness_mm},
+                                              {"density_kg_m3", p.material->density_kg_m3}}
+                               : ordered_json(nullptr);
+    j["plate_mm"] = p.plate ? ordered_json{{"x", p.plate->x_mm}, {"y", p.plate->y_mm}} : ordered_json(nullptr);
     j["eia"] = eia_to_json(p.eia);
     return j.dump(2, ' ', false, ordered_json::error_handler_t::replace);
 }

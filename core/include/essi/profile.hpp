@@ -65,6 +65,19 @@ struct TableLimits {
     double min_x_mm = 0, min_y_mm = 0, max_x_mm = 0, max_y_mm = 0;
 };
 
+// The plate's material (profile key `material`).
+struct Material {
+    std::string name;
+    double thickness_mm = 0;
+    double density_kg_m3 = 0;
+    friend bool operator==(const Material&, const Material&) = default;
+};
+// The plate's size (profile key `plate_mm`: {"x": ..., "y": ...}).
+struct PlateSize {
+    double x_mm = 0, y_mm = 0;
+    friend bool operator==(const PlateSize&, const PlateSize&) = default;
+};
+
 // The default of Profile::max_per_code, and the largest value it takes (0: no limit).
 constexpr std::size_t kDefaultMaxPerCode = 1000;
 constexpr std::uint64_t kMaxPerCodeLimit = 1000000000;
@@ -95,6 +108,10 @@ struct Profile {
     double feed_mm_min = 1000.0;                // cutting feed when the tape gives none (39+v)
     double rapid_mm_min = 10000.0;              // rapid traverse speed
     double pierce_time_s = 2.0;                 // added once per pierce
+
+    // The plate (§9, "Parts and plates"): its material (the parts' mass, the scrap) and size (utilisation, remnant)
+    std::optional<Material> material;
+    std::optional<PlateSize> plate;                 // plate_mm
 
     // EIA tapes (§10): the dialect's words and rules (default: the Woyda table)
     EiaDialect eia;
