@@ -40,50 +40,71 @@ std::optional<double> reach(Point a, Point b, double y0, double y1, double margi
     return std::max(x_at(c0), x_at(c1)) + margin;
 }
 
+// Past kPartsMaxRemnantSteps, an edge is cut into at most this many pieces over the slabs it spans.
+constexpr std::size_t kRemnantPieces = 16;
+
+// How far the outlines reach in each slab: the largest x of the ranges of slabs given (a tree of ranges: each
+// range is kept at the O(log slabs) nodes that cover it, and a slab's reach is the largest on its way to the root).
+class Reach {
+public:
+    Reach(std::size_t slabs, double floor) : size_(slabs), tree_(2 * slabs, floor) {}
+    void raise(std::size_t first, std::size_t end, double x) {  // slabs [first, end)
+        for (std::size_t l = first + size_, r = end + size_; l < r; l /= 2, r /= 2) {
+            if (l & 1) tree_[l] = std::max(tree_[l], x), ++l;
+            if (r & 1) --r, tree_[r] = std::max(tree_[r], x);
+        }
+    }
+    [[nodiscard]] double at(std::size_t slab) const {
+        double x = tree_[slab + size_];
+        for (std::size_t k = (slab + size_) / 2; k > 0; k /= 2) x = std::max(x, tree_[k]);
+        return x;
+    }
+
+private:
+    std::size_t size_;
+    std::vector<double> tree_;
+};
+
 }  // namespace
 
 std::optional<Box> remnant(const Box& plate, const std::vector<std::vector<Point>>& outlines, double margin) {
     if (plate.empty || !(plate.max_x > plate.min_x) || !(plate.max_y > plate.min_y)) return std::nullopt;
     const std::vector<double> ys = slab_bounds(plate, outlines, margin);
     const std::size_t slabs = ys.size() - 1;
-    std::vector<double> reached(slabs, plate.min_x);  // how far the parts reach in each slab
-    const auto slab_of = [&](double y) {
+    const auto slab_of = [&](double y) {  // (the slab holding y, plus one)
         return static_cast<std::size_t>(std::upper_bound(ys.begin(), ys.end(), y) - ys.begin());
     };
-    // Each edge over the slabs it spans (its steps, within kPartsMaxRemnantSteps; past that each outline's box)
+    // Each edge over the slabs it spans, slab by slab while that takes at most kPartsMaxRemnantSteps steps in all;
+    // past that an edge over more than kRemnantPieces slabs is cut into that many pieces, each raising its slabs to
+    // its largest x (a little more than the edge reaches in some of them: the remnant only gets smaller).
     std::size_t steps = 0;
-    bool by_boxes = false;
     for (const std::vector<Point>& o : outlines)
-        for (std::size_t k = 0; k < o.size() && !by_boxes; ++k) {
-            const Point a = o[k], b = o[(k + 1) % o.size()];
-            const std::size_t s0 = slab_of(std::min(a.y, b.y) - margin), s1 = slab_of(std::max(a.y, b.y) + margin);
-            steps += s1 - std::min(s0, s1) + 1;
-            by_boxes = steps > kPartsMaxRemnantSteps;
-        }
-    for (const std::vector<Point>& o : outlines) {
-        if (by_boxes) {
-            Box b;
-            for (const Point& p : o) b.add(p);
-            const Point corners[2] = {{b.max_x, b.min_y}, {b.max_x, b.max_y}};
-            for (std::size_t s = 0; s < slabs; ++s)
-                if (const auto x = reach(corners[0], corners[1], ys[s], ys[s + 1], margin)) reached[s] = std::max(reached[s], *x);
-            continue;
-        }
         for (std::size_t k = 0; k < o.size(); ++k) {
             const Point a = o[k], b = o[(k + 1) % o.size()];
-            const std::size_t s0 = slab_of(std::min(a.y, b.y) - margin);
-            const std::size_t s1 = std::min(slabs, slab_of(std::max(a.y, b.y) + margin));
-            for (std::size_t s = s0 > 0 ? s0 - 1 : 0; s < s1; ++s)
-                if (const auto x = reach(a, b, ys[s], ys[s + 1], margin)) reached[s] = std::max(reached[s], *x);
+            steps += slab_of(std::max(a.y, b.y) + margin) - std::min(slab_of(std::min(a.y, b.y) - margin), slabs) + 1;
         }
-    }
+    const bool exact = steps <= kPartsMaxRemnantSteps;
+    Reach reach_of(slabs, plate.min_x);
+    for (const std::vector<Point>& o : outlines)
+        for (std::size_t k = 0; k < o.size(); ++k) {
+            const Point a = o[k], b = o[(k + 1) % o.size()];
+            const std::size_t s0 = std::max<std::size_t>(slab_of(std::min(a.y, b.y) - margin), 1) - 1;
+            const std::size_t s1 = std::min(slabs, slab_of(std::max(a.y, b.y) + margin));
+            if (s1 <= s0) continue;
+            const std::size_t pieces = exact ? s1 - s0 : std::min<std::size_t>(s1 - s0, kRemnantPieces);
+            for (std::size_t p = 0; p < pieces; ++p) {
+                const std::size_t first = s0 + (s1 - s0) * p / pieces, end = s0 + (s1 - s0) * (p + 1) / pieces;
+                if (const auto x = reach(a, b, ys[first], ys[end], margin)) reach_of.raise(first, end, *x);
+            }
+        }
+    std::vector<double> reached(slabs);
+    for (std::size_t s = 0; s < slabs; ++s) reached[s] = reach_of.at(s);
     // The largest rectangle of the histogram (a stack of slabs whose free width only grows)
     double best = 0;
     Box out;
     std::vector<std::size_t> stack;
     for (std::size_t s = 0; s <= slabs; ++s) {
         const double width = s < slabs ? plate.max_x - std::min(plate.max_x, reached[s]) : -1;
-        std::size_t start = s;
         while (!stack.empty() && plate.max_x - std::min(plate.max_x, reached[stack.back()]) >= width) {
             const std::size_t top = stack.back();
             stack.pop_back();
@@ -94,9 +115,7 @@ std::optional<Box> remnant(const Box& plate, const std::vector<std::vector<Point
                 best = area;
                 out = Box{plate.max_x - w, ys[from], plate.max_x, ys[s], false};
             }
-            start = from;
         }
-        (void)start;
         if (s < slabs) stack.push_back(s);
     }
     if (!(best > 0)) return std::nullopt;

@@ -24,10 +24,10 @@ namespace essi {
 
 // Two parts are the same shape when every point of one, turned and moved onto the other, lies this close to the
 // other's (mm), or within kPartsSameShapeUnits unit increments of the tape when that is coarser: a copy turned by an
-// odd angle has its points rounded to the unit (each by up to 0.71 unit; an arc's middle, from its rounded ends and
-// centre, by up to about 1.4).
+// odd angle has its points rounded to the unit, each by up to 0.71 unit, so the points of two such copies differ by
+// up to 1.42 units, and a little more once the turn between them is fitted.
 constexpr double kPartsSameShapeMm = 0.01;
-constexpr double kPartsSameShapeUnits = 1.5;
+constexpr double kPartsSameShapeUnits = 2;
 // A part is compared exactly with at most this many earlier groups whose signature it shares (area, perimeter,
 // pieces, their lengths, its holes' places); past that it makes a group of its own.
 constexpr std::size_t kPartsMaxCompares = 32;
