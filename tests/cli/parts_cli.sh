@@ -17,7 +17,7 @@ out="$("$essi" parts --lang en --profile "$profile" "$tape")"; rc=$?
 if [ $rc -eq 0 ] && grep -qx "1 part in 1 group" <<<"$out" \
    && grep -qx "group 1: 1 x, net area 4685.841 mm², outline 100.000 x 50.000 mm, cut length 362.832 mm a part, holes 1, pierces 2, mass 0.368 kg" <<<"$out" \
    && grep -qx "  part 1 (plate 1): lines 15-18 8-9" <<<"$out" \
-   && grep -qx "plate 1: 300.000 x 100.000 mm (plate_mm), 1 parts, utilisation 15.6 %, scrap 1.987 kg, remnant x 102.000 .. 300.000, y 0.000 .. 100.000 mm" <<<"$out"
+   && grep -qx "plate 1: 300.000 x 100.000 mm (profile plate_mm), 1 part, utilisation 15.6 %, scrap 1.987 kg, remnant x 102.000 .. 300.000, y 0.000 .. 100.000 mm" <<<"$out"
 then pass "text"; else fail "text: rc $rc: $out"; fi
 out="$("$essi" parts --lang de --profile "$profile" "$tape")"
 if grep -qx "1 Teil in 1 Gruppe" <<<"$out"; then pass "text in German"; else fail "text in German: $out"; fi

@@ -164,7 +164,7 @@ TEST(Parts, JsonTextAndCsv) {
     const std::string text = essi::parts_text(c.parts);
     EXPECT_NE(text.find("1 part in 1 group\n"), std::string::npos) << text;
     EXPECT_NE(text.find("group 1: 1 x, net area 4685.841 mm², outline 100.000 x 50.000 mm"), std::string::npos) << text;
-    EXPECT_NE(text.find("plate 1: 300.000 x 100.000 mm (plate_mm), 1 parts, utilisation 15.6 %"), std::string::npos)
+    EXPECT_NE(text.find("plate 1: 300.000 x 100.000 mm (profile plate_mm), 1 part, utilisation 15.6 %"), std::string::npos)
         << text;
     EXPECT_EQ(essi::parts_csv(c.parts),
               "group,count,net_area_mm2,length_mm,width_mm,cut_length_mm,holes,pierces,mass_kg,mirror_of,parts\r\n"
