@@ -148,6 +148,12 @@ void find_gap(Cut& cut, std::span<const Piece> p, double gap_limit_mm) {
 
 double piece_length(const Piece& p) { return p.arc ? std::fabs(p.sweep) * p.radius : dist(p.start, p.end); }
 
+std::uint32_t motion_of_piece(const Cut& cut, std::span<const Piece> pieces, std::uint32_t k) {
+    std::uint32_t motion = 0;
+    for (std::uint32_t i = cut.first_piece + 1; i <= k; ++i) motion += pieces[i].continues ? 0 : 1;
+    return motion;
+}
+
 int arc_chords(double radius, double sweep) {
     if (!(radius > kPlanChordToleranceMm)) return 1;
     // A chord over angle a has a sagitta r(1 - cos(a/2)) <= r a^2 / 8: steps of sqrt(8 tol / r) stay within tol.

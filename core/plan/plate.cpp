@@ -73,17 +73,25 @@ public:
         collisions();
         lead_ins();
     }
+    // The plate's contours with a loop (not the same path again), in cutting order, appended to `contours`: a
+    // parent is an index in that list.
     void record(std::vector<PlanContour>& contours) const {
+        std::vector<int> index_of(cuts_.size(), -1);  // (a parent is a usable cut, cut before or after its child)
+        int next = static_cast<int>(contours.size());
+        for (std::size_t i = 0; i < cuts_.size(); ++i)
+            if (usable(i)) index_of[i] = next++;
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
             const Cut& c = cuts_[i];
-            if (!c.closed || nodes_[i].duplicate) continue;
+            if (!usable(i)) continue;
             PlanContour pc;
-            pc.cut_first_line = c.first_line;
-            pc.cut_last_line = c.last_line;
+            static_cast<Contour&>(pc) = c;
+            pc.loop_begin = motion_of_piece(c, pieces_, c.loop_begin);
+            pc.loop_end = motion_of_piece(c, pieces_, c.loop_end - 1) + 1;
+            pc.loop_start = c.loop_start;
             pc.loop_first_line = pieces_[c.loop_begin].line;
             pc.loop_last_line = pieces_[c.loop_end - 1].line;
             pc.plate = st_.plate;
-            pc.parent = nodes_[i].parent;
+            pc.parent = nodes_[i].parent < 0 ? -1 : index_of[static_cast<std::size_t>(nodes_[i].parent)];
             pc.depth = nodes_[i].depth;
             pc.role = nodes_[i].role;
             pc.area_mm2 = c.area_mm2;
@@ -223,7 +231,8 @@ private:
     // found once and used by the nesting, the collisions and the crossings. A sweep along x over the cuts' boxes
     // finds them on an ordinary plate (a cut is compared with the few whose x ranges meet its own); a crowded plate
     // (many cuts over the same x, where the sweep would compare nearly all pairs) uses the uniform grid instead.
-    void find_neighbours() {
+    // (Out of line: inlined into run(), its sweep's hot loop comes out slower.)
+    [[gnu::noinline]] void find_neighbours() {
         boxes_.assign(cuts_.size(), Box{});
         for (std::size_t i = 0; i < cuts_.size(); ++i)
             if (usable(i)) boxes_[i] = cuts_[i].loop_box;

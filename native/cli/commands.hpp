@@ -21,6 +21,7 @@ Subcommand define_diff(CLI::App& essi);         // diff_command.cpp
 Subcommand define_trace(CLI::App& essi);        // trace_command.cpp
 Subcommand define_convert(CLI::App& essi);      // convert_command.cpp
 Subcommand define_render(CLI::App& essi);       // render_command.cpp
+Subcommand define_report(CLI::App& essi);       // report_command.cpp: the job sheet (PDF, HTML)
 Subcommand define_profile(CLI::App& essi);      // profile_command.cpp: profile show, profile list
 Subcommand define_serve(CLI::App& essi);        // serve_command.cpp (not in the npm package's build)
 Subcommand define_completions(CLI::App& essi);  // completions_command.cpp: hidden; the shells' scripts

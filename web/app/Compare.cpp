@@ -9,10 +9,10 @@ namespace {
 
 constexpr double kCompareChordMm = 0.05;  // arcs drawn as chords within this (a hair at any useful zoom)
 
-std::vector<std::vector<Point>> flattened(const std::vector<Contour>& contours) {
+std::vector<std::vector<Point>> flattened(const std::vector<DiffContour>& contours) {
     std::vector<std::vector<Point>> out;
     out.reserve(contours.size());
-    for (const Contour& c : contours) {
+    for (const DiffContour& c : contours) {
         std::vector<Point> pts;
         for (std::size_t k = 0; k < c.path.size(); ++k) flatten(c.path[k], kCompareChordMm, pts, k == 0);
         out.push_back(std::move(pts));
@@ -57,7 +57,7 @@ void CompareMode::show_contour(std::size_t index, bool of_b) {
     if (!compare_) return;
     const auto& contours = of_b ? compare_->b.contours : compare_->a.contours;
     if (index >= contours.size()) return;
-    const Contour& c = contours[index];
+    const DiffContour& c = contours[index];
     if (!of_b) navigation_.select_line(c.first_line, false);
     navigation_.show_box(c.box);
 }

@@ -1,9 +1,9 @@
 // Phase 6, plan: the cut plan checked, not only the syntax (docs/diagnostics.md, codes 6xx).
 //
-// A cut runs from the pierce (a cutting tool comes on) to the torch going off. It holds a closed loop when its path
-// comes back to a point it passed: the loop is the contour; what comes before it is the lead-in, what comes after
-// it the lead-out. A cut that comes back within closure_gap_mm but not within the arc tolerance is left open by a
-// small gap (W601).
+// A cut is a cut contour (essi/contour.hpp): from the pierce to the torch going off. It holds a closed loop when
+// its path comes back to a point it passed; what comes before the loop is the lead-in, what comes after it the
+// lead-out. A cut that comes back within closure_gap_mm but not within the arc tolerance is left open by a small
+// gap (W601).
 //
 // Roles by nesting, plate by plate: a contour inside another is a hole of it (odd depth), a contour inside a hole is
 // a part again (even depth); a contour that holds holes is a part. A lone contour (nothing inside it, inside
@@ -26,6 +26,7 @@
 #include <string_view>
 #include <vector>
 
+#include "essi/contour.hpp"
 #include "essi/diagnostics.hpp"
 #include "essi/geom.hpp"
 #include "essi/motion.hpp"
@@ -73,15 +74,21 @@ enum class ContourRole : std::uint8_t {
 };
 [[nodiscard]] const char* contour_role_name(ContourRole r);  // "part", "hole", "lone-part", "lone-hole", "lone"
 
-// One contour as the analysis found it (plan_contours, for tests and tools).
-struct PlanContour {
-    std::uint32_t cut_first_line = 0, cut_last_line = 0;    // the whole cut: pierce to torch off
-    std::uint32_t loop_first_line = 0, loop_last_line = 0;  // the loop's motions
+// A cut contour as the analysis found it (plan_contours, for tests and tools): the Contour (essi/contour.hpp) of
+// the whole cut, pierce to torch off, with its loop and role.
+struct PlanContour : Contour {
+    // Its loop: the contour's motions [loop_begin, loop_end) (0: its first; contour_motions), from loop_start
+    // round to loop_start again (within the arc tolerance). loop_start is the first one's start or a point on it
+    // (where the path closes on a line, or at a parabola's chord); the loop ends at the last one's end or at a
+    // point on it (a parabola's chord). Their lines:
+    std::uint32_t loop_begin = 0, loop_end = 0;
+    Point loop_start;
+    std::uint32_t loop_first_line = 0, loop_last_line = 0;
     int plate = 1;
-    int parent = -1;  // index (in the plate's contours, in cutting order) of the contour it lies in directly
+    int parent = -1;  // index (in plan_contours' list, or CutPlan::contours()) of the contour it lies in directly
     int depth = 0;
     ContourRole role = ContourRole::Lone;
-    double area_mm2 = 0;  // signed: > 0 counter-clockwise
+    double area_mm2 = 0;  // signed: > 0 counter-clockwise (parabolas by their chords)
     KerfSide kerf = KerfSide::Off;
     bool lead_in = false;
 };
@@ -99,15 +106,6 @@ public:
     virtual void wait() = 0;
 };
 
-// The motions of the stream a plan was fed, by their index (0: the first one given to on_motion or on_line), for a
-// caller that keeps them anyway (the viewer's document): the plan then keeps only where its cuts are in the stream,
-// and reads their motions back when it analyses a plate (CutPlan::defer_plates).
-class MotionStore {
-public:
-    virtual ~MotionStore() = default;
-    [[nodiscard]] virtual MotionRecord motion(std::size_t index) const = 0;
-};
-
 // The cut plan of one tape, fed the motion stream (a MotionSink): diagnostics come out when a plate ends and at
 // finish(). TapeChecker runs one on every tape it checks.
 class CutPlan final : public MotionSink {
@@ -123,8 +121,9 @@ public:
     // Plates are analysed by `runner` from now on (null: at once). It must outlive finish().
     void set_runner(PlateRunner* runner);
     // Plates are not analysed when they end but kept as where their cuts are in the stream (a few bytes a cut, not
-    // their motions), to be analysed later from `store` (analyse_deferred_plate, or finish). Before the first
-    // motion; `store` must hold every motion given to this plan by then and outlive it.
+    // their motions), to be analysed later from `store`, the motions of the stream this plan was fed
+    // (analyse_deferred_plate, or finish). Before the first motion; `store` must hold every motion given to this
+    // plan by then and outlive it.
     void defer_plates(const MotionStore* store);
     // After the last motion: the last plate ended (analysed, handed to the runner, or kept when deferred).
     void end_input();
