@@ -642,6 +642,54 @@ test('copy and export: a problem, a line, the inspector and the report as essi c
   await page.close();
 });
 
+test('the Job panel: the job sheet\'s time and cost as essi report has them; its print view and HTML are essi report\'s', async () => {
+  const page = await newPage();
+  const file = 'bad_kerf_gouge.esi';
+  await loadExample(page, file);
+  const report = (args) => {
+    try {
+      return execFileSync(essiBin, ['report', '--profile', 'auto', '--format', 'html', '-o', '-', ...args, file],
+                          { encoding: 'utf8', cwd: examplesDir });
+    } catch (e) {
+      return e.stdout;  // exit 1: the tape has an error
+    }
+  };
+  const cli = report([]);
+  // The panel's sections are the sheet's "time" section (and parts and plates, when the tape has them), field for
+  // field as the HTML lists them.
+  const job = (await page.evaluate(() => essikit.state())).job;
+  assert.ok(Array.isArray(job) && job.length >= 1, JSON.stringify(job));
+  const time = job.find((s) => s.id === 'time');
+  assert.ok(time && time.fields.length >= 1, JSON.stringify(job));
+  const section = cli.match(/<section id="time">([\s\S]*?)<\/section>/);
+  assert.ok(section, 'essi report has a time section');
+  const cliFields = [...section[1].matchAll(/<tr><th>(.*?)<\/th><td>(.*?)<\/td><\/tr>/g)].map((m) => [m[1], m[2]]);
+  assert.deepEqual(time.fields, cliFields);
+  // The HTML export is essi report's page, but for the date it was made (the SHA-256 of the tape's bytes the same:
+  // OpenSSL's natively, the digest written out in WebAssembly).
+  const undated = (html) => html.replace(/\d{4}-\d\d-\d\d \d\d:\d\d UTC/g, 'DATE');
+  const html = await page.evaluate(() => essikit.exportText('job-html'));
+  assert.equal(undated(html), undated(cli));
+  assert.match(html, /[0-9a-f]{64}/);
+  // In German: the panel's words change with the UI's language, as the sheet's do with --lang.
+  await page.evaluate(() => essikit.setLanguage('de'));
+  const de = (await page.evaluate(() => essikit.state())).job.find((s) => s.id === 'time');
+  const cliDe = report(['--lang', 'de']).match(/<section id="time">\s*<h2>(.*?)<\/h2>/);
+  assert.equal(de.title, cliDe[1]);
+  await page.evaluate(() => essikit.setLanguage('en'));
+  // The print view: the sheet in a new tab, styled (its one style sheet applies), the same page.
+  const popup = page.waitForEvent('popup');
+  await page.evaluate(() => essikit.printJobSheet());
+  const tab = await popup;
+  await tab.waitForLoadState();
+  assert.match(tab.url(), /^blob:/);
+  assert.equal(await tab.evaluate(() => document.querySelector('h1').textContent), 'Job sheet');
+  assert.equal(await tab.evaluate(() => getComputedStyle(document.querySelector('h1')).fontSize), '21.3333px');  // 16pt
+  assert.equal(undated(await tab.content()).includes('bad_kerf_gouge.esi'), true);
+  await tab.close();
+  await page.close();
+});
+
 test('touch: a tap selects, one finger pans, two fingers zoom about their middle', async () => {
   const ctx = await browser.newContext({ viewport: { width: 1600, height: 900 }, hasTouch: true });
   const page = await ctx.newPage();

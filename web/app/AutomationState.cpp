@@ -293,6 +293,19 @@ void add_panels(json& j, const Automation::Parts& p) {
     j["toolbar"] = toolbar_json(ui);
 }
 
+// The Job panel's sections as they are shown: [{id, title, fields: [[label, value] ...], table: {columns, rows}}].
+json job_json(Exports& exports) {
+    json sections = json::array();
+    for (const SheetSection& s : exports.job_sections()) {
+        json fields = json::array();
+        for (const SheetField& f : s.fields) fields.push_back({f.label, f.value});
+        json section = {{"id", s.id}, {"title", s.title}, {"fields", fields}};
+        if (s.table) section["table"] = {{"columns", s.table->columns}, {"rows", s.table->rows}};
+        sections.push_back(std::move(section));
+    }
+    return sections;
+}
+
 }  // namespace
 
 std::string Automation::state_json() const {
@@ -319,6 +332,7 @@ std::string Automation::state_json() const {
     j["fonts"] = fonts_json(p_.fonts, p_.ui_renderer);
     j["lang"] = lang_code(ui_lang());
     j["kind_colors"] = kind_colors_json();
+    j["job"] = doc ? job_json(p_.exports) : json(nullptr);
     return j.dump();
 }
 

@@ -50,6 +50,7 @@ bool LoadController::step() {
         ++frames_.steps;
         if (!loader_->step(at_once ? kNoLimit : kStepBudgetMs)) return false;
         doc_ = loader_->take();
+        ++documents_;
         if (loader_->plan_pending()) plan_ = std::move(loader_);
         loader_.reset();
         return true;

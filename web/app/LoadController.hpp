@@ -93,6 +93,9 @@ public:
     [[nodiscard]] bool reading() const { return loader_ != nullptr; }
 
     [[nodiscard]] const Document* document() const { return doc_.get(); }
+    // The documents read so far (the current one's number): what a cache of something worked out from the document
+    // is keyed by (a new document may take the old one's address).
+    [[nodiscard]] std::uint64_t documents_read() const { return documents_; }
     [[nodiscard]] const PathBuffers& buffers() const { return buffers_; }
     [[nodiscard]] const PathBuffers* building() const { return building_.get(); }
     // The segments to draw: none while the first build runs (nothing of a new tape is drawn until it is complete).
@@ -132,6 +135,7 @@ private:
 
     // The document and its drawing
     std::unique_ptr<Document> doc_;
+    std::uint64_t documents_ = 0;
     PathBuffers buffers_;           // the drawn set's motion -> segment map (its segments are on the GPU only)
     GpuPath gpu_;                   // the drawn segments
     std::unique_ptr<PathBuffers> building_;  // being built (first build or a rebuild at a new tolerance)

@@ -198,6 +198,10 @@ EMSCRIPTEN_KEEPALIVE void essi_compare_commit(const char* name) {
 EMSCRIPTEN_KEEPALIVE void essi_end_compare() {
     if (g_api) g_api->end_compare();
 }
+// The job sheet's print view (the Job panel's Print view button): a new tab, or a download where none opens.
+EMSCRIPTEN_KEEPALIVE void essi_print_job_sheet() {
+    if (g_api) g_api->print_job_sheet();
+}
 EMSCRIPTEN_KEEPALIVE void essi_show_difference(int k) {
     if (g_api) g_api->show_difference(k);
 }
