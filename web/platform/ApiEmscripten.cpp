@@ -221,6 +221,11 @@ EMSCRIPTEN_KEEPALIVE void essi_set_problems_only(int on) {
     if (g_api) g_api->set_problems_only(on != 0);
 }
 
+// Colour by: "kind", "feed" or "order" (1: done, 0: no such name).
+EMSCRIPTEN_KEEPALIVE int essi_set_colour_by(const char* name) {
+    return g_api && g_api->set_colour_by(name ? name : "") ? 1 : 0;
+}
+
 // The theme: 1 light, 0 dark (kept across sessions).
 EMSCRIPTEN_KEEPALIVE void essi_set_theme(int light) {
     if (g_api) g_api->set_light_theme(light != 0);

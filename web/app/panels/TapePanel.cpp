@@ -153,13 +153,43 @@ void layer_switch(const std::string& label, bool& on, const ImVec4* colour, bool
     ImGui::Checkbox(label.c_str(), &on);
 }
 
-void layers(Layers& layers, Preferences& preferences, const Document* doc) {
+// Colour by: the choice, and the legend of the colours drawn (ColourBy.hpp).
+void colour_by(Layers& layers, const LoadController& load) {
+    ImGui::TextUnformatted(tr(Msg::UiColourBy));
+    ImGui::SameLine();
+    const std::string current = tr(colour_by_label(layers.colour_by));
+    ImGui::SetNextItemWidth(-1);
+    if (ImGui::BeginCombo("##colour_by", current.c_str())) {
+        for (const ColourBy by : kColourByModes)
+            if (ImGui::Selectable(tr_id(colour_by_label(by), std::string(colour_by_name(by)).c_str()).c_str(), by == layers.colour_by))
+                layers.colour_by = by;
+        ImGui::EndCombo();
+    }
+    const float swatch = ImGui::GetTextLineHeight();
+    for (const ColourLegendEntry& e : load.buffers().colour_legend(ui_lang())) {
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        const ImVec2 at = ImGui::GetCursorScreenPos();
+        const int bins = e.last_bin - e.first_bin + 1;
+        for (int b = 0; b < bins; ++b) {
+            const float x0 = at.x + swatch * 2 * static_cast<float>(b) / static_cast<float>(bins);
+            const float x1 = at.x + swatch * 2 * static_cast<float>(b + 1) / static_cast<float>(bins);
+            dl->AddRectFilled(ImVec2(x0, at.y + 2), ImVec2(x1, at.y + swatch - 2),
+                              ImGui::ColorConvertFloat4ToU32(opaque(kColourRamp[static_cast<std::size_t>(e.first_bin + b)])));
+        }
+        ImGui::Dummy(ImVec2(swatch * 2, swatch));
+        ImGui::SameLine();
+        ImGui::TextUnformatted(e.text.c_str());
+    }
+}
+
+void layers(Layers& layers, Preferences& preferences, const Document* doc, const LoadController& load) {
     bool first = true;
     for (MotionKind k : {MotionKind::Cut, MotionKind::Mark, MotionKind::Travel, MotionKind::Rapid}) {
         const ImVec4 c = opaque(kind_color(k));
         layer_switch(std::string(motion_kind_text(k, ui_lang())) + "###" + motion_kind_name(k), layers.kind(k), &c, first);
         first = false;
     }
+    colour_by(layers, load);
     layer_switch(tr_id(Msg::UiLayerPierces, "pierces"), layers.pierces, nullptr);
     layer_switch(tr_id(Msg::UiLayerStart, "start"), layers.start, nullptr);
     layer_switch(tr_id(Msg::UiLayerGrid, "grid"), layers.grid, nullptr);
@@ -292,7 +322,7 @@ void Panels::tape_panel() {
     if (header(Msg::UiReading, "Reading")) reading(p_.session, p_.comments);
     if (header(Msg::UiStatistics, "Statistics")) statistics(doc, p_.load);
     if (header(Msg::UiJob, "Job")) job(doc, p_.exports);
-    if (header(Msg::UiLayers, "Layers")) layers(p_.layers, p_.preferences, doc);
+    if (header(Msg::UiLayers, "Layers")) layers(p_.layers, p_.preferences, doc, p_.load);
     if (header(Msg::UiPlayback, "Playback")) playback(p_.playback, p_.navigation, doc);
     if (header(Msg::UiDiagnostics, "Diagnostics")) diagnostics(doc, p_.navigation, p_.exports);
     ImGui::End();
