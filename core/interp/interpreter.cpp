@@ -323,7 +323,7 @@ void Machine::finish() {
         tools_ = 0;
     }
     if (stats_) {  // the statistics: what they count, without making the event
-        stats_->count_event(kind, value, tools_, torches_);
+        stats_->count_event(kind, b.has_code() ? b.code : 0, value, tools_, torches_);
         if (also_ == nullptr) return;
     }
     send_event(b, index, kind, has_value, value);

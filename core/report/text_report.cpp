@@ -109,12 +109,24 @@ std::string diagnostic_line(std::string_view path, const Diagnostic& d, Lang lan
     return s;
 }
 
+namespace {
+// An amount of money in the cost's currency: "12.35 EUR".
+std::string money(double v, const Cost& c) { return fixed_text(v, 2) + (c.currency.empty() ? "" : " " + c.currency); }
+std::string electrodes(double v) { return fixed_text(v, 4); }
+}  // namespace
+
 std::string file_stats_line(const FileReport& file, Lang lang) {
     const Stats& st = file.result.stats;
-    return format_message(Msg::ReportFileStats, lang,
-                          {file.display_path(), verdict(file, lang), mm(st.cut_length_mm), mm(st.mark_length_mm),
-                           mm(st.travel_length_mm), mm(st.rapid_length_mm), st.pierces, st.blocks, st.motions,
-                           format_duration(st.estimated_time_s)});
+    std::string line = format_message(Msg::ReportFileStats, lang,
+                                      {file.display_path(), verdict(file, lang), mm(st.cut_length_mm),
+                                       mm(st.mark_length_mm), mm(st.travel_length_mm), mm(st.rapid_length_mm),
+                                       st.pierces, st.blocks, st.motions, format_duration(st.estimated_time_s)});
+    if (st.machine_time)
+        line += "; " + format_message(Msg::ReportMachineTime, lang,
+                                      {format_duration(st.machine_time->total_s), fixed_text(st.machine_time->acceleration_s, 1)});
+    if (st.cost) line += "; " + format_message(Msg::ReportCost, lang, {money(st.cost->total, *st.cost)});
+    if (st.consumables) line += "; " + format_message(Msg::ReportElectrodes, lang, {electrodes(st.consumables->electrodes)});
+    return line;
 }
 
 std::string summary_line(std::span<const FileReport> files, std::string_view profile_name, Lang lang) {
@@ -145,6 +157,29 @@ std::string stats_block(const FileReport& file, Lang lang) {
     rows.emplace_back(key(Msg::StatsMotions), std::to_string(st.motions));
     rows.emplace_back(key(Msg::StatsEstimatedTime),
                       fixed_text(st.estimated_time_s, 1) + " s (" + format_duration(st.estimated_time_s) + ")");
+    if (st.machine_time) {
+        const MachineTime& t = *st.machine_time;
+        const auto s1 = [](double v) { return fixed_text(v, 1); };
+        rows.emplace_back(key(Msg::StatsMachineTime), s1(t.total_s) + " s (" + format_duration(t.total_s) + ")");
+        rows.emplace_back(key(Msg::StatsMachineTimeBreakdown),
+                          format_message(Msg::StatsMachineTimeParts, lang,
+                                         {s1(t.cutting_s), s1(t.marking_s), s1(t.rapid_s), s1(t.travel_s), s1(t.pierce_s),
+                                          s1(t.dwell_s), s1(t.acceleration_s)}));
+    }
+    if (st.cost) {
+        const Cost& c = *st.cost;
+        rows.emplace_back(key(Msg::StatsCost), money(c.total, c));
+        rows.emplace_back(key(Msg::StatsCostBreakdown),
+                          format_message(Msg::StatsCostParts, lang,
+                                         {money(c.machine, c), key(c.machine_time ? Msg::StatsMachineTime : Msg::StatsEstimatedTime),
+                                          money(c.pierces, c), money(c.cut, c),
+                                          c.material ? money(*c.material, c) : key(Msg::StatsNone)}));
+    }
+    if (st.consumables) {
+        const ConsumableUse& u = *st.consumables;
+        rows.emplace_back(key(Msg::StatsElectrodes), format_message(Msg::StatsElectrodesParts, lang,
+                                                                    {electrodes(u.electrodes), u.pierces, fixed_text(u.arc_on_s, 1)}));
+    }
     if (st.cut_bbox.empty) {
         rows.emplace_back(key(Msg::StatsCutBox), key(Msg::StatsNone));
     } else {

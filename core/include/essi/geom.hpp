@@ -61,6 +61,16 @@ struct ParabolaPiece {
 // Whether the piece turns counter-clockwise as t goes from t0 to t1 (t1 != t0).
 [[nodiscard]] bool parabola_turns_ccw(const ParabolaGeom& g);
 
+// A parabola's direction of travel (a unit vector) at parameter t, t running from t0 to t1.
+[[nodiscard]] Point parabola_tangent(const ParabolaGeom& g, double t);
+// The direction of travel (a unit vector) at a motion's start or end: a line's direction, the tangent of an arc
+// or a parabola; the zero vector for a motion that has none (a line of length 0).
+[[nodiscard]] Point start_tangent(const MotionRecord& m);
+[[nodiscard]] Point end_tangent(const MotionRecord& m);
+// The smallest radius of curvature along a motion (mm): an arc's smaller radius, a parabola's at its point
+// nearest the vertex; infinity for a line.
+[[nodiscard]] double min_curvature_radius(const MotionRecord& m);
+
 // Closed-form length of a parabola piece.
 [[nodiscard]] double parabola_length(const ParabolaGeom& g);
 // Point of a parabola at parameter t.

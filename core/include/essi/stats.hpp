@@ -3,8 +3,13 @@
 // sink: a call per motion and per function block of every tape that is checked.
 #pragma once
 
+#include <optional>
+
+#include "essi/cost.hpp"
+#include "essi/function_codes.hpp"
 #include "essi/geom.hpp"
 #include "essi/kerf.hpp"
+#include "essi/machine_time.hpp"
 #include "essi/motion.hpp"
 #include "essi/placement.hpp"
 #include "essi/profile.hpp"
@@ -26,6 +31,10 @@ struct Stats {
     Box machine_cut_bbox;          // the same in machine coordinates (§12: zero offset, plate rotation, tool offsets)
     Box machine_motion_bbox;       // ... and where the carriage goes when a tool offset is selected
     Point end_position;            // machine position at the end (head 1)
+    std::optional<MachineTime> machine_time;     // with the profile's accel_mm_s2 (§9)
+    std::optional<Cost> cost;                    // with the profile's costs
+    std::optional<ConsumableUse> consumables;    // with the profile's consumables
+    double torch_cutting_time_s = 0;  // the estimate's time of the cutting motions, once per torch (not reported)
 };
 
 // The time a motion of `length_mm` takes at `feed_mm_min` (none without a feed): what the statistics estimate
@@ -64,12 +73,15 @@ private:
 class StatsSink final : public MotionSink {
 public:
     explicit StatsSink(const Profile& profile)
-        : profile_(profile), torch_path_(stats_), kerf_(torch_path_, profile.chord_tolerance_mm), placement_(profile),
-          plain_(!placement_.turns()) {}
+        : profile_(profile), torch_path_(*this), kerf_(torch_path_, profile.chord_tolerance_mm), placement_(profile),
+          plain_(!placement_.turns()) {
+        if (profile.accel_mm_s2) [[unlikely]] timer_.emplace(*profile.accel_mm_s2, profile.junction_deviation_mm);
+    }
     StatsSink(const StatsSink&) = delete;
     StatsSink& operator=(const StatsSink&) = delete;
 
     void on_motion(const MotionRecord& m) override {
+        if (timer_) [[unlikely]] queue_pause();
         kerf_.motion(m);
         if (!plain_) [[unlikely]] add_machine_boxes(m);
         if (m.torches > 1 && m.kind == MotionKind::Cut) [[unlikely]] {
@@ -97,16 +109,24 @@ public:
         if (!plain_) [[unlikely]] add_machine_line(kind, start, end);
         add_programmed_line(kind, head, start, end, length_mm);
         TorchPath::add(stats_, kind, length_mm, feed_mm_min, 1);
+        if (timer_) [[unlikely]] timer_->line(kind, start, end, length_mm, feed_mm_min);
     }
-    void on_event(const MachineEvent& e) override { count_event(e.kind, e.value, e.tools_after, e.torches_after); }
-    // What on_event counts of an event: the interpreter calls it directly, without making the event.
-    // Several torches pierce together: each pierce counts, the pierce time once.
-    void count_event(EventKind kind, double value, std::uint8_t tools_after, std::uint8_t torches = 1) {
-        if (kind == EventKind::Dwell) stats_.estimated_time_s += value;
-        if (pierces_.on_tools(tools_after)) {
+    void on_event(const MachineEvent& e) override {
+        count_event(e.kind, e.code, e.value, e.tools_after, e.torches_after);
+    }
+    // What on_event counts of an event (`code`: its function): the interpreter calls it directly, without making
+    // the event. Several torches pierce together: each pierce counts, the pierce time once.
+    void count_event(EventKind kind, int code, double value, std::uint8_t tools_after, std::uint8_t torches = 1) {
+        if (kind == EventKind::Dwell) [[unlikely]] {
+            stats_.estimated_time_s += value;
+            if (tools_after & kCuttingTools) cutting_dwell_s_ += value * torches;
+        }
+        const bool pierce = pierces_.on_tools(tools_after);
+        if (pierce) {
             stats_.pierces += torches;
             stats_.estimated_time_s += profile_.pierce_time_s;
         }
+        if (timer_) [[unlikely]] time_event(kind, code, value, tools_after, pierce);
     }
     // The tool offset in force from now on (11, 114, 12: the interpreter calls it): the carriage moves at once.
     void set_tool_offset(Point offset) {
@@ -118,11 +138,17 @@ public:
     // The end of the program: the compensated path's last piece; the machine boxes when they are the program's
     // moved.
     void finish() {
+        if (timer_) [[unlikely]] queue_pause();
         kerf_.finish();
         if (plain_) {
             stats_.machine_cut_bbox = placement_.moved(stats_.cut_bbox, {});
             stats_.machine_motion_bbox = placement_.moved(stats_.motion_bbox, {});
         }
+        if (timer_) [[unlikely]] {
+            timer_->finish();
+            stats_.machine_time = timer_->time();
+        }
+        if (profile_.costs || profile_.consumables) [[unlikely]] reckon_costs();
     }
     // Whether a compensated piece is open: a line without compensation must then come as a record (it is the
     // exit from compensation).
@@ -134,21 +160,77 @@ public:
     Stats& stats() { return stats_; }
 
 private:
-    // The compensated path: its time and its cut length (each torch's).
+    // The compensated path: its time and its cut length (each torch's); the machine time's motions, and where a
+    // pause of the machine time held behind an open piece of it falls (its only events).
     class TorchPath final : public MotionSink {
     public:
-        explicit TorchPath(Stats& stats) : stats_(stats) {}
+        explicit TorchPath(StatsSink& owner) : owner_(owner) {}
         void on_motion(const MotionRecord& m) override {
-            add(stats_, m.kind, m.length_mm, m.feed_mm_min, m.kind == MotionKind::Cut ? m.torches : 1);
+            add(owner_.stats_, m.kind, m.length_mm, m.feed_mm_min, m.kind == MotionKind::Cut ? m.torches : 1);
+            if (owner_.timer_) [[unlikely]] owner_.timer_->motion(m);
         }
+        void on_event(const MachineEvent&) override { owner_.apply_pause(); }
         static void add(Stats& s, MotionKind kind, double length_mm, double feed_mm_min, int torches) {
-            if (kind == MotionKind::Cut) s.cut_length_compensated_mm += length_mm * torches;
-            s.estimated_time_s += motion_time_s(length_mm, feed_mm_min);
+            const double t = motion_time_s(length_mm, feed_mm_min);
+            if (kind == MotionKind::Cut) {
+                s.cut_length_compensated_mm += length_mm * torches;
+                s.torch_cutting_time_s += t * torches;
+            }
+            s.estimated_time_s += t;
         }
 
     private:
-        Stats& stats_;
+        StatsSink& owner_;
     };
+
+    // The machine time's side of an event (in the tape's order): its pierce and dwell time, and whether the
+    // machine stands still there (a tool on or off, a dwell, a stop, the end, 17 and 18) and stops at the end of
+    // every block from there on (17 until 18, or a 63/64 that cancels the stored functions). Those two wait as a
+    // pause until the torch's path reaches the place: at once, or behind the compensated piece still open.
+    void time_event(EventKind kind, int code, double value, std::uint8_t tools_after, bool pierce) {
+        if (kind == EventKind::Dwell) timer_->add_dwell(value);
+        if (pierce) timer_->add_pierce(profile_.pierce_time_s);
+        constexpr std::uint8_t kTools = kCuttingTools | kMarkingTools;
+        const bool tools_change = ((tools_after ^ timer_tools_) & kTools) != 0;
+        timer_tools_ = tools_after;
+        const bool function = kind == EventKind::Function;
+        const bool control = function && (code == fn::kAccelerationControlOn || code == fn::kAccelerationControlOff);
+        const bool cancel = function && (code == fn::kCancelFunctions || code == fn::kEndOfTape);
+        const bool stop = tools_change || control || (kind != EventKind::Function && kind != EventKind::ZeroOffset);
+        if (!stop && !cancel) return;
+        if (control || cancel) block_stops_ = code == fn::kAccelerationControlOn;
+        pause_.stop = pause_.stop || stop;
+        pause_.pending = true;
+        if (!kerf_.open()) apply_pause();
+    }
+    // A pause that waits: held behind the open piece of the compensated path (once: later events of the same
+    // gap change the pause itself), applied where the path passes it on.
+    void queue_pause() {
+        if (pause_.pending && !pause_.queued) {
+            pause_.queued = true;
+            kerf_.event(MachineEvent{});
+        }
+    }
+    void apply_pause() {
+        if (!pause_.pending) return;
+        if (pause_.stop) timer_->stop();
+        timer_->set_block_stops(block_stops_);
+        pause_ = {};
+    }
+    // The cost and the consumables, from the statistics (the machine time when there is one).
+    void reckon_costs() {
+        const bool machine = stats_.machine_time.has_value();
+        if (profile_.costs) {
+            stats_.cost = reckon_cost(*profile_.costs, profile_.material, profile_.plate,
+                                      {machine ? stats_.machine_time->total_s : stats_.estimated_time_s, machine,
+                                       stats_.pierces, stats_.cut_length_mm});
+        }
+        if (profile_.consumables) {
+            const double cutting = machine ? stats_.machine_time->torch_cutting_s : stats_.torch_cutting_time_s;
+            const double arc_on = cutting + static_cast<double>(stats_.pierces) * profile_.pierce_time_s + cutting_dwell_s_;
+            stats_.consumables = consumable_use(*profile_.consumables, stats_.pierces, arc_on);
+        }
+    }
 
     // Machine boxes (§12). While the plate is not turned and no tool offset was ever selected ("plain"), they are
     // the program's moved by the zero offset, worked out once at the end; from the first tool offset on, every
@@ -227,6 +309,16 @@ private:
     const Profile& profile_;
     Stats stats_;
     PierceTracker pierces_;
+    double cutting_dwell_s_ = 0;  // dwells while a cutting tool is on, once per torch
+    // The machine time (with the profile's accel_mm_s2) and what it follows of the events.
+    std::optional<MachineTimer> timer_;
+    std::uint8_t timer_tools_ = 0;
+    bool block_stops_ = false;
+    struct Pause {
+        bool pending = false;  // not applied yet
+        bool queued = false;   // held behind the compensated path's open piece
+        bool stop = false;
+    } pause_;
     TorchPath torch_path_;
     KerfPath kerf_;
     Placement placement_;
