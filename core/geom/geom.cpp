@@ -66,44 +66,6 @@ double parabola_arc_integral(double t, double p) {
     return 0.5 * t * std::sqrt(1 + q * q) + 0.5 * p * std::asinh(q);
 }
 
-// A vector scaled to length 1; the zero vector stays zero.
-Point unit_vector(double x, double y) {
-    const double n = std::sqrt(x * x + y * y);  // (hypot: much slower, no range needed)
-    if (!(n > 0)) return {};
-    const double k = 1 / n;
-    return {x * k, y * k};
-}
-
-// The direction of travel of an arc at a point of it, at `radius` from the centre when that is known (a
-// programmed arc's radii: no square root).
-Point arc_tangent(Point p, Point centre, bool ccw, double radius) {
-    Point r;
-    if (radius > 0) {
-        const double k = 1 / radius;
-        r = {(p.x - centre.x) * k, (p.y - centre.y) * k};
-    } else {
-        r = unit_vector(p.x - centre.x, p.y - centre.y);
-    }
-    return ccw ? Point{-r.y, r.x} : Point{r.y, -r.x};
-}
-
-// A line's direction from its known length.
-Point line_direction(const MotionRecord& m) {
-    if (!(m.length_mm > 0)) return unit_vector(m.end.x - m.start.x, m.end.y - m.start.y);
-    const double k = 1 / m.length_mm;
-    return {(m.end.x - m.start.x) * k, (m.end.y - m.start.y) * k};
-}
-
-// The direction of travel at a motion's start or end.
-Point tangent_at(const MotionRecord& m, bool end) {
-    switch (m.curve) {
-        case CurveKind::Line: return line_direction(m);
-        case CurveKind::Arc: return arc_tangent(end ? m.end : m.start, m.centre, m.ccw, end ? m.end_radius : m.radius);
-        case CurveKind::Parabola: return parabola_tangent(m.parabola, end ? m.parabola.t1 : m.parabola.t0);
-    }
-    return {};
-}
-
 }  // namespace
 
 double arc_sweep(Point start, Point end, Point centre, bool ccw, bool full_circle) {
@@ -121,15 +83,6 @@ Point parabola_point(const ParabolaGeom& g, double t) {
     const double s = t * t / (2 * g.p);
     return {g.vertex.x + t * g.u.x + s * g.n.x, g.vertex.y + t * g.u.y + s * g.n.y};
 }
-
-Point parabola_tangent(const ParabolaGeom& g, double t) {
-    const double k = t / g.p;
-    const double sign = g.t1 >= g.t0 ? 1.0 : -1.0;
-    return unit_vector(sign * (g.u.x + k * g.n.x), sign * (g.u.y + k * g.n.y));
-}
-
-Point start_tangent(const MotionRecord& m) { return tangent_at(m, false); }
-Point end_tangent(const MotionRecord& m) { return tangent_at(m, true); }
 
 double min_curvature_radius(const MotionRecord& m) {
     switch (m.curve) {

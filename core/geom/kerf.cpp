@@ -218,7 +218,7 @@ void KerfPath::offset_piece(const MotionRecord& m, Piece& p) {
     p.rec = m;
     p.corner = m.end;
     if (m.curve == CurveKind::Line) {
-        const Point t = start_tangent(m);
+        const Point t = line_direction(m);
         const Point shift = off * left_normal(t);
         p.rec.start = m.start + shift;
         p.rec.end = m.end + shift;

@@ -121,8 +121,8 @@ TEST(MachineTimer, PiecesOfALineTakeTheLinesTime) {
     const int n = 2000;  // 0.1 mm each: 512 of them are 51.2 mm, beyond the 10 mm
     for (int i = 0; i < n; ++i)
         pieces.line(essi::MotionKind::Cut, {i * 0.1, 0}, {(i + 1) * 0.1, 0}, 0.1, feed);
-    whole.finish();
-    pieces.finish();
+    whole.finish(0);
+    pieces.finish(0);
     EXPECT_NEAR(whole.time().total_s, 2.2, 1e-12);  // 0.2 + 0.2 + 180/100
     EXPECT_NEAR(pieces.time().total_s, 2.2, 1e-9);
 }
@@ -135,7 +135,7 @@ TEST(MachineTimer, TooShortForTheWindowIsPlannedAsAShorterLookAhead) {
     const int n = 5000;  // 0.001 mm each: half a window is 0.512 mm, far below the 10 mm to brake from 100 mm/s
     for (int i = 0; i < n; ++i)
         pieces.line(essi::MotionKind::Cut, {i * 0.001, 0}, {(i + 1) * 0.001, 0}, 0.001, feed);
-    pieces.finish();
+    pieces.finish(0);
     const double ideal = 2 * std::sqrt(5.0 / a);  // 5 mm never reach the feed: a triangle of peak √(a·L)
     EXPECT_GE(pieces.time().total_s, ideal - 1e-12);
     EXPECT_TRUE(std::isfinite(pieces.time().total_s));
@@ -146,7 +146,7 @@ TEST(MachineTimer, TooShortForTheWindowIsPlannedAsAShorterLookAhead) {
 // do not stop between them; two blocks do.
 TEST(MachineTimer, BlockStopsSeparateBlocksOnly) {
     essi::MachineTimer t(500, 0.01);
-    t.set_block_stops(true);
+    t.pause(true, true, -1);  // (17)
     essi::MotionRecord m;
     m.kind = essi::MotionKind::Cut;
     m.feed_mm_min = 6000;
@@ -158,7 +158,7 @@ TEST(MachineTimer, BlockStopsSeparateBlocksOnly) {
     m.start = {50, 0};
     m.end = {100, 0};
     t.motion(m);  // the same block: straight on, no stop
-    t.finish();
+    t.finish(0);
     EXPECT_NEAR(t.time().total_s, 1.2, 1e-12);
 }
 

@@ -34,7 +34,6 @@ struct Stats {
     std::optional<MachineTime> machine_time;     // with the profile's accel_mm_s2 (§9)
     std::optional<Cost> cost;                    // with the profile's costs
     std::optional<ConsumableUse> consumables;    // with the profile's consumables
-    double torch_cutting_time_s = 0;  // the estimate's time of the cutting motions, once per torch (not reported)
 };
 
 // The time a motion of `length_mm` takes at `feed_mm_min` (none without a feed): what the statistics estimate
@@ -73,15 +72,19 @@ private:
 class StatsSink final : public MotionSink {
 public:
     explicit StatsSink(const Profile& profile)
-        : profile_(profile), torch_path_(*this), kerf_(torch_path_, profile.chord_tolerance_mm), placement_(profile),
-          plain_(!placement_.turns()) {
+        : profile_(profile), timed_(profile.accel_mm_s2 || profile.consumables), torch_path_(stats_),
+          machine_path_(*this), cutting_path_(*this),
+          kerf_(profile.accel_mm_s2   ? static_cast<MotionSink&>(machine_path_)
+                : profile.consumables ? static_cast<MotionSink&>(cutting_path_)
+                                      : torch_path_,
+                profile.chord_tolerance_mm),
+          placement_(profile), plain_(!placement_.turns()) {
         if (profile.accel_mm_s2) [[unlikely]] timer_.emplace(*profile.accel_mm_s2, profile.junction_deviation_mm);
     }
     StatsSink(const StatsSink&) = delete;
     StatsSink& operator=(const StatsSink&) = delete;
 
     void on_motion(const MotionRecord& m) override {
-        if (timer_) [[unlikely]] queue_pause();
         kerf_.motion(m);
         if (!plain_) [[unlikely]] add_machine_boxes(m);
         if (m.torches > 1 && m.kind == MotionKind::Cut) [[unlikely]] {
@@ -109,25 +112,37 @@ public:
         if (!plain_) [[unlikely]] add_machine_line(kind, start, end);
         add_programmed_line(kind, head, start, end, length_mm);
         TorchPath::add(stats_, kind, length_mm, feed_mm_min, 1);
-        if (timer_) [[unlikely]] timer_->line(kind, start, end, length_mm, feed_mm_min);
+        if (timed_) [[unlikely]] time_line(kind, start, end, length_mm, feed_mm_min);
     }
     void on_event(const MachineEvent& e) override {
-        count_event(e.kind, e.code, e.value, e.tools_after, e.torches_after);
+        count_event(e.kind, e.value, e.tools_after, e.torches_after);
+        if (timed_) [[unlikely]] time_event(e);
     }
-    // What on_event counts of an event (`code`: its function): the interpreter calls it directly, without making
-    // the event. Several torches pierce together: each pierce counts, the pierce time once.
-    void count_event(EventKind kind, int code, double value, std::uint8_t tools_after, std::uint8_t torches = 1) {
-        if (kind == EventKind::Dwell) [[unlikely]] {
-            stats_.estimated_time_s += value;
-            if (tools_after & kCuttingTools) cutting_dwell_s_ += value * torches;
-        }
-        const bool pierce = pierces_.on_tools(tools_after);
-        if (pierce) {
+    // What on_event counts of an event: the interpreter calls it directly, without making the event.
+    // Several torches pierce together: each pierce counts, the pierce time once.
+    void count_event(EventKind kind, double value, std::uint8_t tools_after, std::uint8_t torches = 1) {
+        if (kind == EventKind::Dwell) stats_.estimated_time_s += value;
+        if (pierces_.on_tools(tools_after)) {
             stats_.pierces += torches;
             stats_.estimated_time_s += profile_.pierce_time_s;
         }
-        if (timer_) [[unlikely]] time_event(kind, code, value, tools_after, pierce);
     }
+    // Whether the statistics follow the machine time or the consumables (the profile's accel_mm_s2 or
+    // consumables): then every event, in order, goes to time_event besides count_event.
+    [[nodiscard]] bool timed() const { return timed_; }
+    // The machine time's and the consumables' side of an event, in the tape's order (time_change).
+    void time_event(const MachineEvent& e) {
+        if (affects_time(e.kind, e.code, timed_tools_, e.tools_after)) time_change(e);
+    }
+    // Whether an event can change the machine time or the consumables: all but a function that switches no tool,
+    // other than 17, 18, 63 and 64 (most events). `tools_before`: the tools of the event before.
+    [[nodiscard]] static bool affects_time(EventKind kind, unsigned code, std::uint8_t tools_before,
+                                           std::uint8_t tools_after) {
+        constexpr std::uint8_t kTools = kCuttingTools | kMarkingTools;
+        return kind != EventKind::Function || ((tools_after ^ tools_before) & kTools) != 0 ||
+               code - fn::kAccelerationControlOn <= 1u || code - fn::kCancelFunctions <= 1u;  // (17, 18; 63, 64)
+    }
+
     // The tool offset in force from now on (11, 114, 12: the interpreter calls it): the carriage moves at once.
     void set_tool_offset(Point offset) {
         if (offset == tool_offset_) return;
@@ -138,17 +153,16 @@ public:
     // The end of the program: the compensated path's last piece; the machine boxes when they are the program's
     // moved.
     void finish() {
-        if (timer_) [[unlikely]] queue_pause();
         kerf_.finish();
         if (plain_) {
             stats_.machine_cut_bbox = placement_.moved(stats_.cut_bbox, {});
             stats_.machine_motion_bbox = placement_.moved(stats_.motion_bbox, {});
         }
         if (timer_) [[unlikely]] {
-            timer_->finish();
+            timer_->finish(stats_.estimated_time_s);
             stats_.machine_time = timer_->time();
         }
-        if (profile_.costs || profile_.consumables) [[unlikely]] reckon_costs();
+        if (profile_.costs || profile_.consumables) [[unlikely]] reckon_costs();  // (after the machine time)
     }
     // Whether a compensated piece is open: a line without compensation must then come as a record (it is the
     // exit from compensation).
@@ -160,62 +174,82 @@ public:
     Stats& stats() { return stats_; }
 
 private:
-    // The compensated path: its time and its cut length (each torch's); the machine time's motions, and where a
-    // pause of the machine time held behind an open piece of it falls (its only events).
+    // The compensated path: its time and its cut length (each torch's).
     class TorchPath final : public MotionSink {
     public:
-        explicit TorchPath(StatsSink& owner) : owner_(owner) {}
+        explicit TorchPath(Stats& stats) : stats_(stats) {}
         void on_motion(const MotionRecord& m) override {
-            add(owner_.stats_, m.kind, m.length_mm, m.feed_mm_min, m.kind == MotionKind::Cut ? m.torches : 1);
-            if (owner_.timer_) [[unlikely]] owner_.timer_->motion(m);
+            add(stats_, m.kind, m.length_mm, m.feed_mm_min, m.kind == MotionKind::Cut ? m.torches : 1);
         }
-        void on_event(const MachineEvent&) override { owner_.apply_pause(); }
-        static void add(Stats& s, MotionKind kind, double length_mm, double feed_mm_min, int torches) {
+        // Returns the motion's time.
+        static double add(Stats& s, MotionKind kind, double length_mm, double feed_mm_min, int torches) {
+            if (kind == MotionKind::Cut) s.cut_length_compensated_mm += length_mm * torches;
             const double t = motion_time_s(length_mm, feed_mm_min);
-            if (kind == MotionKind::Cut) {
-                s.cut_length_compensated_mm += length_mm * torches;
-                s.torch_cutting_time_s += t * torches;
-            }
             s.estimated_time_s += t;
+            return t;
+        }
+
+    private:
+        Stats& stats_;
+    };
+    // The compensated path for the machine time (the profile's accel_mm_s2): its motions go to the timer too.
+    class MachineTorchPath final : public MotionSink {
+    public:
+        explicit MachineTorchPath(StatsSink& owner) : owner_(owner) {}
+        void on_motion(const MotionRecord& m) override {
+            TorchPath::add(owner_.stats_, m.kind, m.length_mm, m.feed_mm_min, m.kind == MotionKind::Cut ? m.torches : 1);
+            owner_.timer_->motion(m);
         }
 
     private:
         StatsSink& owner_;
     };
-
-    // The machine time's side of an event (in the tape's order): its pierce and dwell time, and whether the
-    // machine stands still there (a tool on or off, a dwell, a stop, the end, 17 and 18) and stops at the end of
-    // every block from there on (17 until 18, or a 63/64 that cancels the stored functions). Those two wait as a
-    // pause until the torch's path reaches the place: at once, or behind the compensated piece still open.
-    void time_event(EventKind kind, int code, double value, std::uint8_t tools_after, bool pierce) {
-        if (kind == EventKind::Dwell) timer_->add_dwell(value);
-        if (pierce) timer_->add_pierce(profile_.pierce_time_s);
-        constexpr std::uint8_t kTools = kCuttingTools | kMarkingTools;
-        const bool tools_change = ((tools_after ^ timer_tools_) & kTools) != 0;
-        timer_tools_ = tools_after;
-        const bool function = kind == EventKind::Function;
-        const bool control = function && (code == fn::kAccelerationControlOn || code == fn::kAccelerationControlOff);
-        const bool cancel = function && (code == fn::kCancelFunctions || code == fn::kEndOfTape);
-        const bool stop = tools_change || control || (kind != EventKind::Function && kind != EventKind::ZeroOffset);
-        if (!stop && !cancel) return;
-        if (control || cancel) block_stops_ = code == fn::kAccelerationControlOn;
-        pause_.stop = pause_.stop || stop;
-        pause_.pending = true;
-        if (!kerf_.open()) apply_pause();
-    }
-    // A pause that waits: held behind the open piece of the compensated path (once: later events of the same
-    // gap change the pause itself), applied where the path passes it on.
-    void queue_pause() {
-        if (pause_.pending && !pause_.queued) {
-            pause_.queued = true;
-            kerf_.event(MachineEvent{});
+    // The compensated path for the consumables without a machine time: the cutting time at the feed, once per torch.
+    class CuttingTimeTorchPath final : public MotionSink {
+    public:
+        explicit CuttingTimeTorchPath(StatsSink& owner) : owner_(owner) {}
+        void on_motion(const MotionRecord& m) override {
+            const int torches = m.kind == MotionKind::Cut ? m.torches : 1;
+            const double t = TorchPath::add(owner_.stats_, m.kind, m.length_mm, m.feed_mm_min, torches);
+            if (m.kind == MotionKind::Cut) owner_.torch_cutting_s_ += t * torches;
         }
+
+    private:
+        StatsSink& owner_;
+    };
+    [[gnu::noinline]] void time_line(MotionKind kind, Point start, Point end, double length_mm, double feed_mm_min) {
+        if (timer_) timer_->line(kind, start, end, length_mm, feed_mm_min);
+        else if (kind == MotionKind::Cut) torch_cutting_s_ += motion_time_s(length_mm, feed_mm_min);
     }
-    void apply_pause() {
-        if (!pause_.pending) return;
-        if (pause_.stop) timer_->stop();
-        timer_->set_block_stops(block_stops_);
-        pause_ = {};
+
+    // An event that may change the time (affects_time): its dwell while cutting (the consumables), its pierce and
+    // dwell time, and whether the machine stands still there (every such event but an 83 and a 63/64 that
+    // switches no tool off: a tool on or off, a dwell, a stop, the end, 17 and 18) and stops at the end of every
+    // block from there on (17 until 18, or a 63/64 that cancels the stored functions). The timer takes those two
+    // as a pause where the torch's path reaches the place: before the next motion, or, while a compensated piece
+    // is open, before the first piece of a later block.
+    void time_change(const MachineEvent& e) {
+        constexpr std::uint8_t kTools = kCuttingTools | kMarkingTools;
+        const std::uint8_t before = timed_tools_;
+        timed_tools_ = e.tools_after;
+        bool stop = ((e.tools_after ^ before) & kTools) != 0;
+        if (e.kind == EventKind::Function) [[likely]] {
+            const unsigned code = e.code;
+            if (code - fn::kAccelerationControlOn <= 1u || code - fn::kCancelFunctions <= 1u) [[unlikely]] {
+                const bool control = code <= fn::kAccelerationControlOff;  // (17, 18; else 63, 64)
+                block_stops_ = code == fn::kAccelerationControlOn;
+                stop = stop || control;
+            }
+        } else if (e.kind != EventKind::ZeroOffset) {
+            stop = true;
+            if (e.kind == EventKind::Dwell) {
+                if (e.tools_after & kCuttingTools) cutting_dwell_s_ += e.value * e.torches_after;
+                if (timer_) timer_->add_dwell(e.value);
+            }
+        }
+        if (!timer_) return;
+        if (starts_cutting(before, e.tools_after)) timer_->add_pierce(profile_.pierce_time_s);  // (PierceTracker's rule)
+        timer_->pause(stop, block_stops_, kerf_.open() ? std::int64_t{kerf_.open_block()} : -1);
     }
     // The cost and the consumables, from the statistics (the machine time when there is one).
     void reckon_costs() {
@@ -226,7 +260,7 @@ private:
                                        stats_.pierces, stats_.cut_length_mm});
         }
         if (profile_.consumables) {
-            const double cutting = machine ? stats_.machine_time->torch_cutting_s : stats_.torch_cutting_time_s;
+            const double cutting = machine ? stats_.machine_time->torch_cutting_s : torch_cutting_s_;
             const double arc_on = cutting + static_cast<double>(stats_.pierces) * profile_.pierce_time_s + cutting_dwell_s_;
             stats_.consumables = consumable_use(*profile_.consumables, stats_.pierces, arc_on);
         }
@@ -309,17 +343,16 @@ private:
     const Profile& profile_;
     Stats stats_;
     PierceTracker pierces_;
-    double cutting_dwell_s_ = 0;  // dwells while a cutting tool is on, once per torch
-    // The machine time (with the profile's accel_mm_s2) and what it follows of the events.
+    // The machine time (with the profile's accel_mm_s2), what it follows of the events, and the consumables' times.
+    bool timed_;                  // accel_mm_s2 or consumables
     std::optional<MachineTimer> timer_;
-    std::uint8_t timer_tools_ = 0;
+    double torch_cutting_s_ = 0;  // the cutting motions at their feed, once per torch
+    double cutting_dwell_s_ = 0;  // dwells while a cutting tool is on, once per torch
+    std::uint8_t timed_tools_ = 0;
     bool block_stops_ = false;
-    struct Pause {
-        bool pending = false;  // not applied yet
-        bool queued = false;   // held behind the compensated path's open piece
-        bool stop = false;
-    } pause_;
     TorchPath torch_path_;
+    MachineTorchPath machine_path_;
+    CuttingTimeTorchPath cutting_path_;
     KerfPath kerf_;
     Placement placement_;
     bool plain_;
