@@ -27,7 +27,7 @@
 
 namespace essi {
 
-// Motions that wait for their plan at most: 1024 × 48 bytes.
+// Motions that wait for their plan at most: 1024 × 32 bytes, and 1025 × 8 for the backward pass.
 constexpr std::size_t kMachineTimeWindow = 1024;
 // Motions shorter than this (mm) take no time and change no direction.
 constexpr double kMachineTimeMinLength = 1e-9;
