@@ -314,6 +314,17 @@ test('machine time, cost and consumables: JSON report validates, text shows them
   }
   const text = essi(['check', '--profile', path.join(d, 'p.json'), 'tests/data/machine_time/line.esi']);
   assert.match(text.stdout, /; machine time 0:00:0\d \([\d.]+ s accelerating\); cost [\d.]+ EUR; electrodes [\d.]+\n/);
+  // The other reports: JUnit's system-out and `essi stats` carry it, `essi diff` compares it.
+  const junit = essi(['check', '--format', 'junit', '--profile', path.join(d, 'p.json'), 'tests/data/machine_time/line.esi']);
+  assert.match(junit.stdout, /<system-out>[^<]*; machine time 0:00:03 \(0\.2 s accelerating\); cost [\d.]+ EUR; electrodes [\d.]+/);
+  const stats = essi(['stats', '--profile', path.join(d, 'p.json'), 'tests/data/machine_time/line.esi']);
+  assert.match(stats.stdout, /machine time: +3\.2 s \(0:00:03\)/);
+  const diff = essi(['diff', '--format', 'json', '--profile', path.join(d, 'p.json'), 'tests/data/machine_time/line.esi',
+    'tests/data/machine_time/square.esi']);
+  const change = JSON.parse(diff.stdout).stats_change;
+  assert.equal(change.machine_time_s.a, 3.2);  // 1.2 s and a pierce of 2 s
+  assert.equal(change.machine_time_s.b, 6.759032);  // square.expected's 4.759032 s and the pierce
+  assert.ok('cost_total' in change);
   // Without the keys nothing of it is in the report.
   const plain = JSON.parse(essi(['check', '--format', 'json', 'examples/']).stdout);
   for (const f of plain.files)
