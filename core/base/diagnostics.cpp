@@ -56,6 +56,7 @@ constexpr std::array kCodes = {
     CodeRow{DiagCode::N612_ContoursOverlap, Msg::CodeN612},
     CodeRow{DiagCode::N613_PlateTooCrowded, Msg::CodeN613},
     CodeRow{DiagCode::N614_PlateSplit, Msg::CodeN614},
+    CodeRow{DiagCode::N615_CutTooLong, Msg::CodeN615},
     CodeRow{DiagCode::E115_TooManyErrors, Msg::CodeE115},
     CodeRow{DiagCode::E116_MisplacedMark, Msg::CodeE116},
     CodeRow{DiagCode::E117_TapeTooLarge, Msg::CodeE117},
@@ -124,7 +125,7 @@ namespace {
 bool is_note_code(DiagCode code) {
     return code == DiagCode::N403_OtherDialect || code == DiagCode::N603_KerfInsideLoneContour ||
            code == DiagCode::N612_ContoursOverlap || code == DiagCode::N613_PlateTooCrowded ||
-           code == DiagCode::N614_PlateSplit;
+           code == DiagCode::N614_PlateSplit || code == DiagCode::N615_CutTooLong;
 }
 }  // namespace
 

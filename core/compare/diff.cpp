@@ -19,44 +19,29 @@
 namespace essi {
 namespace {
 
-// Collects the contours: a run of cut (or mark) motions of one head, closed by another kind of motion, by the tool
-// going off or by the end. (Head 2 of a 3-axis tape cuts its own contours.)
+// Collects the contours (essi/contour.hpp) with their box, length and shape (and their motions, `keep_paths`).
 class ContourSink final : public MotionSink {
 public:
-    ContourSink(std::vector<Contour>& out, bool keep_paths) : out_(out), keep_paths_(keep_paths) {}
+    ContourSink(std::vector<DiffContour>& out, bool keep_paths) : out_(out), keep_paths_(keep_paths) {}
+
+    // Where a contour goes when it ends.
+    auto kept() {
+        return [this](DiffContour& c) { out_.push_back(std::move(c)); };
+    }
 
     void on_motion(const MotionRecord& m) override {
-        const int h = m.head == 2 ? 1 : 0;
-        const bool tool = m.kind == MotionKind::Cut || m.kind == MotionKind::Mark;
-        if (open_[h] && (!tool || m.kind != current_[h].kind)) close(h);
-        if (!tool) return;
-        if (!open_[h]) {
-            current_[h] = Contour{};
-            current_[h].kind = m.kind;
-            current_[h].first_line = m.line;
-            current_[h].start = m.start;
-            open_[h] = true;
-        }
-        add(current_[h], m);
-        if (keep_paths_) current_[h].path.push_back(m);
+        DiffContour* c = builder_.motion(m, [&](DiffContour& began) { began.start = m.start; }, kept());
+        if (!c) return;
+        add(*c, m);
+        if (keep_paths_) c->path.push_back(m);
     }
-    void on_event(const MachineEvent& e) override {
-        if (!(e.tools_after & (kCuttingTools | kMarkingTools))) close_all();
-    }
-    void close_all() {
-        close(0);
-        close(1);
-    }
+    void on_event(const MachineEvent& e) override { builder_.event(e.tools_after, kept()); }
+    void end() { builder_.end(kept()); }
 
 private:
-    void close(int h) {
-        if (open_[h]) out_.push_back(std::move(current_[h]));
-        open_[h] = false;
-    }
-    static void add(Contour& c, const MotionRecord& m) {
-        c.last_line = m.line;
-        c.length_mm += m.length_mm;
+    static void add(DiffContour& c, const MotionRecord& m) {
         ++c.motions;
+        c.length_mm += m.length_mm;
         c.box.add(bounding_box(m));
         const auto rel = [&](Point p) {
             c.shape.push_back(p.x - c.start.x);
@@ -72,13 +57,12 @@ private:
         }
     }
 
-    std::vector<Contour>& out_;
+    std::vector<DiffContour>& out_;
     bool keep_paths_;
-    Contour current_[2];
-    bool open_[2] = {false, false};
+    ContourBuilder<DiffContour> builder_;
 };
 
-bool same_shape(const Contour& a, const Contour& b) {
+bool same_shape(const DiffContour& a, const DiffContour& b) {
     if (a.kind != b.kind || a.shape.size() != b.shape.size()) return false;
     for (std::size_t i = 0; i < a.shape.size(); ++i)
         if (std::fabs(a.shape[i] - b.shape[i]) > kDiffToleranceMm) return false;
@@ -96,11 +80,11 @@ bool overlap(const Box& a, const Box& b) {
 // two beside it (a length within the tolerance may round either way).
 class ShapeIndex {
 public:
-    explicit ShapeIndex(const std::vector<Contour>& b) {
+    explicit ShapeIndex(const std::vector<DiffContour>& b) {
         for (std::size_t j = 0; j < b.size(); ++j) buckets_[key(b[j], 0)].push_back(static_cast<int>(j));
     }
     template <class F>
-    void for_each_candidate(const Contour& a, F&& f) const {
+    void for_each_candidate(const DiffContour& a, F&& f) const {
         for (int d : {-1, 0, 1}) {
             const auto it = buckets_.find(key(a, d));
             if (it != buckets_.end())
@@ -109,7 +93,7 @@ public:
     }
 
 private:
-    static std::pair<std::size_t, long long> key(const Contour& c, int shift) {
+    static std::pair<std::size_t, long long> key(const DiffContour& c, int shift) {
         return {c.motions, std::llround(c.length_mm * 100) + shift};
     }
     std::map<std::pair<std::size_t, long long>, std::vector<int>> buckets_;
@@ -118,7 +102,7 @@ private:
 // The unmatched contour of B nearest to `a`'s start among those `fits` accepts, or -1 (a scan of B: for the
 // contours left after the shapes are matched).
 template <class Fits>
-int nearest(const Contour& a, const std::vector<Contour>& b, const std::vector<bool>& taken, Fits&& fits) {
+int nearest(const DiffContour& a, const std::vector<DiffContour>& b, const std::vector<bool>& taken, Fits&& fits) {
     int best = -1;
     double best_d = std::numeric_limits<double>::infinity();
     for (std::size_t j = 0; j < b.size(); ++j) {
@@ -141,7 +125,7 @@ TapeContours tape_contours(std::string_view bytes, const TapeSetup& setup, bool 
     TapeReader reader(bytes, setup.profile, setup.format);
     Tape chunk;
     while (reader.read_chunk(chunk, kCheckChunkBlocks)) checker.check_chunk(chunk);
-    sink.close_all();
+    sink.end();
     t.check = checker.finish();
     record_setup(t.check, setup);
     return t;
@@ -163,7 +147,7 @@ std::size_t TapeDiff::count(ContourChange c) const {
         std::count_if(contours.begin(), contours.end(), [&](const ContourDiff& d) { return d.change == c; }));
 }
 
-TapeDiff diff_contours(const std::vector<Contour>& a, const std::vector<Contour>& b) {
+TapeDiff diff_contours(const std::vector<DiffContour>& a, const std::vector<DiffContour>& b) {
     std::vector<ContourDiff> of_a(a.size());
     std::vector<bool> taken(b.size(), false);
     const ShapeIndex index(b);
@@ -172,7 +156,7 @@ TapeDiff diff_contours(const std::vector<Contour>& a, const std::vector<Contour>
         of_a[i] = {ContourChange::Removed, static_cast<int>(i), -1, {}};
         index.for_each_candidate(a[i], [&](int j) {
             if (of_a[i].b >= 0 || taken[static_cast<std::size_t>(j)]) return;
-            const Contour& c = b[static_cast<std::size_t>(j)];
+            const DiffContour& c = b[static_cast<std::size_t>(j)];
             if (distance(a[i].start, c.start) <= kDiffToleranceMm && same_shape(a[i], c)) {
                 of_a[i] = {ContourChange::Same, static_cast<int>(i), j, {}};
                 taken[static_cast<std::size_t>(j)] = true;
@@ -187,20 +171,20 @@ TapeDiff diff_contours(const std::vector<Contour>& a, const std::vector<Contour>
         int moved = -1;
         double moved_d = std::numeric_limits<double>::infinity();
         index.for_each_candidate(a[i], [&](int k) {
-            const Contour& c = b[static_cast<std::size_t>(k)];
+            const DiffContour& c = b[static_cast<std::size_t>(k)];
             if (taken[static_cast<std::size_t>(k)] || !same_shape(a[i], c) || distance(a[i].start, c.start) >= moved_d) return;
             moved_d = distance(a[i].start, c.start);
             moved = k;
         });
         const double size = std::hypot(a[i].box.max_x - a[i].box.min_x, a[i].box.max_y - a[i].box.min_y);
         const bool near_move = moved >= 0 && moved_d <= size;  // (then no scan for an edit in place)
-        const int changed = near_move ? -1 : nearest(a[i], b, taken, [&](const Contour& c) {
+        const int changed = near_move ? -1 : nearest(a[i], b, taken, [&](const DiffContour& c) {
             return c.kind == a[i].kind && overlap(a[i].box, c.box);
         });
         const bool take_moved = near_move || (moved >= 0 && changed < 0);
         if (!take_moved && changed < 0) continue;
         const int j = take_moved ? moved : changed;
-        const Contour& c = b[static_cast<std::size_t>(j)];
+        const DiffContour& c = b[static_cast<std::size_t>(j)];
         of_a[i] = {take_moved ? ContourChange::Moved : ContourChange::Changed, static_cast<int>(i), j, {}};
         if (take_moved) of_a[i].offset = {c.start.x - a[i].start.x, c.start.y - a[i].start.y};
         taken[static_cast<std::size_t>(j)] = true;
@@ -219,12 +203,12 @@ constexpr ContourChange kChanges[] = {ContourChange::Same, ContourChange::Moved,
 
 std::string signed_mm_text(double v) { return (v >= 0 ? "+" : "") + mm_text(v); }
 
-std::string lines_text(const Contour& c, Lang lang) {
+std::string lines_text(const DiffContour& c, Lang lang) {
     return c.first_line == c.last_line ? format_message(Msg::DiffLine, lang, {c.first_line})
                                        : format_message(Msg::DiffLines, lang, {c.first_line, c.last_line});
 }
 
-std::string contour_text(const Contour& c, Lang lang) {
+std::string contour_text(const DiffContour& c, Lang lang) {
     return format_message(Msg::DiffContour, lang,
                           {c.kind == MotionKind::Mark ? Msg::DiffKindMark : Msg::DiffKindCut, mm_text(c.length_mm),
                            mm_text(c.start.x), mm_text(c.start.y)});
@@ -260,7 +244,7 @@ std::vector<StatChange> stat_changes(const Stats& a, const Stats& b) {
     return changes;
 }
 
-nlohmann::json contour_json(const Contour& c) {
+nlohmann::json contour_json(const DiffContour& c) {
     return {{"kind", motion_kind_name(c.kind)},
             {"first_line", c.first_line},
             {"last_line", c.last_line},
@@ -280,8 +264,8 @@ nlohmann::json side_json(const DiffSide& s) {
 }  // namespace
 
 std::string difference_text(const TapeContours& a, const TapeContours& b, const ContourDiff& d, Lang lang) {
-    const auto of_a = [&]() -> const Contour& { return a.contours[static_cast<std::size_t>(d.a)]; };
-    const auto of_b = [&]() -> const Contour& { return b.contours[static_cast<std::size_t>(d.b)]; };
+    const auto of_a = [&]() -> const DiffContour& { return a.contours[static_cast<std::size_t>(d.a)]; };
+    const auto of_b = [&]() -> const DiffContour& { return b.contours[static_cast<std::size_t>(d.b)]; };
     switch (d.change) {
         case ContourChange::Same: break;
         case ContourChange::Moved:

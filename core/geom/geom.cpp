@@ -200,9 +200,8 @@ Point point_at(const MotionRecord& m, double fraction) {
     return m.end;
 }
 
-void flatten(const MotionRecord& m, double chord_tolerance_mm, std::vector<Point>& out, bool include_start) {
-    if (include_start) out.push_back(m.start);
-    int segments = 1;
+int flatten_segments(const MotionRecord& m, double chord_tolerance_mm, int max_segments) {
+    double segments = 1;  // (a double until it is clamped: a huge or NaN curve never overflows an int)
     const double tol = std::max(chord_tolerance_mm, kMinChordTolerance);
     switch (m.curve) {
         case CurveKind::Line: break;
@@ -211,20 +210,27 @@ void flatten(const MotionRecord& m, double chord_tolerance_mm, std::vector<Point
             const double r = std::max(m.radius, m.end_radius);
             if (r > tol) {
                 const double max_step = 2 * std::acos(1 - tol / r);
-                segments = static_cast<int>(std::ceil(std::abs(m.sweep) / max_step));
+                segments = std::ceil(std::abs(m.sweep) / max_step);
             }
-            segments = std::max(segments, std::abs(m.sweep) > kPi ? 4 : 2);
+            segments = std::max(segments, std::abs(m.sweep) > kPi ? 4.0 : 2.0);
             break;
         }
         case CurveKind::Parabola: {
             // Chord error over a parameter step h is at most h^2 * curvature_max / 8, with curvature <= 1/p.
             const double span = std::abs(m.parabola.t1 - m.parabola.t0);
             const double max_step = std::sqrt(8 * tol * m.parabola.p);
-            segments = std::max(2, static_cast<int>(std::ceil(span / max_step)));
+            segments = std::max(2.0, std::ceil(span / max_step));
             break;
         }
     }
-    segments = std::min(segments, kMaxFlattenSegments);
+    const double most = std::max(max_segments, 1);
+    return static_cast<int>(segments >= 1 && segments <= most ? segments : segments > most ? most : 1);
+}
+
+void flatten(const MotionRecord& m, double chord_tolerance_mm, std::vector<Point>& out, bool include_start,
+             int max_segments) {
+    if (include_start) out.push_back(m.start);
+    const int segments = flatten_segments(m, chord_tolerance_mm, max_segments);
     for (int i = 1; i < segments; ++i) out.push_back(point_at(m, static_cast<double>(i) / segments));
     out.push_back(m.end);
 }

@@ -148,15 +148,32 @@ void find_gap(Cut& cut, std::span<const Piece> p, double gap_limit_mm) {
 
 double piece_length(const Piece& p) { return p.arc ? std::fabs(p.sweep) * p.radius : dist(p.start, p.end); }
 
+std::uint32_t motion_of_piece(const Cut& cut, std::span<const Piece> pieces, std::uint32_t k) {
+    std::uint32_t motion = 0;
+    for (std::uint32_t i = cut.first_piece + 1; i <= k; ++i) motion += pieces[i].continues ? 0 : 1;
+    return motion;
+}
+
+int arc_chords(double radius, double sweep) {
+    if (!(radius > kPlanChordToleranceMm)) return 1;
+    // A chord over angle a has a sagitta r(1 - cos(a/2)) <= r a^2 / 8: steps of sqrt(8 tol / r) stay within tol.
+    const double n = std::ceil(std::fabs(sweep) / std::sqrt(8 * kPlanChordToleranceMm / radius));
+    return n >= 1 && n <= kPlanMaxArcChords ? static_cast<int>(n) : n > kPlanMaxArcChords ? kPlanMaxArcChords : 1;
+}
+
+std::size_t curve_points(const MotionRecord& m) {
+    if (m.curve == CurveKind::Parabola)
+        return static_cast<std::size_t>(flatten_segments(m, kPlanChordToleranceMm, kPlanMaxArcChords));
+    return static_cast<std::size_t>(arc_chords(m.radius, m.sweep));
+}
+
 void flatten_piece(const Piece& p, std::vector<Point>& out) {
     if (!p.arc || p.radius <= kPlanChordToleranceMm) {
         out.push_back(p.end);
         return;
     }
-    // A chord over angle a has a sagitta r(1 - cos(a/2)) <= r a^2 / 8: steps of sqrt(8 tol / r) stay within tol.
     // The points turn about the centre by one rotation each (no trigonometry a point).
-    const double max_step = std::sqrt(8 * kPlanChordToleranceMm / p.radius);
-    const int n = std::clamp(static_cast<int>(std::ceil(std::fabs(p.sweep) / max_step)), 1, kPlanMaxArcChords);
+    const int n = arc_chords(p.radius, p.sweep);
     const double step = p.sweep / n, c = std::cos(step), s = std::sin(step);
     double vx = p.start.x - p.centre.x, vy = p.start.y - p.centre.y;
     for (int k = 1; k < n; ++k) {
@@ -172,6 +189,7 @@ void close_loop(Cut& cut, std::span<const Piece> pieces, double closure_mm, doub
     const std::span<const Piece> p = pieces.subspan(cut.first_piece, cut.end_piece - cut.first_piece);
     cut.closed = false;
     const std::size_t n = p.size();
+    if (n == 0) return;  // (a cut left out of the plan's tests, N615: no pieces, an empty box, no gap)
     const double closure2 = closure_mm * closure_mm;
     // First the loops that begin on the lead-in's first pieces (nearly every contour), then any other point passed.
     for (const std::size_t candidates : {std::min(n, kPlanLeadMotions), n <= kPlanFullClosureMotions ? n : std::size_t{0}}) {

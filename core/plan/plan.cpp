@@ -48,9 +48,8 @@ struct PlateJob {
 
 // A plate kept by defer_plates: where each cut is in the stream (its motions are read back to analyse it).
 struct DeferredCut {
-    std::uint32_t first_motion, end_motion, first_line, last_line;
+    Contour contour;
     double kerf_width_mm;
-    std::uint8_t head;
     KerfSide kerf;
 };
 struct DeferredPlate {
@@ -64,8 +63,8 @@ namespace plan {
 
 void append_parabola(const MotionRecord& m, std::vector<Piece>& out) {
     std::vector<Point> pts;
-    flatten(m, kPlanChordToleranceMm, pts, /*include_start*/ true);
-    for (std::size_t k = 1; k < pts.size(); ++k) out.push_back({pts[k - 1], pts[k], {}, 0, 0, m.line, false});
+    flatten(m, kPlanChordToleranceMm, pts, /*include_start*/ true, kPlanMaxArcChords);
+    for (std::size_t k = 1; k < pts.size(); ++k) out.push_back({pts[k - 1], pts[k], {}, 0, 0, m.line, false, k > 1});
 }
 
 }  // namespace plan
@@ -76,15 +75,13 @@ struct CutPlan::State {
     double closure_mm;
     std::vector<plan::Cut> cuts;       // the plate's cuts, in cutting order
     std::vector<plan::Piece> pieces;   // their pieces, cut after cut
-    // The cut of each head in progress. Head 1's pieces go straight to the plate's; head 2's are gathered apart (the
-    // heads' motions interleave) and join the plate's when it ends, or after head 1's cut if that is still going.
-    plan::Cut open[2];
+    // The cut of each head in progress (the cut contours: marks are no part of the plan). Head 1's pieces go
+    // straight to the plate's; head 2's are gathered apart (the heads' motions interleave) and join the plate's
+    // when it ends, or after head 1's cut if that is still going.
+    ContourBuilder<plan::Cut, kCuttingTools> cuts_found;
     std::vector<plan::Piece> head2_pieces;
     std::vector<plan::Cut> deferred;   // head 2's cuts that ended while head 1 was cutting, with their pieces
     std::vector<std::vector<plan::Piece>> deferred_pieces;
-    bool cutting[2] = {false, false};
-    KerfSide open_kerf[2] = {KerfSide::Off, KerfSide::Off};
-    bool mixed_kerf[2] = {false, false};
     int plate = 1;
     bool moved = false;
     Point home, here;                  // where the program started, where head 1 is
@@ -96,8 +93,11 @@ struct CutPlan::State {
     PlateRunner* runner = nullptr;
     std::vector<std::unique_ptr<PlateJob>> jobs;  // the plates handed over, in order
     std::size_t folded = 0;            // jobs[0, folded) are folded into `found` (and freed)
-    std::uint32_t next_motion = 0;     // the stream index of the next motion
     std::size_t plate_motions = 0;     // cutting motions of the plate so far (its part: kPlanMaxPlateMotions)
+    std::size_t plate_points = 0;      // their points flattened, as held (its part: kPlanMaxPlatePoints)
+    std::size_t cut_points[2] = {0, 0};  // the open cut's points flattened
+    bool too_long[2] = {false, false};   // the open cut has more than kPlanMaxPlatePoints: left out (N615)
+    std::size_t overlap_points_left = kPlanMaxOverlapPointsPerTape;  // for the collisions' overlap polygons
     bool ended = false;                // end_input() was called
     // defer_plates: the store the plates' motions are read back from, and the plates kept (the first
     // `next_deferred` of them analysed).
@@ -108,7 +108,7 @@ struct CutPlan::State {
     explicit State(const Profile& p, bool keep)
         : profile(p), keep_contours(keep), closure_mm(p.arc_tolerance_units * p.unit_mm), cap(p.max_per_code) {}
 
-    // Where head 1 is; a motion that cuts nothing ends the head's cut.
+    // Where the program started and where head 1 is.
     void passed(int head, Point start, Point end) {
         if (!moved) {
             home = start;
@@ -116,64 +116,80 @@ struct CutPlan::State {
         }
         if (head == 0) here = end;
     }
-    // The cut of head `h` gets a piece of line `line`, cut with this kerf.
-    void cut_of(int h, std::uint32_t index, std::uint32_t line, KerfSide kerf, double kerf_mm, double feed) {
+    // Whether head `h` (0, 1) is cutting.
+    bool cutting(int h) const { return cuts_found.open(static_cast<std::uint8_t>(h + 1)) != nullptr; }
+    // Where a cut goes when it ends.
+    auto cut_ended() {
+        return [this](plan::Cut& c) { end_cut(c); };
+    }
+    // A cut begins, its first motion cut with this kerf.
+    void begin_cut(plan::Cut& c, KerfSide kerf) {
+        c.kerf = kerf;
+        if (c.head == 2) head2_pieces.clear();
+        c.first_piece = static_cast<std::uint32_t>(pieces.size());
+        const int h = c.head == 2 ? 1 : 0;
+        cut_points[h] = 0;
+        too_long[h] = false;
+    }
+    // The cut `c` of head `h` gets a motion of line `line` and `points` points, cut with this kerf.
+    void cut_of(plan::Cut& c, int h, std::uint32_t line, KerfSide kerf, double kerf_mm, double feed,
+                std::size_t points) {
         if (feed != checked_feed) [[unlikely]] check_feed(line, feed);
-        plan::Cut& c = open[h];
-        if (!cutting[h]) {
-            c = plan::Cut{};
-            c.first_line = line;
-            c.first_motion = index;
-            c.head = static_cast<std::uint8_t>(h + 1);
-            cutting[h] = true;
-            open_kerf[h] = kerf;
-            mixed_kerf[h] = false;
-            if (h == 1) head2_pieces.clear();
-            c.first_piece = static_cast<std::uint32_t>(pieces.size());
-        }
         ++plate_motions;
-        if (kerf != open_kerf[h]) [[unlikely]] mixed_kerf[h] = true;
+        count_points(c, h, points);
+        if (kerf != c.kerf) [[unlikely]] c.kerf_changed = true;
         if (2 * kerf_mm > c.kerf_width_mm) [[unlikely]] c.kerf_width_mm = 2 * kerf_mm;
-        c.last_line = line;
-        c.end_motion = index + 1;
     }
     // Head 1's pieces go straight to the plate's; head 2's wait apart (the heads' motions interleave).
     std::vector<plan::Piece>& pieces_of(int h) { return h == 0 ? pieces : head2_pieces; }
+    // The open cut of head `h` grows by `points`; past kPlanMaxPlatePoints it is left out and its pieces dropped.
+    void count_points(const plan::Cut& c, int h, std::size_t points) {
+        cut_points[h] += points;
+        if (cut_points[h] > kPlanMaxPlatePoints) [[unlikely]] {
+            drop_long_cut(c, h, points);
+            return;
+        }
+        plate_points += points;
+    }
+    [[gnu::noinline]] void drop_long_cut(const plan::Cut& c, int h, std::size_t points) {
+        if (too_long[h]) return;
+        too_long[h] = true;
+        plate_points -= cut_points[h] - points;  // (what the cut added before this motion)
+        if (h == 0) pieces.resize(c.first_piece);
+        else head2_pieces.clear();
+    }
+    // Whether the pieces of head `h`'s motion are kept (not when the plate's motions are read back from a store, nor
+    // for a cut left out).
+    bool keeps_pieces(int h) const { return !store && !too_long[h]; }
 
     void add(const MotionRecord& m) {
-        const std::uint32_t index = next_motion++;
         const int h = m.head == 2 ? 1 : 0;
         passed(h, m.start, m.end);
-        if (m.kind != MotionKind::Cut) {
-            close(h);
-            return;
-        }
-        cut_of(h, index, m.line, m.kerf, m.kerf_mm, m.feed_mm_min);
-        if (!store) plan::append_pieces(m, pieces_of(h));
+        const auto began = [&](plan::Cut& cut) { begin_cut(cut, m.kerf); };
+        plan::Cut* c = cuts_found.motion(m, began, cut_ended());
+        if (!c) return;
+        cut_of(*c, h, m.line, m.kerf, m.kerf_mm, m.feed_mm_min, plan::plan_points(m));
+        if (keeps_pieces(h)) plan::append_pieces(m, pieces_of(h));
     }
     // A straight motion of head 1 (most of a tape): no record made.
-    void add(const UnitLine& l) {
-        const std::uint32_t index = next_motion++;
+    [[gnu::flatten]] void add(const UnitLine& l) {
         passed(0, l.start, l.end);
-        if (l.kind != MotionKind::Cut) {
-            close(0);
-            return;
-        }
-        cut_of(0, index, l.line, l.kerf, l.kerf_mm, l.feed_mm_min);
-        if (!store) pieces.push_back({l.start, l.end, {}, 0, 0, l.line, false});
+        const auto began = [&](plan::Cut& cut) { begin_cut(cut, l.kerf); };
+        plan::Cut* c = cuts_found.motion(l, began, cut_ended());
+        if (!c) return;
+        cut_of(*c, 0, l.line, l.kerf, l.kerf_mm, l.feed_mm_min, 1);
+        if (keeps_pieces(0)) pieces.push_back({l.start, l.end, {}, 0, 0, l.line, false});
     }
 
-    // The cut of head `h` ends here, if one is going (called at every motion that cuts nothing and every event).
-    void close(int h) {
-        if (cutting[h]) [[unlikely]] end_cut(h);
-    }
-    void end_cut(int h) {
-        cutting[h] = false;
-        plan::Cut& c = open[h];
-        c.kerf = mixed_kerf[h] ? KerfSide::Off : open_kerf[h];
+    void end_cut(plan::Cut& c) {
+        const int h = c.head == 2 ? 1 : 0;
+        c.points = too_long[h] ? 0 : cut_points[h];
+        if (too_long[h]) [[unlikely]] leave_out(c);
+        if (c.kerf_changed) c.kerf = KerfSide::Off;
         if (c.kerf == KerfSide::Off) c.kerf_width_mm = 0;
-        if (h == 1) {
-            if (cutting[0]) {  // (head 1's cut is filling the plate's pieces: head 2's joins after it)
+        const bool head2 = c.head == 2;
+        if (head2) {
+            if (cutting(0)) {  // (head 1's cut is filling the plate's pieces: head 2's joins after it)
                 deferred.push_back(std::move(c));
                 deferred_pieces.push_back(std::move(head2_pieces));
                 return;
@@ -182,7 +198,7 @@ struct CutPlan::State {
             pieces.insert(pieces.end(), head2_pieces.begin(), head2_pieces.end());
         }
         finish_cut(c);
-        if (h == 0 && !deferred.empty()) {
+        if (!head2 && !deferred.empty()) {
             for (std::size_t k = 0; k < deferred.size(); ++k) {
                 deferred[k].first_piece = static_cast<std::uint32_t>(pieces.size());
                 pieces.insert(pieces.end(), deferred_pieces[k].begin(), deferred_pieces[k].end());
@@ -192,29 +208,48 @@ struct CutPlan::State {
             deferred_pieces.clear();
         }
     }
+    // A cut of more points than a plate's part holds: no pieces and no motions (a store gives none back), so the
+    // plate's tests pass over it; N615 says so.
+    void leave_out(plan::Cut& c) {
+        c.end_motion = c.first_motion;
+        if (!cap.admit(DiagCode::N615_CutTooLong, c.first_line, Severity::Note)) return;
+        Diagnostic d = make_diagnostic(Severity::Note, DiagCode::N615_CutTooLong, c.first_line, 0, Msg::PlanCutTooLong,
+                                       {c.first_line, c.last_line, kPlanMaxPlatePoints});
+        d.contour_first = c.first_line;
+        d.contour_last = c.last_line;
+        found.push_back(std::move(d));
+    }
     void finish_cut(plan::Cut& c) {
         c.end_piece = static_cast<std::uint32_t>(pieces.size());
         c.order = static_cast<int>(cuts.size());
         cuts.push_back(std::move(c));
-        if (plate_motions >= kPlanMaxPlateMotions && !cutting[0] && !cutting[1]) [[unlikely]] split_plate();
+        if ((plate_motions >= kPlanMaxPlateMotions || plate_points >= kPlanMaxPlatePoints) && !cutting(0) &&
+            !cutting(1)) [[unlikely]]
+            split_plate();
     }
     // The plate so far is analysed as a part of its own (N614 after its last cut): a plate's memory is bounded.
     void split_plate() {
         const std::uint32_t last = cuts.back().last_line;
-        if (cap.admit(DiagCode::N614_PlateSplit, last, Severity::Note))
-            found.push_back(make_diagnostic(Severity::Note, DiagCode::N614_PlateSplit, last, 0, Msg::PlanPlateSplit,
-                                            {last, kPlanMaxPlateMotions}));
+        if (cap.admit(DiagCode::N614_PlateSplit, last, Severity::Note)) {
+            const bool by_motions = plate_motions >= kPlanMaxPlateMotions;
+            found.push_back(make_diagnostic(
+                Severity::Note, DiagCode::N614_PlateSplit, last, 0,
+                by_motions ? Msg::PlanPlateSplit : Msg::PlanPlateSplitPoints,
+                {last, by_motions ? kPlanMaxPlateMotions : kPlanMaxPlatePoints}));
+        }
         end_plate();
     }
 
     plan::PlateSettings settings() const {
         return {closure_mm, profile.closure_gap_mm, profile.lead_in_required, plate, profile.table, profile.max_per_code};
     }
+    // The plate ends (no cut is going on).
     void end_plate() {
-        close(0);
-        close(1);
-        const std::size_t motions = plate_motions;
+        // (the runner's queue weighs a plate by its motions, or by its points at the scale of the motions' limit)
+        const std::size_t weight =
+            std::max(plate_motions, plate_points / (kPlanMaxPlatePoints / kPlanMaxPlateMotions));
         plate_motions = 0;
+        plate_points = 0;
         if (cuts.empty()) return;
         if (store) {
             keep_plate();
@@ -229,7 +264,7 @@ struct CutPlan::State {
         job->keep_contours = keep_contours;
         PlateJob* j = job.get();
         jobs.push_back(std::move(job));
-        if (runner) runner->run([j] { j->run(); }, motions);
+        if (runner) runner->run([j] { j->run(); }, weight);
         else j->run();
         ++plate;
         fold_done();
@@ -239,19 +274,37 @@ struct CutPlan::State {
     void fold_done() {
         while (folded < jobs.size() && jobs[folded]->done.load(std::memory_order_acquire)) {
             PlateJob& j = *jobs[folded];
+            const std::size_t first_new = found.size();
             cap.move_admitted(j.found, found);
+            for (std::size_t k = first_new; k < found.size(); ++k) keep_overlap_within_budget(found[k]);
             cap.add_omitted(j.cap);
-            contours.insert(contours.end(), j.contours.begin(), j.contours.end());
+            const int before = static_cast<int>(contours.size());  // (the plate's parents: in the plate's list)
+            for (PlanContour& c : j.contours) {
+                if (c.parent >= 0) c.parent += before;
+                contours.push_back(std::move(c));
+            }
             jobs[folded++].reset();
         }
+    }
+    // A collision keeps its overlap polygons while the tape's so far hold at most kPlanMaxOverlapPointsPerTape
+    // points; later ones go without (the report's size stays bounded whatever the collisions).
+    void keep_overlap_within_budget(Diagnostic& d) {
+        std::size_t points = 0;
+        for (const std::vector<Point>& polygon : d.overlap) points += polygon.size();
+        if (points == 0) return;
+        if (points > overlap_points_left) {
+            d.overlap.clear();
+            overlap_points_left = 0;
+            return;
+        }
+        overlap_points_left -= points;
     }
     // defer_plates: the plate's cuts kept as where they are in the stream.
     void keep_plate() {
         DeferredPlate kept{{}, settings()};
         kept.cuts.reserve(cuts.size());
         for (const plan::Cut& c : cuts)
-            kept.cuts.push_back({c.first_motion, c.end_motion, c.first_line, c.last_line,
-                                 c.kerf_width_mm, c.head, c.kerf});
+            kept.cuts.push_back({c, c.kerf_width_mm, c.kerf});
         deferred_plates.push_back(std::move(kept));
         cuts.clear();
         pieces.clear();
@@ -266,18 +319,16 @@ struct CutPlan::State {
         job->keep_contours = keep_contours;
         for (const DeferredCut& d : kept.cuts) {
             plan::Cut c;
-            c.first_line = d.first_line;
-            c.last_line = d.last_line;
-            c.first_motion = d.first_motion;
-            c.end_motion = d.end_motion;
+            static_cast<Contour&>(c) = d.contour;
             c.kerf = d.kerf;
             c.kerf_width_mm = d.kerf_width_mm;
-            c.head = d.head;
             c.order = static_cast<int>(job->cuts.size());
             c.first_piece = static_cast<std::uint32_t>(job->pieces.size());
-            for (std::uint32_t k = d.first_motion; k < d.end_motion; ++k) {
+            for (std::uint32_t k = c.first_motion; k < c.end_motion; ++k) {
                 const MotionRecord m = store->motion(k);
-                if (m.kind == MotionKind::Cut && (m.head == 2) == (d.head == 2)) plan::append_pieces(m, job->pieces);
+                if (!of_contour(c, m)) continue;
+                plan::append_pieces(m, job->pieces);
+                c.points += plan::plan_points(m);
             }
             c.end_piece = static_cast<std::uint32_t>(job->pieces.size());
             job->cuts.push_back(c);
@@ -315,10 +366,7 @@ struct CutPlan::State {
             cap.admit(DiagCode::W609_DwellTooLong, e.line, Severity::Warning))
             found.push_back(make_diagnostic(Severity::Warning, DiagCode::W609_DwellTooLong, e.line, 0, Msg::PlanDwell,
                                             {number_text(e.value), number_text(profile.max_dwell_s)}));
-        if (!(e.tools_after & kCuttingTools)) {
-            close(0);
-            close(1);
-        }
+        cuts_found.event(e.tools_after, cut_ended());
         if (e.kind == EventKind::Stop && !(e.tools_after & kCuttingTools) && moved &&
             std::hypot(here.x - home.x, here.y - home.y) <= kPlanHomeToleranceMm)
             end_plate();
@@ -338,6 +386,7 @@ void CutPlan::defer_plates(const MotionStore* store) { s_->store = store; }
 void CutPlan::end_input() {
     if (s_->ended) return;
     s_->ended = true;
+    s_->cuts_found.end(s_->cut_ended());
     s_->end_plate();
 }
 

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "essi/contour.hpp"
 #include "essi/diagnostics.hpp"
 #include "essi/geom.hpp"
 #include "essi/motion.hpp"
@@ -24,26 +25,26 @@ struct Piece {
     double radius = 0; // arcs
     std::uint32_t line = 0;
     bool arc = false;
+    bool continues = false;  // a parabola's chord after its first: of the same motion as the piece before
 };
 // Its exact box (an arc's extremes inside its sweep included) and length.
 [[nodiscard]] Box arc_box(const Piece& p);
 [[nodiscard]] inline Box piece_box(const Piece& p) { return p.arc ? arc_box(p) : Box::of(p.start, p.end); }
 [[nodiscard]] double piece_length(const Piece& p);
 
-// One cut: pierce to torch off, one head. Its pieces are the plate's pieces [first_piece, end_piece).
-struct Cut {
+// One cut: a cut contour, pierce to torch off, one head. Its pieces are the plate's pieces [first_piece, end_piece).
+struct Cut : Contour {
     std::uint32_t first_piece = 0, end_piece = 0;
-    std::uint32_t first_motion = 0, end_motion = 0;  // its motions in the stream: [first, end) of its head, cutting
-    std::uint32_t first_line = 0, last_line = 0;
+    int order = 0;                  // cutting order in the plate
     KerfSide kerf = KerfSide::Off;  // the side in force on the whole cut (Off when it changes along it)
+    bool kerf_changed = false;      // (while it is cut: the side changed along it)
+    bool closed = false;            // it holds a loop
     double kerf_width_mm = 0;       // the full width the compensation cuts (0 when off)
     Box box;
-    int order = 0;                  // cutting order in the plate
-    std::uint8_t head = 1;          // 2: head 2 of a 3-axis tape (its own coordinates: compared only with its own cuts)
+    std::size_t points = 0;         // its pieces' points flattened (plan_points of its motions)
 
     // Its loop, when it holds one: pieces [loop_begin, loop_end) (plate indices), starting at `loop_start` on the
     // first of them (its start, or a point on it for a path that closes on a line rather than at a point).
-    bool closed = false;
     std::uint32_t loop_begin = 0, loop_end = 0;
     Point loop_start;
     Box loop_box;
@@ -54,6 +55,16 @@ struct Cut {
     std::uint32_t gap_line = 0;
 };
 
+// The chords of an arc of `radius` and `sweep` for the plan's tests: within kPlanChordToleranceMm, at most
+// kPlanMaxArcChords.
+[[nodiscard]] int arc_chords(double radius, double sweep);
+// The points a cutting motion adds to its contour flattened for the plan's tests (a plate's budget,
+// kPlanMaxPlatePoints): a line 1, an arc its chords, a parabola its pieces.
+[[nodiscard]] std::size_t curve_points(const MotionRecord& m);  // (an arc or a parabola)
+[[nodiscard]] inline std::size_t plan_points(const MotionRecord& m) {
+    return m.curve == CurveKind::Line ? 1 : curve_points(m);
+}
+
 // Appends the pieces of a cutting motion to `out`: itself, or a parabola's chords (append_parabola).
 void append_parabola(const MotionRecord& m, std::vector<Piece>& out);
 inline void append_pieces(const MotionRecord& m, std::vector<Piece>& out) {
@@ -63,6 +74,8 @@ inline void append_pieces(const MotionRecord& m, std::vector<Piece>& out) {
     }
     out.push_back({m.start, m.end, m.centre, m.sweep, m.radius, m.line, m.curve == CurveKind::Arc});
 }
+// The motion piece `k` of the cut is part of, counted from the cut's first (0).
+[[nodiscard]] std::uint32_t motion_of_piece(const Cut& cut, std::span<const Piece> pieces, std::uint32_t k);
 
 // Finds the cut's box and its loop (or its gap): fills box, closed, loop_*, area, gap_*. `closure_mm`: ends this close to a point
 // passed close the loop (the arc tolerance in mm).

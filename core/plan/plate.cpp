@@ -23,6 +23,11 @@ constexpr std::size_t kSweepComparisonsPerCut = 48;
 // kPairsPerCut * cuts + kPairsBase, whatever the plate.
 constexpr std::size_t kPairsPerCut = 64, kPairsBase = 65536;
 constexpr std::size_t kVisitsPerCut = 1024, kVisitsBase = 1 << 20;
+// A pair's tests cost about the two contours' points flattened (arcs of up to kPlanMaxArcChords chords): the pairs
+// found weigh that much, and the search stops (N613) once they weigh kPairPointsPerPoint times the plate's points
+// plus kPairPointsBase. So the tests' work is linear in the plate's points (contours piled over each other, big
+// arcs), and an ordinary plate never reaches it.
+constexpr std::size_t kPairPointsPerPoint = 32, kPairPointsBase = std::size_t{1} << 24;
 
 struct Node {
     int parent = -1;
@@ -48,7 +53,13 @@ public:
     Plate(std::vector<Cut>& cuts, std::span<const Piece> pieces, const PlateSettings& st, std::vector<Diagnostic>& out,
           DiagnosticCap& cap)
         : cuts_(cuts), pieces_(pieces), st_(st), out_(out), cap_(cap), nodes_(cuts.size()) {
-        for (const Cut& c : cuts_) max_width_ = std::max(max_width_, c.kerf_width_mm);
+        std::size_t total = 0;
+        for (const Cut& c : cuts_) {
+            max_width_ = std::max(max_width_, c.kerf_width_mm);
+            total += c.points;
+        }
+        pair_points_budget_ = kPairPointsPerPoint * total + kPairPointsBase;
+        pair_points_left_ = pair_points_budget_;
     }
 
     void run() {
@@ -62,17 +73,25 @@ public:
         collisions();
         lead_ins();
     }
+    // The plate's contours with a loop (not the same path again), in cutting order, appended to `contours`: a
+    // parent is an index in that list.
     void record(std::vector<PlanContour>& contours) const {
+        std::vector<int> index_of(cuts_.size(), -1);  // (a parent is a usable cut, cut before or after its child)
+        int next = static_cast<int>(contours.size());
+        for (std::size_t i = 0; i < cuts_.size(); ++i)
+            if (usable(i)) index_of[i] = next++;
         for (std::size_t i = 0; i < cuts_.size(); ++i) {
             const Cut& c = cuts_[i];
-            if (!c.closed || nodes_[i].duplicate) continue;
+            if (!usable(i)) continue;
             PlanContour pc;
-            pc.cut_first_line = c.first_line;
-            pc.cut_last_line = c.last_line;
+            static_cast<Contour&>(pc) = c;
+            pc.loop_begin = motion_of_piece(c, pieces_, c.loop_begin);
+            pc.loop_end = motion_of_piece(c, pieces_, c.loop_end - 1) + 1;
+            pc.loop_start = c.loop_start;
             pc.loop_first_line = pieces_[c.loop_begin].line;
             pc.loop_last_line = pieces_[c.loop_end - 1].line;
             pc.plate = st_.plate;
-            pc.parent = nodes_[i].parent;
+            pc.parent = nodes_[i].parent < 0 ? -1 : index_of[static_cast<std::size_t>(nodes_[i].parent)];
             pc.depth = nodes_[i].depth;
             pc.role = nodes_[i].role;
             pc.area_mm2 = c.area_mm2;
@@ -212,7 +231,8 @@ private:
     // found once and used by the nesting, the collisions and the crossings. A sweep along x over the cuts' boxes
     // finds them on an ordinary plate (a cut is compared with the few whose x ranges meet its own); a crowded plate
     // (many cuts over the same x, where the sweep would compare nearly all pairs) uses the uniform grid instead.
-    void find_neighbours() {
+    // (Out of line: inlined into run(), its sweep's hot loop comes out slower.)
+    [[gnu::noinline]] void find_neighbours() {
         boxes_.assign(cuts_.size(), Box{});
         for (std::size_t i = 0; i < cuts_.size(); ++i)
             if (usable(i)) boxes_[i] = cuts_[i].loop_box;
@@ -256,10 +276,23 @@ private:
                 const Box& bi = cuts_[i].box;
                 const Box& bk = cuts_[k].box;
                 if (bk.min_y > bi.max_y + margin || bi.min_y > bk.max_y + margin) continue;  // (apart in y: both ways)
-                if (meets(i, k, margin)) pairs_.push_back({static_cast<int>(i), static_cast<int>(k)});
-                if (meets(k, i, margin)) pairs_.push_back({static_cast<int>(k), static_cast<int>(i)});
+                if (meets(i, k, margin) || meets(k, i, margin)) {
+                    if (!charge(i, k)) {
+                        pairs_.clear();
+                        return false;
+                    }
+                    if (meets(i, k, margin)) pairs_.push_back({static_cast<int>(i), static_cast<int>(k)});
+                    if (meets(k, i, margin)) pairs_.push_back({static_cast<int>(k), static_cast<int>(i)});
+                }
             }
         }
+        return true;
+    }
+    // The pair (i, j) found: its weight taken from what is left; false when there is not enough left.
+    bool charge(std::size_t i, std::size_t j) {
+        const std::size_t weight = cuts_[i].points + cuts_[j].points;
+        if (weight > pair_points_left_) return false;
+        pair_points_left_ -= weight;
         return true;
     }
     // The pairs through the grid over the loops' boxes (any plate), within the budget of pairs and candidates
@@ -267,6 +300,7 @@ private:
     void grid_pairs(double margin) {
         thread_local BoxGrid grid;  // (its arrays kept from plate to plate)
         grid.build(boxes_);
+        pair_points_left_ = pair_points_budget_;
         const std::size_t max_pairs = kPairsPerCut * cuts_.size() + kPairsBase;
         const std::size_t max_visits = kVisitsPerCut * cuts_.size() + kVisitsBase;
         std::size_t visits = 0;
@@ -274,8 +308,11 @@ private:
             const Box& b = cuts_[i].box;
             if (b.empty) continue;
             grid.query({b.min_x - margin, b.min_y - margin, b.max_x + margin, b.max_y + margin, false}, [&](int j) {
-                if (meets(i, static_cast<std::size_t>(j), margin)) pairs_.push_back({static_cast<int>(i), j});
-                crowded_ = pairs_.size() >= max_pairs || ++visits >= max_visits;
+                if (meets(i, static_cast<std::size_t>(j), margin)) {
+                    if (!charge(i, static_cast<std::size_t>(j))) crowded_ = true;
+                    else pairs_.push_back({static_cast<int>(i), j});
+                }
+                crowded_ = crowded_ || pairs_.size() >= max_pairs || ++visits >= max_visits;
                 return !crowded_;
             });
         }
@@ -471,8 +508,17 @@ private:
                          {mm_text(d), a.first_line, a.last_line, mm_text(width)});
             diag.related.push_back(related(a, Msg::RelatedOtherPart));
         }
-        if (d == 0) diag.overlap = {polygon(i), polygon(j)};
+        if (d == 0) diag.overlap = {outline(polygon(i)), outline(polygon(j))};
         out_.push_back(std::move(diag));
+    }
+    // A polygon of a collision's overlap: itself, or kPlanMaxOverlapPoints of its points evenly spread (a report's
+    // size stays bounded: max_per_code collisions of two outlines each).
+    static std::vector<Point> outline(const std::vector<Point>& polygon) {
+        const std::size_t n = polygon.size();
+        if (n <= kPlanMaxOverlapPoints) return polygon;
+        std::vector<Point> thinned(kPlanMaxOverlapPoints);
+        for (std::size_t k = 0; k < kPlanMaxOverlapPoints; ++k) thinned[k] = polygon[k * n / kPlanMaxOverlapPoints];
+        return thinned;
     }
     // E606: a cut (its whole path) crossing a part cut free before it.
     void crossings(const std::set<std::pair<int, int>>& reported) {
@@ -563,6 +609,8 @@ private:
     std::vector<std::pair<int, int>> pairs_;   // (cut, neighbour) as found
     std::vector<int> order_;                   // the cuts by their boxes' min_x (the sweep)
     bool crowded_ = false;                     // the search for neighbours stopped at its budget (N613)
+    std::size_t pair_points_budget_ = 0;       // what the pairs found may weigh (kPairPointsPerPoint)
+    std::size_t pair_points_left_ = 0;
     double max_width_ = 0;  // the widest kerf of the plate's cuts
 };
 

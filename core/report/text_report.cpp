@@ -14,9 +14,11 @@ namespace {
 
 std::string mm(double v) { return mm_text(v) + " mm"; }
 
-std::string verdict(const FileReport& f, Lang lang) {
-    const std::size_t errors = f.errors();
-    const std::size_t warnings = f.warnings();
+}  // namespace
+
+std::string verdict_text(const CheckResult& r, Lang lang) {
+    const std::size_t errors = r.count(Severity::Error);
+    const std::size_t warnings = r.count(Severity::Warning);
     if (errors == 0 && warnings == 0) return std::string(text(Msg::ReportOk, lang));
     std::string s;
     if (errors > 0) s = format_message(Msg::ReportErrors, lang, {errors});
@@ -27,7 +29,6 @@ std::string verdict(const FileReport& f, Lang lang) {
     if (errors == 0) s = format_message(Msg::ReportOkWith, lang, {s});
     return s;
 }
-}  // namespace
 
 std::string omitted_text(const FileReport& f, Lang lang) {
     return format_message(Msg::ReportOmitted, lang, {f.omitted(), f.result.diagnostics.size()});
@@ -118,7 +119,7 @@ std::string electrodes(double v) { return fixed_text(v, 4); }
 std::string file_stats_line(const FileReport& file, Lang lang) {
     const Stats& st = file.result.stats;
     std::string line = format_message(Msg::ReportFileStats, lang,
-                                      {file.display_path(), verdict(file, lang), mm(st.cut_length_mm),
+                                      {file.display_path(), verdict_text(file.result, lang), mm(st.cut_length_mm),
                                        mm(st.mark_length_mm), mm(st.travel_length_mm), mm(st.rapid_length_mm),
                                        st.pierces, st.blocks, st.motions, format_duration(st.estimated_time_s)});
     if (st.machine_time)
@@ -142,53 +143,57 @@ std::string summary_line(std::span<const FileReport> files, std::string_view pro
                            format_message(Msg::ReportWarnings, lang, {warnings})});
 }
 
-std::string stats_block(const FileReport& file, Lang lang) {
-    const Stats& st = file.result.stats;
-    std::vector<std::pair<std::string, std::string>> rows;
-    const auto key = [&](Msg m) { return std::string(text(m, lang)); };
-    rows.emplace_back(key(Msg::StatsFile), file.display_path());
-    rows.emplace_back(key(Msg::StatsCutLength), mm(st.cut_length_mm));
-    rows.emplace_back(key(Msg::StatsCutLengthCompensated), mm(st.cut_length_compensated_mm));
-    rows.emplace_back(key(Msg::StatsMarkLength), mm(st.mark_length_mm));
-    rows.emplace_back(key(Msg::StatsTravelLength), mm(st.travel_length_mm));
-    rows.emplace_back(key(Msg::StatsRapidLength), mm(st.rapid_length_mm));
-    rows.emplace_back(key(Msg::StatsPierces), std::to_string(st.pierces));
-    rows.emplace_back(key(Msg::StatsBlocks), std::to_string(st.blocks));
-    rows.emplace_back(key(Msg::StatsMotions), std::to_string(st.motions));
-    rows.emplace_back(key(Msg::StatsEstimatedTime),
-                      fixed_text(st.estimated_time_s, 1) + " s (" + format_duration(st.estimated_time_s) + ")");
+std::vector<StatsRow> stats_rows(const Stats& st) {
+    std::vector<StatsRow> rows;
+    rows.push_back({Msg::StatsCutLength, mm(st.cut_length_mm)});
+    rows.push_back({Msg::StatsCutLengthCompensated, mm(st.cut_length_compensated_mm)});
+    rows.push_back({Msg::StatsMarkLength, mm(st.mark_length_mm)});
+    rows.push_back({Msg::StatsTravelLength, mm(st.travel_length_mm)});
+    rows.push_back({Msg::StatsRapidLength, mm(st.rapid_length_mm)});
+    rows.push_back({Msg::StatsPierces, std::to_string(st.pierces)});
+    rows.push_back({Msg::StatsBlocks, std::to_string(st.blocks)});
+    rows.push_back({Msg::StatsMotions, std::to_string(st.motions)});
+    rows.push_back({Msg::StatsEstimatedTime,
+                    fixed_text(st.estimated_time_s, 1) + " s (" + format_duration(st.estimated_time_s) + ")"});
     if (st.machine_time) {
         const MachineTime& t = *st.machine_time;
         const auto s1 = [](double v) { return fixed_text(v, 1); };
-        rows.emplace_back(key(Msg::StatsMachineTime), s1(t.total_s) + " s (" + format_duration(t.total_s) + ")");
-        rows.emplace_back(key(Msg::StatsMachineTimeBreakdown),
-                          format_message(Msg::StatsMachineTimeParts, lang,
-                                         {s1(t.cutting_s), s1(t.marking_s), s1(t.rapid_s), s1(t.travel_s), s1(t.pierce_s),
-                                          s1(t.dwell_s), s1(t.acceleration_s)}));
+        rows.push_back({Msg::StatsMachineTime, s1(t.total_s) + " s (" + format_duration(t.total_s) + ")"});
+        rows.push_back({Msg::StatsMachineTimeBreakdown, "",
+                        {Msg::StatsMachineTimeParts,
+                         {s1(t.cutting_s), s1(t.marking_s), s1(t.rapid_s), s1(t.travel_s), s1(t.pierce_s),
+                          s1(t.dwell_s), s1(t.acceleration_s)}}});
     }
     if (st.cost) {
         const Cost& c = *st.cost;
-        rows.emplace_back(key(Msg::StatsCost), money(c.total, c));
-        rows.emplace_back(key(Msg::StatsCostBreakdown),
-                          format_message(Msg::StatsCostParts, lang,
-                                         {money(c.machine, c), key(c.machine_time ? Msg::StatsMachineTime : Msg::StatsEstimatedTime),
-                                          money(c.pierces, c), money(c.cut, c),
-                                          c.material ? money(*c.material, c) : key(Msg::StatsNone)}));
+        rows.push_back({Msg::StatsCost, money(c.total, c)});
+        rows.push_back({Msg::StatsCostBreakdown, "",
+                        {Msg::StatsCostParts,
+                         {money(c.machine, c), c.machine_time ? Msg::StatsMachineTime : Msg::StatsEstimatedTime,
+                          money(c.pierces, c), money(c.cut, c),
+                          c.material ? MessageArgs::Arg(money(*c.material, c)) : MessageArgs::Arg(Msg::StatsNone)}}});
     }
     if (st.consumables) {
         const ConsumableUse& u = *st.consumables;
-        rows.emplace_back(key(Msg::StatsElectrodes), format_message(Msg::StatsElectrodesParts, lang,
-                                                                    {electrodes(u.electrodes), u.pierces, fixed_text(u.arc_on_s, 1)}));
+        rows.push_back({Msg::StatsElectrodes, "",
+                        {Msg::StatsElectrodesParts, {electrodes(u.electrodes), u.pierces, fixed_text(u.arc_on_s, 1)}}});
     }
     if (st.cut_bbox.empty) {
-        rows.emplace_back(key(Msg::StatsCutBox), key(Msg::StatsNone));
+        rows.push_back({Msg::StatsCutBox, "", Msg::StatsNone});
     } else {
-        rows.emplace_back(key(Msg::StatsCutBox), "x " + mm_text(st.cut_bbox.min_x) + " .. " + mm_text(st.cut_bbox.max_x) + ", y " +
-                                          mm_text(st.cut_bbox.min_y) + " .. " + mm_text(st.cut_bbox.max_y) + " mm (" +
-                                          mm_text(st.cut_bbox.max_x - st.cut_bbox.min_x) + " x " +
-                                          mm_text(st.cut_bbox.max_y - st.cut_bbox.min_y) + " mm)");
+        rows.push_back({Msg::StatsCutBox, "x " + mm_text(st.cut_bbox.min_x) + " .. " + mm_text(st.cut_bbox.max_x) + ", y " +
+                                              mm_text(st.cut_bbox.min_y) + " .. " + mm_text(st.cut_bbox.max_y) + " mm (" +
+                                              mm_text(st.cut_bbox.max_x - st.cut_bbox.min_x) + " x " +
+                                              mm_text(st.cut_bbox.max_y - st.cut_bbox.min_y) + " mm)"});
     }
-    rows.emplace_back(key(Msg::StatsEndPosition), "x " + mm_text(st.end_position.x) + ", y " + mm_text(st.end_position.y) + " mm");
+    rows.push_back({Msg::StatsEndPosition, "x " + mm_text(st.end_position.x) + ", y " + mm_text(st.end_position.y) + " mm"});
+    return rows;
+}
+
+std::string stats_block(const FileReport& file, Lang lang) {
+    std::vector<std::pair<std::string, std::string>> rows;
+    rows.emplace_back(std::string(text(Msg::StatsFile, lang)), file.display_path());
+    for (const StatsRow& r : stats_rows(file.result.stats)) rows.emplace_back(std::string(text(r.key, lang)), r.text(lang));
 
     std::size_t width = 0;
     for (const auto& [k, v] : rows) width = std::max(width, display_width(k) + 1);

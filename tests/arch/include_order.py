@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Every #include "essi/..." in core/ follows core/LAYERS: a file includes headers of its own layer or of a
-lower one (listed before it), never of a higher one. Prints each violation with its file and line; exits 1 if
-there is any, or if a folder or a public header has no layer."""
+lower one (listed before it), never of a higher one. And the viewer's dependency runs one way: web/app/ and
+web/render/ include nothing of web/platform/ (docs/architecture.md, "The platform interface"). Prints each
+violation with its file and line; exits 1 if there is any, or if a folder or a public header has no layer."""
 import os
 import re
 import sys
@@ -9,6 +10,7 @@ import sys
 ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", ".."))
 CORE = os.path.join(ROOT, "core")
 INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"essi/([A-Za-z0-9_]+\.hpp)"', re.M)
+PLATFORM_INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"(platform/[^"]+)"', re.M)
 
 
 def read_layers():
@@ -25,6 +27,25 @@ def read_layers():
                 sys.exit(f"core/LAYERS:{n}: expected 'LAYER: FOLDERS... [| HEADERS...]'")
             layers.append((name.strip(), folders.split(), headers.split()))
     return layers
+
+
+def platform_includes():
+    """The includes of web/platform/ from web/app/ and web/render/ (none when there is no web/)."""
+    problems, files = [], 0
+    for folder in ("app", "render"):
+        for dirpath, _, names in os.walk(os.path.join(ROOT, "web", folder)):
+            for name in sorted(names):
+                if not name.endswith((".cpp", ".hpp")):
+                    continue
+                files += 1
+                path = os.path.join(dirpath, name)
+                with open(path, encoding="utf-8") as f:
+                    text = f.read()
+                for m in PLATFORM_INCLUDE.finditer(text):
+                    line = text.count("\n", 0, m.start()) + 1
+                    problems.append(f"{os.path.relpath(path, ROOT)}:{line}: includes {m.group(1)} from web/{folder}/ "
+                                    f"(web/platform/ includes the app, not the reverse: docs/architecture.md)")
+    return problems, files
 
 
 def main():
@@ -65,9 +86,11 @@ def main():
                 problems.append(f"{os.path.relpath(path, ROOT)}:{line}: includes essi/{m.group(1)} of layer "
                                 f"'{layers[target][0]}' from layer '{layers[rank][0]}' (core/LAYERS: only its own "
                                 f"layer and those before it)")
+    web_problems, web_files = platform_includes()
+    problems += web_problems
     for p in problems:
         print(p)
-    print(f"include_order: {len(sources)} files, {len(problems)} problems")
+    print(f"include_order: {len(sources) + web_files} files, {len(problems)} problems")
     return 1 if problems else 0
 
 

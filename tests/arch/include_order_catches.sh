@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# include_order.py fails on an include that runs back up, on a folder and on a header without a layer, and passes a
-# tree that keeps the order (a tree made here, two layers).
+# include_order.py fails on an include that runs back up, on a folder and on a header without a layer, on the viewer's
+# app including its platform, and passes a tree that keeps the order (a tree made here, two layers).
 set -uo pipefail
 script="$(dirname "$0")/include_order.py"
 t="$(mktemp -d)"; trap 'rm -rf "$t"' EXIT
@@ -25,4 +25,15 @@ out="$(python3 "$script" "$t")"; rc=$?
 if [ $rc -eq 1 ] && grep -q "core/stray/: no layer" <<<"$out" && grep -q "orphan.hpp: no layer" <<<"$out"; then
   echo "ok   - a folder and a header without a layer fail"
 else echo "FAIL - no layer: rc $rc: $out"; failures=1; fi
+rm -rf "$t/core/stray" "$t/core/include/essi/orphan.hpp"
+mkdir -p "$t/web/app" "$t/web/platform"
+printf '#include "app/App.hpp"\n' >"$t/web/platform/Main.cpp"
+printf '#pragma once\n\n#include "platform/Platform.hpp"\n' >"$t/web/app/App.hpp"
+out="$(python3 "$script" "$t")"; rc=$?
+if [ $rc -eq 1 ] && grep -q "web/app/App.hpp:3: includes platform/Platform.hpp from web/app/" <<<"$out"; then
+  echo "ok   - the viewer's app including its platform fails, with its file and line"
+else echo "FAIL - app includes platform: rc $rc: $out"; failures=1; fi
+printf '#pragma once\n' >"$t/web/app/App.hpp"
+out="$(python3 "$script" "$t")"; rc=$?
+if [ $rc -eq 0 ]; then echo "ok   - the platform including the app passes"; else echo "FAIL - platform includes app: $out"; failures=1; fi
 exit $failures

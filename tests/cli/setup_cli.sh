@@ -12,13 +12,13 @@ native="$(bash "$root/scripts/setup" --list native)"
 for p in emscripten chromium linuxcnc-uspace clang-14 xvfb; do
   if has "$native" "$p"; then fail "native installs $p"; else pass "native leaves out $p"; fi
 done
-for p in cmake ninja-build libcli11-dev nlohmann-json3-dev libcpp-httplib-dev libglfw3-dev libicu-dev; do
+for p in cmake ninja-build libcli11-dev nlohmann-json3-dev libcpp-httplib-dev libglfw3-dev libicu-dev libcairo2-dev libpango1.0-dev fonts-wqy-microhei; do
   if has "$native" "$p"; then pass "native installs $p"; else fail "native lacks $p"; fi
 done
 wasm="$(bash "$root/scripts/setup" --list wasm)"
 if has "$wasm" emscripten && ! has "$wasm" chromium; then pass "wasm: emscripten, no chromium"; else fail "wasm: $wasm"; fi
 test_list="$(bash "$root/scripts/setup" --list test)"
-for p in emscripten chromium linuxcnc-uspace libpolyclipping-dev librsvg2-bin xvfb; do
+for p in emscripten chromium linuxcnc-uspace libpolyclipping-dev librsvg2-bin xvfb poppler-utils; do
   if has "$test_list" "$p"; then pass "test installs $p"; else fail "test lacks $p"; fi
 done
 dist="$(bash "$root/scripts/setup" --list dist)"

@@ -179,3 +179,70 @@ TEST(PlanBounds, AHugePlateIsAnalysedInParts) {
     }
     EXPECT_TRUE(r.ok());
 }
+
+// A full circle of radius 100 m (1 000 000 units of 0.1 mm) about a centre 100 m to its right: flattened within
+// kPlanChordToleranceMm it would need 3 142 chords, so the plan takes kPlanMaxArcChords.
+const std::string kBigCircle = "+0+0+1000000+0+\n";
+
+// Big arcs make long polygons: a plate is also analysed in parts of at most kPlanMaxPlatePoints points. 520 cuts of
+// one big circle each, 250 m apart: the 512th cut reaches 512 x 1 024 = 524 288 points and closes the part.
+TEST(PlanBounds, BigArcsSplitAPlateByItsPoints) {
+    ASSERT_EQ(kPlanMaxArcChords, 1024);
+    ASSERT_EQ(kPlanMaxPlatePoints, 512u * 1024u);
+    std::string tape;
+    for (int k = 0; k < 520; ++k) tape += "7\n" + kBigCircle + "8\n+2500000+0\n";
+    tape += "64\n";
+    const CheckResult r = check_tape(tape, Profile{});
+    ASSERT_EQ(count_code(r, DiagCode::N614_PlateSplit), 1u);
+    for (const Diagnostic& d : r.diagnostics) {
+        if (d.code != DiagCode::N614_PlateSplit) continue;
+        const std::size_t last_line = 4 * 511 + 2;  // the circle of the 512th cut (4 lines a cut)
+        EXPECT_EQ(d.line, last_line);
+        EXPECT_EQ(d.message, "the plate is analysed in parts of at most 524288 points of its contours flattened: the "
+                             "cuts after line " + std::to_string(last_line) + " are not compared with those up to it");
+    }
+    EXPECT_EQ(count_code(r, DiagCode::N615_CutTooLong), 0u);
+}
+
+// One cut of more points than a plate's part holds is left out of the cut plan (N615) and its pieces dropped: 600
+// big circles under one pierce are 614 400 points.
+TEST(PlanBounds, ACutOfTooManyPointsIsLeftOut) {
+    std::string tape = "7\n";
+    for (int k = 0; k < 600; ++k) tape += kBigCircle;
+    tape += "8\n64\n";
+    const CheckResult r = check_tape(tape, Profile{});
+    ASSERT_EQ(count_code(r, DiagCode::N615_CutTooLong), 1u);
+    for (const Diagnostic& d : r.diagnostics) {
+        if (d.code != DiagCode::N615_CutTooLong) continue;
+        EXPECT_EQ(d.line, 2u);
+        EXPECT_EQ(d.contour_first, 2u);
+        EXPECT_EQ(d.contour_last, 601u);
+        EXPECT_EQ(d.severity, Severity::Note);
+        EXPECT_EQ(d.message, "the cut of lines 2-601 is more than 524288 points when flattened: the cut plan leaves it "
+                             "out (no nesting, collision or crossing tests for it)");
+    }
+    EXPECT_EQ(r.stats.motions, 600u);  // (the statistics still count every motion)
+    EXPECT_TRUE(r.ok());
+}
+
+// The pairs a plate compares weigh their contours' points: 200 big circles, each 1 mm above the last, overlap
+// pairwise (19 900 pairs, under the 64-a-cut budget), but each pair weighs 2 x 1 024 points, so the search stops
+// at 32 x 204 800 + 2^24 points' worth of pairs (N613).
+TEST(PlanBounds, PairsWeighTheirContoursPoints) {
+    std::string tape;
+    for (int k = 0; k < 200; ++k) tape += "7\n" + kBigCircle + "8\n+0+10\n";
+    tape += "64\n";
+    const CheckResult r = check_tape(tape, Profile{});
+    ASSERT_EQ(count_code(r, DiagCode::N613_PlateTooCrowded), 1u);
+    const std::size_t most_pairs = (32 * 200 * 1024 + (std::size_t{1} << 24)) / (2 * 1024);
+    for (const Diagnostic& d : r.diagnostics) {
+        if (d.code != DiagCode::N613_PlateTooCrowded) continue;
+        // "... the search for colliding pairs stopped after N pairs (at most 64 a cut) ..."
+        const std::string after = "stopped after ";
+        const std::size_t at = d.message.find(after);
+        ASSERT_NE(at, std::string::npos) << d.message;
+        const std::size_t pairs = std::stoul(d.message.substr(at + after.size()));
+        EXPECT_GT(pairs, 0u);
+        EXPECT_LE(pairs, 2 * most_pairs) << d.message;  // (a pair found both ways counts twice)
+    }
+}

@@ -95,10 +95,10 @@ TEST(CutPlanLoops, LeadInAndLeadOutAroundTheLoop) {
     const auto contours = essi::plan_contours(t.end(), essi::Profile{});
     ASSERT_EQ(contours.size(), 1u);
     const essi::PlanContour& c = contours[0];
-    EXPECT_EQ(c.cut_first_line, 7u);   // the lead-in
+    EXPECT_EQ(c.first_line, 7u);   // the lead-in
     EXPECT_EQ(c.loop_first_line, 8u);  // the loop: lines 8-12
     EXPECT_EQ(c.loop_last_line, 12u);
-    EXPECT_EQ(c.cut_last_line, 13u);   // the lead-out
+    EXPECT_EQ(c.last_line, 13u);   // the lead-out
     EXPECT_TRUE(c.lead_in);
     EXPECT_DOUBLE_EQ(c.area_mm2, -200.0 * 100.0);  // clockwise
     EXPECT_EQ(c.role, ContourRole::LonePart);       // kerf left of a clockwise loop: outside
@@ -115,7 +115,26 @@ TEST(CutPlanLoops, FullCircleHoleAndOvercut) {
     EXPECT_NEAR(contours[0].area_mm2, essi::kPi * 400, 1e-9);  // the circle exactly, not its chords
     EXPECT_EQ(contours[0].loop_first_line, contours[0].loop_last_line);
     EXPECT_DOUBLE_EQ(std::fabs(contours[1].area_mm2), 100.0 * 50.0);
-    EXPECT_EQ(contours[1].loop_last_line, contours[1].cut_last_line);
+    EXPECT_EQ(contours[1].loop_last_line, contours[1].last_line);
+}
+
+TEST(CutPlanLoops, ParentsAreIndicesInTheListOfContours) {
+    // On each plate: a cut with no loop (not a contour of the list), a hole, the part around it.
+    Tape t;
+    t.rapid(10, 10).function("7").to(100, 10).to(10, 10).function("8");
+    t.hole(150, 100, 20).part_cw(50, 40, 350, 160);
+    t.next_plate();
+    t.rapid(10, 10).function("7").to(100, 10).to(10, 10).function("8");
+    t.hole(150, 100, 20).part_cw(50, 40, 350, 160);
+    const auto c = essi::plan_contours(t.end(), essi::Profile{});
+    ASSERT_EQ(c.size(), 4u);
+    EXPECT_EQ(c[0].role, ContourRole::Hole);
+    EXPECT_EQ(c[0].parent, 1);
+    EXPECT_EQ(c[1].role, ContourRole::Part);
+    EXPECT_EQ(c[1].parent, -1);
+    EXPECT_EQ(c[2].plate, 2);
+    EXPECT_EQ(c[2].parent, 3);
+    EXPECT_EQ(c[3].parent, -1);
 }
 
 TEST(CutPlanLoops, AStraightCutOutAndBackHasNoLoop) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "../bench/nest_generator.hpp"
+#include "app/Describe.hpp"
 #include "app/Document.hpp"
 #include "viewer_util.hpp"
 #include "essi/interp.hpp"

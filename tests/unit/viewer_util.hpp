@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "app/Document.hpp"
+#include "app/DocumentLoader.hpp"
 #include "essi/profile.hpp"
 
 namespace essi_test {

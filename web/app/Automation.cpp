@@ -1,14 +1,7 @@
-// window.essikit's side of the viewer (web/platform/ApiEmscripten.cpp calls these): the state as JSON, a motion as
-// JSON, and the layer switches by number. The JSON's content is what tests/e2e and docs/viewer.md rely on.
-#include <cmath>
-#include <nlohmann/json.hpp>
+#include "app/Automation.hpp"
 
-#include "app/App.hpp"
-#include "app/Problems.hpp"
-#include "essi/placement.hpp"
-#include "essi/diagnostics.hpp"
-#include "essi/geom.hpp"
-#include "essi/report_json.hpp"
+#include <algorithm>
+#include <cmath>
 
 namespace essi::viewer {
 
@@ -21,299 +14,46 @@ constexpr int kLayerKerf = 6;      // the compensated torch path
 constexpr int kLayerKerfBand = 7;  // the band of the cut's width
 constexpr int kLayerTable = 8;     // the table and the plate
 
-using nlohmann::json;
-
-constexpr std::size_t kStateMarks = 1000;  // marks listed in state().marks.items at most (the count is all of them)
-
-// The document's part of the state: statistics, diagnostics, sizes, memory, level of detail.
-void add_document(json& j, const Document& doc, const LoadController& load, const Renderer& renderer,
-                  bool lod_drawn) {
-    j["stats"] = stats_to_json(doc.stats);  // the report's own writer (essi/report_json.hpp)
-    j["diagnostics"] = diagnostics_to_json(doc.diagnostics);
-    j["ok"] = !doc.has_errors();
-    j["bytes"] = doc.bytes.size();
-    j["lines"] = doc.line_count();
-    j["motions"] = doc.motions.size();
-    j["segments"] = load.buffers().segment_count;
-    json widths = json::array();
-    for (std::size_t k = 0; k < load.buffers().kerf_width_count; ++k) widths.push_back(load.buffers().kerf_widths[k]);
-    j["kerf"] = {{"segments", load.buffers().kerf_segments}, {"widths_mm", widths}};
-    // The machine's table where it lies under the program (the Table overlay), corners in program mm; null without
-    // a table in the profile.
-    if (doc.profile.table) {
-        json corners = json::array();
-        for (const Point& c : Placement(doc.profile).table_in_program(*doc.profile.table)) corners.push_back({c.x, c.y});
-        j["table_mm"] = corners;
-    } else {
-        j["table_mm"] = nullptr;
-    }
-    j["pierce_markers"] = doc.pierces.size();
-    j["bbox_mm"] = box_to_json(doc.bbox);
-    j["memory_bytes"] = doc.memory_bytes() + load.segment_index_bytes();
-    json parts = json::object();
-    for (const auto& [part, n] : doc.memory_parts()) parts[part] = n;
-    parts["segment_index"] = load.segment_index_bytes();
-    j["memory_parts"] = std::move(parts);
-    j["gpu_bytes"] = load.gpu_bytes() + renderer.lod_gpu_bytes();
-    j["lod"] = {{"available", renderer.has_lod()}, {"drawn", lod_drawn}, {"cell_mm", renderer.lod_cell_mm()}};
-    j["tape_memory_bytes"] = doc.core_tape_bytes();
-    j["blocks_read"] = doc.blocks;
-    j["kept_records"] = doc.kept.size();
-    j["load_seconds"] = load.load_seconds();
-    j["chord_tolerance_mm"] = load.buffers().tolerance();
-}
-
-// What the Playback panel shows: the motion at the scrubber, its line, the tools and where the tool is.
-json playback_json(const Playback& playback, const Document* doc, const Coordinates& cs) {
-    json p = {{"active", playback.active}, {"playing", playback.playing}, {"position", playback.position},
-              {"factor", playback.factor}};
-    if (doc) {
-        p["elapsed_s"] = playback.elapsed_s(*doc);
-        p["total_s"] = playback.total_s(*doc);
-        p["remaining_s"] = playback.total_s(*doc) - playback.elapsed_s(*doc);
-    }
-    if (!playback.active || !doc || doc->motions.empty()) return p;
-    const std::size_t n = doc->motions.size();
-    const Playback::At at = playback.at(n);
-    const Motion& m = doc->motions[at.motion];
-    const Point tool = point_at(doc->record(at.motion), at.fraction);
-    p["motion"] = at.motion;
-    p["line"] = m.line;
-    p["kind"] = motion_kind_name(m.kind);
-    p["tools"] = tools_text(m.tools);
-    p["feed_mm_min"] = doc->feed_of(at.motion);
-    p["tool_mm"] = {tool.x, tool.y};
-    const Point shown = cs.shown(tool);
-    p["tool_shown_mm"] = {shown.x, shown.y};  // (in the shown coordinates, as the Playback panel says it)
-    p["drawn_motions"] = playback.limit(n);
-    return p;
-}
-
-// The measure as its window shows it: in the shown coordinates.
-json measure_json(const Measure& m, const Coordinates& cs) {
-    json j = {{"active", m.active}, {"points", m.points}, {"coordinates", cs.name()}};
-    const Point a = cs.shown(m.a), b = cs.shown(m.b);
-    if (m.points >= 1) j["a_mm"] = {a.x, a.y};
-    if (m.points == 2) {
-        j["b_mm"] = {b.x, b.y};
-        j["distance_mm"] = std::hypot(b.x - a.x, b.y - a.y);
-        j["dx_mm"] = b.x - a.x;
-        j["dy_mm"] = b.y - a.y;
-    }
-    return j;
-}
-
-// The block inspector's sentences for the selected line (blocks, then motions).
-json inspector_json(const Document* doc, std::uint32_t line) {
-    json insp = json::array();
-    if (doc)
-        for (const Document::InspectorLine& l : doc->inspector_lines(line, ui_lang())) insp.push_back(l.text);
-    return insp;
-}
-
-json render_json(const RenderStats& rs, std::uint64_t unchanged_frames) {
-    return {{"frames", rs.frames}, {"full_redraws", rs.full_redraws}, {"partial_redraws", rs.partial_redraws},
-            {"cached_frames", rs.cached_frames}, {"filling_frames", rs.filling_frames},
-            {"pending_segments", rs.pending_segments}, {"unchanged_frames", unchanged_frames}};
-}
-
-// The toolbar's items as the last frame drew them: where each is, in the bar or in its overflow menu ("more").
-json toolbar_json(const UiState& ui) {
-    const auto rect = [](const Rect& r) { return json{{"x", r.x}, {"y", r.y}, {"w", r.w}, {"h", r.h}}; };
-    json items = json::array();
-    for (const ToolbarItem& t : ui.toolbar)
-        items.push_back({{"id", t.id}, {"in_menu", t.in_menu}, {"rect", rect(t.rect)}});
-    return {{"items", items},
-            {"more", ui.toolbar_more.w > 0 ? rect(ui.toolbar_more) : json(nullptr)},
-            {"menu_open", ui.toolbar_menu_open}};
-}
-
-// One diagnostic as a mark's tooltip says it: as the report writes it (essi/report_json.hpp), in the viewer's
-// language, with its index in the document's diagnostics and the count of its overlap polygons.
-json mark_diagnostic_json(const Diagnostic& d, std::size_t index) {
-    json j = diagnostic_to_json(d, ui_lang());
-    j["diagnostic"] = index;
-    j["overlap_polygons"] = d.overlap.size();
-    return j;
-}
-
-// The diagnostics' marks (docs/viewer.md, "Problems on the drawing"): where each is (program mm and page pixels),
-// the one under the mouse, the diagnostics highlighted.
-json marks_json(const Document& doc, const View& view, std::size_t hovered, std::uint32_t selected_line) {
-    json items = json::array();
-    for (std::size_t k = 0; k < doc.marks.size() && k < kStateMarks; ++k) {
-        const DiagnosticMark& m = doc.marks[k];
-        const Diagnostic& d = doc.diagnostics[m.diagnostic];
-        const Point px = mark_screen(doc, view, m);
-        items.push_back({{"mark", k}, {"diagnostic", m.diagnostic}, {"code", code_name(d.code)},
-                         {"severity", severity_name(d.severity)}, {"line", d.line}, {"at_mm", {m.at.x, m.at.y}},
-                         {"px", {px.x, px.y}}, {"in_view", view.area.contains(static_cast<float>(px.x), static_cast<float>(px.y))}});
-    }
-    std::size_t overlaps = 0;
-    for (const Diagnostic& d : doc.diagnostics) overlaps += d.overlap.empty() ? 0 : 1;
-    json active = json::array();
-    for (const std::size_t k : active_diagnostics(doc, hovered, selected_line)) active.push_back(k);
-    return {{"count", doc.marks.size()},
-            {"radius_px", Renderer::kMarkRadiusPx},
-            {"hit_radius_px", kMarkHitRadiusPx},
-            {"hovered", hovered < doc.marks.size() ? mark_diagnostic_json(doc.diagnostics[doc.marks[hovered].diagnostic],
-                                                                          doc.marks[hovered].diagnostic)
-                                                   : json(nullptr)},
-            {"active", active},
-            {"overlaps", overlaps},
-            {"concerned_motion_runs", doc.concerned_motions.size()},
-            {"items", items}};
-}
-
-json selection_json(const Selection& s) {
-    if (s.line == 0) return nullptr;
-    return {{"line", s.line}, {"motion", s.motion == Selection::npos ? json(nullptr) : json(s.motion)}};
-}
-
-json layers_json(const Layers& l) {
-    json j = {{"pierces", l.pierces}, {"start", l.start}, {"grid", l.grid}, {"kerf", l.kerf}, {"kerf_band", l.kerf_band},
-              {"table", l.table}};
-    for (std::size_t k = 0; k < kMotionKinds; ++k) j[motion_kind_name(static_cast<MotionKind>(k))] = l.kinds[k];
-    return j;
-}
-
 }  // namespace
 
-std::string App::state_json() const {
-    json j;
-    const Document* doc = document();
-    j["status"] = load_.loading() ? "loading" : doc ? "ready" : "empty";
-    if (load_.loading()) {
-        j["progress"] = load_.progress();
-        j["stage"] = tr(load_.stage());
-    }
-    // The last frame drew the tape (its segments, or its level of detail while the segments are made), and how
-    // long after the start of the load the first such frame came.
-    j["drawn"] = scene_.tape_drawn();
-    // Work left after "ready" too: the finer level of detail of a big tape, a rebuild at another tolerance.
-    j["busy"] = has_background_work();
-    j["shown_seconds"] = load_.shown_seconds();
-    // Frames begun so far, and how the last load went in those frame numbers (LoadController::LoadFrames): a tape
-    // loaded at once (under 1 MB) handed over after frame N is drawable before frame N + 1 and shown by it.
-    j["frame"] = frames_;
-    const LoadController::LoadFrames& lf = load_.load_frames();
-    j["load"] = {{"at_once", lf.at_once},
-                 {"handed_frame", lf.handed},
-                 {"drawable_frame", lf.drawable},
-                 {"shown_frame", lf.shown},
-                 {"complete_frame", lf.complete},
-                 {"planned_frame", lf.planned},
-                 {"frames_to_show", lf.shown > 0 ? lf.shown - lf.handed : 0},
-                 {"steps", lf.steps},
-                 {"progress_frames", lf.progress_frames}};
-    j["name"] = doc ? doc->name : (load_.reading() ? load_.loading_name() : "");
-    j["profile"] = profile_name_;  // as asked: a built-in name or "auto"
-    if (doc) {  // how the tape is read (as `essi check --format json` says it)
-        j["input"] = input_format_name(doc->setup.format);
-        j["dialect"] = doc->profile.name;
-        j["dialect_evidence"] = doc->setup.evidence;
-    }
-    if (doc) {
-        add_document(j, *doc, load_, renderer_, scene_.lod_drawn());
-        j["banner"] = banner_text();
-    }
-    j["selection"] = selection_json(selection_);
-    const Point o = origin();
-    // Screen position of a program point (x, y) in mm: d = R(rotation) (x - x_mm, y - y_mm);
-    // px = origin_px.x + d.x * zoom, py = origin_px.y - d.y * zoom (App::project)
-    const Coordinates cs = coordinates();
-    const Rotation r = view_.rotation();
-    const Point shown_centre = cs.shown({view_.cx + o.x, view_.cy + o.y});
-    j["view"] = {{"x_mm", view_.cx + o.x},
-                 {"y_mm", view_.cy + o.y},
-                 {"zoom", view_.zoom},
-                 {"turns", view_.turns},
-                 {"coordinates", cs.name()},
-                 {"shown_mm", {shown_centre.x, shown_centre.y}},
-                 {"rotation", {r.c, r.s}},
-                 {"origin_px", {view_.ox(), view_.oy()}},
-                 {"area", {view_.area.x, view_.area.y, view_.area.w, view_.area.h}},
-                 {"query", share_query()}};
-    j["layers"] = layers_json(layers_);
-    j["problems_only"] = layers_.problems_only;
-    j["marks"] = doc ? marks_json(*doc, view_, ui_.hovered_mark, selection_.line) : json(nullptr);
-    j["playback"] = playback_json(playback_, doc, cs);
-    j["measure"] = measure_json(input_.measure, cs);
-    j["inspector"] = inspector_json(doc, selection_.line);
-    j["render"] = render_json(renderer_.stats(), scene_.skipped_frames());
-    j["help"] = ui_.help;
-    j["share_url"] = share_text();
-    j["link_problem"] = ui_.link_problem.text();
-    j["copied"] = ui_.copied;
-    j["examples"] = ui_.examples;
-    j["recent"] = ui_.recent;
-    if (compare_) {
-        json diffs = json::array();
-        for (const ContourDiff& d : compare_->diff.contours) {
-            if (d.change == ContourChange::Same) continue;
-            const auto lines = [](const Contour& c) { return json::array({c.first_line, c.last_line}); };
-            diffs.push_back({{"change", contour_change_name(d.change)},
-                             {"a_lines", d.a >= 0 ? lines(compare_->a.contours[static_cast<std::size_t>(d.a)]) : json()},
-                             {"b_lines", d.b >= 0 ? lines(compare_->b.contours[static_cast<std::size_t>(d.b)]) : json()},
-                             {"offset_mm", {d.offset.x, d.offset.y}}});
-        }
-        j["compare"] = {{"name", compare_->name}, {"summary", compare_->summary}, {"differences", diffs}};
-    } else {
-        j["compare"] = nullptr;
-    }
-    j["compare_pending"] = compare_next_;
-    j["theme"] = light_theme() ? "light" : "dark";
-    j["comment_encoding"] = {{"detected", text_encoding_name(detected_encoding_)},
-                             {"chosen", chosen_encoding_ ? std::string(text_encoding_name(*chosen_encoding_)) : "auto"},
-                             {"used", text_encoding_name(text_encoding())}};
-    if (const Document* d = document(); d && selection_.line > 0) j["line_text"] = line_text(*d, selection_.line);
-    // The panels' font atlas (render/UiFonts.hpp): its font size in device pixels, the ratio it was made for, its
-    // glyphs (of them from the CJK font), characters no font has, and the CJK font's state.
-    const UiFonts::Counts fc = fonts_.counts();
-    j["fonts"] = {{"pixel_size", fonts_.pixel_size()},   {"ratio", fonts_.pixel_ratio()},
-                  {"css_size", fonts_.real_font() ? UiFonts::kCssPixels : fonts_.pixel_size()},
-                  {"font", fonts_.real_font() ? "DejaVu Sans" : "ProggyClean"},
-                  {"glyphs", fc.glyphs},                 {"cjk_glyphs", fc.cjk_glyphs},
-                  {"missing", fc.missing},               {"cjk", UiFonts::cjk_name(fonts_.cjk())},
-                  {"cjk_loads", fonts_.cjk_loads()},     {"builds", fonts_.builds()},
-                  {"pending", fonts_.pending()},
-                  {"texture", {ui_renderer_.font_texture_size()[0], ui_renderer_.font_texture_size()[1]}}};
-    const panels::PanelLayout& l = ui_.layout;
-    j["layout"] = {{"left", l.left}, {"right", l.right}, {"left_shown", l.left_shown}, {"right_shown", l.right_shown}};
-    j["message"] = ui_.message.text();
-    j["lang"] = lang_code(ui_lang());
-    j["toolbar"] = toolbar_json(ui_);
-    j["kind_colors"] = json::array();
-    for (const Rgba& c : kKindColors)
-        j["kind_colors"].push_back({std::lround(c.r * 255), std::lround(c.g * 255), std::lround(c.b * 255)});
-    return j.dump();
+void Automation::set_layer(int layer, bool visible) {
+    Layers& layers = p_.layers;
+    if (layer >= 0 && layer < static_cast<int>(kMotionKinds)) layers.kinds[static_cast<std::size_t>(layer)] = visible;
+    if (layer == kLayerPierces) layers.pierces = visible;
+    if (layer == kLayerStart) layers.start = visible;
+    if (layer == kLayerKerf) layers.kerf = visible;
+    if (layer == kLayerKerfBand) layers.kerf_band = visible;
+    if (layer == kLayerTable) layers.table = visible;
 }
 
-std::string App::motion_json(std::size_t i) const {
-    const Document* doc = document();
-    if (!doc || i >= doc->motions.size()) return "null";
-    const MotionRecord r = doc->record(i);
-    json j = {{"index", i},
-              {"line", r.line},
-              {"block", doc->block_of(i)},
-              {"kind", motion_kind_name(r.kind)},
-              {"curve", curve_kind_name(r.curve)},
-              {"start", {r.start.x, r.start.y}},
-              {"end", {r.end.x, r.end.y}},
-              {"mid", {point_at(r, 0.5).x, point_at(r, 0.5).y}},
-              {"length_mm", r.length_mm},
-              {"centre", r.curve == CurveKind::Arc ? json{r.centre.x, r.centre.y} : json(nullptr)},
-              {"text", describe_motion(r, ui_lang())}};
-    return j.dump();
+void Automation::set_playback(double factor, bool playing) {
+    const Document* doc = p_.session.document();
+    if (!doc) return;
+    Playback& p = p_.playback;
+    p.factor = static_cast<float>(std::clamp(factor, double{Playback::kMinFactor}, double{Playback::kMaxFactor}));
+    if (playing != p.playing) p.toggle(doc->motions.size());
 }
 
-void App::set_layer(int layer, bool visible) {
-    if (layer >= 0 && layer < static_cast<int>(kMotionKinds)) layers_.kinds[static_cast<std::size_t>(layer)] = visible;
-    if (layer == kLayerPierces) layers_.pierces = visible;
-    if (layer == kLayerStart) layers_.start = visible;
-    if (layer == kLayerKerf) layers_.kerf = visible;
-    if (layer == kLayerKerfBand) layers_.kerf_band = visible;
-    if (layer == kLayerTable) layers_.table = visible;
+void Automation::pinch(double x0, double y0, double x1, double y1, double factor) {
+    if (!(factor > 0) || !std::isfinite(factor)) return;
+    View& view = p_.navigation.view();
+    view.pan_by(x1 - x0, y1 - y0);
+    view.zoom_at(x1, y1, factor);
+}
+
+void Automation::show_difference(int k) {
+    const Compare* c = p_.compare.result();
+    if (!c || k < 0) return;
+    for (const ContourDiff& d : c->diff.contours) {
+        if (d.change == ContourChange::Same || k-- > 0) continue;
+        p_.compare.show_contour(static_cast<std::size_t>(d.a >= 0 ? d.a : d.b), d.a < 0);
+        return;
+    }
+}
+
+void Automation::set_examples(std::vector<std::string> names) {
+    for (const std::string& name : names) p_.fonts.require_glyphs(name);
+    p_.ui.examples = std::move(names);
 }
 
 }  // namespace essi::viewer

@@ -3,11 +3,15 @@
 // colour and the differences are listed, each one click from its contour.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "app/Navigation.hpp"
+#include "app/Notices.hpp"
 #include "essi/diff.hpp"
+#include "render/UiFonts.hpp"
 
 namespace essi::viewer {
 
@@ -25,5 +29,32 @@ struct Compare {
 // A compared with B (`bytes`, read with A's profile, or by its own evidence when A's is auto).
 [[nodiscard]] std::unique_ptr<Compare> make_compare(const Document& a, bool auto_profile, std::string name,
                                                     const std::string& bytes);
+
+// The mode: the next tape opened (dropped, Open..., essikit.compare) is compared with the one shown instead of
+// replacing it; the comparison stays until the mode is left or another tape is loaded.
+class CompareMode {
+public:
+    CompareMode(Navigation& navigation, Notices& notices, UiFonts& fonts)
+        : navigation_(navigation), notices_(notices), fonts_(fonts) {}
+
+    // The next tape opened is B (`a`: the tape shown; none: a message that one must be loaded first).
+    void begin(const Document* a);
+    // A compared with B (`bytes`: read with A's profile, or by its own evidence when A's is auto).
+    void compare_with(const Document* a, bool auto_profile, std::string name, const std::string& bytes);
+    void end();
+    // Another tape is loaded: the comparison was of the one before.
+    void forget() { compare_.reset(); }
+    [[nodiscard]] const Compare* result() const { return compare_.get(); }
+    [[nodiscard]] bool pending() const { return next_; }
+    // Shows contour `index` of A (or of B: `of_b`): its lines selected (A's), the view on it.
+    void show_contour(std::size_t index, bool of_b);
+
+private:
+    Navigation& navigation_;
+    Notices& notices_;
+    UiFonts& fonts_;
+    std::unique_ptr<Compare> compare_;  // the other revision and the differences
+    bool next_ = false;                 // the next tape opened is the other revision
+};
 
 }  // namespace essi::viewer

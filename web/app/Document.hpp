@@ -1,25 +1,24 @@
 // A loaded tape as the viewer holds it: the bytes, a compact copy of the motion stream (16 bytes a motion, 8 more
 // an arc; full records only for parabolas), statistics and diagnostics exactly as the core gives them, and what
-// it takes to read any line's blocks again. Loading runs in steps so the UI can draw a progress bar between
-// them (DocumentLoader). Memory: the viewer must stay below 2 x the tape's bytes + what the core's Tape holds.
+// it takes to read any line's blocks again. DocumentLoader (DocumentLoader.hpp) makes it in steps, DocumentSink
+// (DocumentSink.hpp) writes its motions; Describe.hpp puts a motion or a block in words. Memory: the viewer must
+// stay below 2 x the tape's bytes + what the core's Tape holds.
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "essi/diagnostic_marks.hpp"
 #include "essi/diagnostics.hpp"
-#include "essi/i18n.hpp"
 #include "essi/geom.hpp"
 #include "essi/lines.hpp"
 #include "essi/motion.hpp"
 #include "essi/dialect.hpp"
 #include "essi/profile.hpp"
 #include "essi/read.hpp"
-#include "essi/pipeline.hpp"
+#include "essi/stats.hpp"
 
 namespace essi::viewer {
 
@@ -159,15 +158,6 @@ struct Document {
     // The torch's path of one source line's motions where kerf compensation is on or ends (docs/semantics.md §8):
     // the compensated pieces, worked out from where that compensation started (the inspector's second position).
     [[nodiscard]] std::vector<MotionRecord> torch_path_of_line(std::uint32_t line) const;
-    // The block inspector's sentences for one line: its blocks, its motions (at most kInspectorMotions) and the
-    // torch's path where kerf compensation is on ("torch (kerf): ...").
-    struct InspectorLine {
-        enum class Of : std::uint8_t { Block, Motion, Torch } of;
-        MotionKind kind;  // (a motion's)
-        std::string text;
-    };
-    static constexpr std::size_t kInspectorMotions = 8;
-    [[nodiscard]] std::vector<InspectorLine> inspector_lines(std::uint32_t line, Lang lang = Lang::En) const;
     // The blocks that start on one source line (the chunk that holds them is read again when needed).
     [[nodiscard]] LineBlocks blocks_of_line(std::uint32_t line) const;
     [[nodiscard]] bool has_errors() const;
@@ -185,54 +175,6 @@ private:
     // The chunk last read again (blocks_of_line): the inspector asks for the same line every frame.
     mutable Tape reread_;
     mutable std::size_t reread_chunk_ = ~std::size_t(0);
-};
-
-// In words, for the block inspector: "cut arc CCW r=50.0 mm, centre (10.0, 20.0), sweep 90.0°, 78.5 mm".
-[[nodiscard]] std::string describe_motion(const MotionRecord& m, Lang lang = Lang::En);
-// The meaning of block i of `tape`: describe_function for function blocks, the kind for the others.
-[[nodiscard]] std::string describe_block(const Tape& tape, std::size_t block_index, const Profile& profile,
-                                         Lang lang = Lang::En);
-// The words the panels use for a motion's kind ("cut"), its curve ("arc") and its tools ("oxygen+punch", "-" for
-// none), in `lang` (English: the core's names, motion_kind_name and the rest).
-[[nodiscard]] const char* motion_kind_text(MotionKind kind, Lang lang);
-[[nodiscard]] const char* curve_kind_text(CurveKind curve, Lang lang);
-[[nodiscard]] std::string tools_label(std::uint8_t tools, Lang lang);
-
-// Loads a document in steps that each take about `budget_ms` (so the page keeps drawing): the line index,
-// then TapeReader chunks through essi::TapeChecker (the statistics and diagnostics of `essi check`), the
-// viewer's compact stream taken on the way (TapeChecker's `also` sink), the blocks appended to the Tape.
-class DocumentLoader {
-public:
-    // `plan_later`: the cut plan's plates are kept while the tape is read and analysed after it (step_plan), from
-    // the document's motions (TapeChecker::defer_plan): the document is drawn first, its plan's findings follow.
-    DocumentLoader(std::string name, std::string bytes, TapeSetup setup, bool plan_later = false);
-    ~DocumentLoader();
-    // Runs for about budget_ms; returns true when the document is complete (but for the plan's findings when
-    // plan_later: plan_pending()).
-    bool step(double budget_ms = 12);
-    [[nodiscard]] float progress() const;      // 0..1
-    [[nodiscard]] Msg stage() const;           // "indexing lines", "reading and checking", ... (ui.def)
-    [[nodiscard]] std::unique_ptr<Document> take() { return std::move(doc_); }
-    // After step() returned true and take(): the cut plan's plates still to analyse.
-    [[nodiscard]] bool plan_pending() const { return checker_ != nullptr; }
-    // Analyses plates for about budget_ms; when the last is done, its findings join `doc`'s diagnostics (sorted,
-    // their marks placed) and true is returned. `doc` is the document this loader made.
-    bool step_plan(Document& doc, double budget_ms);
-    [[nodiscard]] float plan_progress() const;  // 0..1
-private:
-    class Sink;
-    class Motions;
-    std::unique_ptr<Document> doc_;
-    std::unique_ptr<Sink> sink_;
-    std::unique_ptr<Motions> motions_;  // the document's motions, read back by the kept plates (plan_later)
-    bool plan_later_ = false;
-    std::unique_ptr<TapeReader> reader_;
-    std::unique_ptr<TapeChecker> checker_;
-    Tape chunk_;
-    enum class Stage { IndexLines, ReadAndCheck, Finish, Done };
-    Stage stage_ = Stage::IndexLines;
-    static constexpr std::size_t kMotionReserveSlack = 64;  // 1/64 more for addressed motions ("1+100+0")
-    std::size_t read_pos_ = 0;  // byte offset reached by the reader
 };
 
 }  // namespace essi::viewer

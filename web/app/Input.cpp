@@ -7,10 +7,8 @@
 #include <cmath>
 #include <vector>
 
-#include "app/App.hpp"
 #include "app/Problems.hpp"
 #include "essi/geom.hpp"
-#include "platform/Platform.hpp"
 
 namespace essi::viewer {
 
@@ -50,16 +48,6 @@ bool beyond(const Document& d, std::size_t i, Point p, double best) {
 }
 
 }  // namespace
-
-void Measure::click(Point p) {
-    if (points != 1) {
-        a = p;
-        points = 1;
-    } else {
-        b = p;
-        points = 2;
-    }
-}
 
 std::size_t pick(const Document& d, const View& view, std::size_t limit, int kind_mask, double sx, double sy) {
     if (d.motions.empty()) return Selection::npos;
@@ -118,33 +106,33 @@ Point snap(const Document* doc, const View& view, double sx, double sy, bool* sn
     return result;
 }
 
-void Input::handle_shortcuts(App& app) {
+void Input::handle_shortcuts() {
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantTextInput) return;
-    handle_characters(app);
-    handle_keys(app);
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_O)) platform::open_file_dialog(app);
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_V)) platform::paste(app);
+    handle_characters();
+    handle_keys();
+    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_O)) p_.platform.open_file_dialog();
+    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_V)) p_.platform.paste();
 }
 
 // Typed characters (queued by ImGui: never lost, whatever the keyboard layout).
-void Input::handle_characters(App& app) {
+void Input::handle_characters() {
     const ImGuiIO& io = ImGui::GetIO();
-    View& view = app.view();
-    Layers& layers = app.layers();
+    View& view = p_.navigation.view();
+    Layers& layers = p_.layers;
     for (int i = 0; i < io.InputQueueCharacters.Size; ++i) {
         switch (io.InputQueueCharacters[i]) {
-            case 'f': case 'F': app.fit(); break;
-            case 'h': case 'H': case '?': app.ui().help = !app.ui().help; break;
-            case 'm': case 'M': measure.toggle(); break;
+            case 'f': case 'F': p_.navigation.fit(); break;
+            case 'h': case 'H': case '?': p_.ui.help = !p_.ui.help; break;
+            case 'm': case 'M': p_.measure.toggle(); break;
             case ' ':
-                if (app.document()) app.playback().toggle(app.document()->motions.size());
+                if (const Document* d = p_.session.document()) p_.playback.toggle(d->motions.size());
                 break;
             case '+': case '=': view.zoom_at(view.ox(), view.oy(), kKeyZoom); break;
             case '-': view.zoom_at(view.ox(), view.oy(), 1 / kKeyZoom); break;
             case 'g': case 'G': layers.grid = !layers.grid; break;
-            case 's': case 'S': app.share(); break;
-            case 'p': case 'P': app.set_problems_only(!app.problems_only()); break;
+            case 's': case 'S': p_.shares.share(); break;
+            case 'p': case 'P': p_.preferences.set_problems_only(!p_.preferences.problems_only()); break;
             case '1': layers.kind(MotionKind::Cut) = !layers.kind(MotionKind::Cut); break;
             case '2':  // travel and rapid together
                 layers.kind(MotionKind::Travel) = !layers.kind(MotionKind::Travel);
@@ -152,39 +140,42 @@ void Input::handle_characters(App& app) {
                 break;
             case '3': layers.kind(MotionKind::Mark) = !layers.kind(MotionKind::Mark); break;
             case '4': layers.pierces = !layers.pierces; break;
-            case '[': case ']': {  // a side panel shown or hidden
-                panels::PanelLayout l = app.ui().layout;
-                bool& shown = io.InputQueueCharacters[i] == '[' ? l.left_shown : l.right_shown;
-                shown = !shown;
-                app.set_layout(l);
-                break;
-            }
+            case '[': toggle_side_panel(true); break;
+            case ']': toggle_side_panel(false); break;
             default: break;
         }
     }
 }
 
+// A side panel shown or hidden ([ and ]).
+void Input::toggle_side_panel(bool left) {
+    panels::PanelLayout l = p_.ui.layout;
+    bool& shown = left ? l.left_shown : l.right_shown;
+    shown = !shown;
+    p_.preferences.set_layout(l);
+}
+
 // Keys without a character: Esc, F1, the playback's arrows, Home and End.
-void Input::handle_keys(App& app) {
+void Input::handle_keys() {
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
-        if (measure.active) measure.leave();
-        else if (app.ui().help) app.ui().help = false;
-        else app.selection().clear();
+        if (p_.measure.active) p_.measure.leave();
+        else if (p_.ui.help) p_.ui.help = false;
+        else p_.navigation.selection().clear();
     }
-    if (ImGui::IsKeyPressed(GLFW_KEY_F1)) app.ui().help = !app.ui().help;
-    const Document* doc = app.document();
+    if (ImGui::IsKeyPressed(GLFW_KEY_F1)) p_.ui.help = !p_.ui.help;
+    const Document* doc = p_.session.document();
     if (!doc || doc->motions.empty()) return;
     const std::size_t n = doc->motions.size();
-    Playback& playback = app.playback();
+    Playback& playback = p_.playback;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) playback.step_forward(n);
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) playback.step_back();
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home))) playback.rewind();
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_End))) playback.show_all(n);
 }
 
-void Input::handle_canvas(App& app) {
+void Input::handle_canvas() {
     const ImGuiIO& io = ImGui::GetIO();
-    View& view = app.view();
+    View& view = p_.navigation.view();
     const ImVec2 mp = io.MousePos;
     const bool over = view.area.contains(mp.x, mp.y) && !io.WantCaptureMouse;
     if (over && io.MouseWheel != 0) view.zoom_at(mp.x, mp.y, std::pow(kWheelZoom, io.MouseWheel));
@@ -200,7 +191,7 @@ void Input::handle_canvas(App& app) {
     }
     if (press_in_canvas_ && ImGui::IsMouseReleased(0)) {
         press_in_canvas_ = false;
-        if (!dragging_) click(app, mp.x, mp.y);
+        if (!dragging_) click(mp.x, mp.y);
         dragging_ = false;
     }
     // Right button or middle button drag pans too.
@@ -209,22 +200,22 @@ void Input::handle_canvas(App& app) {
 
 // A click on the drawing: a measure point, a diagnostic's mark (its block selected, as in the problems list), or
 // the motion under it selected (none: the selection cleared).
-void Input::click(App& app, double sx, double sy) {
-    const Document* doc = app.document();
-    if (measure.active) {
+void Input::click(double sx, double sy) {
+    const Document* doc = p_.session.document();
+    const View& view = p_.navigation.view();
+    if (p_.measure.active) {
         bool snapped = false;
-        measure.click(snap(doc, app.view(), sx, sy, &snapped));
+        p_.measure.click(snap(doc, view, sx, sy, &snapped));
         return;
     }
-    if (const std::size_t mark = doc ? mark_at(*doc, app.view(), sx, sy) : kNoMark; mark != kNoMark) {
-        app.select_diagnostic(doc->marks[mark].diagnostic);
+    if (const std::size_t mark = doc ? mark_at(*doc, view, sx, sy) : kNoMark; mark != kNoMark) {
+        p_.navigation.select_diagnostic(doc->marks[mark].diagnostic);
         return;
     }
     const std::size_t n = doc ? doc->motions.size() : 0;
-    const std::size_t m = doc ? pick(*doc, app.view(), app.playback().limit(n), app.layers().kind_mask(), sx, sy)
-                              : Selection::npos;
-    if (m != Selection::npos) app.select_motion(m);
-    else app.selection().clear();
+    const std::size_t m = doc ? pick(*doc, view, p_.playback.limit(n), p_.layers.kind_mask(), sx, sy) : Selection::npos;
+    if (m != Selection::npos) p_.navigation.select_motion(m);
+    else p_.navigation.selection().clear();
 }
 
 }  // namespace essi::viewer

@@ -5,28 +5,18 @@
 #include <cstddef>
 
 #include "app/Document.hpp"
+#include "app/Layers.hpp"
+#include "app/Measure.hpp"
+#include "app/Navigation.hpp"
+#include "app/Playback.hpp"
+#include "app/PlatformServices.hpp"
+#include "app/Preferences.hpp"
+#include "app/Session.hpp"
+#include "app/ShareLinks.hpp"
+#include "app/UiState.hpp"
 #include "app/View.hpp"
 
 namespace essi::viewer {
-
-class App;
-
-// The measure mode: two clicked points (machine mm), snapped to end points and arc centres.
-struct Measure {
-    bool active = false;
-    int points = 0;  // 0, 1 (a fixed, b follows the mouse) or 2
-    Point a, b;
-
-    void toggle() {
-        active = !active;
-        points = 0;
-    }
-    void leave() {
-        active = false;
-        points = 0;
-    }
-    void click(Point p);
-};
 
 // The motion under screen point (sx, sy) among motions [0, limit) of the kinds in `kind_mask`, from the exact
 // geometry (the segments live on the GPU only); Selection::npos when none is within the pick radius.
@@ -37,16 +27,30 @@ struct Measure {
 
 class Input {
 public:
-    void handle_shortcuts(App& app);
-    void handle_canvas(App& app);
+    // What the mouse and the keys read and change.
+    struct Parts {
+        const Session& session;
+        Navigation& navigation;
+        Layers& layers;
+        Playback& playback;
+        Measure& measure;
+        ShareLinks& shares;
+        Preferences& preferences;
+        UiState& ui;
+        PlatformServices& platform;
+    };
+    explicit Input(const Parts& parts) : p_(parts) {}
 
-    Measure measure;
+    void handle_shortcuts();
+    void handle_canvas();
 
 private:
-    void handle_characters(App& app);
-    void handle_keys(App& app);
-    void click(App& app, double sx, double sy);
+    void handle_characters();
+    void toggle_side_panel(bool left);
+    void handle_keys();
+    void click(double sx, double sy);
 
+    Parts p_;
     bool dragging_ = false;
     bool press_in_canvas_ = false;
     float press_x_ = 0, press_y_ = 0;

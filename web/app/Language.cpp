@@ -1,7 +1,5 @@
 #include "app/Language.hpp"
 
-#include "app/App.hpp"
-#include "platform/Platform.hpp"
 
 namespace essi::viewer {
 
@@ -28,19 +26,6 @@ std::string tr_format(Msg id, const char* spec) {
         else out += c;
     }
     return out;
-}
-
-// The user's choice (the setting), else what the browser or the environment asks for.
-Lang App::startup_language() {
-    if (const auto setting = platform::load_text_setting(kLanguageSetting))
-        if (const auto lang = parse_lang(*setting)) return *lang;
-    return platform::system_language();
-}
-
-void App::set_language(Lang lang, bool remember) {
-    set_ui_lang(lang);
-    if (remember) platform::save_text_setting(kLanguageSetting, std::string(lang_code(lang)));
-    platform::show_language(lang);
 }
 
 }  // namespace essi::viewer

@@ -1,5 +1,5 @@
 // The viewer's language (docs/viewer.md, "Languages"): every text it shows is a row of the core's catalogue
-// (essi/i18n.hpp; the viewer's own rows are core/i18n/messages/ui.def) in the language chosen (App::set_language:
+// (essi/i18n.hpp; the viewer's own rows are core/i18n/messages/ui.def) in the language chosen (Preferences::set_language:
 // the browser's or the environment's, or the user's switch, kept as the setting "lang").
 #pragma once
 
@@ -9,7 +9,7 @@
 
 namespace essi::viewer {
 
-// The language the panels are drawn in (English until App sets it).
+// The language the panels are drawn in (English until Preferences sets it).
 [[nodiscard]] Lang ui_lang();
 void set_ui_lang(Lang lang);
 

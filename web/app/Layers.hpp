@@ -18,7 +18,7 @@ struct Layers {
     bool kerf_band = true;  // the band of the cut's real width along it
     bool table = true;      // the machine's table (a profile with one) and the plate (the cut box)
     // The problems only: what no diagnostic concerns drawn faint (the marks, the blocks, contours and related places
-    // of the diagnostics in full); kept across sessions (App::set_problems_only).
+    // of the diagnostics in full); kept across sessions (Preferences::set_problems_only).
     bool problems_only = false;
 
     [[nodiscard]] bool& kind(MotionKind k) { return kinds[static_cast<std::size_t>(k)]; }

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "app/Document.hpp"
+#include "app/DocumentLoader.hpp"
 #include "render/LodRaster.hpp"
 #include "render/PathBuffers.hpp"
 #include "render/Renderer.hpp"

@@ -10,13 +10,16 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/App.hpp"
 #include "essi/share_link.hpp"
 #include "essi/text.hpp"
+#include "platform/ApiEmscripten.hpp"
 
-using essi::viewer::App;
+using essi::viewer::Automation;
 
 namespace {
+
+// The app's side of the page's API (serve_page_api); null until the main loop has made the app.
+Automation* g_api = nullptr;
 
 // The link last read by essi_parse_share (below): its tape is loaded as the sender read it (essi_load_commit_shared),
 // its problems are worded in the viewer's language (page_phrase).
@@ -62,6 +65,10 @@ essi::viewer::Phrase page_phrase(const char* json) {
 
 }  // namespace
 
+namespace essi::viewer::platform {
+void serve_page_api(Automation& automation) { g_api = &automation; }
+}  // namespace essi::viewer::platform
+
 extern "C" {
 
 // Loading without a second copy: the page asks for a buffer of `len` bytes (essi_load_buffer), writes the file
@@ -81,32 +88,30 @@ EMSCRIPTEN_KEEPALIVE char* essi_load_buffer(int len) {
 }
 
 EMSCRIPTEN_KEEPALIVE void essi_load_commit(const char* name) {
-    if (App* app = App::instance()) app->load(name, std::move(g_pending));
+    if (g_api) g_api->load(name, std::move(g_pending));
     g_pending = std::string();
 }
 
 EMSCRIPTEN_KEEPALIVE void essi_load_commit_shared(const char* name) {
-    if (App* app = App::instance()) app->load_shared(name, std::move(g_pending), g_share_link);
+    if (g_api) g_api->load_shared(name, std::move(g_pending), g_share_link);
     g_pending = std::string();
 }
 
 // A share link that could not be opened ({"kind", "args"}: page_phrase): shown over the start screen.
 EMSCRIPTEN_KEEPALIVE void essi_link_problem(const char* json) {
-    if (App* app = App::instance()) app->link_problem(page_phrase(json));
+    if (g_api) g_api->link_problem(page_phrase(json));
 }
 
 // The panels' language: "en", "de", "zh" (or a tag such as "de-AT"); kept across sessions. Another is ignored.
 EMSCRIPTEN_KEEPALIVE void essi_set_language(const char* tag) {
-    App* app = App::instance();
-    if (!app || !tag) return;
-    if (const auto lang = essi::parse_lang(tag)) app->set_language(*lang);
+    if (!g_api || !tag) return;
+    if (const auto lang = essi::parse_lang(tag)) g_api->set_language(*lang);
 }
 
-// The state as JSON (App::state_json); valid until the next call.
+// The state as JSON (Automation::state_json); valid until the next call.
 EMSCRIPTEN_KEEPALIVE const char* essi_state() {
     static std::string s;
-    App* app = App::instance();
-    s = app ? app->state_json() : "{\"status\":\"starting\"}";
+    s = g_api ? g_api->state_json() : "{\"status\":\"starting\"}";
     return s.c_str();
 }
 
@@ -122,133 +127,115 @@ EMSCRIPTEN_KEEPALIVE const char* essi_heap() {
     return s.c_str();
 }
 
-// One motion as JSON (App::motion_json), "null" past the end; valid until the next call.
+// One motion as JSON (Automation::motion_json), "null" past the end; valid until the next call.
 EMSCRIPTEN_KEEPALIVE const char* essi_motion(int index) {
     static std::string s;
-    App* app = App::instance();
-    s = app && index >= 0 ? app->motion_json(static_cast<std::size_t>(index)) : "null";
+    s = g_api && index >= 0 ? g_api->motion_json(static_cast<std::size_t>(index)) : "null";
     return s.c_str();
 }
 
 // View centre in machine mm and zoom in pixels per mm; applied after the load in progress, if any.
 EMSCRIPTEN_KEEPALIVE void essi_set_view(double x, double y, double zoom) {
-    if (App* app = App::instance()) app->set_view(x, y, zoom);
+    if (g_api) g_api->set_view(x, y, zoom);
 }
 
 EMSCRIPTEN_KEEPALIVE void essi_select_line(int line) {
-    if (App* app = App::instance()) app->select_line(static_cast<std::uint32_t>(line > 0 ? line : 0));
+    if (g_api) g_api->select_line(static_cast<std::uint32_t>(line > 0 ? line : 0));
 }
 
-// layer: 0 rapid, 1 travel, 2 cut, 3 mark (essi::MotionKind), 4 pierces, 5 start
+// layer: 0 rapid, 1 travel, 2 cut, 3 mark (essi::MotionKind), 4 pierces, 5 start, 6 kerf path, 7 kerf width, 8 table
 EMSCRIPTEN_KEEPALIVE void essi_set_layer(int layer, int visible) {
-    if (App* app = App::instance()) app->set_layer(layer, visible != 0);
+    if (g_api) g_api->set_layer(layer, visible != 0);
 }
 
 EMSCRIPTEN_KEEPALIVE void essi_set_orientation(int quarter_turns) {
-    if (App* app = App::instance()) app->set_orientation(quarter_turns);
+    if (g_api) g_api->set_orientation(quarter_turns);
 }
 
 // 1: machine coordinates, 0: program coordinates (Coordinates).
 EMSCRIPTEN_KEEPALIVE void essi_set_coordinates(int machine) {
-    if (App* app = App::instance()) app->set_machine_coordinates(machine != 0);
+    if (g_api) g_api->set_machine_coordinates(machine != 0);
 }
 
 // The page pixel where program point (x, y) mm is drawn (View::to_screen), as JSON [px, py].
 EMSCRIPTEN_KEEPALIVE const char* essi_project(double x, double y) {
     static std::string s;
-    App* app = App::instance();
-    if (!app) return "null";
-    const essi::Point o = app->origin();
-    const essi::Point p = app->view().to_screen({x - o.x, y - o.y});
+    if (!g_api) return "null";
+    const essi::Point p = g_api->project(x, y);
     s = nlohmann::json::array({p.x, p.y}).dump();
     return s.c_str();
 }
 
 // The playback: its speed factor (machine seconds a second, 1-1000) and whether it plays (from where it is).
 EMSCRIPTEN_KEEPALIVE void essi_set_playback(double factor, int playing) {
-    App* app = App::instance();
-    if (!app || !app->document()) return;
-    essi::viewer::Playback& p = app->playback();
-    p.factor = static_cast<float>(std::clamp(factor, double{p.kMinFactor}, double{p.kMaxFactor}));
-    if ((playing != 0) != p.playing) p.toggle(app->document()->motions.size());
+    if (g_api) g_api->set_playback(factor, playing != 0);
 }
 
 // Copies as the panels' Copy buttons and menus do: 0 the report, 1 the diagnostic `index`, 2 the source line
-// `index`, 3 the inspector's text of the selected line (App::CopyWhat).
+// `index`, 3 the inspector's text of the selected line (Exports::CopyWhat).
 EMSCRIPTEN_KEEPALIVE void essi_copy(int what, int index) {
-    if (App* app = App::instance(); app && what >= 0 && what <= 3)
-        app->copy(static_cast<App::CopyWhat>(what), static_cast<std::uint32_t>(std::max(index, 0)));
+    if (g_api && what >= 0 && what <= 3)
+        g_api->copy(static_cast<essi::viewer::Exports::CopyWhat>(what), static_cast<std::uint32_t>(std::max(index, 0)));
 }
 
 // Two fingers on the canvas (index.html): the view zooms by `factor` about the fingers' middle and moves with it
 // from (x0, y0) to (x1, y1), canvas pixels.
 EMSCRIPTEN_KEEPALIVE void essi_pinch(double x0, double y0, double x1, double y1, double factor) {
-    App* app = App::instance();
-    if (!app || !(factor > 0) || !std::isfinite(factor)) return;
-    app->view().pan_by(x1 - x0, y1 - y0);
-    app->view().zoom_at(x1, y1, factor);
+    if (g_api) g_api->pinch(x0, y0, x1, y1, factor);
 }
 
 // The side panels shown or hidden, and their widths (0: as they are); kept across sessions.
 EMSCRIPTEN_KEEPALIVE void essi_set_layout(int left_shown, int right_shown, double left, double right) {
-    if (App* app = App::instance())
-        app->set_layout({static_cast<float>(left), static_cast<float>(right), left_shown != 0, right_shown != 0});
+    if (g_api) g_api->set_layout({static_cast<float>(left), static_cast<float>(right), left_shown != 0, right_shown != 0});
 }
 
 // Compare mode: the tape in the load buffer (essi_load_buffer) is compared with the loaded one (essikit.compare);
 // essi_end_compare leaves the mode; essi_show_difference shows the k-th difference's contour.
 EMSCRIPTEN_KEEPALIVE void essi_compare_commit(const char* name) {
-    if (App* app = App::instance()) app->compare_with(name ? name : "B", g_pending);
+    if (g_api) g_api->compare_with(name ? name : "B", g_pending);
     g_pending = std::string();
 }
 EMSCRIPTEN_KEEPALIVE void essi_end_compare() {
-    if (App* app = App::instance()) app->end_compare();
+    if (g_api) g_api->end_compare();
 }
 EMSCRIPTEN_KEEPALIVE void essi_show_difference(int k) {
-    App* app = App::instance();
-    if (!app || !app->compare() || k < 0) return;
-    for (const essi::ContourDiff& d : app->compare()->diff.contours) {
-        if (d.change == essi::ContourChange::Same || k-- > 0) continue;
-        app->show_contour(static_cast<std::size_t>(d.a >= 0 ? d.a : d.b), d.a < 0);
-        return;
-    }
+    if (g_api) g_api->show_difference(k);
 }
 
 // The view as PNG after the next frame (window.essikitLastPng gets its data URL).
 EMSCRIPTEN_KEEPALIVE void essi_export_png() {
-    if (App* app = App::instance()) app->export_view_png();
+    if (g_api) g_api->export_view_png();
 }
 
 // The comments' text encoding: "utf-8", "gb18030" (or "gbk"), anything else detects it (kept across sessions).
 EMSCRIPTEN_KEEPALIVE void essi_set_comment_encoding(const char* name) {
-    if (App* app = App::instance()) app->set_text_encoding(essi::parse_text_encoding(name ? name : ""));
+    if (g_api) g_api->set_text_encoding(essi::parse_text_encoding(name ? name : ""));
 }
 
 // The problems-only view: 1 on (what no diagnostic concerns drawn faint), 0 off (kept across sessions).
 EMSCRIPTEN_KEEPALIVE void essi_set_problems_only(int on) {
-    if (App* app = App::instance()) app->set_problems_only(on != 0);
+    if (g_api) g_api->set_problems_only(on != 0);
 }
 
 // The theme: 1 light, 0 dark (kept across sessions).
 EMSCRIPTEN_KEEPALIVE void essi_set_theme(int light) {
-    if (App* app = App::instance()) app->set_light_theme(light != 0);
+    if (g_api) g_api->set_light_theme(light != 0);
 }
 
 // The examples the server offers: a JSON array of names (essi serve's /examples/index.json).
 EMSCRIPTEN_KEEPALIVE void essi_set_examples(const char* json_names) {
-    App* app = App::instance();
-    if (!app || !json_names) return;
+    if (!g_api || !json_names) return;
     const nlohmann::json j = nlohmann::json::parse(json_names, nullptr, false);
     std::vector<std::string> names;
     if (j.is_array())
         for (const auto& n : j)
             if (n.is_string()) names.push_back(essi::display_text(n.get<std::string>()));
-    app->set_examples(std::move(names));
+    g_api->set_examples(std::move(names));
 }
 
 // Reads the tape again with another profile: a built-in name or "auto".
 EMSCRIPTEN_KEEPALIVE void essi_set_profile(const char* name) {
-    if (App* app = App::instance()) app->set_profile(name ? name : "auto");
+    if (g_api) g_api->set_profile(name ? name : "auto");
 }
 
 // Reads a share link's fragment (essi/share_link.hpp) for the page: {name, line, view: [x, y, zoom] | null, share,
@@ -284,32 +271,29 @@ namespace {
 std::string g_export;
 }
 EMSCRIPTEN_KEEPALIVE const char* essi_export(const char* format) {
-    App* app = App::instance();
-    g_export = app ? app->export_text(format ? format : "") : std::string();
+    g_export = g_api ? g_api->export_text(format ? format : "") : std::string();
     return g_export.c_str();
 }
 
 // The glyphs of a text (UTF-8) into the panels' font atlas (UiFonts::require_glyphs: the CJK font is fetched once,
 // when a character needs it); essi_has_glyphs: 1 when the atlas has every character of the text.
 EMSCRIPTEN_KEEPALIVE void essi_require_glyphs(const char* text) {
-    if (App* app = App::instance(); app && text) app->fonts().require_glyphs(text);
+    if (g_api && text) g_api->require_glyphs(text);
 }
 EMSCRIPTEN_KEEPALIVE int essi_has_glyphs(const char* text) {
-    App* app = App::instance();
-    return app && text && app->fonts().has_glyphs(text) ? 1 : 0;
+    return g_api && text && g_api->has_glyphs(text) ? 1 : 0;
 }
 
 // Makes a share link as the Share button does; the page's essikitShare finishes it.
 EMSCRIPTEN_KEEPALIVE void essi_share() {
-    if (App* app = App::instance()) app->share();
+    if (g_api) g_api->share();
 }
 
 // The page made the link (ok: `text` is the URL) or could not (`text`: {"kind", "args"}, page_phrase).
 EMSCRIPTEN_KEEPALIVE void essi_share_done(int ok, const char* text) {
-    App* app = App::instance();
-    if (!app) return;
-    if (ok != 0) app->share_done(text ? text : "");
-    else app->share_failed(page_phrase(text));
+    if (!g_api) return;
+    if (ok != 0) g_api->share_done(text ? text : "");
+    else g_api->share_failed(page_phrase(text));
 }
 
 }  // extern "C"

@@ -2,16 +2,15 @@
 // text); the Paste button asks navigator.clipboard.readText, which the browser may refuse.
 #include <emscripten.h>
 
-#include "app/App.hpp"
 #include "platform/Platform.hpp"
 
 namespace essi::viewer::platform {
 
-void copy_text(const std::string& text) {
+void Platform::copy_text(const std::string& text) {
     EM_ASM({ window.essikitCopy && window.essikitCopy(UTF8ToString($0)); }, text.c_str());
 }
 
-void paste(App&) {
+void Platform::paste() {
     EM_ASM({ window.essikitPasteButton && window.essikitPasteButton(); });
 }
 

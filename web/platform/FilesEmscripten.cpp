@@ -3,18 +3,15 @@
 // are handled by the page too, which writes the bytes into essi_load_buffer and commits them (ApiEmscripten.cpp).
 #include <emscripten.h>
 
-#include "app/App.hpp"
 #include "platform/Platform.hpp"
 
 namespace essi::viewer::platform {
 
-bool has_file_dialog() { return true; }
-
 // The page has already opened the picker in the click or key event (a picker opened from a later frame
 // is refused once the gesture has expired).
-void open_file_dialog(App&) {}
+void Platform::open_file_dialog() {}
 
-void open_button_at(float x, float y, float width, float height) {
+void Platform::open_button_at(float x, float y, float width, float height) {
     static float last[4] = {-1, -1, -1, -1};
     if (last[0] == x && last[1] == y && last[2] == width && last[3] == height) return;
     last[0] = x;
@@ -28,7 +25,7 @@ void open_button_at(float x, float y, float width, float height) {
     }, x, y, width, height);
 }
 
-void save_file(App&, const std::string& name, const std::string& text) {
+void Platform::save_file(const std::string& name, const std::string& text) {
     // (no commas inside the JavaScript: the EM_ASM macro would split its argument there)
     EM_ASM({
         const blob = new Blob([HEAPU8.slice($1, $1 + $2)], {type: 'application/octet-stream'});
@@ -41,11 +38,11 @@ void save_file(App&, const std::string& name, const std::string& text) {
     }, name.c_str(), text.data(), static_cast<int>(text.size()));
 }
 
-void open_example(App&, const std::string& name) {
+void Platform::open_example(const std::string& name) {
     EM_ASM({ window.essikitOpenExample(UTF8ToString($0)); }, name.c_str());
 }
 
-void save_view_png(App&, const std::string& name, PixelRect a) {
+void Platform::save_view_png(const std::string& name, PixelRect a) {
     // Right after the frame is drawn (the WebGL canvas still holds it): its drawing area onto a 2D canvas, a PNG
     // of it downloaded; window.essikitLastPng keeps its data URL (the tests read it).
     // (no commas inside the JavaScript: the EM_ASM macro would split its argument there)

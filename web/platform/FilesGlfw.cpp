@@ -1,12 +1,12 @@
 // Desktop files: the Open button asks zenity (when installed) for a path; files dropped on the window load.
-#include <GLFW/glfw3.h>
+#include "platform/FilesGlfw.hpp"
 
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
 
-#include "app/App.hpp"
+#include "app/Language.hpp"
 #include "platform/Platform.hpp"
 
 namespace essi::viewer::platform {
@@ -20,9 +20,10 @@ bool read_file(const std::string& path, std::string& out) {
     return true;
 }
 
-void install_drop_handler(GLFWwindow* window) {
-    glfwSetDropCallback(window, [](GLFWwindow*, int count, const char** paths) {
-        App* app = App::instance();
+void install_drop_handler(GLFWwindow* window, AppCallbacks& app) {
+    glfwSetWindowUserPointer(window, &app);
+    glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
+        auto* app = static_cast<AppCallbacks*>(glfwGetWindowUserPointer(w));
         if (app == nullptr || count < 1) return;
         std::string bytes;
         if (read_file(paths[0], bytes)) app->load(paths[0], std::move(bytes));
@@ -30,11 +31,9 @@ void install_drop_handler(GLFWwindow* window) {
     });
 }
 
-bool has_file_dialog() { return true; }
+void Platform::open_button_at(float, float, float, float) {}  // a desktop dialog can open from any frame
 
-void open_button_at(float, float, float, float) {}  // a desktop dialog can open from any frame
-
-void open_file_dialog(App& app) {
+void Platform::open_file_dialog() {
     const std::string command = std::string("zenity --file-selection --title='") + tr(Msg::UiOpenDialogTitle) + "' 2>/dev/null";
     FILE* p = popen(command.c_str(), "r");
     std::string path;
@@ -45,24 +44,22 @@ void open_file_dialog(App& app) {
     }
     while (!path.empty() && (path.back() == '\n' || path.back() == '\r')) path.pop_back();
     if (path.empty()) {
-        app.notify(Msg::UiNoFileChosen);
+        notify(Msg::UiNoFileChosen);
         return;
     }
     std::string bytes;
-    if (read_file(path, bytes)) app.load(path, std::move(bytes));
-    else app.notify(Msg::UiCannotRead, {path});
+    if (read_file(path, bytes)) load(path, std::move(bytes));
+    else notify(Msg::UiCannotRead, {path});
 }
 
-void save_file(App& app, const std::string& name, const std::string& text) {
+void Platform::save_file(const std::string& name, const std::string& text) {
     std::ofstream out(name, std::ios::binary);
     out << text;
-    app.notify(out ? Msg::UiWrote : Msg::UiCannotWrite, {name});
+    notify(out ? Msg::UiWrote : Msg::UiCannotWrite, {name});
 }
 
-void open_example(App&, const std::string&) {}  // (the desktop viewer has no server: no examples are offered)
+void Platform::open_example(const std::string&) {}  // (the desktop viewer has no server: no examples are offered)
 
-void save_view_png(App& app, const std::string&, PixelRect) {
-    app.notify(Msg::UiPngBrowserOnly);
-}
+void Platform::save_view_png(const std::string&, PixelRect) { notify(Msg::UiPngBrowserOnly); }
 
 }  // namespace essi::viewer::platform

@@ -15,7 +15,7 @@ extern "C" EMSCRIPTEN_KEEPALIVE void essi_font_loaded(essi::viewer::UiFonts* fon
 
 namespace essi::viewer::platform {
 
-bool has_cjk_font() {
+bool Platform::has_cjk_font() const {
 #if defined(ESSI_CJK_FONT)
     return true;  // (the build put it beside the page)
 #else
@@ -23,7 +23,7 @@ bool has_cjk_font() {
 #endif
 }
 
-void load_cjk_font(UiFonts& fonts) {
+void Platform::load_cjk_font(UiFonts& fonts) {
     EM_ASM({
         var fonts = $0;
         fetch('essi_cjk.ttc')

@@ -18,9 +18,9 @@ const char* cjk_font_path() {
 }
 }  // namespace
 
-bool has_cjk_font() { return cjk_font_path() != nullptr; }
+bool Platform::has_cjk_font() const { return cjk_font_path() != nullptr; }
 
-void load_cjk_font(UiFonts& fonts) {
+void Platform::load_cjk_font(UiFonts& fonts) {
     const char* path = cjk_font_path();
     if (path == nullptr) return fonts.cjk_loaded(nullptr, 0);
     std::FILE* f = std::fopen(path, "rb");

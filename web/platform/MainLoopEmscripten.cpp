@@ -12,11 +12,20 @@
 #include <cstdio>
 
 #include "app/App.hpp"
+#include "platform/ApiEmscripten.hpp"
+#include "platform/Platform.hpp"
 
 namespace {
 
-GLFWwindow* g_window = nullptr;
-essi::viewer::App* g_app = nullptr;
+using essi::viewer::App;
+
+// The page's loop: its window, its app, and what the loop keeps between frames.
+struct Loop {
+    GLFWwindow* window = nullptr;
+    App* app = nullptr;
+    bool background_queued = false;  // a background slice is queued (queue_background)
+    double pixel_ratio = 1;          // the device pixel ratio the canvas is drawn at (a hi-DPI screen: 2)
+};
 
 // Emscripten's GLFW (3.1.6) passes the browser's wheel deltas as the scroll offsets: pixels (about 100 a
 // notch; 3 a notch in line mode), positive downwards. GLFW's offsets are notches, positive upwards: without
@@ -35,41 +44,40 @@ void on_scroll(GLFWwindow* window, double dx, double dy) {
 // While the viewer loads, slices of its work also run between two animation frames (a task queued after each
 // slice): under SwiftShader a frame takes 33-80 ms, nearly all of it outside this thread, and the loading would
 // otherwise get only the ~30 ms slice inside each frame. No task is longer than a slice. The task is queued with
-// a MessageChannel message: chained setTimeout(0) calls are held back 4 ms each by the browser.
-bool g_background_queued = false;
-
-void queue_background() {
+// a MessageChannel message: chained setTimeout(0) calls are held back 4 ms each by the browser. The message is the
+// loop's address, handed back to essi_background_slice.
+void queue_background(Loop* loop) {
     EM_ASM({
         if (!Module.essiBackgroundChannel) {
             Module.essiBackgroundChannel = new MessageChannel();
-            Module.essiBackgroundChannel.port1.onmessage = function() { Module._essi_background_slice(); };
+            Module.essiBackgroundChannel.port1.onmessage = function(e) { Module._essi_background_slice(e.data); };
         }
-        Module.essiBackgroundChannel.port2.postMessage(0);
-    });
+        Module.essiBackgroundChannel.port2.postMessage($0);
+    }, loop);
 }
 
 }  // namespace
 
-extern "C" EMSCRIPTEN_KEEPALIVE void essi_background_slice() {
-    if (g_app != nullptr && g_app->background_step()) {
-        queue_background();
+// `arg`: the Loop queue_background posted.
+extern "C" EMSCRIPTEN_KEEPALIVE void essi_background_slice(void* arg) {
+    Loop* loop = static_cast<Loop*>(arg);
+    if (loop->app->background_step()) {
+        queue_background(loop);
     } else {
-        g_background_queued = false;
+        loop->background_queued = false;
     }
 }
 
 namespace {
 
-// The device pixel ratio the canvas is drawn at (a hi-DPI screen: 2, the canvas twice the CSS size each way).
-double g_pixel_ratio = 1;
-
-void fit_canvas() {
+// The canvas at its CSS size times the device pixel ratio (the canvas twice the CSS size each way at a ratio of 2).
+void fit_canvas(Loop& loop) {
     double w = 0, h = 0;
     emscripten_get_element_css_size("#canvas", &w, &h);
     const double ratio = std::clamp(emscripten_get_device_pixel_ratio(), 0.5, 4.0);
     int cw = 0, ch = 0;
-    glfwGetWindowSize(g_window, &cw, &ch);
-    if (w >= 1 && h >= 1 && (cw != static_cast<int>(w) || ch != static_cast<int>(h) || ratio != g_pixel_ratio)) {
+    glfwGetWindowSize(loop.window, &cw, &ch);
+    if (w >= 1 && h >= 1 && (cw != static_cast<int>(w) || ch != static_cast<int>(h) || ratio != loop.pixel_ratio)) {
         // The canvas in device pixels, GLFW's window in CSS pixels (what ImGui lays out in). Not glfwSetWindowSize:
         // Emscripten's asks for fullscreen instead of sizing the canvas when the size is the screen's (F11, a
         // kiosk), and the canvas is left stretched.
@@ -81,32 +89,34 @@ void fit_canvas() {
             }
         }, static_cast<int>(w), static_cast<int>(h), static_cast<int>(std::lround(w * ratio)),
            static_cast<int>(std::lround(h * ratio)));
-        g_pixel_ratio = ratio;
+        loop.pixel_ratio = ratio;
     }
 }
 
 // Emscripten's GLFW gives the mouse in canvas (device) pixels: ImGui works in CSS pixels, drawn at the ratio.
-void apply_pixel_ratio() {
+void apply_pixel_ratio(double pixel_ratio) {
     ImGuiIO& io = ImGui::GetIO();
-    io.DisplayFramebufferScale = ImVec2(static_cast<float>(g_pixel_ratio), static_cast<float>(g_pixel_ratio));
-    if (io.MousePos.x > -FLT_MAX / 2 && g_pixel_ratio != 1) {
-        io.MousePos.x /= static_cast<float>(g_pixel_ratio);
-        io.MousePos.y /= static_cast<float>(g_pixel_ratio);
+    const auto ratio = static_cast<float>(pixel_ratio);
+    io.DisplayFramebufferScale = ImVec2(ratio, ratio);
+    if (io.MousePos.x > -FLT_MAX / 2 && pixel_ratio != 1) {
+        io.MousePos.x /= ratio;
+        io.MousePos.y /= ratio;
     }
 }
 
-void frame(void*) {
-    fit_canvas();
+void frame(void* arg) {
+    Loop& loop = *static_cast<Loop*>(arg);
+    fit_canvas(loop);
     glfwPollEvents();
     ImGui_ImplGlfw_NewFrame();
-    apply_pixel_ratio();
+    apply_pixel_ratio(loop.pixel_ratio);
     ImGui::NewFrame();
-    g_app->frame();
+    loop.app->frame();
     ImGui::Render();
-    g_app->render(true);  // (the browser keeps showing an unchanged frame)
-    if (g_app->has_background_work() && !g_background_queued) {
-        g_background_queued = true;
-        queue_background();
+    loop.app->render(true);  // (the browser keeps showing an unchanged frame)
+    if (loop.app->has_background_work() && !loop.background_queued) {
+        loop.background_queued = true;
+        queue_background(&loop);
     }
 }
 
@@ -128,19 +138,24 @@ int main() {
     glfwWindowHint(GLFW_STENCIL_BITS, 0);
     double w = 1280, h = 720;
     emscripten_get_element_css_size("#canvas", &w, &h);
-    g_window = glfwCreateWindow(static_cast<int>(w), static_cast<int>(h), "essikit viewer", nullptr, nullptr);
-    if (g_window == nullptr) {
+    GLFWwindow* window = glfwCreateWindow(static_cast<int>(w), static_cast<int>(h), "essikit viewer", nullptr, nullptr);
+    if (window == nullptr) {
         EM_ASM(if (window.essikitFatal) window.essikitFatal("This browser cannot give the page WebGL 2 (needed to draw)."));
         return 1;
     }
-    glfwMakeContextCurrent(g_window);
+    glfwMakeContextCurrent(window);
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
-    ImGui_ImplGlfw_InitForOpenGL(g_window, true);
-    glfwSetScrollCallback(g_window, on_scroll);  // replaces the backend's (on_scroll calls it)
-    g_app = new essi::viewer::App(g_window);
-    if (!g_app->init_graphics()) std::fprintf(stderr, "essi_viewer: the drawing programs did not compile\n");
-    emscripten_set_main_loop_arg(frame, nullptr, 0, false);
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    glfwSetScrollCallback(window, on_scroll);  // replaces the backend's (on_scroll calls it)
+    // The platform, the app and the loop live as long as the page (main returns; the runtime stays).
+    static essi::viewer::platform::Platform platform;
+    static App app(platform);
+    platform.connect(app);
+    essi::viewer::platform::serve_page_api(app.automation());
+    if (!app.init_graphics()) std::fprintf(stderr, "essi_viewer: the drawing programs did not compile\n");
+    static Loop loop{window, &app};
+    emscripten_set_main_loop_arg(frame, &loop, 0, false);
     EM_ASM(if (window.essikitStarted) window.essikitStarted());
     return 0;
 }

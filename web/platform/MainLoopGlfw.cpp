@@ -23,11 +23,8 @@
 #include <vector>
 
 #include "app/App.hpp"
-
-namespace essi::viewer::platform {
-bool read_file(const std::string& path, std::string& out);  // FilesGlfw.cpp
-void install_drop_handler(GLFWwindow* window);               // FilesGlfw.cpp
-}  // namespace essi::viewer::platform
+#include "platform/FilesGlfw.hpp"
+#include "platform/Platform.hpp"
 
 namespace {
 
@@ -106,7 +103,7 @@ GLFWwindow* open_window() {
 }
 
 // The last frame's screenshot and state, as --screenshot and --state ask; 0, or 1 when one cannot be written.
-int write_outputs(const Options& opt, GLFWwindow* window, const essi::viewer::App& app) {
+int write_outputs(const Options& opt, GLFWwindow* window, const essi::viewer::Automation& automation) {
     int status = 0;
     int w = 0, h = 0;
     glfwGetFramebufferSize(window, &w, &h);
@@ -116,7 +113,7 @@ int write_outputs(const Options& opt, GLFWwindow* window, const essi::viewer::Ap
     }
     if (!opt.state.empty()) {
         std::ofstream out(opt.state, std::ios::binary);
-        out << app.state_json() << "\n";
+        out << automation.state_json() << "\n";
         if (!out) {
             std::fprintf(stderr, "essi_viewer: cannot write %s\n", opt.state.c_str());
             status = 1;
@@ -128,10 +125,12 @@ int write_outputs(const Options& opt, GLFWwindow* window, const essi::viewer::Ap
 // Loads the tape and runs the frames; the exit status.
 int run(const Options& opt, GLFWwindow* window) {
     using namespace essi::viewer;
-    App app(window);
-    if (opt.lang) app.set_language(*opt.lang, false);  // (for this run: the viewer's own choice stays kept)
+    platform::Platform platform;
+    App app(platform);
+    platform.connect(app);
+    if (opt.lang) app.automation().set_language(*opt.lang, false);  // (for this run: the viewer's own choice stays kept)
     if (!app.init_graphics()) std::fprintf(stderr, "essi_viewer: the drawing programs did not compile\n");
-    platform::install_drop_handler(window);
+    platform::install_drop_handler(window, app);
     if (!opt.tape.empty()) {
         std::string bytes;
         if (!platform::read_file(opt.tape, bytes)) {
@@ -149,7 +148,7 @@ int run(const Options& opt, GLFWwindow* window) {
         ImGui::Render();
         app.render(false);  // (after a swap the back buffer must be drawn again)
         if (frames_left > 0 && !app.has_background_work() && --frames_left == 0) {
-            const int status = write_outputs(opt, window, app);
+            const int status = write_outputs(opt, window, app.automation());
             glfwSwapBuffers(window);
             return status;
         }

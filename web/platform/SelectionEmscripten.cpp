@@ -6,7 +6,7 @@
 
 namespace essi::viewer::platform {
 
-void selection_changed(std::uint32_t line, long long motion) {
+void Platform::selection_changed(std::uint32_t line, long long motion) {
     EM_ASM({ window.essikitSelected && window.essikitSelected($0, $1); }, line, static_cast<double>(motion));
 }
 

@@ -3,6 +3,6 @@
 
 namespace essi::viewer::platform {
 
-void selection_changed(std::uint32_t, long long) {}
+void Platform::selection_changed(std::uint32_t, long long) {}
 
 }  // namespace essi::viewer::platform

@@ -2,7 +2,6 @@
 // browser's languages.
 #include <emscripten.h>
 
-#include <cstdlib>
 #include <algorithm>
 #include <cstring>
 #include <string>
@@ -11,7 +10,7 @@
 
 namespace essi::viewer::platform {
 
-std::optional<std::string> load_text_setting(const char* name) {
+std::optional<std::string> Platform::load_setting(const char* name) {
     // Its length first (-1: none; a page without storage, e.g. a private window that refuses it, has none), then
     // its bytes into a string of that length.
     const int len = EM_ASM_INT({
@@ -34,7 +33,7 @@ std::optional<std::string> load_text_setting(const char* name) {
     return value;
 }
 
-void save_text_setting(const char* name, const std::string& value) {
+void Platform::save_setting(const char* name, const std::string& value) {
     EM_ASM({
         try {
             window.localStorage.setItem('essikit.' + UTF8ToString($0), UTF8ToString($1));
@@ -43,16 +42,8 @@ void save_text_setting(const char* name, const std::string& value) {
     }, name, value.c_str());
 }
 
-std::optional<int> load_setting(const char* name) {
-    const auto text = load_text_setting(name);
-    if (!text) return std::nullopt;
-    return std::atoi(text->c_str());
-}
-
-void save_setting(const char* name, int value) { save_text_setting(name, std::to_string(value)); }
-
 // navigator.languages in the user's order (else navigator.language): the first one essikit has.
-Lang system_language() {
+Lang Platform::system_language() {
     const int len = EM_ASM_INT({
         const tags = (navigator.languages && navigator.languages.length) ? navigator.languages : [navigator.language || ''];
         return lengthBytesUTF8(tags.join(' '));
@@ -72,7 +63,7 @@ Lang system_language() {
     return Lang::En;
 }
 
-void show_language(Lang lang) {
+void Platform::show_language(Lang lang) {
     // (no commas inside the JavaScript: the EM_ASM macro would split its argument there)
     EM_ASM({
         document.documentElement.lang = UTF8ToString($0);

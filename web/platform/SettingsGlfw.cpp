@@ -31,22 +31,14 @@ std::map<std::string, std::string> read_all() {
 
 }  // namespace
 
-std::optional<std::string> load_text_setting(const char* name) {
+std::optional<std::string> Platform::load_setting(const char* name) {
     const auto all = read_all();
     const auto it = all.find(name);
     if (it == all.end()) return std::nullopt;
     return it->second;
 }
 
-std::optional<int> load_setting(const char* name) {
-    const auto text = load_text_setting(name);
-    if (!text) return std::nullopt;
-    return std::atoi(text->c_str());
-}
-
-void save_setting(const char* name, int value) { save_text_setting(name, std::to_string(value)); }
-
-void save_text_setting(const char* name, const std::string& text) {
+void Platform::save_setting(const char* name, const std::string& text) {
     const std::filesystem::path file = settings_file();
     if (file.empty()) return;
     std::string value = text;
@@ -61,10 +53,10 @@ void save_text_setting(const char* name, const std::string& text) {
 }
 
 // The environment's (LC_ALL, LC_MESSAGES, LANG); essi_viewer --lang sets the language after this (not kept).
-Lang system_language() {
+Lang Platform::system_language() {
     return lang_from_environment(std::getenv("LC_ALL"), std::getenv("LC_MESSAGES"), std::getenv("LANG"));
 }
 
-void show_language(Lang) {}
+void Platform::show_language(Lang) {}
 
 }  // namespace essi::viewer::platform

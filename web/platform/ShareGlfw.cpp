@@ -1,14 +1,13 @@
 // Desktop share links: not made here (the link opens the browser viewer, which compresses the tape with the
 // browser's CompressionStream).
-#include "app/App.hpp"
 #include "platform/Platform.hpp"
 
 namespace essi::viewer::platform {
 
-bool has_share_links() { return false; }
+bool Platform::has_share_links() const { return false; }
 
-void share(App& app, const std::string&, std::string_view, const std::string&) {
-    app.notify(Msg::UiShareBrowserOnly);
+void Platform::share(const std::string&, std::string_view, const std::string&) {
+    notify(Msg::UiShareBrowserOnly);
 }
 
 }  // namespace essi::viewer::platform

@@ -8,13 +8,10 @@
 
 #include "essi_cjk_seed.hpp"
 #include "essi_ui_font.hpp"
-#include "platform/Platform.hpp"
 
 namespace essi::viewer {
 
 namespace {
-
-UiFonts* g_fonts = nullptr;
 
 // What the atlas holds from the start: Latin-1 and the signs the UI's texts use in the three languages (the figure
 // space that aligns numbers, dashes, quotes, ellipsis, bullet, per mille, euro, arrows, minus, <= >= != ~, diameter,
@@ -63,22 +60,12 @@ void each_char(std::string_view utf8, Fn fn) {
 
 }  // namespace
 
-UiFonts& ui_fonts() {
-    if (g_fonts != nullptr) return *g_fonts;
-    static UiFonts fallback;  // (only without an App: nothing draws with it; it is g_fonts until an App makes its own)
-    return fallback;
-}
-
-UiFonts::UiFonts() {
-    g_fonts = this;  // (the last made is the viewer's: App's; ui_fonts() falls back to its own)
+UiFonts::UiFonts(CjkFontSource& cjk_source) : cjk_source_(cjk_source) {
     for (const unsigned c : {0u, 0xFFFDu}) asked_.set(c);
-    if (!platform::has_cjk_font()) cjk_ = Cjk::Unavailable;
+    if (!cjk_source_.has_cjk_font()) cjk_ = Cjk::Unavailable;
 }
 
-UiFonts::~UiFonts() {
-    if (g_fonts == this) g_fonts = nullptr;
-    std::free(cjk_data_);
-}
+UiFonts::~UiFonts() { std::free(cjk_data_); }
 
 const char* UiFonts::cjk_name(Cjk c) {
     switch (c) {
@@ -161,7 +148,7 @@ bool UiFonts::update(float pixel_ratio) {
         if (cjk_ == Cjk::None) {
             cjk_ = Cjk::Loading;
             ++cjk_loads_;
-            platform::load_cjk_font(*this);  // (the desktop reads it at once: cjk_ is Loaded or Failed after it)
+            cjk_source_.load_cjk_font(*this);  // (the desktop reads it at once: cjk_ is Loaded or Failed after it)
         }
         if (cjk_ == Cjk::Loaded) rebuild = true;
         if (cjk_ == Cjk::Failed || cjk_ == Cjk::Unavailable) cjk_dirty_ = false;  // (they stay U+FFFD)

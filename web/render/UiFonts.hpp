@@ -28,11 +28,25 @@
 
 namespace essi::viewer {
 
+class UiFonts;
+
+// Where the CJK font comes from (the platform: web/platform/Fonts*.cpp).
+class CjkFontSource {
+public:
+    virtual ~CjkFontSource() = default;
+    // This build has a CJK font to load (scripts/setup installs fonts-wqy-microhei).
+    [[nodiscard]] virtual bool has_cjk_font() const = 0;
+    // Loads it and hands its bytes to fonts.cjk_loaded (null when it cannot be had): the browser fetches
+    // essi_cjk.ttc from the page's folder and calls back later, between frames; the desktop reads the file the build
+    // found (ESSI_CJK_FONT; the environment's ESSI_CJK_FONT overrides it) before it returns.
+    virtual void load_cjk_font(UiFonts& fonts) = 0;
+};
+
 class UiFonts {
 public:
     static constexpr float kCssPixels = 13;  // the font's size in CSS pixels (ImGui's default font had 13)
 
-    UiFonts();
+    explicit UiFonts(CjkFontSource& cjk_source);
     ~UiFonts();
     UiFonts(const UiFonts&) = delete;
     UiFonts& operator=(const UiFonts&) = delete;
@@ -76,12 +90,13 @@ public:
     [[nodiscard]] bool pending() const { return main_dirty_ || cjk_dirty_; }
 
     // The CJK font's bytes have arrived (malloc'ed, owned from now on; null when it could not be read). Called by
-    // the platform (platform::load_cjk_font).
+    // the platform (CjkFontSource::load_cjk_font).
     void cjk_loaded(unsigned char* data, std::size_t size);
 
 private:
     void build(float pixel_ratio);
 
+    CjkFontSource& cjk_source_;
     float ratio_ = 0, pixel_size_ = 0;
     bool built_ = false, main_dirty_ = false, cjk_dirty_ = false;
     std::bitset<0x10000> asked_;            // characters looked at: in the atlas, asked for, or missing
@@ -94,8 +109,5 @@ private:
     int builds_ = 0, cjk_loads_ = 0;
     std::bitset<3> languages_;              // require_language done for these (by Lang)
 };
-
-// The viewer's fonts (App's), for code with no App at hand: ui_fonts().require_glyphs(text).
-UiFonts& ui_fonts();
 
 }  // namespace essi::viewer

@@ -101,6 +101,7 @@ enum class DiagCode : std::uint16_t {
     N612_ContoursOverlap = 612,       // two contours of unknown role overlap: a collision if both are parts
     N613_PlateTooCrowded = 613,       // contours piled over each other: not every pair of them was compared
     N614_PlateSplit = 614,            // a plate too large to analyse whole: analysed in parts (kPlanMaxPlateMotions)
+    N615_CutTooLong = 615,            // a cut of more points than the cut plan holds (kPlanMaxPlatePoints): left out
 };
 
 // Another place a diagnostic concerns: the other contour of a collision, the hole cut after its part, the block

@@ -1,9 +1,9 @@
 // Two revisions of a tape compared (`essi diff A B`, docs/cli.md): what they cut, contour by contour, not line by
 // line, so that renumbered lines, a part cut in another order or moved on the plate read as what they are.
 //
-// A contour is one cut (or one mark): the motions from the moment a tool comes on to the moment it goes off. Two
-// contours have the same shape when their motions, relative to their start, are the same within kDiffToleranceMm
-// (line ends, arc centres and directions; parabolas by their ends and lengths). Matching, in this order:
+// A contour is one cut or one mark of one head (essi/contour.hpp, docs/semantics.md §9). Two contours have the
+// same shape when their motions, relative to their start, are the same within kDiffToleranceMm (line ends, arc
+// centres and directions; parabolas by their ends and lengths). Matching, in this order:
 //   same      the same shape at the same place (each of A's matched once, in tape order);
 //   moved     the same shape at another place (the nearest one left), with its offset, when it is no farther
 //             than the contour's own size or nothing overlaps the contour;
@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "essi/contour.hpp"
 #include "essi/dialect.hpp"
 #include "essi/geom.hpp"
 #include "essi/report.hpp"
@@ -26,13 +27,12 @@ namespace essi {
 // rounding of a conversion between 0.1 mm and 0.01 mm units.
 constexpr double kDiffToleranceMm = 1e-3;
 
-struct Contour {
-    std::uint32_t first_line = 0, last_line = 0;  // the source lines of its first and last motion
-    MotionKind kind = MotionKind::Cut;            // Cut or Mark
-    Point start;                                   // where the tool came on (mm, program coordinates)
+// A contour as a diff compares it: where it lies, its length and shape.
+struct DiffContour : Contour {
+    Point start;  // where the tool came on: its first motion's start (mm, program coordinates)
+    std::size_t motions = 0;
     Box box;
     double length_mm = 0;
-    std::size_t motions = 0;
     std::vector<double> shape;  // the motions relative to the start: x, y of each end, arc centre, sweep
     std::vector<MotionRecord> path;  // its motions, when asked for (tape_contours' keep_paths: to draw them)
 };
@@ -40,7 +40,7 @@ struct Contour {
 // The contours of a tape as `setup` reads it (its check's result beside them).
 struct TapeContours {
     CheckResult check;
-    std::vector<Contour> contours;
+    std::vector<DiffContour> contours;
 };
 [[nodiscard]] TapeContours tape_contours(std::string_view bytes, const TapeSetup& setup, bool keep_paths = false);
 
@@ -58,7 +58,7 @@ struct TapeDiff {
     [[nodiscard]] std::size_t count(ContourChange c) const;
     [[nodiscard]] bool same() const { return count(ContourChange::Same) == contours.size(); }
 };
-[[nodiscard]] TapeDiff diff_contours(const std::vector<Contour>& a, const std::vector<Contour>& b);
+[[nodiscard]] TapeDiff diff_contours(const std::vector<DiffContour>& a, const std::vector<DiffContour>& b);
 
 // One side of a comparison: the name it is shown under and its contours.
 struct DiffSide {

@@ -124,16 +124,22 @@ namespace geom_detail {
 // Exact bounding box of a motion (arc and parabola extremes included).
 [[nodiscard]] Box bounding_box(const MotionRecord& m);
 
-// Appends points approximating the motion within `chord_tolerance_mm` to `out`. The first point
-// (the start) is appended only when `include_start`; the last point appended is exactly `m.end`.
-void flatten(const MotionRecord& m, double chord_tolerance_mm, std::vector<Point>& out, bool include_start = true);
+// A motion is flattened into at most this many chords (by default), whatever the tolerance.
+constexpr int kMaxFlattenSegments = 4096;
+
+// How many chords flatten() makes of the motion: enough to stay within `chord_tolerance_mm`, at most `max_segments`.
+[[nodiscard]] int flatten_segments(const MotionRecord& m, double chord_tolerance_mm, int max_segments);
+
+// Appends points approximating the motion within `chord_tolerance_mm` (in at most `max_segments` chords) to `out`.
+// The first point (the start) is appended only when `include_start`; the last point appended is exactly `m.end`.
+void flatten(const MotionRecord& m, double chord_tolerance_mm, std::vector<Point>& out, bool include_start = true,
+             int max_segments = kMaxFlattenSegments);
 
 // Point at the given fraction [0,1] of the motion's parameter (for playback and selection).
 [[nodiscard]] Point point_at(const MotionRecord& m, double fraction);
 
 // Tolerances that are not profile settings.
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kMaxFlattenSegments = 4096;   // per motion, whatever the tolerance
 constexpr double kMinChordTolerance = 1e-6; // mm
 
 }  // namespace essi

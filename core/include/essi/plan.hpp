@@ -1,9 +1,9 @@
 // Phase 6, plan: the cut plan checked, not only the syntax (docs/diagnostics.md, codes 6xx).
 //
-// A cut runs from the pierce (a cutting tool comes on) to the torch going off. It holds a closed loop when its path
-// comes back to a point it passed: the loop is the contour; what comes before it is the lead-in, what comes after
-// it the lead-out. A cut that comes back within closure_gap_mm but not within the arc tolerance is left open by a
-// small gap (W601).
+// A cut is a cut contour (essi/contour.hpp): from the pierce to the torch going off. It holds a closed loop when
+// its path comes back to a point it passed; what comes before the loop is the lead-in, what comes after it the
+// lead-out. A cut that comes back within closure_gap_mm but not within the arc tolerance is left open by a small
+// gap (W601).
 //
 // Roles by nesting, plate by plate: a contour inside another is a hole of it (odd depth), a contour inside a hole is
 // a part again (even depth); a contour that holds holes is a part. A lone contour (nothing inside it, inside
@@ -26,6 +26,7 @@
 #include <string_view>
 #include <vector>
 
+#include "essi/contour.hpp"
 #include "essi/diagnostics.hpp"
 #include "essi/geom.hpp"
 #include "essi/motion.hpp"
@@ -39,6 +40,12 @@ constexpr double kPlanChordToleranceMm = 0.05;
 // An arc is at most this many chords for those tests (a radius up to about 10 m keeps kPlanChordToleranceMm; a
 // larger one is coarser: a tape's bounds, not a plate's, make such arcs).
 constexpr int kPlanMaxArcChords = 1024;
+// A collision's overlap polygons (E605, N612) are at most this many points each: a longer contour's outline keeps
+// this many of its points, evenly spread.
+constexpr std::size_t kPlanMaxOverlapPoints = 256;
+// The overlap polygons of a tape's collisions hold at most this many points together: the collisions after that
+// (in the report's order) have none.
+constexpr std::size_t kPlanMaxOverlapPointsPerTape = std::size_t{1} << 16;
 // Two programmed contours closer than this touch even without compensation (mm).
 constexpr double kPlanTouchToleranceMm = 0.01;
 // Two paths whose points all lie this close are the same path (mm).
@@ -53,6 +60,10 @@ constexpr std::size_t kPlanLeadMotions = 4;
 // part; N614 says where): the memory a plate takes is bounded whatever the tape (about 160 bytes a motion while it
 // is analysed), at the price of not comparing cuts of different parts. A real plate has far fewer.
 constexpr std::size_t kPlanMaxPlateMotions = std::size_t{1} << 17;
+// A plate is also analysed in parts of at most this many points of its contours flattened (a line is one point, an
+// arc or a parabola up to kPlanMaxArcChords): big arcs make long polygons. A single cut of more points than this
+// is left out of the cut plan's tests (N615): what a plate holds while it is analysed stays bounded.
+constexpr std::size_t kPlanMaxPlatePoints = std::size_t{1} << 19;
 
 enum class ContourRole : std::uint8_t {
     Part,     // holds holes, or lies inside a hole (even depth >= 2)
@@ -63,15 +74,21 @@ enum class ContourRole : std::uint8_t {
 };
 [[nodiscard]] const char* contour_role_name(ContourRole r);  // "part", "hole", "lone-part", "lone-hole", "lone"
 
-// One contour as the analysis found it (plan_contours, for tests and tools).
-struct PlanContour {
-    std::uint32_t cut_first_line = 0, cut_last_line = 0;    // the whole cut: pierce to torch off
-    std::uint32_t loop_first_line = 0, loop_last_line = 0;  // the loop's motions
+// A cut contour as the analysis found it (plan_contours, for tests and tools): the Contour (essi/contour.hpp) of
+// the whole cut, pierce to torch off, with its loop and role.
+struct PlanContour : Contour {
+    // Its loop: the contour's motions [loop_begin, loop_end) (0: its first; contour_motions), from loop_start
+    // round to loop_start again (within the arc tolerance). loop_start is the first one's start or a point on it
+    // (where the path closes on a line, or at a parabola's chord); the loop ends at the last one's end or at a
+    // point on it (a parabola's chord). Their lines:
+    std::uint32_t loop_begin = 0, loop_end = 0;
+    Point loop_start;
+    std::uint32_t loop_first_line = 0, loop_last_line = 0;
     int plate = 1;
-    int parent = -1;  // index (in the plate's contours, in cutting order) of the contour it lies in directly
+    int parent = -1;  // index (in plan_contours' list, or CutPlan::contours()) of the contour it lies in directly
     int depth = 0;
     ContourRole role = ContourRole::Lone;
-    double area_mm2 = 0;  // signed: > 0 counter-clockwise
+    double area_mm2 = 0;  // signed: > 0 counter-clockwise (parabolas by their chords)
     KerfSide kerf = KerfSide::Off;
     bool lead_in = false;
 };
@@ -89,15 +106,6 @@ public:
     virtual void wait() = 0;
 };
 
-// The motions of the stream a plan was fed, by their index (0: the first one given to on_motion or on_line), for a
-// caller that keeps them anyway (the viewer's document): the plan then keeps only where its cuts are in the stream,
-// and reads their motions back when it analyses a plate (CutPlan::defer_plates).
-class MotionStore {
-public:
-    virtual ~MotionStore() = default;
-    [[nodiscard]] virtual MotionRecord motion(std::size_t index) const = 0;
-};
-
 // The cut plan of one tape, fed the motion stream (a MotionSink): diagnostics come out when a plate ends and at
 // finish(). TapeChecker runs one on every tape it checks.
 class CutPlan final : public MotionSink {
@@ -113,8 +121,9 @@ public:
     // Plates are analysed by `runner` from now on (null: at once). It must outlive finish().
     void set_runner(PlateRunner* runner);
     // Plates are not analysed when they end but kept as where their cuts are in the stream (a few bytes a cut, not
-    // their motions), to be analysed later from `store` (analyse_deferred_plate, or finish). Before the first
-    // motion; `store` must hold every motion given to this plan by then and outlive it.
+    // their motions), to be analysed later from `store`, the motions of the stream this plan was fed
+    // (analyse_deferred_plate, or finish). Before the first motion; `store` must hold every motion given to this
+    // plan by then and outlive it.
     void defer_plates(const MotionStore* store);
     // After the last motion: the last plate ended (analysed, handed to the runner, or kept when deferred).
     void end_input();

@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "essi/diagnostics.hpp"
 #include "essi/report.hpp"
@@ -21,9 +22,26 @@ namespace essi {
 //  25 motions, time 0:01:05" (no newline)
 [[nodiscard]] std::string file_stats_line(const FileReport& file, Lang lang = Lang::En);
 
+// "ok", "ok, 1 warning", "2 errors, 1 warning": the verdict on a checked tape.
+[[nodiscard]] std::string verdict_text(const CheckResult& result, Lang lang = Lang::En);
+
 // "2 files checked (profile iso6582): 1 ok, 1 with errors; 3 errors, 1 warning" (no newline)
 [[nodiscard]] std::string summary_line(std::span<const FileReport> files, std::string_view profile_name,
                                        Lang lang = Lang::En);
+
+// One statistic as the reports write it: its label and its value, a number with its unit (the same in every
+// language), or, when `words` is set, a message of the catalogue in the reader's language ("none"; "cutting 1.2 s,
+// marking 0.0 s, ...").
+struct StatsRow {
+    Msg key;
+    std::string value;
+    Message words = {};
+    [[nodiscard]] std::string text(Lang lang) const { return words.msg == Msg::None ? value : words.text(lang); }
+};
+// The statistics of a tape in the order `essi stats` lists them (after the file): lengths, pierces, blocks, motions,
+// time, the machine time, cost and electrodes (with the profile's accel_mm_s2, costs, consumables), cut box, end
+// position. The job sheet (essi/job_sheet.hpp) shows the same rows.
+[[nodiscard]] std::vector<StatsRow> stats_rows(const Stats& stats);
 
 // The aligned block of `essi stats` for one file, every line ending in a newline.
 [[nodiscard]] std::string stats_block(const FileReport& file, Lang lang = Lang::En);

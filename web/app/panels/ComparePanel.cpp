@@ -2,7 +2,6 @@
 // click from its contour, and B's contours drawn over the tape in their own colour.
 #include <algorithm>
 
-#include "app/App.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
 
@@ -27,11 +26,11 @@ void polyline(ImDrawList* dl, const View& view, Point o, const std::vector<Point
 
 }  // namespace
 
-void compare_overlay(ImDrawList* dl, App& app) {
-    const Compare* c = app.compare();
+void Panels::compare_overlay(ImDrawList* dl) {
+    const Compare* c = p_.compare.result();
     if (!c) return;
-    const View& view = app.view();
-    const Point o = app.origin();
+    const View& view = p_.navigation.view();
+    const Point o = p_.navigation.origin();
     std::size_t points = 0;
     for (const ContourDiff& d : c->diff.contours) {
         if (d.change != ContourChange::Same && d.a >= 0) polyline(dl, view, o, c->a_lines[static_cast<std::size_t>(d.a)], kAColor, 3.5f);
@@ -42,15 +41,15 @@ void compare_overlay(ImDrawList* dl, App& app) {
     }
 }
 
-void compare_window(App& app) {
-    const Compare* c = app.compare();
+void Panels::compare_window() {
+    const Compare* c = p_.compare.result();
     if (!c) return;
-    const Rect& a = app.view().area;
+    const Rect& a = p_.navigation.view().area;
     ImGui::SetNextWindowPos(ImVec2(a.x + a.w - 8, a.y + 8), ImGuiCond_Appearing, ImVec2(1.f, 0.f));
     ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 16, 420.f), 0), ImGuiCond_Appearing);
     bool open = true;
     ImGui::Begin(tr_id(Msg::UiCompareTitle, "Compare").c_str(), &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
-    const Document* doc = app.document();
+    const Document* doc = p_.session.document();
     ImGui::TextWrapped("A: %s  B: %s", doc ? doc->name.c_str() : "-", c->name.c_str());
     ImGui::TextColored(ImVec4(0.31f, 0.86f, 1, 1), "%s", tr(Msg::UiBContours));
     ImGui::SameLine();
@@ -65,13 +64,13 @@ void compare_window(App& app) {
         if (d.change == ContourChange::Same) continue;
         ImGui::PushID(row++);
         if (ImGui::Selectable(difference_text(c->a, c->b, d, ui_lang()).c_str()))  // (essi diff's words)
-            app.show_contour(static_cast<std::size_t>(d.a >= 0 ? d.a : d.b), d.a < 0);
+            p_.compare.show_contour(static_cast<std::size_t>(d.a >= 0 ? d.a : d.b), d.a < 0);
         ImGui::PopID();
     }
     if (row == 0) ImGui::TextColored(to_vec4(kOkColor), "%s", tr(Msg::UiSameCut));
     ImGui::EndChild();
     ImGui::End();
-    if (!open) app.end_compare();
+    if (!open) p_.compare.end();
 }
 
 }  // namespace essi::viewer::panels

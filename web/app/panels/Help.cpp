@@ -1,5 +1,5 @@
 // The Help window (H, ? or F1): the shortcuts and the colours.
-#include "app/App.hpp"
+#include "app/Describe.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
 
@@ -54,10 +54,10 @@ void colours() {
 
 }  // namespace
 
-void help(App& app) {
-    const Rect& a = app.view().area;
+void Panels::help() {
+    const Rect& a = p_.navigation.view().area;
     ImGui::SetNextWindowPos(ImVec2(a.x + a.w / 2, a.y + 40), ImGuiCond_Appearing, ImVec2(0.5f, 0));
-    ImGui::Begin(tr_id(Msg::UiHelpTitle, "Help").c_str(), &app.ui().help, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+    ImGui::Begin(tr_id(Msg::UiHelpTitle, "Help").c_str(), &p_.ui.help, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
         for (const auto& r : kShortcuts) {
             ImGui::TableNextRow();

@@ -2,10 +2,8 @@
 // a problem with the whole file, and the share link.
 #include <algorithm>
 
-#include "app/App.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
-#include "platform/Platform.hpp"
 
 namespace essi::viewer::panels {
 
@@ -16,8 +14,7 @@ constexpr ImGuiWindowFlags kMessageFlags =
 constexpr std::size_t kShareUrlShown = 600;  // characters of a share link shown
 constexpr std::size_t kExamplesPerRow = 3;    // buttons a row on the start screen
 
-void loading(const App& app, const Rect& a, ImVec2 centre, bool tape_drawn) {
-    const LoadController& load = app.loads();
+void loading(const LoadController& load, const Rect& a, ImVec2 centre, bool tape_drawn) {
     // Over the middle of the drawing area; at its top once the level of detail shows the tape.
     if (tape_drawn) ImGui::SetNextWindowPos(ImVec2(centre.x, a.y + 8), ImGuiCond_Always, ImVec2(0.5f, 0.f));
     else ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
@@ -30,18 +27,17 @@ void loading(const App& app, const Rect& a, ImVec2 centre, bool tape_drawn) {
 
 // A zoomed-in view of a big tape is drawn over several frames (Renderer::kSegmentsPerFrame), after its segments
 // are made at the zoom's tolerance.
-void drawing(const App& app, const Rect& a, ImVec2 centre) {
-    const LoadController& load = app.loads();
+void drawing(const LoadController& load, const Renderer& renderer, const Rect& a, ImVec2 centre) {
     ImGui::SetNextWindowPos(ImVec2(centre.x, a.y + 8), ImGuiCond_Always, ImVec2(0.5f, 0.f));
     ImGui::Begin("##drawing", nullptr, kMessageFlags | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
     if (load.remaking())
         ImGui::TextUnformatted(tr(Msg::UiDrawingRemake, {fmt("%.0f", 100.0 * stepped(load.building()->progress()))}).c_str());
     else
-        ImGui::TextUnformatted(tr(Msg::UiDrawingPending, {fmt("%.1f", app.renderer().stats().pending_segments / 1e6)}).c_str());
+        ImGui::TextUnformatted(tr(Msg::UiDrawingPending, {fmt("%.1f", renderer.stats().pending_segments / 1e6)}).c_str());
     ImGui::End();
 }
 
-void welcome(App& app, ImVec2 centre) {
+void welcome(const Panels::Parts& p, ImVec2 centre) {
     ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::Begin("##welcome", nullptr, kMessageFlags | ImGuiWindowFlags_AlwaysAutoResize);
     ImGui::TextUnformatted(tr(Msg::UiWelcomeTitle));
@@ -49,21 +45,21 @@ void welcome(App& app, ImVec2 centre) {
     ImGui::TextUnformatted(tr(Msg::UiWelcomeDrop));
     ImGui::TextUnformatted(tr(Msg::UiWelcomeLocal));
     ImGui::TextDisabled("%s", tr(Msg::UiWelcomeHelp));
-    const UiState& ui = app.ui();
+    const UiState& ui = p.ui;
     if (!ui.examples.empty()) {
         ImGui::Spacing();
         ImGui::TextUnformatted(tr(Msg::UiWelcomeExamples));
         for (std::size_t k = 0; k < ui.examples.size(); ++k) {
             if (k % kExamplesPerRow != 0) ImGui::SameLine();
-            if (ImGui::SmallButton(ui.examples[k].c_str())) platform::open_example(app, ui.examples[k]);
+            if (ImGui::SmallButton(ui.examples[k].c_str())) p.platform.open_example(ui.examples[k]);
         }
     }
-    if (!ui.recent.empty()) {
+    if (!p.session.recent().empty()) {
         ImGui::Spacing();
         ImGui::TextDisabled("%s", tr(Msg::UiWelcomeRecent));
-        for (const std::string& name : ui.recent) ImGui::BulletText("%s", name.c_str());
+        for (const std::string& name : p.session.recent()) ImGui::BulletText("%s", name.c_str());
     }
-    if (!app.graphics_ok()) ImGui::TextColored(severity_color(Severity::Error), "%s", tr(Msg::UiGraphicsError, {program_error()}).c_str());
+    if (!p.graphics_ok) ImGui::TextColored(severity_color(Severity::Error), "%s", tr(Msg::UiGraphicsError, {program_error()}).c_str());
     ImGui::End();
 }
 
@@ -78,51 +74,49 @@ void problem(const Document& doc, const std::string& banner, const Rect& a, ImVe
     ImGui::End();
 }
 
-void share_popup(App& app, const Rect& a, ImVec2 centre) {
-    UiState& ui = app.ui();
+void share_popup(UiState& ui, const ShareLinks& shares, PlatformServices& platform, const Rect& a, ImVec2 centre) {
     ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 40, 560.f), 0));
     ImGui::Begin(tr_id(Msg::UiShareLink, "Share link").c_str(), &ui.share_popup, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
-    const std::string url = app.share_text();  // (the link, or why there is none)
+    const std::string url = shares.text();  // (the link, or why there is none)
     ImGui::TextWrapped("%s", url.size() > kShareUrlShown ? (url.substr(0, kShareUrlShown) + " ...").c_str() : url.c_str());
-    if (ImGui::Button(tr_id(Msg::UiCopyAgain, "copy again").c_str())) platform::copy_text(url);
+    if (ImGui::Button(tr_id(Msg::UiCopyAgain, "copy again").c_str())) platform.copy_text(url);
     ImGui::SameLine();
     if (ImGui::Button(tr_id(Msg::UiClose, "close").c_str())) ui.share_popup = false;
     ImGui::End();
 }
 
 // A share link that could not be opened: why, and what to do; over the start screen until closed or a tape loads.
-void link_problem(UiState& ui, const Rect& a, ImVec2 centre) {
+void link_problem(Session& session, const Rect& a, ImVec2 centre) {
     ImGui::SetNextWindowPos(ImVec2(centre.x, a.y + 24), ImGuiCond_Appearing, ImVec2(0.5f, 0.f));
     ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 40, 560.f), 0));
     bool open = true;
     ImGui::Begin(tr_id(Msg::UiLinkProblemTitle, "Share link problem").c_str(), &open,
                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
     ImGui::PushStyleColor(ImGuiCol_Text, severity_color(Severity::Error));
-    ImGui::TextWrapped("%s", ui.link_problem.text().c_str());
+    ImGui::TextWrapped("%s", session.link_problem().text().c_str());
     ImGui::PopStyleColor();
     ImGui::TextWrapped("%s", tr(Msg::UiLinkAskSender));
     ImGui::End();
-    if (!open) ui.link_problem = {};
+    if (!open) session.close_link_problem();
 }
 
 }  // namespace
 
-void messages(App& app) {
-    const Rect& a = app.view().area;
+void Panels::messages() {
+    const Rect& a = p_.navigation.view().area;
     const ImVec2 centre(a.x + a.w / 2, a.y + a.h / 2);
-    const Document* doc = app.document();
-    const LoadController& load = app.loads();
-    UiState& ui = app.ui();
+    const Document* doc = p_.session.document();
+    const LoadController& load = p_.load;
     if (load.loading()) {
         // (a tape loaded at once has none: it is read and drawn before the next frame's panels)
-        if (!load.at_once()) loading(app, a, centre, app.tape_drawn());
-    } else if (doc && (app.renderer().filling() || load.remaking())) drawing(app, a, centre);
-    else if (!doc) welcome(app, centre);
-    else if (ui.banner != Msg::None) problem(*doc, app.banner_text(), a, centre);
-    if (ui.share_popup) share_popup(app, a, centre);
-    if (!ui.link_problem.empty()) link_problem(ui, a, centre);
-    compare_window(app);
+        if (!load.at_once()) loading(load, a, centre, p_.scene.tape_drawn());
+    } else if (doc && (p_.renderer.filling() || load.remaking())) drawing(load, p_.renderer, a, centre);
+    else if (!doc) welcome(p_, centre);
+    else if (p_.session.banner() != Msg::None) problem(*doc, p_.session.banner_text(), a, centre);
+    if (p_.ui.share_popup) share_popup(p_.ui, p_.shares, p_.platform, a, centre);
+    if (!p_.session.link_problem().empty()) link_problem(p_.session, a, centre);
+    compare_window();
 }
 
 }  // namespace essi::viewer::panels

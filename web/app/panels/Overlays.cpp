@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/App.hpp"
-#include "essi/placement.hpp"
+#include "app/Input.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
 #include "essi/geom.hpp"
+#include "essi/placement.hpp"
 
 namespace essi::viewer::panels {
 
@@ -149,21 +149,21 @@ void table_and_plate(ImDrawList* dl, const Document& doc, const View& view, Poin
 
 }  // namespace
 
-void overlays(App& app) {
+void Panels::overlays() {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
-    const View& view = app.view();
+    const View& view = p_.navigation.view();
     const Rect& a = view.area;
     dl->PushClipRect(ImVec2(a.x, a.y), ImVec2(a.x + a.w, a.y + a.h), true);
-    const Document* doc = app.document();
-    const Point o = app.origin();
-    const Coordinates cs = app.coordinates();
-    if (app.layers().grid) grid_labels(dl, view, cs, o, app.renderer().theme());
-    if (doc && app.layers().table) table_and_plate(dl, *doc, view, o);
-    compare_overlay(dl, app);
-    problem_marks(dl, app);
-    const Selection& sel = app.selection();
+    const Document* doc = p_.session.document();
+    const Point o = p_.navigation.origin();
+    const Coordinates cs = p_.navigation.coordinates();
+    if (p_.layers.grid) grid_labels(dl, view, cs, o, p_.renderer.theme());
+    if (doc && p_.layers.table) table_and_plate(dl, *doc, view, o);
+    compare_overlay(dl);
+    problem_marks(dl);
+    const Selection& sel = p_.navigation.selection();
     if (doc && (sel.motion != Selection::npos || sel.line > 0)) selection_arrows(dl, *doc, sel, view);
-    if (app.input().measure.active) measure(dl, doc, app.input().measure, view, cs, o);
+    if (p_.measure.active) measure(dl, doc, p_.measure, view, cs, o);
     dl->PopClipRect();
 }
 

@@ -1,62 +1,40 @@
 // The panels, one file per group: Toolbar.cpp (the buttons along the top), TapePanel.cpp (left: statistics,
 // layers, playback, diagnostics), SourcePanel.cpp (right: the tape's text and the block inspector),
-// Overlays.cpp (over the drawing: grid labels, the selection's direction, the measure), Messages.cpp (loading,
-// drawing, welcome, problem and share windows) and Help.cpp. They read and change the App's parts.
+// Overlays.cpp (over the drawing: grid labels, the selection's direction, the measure; ProblemMarks.cpp the
+// diagnostics' marks, ComparePanel.cpp compare mode), Messages.cpp (loading, drawing, welcome, problem and share
+// windows) and Help.cpp. They read and change the parts App gives them.
 #pragma once
 
 #include <imgui.h>
 
-#include "app/View.hpp"
-#include "render/Palette.hpp"
-
-namespace essi::viewer {
-class App;
-}
+#include "app/ViewerParts.hpp"
+#include "app/panels/Layout.hpp"
 
 namespace essi::viewer::panels {
 
-inline constexpr float kToolbarHeight = 38;
-inline constexpr float kLeftWidth = 310;
-inline constexpr float kRightWidth = 470;
-// The toolbar and the side panels draw no background: the renderer clears the window in their colour (ImGui's
-// window background over the drawing's, as they looked), which saves SwiftShader filling a million pixels a frame.
-inline constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                                                ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoBackground;
+class Panels {
+public:
+    using Parts = ViewerParts;
+    explicit Panels(const Parts& parts) : p_(parts) {}
 
-inline constexpr float kMinPanelWidth = 160;  // a side panel is no narrower (when shown)
+    // A frame's panels (between ImGui::NewFrame and ImGui::Render).
+    void draw();
 
-// The side panels as the user set them (docs/viewer.md, "Layout"): widths dragged at their inner edge, shown or
-// hidden; kept across sessions (setting "layout").
-struct PanelLayout {
-    float left = kLeftWidth, right = kRightWidth;
-    bool left_shown = true, right_shown = true;
-    friend bool operator==(const PanelLayout&, const PanelLayout&) = default;
+private:
+    void toolbar();
+    void tape_panel();
+    void source_panel();
+    void overlays();
+    // The diagnostics' marks (ProblemMarks.cpp): the hovered mark and its tooltip, the active marks' rings, the
+    // collisions' overlapping areas; drawn by overlays().
+    void problem_marks(ImDrawList* dl);
+    void messages();
+    // Compare mode (ComparePanel.cpp): the differences' window, and B's contours over the drawing.
+    void compare_window();
+    void compare_overlay(ImDrawList* dl);
+    void help();
+
+    Parts p_;
 };
-// The panels' widths in a window `w` wide: the drawing keeps at least half of it (the panels give way in
-// proportion, down to kMinPanelWidth), a hidden panel takes nothing.
-struct PanelWidths {
-    float left = 0, right = 0;
-};
-[[nodiscard]] PanelWidths panel_widths(const PanelLayout& layout, float w);
-// The drawing area of a window of w x h pixels: what the toolbar and the side panels leave.
-[[nodiscard]] Rect drawing_area(float w, float h, const PanelLayout& layout);
-// Begins a side panel's window (`left` or right) at its width, resizable at its inner edge: a drag sets the
-// layout's width (App saves it once the mouse is up). False when the panel is hidden (nothing to end then).
-bool begin_side_panel(App& app, const char* name, bool left);
-// What the panels looked like with their own background (the colour the window is cleared in around the drawing).
-[[nodiscard]] Rgba panel_color(const Rgba& background);
-
-void toolbar(App& app);
-void tape_panel(App& app);
-void source_panel(App& app);
-void overlays(App& app);
-// The diagnostics' marks (ProblemMarks.cpp): the hovered mark and its tooltip, the active marks' rings, the
-// collisions' overlapping areas; called by overlays().
-void problem_marks(ImDrawList* dl, App& app);
-void messages(App& app);
-// Compare mode (ComparePanel.cpp): the differences' window, and B's contours over the drawing.
-void compare_window(App& app);
-void compare_overlay(ImDrawList* dl, App& app);
-void help(App& app);
 
 }  // namespace essi::viewer::panels

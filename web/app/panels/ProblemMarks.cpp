@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/App.hpp"
 #include "app/Problems.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
@@ -89,25 +88,25 @@ void tooltip(UiFonts& fonts, const Document& doc, const std::vector<std::size_t>
 
 }  // namespace
 
-void problem_marks(ImDrawList* dl, App& app) {
-    UiState& ui = app.ui();
+void Panels::problem_marks(ImDrawList* dl) {
+    UiState& ui = p_.ui;
     ui.hovered_mark = kNoMark;
-    const Document* doc = app.document();
-    if (!doc || doc->diagnostics.empty() || app.loads().loading()) return;
-    const View& view = app.view();
+    const Document* doc = p_.session.document();
+    if (!doc || doc->diagnostics.empty() || p_.load.loading()) return;
+    const View& view = p_.navigation.view();
     for (const Diagnostic& d : doc->diagnostics)
         if (d.overlap.size() > 0) overlap_area(dl, *doc, view, d);
-    const std::uint32_t line = app.selection().line;
+    const std::uint32_t line = p_.navigation.selection().line;
     for (const DiagnosticMark& m : doc->marks)
         if (line > 0 && doc->diagnostics[m.diagnostic].line == line) ring(dl, *doc, view, m, to_u32(kSelectionColor));
     const ImGuiIO& io = ImGui::GetIO();
     const bool over = view.area.contains(io.MousePos.x, io.MousePos.y) && !io.WantCaptureMouse;
-    if (!over || app.input().measure.active || ImGui::IsMouseDown(0)) return;
+    if (!over || p_.measure.active || ImGui::IsMouseDown(0)) return;
     const std::vector<std::size_t> near = marks_near(*doc, view, io.MousePos.x, io.MousePos.y);
     if (near.empty()) return;
     ui.hovered_mark = near.front();
     ring(dl, *doc, view, doc->marks[near.front()], IM_COL32(255, 255, 255, 230));
-    tooltip(app.fonts(), *doc, near);
+    tooltip(p_.fonts, *doc, near);
 }
 
 }  // namespace essi::viewer::panels

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "app/App.hpp"
+#include "app/Describe.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
 #include "essi/text_report.hpp"
@@ -34,18 +34,19 @@ LineDiagnostics diagnostics_of(const Document& d, std::uint32_t line) {
 }
 
 // One row of the source: a selectable line, its number, its text and its first diagnostic's code.
-void source_line(App& app, const Document& d, std::uint32_t line, int digits) {
+void source_line(const Panels::Parts& p, const Document& d, std::uint32_t line, int digits) {
+    Navigation& navigation = p.navigation;
     const LineDiagnostics diags = diagnostics_of(d, line);
     const ImVec2 pos = ImGui::GetCursorScreenPos();
-    if (ImGui::Selectable("##line", line == app.selection().line,
+    if (ImGui::Selectable("##line", line == navigation.selection().line,
                           ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowItemOverlap,
                           ImVec2(0, ImGui::GetTextLineHeight())))
-        app.select_line(line);
+        navigation.select_line(line);
     if (ImGui::BeginPopupContextItem("line menu")) {
-        if (ImGui::Selectable(tr(Msg::UiCopyThisLine))) app.copy(App::CopyWhat::Line, line);
+        if (ImGui::Selectable(tr(Msg::UiCopyThisLine))) p.exports.copy(Exports::CopyWhat::Line, line);
         if (ImGui::Selectable(tr(Msg::UiCopyInspector))) {
-            app.select_line(line, false);
-            app.copy(App::CopyWhat::Inspector);
+            navigation.select_line(line, false);
+            p.exports.copy(Exports::CopyWhat::Inspector);
         }
         ImGui::EndPopup();
     }
@@ -67,7 +68,7 @@ void source_line(App& app, const Document& d, std::uint32_t line, int digits) {
     for (int k = static_cast<int>(number.size()); k < digits; ++k) number.insert(0, "\xE2\x80\x87");
     ImGui::TextColored(diags.any() ? worst : to_vec4(kLineNumberColor), " %s ", number.c_str());
     ImGui::SameLine(0, 4);
-    const std::string text = app.line_text(d, line);
+    const std::string text = p.comments.line_text(d, line);
     ImGui::TextUnformatted(text.c_str());
     if (diags.any()) {
         ImGui::SameLine(0, 12);
@@ -75,14 +76,14 @@ void source_line(App& app, const Document& d, std::uint32_t line, int digits) {
     }
 }
 
-void source(App& app) {
-    const Document* doc = app.document();
+void source(const Panels::Parts& p) {
+    const Document* doc = p.session.document();
     if (!doc) {
         ImGui::TextDisabled("%s", tr(Msg::UiSourceEmpty));
         return;
     }
     const Document& d = *doc;
-    Selection& sel = app.selection();
+    Selection& sel = p.navigation.selection();
     const float lh = ImGui::GetTextLineHeightWithSpacing();
     if (sel.scroll_source && sel.line > 0) {
         const float target = (static_cast<float>(sel.line) - 1) * lh;
@@ -96,15 +97,15 @@ void source(App& app) {
     while (clipper.Step()) {
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
             ImGui::PushID(i);
-            source_line(app, d, static_cast<std::uint32_t>(i + 1), digits);
+            source_line(p, d, static_cast<std::uint32_t>(i + 1), digits);
             ImGui::PopID();
         }
     }
 }
 
-void inspector(App& app) {
-    const Document* doc = app.document();
-    const std::uint32_t line = app.selection().line;
+void inspector(const Panels::Parts& p) {
+    const Document* doc = p.session.document();
+    const std::uint32_t line = p.navigation.selection().line;
     if (!doc || line == 0) {
         hint_wrapped(tr(Msg::UiInspectorEmpty));
         return;
@@ -112,16 +113,16 @@ void inspector(App& app) {
     const Document& d = *doc;
     ImGui::TextUnformatted(tr(Msg::UiLineN, {line}).c_str());
     ImGui::SameLine();
-    if (ImGui::SmallButton(tr_id(Msg::UiCopy, "copy").c_str())) app.copy(App::CopyWhat::Inspector);
+    if (ImGui::SmallButton(tr_id(Msg::UiCopy, "copy").c_str())) p.exports.copy(Exports::CopyWhat::Inspector);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiCopyInspectorTip));
     ImGui::SameLine();
-    ImGui::TextDisabled("%s", app.line_text(d, line, 80).c_str());
+    ImGui::TextDisabled("%s", p.comments.line_text(d, line, 80).c_str());
     ImGui::Separator();
     // The blocks, the motions in their kind's colour, and where the torch goes (kerf compensation: the second
     // position of the line's motions).
-    const std::vector<Document::InspectorLine> lines = d.inspector_lines(line, ui_lang());
-    for (const Document::InspectorLine& l : lines) {
-        using Of = Document::InspectorLine::Of;
+    const std::vector<InspectorLine> lines = inspector_lines(d, line, ui_lang());
+    for (const InspectorLine& l : lines) {
+        using Of = InspectorLine::Of;
         if (l.of != Of::Block)
             ImGui::PushStyleColor(ImGuiCol_Text, opaque(l.of == Of::Torch ? kPathColorTable[kKerfPathKind] : kind_color(l.kind)));
         ImGui::TextWrapped("%s", l.text.c_str());
@@ -139,15 +140,15 @@ void inspector(App& app) {
 
 }  // namespace
 
-void source_panel(App& app) {
-    if (!begin_side_panel(app, tr_id(Msg::UiSourcePanel, "Source").c_str(), false)) return;
+void Panels::source_panel() {
+    if (!begin_side_panel(p_.ui.layout, p_.ui.layout_changed, tr_id(Msg::UiSourcePanel, "Source").c_str(), false)) return;
     // (the inspector a third of a short window at most: the source keeps its lines)
     const float inspector_h = std::min(kInspectorHeight, ImGui::GetWindowHeight() / 3);
     ImGui::BeginChild("source", ImVec2(0, -inspector_h), true, ImGuiWindowFlags_HorizontalScrollbar);
-    source(app);
+    source(p_);
     ImGui::EndChild();
     ImGui::BeginChild("inspector", ImVec2(0, 0), true);
-    inspector(app);
+    inspector(p_);
     ImGui::EndChild();
     ImGui::End();
 }

@@ -2,10 +2,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/App.hpp"
-#include "essi/dialect.hpp"
+#include "app/Describe.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
+#include "essi/dialect.hpp"
 #include "essi/text.hpp"
 
 namespace essi::viewer::panels {
@@ -54,25 +54,25 @@ void stats_table(const Document& doc) {
 }
 
 // The text encoding of the comments: detected (auto), or UTF-8 / GB 18030 as the user chooses.
-void comment_encoding(App& app) {
-    const std::optional<TextEncoding> chosen = app.chosen_text_encoding();
-    const std::string detected(text_encoding_name(app.detected_text_encoding()));
+void comment_encoding(CommentText& comments, const Document* doc) {
+    const std::optional<TextEncoding> chosen = comments.chosen();
+    const std::string detected(text_encoding_name(comments.detected()));
     const std::string auto_label = tr(Msg::UiEncodingAuto, {detected == "gb18030" ? "GB 18030" : "UTF-8"});
     const char* current = !chosen ? auto_label.c_str() : *chosen == TextEncoding::Gb18030 ? "GB 18030" : "UTF-8";
     ImGui::TextUnformatted(tr(Msg::UiComments));
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::CalcTextSize(auto_label.c_str()).x + ImGui::GetFrameHeight() * 2);
     if (!ImGui::BeginCombo("##comment_encoding", current)) return;
-    if (ImGui::Selectable(auto_label.c_str(), !chosen)) app.set_text_encoding(std::nullopt);
-    if (ImGui::Selectable("UTF-8", chosen == TextEncoding::Utf8)) app.set_text_encoding(TextEncoding::Utf8);
-    if (ImGui::Selectable("GB 18030", chosen == TextEncoding::Gb18030)) app.set_text_encoding(TextEncoding::Gb18030);
+    if (ImGui::Selectable(auto_label.c_str(), !chosen)) comments.choose(std::nullopt, doc);
+    if (ImGui::Selectable("UTF-8", chosen == TextEncoding::Utf8)) comments.choose(TextEncoding::Utf8, doc);
+    if (ImGui::Selectable("GB 18030", chosen == TextEncoding::Gb18030)) comments.choose(TextEncoding::Gb18030, doc);
     ImGui::EndCombo();
 }
 
 // How the tape is read: its format, its dialect and why (the evidence of --profile auto), and one click to read it
 // with another dialect.
-void reading(App& app) {
-    const Document* doc = app.document();
+void reading(Session& session, CommentText& comments) {
+    const Document* doc = session.document();
     if (!doc) {
         ImGui::TextDisabled("%s", tr(Msg::UiNoTape));
         return;
@@ -88,24 +88,22 @@ void reading(App& app) {
     for (const std::string& n : builtin_profile_names()) {
         if (n == s.profile.name) continue;
         same_line_if_fits(ImGui::CalcTextSize(n.c_str()).x + ImGui::GetStyle().FramePadding.x * 2);
-        if (ImGui::SmallButton(n.c_str())) app.set_profile(n);
+        if (ImGui::SmallButton(n.c_str())) session.set_profile(n);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiReadAsTip, {n}).c_str());
     }
-    if (app.profile_name() != kAutoProfile) {
+    if (session.profile_name() != kAutoProfile) {
         same_line_if_fits(ImGui::CalcTextSize("auto").x + ImGui::GetStyle().FramePadding.x * 2);
-        if (ImGui::SmallButton("auto")) app.set_profile(std::string(kAutoProfile));
+        if (ImGui::SmallButton("auto")) session.set_profile(std::string(kAutoProfile));
     }
-    comment_encoding(app);
+    comment_encoding(comments, session.document());
 }
 
-void statistics(const App& app) {
-    const Document* doc = app.document();
+void statistics(const Document* doc, const LoadController& load) {
     if (!doc) {
         ImGui::TextDisabled("%s", tr(Msg::UiNoTape));
         return;
     }
     stats_table(*doc);
-    const LoadController& load = app.loads();
     const PathBuffers* building = load.building();
     const std::string about =
         building && load.first_build()  // (the segments are still being made: none to count yet)
@@ -135,9 +133,7 @@ void layer_switch(const std::string& label, bool& on, const ImVec4* colour, bool
     ImGui::Checkbox(label.c_str(), &on);
 }
 
-void layers(App& app) {
-    Layers& layers = app.layers();
-    const Document* doc = app.document();
+void layers(Layers& layers, Preferences& preferences, const Document* doc) {
     bool first = true;
     for (MotionKind k : {MotionKind::Cut, MotionKind::Mark, MotionKind::Travel, MotionKind::Rapid}) {
         const ImVec4 c = opaque(kind_color(k));
@@ -155,19 +151,17 @@ void layers(App& app) {
         layer_switch(tr_id(Msg::UiLayerKerfPath, "kerf path"), layers.kerf, &path);
         layer_switch(tr_id(Msg::UiLayerKerfWidth, "kerf width"), layers.kerf_band, &band);
     }
-    bool problems = app.problems_only();  // (kept across sessions: through App)
+    bool problems = preferences.problems_only();  // (kept across sessions: through Preferences)
     layer_switch(tr_id(Msg::UiProblemsOnly, "problems only"), problems, nullptr);
-    if (problems != app.problems_only()) app.set_problems_only(problems);
+    if (problems != preferences.problems_only()) preferences.set_problems_only(problems);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiProblemsOnlyTip));
 }
 
-void playback(App& app) {
-    const Document* doc = app.document();
+void playback(Playback& p, Navigation& navigation, const Document* doc) {
     if (!doc || doc->motions.empty()) {
         ImGui::TextDisabled("%s", tr(Msg::UiNoMotion));
         return;
     }
-    Playback& p = app.playback();
     const std::size_t n = doc->motions.size();
     if (ImGui::Button(tr_id(p.playing ? Msg::UiPause : Msg::UiPlay, "play").c_str())) p.toggle(n);
     ImGui::SameLine();
@@ -191,15 +185,14 @@ void playback(App& app) {
     ImGui::TextWrapped("%s", tr(Msg::UiPlaybackLine, {m.line, motion_kind_text(m.kind, lang), curve_kind_text(m.curve, lang)}).c_str());
     ImGui::TextWrapped("%s", tr(Msg::UiPlaybackTools, {tools_label(m.tools, lang), fmt("%.0f", doc->feed_of(cur))}).c_str());
     const Playback::At at = p.at(n);
-    const Coordinates cs = app.coordinates();
+    const Coordinates cs = navigation.coordinates();
     const Point tool = cs.shown(point_at(doc->record(at.motion), at.fraction));
     ImGui::TextWrapped("%s", tr(Msg::UiToolAt, {fmt("%.3f", tool.x), fmt("%.3f", tool.y),
                                                 cs.machine() ? Msg::UiCoordsMachineShort : Msg::UiCoordsProgramShort}).c_str());
-    if (ImGui::SmallButton(tr_id(Msg::UiShowLine, "show line").c_str())) app.select_line(m.line, false);
+    if (ImGui::SmallButton(tr_id(Msg::UiShowLine, "show line").c_str())) navigation.select_line(m.line, false);
 }
 
-void diagnostics(App& app) {
-    const Document* doc = app.document();
+void diagnostics(const Document* doc, Navigation& navigation, Exports& exports) {
     if (!doc) {
         ImGui::TextDisabled("-");
         return;
@@ -208,7 +201,7 @@ void diagnostics(App& app) {
         ImGui::TextColored(to_vec4(kOkColor), "%s", tr(Msg::UiNoProblems));
         return;
     }
-    if (ImGui::SmallButton(tr_id(Msg::UiCopyReport, "copy report").c_str())) app.copy(App::CopyWhat::Report);
+    if (ImGui::SmallButton(tr_id(Msg::UiCopyReport, "copy report").c_str())) exports.copy(Exports::CopyWhat::Report);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiCopyReportTip));
     ImGui::BeginChild("diaglist", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
     ImGuiListClipper clipper;
@@ -219,11 +212,12 @@ void diagnostics(App& app) {
             ImGui::PushID(i);
             ImGui::PushStyleColor(ImGuiCol_Text, severity_color(d.severity));
             const std::string label = tr(Msg::UiDiagLabel, {code_name(d.code), d.line, d.column});
-            if (ImGui::Selectable(label.c_str(), d.line != 0 && d.line == app.selection().line)) app.select_diagnostic(static_cast<std::size_t>(i));
+            if (ImGui::Selectable(label.c_str(), d.line != 0 && d.line == navigation.selection().line))
+                navigation.select_diagnostic(static_cast<std::size_t>(i));
             ImGui::PopStyleColor();
             if (ImGui::BeginPopupContextItem("diagnostic menu")) {
-                if (ImGui::Selectable(tr(Msg::UiCopyThisProblem))) app.copy(App::CopyWhat::Diagnostic, static_cast<std::uint32_t>(i));
-                if (ImGui::Selectable(tr(Msg::UiCopyReport))) app.copy(App::CopyWhat::Report);
+                if (ImGui::Selectable(tr(Msg::UiCopyThisProblem))) exports.copy(Exports::CopyWhat::Diagnostic, static_cast<std::uint32_t>(i));
+                if (ImGui::Selectable(tr(Msg::UiCopyReport))) exports.copy(Exports::CopyWhat::Report);
                 ImGui::EndPopup();
             }
             const std::string message = diagnostic_message(d, ui_lang());
@@ -238,16 +232,17 @@ void diagnostics(App& app) {
 
 }  // namespace
 
-void tape_panel(App& app) {
-    if (!begin_side_panel(app, tr_id(Msg::UiTapePanel, "Tape").c_str(), true)) return;
+void Panels::tape_panel() {
+    if (!begin_side_panel(p_.ui.layout, p_.ui.layout_changed, tr_id(Msg::UiTapePanel, "Tape").c_str(), true)) return;
+    const Document* doc = p_.session.document();
     const auto header = [](Msg title, const char* id) {
         return ImGui::CollapsingHeader(tr_id(title, id).c_str(), ImGuiTreeNodeFlags_DefaultOpen);
     };
-    if (header(Msg::UiReading, "Reading")) reading(app);
-    if (header(Msg::UiStatistics, "Statistics")) statistics(app);
-    if (header(Msg::UiLayers, "Layers")) layers(app);
-    if (header(Msg::UiPlayback, "Playback")) playback(app);
-    if (header(Msg::UiDiagnostics, "Diagnostics")) diagnostics(app);
+    if (header(Msg::UiReading, "Reading")) reading(p_.session, p_.comments);
+    if (header(Msg::UiStatistics, "Statistics")) statistics(doc, p_.load);
+    if (header(Msg::UiLayers, "Layers")) layers(p_.layers, p_.preferences, doc);
+    if (header(Msg::UiPlayback, "Playback")) playback(p_.playback, p_.navigation, doc);
+    if (header(Msg::UiDiagnostics, "Diagnostics")) diagnostics(doc, p_.navigation, p_.exports);
     ImGui::End();
 }
 

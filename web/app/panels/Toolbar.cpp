@@ -2,19 +2,17 @@
 // orientation, the coordinates, the language, the tape's name and verdict, the message. Items that do not fit in
 // the window's width (German is longer; a 1024 px screen) go, in their order, into the overflow menu (») at the end
 // of the bar, where they work as in the bar (docs/viewer.md, "Languages").
-#include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <array>
 #include <initializer_list>
 #include <vector>
 
-#include "app/App.hpp"
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
+#include "app/Language.hpp"
 #include "essi/dialect.hpp"
 #include "essi/profile.hpp"
-#include "platform/Platform.hpp"
 #include "render/UiFonts.hpp"
 
 namespace essi::viewer::panels {
@@ -56,21 +54,23 @@ void tooltip(Msg tip) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(tip));
 }
 
-std::string profile_shown(const App& app) {
+using Parts = Panels::Parts;
+
+std::string profile_shown(const Session& session) {
     // "auto: woyda" while the tape's evidence chose the dialect
-    const Document* doc = app.document();
-    return app.profile_name() == kAutoProfile && doc ? "auto: " + doc->profile.name : app.profile_name();
+    const Document* doc = session.document();
+    return session.profile_name() == kAutoProfile && doc ? "auto: " + doc->profile.name : session.profile_name();
 }
 
-std::vector<std::string> profile_choices(const App& app) {
+std::vector<std::string> profile_choices(const Session& session) {
     std::vector<std::string> names{std::string(kAutoProfile)};
     for (const std::string& n : builtin_profile_names()) names.push_back(n);
-    if (app.dropped_profile()) names.push_back(app.dropped_profile()->name);  // (a profile file dropped on the page)
+    if (session.dropped_profile()) names.push_back(session.dropped_profile()->name);  // (a profile file dropped on the page)
     return names;
 }
 
-Msg compare_label(const App& app) {
-    return app.compare() ? Msg::UiEndCompare : app.compare_pending() ? Msg::UiCompareDropB : Msg::UiCompare;
+Msg compare_label(const CompareMode& compare) {
+    return compare.result() ? Msg::UiEndCompare : compare.pending() ? Msg::UiCompareDropB : Msg::UiCompare;
 }
 
 // The tape's name and "ok" or its error and warning counts.
@@ -81,7 +81,7 @@ std::string verdict_text(const Document& doc) {
     return tr(Msg::UiVerdictErrors, {e, w});
 }
 
-float item_width(App& app, Item item) {
+float item_width(const Parts& p, Item item) {
     switch (item) {
         case Item::Open: return button_width(tr(Msg::UiOpen));
         case Item::Paste: return button_width(tr(Msg::UiPaste));
@@ -91,10 +91,10 @@ float item_width(App& app, Item item) {
         case Item::Measure: return checkbox_width(tr(Msg::UiMeasure));
         case Item::Help: return button_width(tr(Msg::UiHelp));
         case Item::Panels: return button_width(tr(Msg::UiPanels));
-        case Item::Compare: return button_width(tr(compare_label(app)));
+        case Item::Compare: return button_width(tr(compare_label(p.compare)));
         case Item::Profile: {
-            float w = combo_width({profile_shown(app)});
-            for (const std::string& n : profile_choices(app)) w = std::max(w, combo_width({n}));
+            float w = combo_width({profile_shown(p.session)});
+            for (const std::string& n : profile_choices(p.session)) w = std::max(w, combo_width({n}));
             return w;
         }
         case Item::Orientation:
@@ -103,7 +103,7 @@ float item_width(App& app, Item item) {
         case Item::Language:
             return combo_width({lang_native_name(Lang::En), lang_native_name(Lang::De), lang_native_name(Lang::Zh)});
         case Item::Verdict: {
-            const Document* doc = app.document();
+            const Document* doc = p.session.document();
             if (!doc) return 0;
             return text_width(doc->name.c_str()) + ImGui::GetStyle().ItemSpacing.x + text_width(verdict_text(*doc).c_str());
         }
@@ -112,7 +112,7 @@ float item_width(App& app, Item item) {
 }
 
 // Downloads: the tape as ESSI, EIA or G-code (essi convert), its drawing as DXF, its report, the view.
-void export_menu(App& app) {
+void export_menu(Exports& exports) {
     if (!ImGui::BeginPopup("export")) return;
     // (format names are no words: they stay as they are)
     const std::pair<std::string, const char*> formats[] = {
@@ -125,177 +125,174 @@ void export_menu(App& app) {
         {tr(Msg::UiExportProblemsCsv), "report-csv"},
         {tr(Msg::UiExportViewSvg), "view-svg"}};
     for (const auto& [label, format] : formats)
-        if (ImGui::Selectable(label.c_str())) app.export_file(format);
-    if (ImGui::Selectable(tr(Msg::UiExportViewPng))) app.export_view_png();
+        if (ImGui::Selectable(label.c_str())) exports.export_file(format);
+    if (ImGui::Selectable(tr(Msg::UiExportViewPng))) exports.export_view_png();
     ImGui::EndPopup();
 }
 
 // The side panels: shown or hidden ([ and ]), the theme, the problems-only view (P), the widths back to their defaults.
-void panels_menu(App& app) {
+void panels_menu(Preferences& preferences, const PanelLayout& layout) {
     if (!ImGui::BeginPopup("panels")) return;
-    PanelLayout l = app.ui().layout;
+    PanelLayout l = layout;
     bool changed = ImGui::Checkbox((std::string(tr(Msg::UiPanelLeft)) + "  [###left").c_str(), &l.left_shown);
     changed |= ImGui::Checkbox((std::string(tr(Msg::UiPanelRight)) + "  ]###right").c_str(), &l.right_shown);
-    bool light = app.light_theme();
-    if (ImGui::Checkbox(tr_id(Msg::UiLightTheme, "light").c_str(), &light)) app.set_light_theme(light);
-    bool problems = app.problems_only();
+    bool light = preferences.light_theme();
+    if (ImGui::Checkbox(tr_id(Msg::UiLightTheme, "light").c_str(), &light)) preferences.set_light_theme(light);
+    bool problems = preferences.problems_only();
     if (ImGui::Checkbox((std::string(tr(Msg::UiProblemsOnly)) + "  P###problems").c_str(), &problems))
-        app.set_problems_only(problems);
+        preferences.set_problems_only(problems);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiProblemsOnlyTip));
     if (ImGui::Selectable(tr_id(Msg::UiDefaultLayout, "default").c_str())) {
         l = PanelLayout{};
         changed = true;
     }
-    if (changed) app.set_layout(l);
+    if (changed) preferences.set_layout(l);
     ImGui::EndPopup();
+}
+
+// A button with its tooltip (none: Msg::None); true when it was clicked.
+bool button(Msg label, const char* id, Msg tip) {
+    const bool clicked = ImGui::Button(tr_id(label, id).c_str());
+    if (tip != Msg::None) tooltip(tip);
+    return clicked;
+}
+
+bool open_button(PlatformServices& platform) {
+    const bool clicked = ImGui::Button(tr_id(Msg::UiOpen, "open").c_str());
+    if (clicked) platform.open_file_dialog();
+    // (the page opens the file picker in the click on this rectangle: FilesEmscripten.cpp)
+    platform.open_button_at(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                            ImGui::GetItemRectSize().y);
+    tooltip(Msg::UiOpenTip);
+    return clicked;
+}
+
+void profile_combo(Session& session, float width) {
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::BeginCombo("##profile", profile_shown(session).c_str())) {
+        for (const std::string& n : profile_choices(session))
+            if (ImGui::Selectable(n.c_str(), n == session.profile_name()) && n != session.profile_name()) session.set_profile(n);
+        ImGui::EndCombo();
+    }
+    tooltip(Msg::UiProfileTip);
+}
+
+// The machine's view orientation (View::turns): where the tape's +x points on the screen; kept.
+void orientation_combo(Navigation& navigation, float width) {
+    const int turns = navigation.view().turns;
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::BeginCombo("##orientation", tr(kOrientations[static_cast<std::size_t>(turns)]))) {
+        for (int q = 0; q < 4; ++q)
+            if (ImGui::Selectable(tr(kOrientations[static_cast<std::size_t>(q)]), q == turns) && q != turns)
+                navigation.set_orientation(q);
+        ImGui::EndCombo();
+    }
+    tooltip(Msg::UiOrientTip);
+}
+
+// Program or machine coordinates (Coordinates): the numbers, the grid and the drawing's turn; kept.
+void coordinates_combo(Navigation& navigation, float width) {
+    const int machine = navigation.machine_coordinates() ? 1 : 0;
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::BeginCombo("##coordinates", tr(kCoordinates[static_cast<std::size_t>(machine)]))) {
+        for (int k = 0; k < 2; ++k)
+            if (ImGui::Selectable(tr(kCoordinates[static_cast<std::size_t>(k)]), k == machine) && k != machine)
+                navigation.set_machine_coordinates(k == 1);
+        ImGui::EndCombo();
+    }
+    tooltip(Msg::UiCoordinatesTip);
+}
+
+// Each language by its own name; kept across sessions (Preferences::set_language).
+void language_combo(Preferences& preferences, float width) {
+    const Lang now = preferences.language();
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::BeginCombo("##language", std::string(lang_native_name(now)).c_str())) {
+        for (const Lang l : kLanguages)
+            if (ImGui::Selectable(std::string(lang_native_name(l)).c_str(), l == now) && l != now) preferences.set_language(l);
+        ImGui::EndCombo();
+    }
+    tooltip(Msg::UiLanguageTip);
+}
+
+void verdict(const Document* doc) {
+    if (!doc) return;
+    ImGui::TextUnformatted(doc->name.c_str());
+    ImGui::SameLine();
+    const std::size_t e = doc->count(Severity::Error), w = doc->count(Severity::Warning);
+    const ImVec4 colour = e > 0 ? severity_color(Severity::Error) : w > 0 ? severity_color(Severity::Warning) : to_vec4(kOkColor);
+    ImGui::TextColored(colour, "%s", verdict_text(*doc).c_str());
 }
 
 // One item, in the bar or in the overflow menu (the same widgets). True when a button did what it does (the menu
 // closes then).
-bool draw_item(App& app, Item item, float width) {
+bool draw_item(const Parts& p, Item item, float width) {
     switch (item) {
-        case Item::Open: {
-            const bool clicked = ImGui::Button(tr_id(Msg::UiOpen, "open").c_str());
-            if (clicked) platform::open_file_dialog(app);
-            // (the page opens the file picker in the click on this rectangle: FilesEmscripten.cpp)
-            platform::open_button_at(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
-                                     ImGui::GetItemRectSize().y);
-            tooltip(Msg::UiOpenTip);
-            return clicked;
-        }
-        case Item::Paste: {
-            const bool clicked = ImGui::Button(tr_id(Msg::UiPaste, "paste").c_str());
-            if (clicked) platform::paste(app);
-            tooltip(Msg::UiPasteTip);
-            return clicked;
-        }
-        case Item::Share: {
-            const bool clicked = ImGui::Button(tr_id(Msg::UiShareLink, "share").c_str());
-            if (clicked) app.share();
-            tooltip(Msg::UiShareTip);
-            return clicked;
-        }
+        case Item::Open: return open_button(p.platform);
+        case Item::Paste:
+            if (!button(Msg::UiPaste, "paste", Msg::UiPasteTip)) return false;
+            p.platform.paste();
+            return true;
+        case Item::Share:
+            if (!button(Msg::UiShareLink, "share", Msg::UiShareTip)) return false;
+            p.shares.share();
+            return true;
         case Item::Export:
-            if (ImGui::Button(tr_id(Msg::UiExport, "export").c_str())) ImGui::OpenPopup("export");
-            tooltip(Msg::UiExportTip);
-            export_menu(app);
+            if (button(Msg::UiExport, "export", Msg::UiExportTip)) ImGui::OpenPopup("export");
+            export_menu(p.exports);
             return false;
-        case Item::Fit: {
-            const bool clicked = ImGui::Button(tr_id(Msg::UiFit, "fit").c_str());
-            if (clicked) app.fit();
-            tooltip(Msg::UiFitTip);
-            return clicked;
-        }
+        case Item::Fit:
+            if (!button(Msg::UiFit, "fit", Msg::UiFitTip)) return false;
+            p.navigation.fit();
+            return true;
         case Item::Measure: {
-            Measure& measure = app.input().measure;
-            const bool clicked = ImGui::Checkbox(tr_id(Msg::UiMeasure, "measure").c_str(), &measure.active);
-            if (clicked) measure.points = 0;
+            const bool clicked = ImGui::Checkbox(tr_id(Msg::UiMeasure, "measure").c_str(), &p.measure.active);
+            if (clicked) p.measure.points = 0;
             return clicked;
         }
-        case Item::Help: {
-            const bool clicked = ImGui::Button(tr_id(Msg::UiHelp, "help").c_str());
-            if (clicked) app.ui().help = !app.ui().help;
-            return clicked;
-        }
+        case Item::Help:
+            if (!button(Msg::UiHelp, "help", Msg::None)) return false;
+            p.ui.help = !p.ui.help;
+            return true;
         case Item::Panels:
-            if (ImGui::Button(tr_id(Msg::UiPanels, "panels").c_str())) ImGui::OpenPopup("panels");
-            tooltip(Msg::UiPanelsTip);
-            panels_menu(app);
+            if (button(Msg::UiPanels, "panels", Msg::UiPanelsTip)) ImGui::OpenPopup("panels");
+            panels_menu(p.preferences, p.ui.layout);
             return false;
-        case Item::Compare: {
-            const bool clicked = ImGui::Button(tr_id(compare_label(app), "compare").c_str());
-            if (clicked) {
-                if (app.compare()) app.end_compare();
-                else app.begin_compare();
-            }
-            tooltip(Msg::UiCompareTip);
-            return clicked;
-        }
-        case Item::Profile: {
-            ImGui::SetNextItemWidth(width);
-            if (ImGui::BeginCombo("##profile", profile_shown(app).c_str())) {
-                for (const std::string& n : profile_choices(app))
-                    if (ImGui::Selectable(n.c_str(), n == app.profile_name()) && n != app.profile_name()) app.set_profile(n);
-                ImGui::EndCombo();
-            }
-            tooltip(Msg::UiProfileTip);
-            return false;
-        }
-        case Item::Orientation: {
-            // The machine's view orientation (View::turns): where the tape's +x points on the screen; kept.
-            const int turns = app.view().turns;
-            ImGui::SetNextItemWidth(width);
-            if (ImGui::BeginCombo("##orientation", tr(kOrientations[static_cast<std::size_t>(turns)]))) {
-                for (int q = 0; q < 4; ++q)
-                    if (ImGui::Selectable(tr(kOrientations[static_cast<std::size_t>(q)]), q == turns) && q != turns)
-                        app.set_orientation(q);
-                ImGui::EndCombo();
-            }
-            tooltip(Msg::UiOrientTip);
-            return false;
-        }
-        case Item::Coordinates: {
-            // Program or machine coordinates (Coordinates): the numbers, the grid and the drawing's turn; kept.
-            const int machine = app.machine_coordinates() ? 1 : 0;
-            ImGui::SetNextItemWidth(width);
-            if (ImGui::BeginCombo("##coordinates", tr(kCoordinates[static_cast<std::size_t>(machine)]))) {
-                for (int k = 0; k < 2; ++k)
-                    if (ImGui::Selectable(tr(kCoordinates[static_cast<std::size_t>(k)]), k == machine) && k != machine)
-                        app.set_machine_coordinates(k == 1);
-                ImGui::EndCombo();
-            }
-            tooltip(Msg::UiCoordinatesTip);
-            return false;
-        }
-        case Item::Language: {
-            // Each language by its own name; kept across sessions (App::set_language).
-            const Lang now = app.language();
-            ImGui::SetNextItemWidth(width);
-            if (ImGui::BeginCombo("##language", std::string(lang_native_name(now)).c_str())) {
-                for (const Lang l : kLanguages)
-                    if (ImGui::Selectable(std::string(lang_native_name(l)).c_str(), l == now) && l != now) app.set_language(l);
-                ImGui::EndCombo();
-            }
-            tooltip(Msg::UiLanguageTip);
-            return false;
-        }
-        case Item::Verdict: {
-            const Document* doc = app.document();
-            if (!doc) return false;
-            ImGui::TextUnformatted(doc->name.c_str());
-            ImGui::SameLine();
-            const std::size_t e = doc->count(Severity::Error), w = doc->count(Severity::Warning);
-            const ImVec4 colour = e > 0 ? severity_color(Severity::Error) : w > 0 ? severity_color(Severity::Warning) : to_vec4(kOkColor);
-            ImGui::TextColored(colour, "%s", verdict_text(*doc).c_str());
-            return false;
-        }
+        case Item::Compare:
+            if (!button(compare_label(p.compare), "compare", Msg::UiCompareTip)) return false;
+            if (p.compare.result()) p.compare.end();
+            else p.compare.begin(p.session.document());
+            return true;
+        case Item::Profile: profile_combo(p.session, width); return false;
+        case Item::Orientation: orientation_combo(p.navigation, width); return false;
+        case Item::Coordinates: coordinates_combo(p.navigation, width); return false;
+        case Item::Language: language_combo(p.preferences, width); return false;
+        case Item::Verdict: verdict(p.session.document()); return false;
     }
     return false;
 }
 
 // Draws one item in a group and notes where it is (state().toolbar).
-bool placed_item(App& app, const ItemInfo& info, float width, bool in_menu) {
+bool placed_item(const Parts& p, const ItemInfo& info, float width, bool in_menu) {
     ImGui::BeginGroup();
-    const bool acted = draw_item(app, info.item, width);
+    const bool acted = draw_item(p, info.item, width);
     ImGui::EndGroup();
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    app.ui().toolbar.push_back({info.id, Rect{a.x, a.y, b.x - a.x, b.y - a.y}, in_menu});
+    p.ui.toolbar.push_back({info.id, Rect{a.x, a.y, b.x - a.x, b.y - a.y}, in_menu});
     return acted;
 }
 
-// The message (App::notify): in the bar when it fits after the items (which end at `bar_end`), else over the top
-// of the drawing.
-void message(App& app, float bar_end, float right) {
-    const UiState& ui = app.ui();
-    if (ui.message.empty() || glfwGetTime() >= ui.message_until) return;
-    const std::string text = ui.message.text();
+// The message (Notices): in the bar when it fits after the items (which end at `bar_end`), else over the top of
+// the drawing area `area`.
+void message(const Notices& notices, const Rect& area, float bar_end, float right) {
+    if (!notices.shown()) return;
+    const std::string text = notices.message().text();
     const float gap = ImGui::GetStyle().ItemSpacing.x * 2;
     if (bar_end + gap + text_width(text.c_str()) <= right) {
         ImGui::SameLine(0, gap);
         ImGui::TextColored(to_vec4(kMessageColor), "%s", text.c_str());
         return;
     }
-    const Rect& area = app.view().area;
     ImGui::SetNextWindowPos(ImVec2(area.x + area.w / 2, area.y + 8), ImGuiCond_Always, ImVec2(0.5f, 0.f));
     ImGui::Begin("##toolbar message", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
@@ -306,64 +303,76 @@ void message(App& app, float bar_end, float right) {
     ImGui::End();
 }
 
-}  // namespace
-
-void toolbar(App& app) {
-    ImGuiIO& io = ImGui::GetIO();
+// How many items fit in the bar, in their order (with room for the overflow button when some do not), the bar
+// ending at `right`.
+std::size_t items_that_fit(const std::vector<float>& widths, float right) {
     const ImGuiStyle& style = ImGui::GetStyle();
-    ui_fonts().require_glyphs(lang_native_name(Lang::Zh));  // (the language switch names 中文 in every language)
-    ImGui::SetNextWindowPos(ImVec2(0, 0));
-    ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, kToolbarHeight));
-    ImGui::Begin("##toolbar", nullptr, kPanelFlags | ImGuiWindowFlags_NoDecoration);
-    UiState& ui = app.ui();
-    ui.toolbar.clear();
-    ui.toolbar_more = Rect{0, 0, 0, 0};
-
-    // How many items fit in the bar, in their order (with room for the overflow button when some do not).
-    std::vector<ItemInfo> items(std::begin(kItems), std::end(kItems));
-    if (!app.document()) std::erase_if(items, [](const ItemInfo& i) { return i.item == Item::Verdict; });
-    const std::size_t n = items.size();
-    std::vector<float> widths(n);
-    for (std::size_t k = 0; k < n; ++k) widths[k] = item_width(app, items[k].item);
-    const float right = io.DisplaySize.x - style.WindowPadding.x;
-    const float more_w = button_width(kMoreLabel);
     const auto row_end = [&](std::size_t count) {  // where `count` items end
         float x = style.WindowPadding.x;
         for (std::size_t k = 0; k < count; ++k) x += widths[k] + (k > 0 ? style.ItemSpacing.x : 0);
         return x;
     };
+    const std::size_t n = widths.size();
     std::size_t fit = n;
     if (row_end(n) > right)
-        while (fit > 0 && row_end(fit) + (fit > 0 ? style.ItemSpacing.x : 0) + more_w > right) --fit;
+        while (fit > 0 && row_end(fit) + (fit > 0 ? style.ItemSpacing.x : 0) + button_width(kMoreLabel) > right) --fit;
+    return fit;
+}
 
+// The overflow button (») and its menu, with items [first, end); where the bar ends now.
+float overflow_menu(const Parts& p, const std::vector<ItemInfo>& items, const std::vector<float>& widths,
+                    std::size_t first) {
+    UiState& ui = p.ui;
+    if (ImGui::Button(kMoreLabel)) ImGui::OpenPopup("more");
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    ui.toolbar_more = Rect{a.x, a.y, b.x - a.x, b.y - a.y};
+    tooltip(Msg::UiMoreTip);
+    const bool open = ImGui::BeginPopup("more");
+    for (std::size_t k = first; k < items.size(); ++k) {
+        if (!open) {
+            ui.toolbar.push_back({items[k].id, Rect{0, 0, 0, 0}, true});
+            continue;
+        }
+        if (placed_item(p, items[k], widths[k], true)) ImGui::CloseCurrentPopup();
+    }
+    if (open) {
+        ui.toolbar_menu_open = true;
+        ImGui::EndPopup();
+    }
+    return b.x;
+}
+
+}  // namespace
+
+void Panels::toolbar() {
+    ImGuiIO& io = ImGui::GetIO();
+    const ImGuiStyle& style = ImGui::GetStyle();
+    p_.fonts.require_glyphs(lang_native_name(Lang::Zh));  // (the language switch names 中文 in every language)
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, kToolbarHeight));
+    ImGui::Begin("##toolbar", nullptr, kPanelFlags | ImGuiWindowFlags_NoDecoration);
+    UiState& ui = p_.ui;
+    ui.toolbar.clear();
+    ui.toolbar_more = Rect{0, 0, 0, 0};
+    ui.toolbar_menu_open = false;
+
+    std::vector<ItemInfo> items(std::begin(kItems), std::end(kItems));
+    if (!p_.session.document()) std::erase_if(items, [](const ItemInfo& i) { return i.item == Item::Verdict; });
+    std::vector<float> widths(items.size());
+    for (std::size_t k = 0; k < items.size(); ++k) widths[k] = item_width(p_, items[k].item);
+    const float right = io.DisplaySize.x - style.WindowPadding.x;
+    const std::size_t fit = items_that_fit(widths, right);
     float bar_end = style.WindowPadding.x;
     for (std::size_t k = 0; k < fit; ++k) {
         if (k > 0) ImGui::SameLine();
-        placed_item(app, items[k], widths[k], false);
+        placed_item(p_, items[k], widths[k], false);
         bar_end = ImGui::GetItemRectMax().x;
     }
-    ui.toolbar_menu_open = false;
-    if (fit < n) {
+    if (fit < items.size()) {
         if (fit > 0) ImGui::SameLine();
-        if (ImGui::Button(kMoreLabel)) ImGui::OpenPopup("more");
-        const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-        ui.toolbar_more = Rect{a.x, a.y, b.x - a.x, b.y - a.y};
-        bar_end = b.x;
-        tooltip(Msg::UiMoreTip);
-        const bool open = ImGui::BeginPopup("more");
-        for (std::size_t k = fit; k < n; ++k) {
-            if (!open) {
-                ui.toolbar.push_back({items[k].id, Rect{0, 0, 0, 0}, true});
-                continue;
-            }
-            if (placed_item(app, items[k], widths[k], true)) ImGui::CloseCurrentPopup();
-        }
-        if (open) {
-            ui.toolbar_menu_open = true;
-            ImGui::EndPopup();
-        }
+        bar_end = overflow_menu(p_, items, widths, fit);
     }
-    message(app, bar_end, right);
+    message(p_.notices, p_.navigation.view().area, bar_end, right);
     ImGui::End();
 }
 

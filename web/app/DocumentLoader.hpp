@@ -1,0 +1,60 @@
+// Loads a document in steps that each take about `budget_ms` (so the page keeps drawing): the line index,
+// then TapeReader chunks through essi::TapeChecker (the statistics and diagnostics of `essi check`), the
+// viewer's compact stream taken on the way (DocumentSink, TapeChecker's `also` sink), the blocks appended to the
+// Tape.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "app/Document.hpp"
+#include "essi/i18n.hpp"
+#include "essi/pipeline.hpp"
+
+namespace essi::viewer {
+
+class DocumentSink;
+
+class DocumentLoader {
+public:
+    // `plan_later`: the cut plan's plates are kept while the tape is read and analysed after it (step_plan), from
+    // the document's motions (TapeChecker::defer_plan): the document is drawn first, its plan's findings follow.
+    DocumentLoader(std::string name, std::string bytes, TapeSetup setup, bool plan_later = false);
+    ~DocumentLoader();
+    // Runs for about budget_ms; returns true when the document is complete (but for the plan's findings when
+    // plan_later: plan_pending()).
+    bool step(double budget_ms = 12);
+    [[nodiscard]] float progress() const;      // 0..1
+    [[nodiscard]] Msg stage() const;           // "indexing lines", "reading and checking", ... (ui.def)
+    [[nodiscard]] std::unique_ptr<Document> take() { return std::move(doc_); }
+    // After step() returned true and take(): the cut plan's plates still to analyse.
+    [[nodiscard]] bool plan_pending() const { return checker_ != nullptr; }
+    // Analyses plates for about budget_ms; when the last is done, its findings join `doc`'s diagnostics (sorted,
+    // their marks placed) and true is returned. `doc` is the document this loader made.
+    bool step_plan(Document& doc, double budget_ms);
+    [[nodiscard]] float plan_progress() const;  // 0..1
+
+private:
+    class Motions;
+    // The stages; each returns false when the slice's time (`until`, now_ms) ran out before it was done.
+    bool index_lines(double until);
+    void start_reading();
+    bool read_and_check(double until);
+    void read_chunk_done();
+    void finish();
+
+    std::unique_ptr<Document> doc_;
+    std::unique_ptr<DocumentSink> sink_;
+    std::unique_ptr<Motions> motions_;  // the document's motions, read back by the kept plates (plan_later)
+    bool plan_later_ = false;
+    std::unique_ptr<TapeReader> reader_;
+    std::unique_ptr<TapeChecker> checker_;
+    Tape chunk_;
+    enum class Stage { IndexLines, ReadAndCheck, Finish, Done };
+    Stage stage_ = Stage::IndexLines;
+    static constexpr std::size_t kMotionReserveSlack = 64;  // 1/64 more for addressed motions ("1+100+0")
+    std::size_t read_pos_ = 0;  // byte offset reached by the reader
+};
+
+}  // namespace essi::viewer

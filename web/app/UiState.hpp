@@ -1,0 +1,34 @@
+// What the panels share between frames that belongs to no other part: the windows shown, where the toolbar's items
+// are, the diagnostic's mark under the mouse, the side panels' layout, the examples the server offers.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "app/View.hpp"
+#include "app/panels/Layout.hpp"
+
+namespace essi::viewer {
+
+// One item of the toolbar as the last frame drew it (state().toolbar): in the bar, or in its overflow menu (drawn
+// there only while the menu is open).
+struct ToolbarItem {
+    const char* id = "";
+    Rect rect;             // screen pixels (nothing while it is in the closed menu)
+    bool in_menu = false;
+};
+
+struct UiState {
+    bool help = false;
+    bool share_popup = false;   // the Share link window (ShareLinks::text)
+    std::size_t hovered_mark = ~std::size_t(0);  // the diagnostic's mark under the mouse (Document::marks), or none
+    std::vector<ToolbarItem> toolbar;  // the toolbar's items (Panels::toolbar)
+    Rect toolbar_more;                 // its overflow menu's button (w 0: every item fits)
+    bool toolbar_menu_open = false;
+    std::vector<std::string> examples;  // the tapes the server offers (the start screen), none natively
+    panels::PanelLayout layout;         // the side panels (kept across sessions: Preferences::set_layout)
+    bool layout_changed = false;        // by the user this frame: saved once the mouse is up
+};
+
+}  // namespace essi::viewer
