@@ -329,10 +329,14 @@ JobSheet make_job_sheet(const CheckResult& result, const Profile& profile, Sheet
 JobSheetResult job_sheet(std::string_view bytes, const TapeSetup& setup, const JobSheetInput& in) {
     JobSheetResult out;
     out.result = check_tape(bytes, setup, in.max_diagnostics);
-    SheetDrawing drawing = draw_sheet(bytes, setup, out.result.diagnostics, out.result.stats);
-    const SheetParts parts = sheet_parts(out.result);
-    out.sheet = make_job_sheet(out.result, setup.profile, std::move(drawing), parts, in);
+    out.sheet = job_sheet_of(bytes, setup, out.result, in);
     return out;
+}
+
+JobSheet job_sheet_of(std::string_view bytes, const TapeSetup& setup, CheckResult result, const JobSheetInput& in) {
+    limit_diagnostics(result, in.max_diagnostics);
+    SheetDrawing drawing = draw_sheet(bytes, setup, result.diagnostics, result.stats);
+    return make_job_sheet(result, setup.profile, std::move(drawing), sheet_parts(result), in);
 }
 
 }  // namespace essi

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "serve_limits.hpp"
-#include "sha256.hpp"
+#include "essi/sha256.hpp"
 #include "share_store.hpp"
 #include "temp_dir.hpp"
 
