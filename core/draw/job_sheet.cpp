@@ -104,7 +104,17 @@ std::string size_text(double w, double h) { return mm_text(w) + " x " + mm_text(
 
 // The statistics that go under "Time and cost" rather than "Statistics" (every row of stats_rows about time or
 // money belongs in this list).
-bool is_time_or_cost(Msg key) { return key == Msg::StatsEstimatedTime; }
+bool is_time_or_cost(Msg key) {
+    switch (key) {
+        case Msg::StatsEstimatedTime:
+        case Msg::StatsMachineTime:
+        case Msg::StatsMachineTimeBreakdown:
+        case Msg::StatsCost:
+        case Msg::StatsCostBreakdown:
+        case Msg::StatsElectrodes: return true;
+        default: return false;
+    }
+}
 
 SheetSection fields_section(std::string id, Msg title, Lang lang) {
     SheetSection s;

@@ -207,16 +207,16 @@ TEST(ShareStore, ContentAddressedAndPersistent) {
         const auto a = store->put("+100+0\n63\n");
         ASSERT_TRUE(a.ok) << a.error;
         EXPECT_TRUE(a.created);
-        EXPECT_EQ(a.id, sha256_hex("+100+0\n63\n"));
+        EXPECT_EQ(a.id, essi::sha256_hex("+100+0\n63\n"));
         const auto b = store->put("+100+0\n63\n");
         EXPECT_TRUE(b.ok);
         EXPECT_FALSE(b.created);
         EXPECT_EQ(b.id, a.id);
-        EXPECT_FALSE(store->get(sha256_hex("other")));
+        EXPECT_FALSE(store->get(essi::sha256_hex("other")));
     }
     auto again = ShareStore::open((d / "data").string(), error);
     ASSERT_TRUE(again);
-    auto tape = again->get(sha256_hex("+100+0\n63\n"));
+    auto tape = again->get(essi::sha256_hex("+100+0\n63\n"));
     ASSERT_TRUE(tape);
     EXPECT_EQ(*tape, "+100+0\n63\n");
     const std::string binary("\0\xff\r\n", 4);  // blobs, not text

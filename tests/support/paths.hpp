@@ -1,9 +1,10 @@
 // Where the test data lives, in both runtimes.
 //
 //   native: the source tree, given by compile definitions from tests/CMakeLists.txt
-//           (ESSI_EXAMPLES_DIR = <repo>/examples, ESSI_CORPUS_DIR = <repo>/../shared/corpus/essiconv).
-//   wasm:   the same folders preloaded into the Emscripten file system (--preload-file):
-//           examples/ at /examples, ../shared/corpus/essiconv at /corpus (only when it existed at configure).
+//           (ESSI_EXAMPLES_DIR = <repo>/examples, ESSI_TEST_DATA_DIR = <repo>/tests/data,
+//           ESSI_CORPUS_DIR = <repo>/../shared/corpus/essiconv).
+//   wasm:   the same folders preloaded into the Emscripten file system (--preload-file): examples/ at /examples,
+//           tests/data/ at /test_data, ../shared/corpus/essiconv at /corpus (only when it existed at configure).
 //
 // This header is where tests/ chooses its data folders by runtime; elsewhere `__EMSCRIPTEN__` only selects what
 // cannot run under node (threads, files written to disk, timers of the benchmarks).
@@ -16,8 +17,8 @@
 #include <string>
 #include <sys/stat.h>
 
-#if !defined(__EMSCRIPTEN__) && (!defined(ESSI_EXAMPLES_DIR) || !defined(ESSI_CORPUS_DIR))
-#error "ESSI_EXAMPLES_DIR / ESSI_CORPUS_DIR must be defined (tests/CMakeLists.txt does it)"
+#if !defined(__EMSCRIPTEN__) && (!defined(ESSI_EXAMPLES_DIR) || !defined(ESSI_TEST_DATA_DIR) || !defined(ESSI_CORPUS_DIR))
+#error "ESSI_EXAMPLES_DIR / ESSI_TEST_DATA_DIR / ESSI_CORPUS_DIR must be defined (tests/CMakeLists.txt does it)"
 #endif
 
 namespace essi_test_detail {
@@ -33,6 +34,15 @@ inline std::string examples_dir() {
     return "/examples";
 #else
     return ESSI_EXAMPLES_DIR;
+#endif
+}
+
+// The repository's tests/data/ folder: inputs with their results worked out by hand (no trailing slash).
+inline std::string test_data_dir() {
+#ifdef __EMSCRIPTEN__
+    return "/test_data";
+#else
+    return ESSI_TEST_DATA_DIR;
 #endif
 }
 
