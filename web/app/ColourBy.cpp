@@ -32,12 +32,29 @@ Msg colour_by_label(ColourBy by) {
     return Msg::UiColourByKind;
 }
 
+namespace {
+
+// A motion coloured by its feed: a cut or a mark at a programmed feed.
+bool drawn_by_value(const Motion& m) {
+    return (m.kind == MotionKind::Cut || m.kind == MotionKind::Mark) && !(m.flags & Motion::kFlagRapidFeed);
+}
+
+}  // namespace
+
 ColourBins::ColourBins(const Document& doc, ColourBy by) : doc_(doc), by_(by) {
     if (by != ColourBy::Feed) return;
+    // The feeds some cut or mark is made at (a feed in force over travel only is not drawn in a bin's colour).
     std::vector<float> all;
-    all.reserve(doc.feeds.size());
-    for (const auto& [motion, feed] : doc.feeds)
-        if (feed > 0) all.push_back(feed);
+    for (std::size_t k = 0; k < doc.feeds.size(); ++k) {
+        const auto [first, feed] = doc.feeds[k];
+        const std::size_t end = k + 1 < doc.feeds.size() ? doc.feeds[k + 1].first : doc.motions.size();
+        if (!(feed > 0)) continue;
+        for (std::size_t i = first; i < end; ++i) {
+            if (!drawn_by_value(doc.motions[i])) continue;
+            all.push_back(feed);
+            break;
+        }
+    }
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
     if (all.empty()) return;
