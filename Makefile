@@ -71,6 +71,8 @@ bench: setup-test
 	scripts/bench_serve_limits
 	@echo "== essi check with every rule of the cut plan, 100 MB nest (goal: 150 MB/s) =="
 	PROFILE=tests/bench/every_rule.profile.json GOAL_MBPS=150 scripts/bench_compare 100
+	@echo "== essi check with machine time, cost and consumables against without, 100 MB nest (goal: within 10 %) =="
+	scripts/bench_machine_time 100
 	cmake --preset wasm
 	@if [ -f third_party/benchmark/CMakeLists.txt ]; then \
 	  cmake --build --preset wasm -j$(JOBS) --target essi_bench && \

@@ -1,12 +1,12 @@
 #include "formats.hpp"
 #include "essi_version.hpp"
-#include "sha256.hpp"
 
 #include <cctype>
 #include <cstdio>
 #include <map>
 
 #include "essi/diagnostics.hpp"
+#include "essi/sha256.hpp"
 #include "essi/text_report.hpp"
 
 

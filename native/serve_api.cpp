@@ -15,12 +15,12 @@
 #include "essi/profile.hpp"
 #include "essi/pipeline.hpp"
 #include "essi/report_json.hpp"
+#include "essi/sha256.hpp"
 #include "essi/share_link.hpp"
 #include "essi/write.hpp"
 #include "pipelined_check.hpp"
 #include "serve.hpp"
 #include "serve_socket.hpp"
-#include "sha256.hpp"
 
 
 namespace essi::native {

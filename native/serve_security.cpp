@@ -7,8 +7,9 @@
 #include <regex>
 #include <set>
 
+#include "essi/job_sheet.hpp"
+#include "essi/sha256.hpp"
 #include "essi/text.hpp"
-#include "sha256.hpp"
 
 namespace essi::native {
 
@@ -229,7 +230,8 @@ std::string viewer_csp(std::string_view html_in) {
         }
     }
     return "default-src 'none'; script-src 'self' 'wasm-unsafe-eval'" + inline_hashes(html, "script") +
-           handler_hashes(html) + "; style-src 'self'" + inline_hashes(html, "style") +
+           handler_hashes(html) + "; style-src 'self'" + inline_hashes(html, "style") + " " +
+           hash_source(job_sheet_css()) +  // (the job sheet's print view: a blob: page under this policy)
            "; img-src 'self' data: blob:; connect-src 'self'; base-uri 'none'; form-action 'none'; "
            "frame-ancestors 'none'";
 }

@@ -9,7 +9,7 @@
 #include <openssl/rand.h>
 #include <sqlite3.h>
 
-#include "sha256.hpp"
+#include "essi/sha256.hpp"
 
 namespace essi::native {
 

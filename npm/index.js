@@ -7,7 +7,7 @@ import createEssikit from './lib/essikit_api.js';
 const isNode = typeof process === 'object' && !!(process.versions && process.versions.node);
 
 // The problem of a call the CLI refused (its exit code 2, or 1 for a conversion it will not write): `diagnostics`
-// are the lines it printed on stderr (`FILE: error E402: profile: ...`, `essi: cannot read ...`).
+// are the lines it printed on stderr (`FILE:LINE:COLUMN: error E402: ...`, `essi: cannot read ...`).
 export class EssikitError extends Error {
   constructor(message, exitCode, stderr) {
     super(message);

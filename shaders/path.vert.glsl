@@ -8,7 +8,8 @@ precision highp sampler2D;
 precision highp usampler2D;
 
 uniform sampler2D u_segs;     // RGBA32F: x0 y0 x1 y1, mm relative to the document origin; u_tex_width a row
-uniform usampler2D u_kinds;   // R8UI: 0 rapid, 1 travel, 2 cut, 3 mark, 4 kerf path, 5 + k kerf band k (same layout)
+uniform usampler2D u_kinds;   // R8UI: 0 rapid, 1 travel, 2 cut, 3 mark, 4 kerf path, 5 + k kerf band k (same layout),
+                              // 13 + b a cut and 29 + b a mark in colour bin b (colour by: render/Palette.hpp)
 uniform int u_tex_width;
 uniform int u_first;          // first segment of this draw
 
@@ -19,6 +20,7 @@ uniform vec2 u_viewport;      // framebuffer size in pixels
 uniform vec2 u_turn;          // (cos, sin) of the view's rotation (View::rotation())
 uniform float u_half_width[6];
 uniform vec4 u_colors[6];
+uniform vec4 u_ramp[16];      // colour by: the bins' colours
 uniform float u_band_half_mm[8];  // kerf band k: half its width in mm (the cut's real width on screen)
 uniform int u_layer_mask;     // bit k: colour k visible (the bands: bit 5)
 uniform vec4 u_override;      // when alpha > 0: one colour for every kind (selection)
@@ -43,8 +45,8 @@ void main() {
     vec2 corner = kCorners[gl_VertexID % 6];
     ivec2 texel = ivec2(seg % u_tex_width, seg / u_tex_width);
     vec4 s = texelFetch(u_segs, texel, 0);
-    int kind = clamp(int(texelFetch(u_kinds, texel, 0).r), 0, 12);
-    int colour = min(kind, 5);
+    int kind = clamp(int(texelFetch(u_kinds, texel, 0).r), 0, 44);
+    int colour = kind < 13 ? min(kind, 5) : (kind < 29 ? 2 : 3);  // (a bin's segment: a cut's or a mark's layer)
     bool visible = ((u_layer_mask >> colour) & 1) != 0;
     if (!visible) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: nothing drawn
@@ -60,12 +62,12 @@ void main() {
     vec2 dir = len > 1e-4 ? d / len : vec2(1.0, 0.0);
     vec2 nrm = vec2(-dir.y, dir.x);
     float hw = u_half_width[colour] + u_extra_width;
-    if (kind >= 5) hw = max(hw, u_band_half_mm[kind - 5] * u_zoom);
+    if (kind >= 5 && kind < 13) hw = max(hw, u_band_half_mm[kind - 5] * u_zoom);
     float ext = hw + 1.0;  // one pixel of anti-aliasing ramp
     vec2 p = mix(p0, p1, corner.x) + dir * (corner.x * 2.0 - 1.0) * ext + nrm * corner.y * ext;
     vec2 ndc = vec2(p.x / u_viewport.x * 2.0 - 1.0, 1.0 - p.y / u_viewport.y * 2.0);
     gl_Position = vec4(ndc, 0.0, 1.0);
-    v_color = u_override.a > 0.0 ? u_override : u_colors[colour];
+    v_color = u_override.a > 0.0 ? u_override : kind >= 13 ? u_ramp[(kind - 13) % 16] : u_colors[colour];
     v_across = corner.y * ext;
     v_half = hw;
 }

@@ -229,13 +229,19 @@ struct StatChange {
     double a, b;
     bool count = false;
 };
+// The machine time and the cost are compared when both sides have them (the profile's accel_mm_s2, costs).
 std::vector<StatChange> stat_changes(const Stats& a, const Stats& b) {
-    return {{"cut_length_mm", Msg::DiffStatCutLength, a.cut_length_mm, b.cut_length_mm},
-            {"mark_length_mm", Msg::DiffStatMarkLength, a.mark_length_mm, b.mark_length_mm},
-            {"travel_length_mm", Msg::DiffStatTravelLength, a.travel_length_mm, b.travel_length_mm},
-            {"pierces", Msg::DiffStatPierces, static_cast<double>(a.pierces), static_cast<double>(b.pierces), true},
-            {"motions", Msg::DiffStatMotions, static_cast<double>(a.motions), static_cast<double>(b.motions), true},
-            {"estimated_time_s", Msg::DiffStatEstimatedTime, a.estimated_time_s, b.estimated_time_s}};
+    std::vector<StatChange> changes = {
+        {"cut_length_mm", Msg::DiffStatCutLength, a.cut_length_mm, b.cut_length_mm},
+        {"mark_length_mm", Msg::DiffStatMarkLength, a.mark_length_mm, b.mark_length_mm},
+        {"travel_length_mm", Msg::DiffStatTravelLength, a.travel_length_mm, b.travel_length_mm},
+        {"pierces", Msg::DiffStatPierces, static_cast<double>(a.pierces), static_cast<double>(b.pierces), true},
+        {"motions", Msg::DiffStatMotions, static_cast<double>(a.motions), static_cast<double>(b.motions), true},
+        {"estimated_time_s", Msg::DiffStatEstimatedTime, a.estimated_time_s, b.estimated_time_s}};
+    if (a.machine_time && b.machine_time)
+        changes.push_back({"machine_time_s", Msg::DiffStatMachineTime, a.machine_time->total_s, b.machine_time->total_s});
+    if (a.cost && b.cost) changes.push_back({"cost_total", Msg::DiffStatCostTotal, a.cost->total, b.cost->total});
+    return changes;
 }
 
 nlohmann::json contour_json(const DiffContour& c) {

@@ -115,7 +115,17 @@ std::string size_text(double w, double h) { return mm_text(w) + " x " + mm_text(
 
 // The statistics that go under "Time and cost" rather than "Statistics" (every row of stats_rows about time or
 // money belongs in this list).
-bool is_time_or_cost(Msg key) { return key == Msg::StatsEstimatedTime; }
+bool is_time_or_cost(Msg key) {
+    switch (key) {
+        case Msg::StatsEstimatedTime:
+        case Msg::StatsMachineTime:
+        case Msg::StatsMachineTimeBreakdown:
+        case Msg::StatsCost:
+        case Msg::StatsCostBreakdown:
+        case Msg::StatsElectrodes: return true;
+        default: return false;
+    }
+}
 
 SheetSection fields_section(std::string id, Msg title, Lang lang) {
     SheetSection s;
@@ -331,10 +341,14 @@ JobSheetResult job_sheet(std::string_view bytes, const TapeSetup& setup, const J
     JobSheetResult out;
     out.result = check_tape(bytes, setup, in.max_diagnostics);
     out.result.parts = tape_parts(bytes, setup.profile, setup.format);
-    SheetDrawing drawing = draw_sheet(bytes, setup, out.result.diagnostics, out.result.stats);
-    const SheetParts parts = sheet_parts(out.result);
-    out.sheet = make_job_sheet(out.result, setup.profile, std::move(drawing), parts, in);
+    out.sheet = job_sheet_of(bytes, setup, out.result, in);
     return out;
+}
+
+JobSheet job_sheet_of(std::string_view bytes, const TapeSetup& setup, CheckResult result, const JobSheetInput& in) {
+    limit_diagnostics(result, in.max_diagnostics);
+    SheetDrawing drawing = draw_sheet(bytes, setup, result.diagnostics, result.stats);
+    return make_job_sheet(result, setup.profile, std::move(drawing), sheet_parts(result), in);
 }
 
 }  // namespace essi

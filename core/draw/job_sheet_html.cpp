@@ -9,7 +9,7 @@
 namespace essi {
 namespace {
 
-constexpr const char* kCss = R"css(
+constexpr const char* kBaseCss = R"css(
 @page { size: A4 portrait; margin: 15mm; }
 html { font-family: "DejaVu Sans", "WenQuanYi Micro Hei", sans-serif; font-size: 8.5pt; color: #202020; }
 body { margin: 0 auto; max-width: 180mm; }
@@ -57,11 +57,10 @@ void write_table(std::string& h, const SheetTable& t) {
     for (std::size_t r = 0; r < t.rows.size(); ++r) {
         const std::optional<Severity>& sev = t.row_severity[r];
         const std::string severity = sev ? std::string(severity_name(*sev)) : std::string();
-        const std::string color = sev ? " style=\"color: " + std::string(sheet_mark_color(*sev)) + "\"" : std::string();
         h += severity.empty() ? std::string("<tr>") : "<tr class=\"" + severity + "\">";
         for (std::size_t c = 0; c < t.rows[r].size(); ++c) {
             const bool colored = !severity.empty() && c == 0;
-            h += "<td" + cell_class(c, colored) + (colored ? color : std::string()) + ">" + esc(t.rows[r][c]) + "</td>";
+            h += "<td" + cell_class(c, colored) + ">" + esc(t.rows[r][c]) + "</td>";
         }
         h += "</tr>\n";
     }
@@ -142,11 +141,22 @@ std::string legend_sample(const SheetLegendEntry& e) {
 
 }  // namespace
 
+const std::string& job_sheet_css() {
+    static const std::string css = [] {
+        std::string c = kBaseCss;
+        for (const Severity sev : {Severity::Error, Severity::Warning, Severity::Note})
+            c += "tr." + std::string(severity_name(sev)) + " td.severity { color: " + std::string(sheet_mark_color(sev)) +
+                 "; }\n";
+        return c;
+    }();
+    return css;
+}
+
 std::string job_sheet_html(const JobSheet& sheet) {
     std::string h;
     h += "<!DOCTYPE html>\n<html lang=\"" + std::string(lang_code(sheet.lang)) + "\">\n<head>\n<meta charset=\"utf-8\"/>\n";
     h += "<meta name=\"generator\" content=\"essi report\"/>\n<title>" + esc(sheet.title + ": " + sheet.tape) + "</title>\n";
-    h += "<style>" + std::string(kCss) + "</style>\n</head>\n<body>\n";
+    h += "<style>" + job_sheet_css() + "</style>\n</head>\n<body>\n";
     h += "<header>\n<h1>" + esc(sheet.title) + "</h1>\n<p class=\"tape\">" + esc(sheet.tape) + "</p>\n</header>\n";
     for (const SheetSection& s : sheet.sections) {
         h += "<section id=\"" + s.id + "\"" + (s.drawing ? " class=\"drawing\"" : "") + ">\n<h2>" + esc(s.title) + "</h2>\n";

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace essi {
 namespace {
@@ -81,6 +82,21 @@ double arc_sweep(Point start, Point end, Point centre, bool ccw, bool full_circl
 Point parabola_point(const ParabolaGeom& g, double t) {
     const double s = t * t / (2 * g.p);
     return {g.vertex.x + t * g.u.x + s * g.n.x, g.vertex.y + t * g.u.y + s * g.n.y};
+}
+
+double min_curvature_radius(const MotionRecord& m) {
+    switch (m.curve) {
+        case CurveKind::Line: break;
+        case CurveKind::Arc: return std::min(m.radius, m.end_radius);
+        case CurveKind::Parabola: {
+            // R(t) = p (1 + t²/p²)^(3/2), smallest at the t of the piece nearest the vertex (t = 0).
+            const ParabolaGeom& g = m.parabola;
+            const double t = std::clamp(0.0, std::min(g.t0, g.t1), std::max(g.t0, g.t1));
+            const double q = 1 + (t / g.p) * (t / g.p);
+            return g.p * q * std::sqrt(q);
+        }
+    }
+    return std::numeric_limits<double>::infinity();
 }
 
 ParabolaPiece parabola_from_words(Point start, Point end, double xp, double yp, bool axis_parallel_y, bool absolute) {

@@ -28,43 +28,6 @@ Point left_normal(Point t) { return {-t.y, t.x}; }
 const double kCosCornerTolerance = std::cos(kKerfCornerTolerance);
 const double kSinCornerTolerance = std::sin(kKerfCornerTolerance);
 
-// The direction of travel of an arc at a point of it.
-Point arc_tangent(Point p, Point centre, bool ccw) {
-    const Point r = unit(p - centre);
-    return ccw ? Point{-r.y, r.x} : Point{r.y, -r.x};
-}
-// The same when the distance from the centre is known (a programmed arc's radii): no square root.
-Point arc_tangent(Point p, Point centre, bool ccw, double radius) {
-    if (!(radius > 0)) return arc_tangent(p, centre, ccw);
-    const double k = 1 / radius;
-    const Point r{(p.x - centre.x) * k, (p.y - centre.y) * k};
-    return ccw ? Point{-r.y, r.x} : Point{r.y, -r.x};
-}
-// A programmed line's direction from its known length.
-Point line_direction(const MotionRecord& m) {
-    if (!(m.length_mm > 0)) return unit(m.end - m.start);
-    const double k = 1 / m.length_mm;
-    return {(m.end.x - m.start.x) * k, (m.end.y - m.start.y) * k};
-}
-
-// A parabola's direction of travel at parameter t (t runs from t0 to t1).
-Point parabola_tangent(const ParabolaGeom& g, double t) {
-    const Point d = g.u + (t / g.p) * g.n;
-    return unit(g.t1 >= g.t0 ? d : -1.0 * d);
-}
-
-// The direction of travel at a programmed motion's start or end.
-Point tangent_at(const MotionRecord& m, bool end) {
-    switch (m.curve) {
-        case CurveKind::Line: return line_direction(m);
-        case CurveKind::Arc: return arc_tangent(end ? m.end : m.start, m.centre, m.ccw, end ? m.end_radius : m.radius);
-        case CurveKind::Parabola: return parabola_tangent(m.parabola, end ? m.parabola.t1 : m.parabola.t0);
-    }
-    return {};
-}
-Point start_tangent(const MotionRecord& m) { return tangent_at(m, false); }
-Point end_tangent(const MotionRecord& m) { return tangent_at(m, true); }
-
 bool is_full_circle(const MotionRecord& m) { return m.curve == CurveKind::Arc && std::abs(m.sweep) > 2 * kPi - 1e-12; }
 
 // A piece's geometry after its start or end moved: radius, sweep and length again.

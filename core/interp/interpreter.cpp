@@ -132,6 +132,10 @@ private:
                                            IPoint e_t, IPoint base);
     void event(const Block& b, std::size_t index, EventKind kind, bool has_value = false, double value = 0);
     void send_event(const Block& b, std::size_t index, EventKind kind, bool has_value, double value);
+    [[gnu::noinline]] void send_timed_event(const Block& b, std::size_t index, EventKind kind, bool has_value,
+                                            double value);
+    [[nodiscard]] MachineEvent make_event(const Block& b, std::size_t index, EventKind kind, bool has_value,
+                                          double value) const;
     void warn(DiagCode code, const Block& b, Msg msg, MessageArgs args = {}) {
         diags_.push_back(make_diagnostic(default_severity(code), code, b.line, column_of(source_, b.offset), msg,
                                          std::move(args)));
@@ -160,6 +164,8 @@ private:
     MotionSink* const sink_;
     // The statistics of a check: called directly, their calls inlined. Null when there is one `sink_`.
     StatsSink* const stats_;
+    // The statistics follow the machine time or the consumables (StatsSink::timed): they get every event.
+    const bool timed_stats_ = stats_ != nullptr && stats_->timed();
     // The one more sink of a check (the viewer's document): given the lines of head 1 as UnitLines.
     MotionSink* const also_;
     std::vector<Diagnostic>& diags_;
@@ -324,12 +330,14 @@ void Machine::finish() {
     }
     if (stats_) {  // the statistics: what they count, without making the event
         stats_->count_event(kind, value, tools_, torches_);
-        if (also_ == nullptr) return;
+        if (also_ == nullptr && !timed_stats_) return;
     }
     send_event(b, index, kind, has_value, value);
 }
 
-void Machine::send_event(const Block& b, std::size_t index, EventKind kind, bool has_value, double value) {
+// The event of a function block, as the sinks get it.
+inline MachineEvent Machine::make_event(const Block& b, std::size_t index, EventKind kind, bool has_value,
+                                        double value) const {
     MachineEvent e;
     e.line = b.line;
     e.block = static_cast<std::uint32_t>(index);
@@ -339,7 +347,19 @@ void Machine::send_event(const Block& b, std::size_t index, EventKind kind, bool
     e.value = value;
     e.tools_after = tools_;
     e.torches_after = torches_;
-    deliver(stats_ ? *also_ : *sink_, e);  // (the statistics counted it: event())
+    return e;
+}
+
+void Machine::send_event(const Block& b, std::size_t index, EventKind kind, bool has_value, double value) {
+    if (timed_stats_) [[unlikely]] return send_timed_event(b, index, kind, has_value, value);
+    deliver(stats_ ? *also_ : *sink_, make_event(b, index, kind, has_value, value));  // (the statistics counted it)
+}
+
+// An event when the statistics follow the machine time: to them as well (out of send_event's way).
+void Machine::send_timed_event(const Block& b, std::size_t index, EventKind kind, bool has_value, double value) {
+    const MachineEvent e = make_event(b, index, kind, has_value, value);
+    stats_->time_event(e);
+    if (also_) deliver(*also_, e);
 }
 
 // The checks a function block must pass before it takes effect (rarely failed: kept out of the common path).

@@ -189,6 +189,7 @@ void close_loop(Cut& cut, std::span<const Piece> pieces, double closure_mm, doub
     const std::span<const Piece> p = pieces.subspan(cut.first_piece, cut.end_piece - cut.first_piece);
     cut.closed = false;
     const std::size_t n = p.size();
+    if (n == 0) return;  // (a cut left out of the plan's tests, N615: no pieces, an empty box, no gap)
     const double closure2 = closure_mm * closure_mm;
     // First the loops that begin on the lead-in's first pieces (nearly every contour), then any other point passed.
     for (const std::size_t candidates : {std::min(n, kPlanLeadMotions), n <= kPlanFullClosureMotions ? n : std::size_t{0}}) {

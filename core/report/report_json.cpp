@@ -17,6 +17,22 @@ nlohmann::json point_to_json(Point p) {
     return {{"x", round_for_json(p.x)}, {"y", round_for_json(p.y)}};
 }
 
+nlohmann::json rounded_or_null(const std::optional<double>& v) {
+    return v ? nlohmann::json(round_for_json(*v)) : nlohmann::json(nullptr);
+}
+
+nlohmann::json cost_to_json(const Cost& c) {
+    return {{"currency", c.currency},
+            {"time_s", round_for_json(c.time_s)},
+            {"time_basis", c.machine_time ? "machine_time_s" : "estimated_time_s"},
+            {"machine", round_for_json(c.machine)},
+            {"pierces", round_for_json(c.pierces)},
+            {"cut", round_for_json(c.cut)},
+            {"material_kg", rounded_or_null(c.material_kg)},
+            {"material", rounded_or_null(c.material)},
+            {"total", round_for_json(c.total)}};
+}
+
 }  // namespace
 
 double round_for_json(double value) {
@@ -85,6 +101,21 @@ nlohmann::json stats_to_json(const Stats& s) {
     j["machine_cut_bbox_mm"] = box_to_json(s.machine_cut_bbox);
     j["machine_motion_bbox_mm"] = box_to_json(s.machine_motion_bbox);
     j["end_position_mm"] = point_to_json(s.end_position);
+    if (s.machine_time) {
+        const MachineTime& t = *s.machine_time;
+        j["machine_time_s"] = round_for_json(t.total_s);
+        j["machine_time_breakdown_s"] = {
+            {"cutting", round_for_json(t.cutting_s)}, {"marking", round_for_json(t.marking_s)},
+            {"rapid", round_for_json(t.rapid_s)},     {"travel", round_for_json(t.travel_s)},
+            {"pierce", round_for_json(t.pierce_s)},   {"dwell", round_for_json(t.dwell_s)},
+            {"acceleration", round_for_json(t.acceleration_s)}};
+    }
+    if (s.cost) j["cost"] = cost_to_json(*s.cost);
+    if (s.consumables) {
+        j["consumables"] = {{"electrodes", round_for_json(s.consumables->electrodes)},
+                            {"pierces", s.consumables->pierces},
+                            {"arc_on_s", round_for_json(s.consumables->arc_on_s)}};
+    }
     return j;
 }
 

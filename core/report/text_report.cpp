@@ -107,12 +107,24 @@ std::string diagnostic_line(std::string_view path, const Diagnostic& d, Lang lan
     return s;
 }
 
+namespace {
+// An amount of money in the cost's currency: "12.35 EUR".
+std::string money(double v, const Cost& c) { return fixed_text(v, 2) + (c.currency.empty() ? "" : " " + c.currency); }
+std::string electrodes(double v) { return fixed_text(v, 4); }
+}  // namespace
+
 std::string file_stats_line(const FileReport& file, Lang lang) {
     const Stats& st = file.result.stats;
-    return format_message(Msg::ReportFileStats, lang,
-                          {file.display_path(), verdict_text(file.result, lang), mm(st.cut_length_mm), mm(st.mark_length_mm),
-                           mm(st.travel_length_mm), mm(st.rapid_length_mm), st.pierces, st.blocks, st.motions,
-                           format_duration(st.estimated_time_s)});
+    std::string line = format_message(Msg::ReportFileStats, lang,
+                                      {file.display_path(), verdict_text(file.result, lang), mm(st.cut_length_mm),
+                                       mm(st.mark_length_mm), mm(st.travel_length_mm), mm(st.rapid_length_mm),
+                                       st.pierces, st.blocks, st.motions, format_duration(st.estimated_time_s)});
+    if (st.machine_time)
+        line += "; " + format_message(Msg::ReportMachineTime, lang,
+                                      {format_duration(st.machine_time->total_s), fixed_text(st.machine_time->acceleration_s, 1)});
+    if (st.cost) line += "; " + format_message(Msg::ReportCost, lang, {money(st.cost->total, *st.cost)});
+    if (st.consumables) line += "; " + format_message(Msg::ReportElectrodes, lang, {electrodes(st.consumables->electrodes)});
+    return line;
 }
 
 std::string summary_line(std::span<const FileReport> files, std::string_view profile_name, Lang lang) {
@@ -140,6 +152,29 @@ std::vector<StatsRow> stats_rows(const Stats& st) {
     rows.push_back({Msg::StatsMotions, std::to_string(st.motions)});
     rows.push_back({Msg::StatsEstimatedTime,
                     fixed_text(st.estimated_time_s, 1) + " s (" + format_duration(st.estimated_time_s) + ")"});
+    if (st.machine_time) {
+        const MachineTime& t = *st.machine_time;
+        const auto s1 = [](double v) { return fixed_text(v, 1); };
+        rows.push_back({Msg::StatsMachineTime, s1(t.total_s) + " s (" + format_duration(t.total_s) + ")"});
+        rows.push_back({Msg::StatsMachineTimeBreakdown, "",
+                        {Msg::StatsMachineTimeParts,
+                         {s1(t.cutting_s), s1(t.marking_s), s1(t.rapid_s), s1(t.travel_s), s1(t.pierce_s),
+                          s1(t.dwell_s), s1(t.acceleration_s)}}});
+    }
+    if (st.cost) {
+        const Cost& c = *st.cost;
+        rows.push_back({Msg::StatsCost, money(c.total, c)});
+        rows.push_back({Msg::StatsCostBreakdown, "",
+                        {Msg::StatsCostParts,
+                         {money(c.machine, c), c.machine_time ? Msg::StatsMachineTime : Msg::StatsEstimatedTime,
+                          money(c.pierces, c), money(c.cut, c),
+                          c.material ? MessageArgs::Arg(money(*c.material, c)) : MessageArgs::Arg(Msg::StatsNone)}}});
+    }
+    if (st.consumables) {
+        const ConsumableUse& u = *st.consumables;
+        rows.push_back({Msg::StatsElectrodes, "",
+                        {Msg::StatsElectrodesParts, {electrodes(u.electrodes), u.pierces, fixed_text(u.arc_on_s, 1)}}});
+    }
     if (st.cut_bbox.empty) {
         rows.push_back({Msg::StatsCutBox, "", Msg::StatsNone});
     } else {

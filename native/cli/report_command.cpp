@@ -15,9 +15,9 @@
 #include "cli/cli_tapes.hpp"
 #include "cli/commands.hpp"
 #include "essi/job_sheet.hpp"
+#include "essi/sha256.hpp"
 #include "essi/text.hpp"
 #include "job_sheet_pdf.hpp"
-#include "sha256.hpp"
 
 namespace essi::cli {
 namespace {
@@ -86,7 +86,7 @@ int run_report(const ReportOptions& o) {
 
     JobSheetInput in;
     in.tape_name = o.path == "-" ? std::string("-") : std::filesystem::path(o.path).filename().string();
-    in.sha256 = native::sha256_hex(tape->file.bytes);
+    in.sha256 = sha256_hex(tape->file.bytes);
     in.created_unix = sheet_time();
     in.lang = lang();
     const auto max_diagnostics = static_cast<unsigned long long>(o.max_diagnostics);  // (0 .. 2^40, checked)

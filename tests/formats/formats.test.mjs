@@ -255,3 +255,78 @@ test('codeclimate: GitLab Code Quality issues with stable fingerprints', () => {
   assert.deepEqual(de.map((i) => i.fingerprint), en.map((i) => i.fingerprint));
   assert.notDeepEqual(de.map((i) => i.description), en.map((i) => i.description));
 });
+
+// The profile's schema (docs/profile-schema.json) against what essi reads and shows: every built-in profile and a
+// profile with every key validate; each profile of tests/data/profile_errors (E402) does not.
+test('profile JSON validates against docs/profile-schema.json; the E402 ones do not', () => {
+  const ajv = new Ajv2020({ allErrors: true, strict: false });
+  const validate = ajv.compile(JSON.parse(fs.readFileSync(path.join(sourceDir, 'docs/profile-schema.json'), 'utf8')));
+  const list = essi(['profile', 'list']).stdout.trim().split('\n');
+  assert.ok(list.length >= 4);
+  for (const name of list) {
+    const shown = JSON.parse(essi(['profile', 'show', name]).stdout);
+    assert.ok(validate(shown), `${name}: ${JSON.stringify(validate.errors)}`);
+  }
+  const d = tempDir('profile');
+  const full = {
+    name: 'shop-a', base: 'woyda', accel_mm_s2: 800, junction_deviation_mm: 0.02,
+    material: { name: 'S355', thickness_mm: 15, density_kg_m3: 7850 }, plate_mm: { x: 3000, y: 1500 },
+    costs: { currency: 'EUR', machine_per_hour: 90, per_pierce: 0.05, per_m_cut: 0.4, material_per_kg: 1.1 },
+    consumables: { electrode_pierces: 800, electrode_arc_s: 7200 },
+  };
+  assert.ok(validate(full), JSON.stringify(validate.errors));
+  write(path.join(d, 'full.json'), JSON.stringify(full));
+  const shown = essi(['profile', 'show', path.join(d, 'full.json')]);
+  assert.equal(shown.status, 0, shown.stderr);
+  assert.ok(validate(JSON.parse(shown.stdout)), JSON.stringify(validate.errors));
+  assert.deepEqual(JSON.parse(shown.stdout).costs, full.costs);
+  const errorsDir = path.join(sourceDir, 'tests/data/profile_errors');
+  for (const f of fs.readdirSync(errorsDir).filter((n) => n.endsWith('.json'))) {
+    const text = fs.readFileSync(path.join(errorsDir, f), 'utf8');
+    assert.ok(!validate(JSON.parse(text)), `${f} validates, but essi refuses it`);
+    const r = essi(['profile', 'show', path.join(errorsDir, f)]);
+    assert.equal(r.status, 2, f);
+    assert.match(r.stderr, new RegExp(`${f.replace('.', '\\.')}:\\d+:\\d+: error E402: `), f);
+  }
+});
+
+// The machine time, cost and consumables in the JSON report validate, and the text report names them.
+test('machine time, cost and consumables: JSON report validates, text shows them', () => {
+  const ajv = new Ajv2020({ allErrors: true, strict: false });
+  const validate = ajv.compile(JSON.parse(fs.readFileSync(path.join(sourceDir, 'docs/report-schema.json'), 'utf8')));
+  const d = tempDir('machine-time');
+  write(path.join(d, 'p.json'), JSON.stringify({
+    accel_mm_s2: 500, costs: { currency: 'EUR', machine_per_hour: 60, per_pierce: 0.5 },
+    consumables: { electrode_pierces: 1000 },
+  }));
+  const json = JSON.parse(essi(['check', '--format', 'json', '--profile', path.join(d, 'p.json'), 'examples/']).stdout);
+  assert.ok(validate(json), JSON.stringify(validate.errors));
+  for (const f of json.files) {
+    const s = f.stats;
+    assert.ok(s.machine_time_s >= s.estimated_time_s - 1e-6, f.path);
+    const b = s.machine_time_breakdown_s;
+    const sum = b.cutting + b.marking + b.rapid + b.travel + b.pierce + b.dwell;
+    assert.ok(Math.abs(sum - s.machine_time_s) < 1e-5, f.path);
+    assert.ok(Math.abs(s.machine_time_s - b.acceleration - s.estimated_time_s) < 1e-5, f.path);
+    assert.equal(s.cost.time_basis, 'machine_time_s');
+    assert.equal(s.cost.material, null);
+    assert.equal(s.consumables.pierces, s.pierces);
+  }
+  const text = essi(['check', '--profile', path.join(d, 'p.json'), 'tests/data/machine_time/line.esi']);
+  assert.match(text.stdout, /; machine time 0:00:0\d \([\d.]+ s accelerating\); cost [\d.]+ EUR; electrodes [\d.]+\n/);
+  // The other reports: JUnit's system-out and `essi stats` carry it, `essi diff` compares it.
+  const junit = essi(['check', '--format', 'junit', '--profile', path.join(d, 'p.json'), 'tests/data/machine_time/line.esi']);
+  assert.match(junit.stdout, /<system-out>[^<]*; machine time 0:00:03 \(0\.2 s accelerating\); cost [\d.]+ EUR; electrodes [\d.]+/);
+  const stats = essi(['stats', '--profile', path.join(d, 'p.json'), 'tests/data/machine_time/line.esi']);
+  assert.match(stats.stdout, /machine time: +3\.2 s \(0:00:03\)/);
+  const diff = essi(['diff', '--format', 'json', '--profile', path.join(d, 'p.json'), 'tests/data/machine_time/line.esi',
+    'tests/data/machine_time/square.esi']);
+  const change = JSON.parse(diff.stdout).stats_change;
+  assert.equal(change.machine_time_s.a, 3.2);  // 1.2 s and a pierce of 2 s
+  assert.equal(change.machine_time_s.b, 6.759032);  // square.expected's 4.759032 s and the pierce
+  assert.ok('cost_total' in change);
+  // Without the keys nothing of it is in the report.
+  const plain = JSON.parse(essi(['check', '--format', 'json', 'examples/']).stdout);
+  for (const f of plain.files)
+    for (const key of ['machine_time_s', 'machine_time_breakdown_s', 'cost', 'consumables']) assert.ok(!(key in f.stats), key);
+});

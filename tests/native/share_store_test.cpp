@@ -8,7 +8,7 @@
 #include <string>
 
 #include "serve_limits.hpp"
-#include "sha256.hpp"
+#include "essi/sha256.hpp"
 #include "share_store.hpp"
 #include "temp_dir.hpp"
 
@@ -35,7 +35,7 @@ TEST(ShareStoreLimits, DeleteNeedsTheUploadersToken) {
     ASSERT_EQ(put.delete_token.size(), 64u);
     EXPECT_TRUE(store->put("+100+0\n63\n").delete_token.empty());  // a second uploader gets no token
     EXPECT_EQ(store->remove(put.id, ""), ShareStore::Removal::wrong_token);
-    EXPECT_EQ(store->remove(put.id, sha256_hex("guess")), ShareStore::Removal::wrong_token);
+    EXPECT_EQ(store->remove(put.id, essi::sha256_hex("guess")), ShareStore::Removal::wrong_token);
     EXPECT_EQ(store->remove(put.id, put.delete_token), ShareStore::Removal::removed);
     EXPECT_FALSE(store->get(put.id));
     EXPECT_EQ(store->remove(put.id, put.delete_token), ShareStore::Removal::missing);
@@ -55,8 +55,8 @@ TEST(ShareStoreLimits, ATapeIsReadInPieces) {
     for (std::int64_t n; (n = store->read(put.id, back.size(), buf, sizeof buf)) > 0;) back.append(buf, static_cast<std::size_t>(n));
     EXPECT_EQ(back, tape);
     EXPECT_EQ(store->read(put.id, tape.size() + 5, buf, sizeof buf), 0);
-    EXPECT_FALSE(store->size_of(sha256_hex("never stored")));
-    EXPECT_EQ(store->read(sha256_hex("never stored"), 0, buf, sizeof buf), -1);
+    EXPECT_FALSE(store->size_of(essi::sha256_hex("never stored")));
+    EXPECT_EQ(store->read(essi::sha256_hex("never stored"), 0, buf, sizeof buf), -1);
     ASSERT_EQ(store->remove(put.id, put.delete_token), ShareStore::Removal::removed);
     EXPECT_EQ(store->read(put.id, 0, buf, sizeof buf), -1);  // deleted while it was sent: the sending stops
 }
@@ -91,7 +91,7 @@ TEST(ShareStoreLimits, OpensAStoreWithoutTokens) {
     fs::create_directories(d);
     sqlite3* db = nullptr;
     ASSERT_EQ(sqlite3_open((d / "shares.sqlite3").c_str(), &db), SQLITE_OK);
-    const std::string id = sha256_hex("old");
+    const std::string id = essi::sha256_hex("old");
     const std::string sql = "CREATE TABLE shares (id TEXT PRIMARY KEY NOT NULL, size INTEGER NOT NULL, created_unix INTEGER "
                             "NOT NULL, content BLOB NOT NULL); INSERT INTO shares VALUES ('" + id + "', 3, strftime('%s','now'), 'old');";
     ASSERT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr), SQLITE_OK);

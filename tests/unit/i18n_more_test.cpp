@@ -160,11 +160,13 @@ TEST(I18nMore, ProfileErrorsInEachLanguage) {
     ASSERT_EQ(r.diagnostics.size(), 5u);
     for (const essi::Diagnostic& d : r.diagnostics) {
         EXPECT_EQ(d.code, essi::DiagCode::E402_BadProfile);
-        EXPECT_EQ(d.line, 0u);
+        EXPECT_EQ(d.line, 1u);  // at its key
         EXPECT_NE(d.msg, Msg::None) << d.message;  // (made from the catalogue: any language)
         EXPECT_EQ(essi::diagnostic_message(d, Lang::En), d.message);
     }
     EXPECT_EQ(r.diagnostics[0].message, "\"kerf\" must be a number");
+    EXPECT_EQ(r.diagnostics[0].column, 24u);
+    EXPECT_EQ(r.diagnostics[1].column, 2u);
     EXPECT_EQ(r.diagnostics[1].message, "\"feed_mm_min\" must be between 1e-09 and 1000000000; found 1e+300");
     EXPECT_EQ(essi::diagnostic_message(r.diagnostics[1], Lang::De),
               "\"feed_mm_min\" muss zwischen 1e-09 und 1000000000 liegen; gefunden: 1e+300");

@@ -271,3 +271,47 @@ TEST(StatsRows, WhatEssiStatsLists) {
     EXPECT_EQ(rows[9].key, essi::Msg::StatsCutBox);
     EXPECT_EQ(rows[9].text(Lang::De), "keiner");
 }
+
+// With the profile's accel_mm_s2, costs and consumables the machine time, the cost and the electrodes are rows of
+// essi stats and go under "Time and cost". tests/data/machine_time/line.esi: 1.2 s (line.expected), one pierce
+// (of 0 s): machine 3600/h × 1.2 s = 1.20, pierce 0.50, cut 0.00, material none (no plate_mm): 1.70 EUR; an
+// electrode lasts 4 pierces: 0.25 of one.
+TEST(JobSheet, TheMachineTimeAndTheCostUnderTimeAndCost) {
+    const essi::ProfileResult p = essi::parse_profile(
+        R"({"accel_mm_s2": 500, "pierce_time_s": 0, "costs": {"currency": "EUR", "machine_per_hour": 3600,
+            "per_pierce": 0.5}, "consumables": {"electrode_pierces": 4}})");
+    ASSERT_TRUE(p.profile.has_value());
+    const std::string bytes = read_file(test_data_dir() + "/machine_time/line.esi");
+    const essi::TapeSetup setup = essi::setup_tape(bytes, std::nullopt, *p.profile);
+    essi::JobSheetInput in;
+    in.tape_name = "line.esi";
+    in.lang = Lang::De;
+    const essi::JobSheetResult r = essi::job_sheet(bytes, setup, in);
+    const JobSheet& s = r.sheet;
+    EXPECT_EQ(field(s, "time", essi::Msg::StatsMachineTime, Lang::De), "1.2 s (0:00:01)");
+    EXPECT_EQ(field(s, "time", essi::Msg::StatsMachineTimeBreakdown, Lang::De),
+              "Schneiden 1.2 s, Markieren 0.0 s, Eilgang 0.0 s, Leerweg 0.0 s, Anschnitt 0.0 s, Verweilen 0.0 s; "
+              "davon Beschleunigen 0.2 s");
+    EXPECT_EQ(field(s, "time", essi::Msg::StatsCost, Lang::De), "1.70 EUR");
+    EXPECT_EQ(field(s, "time", essi::Msg::StatsCostBreakdown, Lang::De),
+              "Maschine 1.20 EUR (Maschinenzeit), Anschnitte 0.50 EUR, Schnitt 0.00 EUR, Material keiner");
+    EXPECT_EQ(field(s, "time", essi::Msg::StatsElectrodes, Lang::De), "0.2500 (1 Anschnitt, 1.2 s Lichtbogen an)");
+    EXPECT_EQ(field(s, "statistics", essi::Msg::StatsMachineTime, Lang::De), "(no field)");
+}
+
+TEST(StatsRows, TheMachineTimeCostAndElectrodesAfterTheEstimate) {
+    essi::Stats st;
+    st.machine_time = essi::MachineTime{};
+    st.cost = essi::Cost{};
+    st.consumables = essi::ConsumableUse{};
+    const std::vector<essi::StatsRow> rows = essi::stats_rows(st);
+    ASSERT_EQ(rows.size(), 16u);
+    EXPECT_EQ(rows[8].key, essi::Msg::StatsEstimatedTime);
+    EXPECT_EQ(rows[9].key, essi::Msg::StatsMachineTime);
+    EXPECT_EQ(rows[10].key, essi::Msg::StatsMachineTimeBreakdown);
+    EXPECT_EQ(rows[11].key, essi::Msg::StatsCost);
+    EXPECT_EQ(rows[12].key, essi::Msg::StatsCostBreakdown);
+    EXPECT_EQ(rows[12].text(Lang::En), "machine 0.00 (estimated time), pierces 0.00, cut 0.00, material none");
+    EXPECT_EQ(rows[13].key, essi::Msg::StatsElectrodes);
+    EXPECT_EQ(rows[14].key, essi::Msg::StatsCutBox);
+}

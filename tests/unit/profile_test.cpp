@@ -126,16 +126,20 @@ TEST(ProfileParse, EmptyObjectIsTheBase) {
 }
 
 TEST(ProfileParse, MalformedJsonE402NeverThrows) {
+    // Text that is no JSON object has no key to point at (the message says where the JSON stops); a key's problem
+    // is at the key (line 1, column 2 here).
     for (const char* text : {"{ \"feed_mm_min\": ", "not json", "", "[1, 2]", "{\"feed_mm_min\": \"fast\"}",
                              "{\"base\": \"nosuch\"}", "{\"whitespace\": \"sometimes\"}"}) {
         ProfileResult r;
         EXPECT_NO_THROW(r = parse_profile(text)) << text;
         EXPECT_FALSE(r.profile.has_value()) << text;
         ASSERT_FALSE(r.diagnostics.empty()) << text;
+        const bool key = std::string_view(text).starts_with("{\"") && std::string_view(text).ends_with("}");
         for (const auto& d : r.diagnostics) {
             EXPECT_EQ(d.code, DiagCode::E402_BadProfile) << text;
             EXPECT_EQ(d.severity, Severity::Error) << text;
-            EXPECT_EQ(d.line, 0u) << text;
+            EXPECT_EQ(d.line, key ? 1u : 0u) << text;
+            EXPECT_EQ(d.column, key ? 2u : 0u) << text;
             EXPECT_FALSE(d.message.empty()) << text;
         }
     }

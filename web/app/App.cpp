@@ -53,6 +53,7 @@ void App::frame() {
     }
     input_.handle_shortcuts();
     input_.handle_canvas();
+    load_.set_colour_by(layers_.colour_by);
     load_.maybe_rebuild(view.chord_tolerance_mm());
     panels_.draw();
     prepare_scene();  // (drawn by render(), below the panels)

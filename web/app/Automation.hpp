@@ -58,6 +58,13 @@ public:
     void set_layout(const panels::PanelLayout& layout) { p_.preferences.set_layout(layout); }
     void compare_with(std::string name, const std::string& bytes) { p_.session.compare_with(std::move(name), bytes); }
     void end_compare() { p_.compare.end(); }
+    void print_job_sheet() { p_.exports.print_job_sheet(); }
+    // Colour by (ColourBy.hpp): "kind", "feed" or "order"; false for another name.
+    bool set_colour_by(std::string_view name) {
+        const std::optional<ColourBy> by = colour_by_named(name);
+        if (by) p_.layers.colour_by = *by;
+        return by.has_value();
+    }
     // The k-th difference's contour shown (CompareMode::show_contour).
     void show_difference(int k);
     void export_view_png() { p_.exports.export_view_png(); }

@@ -169,6 +169,21 @@ json layers_json(const Layers& l) {
     return j;
 }
 
+// Colour by: the choice, the one drawn (the segments are made again after a change) and its legend, each line
+// with its bins' colours (0-255).
+json colour_by_json(const Layers& l, const LoadController& load) {
+    json legend = json::array();
+    for (const ColourLegendEntry& e : load.buffers().colour_legend(ui_lang())) {
+        json colors = json::array();
+        for (std::size_t b = e.first_bin; b <= e.last_bin; ++b) {
+            const Rgba& c = kColourRamp[b];
+            colors.push_back({std::lround(c.r * 255), std::lround(c.g * 255), std::lround(c.b * 255)});
+        }
+        legend.push_back({{"text", e.text}, {"colors", colors}});
+    }
+    return {{"mode", colour_by_name(l.colour_by)}, {"drawn", colour_by_name(load.buffers().colour_by())}, {"legend", legend}};
+}
+
 // How the last load went in frame numbers (LoadController::LoadFrames): a tape loaded at once (under 1 MB) handed
 // over after frame N is drawable before frame N + 1 and shown by it.
 json load_frames_json(const LoadController::LoadFrames& lf) {
@@ -293,6 +308,19 @@ void add_panels(json& j, const Automation::Parts& p) {
     j["toolbar"] = toolbar_json(ui);
 }
 
+// The Job panel's sections as they are shown: [{id, title, fields: [[label, value] ...], table: {columns, rows}}].
+json job_json(Exports& exports) {
+    json sections = json::array();
+    for (const SheetSection& s : exports.job_sections()) {
+        json fields = json::array();
+        for (const SheetField& f : s.fields) fields.push_back({f.label, f.value});
+        json section = {{"id", s.id}, {"title", s.title}, {"fields", fields}};
+        if (s.table) section["table"] = {{"columns", s.table->columns}, {"rows", s.table->rows}};
+        sections.push_back(std::move(section));
+    }
+    return sections;
+}
+
 }  // namespace
 
 std::string Automation::state_json() const {
@@ -306,6 +334,7 @@ std::string Automation::state_json() const {
     j["view"] = view_json(p_.navigation.view(), p_.navigation.origin(), cs, p_.shares.query());
     j["layers"] = layers_json(p_.layers);
     j["problems_only"] = p_.layers.problems_only;
+    j["colour_by"] = colour_by_json(p_.layers, p_.load);
     j["marks"] = doc ? marks_json(*doc, p_.navigation.view(), p_.ui.hovered_mark, selection.line) : json(nullptr);
     j["playback"] = playback_json(p_.playback, doc, cs);
     j["measure"] = measure_json(p_.measure, cs);
@@ -319,6 +348,7 @@ std::string Automation::state_json() const {
     j["fonts"] = fonts_json(p_.fonts, p_.ui_renderer);
     j["lang"] = lang_code(ui_lang());
     j["kind_colors"] = kind_colors_json();
+    j["job"] = doc ? job_json(p_.exports) : json(nullptr);
     return j.dump();
 }
 

@@ -1,11 +1,13 @@
 #include "app/Exports.hpp"
 
+#include <ctime>
 #include <span>
 
 #include "app/Describe.hpp"
 #include "app/Language.hpp"
 #include "essi/dxf.hpp"
 #include "essi/render_svg.hpp"
+#include "essi/sha256.hpp"
 #include "essi/text.hpp"
 #include "essi/text_report.hpp"
 #include "essi/write.hpp"
@@ -23,6 +25,7 @@ const char* export_extension(const std::string& format) {
            : format == "report-json" ? ".report.json"
            : format == "report-csv"  ? ".problems.csv"
            : format == "view-svg"    ? ".view.svg"
+           : format == "job-html"    ? ".job.html"
                                      : ".esi";
 }
 
@@ -92,6 +95,11 @@ std::string Exports::export_text(const std::string& format) const {
         o.view = navigation_.visible_box();
         return render_svg(d->bytes, d->profile, o, d->setup.format).svg;
     }
+    if (format == "job-html") {
+        JobSheetInput in = job_input(*d);
+        in.sha256 = sha256_hex(d->bytes);
+        return job_sheet_html(job_sheet_of(d->bytes, d->setup, report().result, in));
+    }
     if (format == "report-json" || format == "report-csv") {
         const FileReport r = report();
         const std::span<const FileReport> one(&r, 1);
@@ -109,6 +117,37 @@ void Exports::export_file(const std::string& format) {
     const Document* d = session_.document();
     if (!d) return notices_.notify(Msg::UiLoadFirst);
     platform_.save_file(stem_of(d->name) + export_extension(format), export_text(format));
+}
+
+// The sheet's heading as `essi report` makes it: the tape's file name, the date now, the UI's language.
+JobSheetInput Exports::job_input(const Document& d) const {
+    JobSheetInput in;
+    in.tape_name = d.name;
+    in.created_unix = static_cast<std::int64_t>(std::time(nullptr));
+    in.lang = ui_lang();
+    return in;
+}
+
+const std::vector<SheetSection>& Exports::job_sections() {
+    const Document* d = session_.document();
+    const JobSectionsOf now{d ? session_.documents_read() : 0, d ? d->diagnostics.size() : 0, ui_lang()};
+    if (now.load == job_of_.load && now.diagnostics == job_of_.diagnostics && now.lang == job_of_.lang)
+        return job_sections_;
+    job_of_ = now;
+    job_sections_.clear();
+    if (!d) return job_sections_;
+    const FileReport r = report();
+    JobSheet sheet = make_job_sheet(r.result, d->profile, SheetDrawing{}, sheet_parts(r.result), job_input(*d));
+    for (SheetSection& s : sheet.sections)
+        if (s.id == "time" || s.id == "parts" || s.id == "plates") job_sections_.push_back(std::move(s));
+    return job_sections_;
+}
+
+void Exports::print_job_sheet() {
+    const Document* d = session_.document();
+    if (!d) return notices_.notify(Msg::UiLoadFirst);
+    const std::string name = stem_of(d->name) + export_extension("job-html");
+    if (!platform_.show_html(name, export_text("job-html"))) notices_.notify(Msg::UiJobSaved, {display_text(name)});
 }
 
 void Exports::export_view_png() {

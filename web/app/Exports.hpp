@@ -1,14 +1,17 @@
 // What the viewer gives away: the report (as `essi check` makes it), a problem, a source line or the inspector's text
-// copied to the clipboard; the tape converted or drawn saved as a file (the Export menu); the view as a PNG picture.
+// copied to the clipboard; the tape converted or drawn saved as a file (the Export menu); the view as a PNG picture;
+// the job sheet (essi report's, essi/job_sheet.hpp): its sections for the Job panel and its page to print.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "app/Navigation.hpp"
 #include "app/Notices.hpp"
 #include "app/PlatformServices.hpp"
 #include "app/Session.hpp"
+#include "essi/job_sheet.hpp"
 #include "essi/report_json.hpp"
 
 namespace essi::viewer {
@@ -29,8 +32,8 @@ public:
     [[nodiscard]] const std::string& copied() const { return copied_; }
 
     // The tape converted (`essi convert`: "essi", "eia", "gcode" in the profile it is read with), drawn ("dxf",
-    // "view-svg") or its report ("report-text", "report-json", "report-csv"); empty without a tape. export_file
-    // saves it (a download in the browser).
+    // "view-svg"), its report ("report-text", "report-json", "report-csv") or its job sheet as `essi report`
+    // writes it ("job-html"); empty without a tape. export_file saves it (a download in the browser).
     [[nodiscard]] std::string export_text(const std::string& format) const;
     void export_file(const std::string& format);
 
@@ -40,8 +43,15 @@ public:
     // Right after that frame is drawn: its drawing area (framebuffer pixels) saved.
     void save_view_png(PixelRect area);
 
+    // The job sheet's sections the Job panel shows (time and cost, parts, plates), in the UI's language: made again
+    // when the tape, its diagnostics (the cut plan's join later) or the language change.
+    [[nodiscard]] const std::vector<SheetSection>& job_sections();
+    // The job sheet in a new tab of the browser, to read and print (saved as a file where no tab opens).
+    void print_job_sheet();
+
 private:
     [[nodiscard]] std::string inspector_text(const Document& d) const;
+    [[nodiscard]] JobSheetInput job_input(const Document& d) const;
 
     const Session& session_;
     const Navigation& navigation_;
@@ -49,6 +59,12 @@ private:
     PlatformServices& platform_;
     std::string copied_;
     bool png_pending_ = false;
+    struct JobSectionsOf {  // what job_sections() were made for
+        std::uint64_t load = 0;  // Session::documents_read when it was made (0: never)
+        std::size_t diagnostics = 0;
+        Lang lang = Lang::En;
+    } job_of_;
+    std::vector<SheetSection> job_sections_;
 };
 
 }  // namespace essi::viewer

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 
+#include "app/ColourBy.hpp"
 #include "essi/motion.hpp"
 #include "render/Palette.hpp"
 
@@ -20,6 +21,8 @@ struct Layers {
     // The problems only: what no diagnostic concerns drawn faint (the marks, the blocks, contours and related places
     // of the diagnostics in full); kept across sessions (Preferences::set_problems_only).
     bool problems_only = false;
+    // The cuts and marks in the colour of their feed or cut order (ColourBy.hpp) rather than their kind's.
+    ColourBy colour_by = ColourBy::Kind;
 
     [[nodiscard]] bool& kind(MotionKind k) { return kinds[static_cast<std::size_t>(k)]; }
     [[nodiscard]] bool kind(MotionKind k) const { return kinds[static_cast<std::size_t>(k)]; }

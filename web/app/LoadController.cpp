@@ -50,6 +50,7 @@ bool LoadController::step() {
         ++frames_.steps;
         if (!loader_->step(at_once ? kNoLimit : kStepBudgetMs)) return false;
         doc_ = loader_->take();
+        ++documents_;
         if (loader_->plan_pending()) plan_ = std::move(loader_);
         loader_.reset();
         return true;
@@ -128,7 +129,7 @@ void LoadController::begin_drawing(double tolerance, double zoom, double framebu
     renderer_.release(gpu_building_);
     buffers_ = PathBuffers{};
     building_ = std::make_unique<PathBuffers>();
-    building_->begin(d, tolerance);
+    building_->begin(d, tolerance, colour_by_);
     if (graphics_ok_) renderer_.upload_markers(building_->markers);
     building_->markers = std::vector<MarkerInstance>();  // (the GPU has them)
     renderer_.clear_lod();
@@ -160,12 +161,13 @@ void LoadController::begin_overview(double zoom, double framebuffer_scale) {
 }
 
 void LoadController::maybe_rebuild(double tolerance) {
-    if (!doc_ || loader_ || building_ || doc_->curves == 0) return;
+    if (!doc_ || loader_ || building_) return;
     const double have = buffers_.tolerance();
-    if (have > tolerance * kRebuildCoarser || have < tolerance / kRebuildFiner) {
+    const bool recolour = buffers_.colour_by() != colour_by_;
+    if (recolour || (doc_->curves > 0 && (have > tolerance * kRebuildCoarser || have < tolerance / kRebuildFiner))) {
         renderer_.release(gpu_building_);
         building_ = std::make_unique<PathBuffers>();
-        building_->begin(*doc_, tolerance);
+        building_->begin(*doc_, tolerance, colour_by_);
         if (doc_->motions.size() <= kBuildMotionsPerFrame) build(glfwGetTime() + kStepBudgetMs / 1000.0);
     }
 }

@@ -66,6 +66,9 @@ public:
     void begin_drawing(double tolerance, double zoom, double framebuffer_scale);
     // The segments again at `tolerance` when the drawn ones are too coarse (zoomed in 2x) or too fine (out 16x).
     void maybe_rebuild(double tolerance);
+    // The cuts' colours (Layers::colour_by): a new choice makes the segments again (maybe_rebuild) and the next
+    // drawing with it.
+    void set_colour_by(ColourBy by) { colour_by_ = by; }
     // This frame's scene (before it is drawn): whether it draws the tape (the first such frame after a load gives
     // shown_seconds()); a frame while loading shows the progress bar.
     void note_frame(bool drawn);
@@ -93,6 +96,9 @@ public:
     [[nodiscard]] bool reading() const { return loader_ != nullptr; }
 
     [[nodiscard]] const Document* document() const { return doc_.get(); }
+    // The documents read so far (the current one's number): what a cache of something worked out from the document
+    // is keyed by (a new document may take the old one's address).
+    [[nodiscard]] std::uint64_t documents_read() const { return documents_; }
     [[nodiscard]] const PathBuffers& buffers() const { return buffers_; }
     [[nodiscard]] const PathBuffers* building() const { return building_.get(); }
     // The segments to draw: none while the first build runs (nothing of a new tape is drawn until it is complete).
@@ -132,6 +138,8 @@ private:
 
     // The document and its drawing
     std::unique_ptr<Document> doc_;
+    std::uint64_t documents_ = 0;
+    ColourBy colour_by_ = ColourBy::Kind;
     PathBuffers buffers_;           // the drawn set's motion -> segment map (its segments are on the GPU only)
     GpuPath gpu_;                   // the drawn segments
     std::unique_ptr<PathBuffers> building_;  // being built (first build or a rebuild at a new tolerance)

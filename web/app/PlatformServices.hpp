@@ -47,6 +47,9 @@ public:
     virtual void open_button_at(float x, float y, float width, float height) = 0;
     // Saves `text` as a file called `name`: the browser's download, or a file in the current folder natively.
     virtual void save_file(const std::string& name, const std::string& text) = 0;
+    // Shows `html`, a whole page, in a new tab of the browser (to read and print); where none opens (a pop-up
+    // blocker, the desktop viewer) saves it as the file `name` instead and returns false.
+    virtual bool show_html(const std::string& name, const std::string& html) = 0;
     // Saves the frame just drawn, cropped to `area`, as a PNG file `name`: the browser's download; natively a
     // message that the browser viewer does it.
     virtual void save_view_png(const std::string& name, PixelRect area) = 0;

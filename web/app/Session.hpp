@@ -47,6 +47,7 @@ public:
     explicit Session(const Parts& parts);
 
     [[nodiscard]] const Document* document() const { return load_.document(); }
+    [[nodiscard]] std::uint64_t documents_read() const { return load_.documents_read(); }
 
     // --- Opening ---
     // A file's bytes: a profile file (`.json`: the tape is read again with it), the other revision in compare

@@ -198,6 +198,10 @@ EMSCRIPTEN_KEEPALIVE void essi_compare_commit(const char* name) {
 EMSCRIPTEN_KEEPALIVE void essi_end_compare() {
     if (g_api) g_api->end_compare();
 }
+// The job sheet's print view (the Job panel's Print view button): a new tab, or a download where none opens.
+EMSCRIPTEN_KEEPALIVE void essi_print_job_sheet() {
+    if (g_api) g_api->print_job_sheet();
+}
 EMSCRIPTEN_KEEPALIVE void essi_show_difference(int k) {
     if (g_api) g_api->show_difference(k);
 }
@@ -215,6 +219,11 @@ EMSCRIPTEN_KEEPALIVE void essi_set_comment_encoding(const char* name) {
 // The problems-only view: 1 on (what no diagnostic concerns drawn faint), 0 off (kept across sessions).
 EMSCRIPTEN_KEEPALIVE void essi_set_problems_only(int on) {
     if (g_api) g_api->set_problems_only(on != 0);
+}
+
+// Colour by: "kind", "feed" or "order" (1: done, 0: no such name).
+EMSCRIPTEN_KEEPALIVE int essi_set_colour_by(const char* name) {
+    return g_api && g_api->set_colour_by(name ? name : "") ? 1 : 0;
 }
 
 // The theme: 1 light, 0 dark (kept across sessions).

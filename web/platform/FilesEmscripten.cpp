@@ -38,6 +38,22 @@ void Platform::save_file(const std::string& name, const std::string& text) {
     }, name.c_str(), text.data(), static_cast<int>(text.size()));
 }
 
+bool Platform::show_html(const std::string& name, const std::string& html) {
+    // A blob: page in a new tab (under the viewer's Content Security Policy, which allows the sheet's style sheet);
+    // window.essikitLastPrintView keeps its address (the tests read it). The URL is kept while the page lives: the
+    // tab may be reloaded.
+    // (no commas inside the JavaScript: the EM_ASM macro would split its argument there)
+    const int opened = EM_ASM_INT({
+        const blob = new Blob([HEAPU8.slice($0, $0 + $1)], {type: 'text/html;charset=utf-8'});
+        const url = URL.createObjectURL(blob);
+        window.essikitLastPrintView = url;
+        return window.open(url, '_blank') ? 1 : 0;
+    }, html.data(), static_cast<int>(html.size()));
+    if (opened) return true;
+    save_file(name, html);
+    return false;
+}
+
 void Platform::open_example(const std::string& name) {
     EM_ASM({ window.essikitOpenExample(UTF8ToString($0)); }, name.c_str());
 }

@@ -58,6 +58,11 @@ void Platform::save_file(const std::string& name, const std::string& text) {
     notify(out ? Msg::UiWrote : Msg::UiCannotWrite, {name});
 }
 
+bool Platform::show_html(const std::string& name, const std::string& html) {
+    save_file(name, html);  // (no browser here: the file, to open in one)
+    return true;
+}
+
 void Platform::open_example(const std::string&) {}  // (the desktop viewer has no server: no examples are offered)
 
 void Platform::save_view_png(const std::string&, PixelRect) { notify(Msg::UiPngBrowserOnly); }

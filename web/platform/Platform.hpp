@@ -34,6 +34,7 @@ public:
     void open_file_dialog() override;
     void open_button_at(float x, float y, float width, float height) override;
     void save_file(const std::string& name, const std::string& text) override;
+    bool show_html(const std::string& name, const std::string& html) override;
     void save_view_png(const std::string& name, PixelRect area) override;
     void open_example(const std::string& name) override;
     void copy_text(const std::string& text) override;

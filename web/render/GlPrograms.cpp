@@ -124,6 +124,7 @@ bool ScenePrograms::init(int tex_width) {
             p("u_band_half_mm"), p("u_alpha")};
     p.set("u_alpha", 1.f);
     p.set("u_colors", kPathColorTable.data(), kPathColors);
+    p.set("u_ramp", kColourRamp.data(), kColourBins);
     p.set("u_segs", 0);   // texture unit 0: the end points
     p.set("u_kinds", 1);  // unit 1: the kinds
     p.set("u_tex_width", tex_width);

@@ -43,6 +43,21 @@ inline constexpr std::array<Rgba, kPathColors> kPathColorTable = {{
     {1.00f, 0.55f, 0.10f, 0.28f},  // kerf band: the cut's colour, translucent
 }};
 
+// Colour by (app/ColourBy.hpp): a cut's segments in colour bin b are of kind kColourByCutKind + b, a mark's of
+// kColourByMarkKind + b; the bins are the ramp's colours, low to high.
+inline constexpr std::size_t kColourBins = 16;
+inline constexpr std::uint8_t kColourByCutKind = kKerfBandKind + kKerfBandWidths;
+inline constexpr std::uint8_t kColourByMarkKind = kColourByCutKind + kColourBins;
+// The ramp: "turbo" from blue to red, its darkest ends left out (bright on the dark and the light theme).
+inline constexpr std::array<Rgba, kColourBins> kColourRamp = {{
+    {0.27f, 0.40f, 0.92f, 1.00f}, {0.21f, 0.55f, 0.98f, 1.00f}, {0.16f, 0.69f, 0.92f, 1.00f},
+    {0.15f, 0.81f, 0.80f, 1.00f}, {0.19f, 0.91f, 0.67f, 1.00f}, {0.29f, 0.97f, 0.53f, 1.00f},
+    {0.43f, 0.99f, 0.41f, 1.00f}, {0.60f, 0.98f, 0.31f, 1.00f}, {0.76f, 0.93f, 0.24f, 1.00f},
+    {0.90f, 0.84f, 0.19f, 1.00f}, {1.00f, 0.72f, 0.15f, 1.00f}, {1.00f, 0.58f, 0.13f, 1.00f},
+    {0.99f, 0.43f, 0.10f, 1.00f}, {0.90f, 0.28f, 0.07f, 1.00f}, {0.76f, 0.15f, 0.04f, 1.00f},
+    {0.63f, 0.07f, 0.00f, 1.00f},
+}};
+
 // The point markers (the marker program's `type`, a texel's third value): pierces, the start point, the playback
 // tool, and a mark per diagnostic in its severity's colour (Error, Warning, Note: the diagnostics' marks).
 enum class MarkerType { Pierce = 0, Start = 1, Tool = 2, Error = 3, Warning = 4, Note = 5 };

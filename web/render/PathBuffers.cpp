@@ -24,9 +24,11 @@ PathBuffers::~PathBuffers() = default;
 PathBuffers::PathBuffers(PathBuffers&&) noexcept = default;
 PathBuffers& PathBuffers::operator=(PathBuffers&&) noexcept = default;
 
-void PathBuffers::begin(const Document& doc, double tol) {
+void PathBuffers::begin(const Document& doc, double tol, ColourBy colour_by) {
     doc_ = &doc;
     tolerance_ = std::max(tol, kMinChordTolerance);
+    colour_by_ = colour_by;
+    bins_ = colour_by == ColourBy::Kind ? nullptr : std::make_unique<ColourBins>(doc, colour_by);
     kerf_segments = 0;
     kerf_widths.fill(0);
     kerf_width_count = 0;
@@ -78,7 +80,11 @@ bool PathBuffers::step(std::size_t max_motions) {
         const Motion& m = doc.motions[next_];
         first_segment.push_back(static_cast<std::uint32_t>(segment_count));
         if (kerf_) kerf_->motion(doc.record(next_));
-        const auto kind = static_cast<std::uint8_t>(m.kind);
+        auto kind = static_cast<std::uint8_t>(m.kind);
+        if (bins_) {
+            if (const std::optional<std::uint8_t> bin = bins_->bin(next_))
+                kind = static_cast<std::uint8_t>((m.kind == MotionKind::Cut ? kColourByCutKind : kColourByMarkKind) + *bin);
+        }
         // A cut by several torches (kept: its record says how many) is drawn once per torch.
         const MotionRecord* torches = doc.torch_copies(next_);
         const int copies = torches ? torches->torches : 1;

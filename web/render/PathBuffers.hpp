@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "app/ColourBy.hpp"
 #include "app/Document.hpp"
 #include "essi/kerf.hpp"
 #include "render/Palette.hpp"
@@ -30,12 +31,18 @@ public:
     // (moved only when complete or new: a build in progress has its kerf path point at it)
     PathBuffers(PathBuffers&&) noexcept;
     PathBuffers& operator=(PathBuffers&&) noexcept;
-    void begin(const Document& doc, double chord_tolerance_mm);
+    // `colour_by`: the cuts' and marks' segments of a colour bin get its kind (kColourByCutKind, render/Palette.hpp).
+    void begin(const Document& doc, double chord_tolerance_mm, ColourBy colour_by = ColourBy::Kind);
     // Flattens up to `max_motions` more motions into the staging area; returns true when complete.
     bool step(std::size_t max_motions);
     [[nodiscard]] bool complete() const { return doc_ != nullptr && next_ >= doc_->motions.size(); }
     [[nodiscard]] float progress() const;
     [[nodiscard]] double tolerance() const { return tolerance_; }
+    [[nodiscard]] ColourBy colour_by() const { return colour_by_; }
+    // What the colours of colour_by() stand for (none by kind).
+    [[nodiscard]] std::vector<ColourLegendEntry> colour_legend(Lang lang) const {
+        return bins_ ? bins_->legend(lang) : std::vector<ColourLegendEntry>{};
+    }
     // The final segment count once complete, a projection from the share built so far before.
     [[nodiscard]] std::size_t estimated_segments() const;
 
@@ -69,6 +76,8 @@ private:
 
     const Document* doc_ = nullptr;
     double tolerance_ = 0.01;
+    ColourBy colour_by_ = ColourBy::Kind;
+    std::unique_ptr<ColourBins> bins_;  // (colour by a value)
     std::size_t next_ = 0;
     std::vector<Point> scratch_;
     std::vector<Point> kerf_scratch_;  // (a piece is flattened while a motion's may be in scratch_)

@@ -23,6 +23,8 @@ enum Code : int {
     kLeftBevelOff = 14,
     kRightBevelOn = 15,
     kRightBevelOff = 16,
+    kAccelerationControlOn = 17,  // decelerate at the end of every block, until 18
+    kAccelerationControlOff = 18,
     kThreeAxisOn = 19,
     kTwoAxisOn = 20,
     kAxesNormal = 21,  // 21-28: the mapping of the tape's X/Y to the machine's axes (docs/semantics.md §7)

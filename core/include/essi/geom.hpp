@@ -2,6 +2,7 @@
 // parabolas (§6) with closed-form lengths, exact bounding boxes and flattening within a chord tolerance.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "essi/motion.hpp"
@@ -60,6 +61,60 @@ struct ParabolaPiece {
                                                 bool absolute);
 // Whether the piece turns counter-clockwise as t goes from t0 to t1 (t1 != t0).
 [[nodiscard]] bool parabola_turns_ccw(const ParabolaGeom& g);
+
+namespace geom_detail {
+// A vector scaled to length 1; the zero vector stays zero.
+[[nodiscard]] inline Point unit_vector(double x, double y) {
+    const double n = std::sqrt(x * x + y * y);  // (hypot: much slower, no range needed)
+    if (!(n > 0)) return {};
+    const double k = 1 / n;
+    return {x * k, y * k};
+}
+}  // namespace geom_detail
+
+// The direction of travel (a unit vector) of an arc at a point of it, `radius` from the centre when that is known
+// (a programmed arc's radii: no square root; 0 when not).
+[[nodiscard]] inline Point arc_tangent(Point p, Point centre, bool ccw, double radius) {
+    Point r;
+    if (radius > 0) {
+        const double k = 1 / radius;
+        r = {(p.x - centre.x) * k, (p.y - centre.y) * k};
+    } else {
+        r = geom_detail::unit_vector(p.x - centre.x, p.y - centre.y);
+    }
+    return ccw ? Point{-r.y, r.x} : Point{r.y, -r.x};
+}
+
+// A straight motion's direction (a unit vector) from its known length.
+[[nodiscard]] inline Point line_direction(const MotionRecord& m) {
+    if (!(m.length_mm > 0)) return geom_detail::unit_vector(m.end.x - m.start.x, m.end.y - m.start.y);
+    const double k = 1 / m.length_mm;
+    return {(m.end.x - m.start.x) * k, (m.end.y - m.start.y) * k};
+}
+
+// A parabola's direction of travel (a unit vector) at parameter t, t running from t0 to t1.
+[[nodiscard]] inline Point parabola_tangent(const ParabolaGeom& g, double t) {
+    const double k = t / g.p;
+    const double sign = g.t1 >= g.t0 ? 1.0 : -1.0;
+    return geom_detail::unit_vector(sign * (g.u.x + k * g.n.x), sign * (g.u.y + k * g.n.y));
+}
+// The direction of travel (a unit vector) at a motion's start or end: a line's direction, the tangent of an arc
+// or a parabola; the zero vector for a motion that has none (a line of length 0). Inline: the kerf path asks
+// for them at every corner.
+[[nodiscard]] inline Point tangent_at(const MotionRecord& m, bool end) {
+    switch (m.curve) {
+        case CurveKind::Line: return line_direction(m);
+        case CurveKind::Arc:
+            return arc_tangent(end ? m.end : m.start, m.centre, m.ccw, end ? m.end_radius : m.radius);
+        case CurveKind::Parabola: return parabola_tangent(m.parabola, end ? m.parabola.t1 : m.parabola.t0);
+    }
+    return {};
+}
+[[nodiscard]] inline Point start_tangent(const MotionRecord& m) { return tangent_at(m, false); }
+[[nodiscard]] inline Point end_tangent(const MotionRecord& m) { return tangent_at(m, true); }
+// The smallest radius of curvature along a motion (mm): an arc's smaller radius, a parabola's at its point
+// nearest the vertex; infinity for a line.
+[[nodiscard]] double min_curvature_radius(const MotionRecord& m);
 
 // Closed-form length of a parabola piece.
 [[nodiscard]] double parabola_length(const ParabolaGeom& g);

@@ -168,9 +168,16 @@ struct JobSheetResult {
     CheckResult result;
 };
 [[nodiscard]] JobSheetResult job_sheet(std::string_view bytes, const TapeSetup& setup, const JobSheetInput& in);
+// The sheet of a tape already checked as `setup` says (`result`, its diagnostics all there: at most
+// in.max_diagnostics of them are listed): what the viewer prints.
+[[nodiscard]] JobSheet job_sheet_of(std::string_view bytes, const TapeSetup& setup, CheckResult result,
+                                    const JobSheetInput& in);
 
 // The sheet as one self-contained HTML file: CSS and the drawing (SVG) inline, A4 when printed. Well-formed XML
 // too (every element closed, text escaped).
 [[nodiscard]] std::string job_sheet_html(const JobSheet& sheet);
+// The style sheet of that HTML, its one <style> element's text: a page that shows the sheet under a Content
+// Security Policy allows exactly this (the viewer's, native/serve_security.cpp). The sheet has no other inline style.
+[[nodiscard]] const std::string& job_sheet_css();
 
 }  // namespace essi

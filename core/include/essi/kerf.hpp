@@ -66,6 +66,8 @@ public:
     // Whether a compensated piece is open (the next motion decides its end): while not, a motion without
     // compensation passes unchanged.
     [[nodiscard]] bool open() const { return open_; }
+    // The block of the open piece (while open()): what the next motion's pieces come after.
+    [[nodiscard]] std::uint32_t open_block() const { return pieces_[open_index_].rec.block; }
     [[nodiscard]] bool has_gouges() const { return !gouges_.empty(); }
     // The gouges found so far, in the order found; taking them empties the list.
     [[nodiscard]] std::vector<KerfGouge> take_gouges();

@@ -77,6 +77,21 @@ struct PlateSize {
     double x_mm = 0, y_mm = 0;
     friend bool operator==(const PlateSize&, const PlateSize&) = default;
 };
+// What the machine, the pierces, the cut and the material cost (profile key `costs`, docs/semantics.md §9).
+struct Costs {
+    std::string currency;
+    double machine_per_hour = 0;
+    double per_pierce = 0;
+    double per_m_cut = 0;
+    double material_per_kg = 0;
+    friend bool operator==(const Costs&, const Costs&) = default;
+};
+// How long an electrode lasts (profile key `consumables`); a life not given takes no part.
+struct ElectrodeLife {
+    std::optional<double> pierces;  // electrode_pierces
+    std::optional<double> arc_s;    // electrode_arc_s
+    friend bool operator==(const ElectrodeLife&, const ElectrodeLife&) = default;
+};
 
 // The default of Profile::max_per_code, and the largest value it takes (0: no limit).
 constexpr std::size_t kDefaultMaxPerCode = 1000;
@@ -109,9 +124,15 @@ struct Profile {
     double rapid_mm_min = 10000.0;              // rapid traverse speed
     double pierce_time_s = 2.0;                 // added once per pierce
 
-    // The plate (§9, "Parts and plates"): its material (the parts' mass, the scrap) and size (utilisation, remnant)
+    // Machine time (§9): the path acceleration (none: no machine time) and grbl's junction deviation
+    std::optional<double> accel_mm_s2;
+    double junction_deviation_mm = 0.01;
+
+    // The plate and the costs (§9)
     std::optional<Material> material;
     std::optional<PlateSize> plate;                 // plate_mm
+    std::optional<Costs> costs;
+    std::optional<ElectrodeLife> consumables;
 
     // EIA tapes (§10): the dialect's words and rules (default: the Woyda table)
     EiaDialect eia;

@@ -3,8 +3,13 @@
 // sink: a call per motion and per function block of every tape that is checked.
 #pragma once
 
+#include <optional>
+
+#include "essi/cost.hpp"
+#include "essi/function_codes.hpp"
 #include "essi/geom.hpp"
 #include "essi/kerf.hpp"
+#include "essi/machine_time.hpp"
 #include "essi/motion.hpp"
 #include "essi/placement.hpp"
 #include "essi/profile.hpp"
@@ -26,6 +31,9 @@ struct Stats {
     Box machine_cut_bbox;          // the same in machine coordinates (§12: zero offset, plate rotation, tool offsets)
     Box machine_motion_bbox;       // ... and where the carriage goes when a tool offset is selected
     Point end_position;            // machine position at the end (head 1)
+    std::optional<MachineTime> machine_time;     // with the profile's accel_mm_s2 (§9)
+    std::optional<Cost> cost;                    // with the profile's costs
+    std::optional<ConsumableUse> consumables;    // with the profile's consumables
 };
 
 // The time a motion of `length_mm` takes at `feed_mm_min` (none without a feed): what the statistics estimate
@@ -64,8 +72,15 @@ private:
 class StatsSink final : public MotionSink {
 public:
     explicit StatsSink(const Profile& profile)
-        : profile_(profile), torch_path_(stats_), kerf_(torch_path_, profile.chord_tolerance_mm), placement_(profile),
-          plain_(!placement_.turns()) {}
+        : profile_(profile), timed_(profile.accel_mm_s2 || profile.consumables), torch_path_(stats_),
+          machine_path_(*this), cutting_path_(*this),
+          kerf_(profile.accel_mm_s2   ? static_cast<MotionSink&>(machine_path_)
+                : profile.consumables ? static_cast<MotionSink&>(cutting_path_)
+                                      : torch_path_,
+                profile.chord_tolerance_mm),
+          placement_(profile), plain_(!placement_.turns()) {
+        if (profile.accel_mm_s2) [[unlikely]] timer_.emplace(*profile.accel_mm_s2, profile.junction_deviation_mm);
+    }
     StatsSink(const StatsSink&) = delete;
     StatsSink& operator=(const StatsSink&) = delete;
 
@@ -97,8 +112,12 @@ public:
         if (!plain_) [[unlikely]] add_machine_line(kind, start, end);
         add_programmed_line(kind, head, start, end, length_mm);
         TorchPath::add(stats_, kind, length_mm, feed_mm_min, 1);
+        if (timed_) [[unlikely]] time_line(kind, start, end, length_mm, feed_mm_min);
     }
-    void on_event(const MachineEvent& e) override { count_event(e.kind, e.value, e.tools_after, e.torches_after); }
+    void on_event(const MachineEvent& e) override {
+        count_event(e.kind, e.value, e.tools_after, e.torches_after);
+        if (timed_) [[unlikely]] time_event(e);
+    }
     // What on_event counts of an event: the interpreter calls it directly, without making the event.
     // Several torches pierce together: each pierce counts, the pierce time once.
     void count_event(EventKind kind, double value, std::uint8_t tools_after, std::uint8_t torches = 1) {
@@ -108,6 +127,22 @@ public:
             stats_.estimated_time_s += profile_.pierce_time_s;
         }
     }
+    // Whether the statistics follow the machine time or the consumables (the profile's accel_mm_s2 or
+    // consumables): then every event, in order, goes to time_event besides count_event.
+    [[nodiscard]] bool timed() const { return timed_; }
+    // The machine time's and the consumables' side of an event, in the tape's order (time_change).
+    void time_event(const MachineEvent& e) {
+        if (affects_time(e.kind, e.code, timed_tools_, e.tools_after)) time_change(e);
+    }
+    // Whether an event can change the machine time or the consumables: all but a function that switches no tool,
+    // other than 17, 18, 63 and 64 (most events). `tools_before`: the tools of the event before.
+    [[nodiscard]] static bool affects_time(EventKind kind, unsigned code, std::uint8_t tools_before,
+                                           std::uint8_t tools_after) {
+        constexpr std::uint8_t kTools = kCuttingTools | kMarkingTools;
+        return kind != EventKind::Function || ((tools_after ^ tools_before) & kTools) != 0 ||
+               code - fn::kAccelerationControlOn <= 1u || code - fn::kCancelFunctions <= 1u;  // (17, 18; 63, 64)
+    }
+
     // The tool offset in force from now on (11, 114, 12: the interpreter calls it): the carriage moves at once.
     void set_tool_offset(Point offset) {
         if (offset == tool_offset_) return;
@@ -123,6 +158,11 @@ public:
             stats_.machine_cut_bbox = placement_.moved(stats_.cut_bbox, {});
             stats_.machine_motion_bbox = placement_.moved(stats_.motion_bbox, {});
         }
+        if (timer_) [[unlikely]] {
+            timer_->finish(stats_.estimated_time_s);
+            stats_.machine_time = timer_->time();
+        }
+        if (profile_.costs || profile_.consumables) [[unlikely]] reckon_costs();  // (after the machine time)
     }
     // Whether a compensated piece is open: a line without compensation must then come as a record (it is the
     // exit from compensation).
@@ -141,14 +181,90 @@ private:
         void on_motion(const MotionRecord& m) override {
             add(stats_, m.kind, m.length_mm, m.feed_mm_min, m.kind == MotionKind::Cut ? m.torches : 1);
         }
-        static void add(Stats& s, MotionKind kind, double length_mm, double feed_mm_min, int torches) {
+        // Returns the motion's time.
+        static double add(Stats& s, MotionKind kind, double length_mm, double feed_mm_min, int torches) {
             if (kind == MotionKind::Cut) s.cut_length_compensated_mm += length_mm * torches;
-            s.estimated_time_s += motion_time_s(length_mm, feed_mm_min);
+            const double t = motion_time_s(length_mm, feed_mm_min);
+            s.estimated_time_s += t;
+            return t;
         }
 
     private:
         Stats& stats_;
     };
+    // The compensated path for the machine time (the profile's accel_mm_s2): its motions go to the timer too.
+    class MachineTorchPath final : public MotionSink {
+    public:
+        explicit MachineTorchPath(StatsSink& owner) : owner_(owner) {}
+        void on_motion(const MotionRecord& m) override {
+            TorchPath::add(owner_.stats_, m.kind, m.length_mm, m.feed_mm_min, m.kind == MotionKind::Cut ? m.torches : 1);
+            owner_.timer_->motion(m);
+        }
+
+    private:
+        StatsSink& owner_;
+    };
+    // The compensated path for the consumables without a machine time: the cutting time at the feed, once per torch.
+    class CuttingTimeTorchPath final : public MotionSink {
+    public:
+        explicit CuttingTimeTorchPath(StatsSink& owner) : owner_(owner) {}
+        void on_motion(const MotionRecord& m) override {
+            const int torches = m.kind == MotionKind::Cut ? m.torches : 1;
+            const double t = TorchPath::add(owner_.stats_, m.kind, m.length_mm, m.feed_mm_min, torches);
+            if (m.kind == MotionKind::Cut) owner_.torch_cutting_s_ += t * torches;
+        }
+
+    private:
+        StatsSink& owner_;
+    };
+    [[gnu::noinline]] void time_line(MotionKind kind, Point start, Point end, double length_mm, double feed_mm_min) {
+        if (timer_) timer_->line(kind, start, end, length_mm, feed_mm_min);
+        else if (kind == MotionKind::Cut) torch_cutting_s_ += motion_time_s(length_mm, feed_mm_min);
+    }
+
+    // An event that may change the time (affects_time): its dwell while cutting (the consumables), its pierce and
+    // dwell time, and whether the machine stands still there (every such event but an 83 and a 63/64 that
+    // switches no tool off: a tool on or off, a dwell, a stop, the end, 17 and 18) and stops at the end of every
+    // block from there on (17 until 18, or a 63/64 that cancels the stored functions). The timer takes those two
+    // as a pause where the torch's path reaches the place: before the next motion, or, while a compensated piece
+    // is open, before the first piece of a later block.
+    void time_change(const MachineEvent& e) {
+        constexpr std::uint8_t kTools = kCuttingTools | kMarkingTools;
+        const std::uint8_t before = timed_tools_;
+        timed_tools_ = e.tools_after;
+        bool stop = ((e.tools_after ^ before) & kTools) != 0;
+        if (e.kind == EventKind::Function) [[likely]] {
+            const unsigned code = e.code;
+            if (code - fn::kAccelerationControlOn <= 1u || code - fn::kCancelFunctions <= 1u) [[unlikely]] {
+                const bool control = code <= fn::kAccelerationControlOff;  // (17, 18; else 63, 64)
+                block_stops_ = code == fn::kAccelerationControlOn;
+                stop = stop || control;
+            }
+        } else if (e.kind != EventKind::ZeroOffset) {
+            stop = true;
+            if (e.kind == EventKind::Dwell) {
+                if (e.tools_after & kCuttingTools) cutting_dwell_s_ += e.value * e.torches_after;
+                if (timer_) timer_->add_dwell(e.value);
+            }
+        }
+        if (!timer_) return;
+        if (starts_cutting(before, e.tools_after)) timer_->add_pierce(profile_.pierce_time_s);  // (PierceTracker's rule)
+        timer_->pause(stop, block_stops_, kerf_.open() ? std::int64_t{kerf_.open_block()} : -1);
+    }
+    // The cost and the consumables, from the statistics (the machine time when there is one).
+    void reckon_costs() {
+        const bool machine = stats_.machine_time.has_value();
+        if (profile_.costs) {
+            stats_.cost = reckon_cost(*profile_.costs, profile_.material, profile_.plate,
+                                      {machine ? stats_.machine_time->total_s : stats_.estimated_time_s, machine,
+                                       stats_.pierces, stats_.cut_length_mm});
+        }
+        if (profile_.consumables) {
+            const double cutting = machine ? stats_.machine_time->torch_cutting_s : torch_cutting_s_;
+            const double arc_on = cutting + static_cast<double>(stats_.pierces) * profile_.pierce_time_s + cutting_dwell_s_;
+            stats_.consumables = consumable_use(*profile_.consumables, stats_.pierces, arc_on);
+        }
+    }
 
     // Machine boxes (§12). While the plate is not turned and no tool offset was ever selected ("plain"), they are
     // the program's moved by the zero offset, worked out once at the end; from the first tool offset on, every
@@ -227,7 +343,16 @@ private:
     const Profile& profile_;
     Stats stats_;
     PierceTracker pierces_;
+    // The machine time (with the profile's accel_mm_s2), what it follows of the events, and the consumables' times.
+    bool timed_;                  // accel_mm_s2 or consumables
+    std::optional<MachineTimer> timer_;
+    double torch_cutting_s_ = 0;  // the cutting motions at their feed, once per torch
+    double cutting_dwell_s_ = 0;  // dwells while a cutting tool is on, once per torch
+    std::uint8_t timed_tools_ = 0;
+    bool block_stops_ = false;
     TorchPath torch_path_;
+    MachineTorchPath machine_path_;
+    CuttingTimeTorchPath cutting_path_;
     KerfPath kerf_;
     Placement placement_;
     bool plain_;

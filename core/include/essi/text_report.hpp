@@ -30,17 +30,17 @@ namespace essi {
                                        Lang lang = Lang::En);
 
 // One statistic as the reports write it: its label and its value, a number with its unit (the same in every
-// language) or a word of the catalogue (`word`: "none").
+// language), or, when `words` is set, a message of the catalogue in the reader's language ("none"; "cutting 1.2 s,
+// marking 0.0 s, ...").
 struct StatsRow {
     Msg key;
     std::string value;
-    Msg word = Msg::None;
-    [[nodiscard]] std::string text(Lang lang) const {
-        return word == Msg::None ? value : std::string(essi::text(word, lang));
-    }
+    Message words = {};
+    [[nodiscard]] std::string text(Lang lang) const { return words.msg == Msg::None ? value : words.text(lang); }
 };
 // The statistics of a tape in the order `essi stats` lists them (after the file): lengths, pierces, blocks, motions,
-// time, cut box, end position. The job sheet (essi/job_sheet.hpp) shows the same rows.
+// time, the machine time, cost and electrodes (with the profile's accel_mm_s2, costs, consumables), cut box, end
+// position. The job sheet (essi/job_sheet.hpp) shows the same rows.
 [[nodiscard]] std::vector<StatsRow> stats_rows(const Stats& stats);
 
 // The aligned block of `essi stats` for one file, every line ending in a newline.

@@ -1,4 +1,5 @@
-// The left panel: the tape's statistics, the layers, the playback and the diagnostics.
+// The left panel: the tape's statistics, the job (its sheet's time and cost, parts and plates), the layers, the
+// playback and the diagnostics.
 #include <algorithm>
 #include <cmath>
 
@@ -50,6 +51,25 @@ void stats_table(const Document& doc) {
     const Box& m = s.motion_bbox;
     if (!m.empty) stats_row(Msg::UiStatMotionBox, fmt("(%.1f, %.1f) - (%.1f, %.1f)", m.min_x, m.min_y, m.max_x, m.max_y));
     stats_row(Msg::UiStatEnd, fmt("(%.3f, %.3f)", s.end_position.x, s.end_position.y));
+    ImGui::EndTable();
+}
+
+// A table of the job sheet (parts, plates): its columns, numbers right-aligned.
+void sheet_table(const SheetTable& t) {
+    const int columns = static_cast<int>(t.columns.size());
+    if (columns == 0 || !ImGui::BeginTable("table", columns, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit))
+        return;
+    for (const std::string& c : t.columns) ImGui::TableSetupColumn(c.c_str());
+    ImGui::TableHeadersRow();
+    for (const std::vector<std::string>& row : t.rows) {
+        ImGui::TableNextRow();
+        for (std::size_t c = 0; c < row.size() && c < t.columns.size(); ++c) {
+            ImGui::TableNextColumn();
+            if (c < t.numeric.size() && t.numeric[c])
+                ImGui::SetCursorPosX(ImGui::GetCursorPosX() + ImGui::GetColumnWidth() - ImGui::CalcTextSize(row[c].c_str()).x);
+            ImGui::TextUnformatted(row[c].c_str());
+        }
+    }
     ImGui::EndTable();
 }
 
@@ -133,13 +153,43 @@ void layer_switch(const std::string& label, bool& on, const ImVec4* colour, bool
     ImGui::Checkbox(label.c_str(), &on);
 }
 
-void layers(Layers& layers, Preferences& preferences, const Document* doc) {
+// Colour by: the choice, and the legend of the colours drawn (ColourBy.hpp).
+void colour_by(Layers& layers, const LoadController& load) {
+    ImGui::TextUnformatted(tr(Msg::UiColourBy));
+    ImGui::SameLine();
+    const std::string current = tr(colour_by_label(layers.colour_by));
+    ImGui::SetNextItemWidth(-1);
+    if (ImGui::BeginCombo("##colour_by", current.c_str())) {
+        for (const ColourBy by : kColourByModes)
+            if (ImGui::Selectable(tr_id(colour_by_label(by), std::string(colour_by_name(by)).c_str()).c_str(), by == layers.colour_by))
+                layers.colour_by = by;
+        ImGui::EndCombo();
+    }
+    const float swatch = ImGui::GetTextLineHeight();
+    for (const ColourLegendEntry& e : load.buffers().colour_legend(ui_lang())) {
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        const ImVec2 at = ImGui::GetCursorScreenPos();
+        const int bins = e.last_bin - e.first_bin + 1;
+        for (int b = 0; b < bins; ++b) {
+            const float x0 = at.x + swatch * 2 * static_cast<float>(b) / static_cast<float>(bins);
+            const float x1 = at.x + swatch * 2 * static_cast<float>(b + 1) / static_cast<float>(bins);
+            dl->AddRectFilled(ImVec2(x0, at.y + 2), ImVec2(x1, at.y + swatch - 2),
+                              ImGui::ColorConvertFloat4ToU32(opaque(kColourRamp[static_cast<std::size_t>(e.first_bin + b)])));
+        }
+        ImGui::Dummy(ImVec2(swatch * 2, swatch));
+        ImGui::SameLine();
+        ImGui::TextUnformatted(e.text.c_str());
+    }
+}
+
+void layers(Layers& layers, Preferences& preferences, const Document* doc, const LoadController& load) {
     bool first = true;
     for (MotionKind k : {MotionKind::Cut, MotionKind::Mark, MotionKind::Travel, MotionKind::Rapid}) {
         const ImVec4 c = opaque(kind_color(k));
         layer_switch(std::string(motion_kind_text(k, ui_lang())) + "###" + motion_kind_name(k), layers.kind(k), &c, first);
         first = false;
     }
+    colour_by(layers, load);
     layer_switch(tr_id(Msg::UiLayerPierces, "pierces"), layers.pierces, nullptr);
     layer_switch(tr_id(Msg::UiLayerStart, "start"), layers.start, nullptr);
     layer_switch(tr_id(Msg::UiLayerGrid, "grid"), layers.grid, nullptr);
@@ -192,6 +242,37 @@ void playback(Playback& p, Navigation& navigation, const Document* doc) {
     if (ImGui::SmallButton(tr_id(Msg::UiShowLine, "show line").c_str())) navigation.select_line(m.line, false);
 }
 
+// The job sheet's sections (Exports::job_sections: what `essi report` prints, in the UI's language) and its print
+// view.
+void job(const Document* doc, Exports& exports) {
+    if (!doc) {
+        ImGui::TextDisabled("%s", tr(Msg::UiNoTape));
+        return;
+    }
+    for (const SheetSection& s : exports.job_sections()) {
+        ImGui::PushID(s.id.c_str());
+        ImGui::Separator();
+        ImGui::TextUnformatted(s.title.c_str());
+        if (!s.fields.empty() && ImGui::BeginTable("fields", 2)) {
+            ImGui::TableSetupColumn("label", ImGuiTableColumnFlags_WidthFixed);
+            ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
+            for (const SheetField& f : s.fields) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(f.label.c_str());
+                ImGui::TableNextColumn();
+                ImGui::TextWrapped("%s", f.value.c_str());
+            }
+            ImGui::EndTable();
+        }
+        if (s.table) sheet_table(*s.table);
+        if (!s.note.empty()) ImGui::TextDisabled("%s", s.note.c_str());
+        ImGui::PopID();
+    }
+    if (ImGui::SmallButton(tr_id(Msg::UiJobPrint, "print view").c_str())) exports.print_job_sheet();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiJobPrintTip));
+}
+
 void diagnostics(const Document* doc, Navigation& navigation, Exports& exports) {
     if (!doc) {
         ImGui::TextDisabled("-");
@@ -240,7 +321,8 @@ void Panels::tape_panel() {
     };
     if (header(Msg::UiReading, "Reading")) reading(p_.session, p_.comments);
     if (header(Msg::UiStatistics, "Statistics")) statistics(doc, p_.load);
-    if (header(Msg::UiLayers, "Layers")) layers(p_.layers, p_.preferences, doc);
+    if (header(Msg::UiJob, "Job")) job(doc, p_.exports);
+    if (header(Msg::UiLayers, "Layers")) layers(p_.layers, p_.preferences, doc, p_.load);
     if (header(Msg::UiPlayback, "Playback")) playback(p_.playback, p_.navigation, doc);
     if (header(Msg::UiDiagnostics, "Diagnostics")) diagnostics(doc, p_.navigation, p_.exports);
     ImGui::End();

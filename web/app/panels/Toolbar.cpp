@@ -123,7 +123,8 @@ void export_menu(Exports& exports) {
         {tr(Msg::UiExportReportText), "report-text"},
         {tr(Msg::UiExportReportJson), "report-json"},
         {tr(Msg::UiExportProblemsCsv), "report-csv"},
-        {tr(Msg::UiExportViewSvg), "view-svg"}};
+        {tr(Msg::UiExportViewSvg), "view-svg"},
+        {tr(Msg::UiExportJobSheet), "job-html"}};
     for (const auto& [label, format] : formats)
         if (ImGui::Selectable(label.c_str())) exports.export_file(format);
     if (ImGui::Selectable(tr(Msg::UiExportViewPng))) exports.export_view_png();

@@ -1,33 +1,14 @@
-#include "sha256.hpp"
-
+// essi/sha256.hpp written out from FIPS 180-4: the WebAssembly builds (the viewer, the npm package), which have no
+// OpenSSL. Its digests are the native build's (the unit tests' FIPS vectors run in both).
 #include <array>
 #include <cstdint>
-#include <stdexcept>
 
-#ifndef __EMSCRIPTEN__
-#include <memory>
+#include "essi/sha256.hpp"
 
-#include <openssl/evp.h>
-#endif
-
-namespace essi::native {
+namespace essi {
 
 namespace {
 
-std::string to_hex(const unsigned char* digest, std::size_t len) {
-    static const char* hex = "0123456789abcdef";
-    std::string out;
-    out.reserve(2 * len);
-    for (std::size_t i = 0; i < len; ++i) {
-        out += hex[digest[i] >> 4];
-        out += hex[digest[i] & 15];
-    }
-    return out;
-}
-
-#ifdef __EMSCRIPTEN__
-// No OpenSSL in the WASM build (the npm package's CLI, npm/): FIPS 180-4 written out. Only codeclimate's
-// fingerprints use it there; a test compares them with the native build's.
 constexpr std::array<std::uint32_t, 64> kRound = {
     0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5, 0xd807aa98,
     0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174, 0xe49b69c1, 0xefbe4786,
@@ -62,7 +43,9 @@ void compress(std::array<std::uint32_t, 8>& h, const unsigned char* block) {
     for (int i = 0; i < 8; ++i) h[i] += v[i];
 }
 
-std::array<unsigned char, 32> digest_of(std::string_view bytes) {
+}  // namespace
+
+std::array<unsigned char, 32> sha256(std::string_view bytes) {
     std::array<std::uint32_t, 8> h = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
                                       0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
@@ -81,24 +64,5 @@ std::array<unsigned char, 32> digest_of(std::string_view bytes) {
     for (int i = 0; i < 32; ++i) out[i] = static_cast<unsigned char>(h[i / 4] >> (24 - 8 * (i % 4)));
     return out;
 }
-#endif
 
-}  // namespace
-
-std::string sha256_hex(std::string_view bytes) {
-#ifdef __EMSCRIPTEN__
-    const std::array<unsigned char, 32> digest = digest_of(bytes);
-    return to_hex(digest.data(), digest.size());
-#else
-    std::unique_ptr<EVP_MD_CTX, void (*)(EVP_MD_CTX*)> ctx(EVP_MD_CTX_new(), &EVP_MD_CTX_free);
-    unsigned char digest[EVP_MAX_MD_SIZE];
-    unsigned int len = 0;
-    if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1 ||
-        EVP_DigestUpdate(ctx.get(), bytes.data(), bytes.size()) != 1 ||
-        EVP_DigestFinal_ex(ctx.get(), digest, &len) != 1 || len != 32)
-        throw std::runtime_error("SHA-256 failed (OpenSSL EVP)");
-    return to_hex(digest, len);
-#endif
-}
-
-}  // namespace essi::native
+}  // namespace essi
