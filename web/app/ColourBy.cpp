@@ -86,7 +86,7 @@ std::optional<std::uint8_t> ColourBins::bin(std::size_t i) {
     const Motion& m = doc_.motions[i];
     if (by_ == ColourBy::Kind || (m.kind != MotionKind::Cut && m.kind != MotionKind::Mark)) return std::nullopt;
     if (by_ == ColourBy::Feed) {
-        if (m.flags & Motion::kFlagRapidFeed) return std::nullopt;
+        if (!drawn_by_value(m)) return std::nullopt;
         while (feed_at_ + 1 < doc_.feeds.size() && doc_.feeds[feed_at_ + 1].first <= i) ++feed_at_;
         if (doc_.feeds.empty() || doc_.feeds[feed_at_].first > i || !(doc_.feeds[feed_at_].second > 0))
             return std::nullopt;
