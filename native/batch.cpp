@@ -12,6 +12,7 @@
 #include "essi/text.hpp"
 #include "essi/pipeline.hpp"
 #include "file_io.hpp"
+#include "essi/parts.hpp"
 #include "pipelined_check.hpp"
 #include "thread_pool.hpp"
 
@@ -125,6 +126,7 @@ void check_batch(const std::vector<std::string>& files, const TapeRequest& reque
             item.report.result = pipelined ? check_tape_pipelined(file.bytes, setup, options.max_diagnostics)
                                            : check_tape(file.bytes, setup, options.max_diagnostics);
             limit_diagnostics(item.report.result, options.max_diagnostics);  // (with the setup's note)
+            if (options.parts) item.report.result.parts = tape_parts(file.bytes, setup.profile, setup.format);
         }
         item.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };

@@ -46,6 +46,7 @@ struct BatchOptions {
     unsigned jobs = 1;  // worker threads
     std::size_t max_diagnostics = std::numeric_limits<std::size_t>::max();  // per file
     std::uint64_t max_size = kDefaultMaxInputBytes;  // per file (--max-size)
+    bool parts = false;  // each result with its parts list (--parts; essi/parts.hpp)
 };
 
 // Reads and checks `files` on options.jobs threads and calls emit for each, on the calling thread, in the

@@ -19,7 +19,8 @@ using namespace essi::cli;
 
 // In the order `essi --help` lists them. (completions comes last, after --lang is given to these.)
 constexpr DefineSubcommand kSubcommands[] = {
-    define_check, define_stats, define_diff, define_trace, define_convert, define_render, define_report, define_profile,
+    define_check, define_stats, define_parts, define_diff, define_trace, define_convert, define_render, define_report,
+    define_profile,
 #ifndef ESSI_NO_SERVE
     define_serve,
 #endif

@@ -9,6 +9,7 @@
 
 #include "essi/diagnostic_marks.hpp"
 #include "essi/interp.hpp"
+#include "essi/parts.hpp"
 #include "essi/pipeline.hpp"
 #include "essi/read.hpp"
 #include "essi/render_svg.hpp"
@@ -43,7 +44,17 @@ Point SheetDrawing::to_paper(Point p) const {
     return {(p.x - box.min_x) * scale, (box.max_y - p.y) * scale};
 }
 
-SheetParts sheet_parts(const CheckResult&) { return {}; }
+SheetParts sheet_parts(const CheckResult& result) {
+    SheetParts out;
+    if (!result.parts) return out;
+    for (const PartGroup& g : result.parts->groups)
+        out.groups.push_back({g.number, g.count, g.length_mm, g.width_mm, g.net_area_mm2});
+    for (const Part& p : result.parts->parts) out.parts.push_back({p.group, p.label_at});
+    for (const PlateUse& p : result.parts->plates)
+        out.plates.push_back({static_cast<unsigned>(p.plate), p.area.max_x - p.area.min_x, p.area.max_y - p.area.min_y,
+                              p.utilisation, p.remnant});
+    return out;
+}
 
 namespace {
 
@@ -329,6 +340,7 @@ JobSheet make_job_sheet(const CheckResult& result, const Profile& profile, Sheet
 JobSheetResult job_sheet(std::string_view bytes, const TapeSetup& setup, const JobSheetInput& in) {
     JobSheetResult out;
     out.result = check_tape(bytes, setup, in.max_diagnostics);
+    out.result.parts = tape_parts(bytes, setup.profile, setup.format);
     out.sheet = job_sheet_of(bytes, setup, out.result, in);
     return out;
 }

@@ -279,15 +279,37 @@ void write_concerned(std::string& s, const std::vector<LineRange>& wanted, const
     s += "</g>\n";
 }
 
+// Each plate's outline and its remnant (filled faintly), in program mm (y negated).
+void write_plates(std::string& s, const std::vector<PlateUse>& plates, const std::string& stroke,
+                  const std::string& dashes) {
+    const auto rect = [](const Box& b) {
+        return "x=\"" + num(b.min_x) + "\" y=\"" + num(-b.max_y) + "\" width=\"" + num(b.max_x - b.min_x) +
+               "\" height=\"" + num(b.max_y - b.min_y) + "\"";
+    };
+    s += "<g id=\"plates\" fill=\"none\" stroke=\"" + std::string(kSvgRemnantColor) + "\"" + stroke + ">\n";
+    for (const PlateUse& p : plates) {
+        s += "<rect class=\"plate\" data-plate=\"" + std::to_string(p.plate) + "\" " + rect(p.area) + "/>\n";
+        if (p.remnant)
+            s += "<rect class=\"remnant\" data-plate=\"" + std::to_string(p.plate) + "\" data-remnant-mm=\"" +
+                 num(p.remnant->min_x) + " " + num(p.remnant->min_y) + " " + num(p.remnant->max_x) + " " +
+                 num(p.remnant->max_y) + "\" " + rect(*p.remnant) + " fill=\"" + std::string(kSvgRemnantColor) +
+                 "\" fill-opacity=\"0.1\"" + dashes + "/>\n";
+    }
+    s += "</g>\n";
+}
+
 }  // namespace
 
 RenderResult render_svg(std::string_view bytes, const Profile& profile, const RenderOptions& options, InputFormat format) {
     RenderResult out;
     // Pass 1: the check (diagnostics, stats, extent).
     out.result = check_tape(bytes, profile, format);
+    if (options.remnant) out.result.parts = tape_parts(bytes, profile, format);
     const Stats& st = out.result.stats;
     Box box = st.motion_bbox;
     box.add(st.cut_bbox);
+    if (out.result.parts)
+        for (const PlateUse& p : out.result.parts->plates) box.add(p.area);
     if (box.empty) box.add(Point{0, 0});
     double w = box.max_x - box.min_x, h = box.max_y - box.min_y;
     const double extent = std::max({w, h, 10.0});
@@ -326,6 +348,8 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
                              {"travel", kSvgTravelColor, " stroke-dasharray=\"2 2\""},
                              {"rapid", kSvgRapidColor, " stroke-dasharray=\"4 3\""}};
     if (!sink.kerf_path_.empty()) keys.push_back({"kerf", kSvgKerfColor, ""});
+    if (out.result.parts && !out.result.parts->plates.empty())
+        keys.push_back({"remnant", kSvgRemnantColor, " stroke-dasharray=\"4 2\""});
     for (const Key k : {Key{"pierce", kSvgPierceColor, ""}, Key{"error", kSvgErrorColor, ""},
                         Key{"warning", kSvgWarningColor, ""}, Key{"note", kSvgNoteColor, ""}})
         keys.push_back(k);
@@ -392,6 +416,7 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     for (const Point& p : sink.pierces_)
         s += "<circle class=\"pierce\" cx=\"" + num(p.x) + "\" cy=\"" + num(-p.y) + "\" r=\"" + num(marker_r) + "\"/>\n";
     s += "</g>\n";
+    if (out.result.parts) write_plates(s, out.result.parts->plates, stroke(1), dashes(6, 3));
     if (options.problems_only) write_concerned(s, wanted, sink, px);
     write_overlaps(s, diagnostics);
     write_highlights(s, diagnostics, sink, px);

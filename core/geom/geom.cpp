@@ -235,4 +235,125 @@ void flatten(const MotionRecord& m, double chord_tolerance_mm, std::vector<Point
     out.push_back(m.end);
 }
 
+namespace {
+
+// The derivative of point_at by the fraction.
+Point velocity_at(const MotionRecord& m, double f) {
+    switch (m.curve) {
+        case CurveKind::Line: break;
+        case CurveKind::Arc: {
+            const double a = angle_of(m.start, m.centre) + m.sweep * f;
+            const double r = radius_at(m, f), dr = m.end_radius - m.radius;
+            const double c = std::cos(a), s = std::sin(a);
+            return {dr * c - r * m.sweep * s, dr * s + r * m.sweep * c};
+        }
+        case CurveKind::Parabola: {
+            // d/df of parabola_point(g, t0 + (t1 - t0) f) + f (end - e)
+            const ParabolaGeom& g = m.parabola;
+            const double dt = g.t1 - g.t0, t = g.t0 + dt * f;
+            const Point e = parabola_point(g, g.t1);
+            return {dt * (g.u.x + t / g.p * g.n.x) + (m.end.x - e.x), dt * (g.u.y + t / g.p * g.n.y) + (m.end.y - e.y)};
+        }
+    }
+    return {m.end.x - m.start.x, m.end.y - m.start.y};
+}
+
+// Gauss-Legendre nodes and weights on [0, 1] (5 points: exact for polynomials up to degree 9).
+constexpr double kGaussNodes[5] = {0.04691007703066800, 0.23076534494715845, 0.5, 0.76923465505284155,
+                                   0.95308992296933200};
+constexpr double kGaussWeights[5] = {0.11846344252809454, 0.23931433524968324, 0.28444444444444444,
+                                     0.23931433524968324, 0.11846344252809454};
+// An arc's moments are integrated over pieces of at most this sweep (radians).
+constexpr double kMomentStep = kPi / 16;
+
+// ∮ x² dy and ∮ y² dx over the fractions [f0, f1] of the motion, by quadrature.
+void add_moments(const MotionRecord& m, double f0, double f1, AreaTerms& t) {
+    for (int k = 0; k < 5; ++k) {
+        const double f = f0 + (f1 - f0) * kGaussNodes[k], w = (f1 - f0) * kGaussWeights[k];
+        const Point p = point_at(m, f), v = velocity_at(m, f);
+        t.x2dy += w * p.x * p.x * v.y;
+        t.y2dx += w * p.y * p.y * v.x;
+    }
+}
+
+}  // namespace
+
+AreaTerms area_terms(const MotionRecord& m) {
+    AreaTerms t;
+    const Point a = m.start, b = m.end;
+    switch (m.curve) {
+        case CurveKind::Line:
+            t.twice_area = a.x * b.y - b.x * a.y;
+            t.x2dy = (b.y - a.y) * (a.x * a.x + a.x * b.x + b.x * b.x) / 3;
+            t.y2dx = (b.x - a.x) * (a.y * a.y + a.y * b.y + b.y * b.y) / 3;
+            return t;
+        case CurveKind::Arc: {
+            // about the centre: the chord's term of the centre, plus r(f)² dθ integrated (r linear in f)
+            const Point c = m.centre;
+            const double r0 = m.radius, r1 = m.end_radius;
+            t.twice_area = c.x * (b.y - a.y) - c.y * (b.x - a.x) + m.sweep * (r0 * r0 + r0 * r1 + r1 * r1) / 3;
+            const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(m.sweep) / kMomentStep)));
+            for (int k = 0; k < pieces; ++k)
+                add_moments(m, static_cast<double>(k) / pieces, static_cast<double>(k + 1) / pieces, t);
+            return t;
+        }
+        case CurveKind::Parabola: {
+            // a quadratic curve: a quadratic Bézier with control point q; the area between it and its chord is
+            // 2/3 of the triangle a-q-b (Archimedes)
+            const Point mid = point_at(m, 0.5);
+            const Point q{2 * mid.x - (a.x + b.x) / 2, 2 * mid.y - (a.y + b.y) / 2};
+            t.twice_area = a.x * b.y - b.x * a.y + 2.0 / 3 * ((q.x - a.x) * (b.y - a.y) - (q.y - a.y) * (b.x - a.x));
+            add_moments(m, 0, 1, t);  // (polynomials of degree 5: exact)
+            return t;
+        }
+    }
+    return t;
+}
+
+MotionRecord sub_motion(const MotionRecord& m, double from, double to) {
+    MotionRecord s = m;
+    s.start = point_at(m, from);
+    s.end = point_at(m, to);
+    switch (m.curve) {
+        case CurveKind::Line: break;
+        case CurveKind::Arc:
+            s.radius = radius_at(m, from);
+            s.end_radius = radius_at(m, to);
+            s.sweep = m.sweep * (to - from);
+            break;
+        case CurveKind::Parabola: {
+            const ParabolaGeom& g = m.parabola;
+            s.parabola.t0 = g.t0 + (g.t1 - g.t0) * from;
+            s.parabola.t1 = g.t0 + (g.t1 - g.t0) * to;
+            break;
+        }
+    }
+    s.length_mm = m.length_mm * (to - from);  // (lines and arcs exactly; a parabola's piece below)
+    if (m.curve == CurveKind::Parabola) s.length_mm = parabola_length(s.parabola);
+    return s;
+}
+
+double nearest_fraction(const MotionRecord& m, Point p) {
+    const auto d2 = [&](double f) {
+        const Point q = point_at(m, f);
+        return (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y);
+    };
+    if (m.curve == CurveKind::Line) {
+        const double dx = m.end.x - m.start.x, dy = m.end.y - m.start.y, len2 = dx * dx + dy * dy;
+        return len2 > 0 ? std::clamp(((p.x - m.start.x) * dx + (p.y - m.start.y) * dy) / len2, 0.0, 1.0) : 0.0;
+    }
+    // the nearest of 64 samples, then a ternary search on the steps either side of it
+    constexpr int kSamples = 64;
+    int best = 0;
+    for (int k = 1; k <= kSamples; ++k)
+        if (d2(static_cast<double>(k) / kSamples) < d2(static_cast<double>(best) / kSamples)) best = k;
+    double lo = std::max(0.0, (best - 1.0) / kSamples), hi = std::min(1.0, (best + 1.0) / kSamples);
+    while (hi - lo > 1e-10) {
+        const double l = lo + (hi - lo) / 3, h = hi - (hi - lo) / 3;
+        if (d2(l) < d2(h)) hi = h;
+        else lo = l;
+    }
+    return (lo + hi) / 2;
+}
+
 }  // namespace essi

@@ -119,6 +119,63 @@ nlohmann::json stats_to_json(const Stats& s) {
     return j;
 }
 
+namespace {
+
+nlohmann::json optional_number(const std::optional<double>& v) {
+    return v ? nlohmann::json(round_for_json(*v)) : nlohmann::json(nullptr);
+}
+
+nlohmann::json part_to_json(const Part& p) {
+    nlohmann::json cuts = nlohmann::json::array();
+    for (const PartCut& c : p.cuts) cuts.push_back({{"first_line", c.first_line}, {"last_line", c.last_line}});
+    return {{"group", p.group},
+            {"plate", p.plate},
+            {"cuts", std::move(cuts)},
+            {"box_mm", box_to_json(p.box)},
+            {"label_mm", {{"x", round_for_json(p.label_at.x)}, {"y", round_for_json(p.label_at.y)}}},
+            {"cut_length_mm", round_for_json(p.cut_length_mm)},
+            {"turned_deg", round_for_json(p.turned_deg)}};
+}
+
+nlohmann::json group_to_json(const PartGroup& g) {
+    return {{"group", g.number},
+            {"count", g.count},
+            {"net_area_mm2", round_for_json(g.net_area_mm2)},
+            {"outline_mm", {{"length", round_for_json(g.length_mm)}, {"width", round_for_json(g.width_mm)}}},
+            {"cut_length_mm", round_for_json(g.cut_length_mm)},
+            {"holes", g.holes},
+            {"pierces", g.pierces},
+            {"mass_kg", optional_number(g.mass_kg)},
+            {"mirror_of", g.mirror_of > 0 ? nlohmann::json(g.mirror_of) : nlohmann::json(nullptr)},
+            {"parts", g.parts}};
+}
+
+nlohmann::json plate_to_json(const PlateUse& p) {
+    nlohmann::json remnant = nullptr;
+    if (p.remnant)
+        remnant = {{"x0", round_for_json(p.remnant->min_x)}, {"y0", round_for_json(p.remnant->min_y)},
+                   {"x1", round_for_json(p.remnant->max_x)}, {"y1", round_for_json(p.remnant->max_y)}};
+    return {{"plate", p.plate},
+            {"area_mm", box_to_json(p.area)},
+            {"plate_mm", {{"x", round_for_json(p.area.max_x - p.area.min_x)}, {"y", round_for_json(p.area.max_y - p.area.min_y)}}},
+            {"from_profile", p.from_profile},
+            {"parts", p.parts},
+            {"net_area_mm2", round_for_json(p.net_area_mm2)},
+            {"utilisation", round_for_json(p.utilisation)},
+            {"scrap_kg", optional_number(p.scrap_kg)},
+            {"remnant_mm", std::move(remnant)}};
+}
+
+}  // namespace
+
+nlohmann::json parts_to_json(const PartsList& list) {
+    nlohmann::json parts = nlohmann::json::array(), groups = nlohmann::json::array(), plates = nlohmann::json::array();
+    for (const Part& p : list.parts) parts.push_back(part_to_json(p));
+    for (const PartGroup& g : list.groups) groups.push_back(group_to_json(g));
+    for (const PlateUse& p : list.plates) plates.push_back(plate_to_json(p));
+    return {{"parts", std::move(parts)}, {"groups", std::move(groups)}, {"plates", std::move(plates)}};
+}
+
 nlohmann::json file_report_to_json(const FileReport& file, Lang lang) {
     nlohmann::json j = nlohmann::json::object();
     j["path"] = file.display_path();
@@ -131,6 +188,10 @@ nlohmann::json file_report_to_json(const FileReport& file, Lang lang) {
     j["diagnostics"] = diagnostics_to_json(file.result.diagnostics, lang);
     j["stats"] = stats_to_json(file.result.stats);
     if (file.omitted() > 0) j["diagnostics_omitted"] = file.omitted();
+    if (file.result.parts) {
+        nlohmann::json parts = parts_to_json(*file.result.parts);
+        for (auto& [key, value] : parts.items()) j[key] = std::move(value);
+    }
     return j;
 }
 

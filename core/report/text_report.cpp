@@ -61,8 +61,6 @@ std::string file_report_text(const FileReport& r, bool quiet, Lang lang) {
     return out;
 }
 
-namespace {
-// A CSV field: quoted when it holds a comma, a quote or a line end (quotes doubled).
 std::string csv_field(std::string_view s) {
     if (s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
     std::string out = "\"";
@@ -72,7 +70,6 @@ std::string csv_field(std::string_view s) {
     }
     return out + "\"";
 }
-}  // namespace
 
 std::string diagnostics_csv(std::span<const FileReport> files, Lang lang) {
     std::string out = "file,severity,code,line,column,message\r\n";

@@ -29,6 +29,7 @@ struct CheckOptions {
     long long max_diagnostics = -1;  // -1 = all
     long long max_per_code = -1;     // -1 = the profile's max_per_code
     bool quiet = false;
+    bool parts = false;
     std::string docs_url = std::string(native::kDefaultDocsUrl);
     std::uint64_t max_size = native::kDefaultMaxInputBytes;
 };
@@ -78,6 +79,7 @@ int run_check(const CheckOptions& o) {
     batch.jobs = o.jobs == 0 ? hardware_jobs() : o.jobs;
     if (o.max_diagnostics >= 0) batch.max_diagnostics = static_cast<std::size_t>(o.max_diagnostics);
     batch.max_size = o.max_size;
+    batch.parts = o.parts && o.format == "json";
     const FailOn fail_on = fail_on_of(o.fail_on);
 
     BatchTotals totals;
@@ -139,6 +141,8 @@ Subcommand define_check(CLI::App& essi) {
                       "profile's max_per_code, 1000; 0: no limit)")
         ->check(CLI::Range(0LL, static_cast<long long>(kMaxPerCodeLimit)))
         ->type_name("N");
+    check->add_flag("--parts", o->parts,
+                    "JSON: each file's parts, groups and plates too (essi parts; reads each tape twice more)");
     check->add_flag("-q,--quiet", o->quiet,
                     "Text: only errors, warnings and the summary; json/junit/sarif: no summary on stderr");
     check->add_option("--docs-url", o->docs_url,

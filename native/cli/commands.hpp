@@ -17,6 +17,7 @@ using DefineSubcommand = Subcommand (*)(CLI::App& essi);
 
 Subcommand define_check(CLI::App& essi);        // check_command.cpp
 Subcommand define_stats(CLI::App& essi);        // stats_command.cpp
+Subcommand define_parts(CLI::App& essi);        // parts_command.cpp: the parts list, plates and remnants
 Subcommand define_diff(CLI::App& essi);         // diff_command.cpp
 Subcommand define_trace(CLI::App& essi);        // trace_command.cpp
 Subcommand define_convert(CLI::App& essi);      // convert_command.cpp

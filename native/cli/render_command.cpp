@@ -33,6 +33,7 @@ struct RenderOptionsCli {
     bool png = false;
     bool no_travel = false;
     bool problems_only = false;
+    bool remnant = false;
     double width = 1200;
     std::uint64_t max_size = native::kDefaultMaxInputBytes;
 };
@@ -124,6 +125,7 @@ int run_render(const RenderOptionsCli& o) {
     options.width_px = o.width;
     options.show_travel = !o.no_travel;
     options.problems_only = o.problems_only;
+    options.remnant = o.remnant;
     const RenderResult r = render_svg(tape->file.bytes, tape->setup.profile, options, tape->setup.format);
     const std::string output = output_path(o, png ? ".png" : ".svg");
     if (png) {
@@ -151,6 +153,8 @@ Subcommand define_render(CLI::App& essi) {
         ->type_name("svg|dxf");
     render->add_flag("--png", o->png, "Write PNG (through rsvg-convert; also when OUT ends in .png)");
     render->add_flag("--no-travel", o->no_travel, "Leave out travel and rapid motion");
+    render->add_flag("--remnant", o->remnant,
+                     "Outline each plate (profile plate_mm, else its parts' box) and draw its remnant");
     render->add_flag("--problems-only", o->problems_only,
                      "Draw what the diagnostics concern in full and everything else faint");
     render->add_option("--width", o->width, "Width of the picture in pixels")

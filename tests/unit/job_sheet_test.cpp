@@ -69,7 +69,8 @@ std::size_t count(const std::string& s, const std::string& what) {
 TEST(JobSheet, SectionsInOrderWithTheReportsNumbers) {
     const Checked c = sheet_of("plan_collision.esi");
     const JobSheet& s = c.sheet.sheet;
-    EXPECT_EQ(ids(s), (std::vector<std::string>{"job", "drawing", "statistics", "time", "profile", "diagnostics"}));
+    EXPECT_EQ(ids(s), (std::vector<std::string>{"job", "drawing", "statistics", "time", "parts", "plates", "profile",
+                                                "diagnostics"}));
     EXPECT_EQ(s.title, "Job sheet");
     EXPECT_EQ(field(s, "job", essi::Msg::SheetTape), "plan_collision.esi");
     EXPECT_EQ(field(s, "job", essi::Msg::SheetSha256), std::string(64, 'a'));
@@ -151,14 +152,26 @@ TEST(JobSheet, TheDrawingFitsThePageAndKeepsItsAspect) {
             EXPECT_LE(p.y, d.box.max_y);
         }
     EXPECT_EQ(d.pierces.size(), c.sheet.result.stats.pierces);
-    EXPECT_TRUE(d.labels.empty());
+    EXPECT_EQ(d.labels.size(), 3u);  // (its three parts' group numbers)
 }
 
-TEST(JobSheet, NoPartsSectionsWithoutTheCoresParts) {
+// The core's parts list (essi/parts.hpp) through the seam: kerf_parts.esi makes part A (with its hole B) and part C.
+TEST(JobSheet, PartsFromTheCoresPartsList) {
     const Checked c = sheet_of("kerf_parts.esi");
-    EXPECT_TRUE(essi::sheet_parts(c.sheet.result).empty());
-    EXPECT_EQ(section(c.sheet.sheet, "parts"), nullptr);
-    EXPECT_EQ(section(c.sheet.sheet, "plates"), nullptr);
+    const essi::SheetParts parts = essi::sheet_parts(c.sheet.result);
+    ASSERT_EQ(parts.groups.size(), 2u);
+    EXPECT_EQ(parts.groups[0].count, 1u);
+    EXPECT_NEAR(parts.groups[0].width_mm, 110, 1e-9);  // (its smallest rectangle: 110 x 90 mm)
+    EXPECT_NEAR(parts.groups[0].height_mm, 90, 1e-9);
+    ASSERT_EQ(parts.parts.size(), 2u);
+    EXPECT_EQ(parts.parts[1].group, 2u);
+    ASSERT_EQ(parts.plates.size(), 1u);
+    const essi::SheetSection* p = section(c.sheet.sheet, "parts");
+    ASSERT_TRUE(p && p->table);
+    EXPECT_EQ(p->table->rows[0], (std::vector<std::string>{"1", "1", "110.000 x 90.000 mm", "8771.7 mm²"}));
+    ASSERT_NE(section(c.sheet.sheet, "plates"), nullptr);
+    ASSERT_EQ(c.sheet.sheet.drawing.labels.size(), 2u);
+    EXPECT_EQ(c.sheet.sheet.drawing.labels[1].text, "2");
 }
 
 TEST(JobSheet, PartsThroughTheSeamNumberTheDrawing) {
@@ -171,7 +184,9 @@ TEST(JobSheet, PartsThroughTheSeamNumberTheDrawing) {
     essi::JobSheetInput in;
     in.tape_name = "kerf_parts.esi";
     in.lang = Lang::De;
-    const JobSheet s = essi::make_job_sheet(c.sheet.result, c.setup.profile, c.sheet.sheet.drawing, parts, in);
+    essi::SheetDrawing drawing = c.sheet.sheet.drawing;
+    drawing.labels.clear();  // (the labels of the tape's own parts list)
+    const JobSheet s = essi::make_job_sheet(c.sheet.result, c.setup.profile, std::move(drawing), parts, in);
     EXPECT_EQ(ids(s), (std::vector<std::string>{"job", "drawing", "statistics", "time", "parts", "plates", "profile",
                                                 "diagnostics"}));
     const essi::SheetSection* p = section(s, "parts");

@@ -138,6 +138,21 @@ void flatten(const MotionRecord& m, double chord_tolerance_mm, std::vector<Point
 // Point at the given fraction [0,1] of the motion's parameter (for playback and selection).
 [[nodiscard]] Point point_at(const MotionRecord& m, double fraction);
 
+// The motion's share of a closed run's area and centroid (Green's theorem), from its exact curve: ∮ (x dy - y dx)
+// (a closed run's sum is twice its area, > 0 counter-clockwise), ∮ x² dy and ∮ y² dx (its centroid is
+// (Σ x²dy, -Σ y²dx) / (2 · area)). Exact for lines, arcs (their radius going from the start's to the end's, as
+// point_at draws them) and parabolas; the arcs' moments by Gauss-Legendre quadrature (below 1e-12 of the value).
+struct AreaTerms {
+    double twice_area = 0, x2dy = 0, y2dx = 0;
+};
+[[nodiscard]] AreaTerms area_terms(const MotionRecord& m);
+
+// The part of the motion between two fractions of its parameter (0 <= from < to <= 1): a line or an arc cut
+// exactly; a parabola's piece on the same curve (its end correction scaled with it).
+[[nodiscard]] MotionRecord sub_motion(const MotionRecord& m, double from, double to);
+// The fraction of the motion's parameter at its point nearest to `p` (within 1e-9 of the parameter).
+[[nodiscard]] double nearest_fraction(const MotionRecord& m, Point p);
+
 // Tolerances that are not profile settings.
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinChordTolerance = 1e-6; // mm

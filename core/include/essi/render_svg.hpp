@@ -29,6 +29,7 @@ constexpr std::string_view kSvgWarningColor = "#e6a100";
 constexpr std::string_view kSvgNoteColor = "#17becf";
 constexpr std::string_view kSvgKerfColor = "#2ca02c";      // the compensated torch path (kerf layer)
 constexpr std::string_view kSvgKerfBandColor = "#d62728";  // the cut's real width, translucent
+constexpr std::string_view kSvgRemnantColor = "#9467bd";   // a plate's remnant (and the plate's outline)
 
 struct RenderOptions {
     std::string title;             // shown in the legend (the file name)
@@ -41,6 +42,9 @@ struct RenderOptions {
     std::optional<std::vector<Diagnostic>> diagnostics;
     // The problems only: everything not concerned by a diagnostic drawn faint (kSvgDimOpacity).
     bool problems_only = false;
+    // Each plate (essi/parts.hpp: plate_mm, or its parts' box) outlined and its remnant drawn: the parts list made
+    // for it (RenderResult::result.parts).
+    bool remnant = false;
 };
 
 // The marks' radius in the SVG's pixels (its width attribute): the same size at any extent.

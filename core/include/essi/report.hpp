@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "essi/diagnostics.hpp"
+#include "essi/parts.hpp"
 #include "essi/read.hpp"
 #include "essi/stats.hpp"
 
@@ -24,6 +26,9 @@ struct CheckResult {
     // Diagnostics left out by a limit on their number (limit_diagnostics, --max-diagnostics), by severity: the
     // verdict and the counts include them.
     std::size_t omitted_errors = 0, omitted_warnings = 0, omitted_notes = 0;
+    // The parts and plates (essi/parts.hpp), when they were asked for (`essi check --parts`, `essi parts`, the job
+    // sheet): the check alone does not make them.
+    std::optional<PartsList> parts;
     [[nodiscard]] bool ok() const;  // no error, listed or left out
     [[nodiscard]] std::size_t count(Severity s) const;  // listed and left out
     [[nodiscard]] std::size_t omitted() const { return omitted_errors + omitted_warnings + omitted_notes; }

@@ -51,7 +51,11 @@ struct FileReport {
 // {"cut_length_mm", ..., "cut_bbox_mm": {...} or null, "end_position_mm": {"x","y"}}
 [[nodiscard]] nlohmann::json stats_to_json(const Stats& s);
 
-// {"path","ok","diagnostics":[...],"stats":{...}} (+ "diagnostics_omitted": N when --max-diagnostics cut some)
+// {"parts":[...],"groups":[...],"plates":[...]} (docs/report-schema.json)
+[[nodiscard]] nlohmann::json parts_to_json(const PartsList& parts);
+
+// {"path","ok","diagnostics":[...],"stats":{...}} (+ "diagnostics_omitted": N when --max-diagnostics cut some; the
+// members of parts_to_json when the result has parts)
 [[nodiscard]] nlohmann::json file_report_to_json(const FileReport& file, Lang lang = Lang::En);
 
 // The whole report of `essi check --format json`:

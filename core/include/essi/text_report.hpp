@@ -53,6 +53,9 @@ struct StatsRow {
 // those --max-diagnostics left out, and (unless quiet) its statistics line; every line ends in a newline.
 [[nodiscard]] std::string file_report_text(const FileReport& file, bool quiet = false, Lang lang = Lang::En);
 
+// A CSV field (RFC 4180): quoted when it holds a comma, a quote or a line end (quotes doubled).
+[[nodiscard]] std::string csv_field(std::string_view s);
+
 // The diagnostics as CSV (RFC 4180, a header line, CR LF): file,severity,code,line,column,message.
 [[nodiscard]] std::string diagnostics_csv(std::span<const FileReport> files, Lang lang = Lang::En);
 

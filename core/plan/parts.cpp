@@ -1,0 +1,310 @@
+// The parts list (essi/parts.hpp): the plan's contours made parts, plate by plate; their shapes grouped; each
+// plate's utilisation and remnant.
+#include "essi/parts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "essi/interp.hpp"
+#include "essi/read.hpp"
+#include "part_shape.hpp"
+#include "remnant.hpp"
+
+namespace essi {
+namespace {
+
+bool is_part(ContourRole r) { return r == ContourRole::Part || r == ContourRole::LonePart; }
+
+constexpr double kMm3PerM3 = 1e9;
+// Blocks read at a time (as the check reads them).
+constexpr std::size_t kPartsChunkBlocks = 8192;
+
+// The loop of a contour: its motions [loop_begin, loop_end), the first from loop_start, the last to where the loop
+// closes (a parabola's chord may close it inside the motion).
+std::vector<MotionRecord> loop_motions(const PlanContour& c, const std::vector<MotionRecord>& all, double closure_mm) {
+    std::vector<MotionRecord> loop(all.begin() + c.loop_begin, all.begin() + c.loop_end);
+    if (loop.empty()) return loop;
+    const auto near = [&](Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y) <= closure_mm; };
+    if (!(loop.front().start == c.loop_start)) {
+        const double f = nearest_fraction(loop.front(), c.loop_start);
+        if (f > 0 && f < 1) loop.front() = sub_motion(loop.front(), f, 1);
+        loop.front().start = c.loop_start;
+    }
+    if (!near(loop.back().end, c.loop_start) && loop.back().curve != CurveKind::Line) {
+        const double f = nearest_fraction(loop.back(), c.loop_start);
+        if (f > 0 && f < 1) loop.back() = sub_motion(loop.back(), 0, f);
+    }
+    return loop;
+}
+
+double contour_length(const std::vector<MotionRecord>& motions) {
+    double length = 0;
+    for (const MotionRecord& m : motions) length += m.length_mm;
+    return length;
+}
+
+// The groups and the shapes they are compared by.
+class Grouper {
+public:
+    explicit Grouper(double tolerance) : tolerance_(tolerance) {}
+
+    struct Found {
+        std::size_t group;  // index in the groups
+        double turned = 0;  // radians, counter-clockwise, from the group's first part
+        bool is_new = false;
+        std::optional<std::size_t> mirror_of;
+    };
+    // The group of a part of this shape (a new one when no kept shape is the same).
+    Found place(const parts::Shape& shape) {
+        Bucket& bucket = buckets_[{shape.loops.size(), shape.pieces}];
+        if (const auto found = find(bucket, shape)) return {found->first, -found->second, false, std::nullopt};
+        Found out{groups_++, 0, true, std::nullopt};
+        if (const auto twin = find(bucket, parts::mirrored(shape))) out.mirror_of = twin->first;
+        if (kept_pieces_ + shape.pieces <= kPartsMaxKeptPieces) {
+            kept_pieces_ += shape.pieces;
+            bucket.emplace(shape.area, Kept{shape, out.group});
+        }
+        return out;
+    }
+
+private:
+    struct Kept {
+        parts::Shape shape;
+        std::size_t group;
+    };
+    using Bucket = std::multimap<double, Kept>;  // by net area
+
+    // The first kept shape that `shape` turns onto (its group and the turn), among the first kPartsMaxCompares of
+    // similar signature.
+    std::optional<std::pair<std::size_t, double>> find(const Bucket& bucket, const parts::Shape& shape) const {
+        const double slack = 2 * tolerance_ * shape.perimeter + 4 * tolerance_ * tolerance_;
+        std::size_t compared = 0;
+        for (auto it = bucket.lower_bound(shape.area - slack);
+             it != bucket.end() && it->first <= shape.area + slack && compared < kPartsMaxCompares; ++it) {
+            if (!parts::similar(shape, it->second.shape, tolerance_)) continue;
+            ++compared;
+            if (const auto turn = parts::turn_onto(shape, it->second.shape, tolerance_))
+                return std::pair{it->second.group, *turn};
+        }
+        return std::nullopt;
+    }
+
+    double tolerance_;
+    std::map<std::pair<std::size_t, std::size_t>, Bucket> buckets_;  // by (loops, pieces)
+    std::size_t groups_ = 0;
+    std::size_t kept_pieces_ = 0;
+};
+
+// The parts list made a plate at a time.
+class PartsBuilder {
+public:
+    explicit PartsBuilder(const Profile& profile)
+        : profile_(profile),
+          tolerance_(std::max(kPartsSameShapeMm, kPartsSameShapeUnits * profile.unit_mm)),
+          closure_mm_(profile.arc_tolerance_units * profile.unit_mm),
+          grouper_(tolerance_) {}
+
+    // The contours [begin, end) of `all`, one plate's, their motions in `store`.
+    void add_plate(const std::vector<PlanContour>& all, std::size_t begin, std::size_t end, const MotionStore& store) {
+        std::map<int, std::vector<std::size_t>> holes;  // by the part they lie in
+        for (std::size_t k = begin; k < end; ++k)
+            if (all[k].role == ContourRole::Hole && all[k].parent >= 0 && is_part(all[all[k].parent].role))
+                holes[all[k].parent].push_back(k);
+        PlateUse plate;
+        plate.plate = all[begin].plate;
+        std::vector<std::vector<Point>> outlines;
+        double kerf_mm = 0;
+        for (std::size_t k = begin; k < end; ++k) {
+            if (!is_part(all[k].role)) continue;
+            std::vector<std::size_t> cuts{k};
+            const auto h = holes.find(static_cast<int>(k));
+            if (h != holes.end()) cuts.insert(cuts.end(), h->second.begin(), h->second.end());
+            add_part(all, cuts, store, plate, kerf_mm);
+            outlines.emplace_back();
+            parts::flatten_loop(last_outline_, kPlanChordToleranceMm, kPlanMaxArcChords, outlines.back());
+        }
+        if (plate.parts == 0) return;
+        finish_plate(plate, outlines, kerf_mm);
+        list_.plates.push_back(plate);
+    }
+
+    PartsList finish() {
+        for (PartGroup& g : list_.groups) g.cut_length_mm /= g.count;
+        return std::move(list_);
+    }
+
+private:
+    void add_part(const std::vector<PlanContour>& all, const std::vector<std::size_t>& cuts, const MotionStore& store,
+                  PlateUse& plate, double& kerf_mm) {
+        Part part;
+        part.plate = all[cuts[0]].plate;
+        std::vector<parts::Loop> loops;
+        for (const std::size_t k : cuts) {
+            const PlanContour& c = all[k];
+            const std::vector<MotionRecord> motions = contour_motions(c, store);
+            for (const MotionRecord& m : motions) kerf_mm = std::max(kerf_mm, m.kerf_mm);
+            part.cuts.push_back({c.first_line, c.last_line});
+            part.cut_length_mm += contour_length(motions);
+            loops.push_back(parts::make_loop(loop_motions(c, motions, closure_mm_), tolerance_));
+        }
+        for (const parts::Seg& s : loops[0].segs) part.box.add(parts::seg_box(s));
+        last_outline_ = loops[0];
+        const parts::Shape shape = parts::make_shape(std::move(loops));
+        part.label_at = parts::label_point(shape, part.box);
+        const Grouper::Found found = grouper_.place(shape);
+        if (found.is_new) new_group(shape, found);
+        PartGroup& g = list_.groups[found.group];
+        part.group = g.number;
+        part.turned_deg = degrees(found.turned);
+        ++g.count;
+        g.cut_length_mm += part.cut_length_mm;
+        g.parts.push_back(static_cast<std::uint32_t>(list_.parts.size()));
+        ++plate.parts;
+        plate.net_area_mm2 += g.net_area_mm2;
+        plate.area.add(part.box);
+        list_.parts.push_back(std::move(part));
+    }
+
+    void new_group(const parts::Shape& shape, const Grouper::Found& found) {
+        PartGroup g;
+        g.number = static_cast<unsigned>(list_.groups.size() + 1);
+        g.net_area_mm2 = shape.area;
+        const parts::OutlineRect rect = parts::smallest_rectangle(shape.loops[0]);
+        g.length_mm = rect.length;
+        g.width_mm = rect.width;
+        g.holes = static_cast<unsigned>(shape.loops.size() - 1);
+        g.pierces = g.holes + 1;
+        if (profile_.material)
+            g.mass_kg = shape.area * profile_.material->thickness_mm * profile_.material->density_kg_m3 / kMm3PerM3;
+        if (found.mirror_of) {
+            g.mirror_of = list_.groups[*found.mirror_of].number;
+            if (list_.groups[*found.mirror_of].mirror_of == 0) list_.groups[*found.mirror_of].mirror_of = g.number;
+        }
+        list_.groups.push_back(std::move(g));
+    }
+
+    // The plate's area (plate_mm from the program's origin, or from the parts' lowest corner when they do not lie
+    // in that; else the parts' box), utilisation, scrap and remnant.
+    void finish_plate(PlateUse& plate, const std::vector<std::vector<Point>>& outlines, double kerf_mm) const {
+        const Box parts_box = plate.area;
+        if (profile_.plate) {
+            plate.from_profile = true;
+            const double x = profile_.plate->x_mm, y = profile_.plate->y_mm;
+            plate.area = Box{0, 0, x, y, false};
+            if (!plate.area.contains(parts_box))
+                plate.area = Box{parts_box.min_x, parts_box.min_y, parts_box.min_x + x, parts_box.min_y + y, false};
+        }
+        const double area = (plate.area.max_x - plate.area.min_x) * (plate.area.max_y - plate.area.min_y);
+        plate.utilisation = area > 0 ? plate.net_area_mm2 / area : 0;
+        if (profile_.material)
+            plate.scrap_kg = std::max(0.0, area - plate.net_area_mm2) * profile_.material->thickness_mm *
+                             profile_.material->density_kg_m3 / kMm3PerM3;
+        // (the full kerf width from every outline: the compensation's, else the profile's width)
+        const double width = kerf_mm > 0                                             ? 2 * kerf_mm
+                             : profile_.kerf_value == KerfValueMeaning::Width ? profile_.kerf_units * profile_.unit_mm
+                                                                               : 2 * profile_.kerf_units * profile_.unit_mm;
+        plate.remnant = parts::remnant(plate.area, outlines, width);
+    }
+
+    static double degrees(double radians) {
+        double d = radians * 180 / kPi;
+        while (d <= -180) d += 360;
+        while (d > 180) d -= 360;
+        return std::fabs(d) < 1e-9 ? 0 : d;
+    }
+
+    const Profile& profile_;
+    double tolerance_;
+    double closure_mm_;
+    Grouper grouper_;
+    PartsList list_;
+    parts::Loop last_outline_;
+};
+
+// Where the plates' contours begin and end in the list (contours are listed plate by plate).
+template <class EachPlate>
+void for_each_plate(const std::vector<PlanContour>& contours, EachPlate each) {
+    for (std::size_t begin = 0, end = 0; begin < contours.size(); begin = end) {
+        for (end = begin + 1; end < contours.size() && contours[end].plate == contours[begin].plate;) ++end;
+        each(begin, end);
+    }
+}
+
+// The motions of one plate's contours, kept from the stream while it passes them (a store of the motions with
+// indices in [first, end)); the plate's parts are made when the stream has passed its last motion.
+class PlateMotions final : public MotionSink, public MotionStore {
+public:
+    PlateMotions(const std::vector<PlanContour>& contours, PartsBuilder& builder)
+        : contours_(contours), builder_(builder) {
+        for_each_plate(contours, [&](std::size_t begin, std::size_t end) {
+            Span s{begin, end, contours[begin].first_motion, contours[begin].end_motion};
+            for (std::size_t k = begin; k < end; ++k) {
+                s.first = std::min(s.first, contours[k].first_motion);
+                s.end = std::max(s.end, contours[k].end_motion);
+            }
+            plates_.push_back(s);
+        });
+    }
+    void on_motion(const MotionRecord& m) override {
+        const std::size_t index = next_++;
+        while (current_ < plates_.size() && index >= plates_[current_].end) finish_plate();
+        if (current_ < plates_.size() && index >= plates_[current_].first) kept_.push_back(m);
+    }
+    // After the stream: the plates not made yet.
+    void end() {
+        while (current_ < plates_.size()) finish_plate();
+    }
+    [[nodiscard]] MotionRecord motion(std::size_t index) const override {
+        return kept_[index - plates_[current_].first];
+    }
+
+private:
+    struct Span {
+        std::size_t begin, end_contour;
+        std::uint32_t first, end;  // the motions
+    };
+    void finish_plate() {
+        builder_.add_plate(contours_, plates_[current_].begin, plates_[current_].end_contour, *this);
+        kept_.clear();
+        ++current_;
+    }
+    const std::vector<PlanContour>& contours_;
+    PartsBuilder& builder_;
+    std::vector<Span> plates_;
+    std::size_t current_ = 0;
+    std::size_t next_ = 0;
+    std::vector<MotionRecord> kept_;
+};
+
+// Reads and interprets the tape into `sink`, a chunk of blocks at a time.
+void stream_tape(std::string_view bytes, const Profile& profile, InputFormat format, MotionSink& sink) {
+    std::vector<Diagnostic> ignored;  // (the check has them)
+    Interpreter interpreter(bytes, profile, sink, ignored);
+    TapeReader reader(bytes, profile, format);
+    Tape chunk;
+    while (reader.read_chunk(chunk, kPartsChunkBlocks)) interpreter.run(chunk);
+    interpreter.finish();
+}
+
+}  // namespace
+
+PartsList find_parts(const std::vector<PlanContour>& contours, const MotionStore& store, const Profile& profile) {
+    PartsBuilder builder(profile);
+    for_each_plate(contours, [&](std::size_t begin, std::size_t end) { builder.add_plate(contours, begin, end, store); });
+    return builder.finish();
+}
+
+PartsList tape_parts(std::string_view bytes, const Profile& profile, InputFormat format) {
+    CutPlan plan(profile, /*keep_contours*/ true);
+    stream_tape(bytes, profile, format, plan);
+    (void)plan.finish();
+    PartsBuilder builder(profile);
+    PlateMotions motions(plan.contours(), builder);
+    stream_tape(bytes, profile, format, motions);
+    motions.end();
+    return builder.finish();
+}
+
+}  // namespace essi
