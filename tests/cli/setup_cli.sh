@@ -18,7 +18,7 @@ done
 wasm="$(bash "$root/scripts/setup" --list wasm)"
 if has "$wasm" emscripten && ! has "$wasm" chromium; then pass "wasm: emscripten, no chromium"; else fail "wasm: $wasm"; fi
 test_list="$(bash "$root/scripts/setup" --list test)"
-for p in emscripten chromium linuxcnc-uspace libpolyclipping-dev librsvg2-bin xvfb poppler-utils; do
+for p in emscripten chromium linuxcnc-uspace libpolyclipping-dev librsvg2-bin xvfb poppler-utils clang-format-14; do
   if has "$test_list" "$p"; then pass "test installs $p"; else fail "test lacks $p"; fi
 done
 dist="$(bash "$root/scripts/setup" --list dist)"

@@ -7,11 +7,15 @@
 namespace essi::viewer::platform {
 
 void Platform::copy_text(const std::string& text) {
+    // clang-format off
     EM_ASM({ window.essikitCopy && window.essikitCopy(UTF8ToString($0)); }, text.c_str());
+    // clang-format on
 }
 
 void Platform::paste() {
+    // clang-format off
     EM_ASM({ window.essikitPasteButton && window.essikitPasteButton(); });
+    // clang-format on
 }
 
 }  // namespace essi::viewer::platform

@@ -24,6 +24,7 @@ bool Platform::has_cjk_font() const {
 }
 
 void Platform::load_cjk_font(UiFonts& fonts) {
+    // clang-format off
     EM_ASM({
         var fonts = $0;
         fetch('essi_cjk.ttc')
@@ -43,6 +44,7 @@ void Platform::load_cjk_font(UiFonts& fonts) {
                 Module._essi_font_loaded(fonts, 0, 0);
             });
     }, &fonts);
+    // clang-format on
 }
 
 }  // namespace essi::viewer::platform

@@ -47,6 +47,7 @@ void on_scroll(GLFWwindow* window, double dx, double dy) {
 // a MessageChannel message: chained setTimeout(0) calls are held back 4 ms each by the browser. The message is the
 // loop's address, handed back to essi_background_slice.
 void queue_background(Loop* loop) {
+    // clang-format off
     EM_ASM({
         if (!Module.essiBackgroundChannel) {
             Module.essiBackgroundChannel = new MessageChannel();
@@ -54,6 +55,7 @@ void queue_background(Loop* loop) {
         }
         Module.essiBackgroundChannel.port2.postMessage($0);
     }, loop);
+    // clang-format on
 }
 
 }  // namespace
@@ -81,6 +83,7 @@ void fit_canvas(Loop& loop) {
         // The canvas in device pixels, GLFW's window in CSS pixels (what ImGui lays out in). Not glfwSetWindowSize:
         // Emscripten's asks for fullscreen instead of sizing the canvas when the size is the screen's (F11, a
         // kiosk), and the canvas is left stretched.
+        // clang-format off
         EM_ASM({
             Browser.setCanvasSize($2, $3);
             if (GLFW.active) {
@@ -89,6 +92,7 @@ void fit_canvas(Loop& loop) {
             }
         }, static_cast<int>(w), static_cast<int>(h), static_cast<int>(std::lround(w * ratio)),
            static_cast<int>(std::lround(h * ratio)));
+        // clang-format on
         loop.pixel_ratio = ratio;
     }
 }
@@ -124,7 +128,9 @@ void frame(void* arg) {
 
 int main() {
     if (!glfwInit()) {
+        // clang-format off
         EM_ASM(if (window.essikitFatal) window.essikitFatal("GLFW could not start."));
+        // clang-format on
         return 1;
     }
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
@@ -140,7 +146,9 @@ int main() {
     emscripten_get_element_css_size("#canvas", &w, &h);
     GLFWwindow* window = glfwCreateWindow(static_cast<int>(w), static_cast<int>(h), "essikit viewer", nullptr, nullptr);
     if (window == nullptr) {
+        // clang-format off
         EM_ASM(if (window.essikitFatal) window.essikitFatal("This browser cannot give the page WebGL 2 (needed to draw)."));
+        // clang-format on
         return 1;
     }
     glfwMakeContextCurrent(window);
@@ -156,6 +164,8 @@ int main() {
     if (!app.init_graphics()) std::fprintf(stderr, "essi_viewer: the drawing programs did not compile\n");
     static Loop loop{window, &app};
     emscripten_set_main_loop_arg(frame, &loop, 0, false);
+    // clang-format off
     EM_ASM(if (window.essikitStarted) window.essikitStarted());
+    // clang-format on
     return 0;
 }

@@ -7,7 +7,9 @@
 namespace essi::viewer::platform {
 
 void Platform::selection_changed(std::uint32_t line, long long motion) {
+    // clang-format off
     EM_ASM({ window.essikitSelected && window.essikitSelected($0, $1); }, line, static_cast<double>(motion));
+    // clang-format on
 }
 
 }  // namespace essi::viewer::platform
