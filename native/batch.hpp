@@ -36,16 +36,16 @@ struct ExpandOptions {
 
 // One checked file of a batch.
 struct BatchItem {
-    FileReport report;       // report.path is the path as given
-    bool read_ok = false;    // false: the file could not be read (`error` says why; report is empty)
+    FileReport report;     // report.path is the path as given
+    bool read_ok = false;  // false: the file could not be read (`error` says why; report is empty)
     std::string error;
-    double seconds = 0;      // reading and checking it
+    double seconds = 0;  // reading and checking it
 };
 
 struct BatchOptions {
-    unsigned jobs = 1;  // worker threads
+    unsigned jobs = 1;                                                      // worker threads
     std::size_t max_diagnostics = std::numeric_limits<std::size_t>::max();  // per file
-    std::uint64_t max_size = kDefaultMaxInputBytes;  // per file (--max-size)
+    std::uint64_t max_size = kDefaultMaxInputBytes;                         // per file (--max-size)
     bool parts = false;  // each result with its parts list (--parts; essi/parts.hpp)
 };
 

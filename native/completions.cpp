@@ -81,17 +81,20 @@ std::vector<std::string> top_level(const std::vector<CompletionCommand>& command
 
 // bash: the command is the first word that is not an option (and for `profile`, the next one).
 std::string bash_script(const std::vector<CompletionCommand>& commands) {
-    std::string s = "# bash completion for essi (made by `essi completions bash`)\n"
-                    "_essi() {\n"
-                    "    local cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD-1]} cmd=\"\" i w\n"
-                    "    for ((i = 1; i < COMP_CWORD; i++)); do\n"
-                    "        w=${COMP_WORDS[i]}\n"
-                    "        [[ $w == -* ]] && continue\n"
-                    "        if [[ -z $cmd ]]; then cmd=$w; elif [[ $cmd == profile && $w != */* ]]; then cmd=\"profile $w\"; break; fi\n"
-                    "    done\n"
-                    "    COMPREPLY=()\n"
-                    "    case \"$cmd\" in\n"
-                    "        \"\") COMPREPLY=($(compgen -W \"" + joined(top_level(commands)) + " --help --version\" -- \"$cur\")); return ;;\n";
+    std::string s =
+        "# bash completion for essi (made by `essi completions bash`)\n"
+        "_essi() {\n"
+        "    local cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD-1]} cmd=\"\" i w\n"
+        "    for ((i = 1; i < COMP_CWORD; i++)); do\n"
+        "        w=${COMP_WORDS[i]}\n"
+        "        [[ $w == -* ]] && continue\n"
+        "        if [[ -z $cmd ]]; then cmd=$w; elif [[ $cmd == profile && $w != */* ]]; then cmd=\"profile $w\"; "
+        "break; fi\n"
+        "    done\n"
+        "    COMPREPLY=()\n"
+        "    case \"$cmd\" in\n"
+        "        \"\") COMPREPLY=($(compgen -W \"" +
+        joined(top_level(commands)) + " --help --version\" -- \"$cur\")); return ;;\n";
     for (const CompletionCommand& c : commands) {
         std::vector<std::string> names;
         for (const CompletionOption& o : c.options) names.insert(names.end(), o.names.begin(), o.names.end());
@@ -99,7 +102,8 @@ std::string bash_script(const std::vector<CompletionCommand>& commands) {
         for (const CompletionOption& o : c.options) {
             if (!o.takes_value) continue;
             std::vector<std::string> body;
-            if (!o.choices.empty()) body.push_back("COMPREPLY=($(compgen -W \"" + joined(o.choices) + "\" -- \"$cur\"))");
+            if (!o.choices.empty())
+                body.push_back("COMPREPLY=($(compgen -W \"" + joined(o.choices) + "\" -- \"$cur\"))");
             if (o.files) body.push_back("COMPREPLY+=($(compgen -f -- \"$cur\"))");
             body.emplace_back("return");  // (a value of its own: nothing else to offer)
             s += "                " + joined(o.names, "|") + ") " + joined(body, "; ") + " ;;\n";
@@ -108,8 +112,7 @@ std::string bash_script(const std::vector<CompletionCommand>& commands) {
         s += "            if [[ $cur == -* ]]; then COMPREPLY=($(compgen -W \"" + joined(names) + "\" -- \"$cur\"))\n";
         if (!c.subcommands.empty())
             s += "            else COMPREPLY=($(compgen -W \"" + joined(c.subcommands) + "\" -- \"$cur\"))\n";
-        else if (c.files)
-            s += "            else COMPREPLY=($(compgen -f -- \"$cur\"))\n";
+        else if (c.files) s += "            else COMPREPLY=($(compgen -f -- \"$cur\"))\n";
         s += "            fi ;;\n";
     }
     s += "    esac\n}\ncomplete -o filenames -F _essi essi\n";
@@ -123,7 +126,8 @@ std::string fish_script(const std::vector<CompletionCommand>& commands) {
     for (const CompletionCommand& c : commands) {
         std::string when;
         if (c.path.size() == 1) {
-            s += "complete -c essi -n 'not __fish_seen_subcommand_from " + tops + "' -a " + c.path[0] + " -d '" + c.help + "'\n";
+            s += "complete -c essi -n 'not __fish_seen_subcommand_from " + tops + "' -a " + c.path[0] + " -d '" +
+                 c.help + "'\n";
             when = "__fish_seen_subcommand_from " + c.path[0];
             if (!c.subcommands.empty()) {
                 s += "complete -c essi -n '" + when + "; and not __fish_seen_subcommand_from " + joined(c.subcommands) +
@@ -135,7 +139,8 @@ std::string fish_script(const std::vector<CompletionCommand>& commands) {
         }
         for (const CompletionOption& o : c.options) {
             s += "complete -c essi -n '" + when + "'";
-            for (const std::string& n : o.names) s += n.rfind("--", 0) == 0 ? " -l " + n.substr(2) : " -s " + n.substr(1);
+            for (const std::string& n : o.names)
+                s += n.rfind("--", 0) == 0 ? " -l " + n.substr(2) : " -s " + n.substr(1);
             if (o.takes_value) s += o.files ? " -r -F" : " -x";
             if (!o.choices.empty()) s += " -a '" + joined(o.choices) + "'";
             s += " -d '" + o.help + "'\n";
@@ -147,8 +152,9 @@ std::string fish_script(const std::vector<CompletionCommand>& commands) {
 
 // zsh: _arguments per subcommand, the words shifted past the subcommand.
 std::string zsh_script(const std::vector<CompletionCommand>& commands) {
-    std::string s = "#compdef essi\n# zsh completion for essi (made by `essi completions zsh`)\n_essi() {\n"
-                    "    local -a commands\n    commands=(\n";
+    std::string s =
+        "#compdef essi\n# zsh completion for essi (made by `essi completions zsh`)\n_essi() {\n"
+        "    local -a commands\n    commands=(\n";
     for (const CompletionCommand& c : commands)
         if (c.path.size() == 1) s += "        '" + c.path[0] + ":" + c.help + "'\n";
     s += "    )\n    if (( CURRENT == 2 )); then _describe 'command' commands; return; fi\n"

@@ -15,7 +15,7 @@ class App;
 namespace essi::native {
 
 struct CompletionOption {
-    std::vector<std::string> names;    // "--format", "-j" ...
+    std::vector<std::string> names;  // "--format", "-j" ...
     std::string help;
     bool takes_value = false;
     std::vector<std::string> choices;  // the values it takes, when they are a list
@@ -23,15 +23,16 @@ struct CompletionOption {
 };
 
 struct CompletionCommand {
-    std::vector<std::string> path;     // {"check"}, {"profile", "show"}
+    std::vector<std::string> path;  // {"check"}, {"profile", "show"}
     std::string help;
     std::vector<CompletionOption> options;
     std::vector<std::string> subcommands;  // its own (profile: show, list)
-    bool files = false;                // takes file names after its options
+    bool files = false;                    // takes file names after its options
 };
 
 // Every subcommand of `app` (nested ones too), with its options; `profiles`: the names NAME stands for.
-[[nodiscard]] std::vector<CompletionCommand> completion_spec(const CLI::App& app, const std::vector<std::string>& profiles);
+[[nodiscard]] std::vector<CompletionCommand> completion_spec(const CLI::App& app,
+                                                             const std::vector<std::string>& profiles);
 
 // The completion script for `shell` ("bash", "zsh" or "fish"); empty for another shell.
 [[nodiscard]] std::string completion_script(std::string_view shell, const std::vector<CompletionCommand>& commands);

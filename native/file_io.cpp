@@ -46,9 +46,12 @@ bool read_chunks(std::FILE* f, std::string& out, std::string& error, std::uint64
 
 std::string size_text(std::uint64_t bytes) {
     char buf[48];
-    if (bytes >= (1ull << 30) && bytes % (1ull << 30) == 0) std::snprintf(buf, sizeof buf, "%lluGB", static_cast<unsigned long long>(bytes >> 30));
-    else if (bytes >= (1ull << 20) && bytes % (1ull << 20) == 0) std::snprintf(buf, sizeof buf, "%lluMB", static_cast<unsigned long long>(bytes >> 20));
-    else if (bytes >= (1ull << 10) && bytes % (1ull << 10) == 0) std::snprintf(buf, sizeof buf, "%lluKB", static_cast<unsigned long long>(bytes >> 10));
+    if (bytes >= (1ull << 30) && bytes % (1ull << 30) == 0)
+        std::snprintf(buf, sizeof buf, "%lluGB", static_cast<unsigned long long>(bytes >> 30));
+    else if (bytes >= (1ull << 20) && bytes % (1ull << 20) == 0)
+        std::snprintf(buf, sizeof buf, "%lluMB", static_cast<unsigned long long>(bytes >> 20));
+    else if (bytes >= (1ull << 10) && bytes % (1ull << 10) == 0)
+        std::snprintf(buf, sizeof buf, "%lluKB", static_cast<unsigned long long>(bytes >> 10));
     else std::snprintf(buf, sizeof buf, "%llu", static_cast<unsigned long long>(bytes));
     return buf;
 }

@@ -12,9 +12,9 @@ namespace essi::native {
 // `bytes` views whichever holds them and stays valid while the ReadResult lives.
 struct ReadResult {
     bool ok = false;
-    std::string_view bytes;  // the whole file
-    std::string error;       // "No such file or directory" when !ok
-    std::string owned;       // the bytes of a stream (or a file that could not be mapped)
+    std::string_view bytes;                 // the whole file
+    std::string error;                      // "No such file or directory" when !ok
+    std::string owned;                      // the bytes of a stream (or a file that could not be mapped)
     std::shared_ptr<const char[]> storage;  // the bytes of a regular file
 };
 
@@ -22,7 +22,7 @@ struct ReadResult {
 // the machines it runs on. Memory of `essi check` is about the input plus a constant (docs/security.md).
 constexpr std::uint64_t kDefaultMaxInputBytes = 1ull << 30;  // 1 GiB
 // Profile files are small: a larger one is not a profile.
-constexpr std::uint64_t kMaxProfileBytes = 1ull << 20;       // 1 MiB
+constexpr std::uint64_t kMaxProfileBytes = 1ull << 20;  // 1 MiB
 
 // Reads the whole file at `path` with one read when its size is known (regular files), in chunks
 // otherwise (pipes, devices). "-" reads standard input. Never throws. A file of more than `max_bytes` is not

@@ -9,7 +9,6 @@
 #include "essi/sha256.hpp"
 #include "essi/text_report.hpp"
 
-
 namespace essi::native {
 
 namespace {
@@ -54,10 +53,10 @@ void BatchTotals::add(const BatchItem& item, FailOn fail_on) {
 }
 
 std::string batch_summary_line(const BatchTotals& t, std::string_view profile_name, double seconds, Lang lang) {
-    std::string s = format_message(Msg::ReportSummary, lang,
-                                   {t.files, profile_name, t.files_ok, t.files - t.files_ok,
-                                    format_message(Msg::ReportErrors, lang, {t.errors}),
-                                    format_message(Msg::ReportWarnings, lang, {t.warnings})});
+    std::string s = format_message(
+        Msg::ReportSummary, lang,
+        {t.files, profile_name, t.files_ok, t.files - t.files_ok, format_message(Msg::ReportErrors, lang, {t.errors}),
+         format_message(Msg::ReportWarnings, lang, {t.warnings})});
     if (t.unreadable > 0) s += "; " + format_message(Msg::ReportUnreadable, lang, {t.unreadable});
     char buf[64];
     std::snprintf(buf, sizeof buf, "; %.3f s", seconds);
@@ -65,7 +64,9 @@ std::string batch_summary_line(const BatchTotals& t, std::string_view profile_na
     return s;
 }
 
-std::string text_file_block(const BatchItem& item, bool quiet, Lang lang) { return file_report_text(item.report, quiet, lang); }
+std::string text_file_block(const BatchItem& item, bool quiet, Lang lang) {
+    return file_report_text(item.report, quiet, lang);
+}
 
 // --- GitHub ----------------------------------------------------------------------------------------------
 namespace {
@@ -104,7 +105,8 @@ std::string github_file_block(const BatchItem& item, Lang lang) {
         out += ",title=" + code_name(d.code);
         out += "::" + github_escape_data(diagnostic_message(d, lang)) + "\n";
     }
-    if (r.omitted() > 0) out += "::notice file=" + file + ",title=essi::" + github_escape_data(omitted_text(r, lang)) + "\n";
+    if (r.omitted() > 0)
+        out += "::notice file=" + file + ",title=essi::" + github_escape_data(omitted_text(r, lang)) + "\n";
     return out;
 }
 
@@ -122,29 +124,30 @@ std::string junit_report(std::span<const BatchItem> items, std::string_view prof
         std::snprintf(time_buf, sizeof time_buf, "%.6f", s);
         return std::string(time_buf);
     };
-    const std::string counts = "tests=\"" + std::to_string(items.size()) + "\" failures=\"" +
-                               std::to_string(failures) + "\" errors=\"" + std::to_string(errors) + "\"";
+    const std::string counts = "tests=\"" + std::to_string(items.size()) + "\" failures=\"" + std::to_string(failures) +
+                               "\" errors=\"" + std::to_string(errors) + "\"";
     std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     x += "<testsuites name=\"essi check\" " + counts + " time=\"" + fmt_time(seconds) + "\">\n";
     x += "  <testsuite name=\"essi check (profile " + xml_escape(profile_name) + ")\" " + counts +
          " skipped=\"0\" time=\"" + fmt_time(seconds) + "\">\n";
     x += "    <properties>\n      <property name=\"profile\" value=\"" + xml_escape(profile_name) +
-         "\"/>\n      <property name=\"essi.version\" value=\"" + std::string(kVersion) +
-         "\"/>\n    </properties>\n";
+         "\"/>\n      <property name=\"essi.version\" value=\"" + std::string(kVersion) + "\"/>\n    </properties>\n";
     for (const BatchItem& it : items) {
         const FileReport& r = it.report;
         const std::string path = xml_escape(r.display_path());
         x += "    <testcase classname=\"essi.check\" name=\"" + path + "\" file=\"" + path + "\" time=\"" +
              fmt_time(it.seconds) + "\"";
         if (!it.read_ok) {
-            x += ">\n      <error type=\"io\" message=\"" + xml_escape(format_message(Msg::ReportCannotRead, lang, {r.display_path(), it.error})) +
+            x += ">\n      <error type=\"io\" message=\"" +
+                 xml_escape(format_message(Msg::ReportCannotRead, lang, {r.display_path(), it.error})) +
                  "\"/>\n    </testcase>\n";
             continue;
         }
         std::string diags;
         for (const Diagnostic& d : r.result.diagnostics) diags += diagnostic_line(r.display_path(), d, lang) + "\n";
         if (r.omitted() > 0)
-            diags += r.display_path() + ": " + std::string(severity_text(Severity::Note, lang)) + ": " + omitted_text(r, lang) + "\n";
+            diags += r.display_path() + ": " + std::string(severity_text(Severity::Note, lang)) + ": " +
+                     omitted_text(r, lang) + "\n";
         const std::string stats = file_stats_line(r, lang);
         if (file_fails(r, fail_on)) {
             std::string type;
@@ -192,7 +195,8 @@ static nlohmann::json sarif_related(const nlohmann::json& artifact, const Diagno
     for (const RelatedLocation& r : d.related) {
         nlohmann::json phys = artifact;
         phys["region"] = {{"startLine", r.line}, {"endLine", std::max(r.line, r.end_line)}};
-        related.push_back({{"id", id++}, {"physicalLocation", phys}, {"message", {{"text", related_message(r, lang)}}}});
+        related.push_back(
+            {{"id", id++}, {"physicalLocation", phys}, {"message", {{"text", related_message(r, lang)}}}});
     }
     return related;
 }
@@ -242,9 +246,10 @@ nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view p
         nlohmann::json artifact = {{"artifactLocation", {{"uri", uri}}}};
         if (!it.read_ok) {
             all_read = false;
-            notifications.push_back({{"level", "error"},
-                                     {"message", {{"text", format_message(Msg::ReportCannotRead, lang, {r.display_path(), it.error})}}},
-                                     {"locations", {{{"physicalLocation", artifact}}}}});
+            notifications.push_back(
+                {{"level", "error"},
+                 {"message", {{"text", format_message(Msg::ReportCannotRead, lang, {r.display_path(), it.error})}}},
+                 {"locations", {{{"physicalLocation", artifact}}}}});
             continue;
         }
         for (const Diagnostic& d : r.result.diagnostics) {
@@ -284,7 +289,8 @@ nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view p
         {"columnKind", "utf16CodeUnits"},
         {"properties", {{"profile", std::string(profile_name)}}},
     };
-    return {{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"}, {"version", "2.1.0"}, {"runs", {std::move(run)}}};
+    return {
+        {"$schema", "https://json.schemastore.org/sarif-2.1.0.json"}, {"version", "2.1.0"}, {"runs", {std::move(run)}}};
 }
 
 std::string_view codeclimate_severity(Severity s) {
@@ -298,8 +304,8 @@ std::string_view codeclimate_severity(Severity s) {
 
 nlohmann::json codeclimate_report(std::span<const BatchItem> items, Lang lang) {
     nlohmann::json issues = nlohmann::json::array();
-    const auto issue = [&](const std::string& path, std::string_view check, std::uint32_t line, std::string_view severity,
-                           const std::string& description, const std::string& english) {
+    const auto issue = [&](const std::string& path, std::string_view check, std::uint32_t line,
+                           std::string_view severity, const std::string& description, const std::string& english) {
         const std::string key = path + '\0' + std::string(check) + '\0' + std::to_string(line) + '\0' + english;
         issues.push_back({{"type", "issue"},
                           {"description", description},

@@ -21,12 +21,12 @@ enum class FailOn { Error, Warning, Never };
 
 // Totals of a batch, for the summary line and the exit code.
 struct BatchTotals {
-    std::size_t files = 0;       // read and checked
-    std::size_t files_ok = 0;    // without errors
+    std::size_t files = 0;     // read and checked
+    std::size_t files_ok = 0;  // without errors
     std::size_t unreadable = 0;
     std::size_t errors = 0;
     std::size_t warnings = 0;
-    std::size_t failed = 0;      // files that fail under the --fail-on policy (error: = files - files_ok)
+    std::size_t failed = 0;  // files that fail under the --fail-on policy (error: = files - files_ok)
     void add(const BatchItem& item, FailOn fail_on);
 };
 
@@ -48,8 +48,8 @@ struct BatchTotals {
 
 // One <testsuite> with one <testcase> per file (name and file = the path, classname "essi.check"); a file that
 // fails under fail_on gets a <failure> with its diagnostics, an unreadable file an <error>.
-[[nodiscard]] std::string junit_report(std::span<const BatchItem> items, std::string_view profile_name,
-                                       double seconds, FailOn fail_on, Lang lang = Lang::En);
+[[nodiscard]] std::string junit_report(std::span<const BatchItem> items, std::string_view profile_name, double seconds,
+                                       FailOn fail_on, Lang lang = Lang::En);
 
 // --- SARIF 2.1.0 ------------------------------------------------------------------------------------------
 // Default base of the documentation links (helpUri = base + "diagnostics.md#e301"); --docs-url changes it.
@@ -59,8 +59,7 @@ constexpr std::string_view kDefaultDocsUrl = "https://essikit.invalid/docs/";
 // The rule of every diagnostic code (id, help text from essi::code_summary, helpUri, default level).
 [[nodiscard]] nlohmann::json sarif_rules(std::string_view docs_url, Lang lang = Lang::En);
 [[nodiscard]] nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view profile_name,
-                                          std::string_view docs_url,
-                                          Lang lang = Lang::En);
+                                          std::string_view docs_url, Lang lang = Lang::En);
 
 // --- GitLab Code Quality (Code Climate issues) -------------------------------------------------------------
 // GitLab's severity of a diagnostic: an error is "critical" (the tape cannot be cut as it is), a warning "minor",

@@ -19,8 +19,8 @@ using namespace essi::cli;
 
 // In the order `essi --help` lists them. (completions comes last, after --lang is given to these.)
 constexpr DefineSubcommand kSubcommands[] = {
-    define_check, define_stats, define_parts, define_diff, define_trace, define_convert, define_render, define_report,
-    define_profile,
+    define_check,   define_stats,  define_parts,  define_diff,    define_trace,
+    define_convert, define_render, define_report, define_profile,
 #ifndef ESSI_NO_SERVE
     define_serve,
 #endif
@@ -57,8 +57,8 @@ bool choose_lang(const std::string& lang_arg) {
 
 int main(int argc, char** argv) {
     CLI::App essi{"essi: check, measure and trace ESSI cutting tapes (ISO 6582)", "essi"};
-    essi.set_version_flag("--version", std::string("essi ") + essi::native::kVersion + " (commit " +
-                                           essi::native::kGitCommit + ")");
+    essi.set_version_flag("--version",
+                          std::string("essi ") + essi::native::kVersion + " (commit " + essi::native::kGitCommit + ")");
     essi.require_subcommand(1);
 
     std::vector<Subcommand> subcommands;

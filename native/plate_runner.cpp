@@ -34,7 +34,8 @@ bool SharedPlateRunner::run_one() {
 }
 
 void SharedPlateRunner::wait() {
-    while (run_one()) {}
+    while (run_one()) {
+    }
     std::unique_lock lock(mutex_);
     changed_.wait(lock, [&] { return running_ == 0 && jobs_.empty(); });
 }

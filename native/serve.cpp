@@ -87,7 +87,8 @@ void add_policies(HardenedServer& server, const ServeOptions& o) {
         return r.status;
     };
     server.set_request_guard([refuse](const httplib::Request& req, httplib::Response& res) {
-        return refuse(req, res) ? httplib::Server::HandlerResponse::Handled : httplib::Server::HandlerResponse::Unhandled;
+        return refuse(req, res) ? httplib::Server::HandlerResponse::Handled
+                                : httplib::Server::HandlerResponse::Unhandled;
     });
     // `Expect: 100-continue` (curl, bodies over 1 MB): refused before the client sends the body.
     server.set_expect_100_continue_handler([refuse](const httplib::Request& req, httplib::Response& res) {
@@ -104,7 +105,8 @@ void add_policies(HardenedServer& server, const ServeOptions& o) {
             what = e.what();
         } catch (...) {
         }
-        std::fprintf(stderr, "essi serve: %s %s: internal error: %s\n", req.method.c_str(), loggable(req.path).c_str(), what.c_str());
+        std::fprintf(stderr, "essi serve: %s %s: internal error: %s\n", req.method.c_str(), loggable(req.path).c_str(),
+                     what.c_str());
         res.headers.clear();
         json_error(res, 500, "internal error");
         close_connection_after_response();  // the request's body may be unread
@@ -116,10 +118,16 @@ void add_policies(HardenedServer& server, const ServeOptions& o) {
             return;
         }
         const int s = res.status;
-        json_error(res, s, s == 404 ? "not found" : s == 400 ? "bad request" : s == 413 ? "request too large" : "HTTP error " + std::to_string(s));
+        json_error(res, s,
+                   s == 404   ? "not found"
+                   : s == 400 ? "bad request"
+                   : s == 413 ? "request too large"
+                              : "HTTP error " + std::to_string(s));
     });
     server.set_logger([](const httplib::Request& req, const httplib::Response& res) {
-        if (res.status >= 400) std::fprintf(stderr, "essi serve: %s %s -> %d\n", loggable(req.method).c_str(), loggable(req.path).c_str(), res.status);
+        if (res.status >= 400)
+            std::fprintf(stderr, "essi serve: %s %s -> %d\n", loggable(req.method).c_str(), loggable(req.path).c_str(),
+                         res.status);
     });
 }
 
@@ -132,7 +140,8 @@ int bind_server(HardenedServer& server, const ServeOptions& o) {
         return 0;
     }
     if (server.bind_to_port(o.host.c_str(), o.port)) return o.port;
-    std::fprintf(stderr, "essi serve: cannot listen on %s:%d (in use by another process? try --port)\n", o.host.c_str(), o.port);
+    std::fprintf(stderr, "essi serve: cannot listen on %s:%d (in use by another process? try --port)\n", o.host.c_str(),
+                 o.port);
     return 0;
 }
 
@@ -163,7 +172,8 @@ int run_serve(const ServeOptions& o) {
     }
     const std::string data_dir = o.data_dir.empty() ? default_data_dir() : o.data_dir;
     std::string store_error;
-    std::shared_ptr<ShareStore> store = ShareStore::open(data_dir, store_error, StoreLimits{o.share_ttl_s, o.max_store});
+    std::shared_ptr<ShareStore> store =
+        ShareStore::open(data_dir, store_error, StoreLimits{o.share_ttl_s, o.max_store});
     if (!store) {
         std::fprintf(stderr, "essi serve: %s\n", store_error.c_str());
         return 2;
@@ -181,7 +191,8 @@ int run_serve(const ServeOptions& o) {
     server.widen_backlog();
     const std::string shown = o.host.find(':') != std::string::npos ? "[" + o.host + "]" : o.host;
     std::printf("essi serve: http://%s:%d/  (viewer %s, examples %s, data %s; Ctrl+C stops)\n", shown.c_str(), bound,
-                o.web_root.empty() ? "built in" : o.web_root.c_str(), o.examples_dir.empty() ? "-" : o.examples_dir.c_str(), store->path().c_str());
+                o.web_root.empty() ? "built in" : o.web_root.c_str(),
+                o.examples_dir.empty() ? "-" : o.examples_dir.c_str(), store->path().c_str());
     std::fflush(stdout);
     return server.listen_after_bind() ? 0 : 2;
 }

@@ -21,26 +21,26 @@ constexpr std::uint64_t kLargeBody = 1ull << 20;        // bodies over 1 MiB cou
 
 struct ServeOptions {
     std::string host = "127.0.0.1";
-    int port = 8080;                 // 0 picks a free port
-    std::string web_root;            // the wasm build's web/ folder (index.html, essi_viewer.js/.wasm)
-    std::string examples_dir;        // served at /examples/ ("" = none)
-    std::string share_store_js;      // web/share_store.js of the source tree: served at /share_store.js when the
-                                     // web root has none (older viewer builds copy only index.html)
-    std::string data_dir;            // the share store (SQLite); "" = default_data_dir()
+    int port = 8080;             // 0 picks a free port
+    std::string web_root;        // the wasm build's web/ folder (index.html, essi_viewer.js/.wasm)
+    std::string examples_dir;    // served at /examples/ ("" = none)
+    std::string share_store_js;  // web/share_store.js of the source tree: served at /share_store.js when the
+                                 // web root has none (older viewer builds copy only index.html)
+    std::string data_dir;        // the share store (SQLite); "" = default_data_dir()
     std::uint64_t max_body = kDefaultMaxBody;
     int threads = 8;                         // requests handled at once
     std::vector<std::string> allowed_hosts;  // --allowed-host: Host names served besides loopback and --host
     std::int64_t share_ttl_s = 30ll * 24 * 3600;
     std::uint64_t max_store = 1ull << 30;
-    unsigned share_rate = 30;                // uploads per minute per client address (0 = no limit)
+    unsigned share_rate = 30;  // uploads per minute per client address (0 = no limit)
     std::size_t max_connections = 256;
     std::size_t max_client_connections = 32;
-    int request_timeout_s = 10;              // the request line and headers; the grace before min_transfer_rate
+    int request_timeout_s = 10;                    // the request line and headers; the grace before min_transfer_rate
     std::uint64_t min_transfer_rate = 1ull << 20;  // bytes per second of a body or a response (on average)
-    int body_timeout_s = 120;                // a whole body; also the longest wait for a slot (then 503)
-    std::size_t max_large_requests = 2;      // requests with a body over kLargeBody handled at once
-    std::size_t max_checks = 2;              // checks and conversions running at once, whatever their size
-    std::size_t max_diagnostics = 10000;     // diagnostics in an /api/check or /api/convert answer
+    int body_timeout_s = 120;                      // a whole body; also the longest wait for a slot (then 503)
+    std::size_t max_large_requests = 2;            // requests with a body over kLargeBody handled at once
+    std::size_t max_checks = 2;                    // checks and conversions running at once, whatever their size
+    std::size_t max_diagnostics = 10000;           // diagnostics in an /api/check or /api/convert answer
 };
 
 // Serves until the process is stopped. Prints "essi serve: http://HOST:PORT/ ..." on stdout once listening.

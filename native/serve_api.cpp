@@ -22,7 +22,6 @@
 #include "serve.hpp"
 #include "serve_socket.hpp"
 
-
 namespace essi::native {
 
 namespace {
@@ -49,8 +48,10 @@ void too_large(httplib::Response& res, std::uint64_t max_body) {
 // A slot that stayed taken for as long as a request may wait: 503 with Retry-After, the body left unread.
 void busy(httplib::Response& res, const std::string& slots, std::chrono::milliseconds waited) {
     res.set_header("Retry-After", "5");
-    json_error(res, 503, "server busy: every slot for " + slots + " stayed taken for " +
-                             std::to_string(std::chrono::duration_cast<std::chrono::seconds>(waited).count()) + " s; retry later");
+    json_error(res, 503,
+               "server busy: every slot for " + slots + " stayed taken for " +
+                   std::to_string(std::chrono::duration_cast<std::chrono::seconds>(waited).count()) +
+                   " s; retry later");
     close_connection_after_response();
 }
 
@@ -121,9 +122,10 @@ void set_body(httplib::Response& res, std::string&& text, const char* type, cons
         return;
     }
     auto held = std::make_shared<std::pair<std::string, Keep>>(std::move(text), keep);
-    res.set_content_provider(held->first.size(), type, [held](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
-        return sink.write(held->first.data() + offset, std::min<std::size_t>(length, 1 << 20));
-    });
+    res.set_content_provider(held->first.size(), type,
+                             [held](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                                 return sink.write(held->first.data() + offset, std::min<std::size_t>(length, 1 << 20));
+                             });
 }
 
 std::string param_or(const httplib::Request& req, const char* key, const char* fallback) {
@@ -152,8 +154,9 @@ std::optional<TapeRequest> tape_request(const httplib::Request& req, httplib::Re
         const std::string v = req.get_param_value("max_per_code");
         const bool digits = !v.empty() && v.size() <= 10 && v.find_first_not_of("0123456789") == std::string::npos;
         if (!digits || std::stoull(v) > kMaxPerCodeLimit) {
-            json_error(res, 400, "max_per_code='" + v + "': expected a whole number from 0 to " +
-                                     std::to_string(kMaxPerCodeLimit) + " (0: no limit)");
+            json_error(res, 400,
+                       "max_per_code='" + v + "': expected a whole number from 0 to " +
+                           std::to_string(kMaxPerCodeLimit) + " (0: no limit)");
             return std::nullopt;
         }
         r.max_per_code = static_cast<std::size_t>(std::stoull(v));
@@ -161,7 +164,8 @@ std::optional<TapeRequest> tape_request(const httplib::Request& req, httplib::Re
     return r;
 }
 
-void check_tape(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& body, const Keep& keep) {
+void check_tape(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& body,
+                const Keep& keep) {
     const auto request = tape_request(req, res);
     if (!request) return;
     FileReport report;
@@ -179,13 +183,16 @@ void check_tape(const ApiLimits& limits, const httplib::Request& req, httplib::R
 // {"text", "diagnostics"}; 422 with the diagnostics when the tape has errors (as `essi convert` exits 1), unless
 // force=1 (then the text of what the machine would run, with X-Essi-Errors). At most --max-diagnostics
 // diagnostics, the rest counted in "diagnostics_omitted".
-void convert(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& body, const Keep& keep) {
+void convert(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& body,
+             const Keep& keep) {
     const auto request = tape_request(req, res);
     if (!request) return;
     const std::string to = param_or(req, "to", "");
     ConvertOptions options;
     if (const auto format = parse_output_format(to)) options.to = *format;
-    else return json_error(res, 400, "to=" + std::string(to.empty() ? "(none)" : "'" + to + "'") + ": expected essi, eia or gcode");
+    else
+        return json_error(
+            res, 400, "to=" + std::string(to.empty() ? "(none)" : "'" + to + "'") + ": expected essi, eia or gcode");
     const TapeSetup setup = request->setup(body);
     options.target = setup.profile;
     if (req.has_param("to_profile")) {
@@ -223,8 +230,8 @@ void share_tape(ShareStore& store, httplib::Response& res, const std::string& bo
     if (!put.ok) return json_error(res, 500, "cannot store the tape");
     res.status = put.created ? 201 : 200;
     res.set_header("Location", "/api/share/" + put.id);
-    nlohmann::json j{{"id", put.id},           {"url", "/#share=" + put.id}, {"api_url", "/api/share/" + put.id},
-                     {"size", body.size()},    {"created", put.created},     {"expires_unix", put.expires_unix}};
+    nlohmann::json j{{"id", put.id},        {"url", "/#share=" + put.id}, {"api_url", "/api/share/" + put.id},
+                     {"size", body.size()}, {"created", put.created},     {"expires_unix", put.expires_unix}};
     if (put.created) j["delete_token"] = put.delete_token;
     res.set_content(dump(j), "application/json");
 }
@@ -239,12 +246,15 @@ void with_body(ApiContext& ctx, const httplib::Request& req, httplib::Response& 
     BodyReading reading;  // no worker slot while waiting for a slot or for the client's bytes
     const Keep slots = std::make_shared<Slots>();
     slots->large = std::make_unique<SemaphoreHold>(is_large(req) ? &ctx.large_bodies : nullptr, l.slot_wait);
-    if (!slots->large->held()) return busy(res, "large requests (--max-large-requests " + std::to_string(l.max_large_requests) + ")", l.slot_wait);
+    if (!slots->large->held())
+        return busy(res, "large requests (--max-large-requests " + std::to_string(l.max_large_requests) + ")",
+                    l.slot_wait);
     reading.start_clock();
     std::optional<std::string> body = read_body(req, res, reader, l.max_body);
     if (!body) return;
     slots->running = std::make_unique<SemaphoreHold>(work, l.slot_wait);
-    if (!slots->running->held()) return busy(res, "checks (--max-checks " + std::to_string(l.max_checks) + ")", l.slot_wait);
+    if (!slots->running->held())
+        return busy(res, "checks (--max-checks " + std::to_string(l.max_checks) + ")", l.slot_wait);
     reading.done();
     handle(*body, slots);
 }
@@ -265,21 +275,24 @@ void get_share(const std::shared_ptr<ShareStore>& store, const httplib::Request&
     res.set_header("Cache-Control", "private, no-cache");  // content-addressed, but it can expire or be deleted
     constexpr const char* kType = "text/plain; charset=us-ascii";
     if (*size == 0) return res.set_content("", kType);
-    res.set_content_provider(static_cast<std::size_t>(*size), kType, [store, id](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
-        std::vector<char> buf(std::min<std::size_t>(length, 64 * 1024));
-        const std::int64_t n = store->read(id, offset, buf.data(), buf.size());
-        return n > 0 && sink.write(buf.data(), static_cast<std::size_t>(n));
-    });
+    res.set_content_provider(static_cast<std::size_t>(*size), kType,
+                             [store, id](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                                 std::vector<char> buf(std::min<std::size_t>(length, 64 * 1024));
+                                 const std::int64_t n = store->read(id, offset, buf.data(), buf.size());
+                                 return n > 0 && sink.write(buf.data(), static_cast<std::size_t>(n));
+                             });
 }
 
 void delete_share(ShareStore& store, const httplib::Request& req, httplib::Response& res) {
     const std::string id = req.matches[1];
     if (!valid_id(id, res)) return;
-    const std::string token = req.has_header("X-Delete-Token") ? req.get_header_value("X-Delete-Token") : param_or(req, "token", "");
+    const std::string token =
+        req.has_header("X-Delete-Token") ? req.get_header_value("X-Delete-Token") : param_or(req, "token", "");
     switch (store.remove(id, token)) {
         case ShareStore::Removal::removed: res.status = 204; return;
         case ShareStore::Removal::missing: return json_error(res, 404, "no shared tape " + id);
-        case ShareStore::Removal::wrong_token: return json_error(res, 403, "wrong or missing delete token (X-Delete-Token)");
+        case ShareStore::Removal::wrong_token:
+            return json_error(res, 403, "wrong or missing delete token (X-Delete-Token)");
         case ShareStore::Removal::failed: return json_error(res, 500, "cannot delete the tape");
     }
 }
@@ -293,25 +306,32 @@ void json_error(httplib::Response& res, int status, const std::string& message) 
 
 void add_api_routes(httplib::Server& server, const std::shared_ptr<ApiContext>& ctx) {
     server.Get("/api/health", [ctx](const httplib::Request&, httplib::Response& res) {
-        res.set_content(dump({{"ok", true}, {"version", kVersion}, {"max_body", ctx->limits.max_body},
+        res.set_content(dump({{"ok", true},
+                              {"version", kVersion},
+                              {"max_body", ctx->limits.max_body},
                               {"profiles", builtin_profile_names()}}),
                         "application/json");
     });
     server.Post("/api/check", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
-        with_body(*ctx, req, res, reader, &ctx->checks, [&](const std::string& body, const Keep& keep) { check_tape(ctx->limits, req, res, body, keep); });
+        with_body(*ctx, req, res, reader, &ctx->checks,
+                  [&](const std::string& body, const Keep& keep) { check_tape(ctx->limits, req, res, body, keep); });
     });
     server.Post("/api/convert", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
-        with_body(*ctx, req, res, reader, &ctx->checks, [&](const std::string& body, const Keep& keep) { convert(ctx->limits, req, res, body, keep); });
+        with_body(*ctx, req, res, reader, &ctx->checks,
+                  [&](const std::string& body, const Keep& keep) { convert(ctx->limits, req, res, body, keep); });
     });
     server.Post("/api/share", [ctx](const httplib::Request& req, httplib::Response& res, const Reader& reader) {
         if (const unsigned wait = ctx->share_rate.try_take(client_key(req.remote_addr))) {
             res.set_header("Retry-After", std::to_string(wait));
-            json_error(res, 429, "too many shares from this address (--share-rate); retry in " + std::to_string(wait) + " s");
+            json_error(res, 429,
+                       "too many shares from this address (--share-rate); retry in " + std::to_string(wait) + " s");
             return close_connection_after_response();
         }
-        with_body(*ctx, req, res, reader, nullptr, [&](const std::string& body, const Keep&) { share_tape(*ctx->store, res, body); });
+        with_body(*ctx, req, res, reader, nullptr,
+                  [&](const std::string& body, const Keep&) { share_tape(*ctx->store, res, body); });
     });
-    server.Get(R"(/api/share/([^/]*))", [ctx](const httplib::Request& req, httplib::Response& res) { get_share(ctx->store, req, res); });
+    server.Get(R"(/api/share/([^/]*))",
+               [ctx](const httplib::Request& req, httplib::Response& res) { get_share(ctx->store, req, res); });
     server.Delete(R"(/api/share/([^/]*))", [ctx](const httplib::Request& req, httplib::Response& res, const Reader&) {
         delete_share(*ctx->store, req, res);
         close_connection_after_response();  // a DELETE body (if any) is not read
@@ -327,7 +347,8 @@ Refusal method_refusal(const httplib::Request& req) {
     };
     if (p == "/api/health") return only({"GET", "HEAD"}, "GET, HEAD");
     if (p == "/api/check" || p == "/api/convert" || p == "/api/share") return only({"POST"}, "POST");
-    if (p.rfind("/api/share/", 0) == 0 && p.find('/', 11) == std::string::npos) return only({"GET", "HEAD", "DELETE"}, "GET, HEAD, DELETE");
+    if (p.rfind("/api/share/", 0) == 0 && p.find('/', 11) == std::string::npos)
+        return only({"GET", "HEAD", "DELETE"}, "GET, HEAD, DELETE");
     if (p == "/api" || p.rfind("/api/", 0) == 0) return {404, "no API endpoint " + p, ""};
     return only({"GET", "HEAD"}, "GET, HEAD");  // the viewer's files and the examples
 }

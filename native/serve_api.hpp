@@ -35,7 +35,8 @@ struct ApiContext {
     Semaphore checks;
     RateLimit share_rate;
     ApiContext(std::shared_ptr<ShareStore> s, const ApiLimits& l)
-        : store(std::move(s)), limits(l), large_bodies(l.max_large_requests), checks(l.max_checks), share_rate(l.share_rate) {}
+        : store(std::move(s)), limits(l), large_bodies(l.max_large_requests), checks(l.max_checks),
+          share_rate(l.share_rate) {}
 };
 
 void add_api_routes(httplib::Server& server, const std::shared_ptr<ApiContext>& ctx);

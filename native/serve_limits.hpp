@@ -22,7 +22,8 @@ namespace essi::native {
 
 class ClientSlots {
 public:
-    ClientSlots(std::size_t max_total, std::size_t max_per_client) : max_total_(max_total), max_per_client_(max_per_client) {}
+    ClientSlots(std::size_t max_total, std::size_t max_per_client)
+        : max_total_(max_total), max_per_client_(max_per_client) {}
     // Takes a slot for `client`; false (nothing taken) when either limit is reached.
     bool enter(const std::string& client);
     void leave(const std::string& client);
@@ -53,11 +54,15 @@ private:
 // false and nothing is released.
 class SemaphoreHold {
 public:
-    explicit SemaphoreHold(Semaphore* sem) : sem_(sem) { if (sem_) sem_->acquire(); }
+    explicit SemaphoreHold(Semaphore* sem) : sem_(sem) {
+        if (sem_) sem_->acquire();
+    }
     SemaphoreHold(Semaphore* sem, std::chrono::milliseconds wait) : sem_(sem) {
         if (sem_ && !sem_->try_acquire_for(wait)) sem_ = nullptr, held_ = false;
     }
-    ~SemaphoreHold() { if (sem_) sem_->release(); }
+    ~SemaphoreHold() {
+        if (sem_) sem_->release();
+    }
     [[nodiscard]] bool held() const { return held_; }
     SemaphoreHold(const SemaphoreHold&) = delete;
     SemaphoreHold& operator=(const SemaphoreHold&) = delete;

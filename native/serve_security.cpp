@@ -17,7 +17,8 @@ namespace {
 
 std::string lower(std::string_view s) {
     std::string out(s);
-    std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(out.begin(), out.end(), out.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return out;
 }
 
@@ -78,11 +79,13 @@ bool valid_qvalue(std::string_view v) {
 std::string framing_problem(const httplib::Request& req) {
     const auto lengths = req.headers.equal_range("Content-Length");
     for (auto it = lengths.first; it != lengths.second; ++it) {
-        if (!all_digits(it->second) || it->second.size() > 18) return "Content-Length '" + it->second.substr(0, 40) + "' is not a number of bytes";
+        if (!all_digits(it->second) || it->second.size() > 18)
+            return "Content-Length '" + it->second.substr(0, 40) + "' is not a number of bytes";
         if (it->second != lengths.first->second) return "conflicting Content-Length headers";
     }
     if (req.headers.count("Transfer-Encoding") > 1) return "more than one Transfer-Encoding header";
-    if (req.has_header("Transfer-Encoding") && req.has_header("Content-Length")) return "both Content-Length and Transfer-Encoding";
+    if (req.has_header("Transfer-Encoding") && req.has_header("Content-Length"))
+        return "both Content-Length and Transfer-Encoding";
     return {};
 }
 
@@ -93,7 +96,8 @@ void set_if_absent(httplib::Response& res, const char* name, const char* value) 
 std::string base64_of_hex(const std::string& hex) {
     static const char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     std::string bytes;
-    for (std::size_t i = 0; i + 1 < hex.size(); i += 2) bytes.push_back(static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16)));
+    for (std::size_t i = 0; i + 1 < hex.size(); i += 2)
+        bytes.push_back(static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16)));
     std::string out;
     for (std::size_t i = 0; i < bytes.size(); i += 3) {
         unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
@@ -155,7 +159,8 @@ Refusal check_request(const httplib::Request& req, const HostPolicy& hosts, Meth
     }
     if (!req.has_header("Host")) return {400, "a Host header is required"};
     if (!host_allowed(req, hosts)) {
-        return {403, "Host '" + host_name(req.get_header_value("Host")) + "' is not served here (--allowed-host NAME allows it)"};
+        return {403, "Host '" + host_name(req.get_header_value("Host")) +
+                         "' is not served here (--allowed-host NAME allows it)"};
     }
     if (methods) {
         if (Refusal r = methods(req); r.status != 0) return r;
@@ -165,7 +170,8 @@ Refusal check_request(const httplib::Request& req, const HostPolicy& hosts, Meth
     }
     if (const std::string problem = framing_problem(req); !problem.empty()) return {400, "bad request: " + problem};
     if (req.has_header("Transfer-Encoding") && lower(trim(req.get_header_value("Transfer-Encoding"))) != "chunked") {
-        return {501, "Transfer-Encoding '" + req.get_header_value("Transfer-Encoding").substr(0, 40) + "' is not supported: only chunked"};
+        return {501, "Transfer-Encoding '" + req.get_header_value("Transfer-Encoding").substr(0, 40) +
+                         "' is not supported: only chunked"};
     }
     if (req.method == "POST" && !content_type_ok(req)) {
         return {415, "POST needs Content-Type: application/octet-stream (or text/plain); the body is the tape"};
@@ -186,7 +192,8 @@ bool accepts_gzip(std::string_view accept_encoding) {
             std::string_view params = element.substr(semi + 1);
             const std::size_t eq = params.find('=');
             const std::string name = lower(trim(params.substr(0, eq)));
-            const std::string_view value = eq == std::string_view::npos ? std::string_view() : trim(params.substr(eq + 1));
+            const std::string_view value =
+                eq == std::string_view::npos ? std::string_view() : trim(params.substr(eq + 1));
             if (name != "q" || !valid_qvalue(value)) continue;  // an element with another parameter is ignored
             wanted = value.find_first_not_of("0.") != std::string_view::npos;
         }

@@ -26,8 +26,8 @@ namespace essi::native {
 [[nodiscard]] bool is_clean_text(std::string_view s);
 
 struct HostPolicy {
-    std::string bound_host;               // --host
-    std::vector<std::string> allowed;     // --allowed-host (lower-case, without port)
+    std::string bound_host;            // --host
+    std::vector<std::string> allowed;  // --allowed-host (lower-case, without port)
 };
 
 // The problem with the request as an error (status, message); status 0 when the request may be routed.
@@ -40,7 +40,8 @@ struct Refusal {
 };
 // `methods` (the routes' methods, serve_api.hpp) is asked after the Host check and before the others.
 using MethodPolicy = Refusal (*)(const httplib::Request&);
-[[nodiscard]] Refusal check_request(const httplib::Request& req, const HostPolicy& hosts, MethodPolicy methods = nullptr);
+[[nodiscard]] Refusal check_request(const httplib::Request& req, const HostPolicy& hosts,
+                                    MethodPolicy methods = nullptr);
 
 // Whether an Accept-Encoding value accepts gzip: a `gzip` or `x-gzip` element (or `*` when gzip is not named)
 // with a q-value above 0. "gzip;q=0", "x-gzip-nope" and "identity" do not.

@@ -162,13 +162,16 @@ private:
     Clock::time_point rate_deadline() const {
         Clock::time_point deadline = start_ + std::chrono::seconds(limits_.request_timeout_s);
         if (phase_ == Phase::head) return deadline;
-        return deadline + std::chrono::milliseconds(static_cast<long long>(static_cast<double>(bytes_) / limits_.min_rate * 1000));
+        return deadline +
+               std::chrono::milliseconds(static_cast<long long>(static_cast<double>(bytes_) / limits_.min_rate * 1000));
     }
     Clock::time_point total_deadline() const { return start_ + std::chrono::seconds(limits_.body_timeout_s); }
     int remaining_ms() const {
         using ms = std::chrono::milliseconds;
-        const Clock::time_point deadline = phase_ == Phase::body ? std::min(rate_deadline(), total_deadline()) : rate_deadline();
-        return static_cast<int>(std::min<long long>(std::chrono::duration_cast<ms>(deadline - Clock::now()).count(), 1 << 30));
+        const Clock::time_point deadline =
+            phase_ == Phase::body ? std::min(rate_deadline(), total_deadline()) : rate_deadline();
+        return static_cast<int>(
+            std::min<long long>(std::chrono::duration_cast<ms>(deadline - Clock::now()).count(), 1 << 30));
     }
     socket_t sock_;
     const ConnectionLimits& limits_;
@@ -222,15 +225,16 @@ void refuse(socket_t sock) {
     static const std::string kBody = R"({"error":"too many connections from this address; retry later","status":429})";
     static const std::string kBusy =
         "HTTP/1.1 429 Too Many Requests\r\nContent-Type: application/json\r\nRetry-After: 1\r\nConnection: close\r\n"
-        "Content-Length: " + std::to_string(kBody.size()) + "\r\n\r\n" + kBody;
+        "Content-Length: " +
+        std::to_string(kBody.size()) + "\r\n\r\n" + kBody;
     [[maybe_unused]] const ssize_t n = send(sock, kBusy.data(), kBusy.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
 }
 
 thread_local bool t_close_after = false;
-thread_local bool t_routed = false;                // the request reached the routes (not refused by httplib itself)
-thread_local bool t_body_unread = false;           // the request declared a body not read to its end
-thread_local Semaphore* t_worker = nullptr;        // the worker slot this thread holds, if any
-thread_local DeadlineStream* t_stream = nullptr;   // the connection this thread serves
+thread_local bool t_routed = false;               // the request reached the routes (not refused by httplib itself)
+thread_local bool t_body_unread = false;          // the request declared a body not read to its end
+thread_local Semaphore* t_worker = nullptr;       // the worker slot this thread holds, if any
+thread_local DeadlineStream* t_stream = nullptr;  // the connection this thread serves
 
 }  // namespace
 
@@ -245,7 +249,8 @@ HardenedServer::HardenedServer(const ConnectionLimits& limits)
         t_worker = &workers_;
         t_routed = true;
         if (t_stream) waiting_.busy(t_stream->socket());
-        t_body_unread = req.has_header("Transfer-Encoding") || (req.has_header("Content-Length") && req.get_header_value("Content-Length") != "0");
+        t_body_unread = req.has_header("Transfer-Encoding") ||
+                        (req.has_header("Content-Length") && req.get_header_value("Content-Length") != "0");
         return guard_ ? guard_(req, res) : HandlerResponse::Unhandled;
     });
     set_post_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
@@ -401,8 +406,8 @@ std::optional<ReadFailure> read_failure() {
         case DeadlineStream::Failure::head_timeout:
             return ReadFailure{408, "request timeout: the request line and headers must arrive within " + timeout};
         case DeadlineStream::Failure::head_too_large:
-            return ReadFailure{431, "request headers too large: at most " + std::to_string(kMaxHeadBytes) + " bytes in " +
-                                        std::to_string(kMaxHeadLines) + " lines"};
+            return ReadFailure{431, "request headers too large: at most " + std::to_string(kMaxHeadBytes) +
+                                        " bytes in " + std::to_string(kMaxHeadLines) + " lines"};
         case DeadlineStream::Failure::line_too_long:
             return ReadFailure{400, "a line of the request is longer than " + std::to_string(kMaxLineBytes) + " bytes"};
         case DeadlineStream::Failure::body_too_slow:

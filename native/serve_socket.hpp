@@ -48,7 +48,7 @@ struct ConnectionLimits {
     int body_timeout_s = 120;         // a whole body
 };
 
-inline constexpr int kEvictAfterMs = 1000;              // a connection waiting this long may be closed for a new one
+inline constexpr int kEvictAfterMs = 1000;               // a connection waiting this long may be closed for a new one
 inline constexpr std::size_t kMaxHeadBytes = 64 * 1024;  // the request line and headers together
 inline constexpr std::size_t kMaxHeadLines = 128;        // the request line, the headers and the blank line
 inline constexpr std::size_t kMaxLineBytes = 64 * 1024;  // any line read (a chunk size too)
@@ -56,8 +56,8 @@ inline constexpr std::size_t kMaxLineBytes = 64 * 1024;  // any line read (a chu
 // The connections waiting for a request or still reading its head, by socket, with the time they began to wait.
 class WaitingConnections {
 public:
-    void wait(socket_t sock);  // from now, `sock` waits for a request (or its head)
-    void busy(socket_t sock);  // its request was read: it may no longer be closed for a new connection
+    void wait(socket_t sock);   // from now, `sock` waits for a request (or its head)
+    void busy(socket_t sock);   // its request was read: it may no longer be closed for a new connection
     void leave(socket_t sock);  // before the socket is closed
     // Shuts down the connection waiting longest (at least kEvictAfterMs); true when one was, or is still going.
     bool evict_one();

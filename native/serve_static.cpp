@@ -26,9 +26,9 @@ struct Served {
     const char* type;
 };
 constexpr Served kViewerFiles[] = {
-    {"index.html", "text/html; charset=utf-8"},    {"essi_viewer.js", "text/javascript"},
-    {"essi_viewer.wasm", "application/wasm"},      {"essi_viewer.data", "application/octet-stream"},
-    {"share_store.js", "text/javascript"},         {"favicon.ico", "image/x-icon"},
+    {"index.html", "text/html; charset=utf-8"}, {"essi_viewer.js", "text/javascript"},
+    {"essi_viewer.wasm", "application/wasm"},   {"essi_viewer.data", "application/octet-stream"},
+    {"share_store.js", "text/javascript"},      {"favicon.ico", "image/x-icon"},
     {"essi_cjk.ttc", "font/collection"},  // (the CJK font, fetched only when a text needs it: web/render/UiFonts.hpp)
 };
 
@@ -41,14 +41,17 @@ void not_found(httplib::Response& res) {
 void send_file(const fs::path& path, const char* type, httplib::Response& res) {
     std::error_code ec;
     const auto size = fs::is_regular_file(path, ec) ? fs::file_size(path, ec) : 0;
-    std::shared_ptr<std::FILE> f(ec ? nullptr : std::fopen(path.c_str(), "rb"), [](std::FILE* p) { if (p) std::fclose(p); });
-    if (!f || ec) return not_found(res);
-    res.set_content_provider(static_cast<std::size_t>(size), type, [f](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
-        std::vector<char> buf(std::min<std::size_t>(length, 64 * 1024));
-        if (std::fseek(f.get(), static_cast<long>(offset), SEEK_SET) != 0) return false;
-        const std::size_t n = std::fread(buf.data(), 1, buf.size(), f.get());
-        return n > 0 && sink.write(buf.data(), n);
+    std::shared_ptr<std::FILE> f(ec ? nullptr : std::fopen(path.c_str(), "rb"), [](std::FILE* p) {
+        if (p) std::fclose(p);
     });
+    if (!f || ec) return not_found(res);
+    res.set_content_provider(static_cast<std::size_t>(size), type,
+                             [f](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                                 std::vector<char> buf(std::min<std::size_t>(length, 64 * 1024));
+                                 if (std::fseek(f.get(), static_cast<long>(offset), SEEK_SET) != 0) return false;
+                                 const std::size_t n = std::fread(buf.data(), 1, buf.size(), f.get());
+                                 return n > 0 && sink.write(buf.data(), n);
+                             });
 }
 
 std::string read_small_file(const fs::path& path) {
@@ -68,9 +71,10 @@ void send_index(std::string html, httplib::Response& res) {
 
 // Sends `bytes`, which live as long as the program (the embedded files), without copying them.
 void send_static_bytes(std::string_view bytes, const char* type, httplib::Response& res) {
-    res.set_content_provider(bytes.size(), type, [bytes](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
-        return sink.write(bytes.data() + offset, std::min<std::size_t>(length, 64 * 1024));
-    });
+    res.set_content_provider(bytes.size(), type,
+                             [bytes](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                                 return sink.write(bytes.data() + offset, std::min<std::size_t>(length, 64 * 1024));
+                             });
 }
 
 // A file of the viewer compiled into essi (StaticFiles::web_root empty): gzip-encoded to clients that take it.
@@ -90,7 +94,8 @@ void send_embedded_file(const Served& served, const httplib::Request& req, httpl
 
 void send_viewer_file(const StaticFiles& files, const std::string& name, const httplib::Request& req,
                       httplib::Response& res) {
-    const auto it = std::find_if(std::begin(kViewerFiles), std::end(kViewerFiles), [&](const Served& s) { return name == s.name; });
+    const auto it =
+        std::find_if(std::begin(kViewerFiles), std::end(kViewerFiles), [&](const Served& s) { return name == s.name; });
     if (it == std::end(kViewerFiles)) return not_found(res);
     if (files.web_root.empty()) return send_embedded_file(*it, req, res);
     fs::path path = fs::path(files.web_root) / name;
@@ -134,11 +139,13 @@ void add_static_routes(httplib::Server& server, const StaticFiles& files) {
         res.set_content(nlohmann::json(example_names(files.examples_dir)).dump(), "application/json");
     });
     // An example is served only when it is one of the listed names: no path is ever built from the request.
-    server.Get(R"(/examples/([A-Za-z0-9_.-]+\.(esi|eia)))", [files](const httplib::Request& req, httplib::Response& res) {
-        const std::vector<std::string> names = example_names(files.examples_dir);
-        if (std::find(names.begin(), names.end(), req.matches[1].str()) == names.end()) return not_found(res);
-        send_file(fs::path(files.examples_dir) / req.matches[1].str(), "text/plain; charset=us-ascii", res);
-    });
+    server.Get(R"(/examples/([A-Za-z0-9_.-]+\.(esi|eia)))",
+               [files](const httplib::Request& req, httplib::Response& res) {
+                   const std::vector<std::string> names = example_names(files.examples_dir);
+                   if (std::find(names.begin(), names.end(), req.matches[1].str()) == names.end())
+                       return not_found(res);
+                   send_file(fs::path(files.examples_dir) / req.matches[1].str(), "text/plain; charset=us-ascii", res);
+               });
 }
 
 }  // namespace essi::native

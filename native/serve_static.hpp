@@ -8,7 +8,9 @@
 #if defined(ESSI_HAVE_HTTPLIB)
 #include <string>
 
-namespace httplib { class Server; }
+namespace httplib {
+class Server;
+}
 
 namespace essi::native {
 

@@ -35,7 +35,8 @@ bool bind_text(sqlite3_stmt* s, int i, std::string_view v) {
 }
 
 std::int64_t unix_now() {
-    return std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+    return std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch())
+        .count();
 }
 
 // 32 random bytes (OpenSSL's CSPRNG) as 64 hex digits; "" when the generator fails.
@@ -50,7 +51,7 @@ std::string random_token() {
 
 const char* const kSchema =
     "CREATE TABLE IF NOT EXISTS shares ("
-    " id TEXT PRIMARY KEY NOT NULL,"   // sha256 of the content, 64 hex digits
+    " id TEXT PRIMARY KEY NOT NULL,"  // sha256 of the content, 64 hex digits
     " size INTEGER NOT NULL,"
     " created_unix INTEGER NOT NULL,"
     " content BLOB NOT NULL);"
@@ -59,7 +60,8 @@ const char* const kSchema =
 // Stores made before delete tokens have no token column: add it (their shares cannot be deleted by token).
 bool add_token_column(sqlite3* db, std::string& error) {
     Stmt st;
-    if (sqlite3_prepare_v2(db, "SELECT 1 FROM pragma_table_info('shares') WHERE name = 'token_sha256'", -1, &st.s, nullptr) != SQLITE_OK) {
+    if (sqlite3_prepare_v2(db, "SELECT 1 FROM pragma_table_info('shares') WHERE name = 'token_sha256'", -1, &st.s,
+                           nullptr) != SQLITE_OK) {
         error = sqlite3_errmsg(db);
         return false;
     }
@@ -109,9 +111,10 @@ ShareStore::~ShareStore() { sqlite3_close_v2(db_); }
 
 bool ShareStore::delete_expired(std::int64_t now, std::string& error) {
     Stmt st;
-    const bool ok = sqlite3_prepare_v2(db_, "DELETE FROM shares WHERE created_unix + ?1 <= ?2", -1, &st.s, nullptr) == SQLITE_OK &&
-                    sqlite3_bind_int64(st.s, 1, limits_.ttl_s) == SQLITE_OK && sqlite3_bind_int64(st.s, 2, now) == SQLITE_OK &&
-                    sqlite3_step(st.s) == SQLITE_DONE;
+    const bool ok =
+        sqlite3_prepare_v2(db_, "DELETE FROM shares WHERE created_unix + ?1 <= ?2", -1, &st.s, nullptr) == SQLITE_OK &&
+        sqlite3_bind_int64(st.s, 1, limits_.ttl_s) == SQLITE_OK && sqlite3_bind_int64(st.s, 2, now) == SQLITE_OK &&
+        sqlite3_step(st.s) == SQLITE_DONE;
     if (!ok) error = sqlite3_errmsg(db_);
     return ok;
 }
@@ -132,8 +135,10 @@ bool ShareStore::evict_to_fit(std::string& error) {
 bool ShareStore::insert(std::string_view bytes, PutResult& r, std::int64_t now) {
     const std::string token = random_token();
     Stmt st;
-    const char* sql = "INSERT OR IGNORE INTO shares (id, size, created_unix, content, token_sha256) VALUES (?1, ?2, ?3, ?4, ?5)";
-    const bool ok = !token.empty() && sqlite3_prepare_v2(db_, sql, -1, &st.s, nullptr) == SQLITE_OK && bind_text(st.s, 1, r.id) &&
+    const char* sql =
+        "INSERT OR IGNORE INTO shares (id, size, created_unix, content, token_sha256) VALUES (?1, ?2, ?3, ?4, ?5)";
+    const bool ok = !token.empty() && sqlite3_prepare_v2(db_, sql, -1, &st.s, nullptr) == SQLITE_OK &&
+                    bind_text(st.s, 1, r.id) &&
                     sqlite3_bind_int64(st.s, 2, static_cast<sqlite3_int64>(bytes.size())) == SQLITE_OK &&
                     sqlite3_bind_int64(st.s, 3, now) == SQLITE_OK &&
                     sqlite3_bind_blob64(st.s, 4, bytes.data(), bytes.size(), SQLITE_STATIC) == SQLITE_OK &&
@@ -182,7 +187,8 @@ std::optional<std::string> ShareStore::get(std::string_view id) {
     std::string ignored;
     delete_expired(unix_now(), ignored);
     Stmt st;
-    if (sqlite3_prepare_v2(db_, "SELECT content FROM shares WHERE id = ?1", -1, &st.s, nullptr) != SQLITE_OK) return std::nullopt;
+    if (sqlite3_prepare_v2(db_, "SELECT content FROM shares WHERE id = ?1", -1, &st.s, nullptr) != SQLITE_OK)
+        return std::nullopt;
     bind_text(st.s, 1, id);
     if (sqlite3_step(st.s) != SQLITE_ROW) return std::nullopt;
     const void* data = sqlite3_column_blob(st.s, 0);
@@ -195,7 +201,8 @@ std::optional<std::uint64_t> ShareStore::size_of(std::string_view id) {
     std::string ignored;
     delete_expired(unix_now(), ignored);
     Stmt st;
-    if (sqlite3_prepare_v2(db_, "SELECT size FROM shares WHERE id = ?1", -1, &st.s, nullptr) != SQLITE_OK) return std::nullopt;
+    if (sqlite3_prepare_v2(db_, "SELECT size FROM shares WHERE id = ?1", -1, &st.s, nullptr) != SQLITE_OK)
+        return std::nullopt;
     bind_text(st.s, 1, id);
     if (sqlite3_step(st.s) != SQLITE_ROW) return std::nullopt;
     return static_cast<std::uint64_t>(sqlite3_column_int64(st.s, 0));
@@ -214,7 +221,8 @@ std::int64_t ShareStore::read(std::string_view id, std::uint64_t offset, char* o
     }
     const auto size = static_cast<std::uint64_t>(sqlite3_blob_bytes(blob));
     const std::size_t take = offset >= size ? 0 : static_cast<std::size_t>(std::min<std::uint64_t>(n, size - offset));
-    const bool ok = take == 0 || sqlite3_blob_read(blob, out, static_cast<int>(take), static_cast<int>(offset)) == SQLITE_OK;
+    const bool ok =
+        take == 0 || sqlite3_blob_read(blob, out, static_cast<int>(take), static_cast<int>(offset)) == SQLITE_OK;
     sqlite3_blob_close(blob);
     return ok ? static_cast<std::int64_t>(take) : -1;
 }
@@ -224,12 +232,14 @@ ShareStore::Removal ShareStore::remove(std::string_view id, std::string_view tok
     std::string ignored;
     delete_expired(unix_now(), ignored);
     Stmt find;
-    if (sqlite3_prepare_v2(db_, "SELECT token_sha256 FROM shares WHERE id = ?1", -1, &find.s, nullptr) != SQLITE_OK || !bind_text(find.s, 1, id)) {
+    if (sqlite3_prepare_v2(db_, "SELECT token_sha256 FROM shares WHERE id = ?1", -1, &find.s, nullptr) != SQLITE_OK ||
+        !bind_text(find.s, 1, id)) {
         return Removal::failed;
     }
     if (sqlite3_step(find.s) != SQLITE_ROW) return Removal::missing;
     const unsigned char* stored = sqlite3_column_text(find.s, 0);
-    if (!stored || token.empty() || sha256_hex(token) != reinterpret_cast<const char*>(stored)) return Removal::wrong_token;
+    if (!stored || token.empty() || sha256_hex(token) != reinterpret_cast<const char*>(stored))
+        return Removal::wrong_token;
     Stmt del;
     const bool ok = sqlite3_prepare_v2(db_, "DELETE FROM shares WHERE id = ?1", -1, &del.s, nullptr) == SQLITE_OK &&
                     bind_text(del.s, 1, id) && sqlite3_step(del.s) == SQLITE_DONE;

@@ -31,10 +31,10 @@ public:
 
     struct PutResult {
         bool ok = false;
-        bool created = false;        // false: the same content was already stored
-        bool too_large = false;      // the tape alone is over max_bytes (not stored)
-        std::string id;              // sha256_hex(bytes)
-        std::string delete_token;    // only when created: DELETE /api/share/ID needs it
+        bool created = false;      // false: the same content was already stored
+        bool too_large = false;    // the tape alone is over max_bytes (not stored)
+        std::string id;            // sha256_hex(bytes)
+        std::string delete_token;  // only when created: DELETE /api/share/ID needs it
         std::int64_t expires_unix = 0;
         std::string error;
     };

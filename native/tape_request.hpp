@@ -11,9 +11,9 @@
 namespace essi::native {
 
 struct TapeRequest {
-    std::optional<InputFormat> input;  // nullopt: from the content (--input auto, the default)
-    std::optional<Profile> profile;    // nullopt: from the evidence (--profile auto)
-    std::string profile_name;          // what the reports call it: the profile's name or "auto"
+    std::optional<InputFormat> input;         // nullopt: from the content (--input auto, the default)
+    std::optional<Profile> profile;           // nullopt: from the evidence (--profile auto)
+    std::string profile_name;                 // what the reports call it: the profile's name or "auto"
     std::optional<std::size_t> max_per_code;  // --max-per-code (the server's max_per_code): over the profile's
 
     [[nodiscard]] TapeSetup setup(std::string_view bytes) const {

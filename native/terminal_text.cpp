@@ -40,7 +40,8 @@ TerminalText::TerminalText(const char* lc_all, const char* lc_ctype, const char*
 }
 
 std::string TerminalText::operator()(std::string_view utf8) const {
-    if (charset_.empty() || std::all_of(utf8.begin(), utf8.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }))
+    if (charset_.empty() ||
+        std::all_of(utf8.begin(), utf8.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }))
         return std::string(utf8);
     std::optional<std::string> text = utf8_to_charset(utf8, charset_.c_str());
     return text ? std::move(*text) : std::string(utf8);  // (no converter: as it is)

@@ -39,7 +39,8 @@ essi::Lang lang_of(const std::string& lang) {
 essi::TapeSetup setup_of(std::string_view bytes, const std::string& profile, const std::string& profile_json,
                          const std::string& input) {
     std::optional<essi::InputFormat> format;
-    if (!essi::parse_input_choice(input, format)) throw SetupError("input '" + input + "': expected essi, eia or auto", "[]");
+    if (!essi::parse_input_choice(input, format))
+        throw SetupError("input '" + input + "': expected essi, eia or auto", "[]");
     std::optional<essi::Profile> p;
     if (!profile_json.empty()) {
         essi::ProfileResult r = essi::parse_profile(profile_json);
@@ -47,7 +48,8 @@ essi::TapeSetup setup_of(std::string_view bytes, const std::string& profile, con
         p = std::move(*r.profile);
     } else if (profile != "auto") {
         p = essi::builtin_profile(profile.empty() ? "iso6582" : profile);
-        if (!p) throw SetupError("unknown profile '" + profile + "'; expected a built-in name, auto or a JSON file", "[]");
+        if (!p)
+            throw SetupError("unknown profile '" + profile + "'; expected a built-in name, auto or a JSON file", "[]");
     }
     return essi::setup_tape(bytes, format, p);
 }
@@ -72,8 +74,8 @@ std::vector<std::string> trace(py::bytes data, const std::string& profile, const
     essi::TraceView view;
     view.kerf = kerf;
     view.machine = machine;
-    (void)essi::trace_tape(bytes, setup.profile, [&](std::string_view piece) { text += piece; }, setup.format,
-                           decimals, view);
+    (void)essi::trace_tape(
+        bytes, setup.profile, [&](std::string_view piece) { text += piece; }, setup.format, decimals, view);
     std::vector<std::string> lines;
     for (std::size_t at = 0; at < text.size();) {
         const std::size_t end = text.find('\n', at);

@@ -335,7 +335,8 @@ TEST(Corpus, CutPlanDiagnosticsAreTheDocumentedOnes) {
         const auto r = essi::check_tape(read_file(dir + "/" + name), profile);
         Expected found;
         for (const auto& d : r.diagnostics) {
-            if (static_cast<int>(d.code) >= 600 && static_cast<int>(d.code) < 700) found.push_back({essi::code_name(d.code), d.line});
+            if (static_cast<int>(d.code) >= 600 && static_cast<int>(d.code) < 700)
+                found.push_back({essi::code_name(d.code), d.line});
         }
         std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) {
             return a.second != b.second ? a.second < b.second : a.first < b.first;

@@ -73,9 +73,7 @@ std::vector<std::string> example_names() {
     return names;
 }
 
-std::string path_of(const std::string& name, const std::string& suffix) {
-    return examples_dir() + "/" + name + suffix;
-}
+std::string path_of(const std::string& name, const std::string& suffix) { return examples_dir() + "/" + name + suffix; }
 
 bool file_exists(const std::string& path) {
     std::error_code ec;
@@ -92,9 +90,7 @@ bool update_golden() {
 }
 
 // "E301 line 9"
-std::string diag_key(const std::string& code, unsigned line) {
-    return code + " line " + std::to_string(line);
-}
+std::string diag_key(const std::string& code, unsigned line) { return code + " line " + std::to_string(line); }
 
 std::string list_text(const std::vector<std::string>& v) {
     std::string s;
@@ -196,16 +192,16 @@ TEST_P(ExampleTape, MatchesExpectedAndTrace) {
     }
     std::sort(want.begin(), want.end());
     std::sort(got.begin(), got.end());
-    EXPECT_EQ(want, got) << "expected diagnostics:" << list_text(want) << "\nactual diagnostics:"
-                         << (got_detail.empty() ? std::string("\n  (none)") : got_detail);
+    EXPECT_EQ(want, got) << "expected diagnostics:" << list_text(want)
+                         << "\nactual diagnostics:" << (got_detail.empty() ? std::string("\n  (none)") : got_detail);
 
     // --- statistics ---
     ASSERT_TRUE(expected.contains("stats") && expected["stats"].is_object());
     const json& st = expected["stats"];
     const essi::Stats& s = result.stats;
     if (expected_ok) {
-        for (const char* key : {"cut_length_mm", "mark_length_mm", "travel_length_mm", "rapid_length_mm",
-                                "pierces", "blocks", "estimated_time_s", "cut_bbox_mm", "end_position_mm"}) {
+        for (const char* key : {"cut_length_mm", "mark_length_mm", "travel_length_mm", "rapid_length_mm", "pierces",
+                                "blocks", "estimated_time_s", "cut_bbox_mm", "end_position_mm"}) {
             EXPECT_TRUE(st.contains(key)) << "a good tape's expected file must give " << key;
         }
     }
@@ -250,20 +246,23 @@ TEST_P(ExampleTape, MatchesExpectedAndTrace) {
         EXPECT_NEAR(s.end_position.y, e.at("y").get<double>(), kLengthTolMm) << "end y";
     }
 
-    // --- trace goldens (good tapes): the stream, the kerf path where there is one, the machine's with its own profile ---
+    // --- trace goldens (good tapes): the stream, the kerf path where there is one, the machine's with its own profile
+    // ---
     if (!expected_ok) return;
     const std::string trace = essi::trace_tape(bytes, *profile, format);
     expect_golden(trace_path, trace);
     if (trace.find(" kerf=") != std::string::npos) {
         std::string kerf;
-        (void)essi::trace_tape(bytes, *profile, [&](std::string_view piece) { kerf += piece; }, format,
-                               essi::kTraceDecimals, essi::TraceView{true, false});
+        (void)essi::trace_tape(
+            bytes, *profile, [&](std::string_view piece) { kerf += piece; }, format, essi::kTraceDecimals,
+            essi::TraceView{true, false});
         expect_golden(path_of(name, ".kerf.trace"), kerf);
     }
     if (!profile_file.empty()) {
         std::string placed;
-        (void)essi::trace_tape(bytes, *profile, [&](std::string_view piece) { placed += piece; }, format,
-                               essi::kTraceDecimals, essi::TraceView{false, true});
+        (void)essi::trace_tape(
+            bytes, *profile, [&](std::string_view piece) { placed += piece; }, format, essi::kTraceDecimals,
+            essi::TraceView{false, true});
         expect_golden(path_of(name, ".machine.trace"), placed);
     }
 }
@@ -286,7 +285,8 @@ TEST(ExamplesDir, HasTapesAndNoOrphans) {
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(examples_dir(), ec)) {
         const std::string file = entry.path().filename().string();
-        for (const std::string suffix : {".expected.json", ".kerf.trace", ".machine.trace", ".profile.json", ".trace"}) {
+        for (const std::string suffix :
+             {".expected.json", ".kerf.trace", ".machine.trace", ".profile.json", ".trace"}) {
             if (file.size() > suffix.size() && file.ends_with(suffix)) {
                 const std::string stem = file.substr(0, file.size() - suffix.size());
                 EXPECT_TRUE(std::binary_search(names.begin(), names.end(), stem))

@@ -54,9 +54,9 @@ void DiagnosticCap::append_summaries(std::vector<Diagnostic>& out) const {
         const Count& c = counts_[k];
         if (c.omitted == 0) continue;
         const auto code = static_cast<DiagCode>(k);
-        out.push_back(make_diagnostic(c.severity, code, c.first_omitted_line, 1, Msg::DiagnosticsOmittedOfCode,
-                                      {static_cast<unsigned long long>(c.omitted), code_name(code),
-                                       static_cast<unsigned long long>(max_)}));
+        out.push_back(make_diagnostic(
+            c.severity, code, c.first_omitted_line, 1, Msg::DiagnosticsOmittedOfCode,
+            {static_cast<unsigned long long>(c.omitted), code_name(code), static_cast<unsigned long long>(max_)}));
     }
 }
 

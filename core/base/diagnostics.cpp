@@ -96,25 +96,41 @@ const CodeRow* find_row(DiagCode code) {
 // Codes whose default severity is an error: the ones named E... in the enum.
 bool is_error_code(DiagCode code) {
     switch (code) {
-        case DiagCode::E101_InvalidCharacter: case DiagCode::E102_NonAsciiByte:
-        case DiagCode::E103_FunctionCodeTooLong: case DiagCode::E104_NumberTooLarge:
-        case DiagCode::E105_WordCount: case DiagCode::E106_FunctionWordCount:
-        case DiagCode::E107_UnclosedIgnore: case DiagCode::E108_WhitespaceStrict:
-        case DiagCode::E113_EmptyTape: case DiagCode::E115_TooManyErrors:
-        case DiagCode::E116_MisplacedMark: case DiagCode::E117_TapeTooLarge:
-        case DiagCode::E118_FunctionValueSign: case DiagCode::E119_EiaUnknownLetter:
-        case DiagCode::E120_EiaLetterOrder: case DiagCode::E121_EiaFunctionsInBlock:
-        case DiagCode::E122_EiaBadNumber: case DiagCode::E123_EiaArcWithoutDirection:
-        case DiagCode::E126_EiaUnclosedComment: case DiagCode::E216_FunctionValueRange:
-        case DiagCode::E203_FunctionValueMissing: case DiagCode::E206_BadHeadAddress:
-        case DiagCode::E207_ZeroOffsetBlock: case DiagCode::E301_ArcEndNotOnCircle:
-        case DiagCode::E302_ArcZeroRadius: case DiagCode::E303_ParabolaEndNotOnCurve:
-        case DiagCode::E304_ParabolaZeroCurvature: case DiagCode::E306_KerfRadiusNegative: case DiagCode::E307_KerfGouge:
-        case DiagCode::E401_LeavesTable: case DiagCode::E402_BadProfile:
-        case DiagCode::E602_KerfIntoPart: case DiagCode::E605_PartsCollide: case DiagCode::E606_CutCrossesCutPart:
-            return true;
-        default:
-            return false;
+        case DiagCode::E101_InvalidCharacter:
+        case DiagCode::E102_NonAsciiByte:
+        case DiagCode::E103_FunctionCodeTooLong:
+        case DiagCode::E104_NumberTooLarge:
+        case DiagCode::E105_WordCount:
+        case DiagCode::E106_FunctionWordCount:
+        case DiagCode::E107_UnclosedIgnore:
+        case DiagCode::E108_WhitespaceStrict:
+        case DiagCode::E113_EmptyTape:
+        case DiagCode::E115_TooManyErrors:
+        case DiagCode::E116_MisplacedMark:
+        case DiagCode::E117_TapeTooLarge:
+        case DiagCode::E118_FunctionValueSign:
+        case DiagCode::E119_EiaUnknownLetter:
+        case DiagCode::E120_EiaLetterOrder:
+        case DiagCode::E121_EiaFunctionsInBlock:
+        case DiagCode::E122_EiaBadNumber:
+        case DiagCode::E123_EiaArcWithoutDirection:
+        case DiagCode::E126_EiaUnclosedComment:
+        case DiagCode::E216_FunctionValueRange:
+        case DiagCode::E203_FunctionValueMissing:
+        case DiagCode::E206_BadHeadAddress:
+        case DiagCode::E207_ZeroOffsetBlock:
+        case DiagCode::E301_ArcEndNotOnCircle:
+        case DiagCode::E302_ArcZeroRadius:
+        case DiagCode::E303_ParabolaEndNotOnCurve:
+        case DiagCode::E304_ParabolaZeroCurvature:
+        case DiagCode::E306_KerfRadiusNegative:
+        case DiagCode::E307_KerfGouge:
+        case DiagCode::E401_LeavesTable:
+        case DiagCode::E402_BadProfile:
+        case DiagCode::E602_KerfIntoPart:
+        case DiagCode::E605_PartsCollide:
+        case DiagCode::E606_CutCrossesCutPart: return true;
+        default: return false;
     }
 }
 

@@ -56,9 +56,12 @@ constexpr struct {
     std::uint8_t bit;
     const char* name;
     Msg word;
-} kToolNames[] = {{kToolOxygen, "oxygen", Msg::ToolOxygen},         {kToolLeftBevel, "left-bevel", Msg::ToolLeftBevel},
-                  {kToolRightBevel, "right-bevel", Msg::ToolRightBevel}, {kToolPlasma, "plasma", Msg::ToolPlasma},
-                  {kToolPunch, "punch", Msg::ToolPunch},             {kToolLineMarker, "line-marker", Msg::ToolLineMarker},
+} kToolNames[] = {{kToolOxygen, "oxygen", Msg::ToolOxygen},
+                  {kToolLeftBevel, "left-bevel", Msg::ToolLeftBevel},
+                  {kToolRightBevel, "right-bevel", Msg::ToolRightBevel},
+                  {kToolPlasma, "plasma", Msg::ToolPlasma},
+                  {kToolPunch, "punch", Msg::ToolPunch},
+                  {kToolLineMarker, "line-marker", Msg::ToolLineMarker},
                   {kToolFive, "tool5", Msg::ToolFive}};
 }  // namespace
 

@@ -30,7 +30,8 @@ public:
     }
 
     void on_motion(const MotionRecord& m) override {
-        DiffContour* c = builder_.motion(m, [&](DiffContour& began) { began.start = m.start; }, kept());
+        DiffContour* c = builder_.motion(
+            m, [&](DiffContour& began) { began.start = m.start; }, kept());
         if (!c) return;
         add(*c, m);
         if (keep_paths_) c->path.push_back(m);
@@ -172,7 +173,8 @@ TapeDiff diff_contours(const std::vector<DiffContour>& a, const std::vector<Diff
         double moved_d = std::numeric_limits<double>::infinity();
         index.for_each_candidate(a[i], [&](int k) {
             const DiffContour& c = b[static_cast<std::size_t>(k)];
-            if (taken[static_cast<std::size_t>(k)] || !same_shape(a[i], c) || distance(a[i].start, c.start) >= moved_d) return;
+            if (taken[static_cast<std::size_t>(k)] || !same_shape(a[i], c) || distance(a[i].start, c.start) >= moved_d)
+                return;
             moved_d = distance(a[i].start, c.start);
             moved = k;
         });
@@ -216,9 +218,10 @@ std::string contour_text(const DiffContour& c, Lang lang) {
 
 std::string side_text(const char* label, const DiffSide& s, Lang lang) {
     const CheckResult& r = s.tape->check;
-    return format_message(Msg::DiffSide, lang,
-                          {label, display_text(s.name), r.profile, s.tape->contours.size(), mm_text(r.stats.cut_length_mm),
-                           r.stats.pierces, format_duration(r.stats.estimated_time_s)}) +
+    return format_message(
+               Msg::DiffSide, lang,
+               {label, display_text(s.name), r.profile, s.tape->contours.size(), mm_text(r.stats.cut_length_mm),
+                r.stats.pierces, format_duration(r.stats.estimated_time_s)}) +
            "\n";
 }
 
@@ -239,7 +242,8 @@ std::vector<StatChange> stat_changes(const Stats& a, const Stats& b) {
         {"motions", Msg::DiffStatMotions, static_cast<double>(a.motions), static_cast<double>(b.motions), true},
         {"estimated_time_s", Msg::DiffStatEstimatedTime, a.estimated_time_s, b.estimated_time_s}};
     if (a.machine_time && b.machine_time)
-        changes.push_back({"machine_time_s", Msg::DiffStatMachineTime, a.machine_time->total_s, b.machine_time->total_s});
+        changes.push_back(
+            {"machine_time_s", Msg::DiffStatMachineTime, a.machine_time->total_s, b.machine_time->total_s});
     if (a.cost && b.cost) changes.push_back({"cost_total", Msg::DiffStatCostTotal, a.cost->total, b.cost->total});
     return changes;
 }
@@ -325,8 +329,8 @@ std::string diff_json(const DiffSide& a, const DiffSide& b, const TapeDiff& d) {
     nlohmann::json stats = nlohmann::json::object();
     for (const StatChange& c : stat_changes(a.tape->check.stats, b.tape->check.stats))
         stats[c.name] = {{"a", round_for_json(c.a)}, {"b", round_for_json(c.b)}, {"change", round_for_json(c.b - c.a)}};
-    nlohmann::json out = {{"a", side_json(a)}, {"b", side_json(b)}, {"same", d.same()}, {"summary", summary},
-                          {"contours", contours}, {"stats_change", stats}};
+    nlohmann::json out = {{"a", side_json(a)},  {"b", side_json(b)},    {"same", d.same()},
+                          {"summary", summary}, {"contours", contours}, {"stats_change", stats}};
     return out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 

@@ -15,7 +15,7 @@ namespace {
 // it ends), so that the scan costs the same for any size.
 constexpr std::size_t kHeadBytes = 16 << 10;
 constexpr std::size_t kTailBytes = 4 << 10;
-constexpr std::size_t kEvidencePerDialect = 3;   // what a report lists of each dialect's evidence
+constexpr std::size_t kEvidencePerDialect = 3;  // what a report lists of each dialect's evidence
 constexpr std::size_t kQuoteChars = 24;
 
 std::string_view trim(std::string_view s) {
@@ -82,14 +82,10 @@ struct Sign {
 
 // ESSI: a function code alone ("43"), with a value ("135+"), or a mark ("/").
 constexpr std::array kEssiSigns = {
-    Sign{"/", "woyda", Msg::EvidenceEndsProgram},
-    Sign{"135+", "woyda", Msg::EvidenceBurnerCount},
-    Sign{"136+", "woyda", Msg::EvidenceBurnerSpacing},
-    Sign{"43", "woyda", Msg::EvidenceWoydaOxygenOff},
-    Sign{"62", "woyda", Msg::EvidenceWoydaProgramZero},
-    Sign{"66", "woyda", Msg::EvidenceWoydaRepeatStart},
-    Sign{"11+", "hypertherm", Msg::EvidenceMarkerOffsetOn},
-    Sign{"12+", "hypertherm", Msg::EvidenceMarkerOffsetOff},
+    Sign{"/", "woyda", Msg::EvidenceEndsProgram},           Sign{"135+", "woyda", Msg::EvidenceBurnerCount},
+    Sign{"136+", "woyda", Msg::EvidenceBurnerSpacing},      Sign{"43", "woyda", Msg::EvidenceWoydaOxygenOff},
+    Sign{"62", "woyda", Msg::EvidenceWoydaProgramZero},     Sign{"66", "woyda", Msg::EvidenceWoydaRepeatStart},
+    Sign{"11+", "hypertherm", Msg::EvidenceMarkerOffsetOn}, Sign{"12+", "hypertherm", Msg::EvidenceMarkerOffsetOff},
 };
 
 // EIA words.
@@ -228,7 +224,8 @@ DialectGuess guess_dialect(std::string_view bytes, InputFormat format) {
     else scan_essi(bytes, ev);
     DialectGuess g;
     g.profile = format == InputFormat::Eia ? "woyda" : "iso6582";
-    std::stable_sort(ev.tallies.begin(), ev.tallies.end(), [](const Tally& a, const Tally& b) { return a.signs > b.signs; });
+    std::stable_sort(ev.tallies.begin(), ev.tallies.end(),
+                     [](const Tally& a, const Tally& b) { return a.signs > b.signs; });
     if (!ev.tallies.empty()) {
         g.profile = std::string(ev.tallies[0].dialect);
         g.clear = ev.tallies.size() == 1 || ev.tallies[0].signs > ev.tallies[1].signs;

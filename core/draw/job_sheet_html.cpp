@@ -52,7 +52,8 @@ void write_table(std::string& h, const SheetTable& t) {
         return cls.empty() ? std::string() : " class=\"" + cls + "\"";
     };
     h += "<table class=\"list\">\n<thead><tr>";
-    for (std::size_t c = 0; c < t.columns.size(); ++c) h += "<th" + cell_class(c, false) + ">" + esc(t.columns[c]) + "</th>";
+    for (std::size_t c = 0; c < t.columns.size(); ++c)
+        h += "<th" + cell_class(c, false) + ">" + esc(t.columns[c]) + "</th>";
     h += "</tr></thead>\n<tbody>\n";
     for (std::size_t r = 0; r < t.rows.size(); ++r) {
         const std::optional<Severity>& sev = t.row_severity[r];
@@ -76,9 +77,9 @@ std::string stroke_attributes(const SheetStroke& s) {
 std::string mark_shape(Point c, Severity sev) {
     const double r = kSheetMarkRadiusMm;
     const std::string color(sheet_mark_color(sev));
-    std::string s = "<g class=\"mark " + std::string(severity_name(sev)) + "\" stroke=\"" + color + "\" fill=\"" + color +
-                    "\" stroke-width=\"0.3\"><circle cx=\"" + paper(c.x) + "\" cy=\"" + paper(c.y) + "\" r=\"" + paper(r) +
-                    "\" fill-opacity=\"0.3\"/>";
+    std::string s = "<g class=\"mark " + std::string(severity_name(sev)) + "\" stroke=\"" + color + "\" fill=\"" +
+                    color + "\" stroke-width=\"0.3\"><circle cx=\"" + paper(c.x) + "\" cy=\"" + paper(c.y) + "\" r=\"" +
+                    paper(r) + "\" fill-opacity=\"0.3\"/>";
     if (sev == Severity::Error)
         s += "<path d=\"M" + paper(c.x - r) + " " + paper(c.y - r) + "L" + paper(c.x + r) + " " + paper(c.y + r) + "M" +
              paper(c.x - r) + " " + paper(c.y + r) + "L" + paper(c.x + r) + " " + paper(c.y - r) + "\"/>";
@@ -107,14 +108,15 @@ void write_drawing(std::string& h, const SheetDrawing& d) {
             }
         }
         if (!path.empty())
-            h += "<path class=\"" + std::string(motion_kind_name(kind)) + "\" " + stroke_attributes(sheet_stroke(kind)) +
-                 " d=\"" + path + "\"/>\n";
+            h += "<path class=\"" + std::string(motion_kind_name(kind)) + "\" " +
+                 stroke_attributes(sheet_stroke(kind)) + " d=\"" + path + "\"/>\n";
     }
     h += "</g>\n<g class=\"pierces\" fill=\"none\" stroke=\"" + std::string(kSvgPierceColor) +
          "\" stroke-width=\"0.2\">\n";
     for (const Point& p : d.pierces) {
         const Point c = d.to_paper(p);
-        h += "<circle cx=\"" + paper(c.x) + "\" cy=\"" + paper(c.y) + "\" r=\"" + paper(kSheetPierceRadiusMm) + "\"/>\n";
+        h +=
+            "<circle cx=\"" + paper(c.x) + "\" cy=\"" + paper(c.y) + "\" r=\"" + paper(kSheetPierceRadiusMm) + "\"/>\n";
     }
     h += "</g>\n";
     for (const SheetDrawing::Mark& m : d.marks) h += mark_shape(d.to_paper(m.at), m.severity) + "\n";
@@ -145,8 +147,8 @@ const std::string& job_sheet_css() {
     static const std::string css = [] {
         std::string c = kBaseCss;
         for (const Severity sev : {Severity::Error, Severity::Warning, Severity::Note})
-            c += "tr." + std::string(severity_name(sev)) + " td.severity { color: " + std::string(sheet_mark_color(sev)) +
-                 "; }\n";
+            c += "tr." + std::string(severity_name(sev)) +
+                 " td.severity { color: " + std::string(sheet_mark_color(sev)) + "; }\n";
         return c;
     }();
     return css;
@@ -154,12 +156,15 @@ const std::string& job_sheet_css() {
 
 std::string job_sheet_html(const JobSheet& sheet) {
     std::string h;
-    h += "<!DOCTYPE html>\n<html lang=\"" + std::string(lang_code(sheet.lang)) + "\">\n<head>\n<meta charset=\"utf-8\"/>\n";
-    h += "<meta name=\"generator\" content=\"essi report\"/>\n<title>" + esc(sheet.title + ": " + sheet.tape) + "</title>\n";
+    h += "<!DOCTYPE html>\n<html lang=\"" + std::string(lang_code(sheet.lang)) +
+         "\">\n<head>\n<meta charset=\"utf-8\"/>\n";
+    h += "<meta name=\"generator\" content=\"essi report\"/>\n<title>" + esc(sheet.title + ": " + sheet.tape) +
+         "</title>\n";
     h += "<style>" + job_sheet_css() + "</style>\n</head>\n<body>\n";
     h += "<header>\n<h1>" + esc(sheet.title) + "</h1>\n<p class=\"tape\">" + esc(sheet.tape) + "</p>\n</header>\n";
     for (const SheetSection& s : sheet.sections) {
-        h += "<section id=\"" + s.id + "\"" + (s.drawing ? " class=\"drawing\"" : "") + ">\n<h2>" + esc(s.title) + "</h2>\n";
+        h += "<section id=\"" + s.id + "\"" + (s.drawing ? " class=\"drawing\"" : "") + ">\n<h2>" + esc(s.title) +
+             "</h2>\n";
         if (!s.fields.empty()) write_fields(h, s);
         if (s.table) write_table(h, *s.table);
         if (s.drawing) {

@@ -57,8 +57,8 @@ struct Points {
 // A piece of the compensated path as a whole line (a point and its unit direction) or circle.
 struct Carrier {
     bool line = true;
-    Point p, d;       // a line: a point on it, its direction
-    Point c;          // a circle: its centre and radius
+    Point p, d;  // a line: a point on it, its direction
+    Point c;     // a circle: its centre and radius
     double r = 0;
 };
 
@@ -119,7 +119,6 @@ Point entry_arc_centre(Point centre, Point end, Point torch) {
     return centre + s * u;
 }
 
-
 }  // namespace
 
 KerfPath::KerfPath(MotionSink& out, double chord_tolerance_mm)
@@ -159,10 +158,8 @@ void KerfPath::gouge(const MotionRecord& m, Msg why, MessageArgs args) {
 }
 
 void KerfPath::event(const MachineEvent& e) {
-    if (open_)
-        held_.emplace_back(e);
-    else
-        out_.on_event(e);
+    if (open_) held_.emplace_back(e);
+    else out_.on_event(e);
 }
 
 void KerfPath::finish() {
@@ -206,10 +203,8 @@ void KerfPath::motion(const MotionRecord& m) {
     }
     side_ = side;
     radius_ = m.kerf_mm;
-    if (open_)
-        follow(m);
-    else
-        enter(m);
+    if (open_) follow(m);
+    else enter(m);
 }
 
 void KerfPath::offset_piece(const MotionRecord& m, Piece& p) {
@@ -255,17 +250,17 @@ void KerfPath::offset_piece(const MotionRecord& m, Piece& p) {
         for (int i = 1; i <= n; ++i) {
             const Point q = at(i);
             const Point chord = unit(q - prev);
-            Piece c{m, i == n ? m.end : parabola_point(g, g.t0 + (g.t1 - g.t0) * i / n), chord,
-                    i == 1 ? start_tangent(m) : chord, 0, {}, true};
+            Piece c{m,     i == n ? m.end : parabola_point(g, g.t0 + (g.t1 - g.t0) * i / n),
+                    chord, i == 1 ? start_tangent(m) : chord,
+                    0,     {},
+                    true};
             c.rec.curve = CurveKind::Line;
             c.rec.start = prev;
             c.rec.end = q;
             reshape(c.rec);
             if (i == n) c.tangent_end = end_tangent(m);
-            if (i == 1)
-                p = c;
-            else
-                chords_.push_back(c);
+            if (i == 1) p = c;
+            else chords_.push_back(c);
             prev = q;
         }
     }
@@ -345,8 +340,7 @@ void KerfPath::turn_corner(Piece& next, const MotionRecord& m) {
         // outside the next piece's arc, or the next piece is a line and the torch is outside the arc before;
         // else joined round the corner (also a concave turn of a line into a line: the join crosses the
         // contour, as LinuxCNC cuts it).
-        concave = torch_outside(next.rec) ||
-                  (next.rec.curve == CurveKind::Line && torch_outside(open_piece().rec));
+        concave = torch_outside(next.rec) || (next.rec.curve == CurveKind::Line && torch_outside(open_piece().rec));
         convex = !concave;
     }
     if (convex) {
@@ -376,9 +370,7 @@ void KerfPath::turn_corner(Piece& next, const MotionRecord& m) {
     if (moved) reshape(next.rec, is_full_circle(next.rec));
 }
 
-bool KerfPath::torch_outside(const MotionRecord& r) const {
-    return r.curve == CurveKind::Arc && (side_ > 0) != r.ccw;
-}
+bool KerfPath::torch_outside(const MotionRecord& r) const { return r.curve == CurveKind::Arc && (side_ > 0) != r.ccw; }
 
 // Whether the open piece may end at `x`: a line must not run against its programmed direction, an arc must not
 // sweep more than its programmed sweep (plus LinuxCNC's slack of 0.0254 rad) from its start to `x` (a sweep

@@ -22,15 +22,14 @@ constexpr Row kRows[] = {
 };
 static_assert(std::size(kRows) == static_cast<std::size_t>(Msg::Count), "one row per Msg");
 
-constexpr char kArgSep = '\x1f';  // between two packed arguments
-constexpr char kArgMsg = '\x1e';  // starts an argument that is a catalogue message (its number follows)
-constexpr char kArgList = '\x1c';  // starts an argument that is a list ('o' alternatives, '+' joined; then items)
-constexpr char kListItem = '\x1d'; // between two alternatives of a list
+constexpr char kArgSep = '\x1f';    // between two packed arguments
+constexpr char kArgMsg = '\x1e';    // starts an argument that is a catalogue message (its number follows)
+constexpr char kArgList = '\x1c';   // starts an argument that is a list ('o' alternatives, '+' joined; then items)
+constexpr char kListItem = '\x1d';  // between two alternatives of a list
 // Arg::messages: a list (kind ';') whose items are "ID" kArgMsg "ARGS", ARGS a message's packed arguments with
 // these two in place of its kArgSep and kListItem (so that neither ends the outer argument or item).
 constexpr char kNestedSep = '\x18';
 constexpr char kNestedItem = '\x19';
-
 
 // A text argument into the packed form as safe text (essi::display_text): every byte that is not part of valid
 // UTF-8, and every control character (the packing bytes among them), is written \xNN, so that no message ever
@@ -104,7 +103,8 @@ std::string argument(std::string_view packed, std::size_t n, Lang lang) {
         begin = sep + 1;
     }
     const std::size_t end = packed.find(kArgSep, begin);
-    return argument_text(packed.substr(begin, end == std::string_view::npos ? packed.size() - begin : end - begin), lang);
+    return argument_text(packed.substr(begin, end == std::string_view::npos ? packed.size() - begin : end - begin),
+                         lang);
 }
 
 }  // namespace
@@ -224,7 +224,8 @@ std::string format_template(std::string_view tmpl, Lang lang, const MessageArgs&
     for (std::size_t i = 0; i < tmpl.size(); ++i) {
         const char c = tmpl[i];
         const std::size_t close = c == '{' ? tmpl.find('}', i) : std::string_view::npos;
-        if (close == std::string_view::npos || i + 1 >= close || !std::isdigit(static_cast<unsigned char>(tmpl[i + 1]))) {
+        if (close == std::string_view::npos || i + 1 >= close ||
+            !std::isdigit(static_cast<unsigned char>(tmpl[i + 1]))) {
             out += c;
             continue;
         }
@@ -235,7 +236,8 @@ std::string format_template(std::string_view tmpl, Lang lang, const MessageArgs&
             out += value;
         } else {
             const std::size_t bar = inner.find('|', 1);
-            const std::string_view one = inner.substr(1, bar == std::string_view::npos ? std::string_view::npos : bar - 1);
+            const std::string_view one =
+                inner.substr(1, bar == std::string_view::npos ? std::string_view::npos : bar - 1);
             const std::string_view other = bar == std::string_view::npos ? std::string_view{} : inner.substr(bar + 1);
             out += value == "1" ? one : other;
         }

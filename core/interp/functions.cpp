@@ -122,15 +122,15 @@ struct RangeRow {
 };
 constexpr RangeRow kValueRanges[] = {
     {fn::kFeed, {0, 100000, RangeUnit::AsWritten}},  // mm/min (0: W209, the profile's feed)
-    {fn::kDwell, {0, 3600, RangeUnit::Seconds}},  // s (the value times the profile's dwell_unit_s)
-    {fn::kKerfLeft, {0, 100, RangeUnit::Mm}},             // mm
+    {fn::kDwell, {0, 3600, RangeUnit::Seconds}},     // s (the value times the profile's dwell_unit_s)
+    {fn::kKerfLeft, {0, 100, RangeUnit::Mm}},        // mm
     {fn::kKerfRight, {0, 100, RangeUnit::Mm}},
     {fn::kWoydaBurnerCount, {1, 32, RangeUnit::AsWritten}},     // burners
-    {fn::kWoydaBurnerSpacing, {0, 100000, RangeUnit::Mm}},  // mm
-    {fn::kHyperthermKerfValue, {0, 100, RangeUnit::Mm}},    // mm
-    {fn::kPunchMarkingOffsetOn, {1, 8, RangeUnit::AsWritten}},    // Hypertherm 11+n: marker 1-8
+    {fn::kWoydaBurnerSpacing, {0, 100000, RangeUnit::Mm}},      // mm
+    {fn::kHyperthermKerfValue, {0, 100, RangeUnit::Mm}},        // mm
+    {fn::kPunchMarkingOffsetOn, {1, 8, RangeUnit::AsWritten}},  // Hypertherm 11+n: marker 1-8
     {fn::kToolOffsetOff, {1, 8, RangeUnit::AsWritten}},
-    {fn::kHyperthermGoHome, {1, 4, RangeUnit::AsWritten}},        // Hypertherm 79+n: home position 1-4
+    {fn::kHyperthermGoHome, {1, 4, RangeUnit::AsWritten}},              // Hypertherm 79+n: home position 1-4
     {fn::kHyperthermRepeatPointer, {1, 100000, RangeUnit::AsWritten}},  // Hypertherm 97+v: passes of a subroutine loop
 };
 
@@ -193,7 +193,8 @@ std::string describe_function(int code, bool has_value, double value, const Prof
             case fn::kKerfLeft:
             case fn::kKerfRight:
             case fn::kHyperthermKerfValue:
-                detail = format_message(Msg::FnDescribeKerf, lang, {kerf_value_text(value * profile.unit_mm, profile, lang)});
+                detail = format_message(Msg::FnDescribeKerf, lang,
+                                        {kerf_value_text(value * profile.unit_mm, profile, lang)});
                 break;
             case fn::kFeed: detail = format_message(Msg::FnDescribeFeed, lang, {number_text(value)}); break;
             case fn::kDwell:

@@ -38,7 +38,14 @@ bool has_measure(const Block& b) { return b.kind == BlockKind::Motion && b.word_
 // The function table flattened to one byte of flags per code, once per dialect and process: half the blocks of a
 // tape are functions, and a short tape (a server request, a fuzz input) must not pay for searching the table.
 constexpr int kFunctionCodes = fn::kCodeCount;
-enum : std::uint8_t { kAssigned = 1, kManufacturer = 2, kTakesNoValue = 4, kNeedsValue = 8, kHasRange = 16, kActsAs = 32 };
+enum : std::uint8_t {
+    kAssigned = 1,
+    kManufacturer = 2,
+    kTakesNoValue = 4,
+    kNeedsValue = 8,
+    kHasRange = 16,
+    kActsAs = 32
+};
 using FunctionFlags = std::array<std::uint8_t, kFunctionCodes>;
 
 FunctionFlags flatten_functions(Dialect dialect) {
@@ -104,7 +111,9 @@ private:
     [[gnu::noinline]] void set_feed(const Block& b, bool has_value, double value);
     [[gnu::noinline]] void zero_offset(const Block& b);
     [[gnu::noinline]] void return_to_zero(const Block& b, std::size_t index);
-    [[nodiscard]] std::uint8_t function_flags(int code) const { return code < kFunctionCodes ? function_flags_[code] : 0; }
+    [[nodiscard]] std::uint8_t function_flags(int code) const {
+        return code < kFunctionCodes ? function_flags_[code] : 0;
+    }
     // `pre`: the block's MotionMeasure when it was worked out ahead (arcs), else null.
     void motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre);
     [[gnu::noinline]] bool zero_offset_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w);
@@ -137,8 +146,8 @@ private:
     [[nodiscard]] MachineEvent make_event(const Block& b, std::size_t index, EventKind kind, bool has_value,
                                           double value) const;
     void warn(DiagCode code, const Block& b, Msg msg, MessageArgs args = {}) {
-        diags_.push_back(make_diagnostic(default_severity(code), code, b.line, column_of(source_, b.offset), msg,
-                                         std::move(args)));
+        diags_.push_back(
+            make_diagnostic(default_severity(code), code, b.line, column_of(source_, b.offset), msg, std::move(args)));
     }
     [[nodiscard]] Point to_mm(IPoint p) const { return units_to_mm(profile_, p.x, p.y); }
     void set_mapping(const AxisMapping& mapping) {
@@ -186,13 +195,13 @@ private:
     static void deliver(MotionSink& s, const MachineEvent& e) { s.on_event(e); }
 
     // Machine state
-    IPoint pos_[kHeads];            // per head, machine axes, unit increments
-    IPoint origin_;                 // origin of absolute coordinates (83), program axes
+    IPoint pos_[kHeads];                   // per head, machine axes, unit increments
+    IPoint origin_;                        // origin of absolute coordinates (83), program axes
     const Placement placement_{profile_};  // the program on the machine (§12)
-    Point tool_offset_;             // where the tool in use sits from the centre torch (11, 114; 12 cancels)
-    AxisMapping mapping_;           // 21-28
-    bool mirrors_ = false;          // mapping_.mirrors(), kept with it (asked for every motion)
-    bool absolute_ = false;         // 82
+    Point tool_offset_;                    // where the tool in use sits from the centre torch (11, 114; 12 cancels)
+    AxisMapping mapping_;                  // 21-28
+    bool mirrors_ = false;                 // mapping_.mirrors(), kept with it (asked for every motion)
+    bool absolute_ = false;                // 82
     bool zero_offset_pending_ = false;
     std::optional<Block> zero_offset_block_;
     std::uint8_t tools_ = 0;
@@ -203,7 +212,7 @@ private:
     double kerf_units_ = 0;  // what 29/30 without a value use: the profile's kerf, or Hypertherm's 40+v
     double feed_mm_min_ = 0;
     bool three_axis_ = false;
-    bool skipping_ = false;          // inside 100 ... 101 with optional ignore on
+    bool skipping_ = false;  // inside 100 ... 101 with optional ignore on
     std::optional<Block> open_optional_;
     std::optional<Block> burner_count_;  // a 135 waiting for its 136
     double burner_count_value_ = 1;      // its value
@@ -228,8 +237,8 @@ private:
     }
     [[gnu::noinline]] void after_kerf_record(const Block& b);
     void select_tool_offset(const Block& b, int code);
-    Point torch_step_;                   // mm between neighbouring torches (136, along profile.torch_direction)
-    bool inside_table_ = true;           // the carriage is on the table (the last motion ended on it)
+    Point torch_step_;          // mm between neighbouring torches (136, along profile.torch_direction)
+    bool inside_table_ = true;  // the carriage is on the table (the last motion ended on it)
     std::optional<Block> last_block_;
     bool ended_ = false;
     std::uint8_t tools_before_end_ = 0;  // tools on when the end code was reached
@@ -238,7 +247,7 @@ private:
 
 void Machine::run(const Tape& chunk, std::span<const MotionMeasure> measures) {
     const MotionMeasure* measure = measures.empty() ? nullptr : measures.data();  // the next one, walking along
-    const std::int32_t* words = chunk.all_words().data();  // the words of block k, walking along
+    const std::int32_t* words = chunk.all_words().data();                         // the words of block k, walking along
     const std::size_t end = chunk.end_block();
     const std::size_t base = chunk.first_block();
     const Block* last = nullptr;  // kept as last_block_ when the chunk is done (the chunk's memory goes)
@@ -265,16 +274,15 @@ void Machine::run(const Tape& chunk, std::span<const MotionMeasure> measures) {
         }
         if (b.kind == BlockKind::Comment || b.kind == BlockKind::Percent) continue;
         last = &b;
-        if (burner_count_ && !(b.has_code() && b.code == fn::kWoydaBurnerSpacing && b.kind == BlockKind::FunctionValue)) {
+        if (burner_count_ &&
+            !(b.has_code() && b.code == fn::kWoydaBurnerSpacing && b.kind == BlockKind::FunctionValue)) {
             warn(DiagCode::W212_BurnerCountNotBeforeSpacing, *burner_count_, Msg::InterpBurnerCountNotNext);
             burner_count_.reset();
         }
         const bool is_end = b.ends_program();  // the end still ends a skipped section
         if (skipping_ && !is_end && !(b.kind == BlockKind::Function && b.code == fn::kOptionalIgnoreOff)) continue;
         switch (b.kind) {
-            case BlockKind::Invalid:
-                zero_offset_pending_ = false;
-                break;
+            case BlockKind::Invalid: zero_offset_pending_ = false; break;
             case BlockKind::EndMark:
                 event(b, i, EventKind::End);
                 ended_ = true;
@@ -288,15 +296,10 @@ void Machine::run(const Tape& chunk, std::span<const MotionMeasure> measures) {
                 }
                 function(b, i, false, 0);
                 break;
-            case BlockKind::FunctionValue:
-                function(b, i, true, b.function_value(w[0]));
-                break;
-            case BlockKind::Motion:
-                motion(b, i, w, pre);
-                break;
+            case BlockKind::FunctionValue: function(b, i, true, b.function_value(w[0])); break;
+            case BlockKind::Motion: motion(b, i, w, pre); break;
             case BlockKind::Comment:
-            case BlockKind::Percent:
-                break;
+            case BlockKind::Percent: break;
         }
     }
     if (last) last_block_ = *last;
@@ -323,7 +326,7 @@ void Machine::finish() {
 
 // Inlined into function(): every function block ends here.
 [[gnu::always_inline]] inline void Machine::event(const Block& b, std::size_t index, EventKind kind, bool has_value,
-                                                   double value) {
+                                                  double value) {
     if (kind == EventKind::End) {
         tools_before_end_ = tools_;
         tools_ = 0;
@@ -351,7 +354,8 @@ inline MachineEvent Machine::make_event(const Block& b, std::size_t index, Event
 }
 
 void Machine::send_event(const Block& b, std::size_t index, EventKind kind, bool has_value, double value) {
-    if (timed_stats_) [[unlikely]] return send_timed_event(b, index, kind, has_value, value);
+    if (timed_stats_) [[unlikely]]
+        return send_timed_event(b, index, kind, has_value, value);
     deliver(stats_ ? *also_ : *sink_, make_event(b, index, kind, has_value, value));  // (the statistics counted it)
 }
 
@@ -374,8 +378,7 @@ bool Machine::admit_function(const Block& b, bool& has_value, double value) {
     if (!(flags & kAssigned)) {
         if (code > fn::kLastIsoCode)
             warn(DiagCode::W201_UnknownFunction, b, Msg::InterpFunctionNotDefined, {code, profile_.name});
-        else
-            warn(DiagCode::W201_UnknownFunction, b, Msg::InterpFunctionUnassigned, {code});
+        else warn(DiagCode::W201_UnknownFunction, b, Msg::InterpFunctionUnassigned, {code});
         return false;
     }
     if (flags & kManufacturer) {
@@ -423,7 +426,8 @@ void Machine::warn_kerf_while_cutting(const Block& b, KerfSide side) {
 }
 
 void Machine::set_kerf(const Block& b, KerfSide side, bool has_value, double value) {
-    if (tools_ & kCuttingTools) [[unlikely]] warn_kerf_while_cutting(b, side);
+    if (tools_ & kCuttingTools) [[unlikely]]
+        warn_kerf_while_cutting(b, side);
     set_kerf_side(side);
     if (side == KerfSide::Off) {
         kerf_offset_mm_ = 0;
@@ -478,7 +482,8 @@ void Machine::warn_macro_only(const Block& b) {
         if (!admit_function(b, has_value, value)) return;
         if (function_flags(code) & kActsAs) return act_as(b, index, has_value, value);
     }
-    if (has_value && (function_flags(code) & kHasRange) && !value_in_range(b, value)) [[unlikely]] return;
+    if (has_value && (function_flags(code) & kHasRange) && !value_in_range(b, value)) [[unlikely]]
+        return;
     perform(b, code, index, has_value, value);
 }
 
@@ -558,9 +563,7 @@ void Machine::act_as(const Block& b, std::size_t index, bool has_value, double v
             set_torches(1);
             break;
         case fn::kWoydaLoopEnd:
-        case fn::kWoydaLoopStart:
-            warn_macro_only(b);
-            return;
+        case fn::kWoydaLoopStart: warn_macro_only(b); return;
         case fn::kIncremental: absolute_ = false; break;
         case fn::kAbsolute: absolute_ = true; break;
         case fn::kZeroOffset: zero_offset(b); break;
@@ -657,7 +660,8 @@ inline KerfSide Machine::motion_kerf() const {
 
 // After every motion: a rapid while cutting is warned about; a one-block rapid (profile) ends.
 inline void Machine::after_motion(const Block& b) {
-    if (rapid_ && (tools_ & kCuttingTools)) [[unlikely]] warn_rapid_while_cutting(b);
+    if (rapid_ && (tools_ & kCuttingTools)) [[unlikely]]
+        warn_rapid_while_cutting(b);
     if (rapid_one_block_) {
         rapid_ = false;
         rapid_one_block_ = false;
@@ -712,8 +716,8 @@ void Machine::check_table_box(const Box& box, const Block& b, Msg what) {
     const bool inside = table_holds(t, box);
     if (!inside && inside_table_) {
         warn(DiagCode::E401_LeavesTable, b, Msg::InterpLeavesTable,
-             {what, mm_text(box.min_x), mm_text(box.max_x), mm_text(box.min_y), mm_text(box.max_y),
-              mm_text(t.min_x_mm), mm_text(t.max_x_mm), mm_text(t.min_y_mm), mm_text(t.max_y_mm)});
+             {what, mm_text(box.min_x), mm_text(box.max_x), mm_text(box.min_y), mm_text(box.max_y), mm_text(t.min_x_mm),
+              mm_text(t.max_x_mm), mm_text(t.min_y_mm), mm_text(t.max_y_mm)});
     }
     inside_table_ = inside;
 }
@@ -743,7 +747,8 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
 }
 
 // Inlined into run(): half the blocks of a tape come here.
-[[gnu::always_inline]] inline void Machine::motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre) {
+[[gnu::always_inline]] inline void Machine::motion(const Block& b, std::size_t index, std::span<const std::int32_t> w,
+                                                   const MotionMeasure* pre) {
     if (absolute_) pre = nullptr;  // worked out for an incremental start
     if (zero_offset_pending_ && zero_offset_motion(b, index, w)) return;
     if (w.size() == 2 && !b.has_address()) {
@@ -797,7 +802,8 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
 }
 
 // Every other motion: head addresses, absolute mode, arcs, parabolas.
-void Machine::curve_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w, const MotionMeasure* pre) {
+void Machine::curve_motion(const Block& b, std::size_t index, std::span<const std::int32_t> w,
+                           const MotionMeasure* pre) {
     int head = 1;
     if (b.has_address()) {
         if (b.code != fn::kHeadOne && b.code != fn::kHeadTwo) {
@@ -912,17 +918,13 @@ bool Machine::parabola_motion(MotionRecord& m, const Block& b, std::span<const s
     return true;
 }
 
-void Machine::warn_bad_head(const Block& b) {
-    warn(DiagCode::E206_BadHeadAddress, b, Msg::InterpBadHead, {b.code});
-}
+void Machine::warn_bad_head(const Block& b) { warn(DiagCode::E206_BadHeadAddress, b, Msg::InterpBadHead, {b.code}); }
 
 void Machine::warn_address_outside_3_axis(const Block& b) {
     warn(DiagCode::W205_AddressOutside3Axis, b, Msg::InterpAddressOutside3Axis, {b.code});
 }
 
-void Machine::warn_arc_zero_radius(const Block& b) {
-    warn(DiagCode::E302_ArcZeroRadius, b, Msg::GeomArcZeroRadius);
-}
+void Machine::warn_arc_zero_radius(const Block& b) { warn(DiagCode::E302_ArcZeroRadius, b, Msg::GeomArcZeroRadius); }
 
 void Machine::warn_arc_off_circle(const Block& b, double r0_units, double r1_units) {
     const double unit = profile_.unit_mm;
@@ -964,7 +966,8 @@ double units_length(long long dx, long long dy) {
     return std::sqrt(x * x + y * y);
 }
 
-MotionMeasure measure_arc(long long sx, long long sy, long long ex, long long ey, long long cx, long long cy, bool ccw) {
+MotionMeasure measure_arc(long long sx, long long sy, long long ex, long long ey, long long cx, long long cy,
+                          bool ccw) {
     MotionMeasure a;
     a.r0 = units_length(sx - cx, sy - cy);
     a.r1 = units_length(ex - cx, ey - cy);

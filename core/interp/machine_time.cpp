@@ -16,8 +16,8 @@ constexpr double kMinCurvatureRadiusMm = 1e-3;
 }  // namespace
 
 MachineTimer::MachineTimer(double accel_mm_s2, double junction_deviation_mm)
-    : accel_(accel_mm_s2), accel_deviation_(accel_mm_s2 * junction_deviation_mm), half_inverse_accel_(0.5 / accel_mm_s2),
-      window_(kMachineTimeWindow), lowest_(kMachineTimeWindow + 1) {}
+    : accel_(accel_mm_s2), accel_deviation_(accel_mm_s2 * junction_deviation_mm),
+      half_inverse_accel_(0.5 / accel_mm_s2), window_(kMachineTimeWindow), lowest_(kMachineTimeWindow + 1) {}
 
 // An arc or a parabola: its top speed is also √(a·r) at its smallest radius of curvature r.
 void MachineTimer::curve(const MotionRecord& m, std::uint8_t torches) {
@@ -56,7 +56,8 @@ void MachineTimer::line(MotionKind kind, Point start, Point end, double length_m
         t = (2 * peak - v0 - v1) / accel_;
     }
     kind_s_[static_cast<int>(p.kind)] += t;
-    if (p.torches > 1) [[unlikely]] extra_torches_s_ += t * (p.torches - 1);
+    if (p.torches > 1) [[unlikely]]
+        extra_torches_s_ += t * (p.torches - 1);
 }
 
 // The backward pass gives each junction i the most its speed may be when the machine can still brake to the end

@@ -18,7 +18,8 @@ constexpr std::size_t kQuoteBytes = 24;  // what a problem quotes of a value
 constexpr std::array<std::int8_t, 256> make_base64url_values() {
     std::array<std::int8_t, 256> v{};
     for (auto& x : v) x = -1;
-    for (std::size_t i = 0; i < kBase64Url.size(); ++i) v[static_cast<unsigned char>(kBase64Url[i])] = static_cast<std::int8_t>(i);
+    for (std::size_t i = 0; i < kBase64Url.size(); ++i)
+        v[static_cast<unsigned char>(kBase64Url[i])] = static_cast<std::int8_t>(i);
     return v;
 }
 constexpr std::array<std::int8_t, 256> kBase64UrlValues = make_base64url_values();

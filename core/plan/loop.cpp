@@ -192,7 +192,8 @@ void close_loop(Cut& cut, std::span<const Piece> pieces, double closure_mm, doub
     if (n == 0) return;  // (a cut left out of the plan's tests, N615: no pieces, an empty box, no gap)
     const double closure2 = closure_mm * closure_mm;
     // First the loops that begin on the lead-in's first pieces (nearly every contour), then any other point passed.
-    for (const std::size_t candidates : {std::min(n, kPlanLeadMotions), n <= kPlanFullClosureMotions ? n : std::size_t{0}}) {
+    for (const std::size_t candidates :
+         {std::min(n, kPlanLeadMotions), n <= kPlanFullClosureMotions ? n : std::size_t{0}}) {
         // (an end away from every candidate start, by more than the closure, returns nowhere but on the last piece)
         Box starts;
         for (std::size_t i = 0; i < candidates; ++i)
@@ -203,7 +204,8 @@ void close_loop(Cut& cut, std::span<const Piece> pieces, double closure_mm, doub
             std::size_t at = 0;
             Point where;
             const Point e = p[j].end;
-            if (j + 1 != n && !(e.x >= near.min_x && e.x <= near.max_x && e.y >= near.min_y && e.y <= near.max_y)) continue;
+            if (j + 1 != n && !(e.x >= near.min_x && e.x <= near.max_x && e.y >= near.min_y && e.y <= near.max_y))
+                continue;
             if (!returns_at(p, j, candidates, closure2, at, where)) continue;
             cut.closed = true;
             cut.loop_begin = cut.first_piece + static_cast<std::uint32_t>(at);
@@ -306,7 +308,8 @@ bool inside_loop(const Cut& cut, std::span<const Piece> pieces, Point p) {
             if (p.x >= box.min_x) {
                 chords.assign(1, piece.start);
                 flatten_piece(piece, chords);
-                for (std::size_t c = 1; c < chords.size(); ++c) crossings += crosses_ray(chords[c - 1], chords[c], p) ? 1 : 0;
+                for (std::size_t c = 1; c < chords.size(); ++c)
+                    crossings += crosses_ray(chords[c - 1], chords[c], p) ? 1 : 0;
                 continue;
             }
         }

@@ -248,9 +248,8 @@ bool same_loops(const Shape& a, const Shape& b, const Rigid& t, double tolerance
         const Loop& la = a.loops[k];
         const Point c = t(la.centroid);
         const double reach = 4 * tolerance;  // (a centroid moves less than the points, but on a thin loop more)
-        const auto first = std::lower_bound(b.by_x.begin(), b.by_x.end(), c.x - reach, [&](std::size_t i, double x) {
-            return b.loops[i].centroid.x < x;
-        });
+        const auto first = std::lower_bound(b.by_x.begin(), b.by_x.end(), c.x - reach,
+                                            [&](std::size_t i, double x) { return b.loops[i].centroid.x < x; });
         bool found = false;
         for (auto it = first; it != b.by_x.end() && b.loops[*it].centroid.x <= c.x + reach && !found; ++it) {
             const Loop& lb = b.loops[*it];
@@ -384,7 +383,8 @@ Box seg_box(const Seg& s) {
                 if (d > 0) d -= 2 * kPi;
                 if (d < s.sweep) continue;
             }
-            box.add(Point{s.centre.x + s.radius * std::cos(k * kPi / 2), s.centre.y + s.radius * std::sin(k * kPi / 2)});
+            box.add(
+                Point{s.centre.x + s.radius * std::cos(k * kPi / 2), s.centre.y + s.radius * std::sin(k * kPi / 2)});
         }
     } else if (s.curve == CurveKind::Parabola) {
         const double den[2] = {s.a.x - 2 * s.control.x + s.b.x, s.a.y - 2 * s.control.y + s.b.y};

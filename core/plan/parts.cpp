@@ -101,10 +101,8 @@ private:
 class PartsBuilder {
 public:
     explicit PartsBuilder(const Profile& profile)
-        : profile_(profile),
-          tolerance_(std::max(kPartsSameShapeMm, kPartsSameShapeUnits * profile.unit_mm)),
-          closure_mm_(profile.arc_tolerance_units * profile.unit_mm),
-          grouper_(tolerance_) {}
+        : profile_(profile), tolerance_(std::max(kPartsSameShapeMm, kPartsSameShapeUnits * profile.unit_mm)),
+          closure_mm_(profile.arc_tolerance_units * profile.unit_mm), grouper_(tolerance_) {}
 
     // The contours [begin, end) of `all`, one plate's, their motions in `store`.
     void add_plate(const std::vector<PlanContour>& all, std::size_t begin, std::size_t end, const MotionStore& store) {
@@ -202,9 +200,10 @@ private:
             plate.scrap_kg = std::max(0.0, area - plate.net_area_mm2) * profile_.material->thickness_mm *
                              profile_.material->density_kg_m3 / kMm3PerM3;
         // (the full kerf width from every outline: the compensation's, else the profile's width)
-        const double width = kerf_mm > 0                                             ? 2 * kerf_mm
-                             : profile_.kerf_value == KerfValueMeaning::Width ? profile_.kerf_units * profile_.unit_mm
-                                                                               : 2 * profile_.kerf_units * profile_.unit_mm;
+        const double width = kerf_mm > 0 ? 2 * kerf_mm
+                             : profile_.kerf_value == KerfValueMeaning::Width
+                                 ? profile_.kerf_units * profile_.unit_mm
+                                 : 2 * profile_.kerf_units * profile_.unit_mm;
         plate.remnant = parts::remnant(plate.area, outlines, width);
     }
 
@@ -292,7 +291,8 @@ void stream_tape(std::string_view bytes, const Profile& profile, InputFormat for
 
 PartsList find_parts(const std::vector<PlanContour>& contours, const MotionStore& store, const Profile& profile) {
     PartsBuilder builder(profile);
-    for_each_plate(contours, [&](std::size_t begin, std::size_t end) { builder.add_plate(contours, begin, end, store); });
+    for_each_plate(contours,
+                   [&](std::size_t begin, std::size_t end) { builder.add_plate(contours, begin, end, store); });
     return builder.finish();
 }
 

@@ -129,8 +129,9 @@ private:
         for (const Cut& c : cuts_) {
             const double w = c.box.max_x - c.box.min_x, h = c.box.max_y - c.box.min_y;
             if (c.box.empty || (w <= tw && h <= th)) continue;
-            Diagnostic d = make_diagnostic(Severity::Warning, DiagCode::W611_CutLargerThanTable, c.first_line, 0,
-                                           Msg::PlanLargerThanTable, {mm_text(w), mm_text(h), mm_text(tw), mm_text(th)});
+            Diagnostic d =
+                make_diagnostic(Severity::Warning, DiagCode::W611_CutLargerThanTable, c.first_line, 0,
+                                Msg::PlanLargerThanTable, {mm_text(w), mm_text(h), mm_text(tw), mm_text(th)});
             d.contour_first = c.first_line;
             d.contour_last = c.last_line;
             emit(std::move(d));
@@ -140,7 +141,8 @@ private:
     // --- W601: a contour left open by a small gap ---
     void gaps() {
         for (const Cut& c : cuts_) {
-            if (c.closed || c.end_piece == c.first_piece || !(c.gap_mm > st_.closure_mm && c.gap_mm <= st_.gap_limit_mm))
+            if (c.closed || c.end_piece == c.first_piece ||
+                !(c.gap_mm > st_.closure_mm && c.gap_mm <= st_.gap_limit_mm))
                 continue;
             const Point e = last_piece(c).end;
             Diagnostic d = about(DiagCode::W601_ContourGap, c, {(e.x + c.gap_from.x) / 2, (e.y + c.gap_from.y) / 2},
@@ -165,8 +167,10 @@ private:
         if (!c.closed) sig.push_back({q(pieces_[first].start.x), q(pieces_[first].start.y)});
         for (std::uint32_t k = first; k < end; ++k) {
             const Piece& p = pieces_[k];
-            sig.push_back({q(k + 1 == end && c.closed ? c.loop_start.x : p.end.x), q(k + 1 == end && c.closed ? c.loop_start.y : p.end.y)});
-            if (p.arc) sig.push_back({q(p.centre.x) ^ 0x5bd1e995LL, q(p.centre.y)});  // (a centre is not a point passed)
+            sig.push_back({q(k + 1 == end && c.closed ? c.loop_start.x : p.end.x),
+                           q(k + 1 == end && c.closed ? c.loop_start.y : p.end.y)});
+            if (p.arc)
+                sig.push_back({q(p.centre.x) ^ 0x5bd1e995LL, q(p.centre.y)});  // (a centre is not a point passed)
         }
         std::sort(sig.begin(), sig.end());
         return sig;
@@ -209,8 +213,10 @@ private:
                     first = r;
                     continue;
                 }
-                const std::size_t a = static_cast<std::size_t>(keyed[k + static_cast<std::size_t>(run[first].second)].second);
-                const std::size_t b = static_cast<std::size_t>(keyed[k + static_cast<std::size_t>(run[r].second)].second);
+                const std::size_t a =
+                    static_cast<std::size_t>(keyed[k + static_cast<std::size_t>(run[first].second)].second);
+                const std::size_t b =
+                    static_cast<std::size_t>(keyed[k + static_cast<std::size_t>(run[r].second)].second);
                 if (cuts_[a].closed == cuts_[b].closed && cuts_[a].head == cuts_[b].head &&
                     sigs[static_cast<std::size_t>(run[first].second)] == sigs[static_cast<std::size_t>(run[r].second)])
                     report_same_path(std::min(a, b), std::max(a, b));
@@ -222,7 +228,8 @@ private:
         nodes_[later].duplicate = true;
         const Cut& a = cuts_[first];
         const Cut& c = cuts_[later];
-        Diagnostic d = about(DiagCode::W607_SamePathTwice, c, first_piece(c).end, Msg::PlanSamePath, {a.first_line, a.last_line});
+        Diagnostic d =
+            about(DiagCode::W607_SamePathTwice, c, first_piece(c).end, Msg::PlanSamePath, {a.first_line, a.last_line});
         d.related.push_back(related(a, Msg::RelatedFirstCut));
         emit(std::move(d));
     }
@@ -318,7 +325,8 @@ private:
         }
         if (crowded_) {
             const Cut& first = cuts_.front();
-            emit(make_diagnostic(Severity::Note, DiagCode::N613_PlateTooCrowded, first.first_line, 0, Msg::PlanPlateCrowded,
+            emit(make_diagnostic(Severity::Note, DiagCode::N613_PlateTooCrowded, first.first_line, 0,
+                                 Msg::PlanPlateCrowded,
                                  {first.first_line, cuts_.back().last_line, pairs_.size(), kPairsPerCut}));
         }
     }
@@ -406,7 +414,8 @@ private:
                                  part ? Msg::PlanPartBeforeHoles : Msg::PlanHoleBeforeParts,
                                  {children.size(), first.first_line, first.last_line});
             for (int ch : children)
-                d.related.push_back(related(cuts_[static_cast<std::size_t>(ch)], part ? Msg::RelatedHoleAfter : Msg::RelatedPartAfter));
+                d.related.push_back(
+                    related(cuts_[static_cast<std::size_t>(ch)], part ? Msg::RelatedHoleAfter : Msg::RelatedPartAfter));
             emit(std::move(d));
         }
     }
@@ -463,14 +472,16 @@ private:
             if (!usable(i) || !collides(nodes_[i].role)) continue;
             const Cut& a = cuts_[i];
             for (int j : neighbours(i)) {
-                if (static_cast<std::size_t>(j) <= i || !collides_as_pair(nodes_[i].role, nodes_[static_cast<std::size_t>(j)].role))
+                if (static_cast<std::size_t>(j) <= i ||
+                    !collides_as_pair(nodes_[i].role, nodes_[static_cast<std::size_t>(j)].role))
                     continue;
                 if (ancestor(j, static_cast<int>(i)) || ancestor(static_cast<int>(i), j)) continue;
                 const Cut& b = cuts_[static_cast<std::size_t>(j)];
                 const double limit = width_between(a, b);
                 if (!boxes_meet(a.loop_box, b.loop_box, limit)) continue;
                 Point where;
-                const double d = approach(polygon(static_cast<std::size_t>(j)), true, polygon(i), a.loop_box, limit, where);
+                const double d =
+                    approach(polygon(static_cast<std::size_t>(j)), true, polygon(i), a.loop_box, limit, where);
                 if (!(d < limit)) continue;
                 reported.insert({static_cast<int>(i), j});
                 report_collision(i, static_cast<std::size_t>(j), d, limit, where);
@@ -489,11 +500,13 @@ private:
         if (!cap_.admit(code, b.first_line, default_severity(code))) return;
         Diagnostic diag;
         if (lone) {
-            diag = about(DiagCode::N612_ContoursOverlap, b, where, Msg::PlanContoursOverlap, {a.first_line, a.last_line});
+            diag =
+                about(DiagCode::N612_ContoursOverlap, b, where, Msg::PlanContoursOverlap, {a.first_line, a.last_line});
             diag.related.push_back(related(a, Msg::RelatedOtherContour));
         } else if (ra == ContourRole::LoneHole || rb == ContourRole::LoneHole) {
             const bool b_is_hole = rb == ContourRole::LoneHole;
-            diag = about(DiagCode::E605_PartsCollide, b, where, b_is_hole ? Msg::PlanPlateHoleOverlapsPart : Msg::PlanPartOverlapsPlateHole,
+            diag = about(DiagCode::E605_PartsCollide, b, where,
+                         b_is_hole ? Msg::PlanPlateHoleOverlapsPart : Msg::PlanPartOverlapsPlateHole,
                          {a.first_line, a.last_line, mm_text(width)});
             diag.related.push_back(related(a, b_is_hole ? Msg::RelatedOtherPart : Msg::RelatedPlateHole));
         } else if (width <= kPlanTouchToleranceMm) {  // (no compensation on either: no kerf width to name)
@@ -542,13 +555,14 @@ private:
                 if (done || p.order >= cuts_[i].order || !is_part(nodes_[static_cast<std::size_t>(j)].role) ||
                     !boxes_meet(reach, p.loop_box, kPlanTouchToleranceMm))
                     continue;
-                if (reported.count({std::min<int>(j, static_cast<int>(i)), std::max<int>(j, static_cast<int>(i))})) continue;
+                if (reported.count({std::min<int>(j, static_cast<int>(i)), std::max<int>(j, static_cast<int>(i))}))
+                    continue;
                 if (paths.empty())
                     for (const auto& [first, end] : ranges) paths.push_back(pieces_points(pieces_, first, end));
                 for (const std::vector<Point>& path : paths) {
                     Point where;
-                    if (path.size() < 2 ||
-                        approach(path, false, polygon(static_cast<std::size_t>(j)), p.loop_box, kPlanTouchToleranceMm, where) > 0)
+                    if (path.size() < 2 || approach(path, false, polygon(static_cast<std::size_t>(j)), p.loop_box,
+                                                    kPlanTouchToleranceMm, where) > 0)
                         continue;
                     Diagnostic d = about(DiagCode::E606_CutCrossesCutPart, cuts_[i], where, Msg::PlanCutCrossesPart,
                                          {p.first_line, p.last_line});
@@ -587,7 +601,8 @@ private:
         const std::vector<Point>& loop = polygon(i);
         for (std::size_t k = 0; k < loop.size(); ++k) {
             Point where;
-            if (segment_distance(loop[k], loop[(k + 1) % loop.size()], pierce, pierce, where) <= st_.closure_mm) return true;
+            if (segment_distance(loop[k], loop[(k + 1) % loop.size()], pierce, pierce, where) <= st_.closure_mm)
+                return true;
         }
         return false;
     }
@@ -602,14 +617,14 @@ private:
     std::vector<Diagnostic>& out_;
     DiagnosticCap& cap_;  // max_per_code within the plate: the rest are counted, not made
     std::vector<Node> nodes_;
-    std::vector<Box> boxes_;                   // the loops' boxes (empty: no loop), the grid's
-    std::vector<std::vector<Point>> polygons_; // the loops flattened, as made
+    std::vector<Box> boxes_;                    // the loops' boxes (empty: no loop), the grid's
+    std::vector<std::vector<Point>> polygons_;  // the loops flattened, as made
     std::vector<std::uint32_t> first_neighbour_;
-    std::vector<int> neighbours_;              // each cut's, ascending, from first_neighbour_[i]
-    std::vector<std::pair<int, int>> pairs_;   // (cut, neighbour) as found
-    std::vector<int> order_;                   // the cuts by their boxes' min_x (the sweep)
-    bool crowded_ = false;                     // the search for neighbours stopped at its budget (N613)
-    std::size_t pair_points_budget_ = 0;       // what the pairs found may weigh (kPairPointsPerPoint)
+    std::vector<int> neighbours_;             // each cut's, ascending, from first_neighbour_[i]
+    std::vector<std::pair<int, int>> pairs_;  // (cut, neighbour) as found
+    std::vector<int> order_;                  // the cuts by their boxes' min_x (the sweep)
+    bool crowded_ = false;                    // the search for neighbours stopped at its budget (N613)
+    std::size_t pair_points_budget_ = 0;      // what the pairs found may weigh (kPairPointsPerPoint)
     std::size_t pair_points_left_ = 0;
     double max_width_ = 0;  // the widest kerf of the plate's cuts
 };

@@ -138,13 +138,14 @@ void apply_eia_keys(const json& j, EiaDialect& e, KeyErrors& errors) {
     if (auto it = j.find("dwell_letter"); it != j.end()) {
         const KeyScope at(errors, "dwell_letter");
         if (it->is_string() && it->get_ref<const std::string&>().size() == 1 &&
-                 it->get_ref<const std::string&>()[0] >= 'A' && it->get_ref<const std::string&>()[0] <= 'Z')
+            it->get_ref<const std::string&>()[0] >= 'A' && it->get_ref<const std::string&>()[0] <= 'Z')
             e.dwell_letter = it->get_ref<const std::string&>()[0];
         else errors.push_back({Msg::ProfileEiaDwellLetter});
     }
     if (auto it = j.find("dwell_unit_s"); it != j.end()) {
         const KeyScope at(errors, "dwell_unit_s");
-        if (it->is_number() && it->get<double>() >= 1e-6 && it->get<double>() <= 3600) e.dwell_unit_s = it->get<double>();
+        if (it->is_number() && it->get<double>() >= 1e-6 && it->get<double>() <= 3600)
+            e.dwell_unit_s = it->get<double>();
         else errors.push_back({Msg::ProfileEiaDwellUnit});
     }
     for (const char* key : {"inch", "mm"}) {
@@ -169,7 +170,8 @@ void apply_eia_keys(const json& j, EiaDialect& e, KeyErrors& errors) {
         if (ok)
             for (const auto& row : *it) {
                 const auto whole = [&](std::size_t k, long long below) {
-                    return row[k].is_number_integer() && row[k].get<long long>() >= 0 && row[k].get<long long>() < below;
+                    return row[k].is_number_integer() && row[k].get<long long>() >= 0 &&
+                           row[k].get<long long>() < below;
                 };
                 const bool pair = row.is_array() && (row.size() == 2 || row.size() == 3) && whole(1, fn::kCodeCount) &&
                                   (row.size() == 2 || whole(2, kMaxEiaCodeValue + 1));
@@ -184,9 +186,16 @@ void apply_eia_keys(const json& j, EiaDialect& e, KeyErrors& errors) {
         if (ok) e.codes = std::move(codes);
         else errors.push_back({Msg::ProfileEiaCodes});
     }
-    static constexpr const char* kKnownEiaKeys[] = {"letters", "strict_order", "one_function_per_block",
-                                                    "rapid_motion", "position_preset", "dwell_letter",
-                                                    "dwell_unit_s", "inch", "mm", "codes"};
+    static constexpr const char* kKnownEiaKeys[] = {"letters",
+                                                    "strict_order",
+                                                    "one_function_per_block",
+                                                    "rapid_motion",
+                                                    "position_preset",
+                                                    "dwell_letter",
+                                                    "dwell_unit_s",
+                                                    "inch",
+                                                    "mm",
+                                                    "codes"};
     for (auto it = j.begin(); it != j.end(); ++it) {
         const bool known = std::any_of(std::begin(kKnownEiaKeys), std::end(kKnownEiaKeys),
                                        [&](const char* k) { return it.key() == k; });
@@ -221,16 +230,16 @@ ordered_json eia_to_json(const EiaDialect& e) {
 struct Range {
     double min, max;
 };
-constexpr Range kUnitRange{1e-9, 1000};             // mm per unit increment
-constexpr Range kUnitsRange{0, 1e9};                // tolerances and kerf, in unit increments
-constexpr Range kChordRange{1e-6, 1000};            // mm
-constexpr Range kSecondsRange{0, 1e6};              // dwell and pierce time, s
-constexpr Range kDwellUnitRange{1e-6, 3600};        // s: the unit of a dwell's value (0.001: milliseconds)
-constexpr Range kSpeedRange{1e-9, 1e9};             // mm/min
-constexpr Range kGapRange{0, 1e6};                  // mm: closure_gap_mm
-constexpr Range kPositionRange{-1e9, 1e9};          // mm: offsets and table limits
-constexpr Range kRotationRange{-360, 360};          // degrees
-constexpr std::size_t kMaxZeroOffsets = 100;        // entries of zero_offsets
+constexpr Range kUnitRange{1e-9, 1000};       // mm per unit increment
+constexpr Range kUnitsRange{0, 1e9};          // tolerances and kerf, in unit increments
+constexpr Range kChordRange{1e-6, 1000};      // mm
+constexpr Range kSecondsRange{0, 1e6};        // dwell and pierce time, s
+constexpr Range kDwellUnitRange{1e-6, 3600};  // s: the unit of a dwell's value (0.001: milliseconds)
+constexpr Range kSpeedRange{1e-9, 1e9};       // mm/min
+constexpr Range kGapRange{0, 1e6};            // mm: closure_gap_mm
+constexpr Range kPositionRange{-1e9, 1e9};    // mm: offsets and table limits
+constexpr Range kRotationRange{-360, 360};    // degrees
+constexpr std::size_t kMaxZeroOffsets = 100;  // entries of zero_offsets
 
 // A point given as {"x_mm": ..., "y_mm": ...} (an offset): the error names `where` ("\"tool_offsets.marker\"", or
 // a ProfileZeroOffsetEntry).
@@ -317,8 +326,7 @@ void apply_placement_keys(const json& j, Profile& p, KeyErrors& errors) {
         const KeyScope at(errors, "plate_rotation_deg");
         if (!it->is_number() || !(it->get<double>() >= kRotationRange.min && it->get<double>() <= kRotationRange.max))
             errors.push_back({Msg::ProfilePlateRotation});
-        else
-            p.plate_rotation_deg = it->get<double>();
+        else p.plate_rotation_deg = it->get<double>();
     }
     if (const auto it = j.find("tool_offsets"); it != j.end()) {
         const KeyScope at(errors, "tool_offsets");
@@ -329,22 +337,21 @@ void apply_placement_keys(const json& j, Profile& p, KeyErrors& errors) {
         for (auto e = it->begin(); e != it->end(); ++e) {
             const KeyScope entry(errors, e.key());
             if (e.key() == "marker") parse_offset(e.value(), "\"tool_offsets.marker\"", p.marker_offset, errors);
-            else if (e.key() == "powder_marker") parse_offset(e.value(), "\"tool_offsets.powder_marker\"", p.powder_marker_offset, errors);
+            else if (e.key() == "powder_marker")
+                parse_offset(e.value(), "\"tool_offsets.powder_marker\"", p.powder_marker_offset, errors);
             else errors.push_back({Msg::ProfileToolOffsetsUnknownKey, {excerpt(e.key(), kMaxKeyChars)}});
         }
     }
 }
 
-
-
 // Machine time, the plate and the costs (docs/semantics.md §9, "Machine time" and "Cost").
-constexpr Range kAccelRange{1e-3, 1e6};           // mm/s²
-constexpr Range kDeviationRange{0, 1000};          // mm
-constexpr Range kPlateRange{1e-6, 1e6};            // mm: a plate's size and thickness
-constexpr Range kDensityRange{1e-6, 1e6};          // kg/m³
-constexpr Range kPriceRange{0, 1e9};               // a price in the profile's currency
-constexpr Range kElectrodePiercesRange{1, 1e9};    // pierces an electrode lasts
-constexpr Range kElectrodeArcRange{1e-6, 1e9};     // s of arc an electrode lasts
+constexpr Range kAccelRange{1e-3, 1e6};          // mm/s²
+constexpr Range kDeviationRange{0, 1000};        // mm
+constexpr Range kPlateRange{1e-6, 1e6};          // mm: a plate's size and thickness
+constexpr Range kDensityRange{1e-6, 1e6};        // kg/m³
+constexpr Range kPriceRange{0, 1e9};             // a price in the profile's currency
+constexpr Range kElectrodePiercesRange{1, 1e9};  // pierces an electrode lasts
+constexpr Range kElectrodeArcRange{1e-6, 1e9};   // s of arc an electrode lasts
 constexpr std::size_t kMaxCurrencyBytes = 16;
 
 // One number of an object of numbers: its key, where it goes, its range; `given` (when not null) says whether
@@ -359,8 +366,8 @@ struct NumberField {
 // The value of `key`: null (`out` reset) or an object read by `read` (into a value that becomes `out` when
 // it has no error). `example` shows the object in the message when the value is neither.
 template <class T, class Read>
-void null_or_object(const json& j, const char* key, std::optional<T>& out, const char* example,
-                    KeyErrors& errors, Read read) {
+void null_or_object(const json& j, const char* key, std::optional<T>& out, const char* example, KeyErrors& errors,
+                    Read read) {
     const auto it = j.find(key);
     if (it == j.end()) return;
     const KeyScope at(errors, key);
@@ -397,7 +404,8 @@ void read_fields(const json& object, const char* name, std::initializer_list<Num
         if (v == object.end() && f.given != nullptr) continue;
         const std::string key = std::string(name) + "." + f.key;
         if (v == object.end()) {
-            errors.push_back({Msg::ProfileNeedsNumber, {quoted, f.key, number_text(f.range.min), number_text(f.range.max)}});
+            errors.push_back(
+                {Msg::ProfileNeedsNumber, {quoted, f.key, number_text(f.range.min), number_text(f.range.max)}});
             continue;
         }
         if (!v->is_number()) {
@@ -405,8 +413,9 @@ void read_fields(const json& object, const char* name, std::initializer_list<Num
             continue;
         }
         if (!(v->get<double>() >= f.range.min && v->get<double>() <= f.range.max)) {
-            errors.push_back({Msg::ProfileOutOfRange, {key, number_text(f.range.min), number_text(f.range.max),
-                                                       number_text(v->get<double>())}});
+            errors.push_back(
+                {Msg::ProfileOutOfRange,
+                 {key, number_text(f.range.min), number_text(f.range.max), number_text(v->get<double>())}});
             continue;
         }
         *f.out = v->get<double>();
@@ -422,10 +431,12 @@ void read_fields(const json& object, const char* name, std::initializer_list<Num
     }
     for (auto it = object.begin(); it != object.end(); ++it) {
         const auto named = [&](const char* k) { return it.key() == k; };
-        const bool known = std::any_of(fields.begin(), fields.end(), [&](const NumberField& f) { return named(f.key); }) ||
-                           std::any_of(texts.begin(), texts.end(), [&](const TextField& t) { return named(t.key); });
+        const bool known =
+            std::any_of(fields.begin(), fields.end(), [&](const NumberField& f) { return named(f.key); }) ||
+            std::any_of(texts.begin(), texts.end(), [&](const TextField& t) { return named(t.key); });
         const KeyScope at(errors, it.key());
-        if (!known) errors.push_back({Msg::ProfileUnknownKey, {std::string(name) + "." + excerpt(it.key(), kMaxKeyChars)}});
+        if (!known)
+            errors.push_back({Msg::ProfileUnknownKey, {std::string(name) + "." + excerpt(it.key(), kMaxKeyChars)}});
     }
 }
 
@@ -441,8 +452,9 @@ void apply_cost_keys(const json& j, Profile& p, KeyErrors& errors, ReadDeviation
             errors.push_back({Msg::ProfileNullOrNumber,
                               {"accel_mm_s2", number_text(kAccelRange.min), number_text(kAccelRange.max)}});
         } else if (!(v >= kAccelRange.min && v <= kAccelRange.max)) {
-            errors.push_back({Msg::ProfileOutOfRange, {"accel_mm_s2", number_text(kAccelRange.min),
-                                                       number_text(kAccelRange.max), number_text(v)}});
+            errors.push_back(
+                {Msg::ProfileOutOfRange,
+                 {"accel_mm_s2", number_text(kAccelRange.min), number_text(kAccelRange.max), number_text(v)}});
         } else {
             p.accel_mm_s2 = v;
         }
@@ -508,7 +520,8 @@ void apply_keys(const json& j, Profile& p, KeyErrors& errors) {
         }
         out = it->get<bool>();
     };
-    auto choice = [&](const char* key, auto& out, std::initializer_list<std::pair<const char*, std::decay_t<decltype(out)>>> options) {
+    auto choice = [&](const char* key, auto& out,
+                      std::initializer_list<std::pair<const char*, std::decay_t<decltype(out)>>> options) {
         auto it = j.find(key);
         if (it == j.end()) return;
         const KeyScope at(errors, key);
@@ -527,7 +540,8 @@ void apply_keys(const json& j, Profile& p, KeyErrors& errors) {
     if (auto it = j.find("name"); it != j.end()) {
         const KeyScope at(errors, "name");
         if (!it->is_string()) errors.push_back({Msg::ProfileNameNotString});
-        else if (const std::string& name = it->get_ref<const std::string&>(); is_valid_profile_name(name)) p.name = name;
+        else if (const std::string& name = it->get_ref<const std::string&>(); is_valid_profile_name(name))
+            p.name = name;
         else errors.push_back({Msg::ProfileNameText, {kMaxProfileNameBytes, excerpt(name, kMaxKeyChars)}});
     }
     choice("dialect", p.dialect,
@@ -582,8 +596,7 @@ void apply_keys(const json& j, Profile& p, KeyErrors& errors) {
         const KeyScope at(errors, "max_per_code");
         if (it->is_number_unsigned() && it->get<std::uint64_t>() <= kMaxPerCodeLimit)
             p.max_per_code = static_cast<std::size_t>(it->get<std::uint64_t>());
-        else
-            errors.push_back({Msg::ProfileWholeNumber, {"max_per_code", kMaxPerCodeLimit}});
+        else errors.push_back({Msg::ProfileWholeNumber, {"max_per_code", kMaxPerCodeLimit}});
     }
     if (auto it = j.find("feed_range_mm_min"); it != j.end()) {
         const KeyScope at(errors, "feed_range_mm_min");
@@ -610,8 +623,9 @@ void apply_keys(const json& j, Profile& p, KeyErrors& errors) {
                 auto f = it->find(keys[i]);
                 if (f == it->end() || !f->is_number() ||
                     !(f->get<double>() >= kPositionRange.min && f->get<double>() <= kPositionRange.max)) {
-                    errors.push_back({Msg::ProfileNeedsNumber, {"\"table\"", keys[i], number_text(kPositionRange.min),
-                                                                number_text(kPositionRange.max)}});
+                    errors.push_back(
+                        {Msg::ProfileNeedsNumber,
+                         {"\"table\"", keys[i], number_text(kPositionRange.min), number_text(kPositionRange.max)}});
                     good = false;
                 } else {
                     *fields[i] = f->get<double>();
@@ -630,14 +644,44 @@ void apply_keys(const json& j, Profile& p, KeyErrors& errors) {
         const KeyScope at(errors, "eia");
         apply_eia_keys(*it, p.eia, errors);
     }
-    static constexpr const char* kKnownKeys[] = {
-        "name", "base", "dialect", "unit_mm", "whitespace", "end_codes", "end_at_data_end", "arc_tolerance",
-        "chord_tolerance_mm", "torch_direction",
-        "optional_ignore", "rapid_single_block", "kerf_value", "kerf", "default_dwell_s", "dwell_unit_s", "feed_mm_min",
-        "rapid_mm_min", "pierce_time_s", "setup_offset_x_mm", "setup_offset_y_mm", "zero_offsets", "zero_offset",
-        "plate_rotation_deg", "tool_offsets", "table", "eia", "closure_gap_mm", "feed_range_mm_min", "max_dwell_s",
-        "lead_in_required", "max_per_code", "accel_mm_s2", "junction_deviation_mm", "material", "plate_mm", "costs",
-        "consumables"};
+    static constexpr const char* kKnownKeys[] = {"name",
+                                                 "base",
+                                                 "dialect",
+                                                 "unit_mm",
+                                                 "whitespace",
+                                                 "end_codes",
+                                                 "end_at_data_end",
+                                                 "arc_tolerance",
+                                                 "chord_tolerance_mm",
+                                                 "torch_direction",
+                                                 "optional_ignore",
+                                                 "rapid_single_block",
+                                                 "kerf_value",
+                                                 "kerf",
+                                                 "default_dwell_s",
+                                                 "dwell_unit_s",
+                                                 "feed_mm_min",
+                                                 "rapid_mm_min",
+                                                 "pierce_time_s",
+                                                 "setup_offset_x_mm",
+                                                 "setup_offset_y_mm",
+                                                 "zero_offsets",
+                                                 "zero_offset",
+                                                 "plate_rotation_deg",
+                                                 "tool_offsets",
+                                                 "table",
+                                                 "eia",
+                                                 "closure_gap_mm",
+                                                 "feed_range_mm_min",
+                                                 "max_dwell_s",
+                                                 "lead_in_required",
+                                                 "max_per_code",
+                                                 "accel_mm_s2",
+                                                 "junction_deviation_mm",
+                                                 "material",
+                                                 "plate_mm",
+                                                 "costs",
+                                                 "consumables"};
     for (auto it = j.begin(); it != j.end(); ++it) {
         bool known = false;
         for (const char* k : kKnownKeys) known = known || it.key() == k;
@@ -800,7 +844,10 @@ std::string profile_to_json(const Profile& p) {
     j["pierce_time_s"] = p.pierce_time_s;
     j["accel_mm_s2"] = p.accel_mm_s2 ? ordered_json(*p.accel_mm_s2) : ordered_json(nullptr);
     j["junction_deviation_mm"] = p.junction_deviation_mm;
-    j["torch_direction"] = p.torch_direction.x > 0 ? "+x" : p.torch_direction.x < 0 ? "-x" : p.torch_direction.y < 0 ? "-y" : "+y";
+    j["torch_direction"] = p.torch_direction.x > 0   ? "+x"
+                           : p.torch_direction.x < 0 ? "-x"
+                           : p.torch_direction.y < 0 ? "-y"
+                                                     : "+y";
     const auto offset = [](Point o) { return ordered_json{{"x_mm", o.x}, {"y_mm", o.y}}; };
     ordered_json zeros = ordered_json::object();
     for (const auto& [name, o] : p.zero_offsets) zeros[name] = offset(o);
@@ -809,8 +856,10 @@ std::string profile_to_json(const Profile& p) {
     j["plate_rotation_deg"] = p.plate_rotation_deg;
     j["tool_offsets"] = {{"marker", offset(p.marker_offset)}, {"powder_marker", offset(p.powder_marker_offset)}};
     if (p.table) {
-        j["table"] = {{"min_x_mm", p.table->min_x_mm}, {"min_y_mm", p.table->min_y_mm},
-                      {"max_x_mm", p.table->max_x_mm}, {"max_y_mm", p.table->max_y_mm}};
+        j["table"] = {{"min_x_mm", p.table->min_x_mm},
+                      {"min_y_mm", p.table->min_y_mm},
+                      {"max_x_mm", p.table->max_x_mm},
+                      {"max_y_mm", p.table->max_y_mm}};
     } else {
         j["table"] = nullptr;
     }
@@ -848,7 +897,7 @@ std::string profile_to_json(const Profile& p) {
 bool mm_to_units(const Profile& p, Point mm, long long& x, long long& y) {
     const double ux = std::round(mm.x / p.unit_mm);
     const double uy = std::round(mm.y / p.unit_mm);
-    constexpr double kLimit = 9.0e18;  // below 2^63: the cast is defined
+    constexpr double kLimit = 9.0e18;                                       // below 2^63: the cast is defined
     if (!(std::fabs(ux) < kLimit && std::fabs(uy) < kLimit)) return false;  // (NaN too)
     x = static_cast<long long>(ux);
     y = static_cast<long long>(uy);

@@ -21,11 +21,11 @@
 namespace essi {
 namespace {
 
-constexpr int kMaxNumberDigits = 12;           // digits of a number (before and after the point together)
-constexpr long long kMaxCodeNumber = 999;      // G and M numbers have at most 3 digits
-constexpr std::size_t kExcerptChars = 16;      // what a message quotes of a word
+constexpr int kMaxNumberDigits = 12;       // digits of a number (before and after the point together)
+constexpr long long kMaxCodeNumber = 999;  // G and M numbers have at most 3 digits
+constexpr std::size_t kExcerptChars = 16;  // what a message quotes of a word
 constexpr double kMmPerInch = 25.4;
-constexpr double kOnGrid = 1e-6;               // a value this close to a whole unit increment is on the grid
+constexpr double kOnGrid = 1e-6;  // a value this close to a whole unit increment is on the grid
 
 enum class ArcMode : std::uint8_t { None, Clockwise, CounterClockwise };
 
@@ -46,7 +46,8 @@ constexpr std::array<long long, kMaxNumberDigits + 1> kPowersOfTen = make_powers
 // The letters the reader gives a meaning to: the rest of a dialect's letters (Hypertherm's T of `M36 T1`, the D
 // of `G41 D5`) are read and ignored with W124.
 bool reads_letter(char letter, const EiaDialect& e) {
-    return letter == 'N' || letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' || letter == e.dwell_letter;
+    return letter == 'N' || letter == 'X' || letter == 'Y' || letter == 'I' || letter == 'J' ||
+           letter == e.dwell_letter;
 }
 
 // One address word: its letter, where it starts, and its number as written (mantissa x 10^-decimals).
@@ -115,8 +116,8 @@ private:
     // The machine state the reader keeps (see the file's comment), changed only by committed lines.
     struct State {
         ArcMode arc = ArcMode::None;
-        bool rapid = false;      // G00 (rapid_motion_g) in force
-        bool absolute = false;   // the function 82 is in force
+        bool rapid = false;     // G00 (rapid_motion_g) in force
+        bool absolute = false;  // the function 82 is in force
         bool inch = false;
         long long x = 0, y = 0;  // programmed position, unit increments
     };
@@ -161,10 +162,10 @@ private:
     // The dialect's words by number (make_tables): the function of each G and M, the role of each G.
     std::array<std::int16_t, kMaxCodeNumber + 1> g_function_{}, m_function_{}, g_value_{}, m_value_{};
     std::array<GRole, kMaxCodeNumber + 1> g_role_{};
-    int unit_decimals_ = -1;            // unit_mm = 10^-unit_decimals_ (0-9), or -1 (another unit: in doubles)
+    int unit_decimals_ = -1;  // unit_mm = 10^-unit_decimals_ (0-9), or -1 (another unit: in doubles)
     std::array<std::int8_t, 256> letter_rank_{};  // a letter's place in eia.letters, -1 when not allowed
-    std::vector<Word> words_;           // the line's words (kept: no allocation a line)
-    LineResult line_out_;               // the line's blocks and diagnostics (likewise)
+    std::vector<Word> words_;                     // the line's words (kept: no allocation a line)
+    LineResult line_out_;                         // the line's blocks and diagnostics (likewise)
     State state_;
     // Coordinates rounded to the unit (W125, one warning for the tape at the first).
     std::size_t rounded_ = 0;
@@ -254,26 +255,34 @@ bool EiaReader::check_order(const std::vector<Word>& words, LineResult& out) con
         const bool twice = (seen & bit) != 0;
         seen |= bit;
         if (twice && (!repeatable || e.strict_order)) {
-            out.diagnostics.push_back({Severity::Error, DiagCode::E120_EiaLetterOrder, w.offset, Msg::EiaLetterTwice,
+            out.diagnostics.push_back({Severity::Error,
+                                       DiagCode::E120_EiaLetterOrder,
+                                       w.offset,
+                                       Msg::EiaLetterTwice,
                                        {std::string(1, w.letter)}});
             return false;
         }
         if (e.strict_order && k > 0 && rank < last) {
             std::string order;
             for (char l : e.letters) order += (order.empty() ? "" : " ") + std::string(1, l);
-            out.diagnostics.push_back({Severity::Error, DiagCode::E120_EiaLetterOrder, w.offset, Msg::EiaLetterOrder,
-                                       {std::string(1, w.letter), std::string(1, words[k - 1].letter), order,
-                                        profile_.name}});
+            out.diagnostics.push_back(
+                {Severity::Error,
+                 DiagCode::E120_EiaLetterOrder,
+                 w.offset,
+                 Msg::EiaLetterOrder,
+                 {std::string(1, w.letter), std::string(1, words[k - 1].letter), order, profile_.name}});
             return false;
         }
         last = std::max(last, rank);
         const bool is_function = w.letter == 'G' || w.letter == 'M' || w.letter == 'F';
         if (is_function && e.one_function_per_block) {
             if (function_word != nullptr) {
-                out.diagnostics.push_back({Severity::Error, DiagCode::E121_EiaFunctionsInBlock, w.offset,
-                                           Msg::EiaFunctionsInBlock,
-                                           {profile_.name, std::string(1, function_word->letter),
-                                            std::string(1, w.letter)}});
+                out.diagnostics.push_back(
+                    {Severity::Error,
+                     DiagCode::E121_EiaFunctionsInBlock,
+                     w.offset,
+                     Msg::EiaFunctionsInBlock,
+                     {profile_.name, std::string(1, function_word->letter), std::string(1, w.letter)}});
                 return false;
             }
             function_word = &w;
@@ -284,7 +293,8 @@ bool EiaReader::check_order(const std::vector<Word>& words, LineResult& out) con
 
 void EiaReader::make_tables() {
     for (int k = 0; k <= 9; ++k)
-        if (std::fabs(profile_.unit_mm * static_cast<double>(kPowersOfTen[static_cast<std::size_t>(k)]) - 1.0) < 1e-12) unit_decimals_ = k;
+        if (std::fabs(profile_.unit_mm * static_cast<double>(kPowersOfTen[static_cast<std::size_t>(k)]) - 1.0) < 1e-12)
+            unit_decimals_ = k;
     letter_rank_.fill(-1);
     for (std::size_t k = 0; k < profile_.eia.letters.size() && k < 127; ++k)
         letter_rank_[static_cast<unsigned char>(profile_.eia.letters[k])] = static_cast<std::int8_t>(k);
@@ -302,11 +312,15 @@ void EiaReader::make_tables() {
         if (it->word.letter == 'G') g_role_[n] = GRole::Function;
     }
     for (const EiaWord& w : e.inch_words)
-        if (w.letter == 'G' && w.number >= 0 && w.number <= kMaxCodeNumber) g_role_[static_cast<std::size_t>(w.number)] = GRole::Inch;
+        if (w.letter == 'G' && w.number >= 0 && w.number <= kMaxCodeNumber)
+            g_role_[static_cast<std::size_t>(w.number)] = GRole::Inch;
     for (const EiaWord& w : e.mm_words)
-        if (w.letter == 'G' && w.number >= 0 && w.number <= kMaxCodeNumber) g_role_[static_cast<std::size_t>(w.number)] = GRole::Mm;
-    if (e.position_preset_g >= 0 && e.position_preset_g <= kMaxCodeNumber) g_role_[static_cast<std::size_t>(e.position_preset_g)] = GRole::Preset;
-    if (e.rapid_motion_g >= 0 && e.rapid_motion_g <= kMaxCodeNumber) g_role_[static_cast<std::size_t>(e.rapid_motion_g)] = GRole::Rapid;
+        if (w.letter == 'G' && w.number >= 0 && w.number <= kMaxCodeNumber)
+            g_role_[static_cast<std::size_t>(w.number)] = GRole::Mm;
+    if (e.position_preset_g >= 0 && e.position_preset_g <= kMaxCodeNumber)
+        g_role_[static_cast<std::size_t>(e.position_preset_g)] = GRole::Preset;
+    if (e.rapid_motion_g >= 0 && e.rapid_motion_g <= kMaxCodeNumber)
+        g_role_[static_cast<std::size_t>(e.rapid_motion_g)] = GRole::Rapid;
     g_role_[kGLine] = GRole::Line;  // RS-274's motions mean the same in every dialect
     g_role_[kGArcCw] = GRole::ArcCw;
     g_role_[kGArcCcw] = GRole::ArcCcw;
@@ -336,7 +350,8 @@ bool EiaReader::units(const Word& w, const State& st, LineResult& out, long long
             u = q + (2 * (r < 0 ? -r : r) >= scale ? (r < 0 ? -1 : 1) : 0);  // half away from zero, as std::round
         }
         if (u >= -std::numeric_limits<std::int32_t>::max() && u <= std::numeric_limits<std::int32_t>::max()) {
-            if (!on_grid) out.diagnostics.push_back({Severity::Warning, DiagCode::W125_EiaRounded, w.offset, Msg::None, {}});
+            if (!on_grid)
+                out.diagnostics.push_back({Severity::Warning, DiagCode::W125_EiaRounded, w.offset, Msg::None, {}});
             result = u;
             return true;
         }
@@ -344,13 +359,17 @@ bool EiaReader::units(const Word& w, const State& st, LineResult& out, long long
     const double mm = w.value() * (st.inch ? kMmPerInch : 1.0);
     const double exact = mm / profile_.unit_mm;
     if (!(std::fabs(exact) <= static_cast<double>(std::numeric_limits<std::int32_t>::max()))) {
-        out.diagnostics.push_back({Severity::Error, DiagCode::E122_EiaBadNumber, w.offset, Msg::EiaCoordinateTooLarge,
+        out.diagnostics.push_back({Severity::Error,
+                                   DiagCode::E122_EiaBadNumber,
+                                   w.offset,
+                                   Msg::EiaCoordinateTooLarge,
                                    {std::string(1, w.letter), excerpt(std::to_string(profile_.unit_mm), 8)}});
         return false;
     }
     const double rounded = std::round(exact);
     if (std::fabs(exact - rounded) > kOnGrid) {
-        out.diagnostics.push_back({Severity::Warning, DiagCode::W125_EiaRounded, w.offset, Msg::None, {}});  // (counted)
+        out.diagnostics.push_back(
+            {Severity::Warning, DiagCode::W125_EiaRounded, w.offset, Msg::None, {}});  // (counted)
     }
     result = static_cast<long long>(rounded);
     return true;
@@ -363,10 +382,12 @@ void EiaReader::function(std::uint32_t offset, int code, LineResult& out) const 
 void EiaReader::function_value(std::uint32_t offset, int code, double value, LineResult& out) const {
     const double thousandths = std::round(value * 1000.0);
     if (!(std::fabs(thousandths) <= static_cast<double>(std::numeric_limits<std::int32_t>::max()))) {
-        out.diagnostics.push_back({Severity::Error, DiagCode::E122_EiaBadNumber, offset, Msg::EiaValueTooLarge, {code}});
+        out.diagnostics.push_back(
+            {Severity::Error, DiagCode::E122_EiaBadNumber, offset, Msg::EiaValueTooLarge, {code}});
         return;
     }
-    LineResult::Out o{offset, BlockKind::FunctionValue, static_cast<std::uint16_t>(code), Block::kValueThousandths, 1, {}};
+    LineResult::Out o{offset, BlockKind::FunctionValue, static_cast<std::uint16_t>(code), Block::kValueThousandths, 1,
+                      {}};
     o.w[0] = static_cast<std::int32_t>(thousandths);
     o.packed |= 1;  // one word
     out.blocks.push_back(o);
@@ -394,8 +415,11 @@ void EiaReader::motion(const Axes& axes, bool preset, LineResult& out, State& st
     }
     const bool arc = axes.i != nullptr || axes.j != nullptr;
     if (arc && st.arc == ArcMode::None) {
-        out.diagnostics.push_back({Severity::Error, DiagCode::E123_EiaArcWithoutDirection, (axes.i ? axes.i : axes.j)->offset,
-                                   Msg::EiaArcWithoutDirection, {}});
+        out.diagnostics.push_back({Severity::Error,
+                                   DiagCode::E123_EiaArcWithoutDirection,
+                                   (axes.i ? axes.i : axes.j)->offset,
+                                   Msg::EiaArcWithoutDirection,
+                                   {}});
         return;
     }
     LineResult::Out o{offset, BlockKind::Motion, Block::kNoCode, 0, arc ? 5 : 2, {}};
@@ -452,7 +476,9 @@ void EiaReader::translate(const std::vector<Word>& words, LineResult& out, State
             case GRole::ArcCw:
             case GRole::ArcCcw:
                 set_rapid(false, w.offset);
-                st.arc = role == GRole::Line ? ArcMode::None : role == GRole::ArcCw ? ArcMode::Clockwise : ArcMode::CounterClockwise;
+                st.arc = role == GRole::Line    ? ArcMode::None
+                         : role == GRole::ArcCw ? ArcMode::Clockwise
+                                                : ArcMode::CounterClockwise;
                 break;
             case GRole::Rapid:
                 set_rapid(true, w.offset);
@@ -494,7 +520,9 @@ void EiaReader::translate(const std::vector<Word>& words, LineResult& out, State
     }
     if (dwell) {
         // (seconds, written in the unit of ESSI's 41+v: the profile's dwell_unit_s)
-        if (dwell_time) function_value(dwell->offset, fn::kDwell, dwell_time->value() * e.dwell_unit_s / profile_.dwell_unit_s, out);
+        if (dwell_time)
+            function_value(dwell->offset, fn::kDwell, dwell_time->value() * e.dwell_unit_s / profile_.dwell_unit_s,
+                           out);
         else function(dwell->offset, fn::kDwell, out);  // the profile's dwell
     }
     if (axes.x || axes.y || axes.i || axes.j) motion(axes, preset, out, st);
@@ -577,9 +605,9 @@ bool EiaReader::read_line(std::uint32_t begin, std::uint32_t end, std::size_t ma
 
 void EiaReader::end_tape(Tape& chunk) {
     if (rounded_ == 0) return;
-    diagnostics_of(chunk).push_back(make_diagnostic(Severity::Warning, DiagCode::W125_EiaRounded, rounded_line_,
-                                                    rounded_column_, Msg::EiaRounded,
-                                                    {rounded_, excerpt(std::to_string(profile_.unit_mm), 8), profile_.name}));
+    diagnostics_of(chunk).push_back(
+        make_diagnostic(Severity::Warning, DiagCode::W125_EiaRounded, rounded_line_, rounded_column_, Msg::EiaRounded,
+                        {rounded_, excerpt(std::to_string(profile_.unit_mm), 8), profile_.name}));
 }
 
 std::unique_ptr<BlockReader> make_eia_reader(std::string_view bytes, const Profile& profile) {

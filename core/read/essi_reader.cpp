@@ -14,12 +14,12 @@
 namespace essi {
 namespace {
 
-constexpr int kMaxWordDigits = 9;              // significant digits of a dimension word or value
-constexpr int kMaxFunctionDigits = 3;          // ISO 6582 3.4.1
+constexpr int kMaxWordDigits = 9;      // significant digits of a dimension word or value
+constexpr int kMaxFunctionDigits = 3;  // ISO 6582 3.4.1
 // Words of a line read by the fast path; a line with more goes the general way (it is an error anyway).
 // The fast path makes room for this many words before it reads a line.
 constexpr int kMaxPlainWords = 8;
-constexpr std::size_t kMaxBlockWords = 6;       // a parabola's DX DY XP YP TC TP: the most a block holds
+constexpr std::size_t kMaxBlockWords = 6;  // a parabola's DX DY XP YP TC TP: the most a block holds
 
 enum CharClass : std::uint8_t { kOther, kDigit, kPlus, kMinus, kSpace, kLineEnd, kPercent, kSlash, kEquals, kHigh };
 
@@ -50,7 +50,7 @@ constexpr std::uint64_t kOnes = 0x0101010101010101ULL;
 // 1 in each byte lane of `w` that equals `c`, 0 elsewhere.
 inline std::uint64_t lanes_equal(std::uint64_t w, unsigned char c) {
     constexpr std::uint64_t kLow7 = 0x7F7F7F7F7F7F7F7FULL;
-    const std::uint64_t x = w ^ (kOnes * c);                 // zero bytes where equal
+    const std::uint64_t x = w ^ (kOnes * c);                  // zero bytes where equal
     const std::uint64_t nonzero = ((x & kLow7) + kLow7) | x;  // high bit set where not equal
     return (~nonzero & (kOnes << 7)) >> 7;
 }
@@ -91,10 +91,10 @@ ByteCounts count_bytes(std::string_view s) {
 
 // What the fast path read of one line of digits and signs.
 struct PlainLine {
-    int lead_digits = 0;          // digits of the leading unsigned number (function code or head address)
-    std::uint32_t lead = 0;       // its value
-    int words = 0;                // signed words written
-    std::uint32_t negative = 0;   // bit k: word k has a '-' sign
+    int lead_digits = 0;                      // digits of the leading unsigned number (function code or head address)
+    std::uint32_t lead = 0;                   // its value
+    int words = 0;                            // signed words written
+    std::uint32_t negative = 0;               // bit k: word k has a '-' sign
     const unsigned char* line_end = nullptr;  // the line's CR or LF, or the end of the bytes
 };
 
@@ -117,21 +117,19 @@ constexpr std::uint32_t kBatchReach = kBatchLines * kPlainLineReach + 1;
 // general path reports): its value and the first byte after it. `bounded`: p may reach `stop`. Unrolled:
 // no loop counter, one test a digit.
 template <bool bounded>
-[[gnu::always_inline]] inline const unsigned char* read_number(const unsigned char* p, const unsigned char* stop, std::uint32_t& value) {
+[[gnu::always_inline]] inline const unsigned char* read_number(const unsigned char* p, const unsigned char* stop,
+                                                               std::uint32_t& value) {
     static_assert(kMaxWordDigits == 9, "read_number reads up to 10 digits");
     std::uint32_t v = 0;
     int k = 0;
-#define ESSI_READ_DIGIT                                               \
-    if (bounded && p + k == stop) goto done;                          \
-    if (const unsigned d = static_cast<unsigned>(p[k]) - '0'; d <= 9) \
-        v = v * 10 + d, ++k;                                          \
-    else                                                              \
-        goto done;
-    ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT
-    ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT
+#define ESSI_READ_DIGIT                                                                    \
+    if (bounded && p + k == stop) goto done;                                               \
+    if (const unsigned d = static_cast<unsigned>(p[k]) - '0'; d <= 9) v = v * 10 + d, ++k; \
+    else goto done;
+    ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT
+        ESSI_READ_DIGIT ESSI_READ_DIGIT ESSI_READ_DIGIT
 #undef ESSI_READ_DIGIT
-done:
-    value = v;
+            done : value = v;
     return p + k;
 }
 
@@ -140,7 +138,8 @@ done:
 // number of more than kMaxWordDigits digits (leading zeros included), more than kMaxPlainWords words, empty.
 // `bounded`: the line may reach `stop` (the end of the bytes); else kPlainLineReach bytes are readable.
 template <bool bounded>
-[[gnu::always_inline]] inline bool read_plain_line(const unsigned char* first, const unsigned char* stop, std::int32_t* words, PlainLine& out) {
+[[gnu::always_inline]] inline bool read_plain_line(const unsigned char* first, const unsigned char* stop,
+                                                   std::int32_t* words, PlainLine& out) {
     const unsigned char* p = first;
     std::uint32_t lead = 0;
     if (*p != '+' && *p != '-') p = read_number<bounded>(p, stop, lead);  // motions start with a sign
@@ -194,7 +193,7 @@ private:
         std::uint8_t sign_flags = 0;  // Block::kTcNegative / kTpNegative
         bool value_negative = false;  // the first signed word has a '-' (a function's value must have '+')
         bool blank = true;
-        int mark = 0;                 // '%', '/' or '=' when the block is that mark
+        int mark = 0;  // '%', '/' or '=' when the block is that mark
     };
 
     // What the driver asks of a front end (reader_driver.hpp).
@@ -210,8 +209,8 @@ private:
     void after_end_line(std::uint32_t begin, std::uint32_t end);
     bool parse_words(std::uint32_t begin, std::uint32_t end, LineParse& lp);
 
-    std::uint32_t skip_ = 0;            // a UTF-8 byte order mark: reported, then the line is read without it
-    bool in_ignore_ = false;            // inside a 3 ... 4 section
+    std::uint32_t skip_ = 0;  // a UTF-8 byte order mark: reported, then the line is read without it
+    bool in_ignore_ = false;  // inside a 3 ... 4 section
     std::uint32_t ignore_line_ = 0, ignore_column_ = 0;
 };
 
@@ -293,7 +292,8 @@ std::uint32_t EssiReader::read_plain_lines(std::uint32_t pos, std::uint32_t size
     // Writes the block of a common line (its words are already in place); the room has been made. One block
     // either way; only its last three fields differ (selected, not branched on).
     const auto put_block = [&](const PlainLine& pl, bool motion, std::uint32_t offset) {
-        if (blocks % Tape::kWordIndexStride == 0) word_index_of(t).push_back(static_cast<std::uint32_t>(wp - words_of(t).data()));
+        if (blocks % Tape::kWordIndexStride == 0)
+            word_index_of(t).push_back(static_cast<std::uint32_t>(wp - words_of(t).data()));
         Block& b = *bp++;
         b.offset = offset;
         b.line = line;
@@ -418,7 +418,7 @@ void EssiReader::after_end_line(std::uint32_t begin, std::uint32_t end) {
 bool EssiReader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& lp) {
     const auto* data = reinterpret_cast<const unsigned char*>(src_.data());
     bool in_word = false;
-    std::size_t word_digits = 0;   // significant digits of the current word (a line may hold 4 G)
+    std::size_t word_digits = 0;  // significant digits of the current word (a line may hold 4 G)
     long long word_value = 0;
     bool word_negative = false;
     std::uint32_t space_at = end;  // first skipped blank; warned about only if the line parses
@@ -485,11 +485,10 @@ bool EssiReader::parse_words(std::uint32_t begin, std::uint32_t end, LineParse& 
             case kHigh:
                 report(Severity::Error, DiagCode::E102_NonAsciiByte, i, Msg::ReadNonAscii,
                        {detail::hex_byte(c), c == 0xEF && i + 2 < end && data[i + 1] == 0xBB && data[i + 2] == 0xBF
-                                         ? MessageArgs::Arg(Msg::ReadBomHint)
-                                         : MessageArgs::Arg("")});
+                                                 ? MessageArgs::Arg(Msg::ReadBomHint)
+                                                 : MessageArgs::Arg("")});
                 return false;
-            default:
-                goto invalid;
+            default: goto invalid;
         }
     }
     if (!finish_word()) return false;
@@ -504,13 +503,14 @@ invalid:
         const unsigned char c = data[i];
         const auto k = kClass[c];
         if (k == kOther || k == kLineEnd || ((k == kSlash || k == kEquals) && !is_end_mark(static_cast<char>(c)))) {
-            const MessageArgs::Arg hint = c == '#' || c == ';' || c == '(' ? MessageArgs::Arg(Msg::ReadCommentHint)
-                                                                            : MessageArgs::Arg("");
+            const MessageArgs::Arg hint =
+                c == '#' || c == ';' || c == '(' ? MessageArgs::Arg(Msg::ReadCommentHint) : MessageArgs::Arg("");
             if (c >= 0x21 && c < 0x7F)
                 report(Severity::Error, DiagCode::E101_InvalidCharacter, i, Msg::ReadUnexpectedChar,
                        {std::string_view(reinterpret_cast<const char*>(data + i), 1), detail::hex_byte(c), hint});
             else
-                report(Severity::Error, DiagCode::E101_InvalidCharacter, i, Msg::ReadUnexpectedByte, {detail::hex_byte(c), hint});
+                report(Severity::Error, DiagCode::E101_InvalidCharacter, i, Msg::ReadUnexpectedByte,
+                       {detail::hex_byte(c), hint});
             return false;
         }
     }
@@ -545,7 +545,6 @@ void EssiReader::read_block(std::uint32_t begin, std::uint32_t end) {
 
 // Turns a parsed line into a block: its kind by the leading number and the count of signed words.
 void EssiReader::classify(std::uint32_t first, const LineParse& lp, std::size_t words_before) {
-
     auto fail = [&](DiagCode code, Msg msg, MessageArgs args) {
         report(Severity::Error, code, first, msg, std::move(args));
         words_of(chunk()).truncate(words_before);
@@ -597,7 +596,8 @@ void EssiReader::classify(std::uint32_t first, const LineParse& lp, std::size_t 
             return;
         }
         if (motion_count) {
-            push_block(first, BlockKind::Motion, code, static_cast<std::uint8_t>(word_count | lp.sign_flags | Block::kHasAddress));
+            push_block(first, BlockKind::Motion, code,
+                       static_cast<std::uint8_t>(word_count | lp.sign_flags | Block::kHasAddress));
             return;
         }
         fail(DiagCode::E106_FunctionWordCount, Msg::ReadFunctionWordCount, {lp.words});

@@ -55,8 +55,8 @@ bool ReaderState::begin_chunk(Tape& chunk) {
     if (started_) return false;
     started_ = true;
     if (src_.size() > std::numeric_limits<std::uint32_t>::max()) {
-        diagnostics_of(chunk).push_back(make_diagnostic(Severity::Error, DiagCode::E117_TapeTooLarge, 0, 0,
-                                                        Msg::ReadTapeTooLarge, {src_.size()}));
+        diagnostics_of(chunk).push_back(
+            make_diagnostic(Severity::Error, DiagCode::E117_TapeTooLarge, 0, 0, Msg::ReadTapeTooLarge, {src_.size()}));
         stopped_ = true;
         return false;
     }
@@ -79,7 +79,8 @@ bool ReaderState::finish_chunk(Tape& chunk, std::uint32_t pos) {
 
 void ReaderState::report_tape_end(Tape& chunk) {
     if (total_blocks_ == 0) {
-        diagnostics_of(chunk).push_back(make_diagnostic(Severity::Error, DiagCode::E113_EmptyTape, 1, 1, Msg::ReadEmptyTape));
+        diagnostics_of(chunk).push_back(
+            make_diagnostic(Severity::Error, DiagCode::E113_EmptyTape, 1, 1, Msg::ReadEmptyTape));
     } else if (!ended_ && !profile_.end_at_data_end) {
         diagnostics_of(chunk).push_back(make_diagnostic(Severity::Warning, DiagCode::W114_NoProgramEnd, last_line_, 1,
                                                         Msg::ReadNoProgramEnd, {end_codes_arg(profile_)}));

@@ -55,7 +55,8 @@ protected:
     [[nodiscard]] Tape& chunk() { return *chunk_; }
     // The bytes a reader reads: positions are 32-bit (a larger tape is E117).
     [[nodiscard]] std::uint32_t readable_size() const {
-        return static_cast<std::uint32_t>(std::min<std::size_t>(src_.size(), std::numeric_limits<std::uint32_t>::max()));
+        return static_cast<std::uint32_t>(
+            std::min<std::size_t>(src_.size(), std::numeric_limits<std::uint32_t>::max()));
     }
 
     // The chunk keeping of the driver: begin_chunk empties `chunk` for the next blocks and says whether this is
@@ -68,25 +69,25 @@ protected:
 
     std::string_view src_;
     const Profile& profile_;
-    Tape* chunk_ = nullptr;             // the chunk being filled
-    std::uint32_t pos_ = 0;             // the next byte to read
-    std::uint32_t line_ = 1;            // the current line (every CR, LF, CR LF or LF CR counts one)
-    std::uint32_t line_begin_ = 0;      // its first byte (columns count from it)
-    std::uint32_t last_line_ = 0;       // the line of the last block
-    std::uint32_t end_line_ = 0;        // the line of the block that ended the program
+    Tape* chunk_ = nullptr;         // the chunk being filled
+    std::uint32_t pos_ = 0;         // the next byte to read
+    std::uint32_t line_ = 1;        // the current line (every CR, LF, CR LF or LF CR counts one)
+    std::uint32_t line_begin_ = 0;  // its first byte (columns count from it)
+    std::uint32_t last_line_ = 0;   // the line of the last block
+    std::uint32_t end_line_ = 0;    // the line of the block that ended the program
     // A % after the program has started is a rewind-stop mark when nothing follows it; it is reported (W112)
     // only when another block comes after it.
     std::uint32_t percent_line_ = 0, percent_column_ = 0;
-    std::size_t total_blocks_ = 0;      // blocks of all earlier chunks
-    std::size_t chunk_blocks_ = 0;      // blocks in the chunk being filled
-    std::size_t chunk_comments_ = 0;    // comment blocks among them
+    std::size_t total_blocks_ = 0;    // blocks of all earlier chunks
+    std::size_t chunk_blocks_ = 0;    // blocks in the chunk being filled
+    std::size_t chunk_comments_ = 0;  // comment blocks among them
     std::size_t errors_ = 0;
-    bool started_ = false;              // the first chunk has begun
-    bool finished_ = false;             // the closing diagnostics have been given
-    bool stopped_ = false;              // too many errors, or too many bytes: nothing more is read
-    bool after_end_seen_ = false;       // content after the end was reported: nothing more is read
-    bool ended_ = false;                // the program has ended
-    bool program_started_ = false;      // a block other than % (and comments) has been read
+    bool started_ = false;          // the first chunk has begun
+    bool finished_ = false;         // the closing diagnostics have been given
+    bool stopped_ = false;          // too many errors, or too many bytes: nothing more is read
+    bool after_end_seen_ = false;   // content after the end was reported: nothing more is read
+    bool ended_ = false;            // the program has ended
+    bool program_started_ = false;  // a block other than % (and comments) has been read
     Msg too_many_errors_;
     std::array<bool, fn::kCodeCount> end_function_{};  // the profile's end codes, by function code
 };

@@ -5,7 +5,6 @@
 
 namespace essi {
 
-
 std::span<const std::int32_t> Tape::words(std::size_t i) const {
     const std::size_t group = i / kWordIndexStride;
     std::size_t w = word_index_[group];

@@ -18,16 +18,17 @@ std::string cut_lines(const Part& p) {
 }
 
 std::string group_text(const PartGroup& g, const PartsList& list, Lang lang) {
-    std::string s = format_message(Msg::PartsGroup, lang,
-                                   {std::to_string(g.number), std::to_string(g.count), mm_text(g.net_area_mm2),
-                                    mm_text(g.length_mm), mm_text(g.width_mm), mm_text(g.cut_length_mm),
-                                    std::to_string(g.holes), std::to_string(g.pierces)});
+    std::string s = format_message(
+        Msg::PartsGroup, lang,
+        {std::to_string(g.number), std::to_string(g.count), mm_text(g.net_area_mm2), mm_text(g.length_mm),
+         mm_text(g.width_mm), mm_text(g.cut_length_mm), std::to_string(g.holes), std::to_string(g.pierces)});
     if (g.mass_kg) s += format_message(Msg::PartsMass, lang, {fixed_text(*g.mass_kg, 3)});
     if (g.mirror_of > 0) s += format_message(Msg::PartsMirrorOf, lang, {std::to_string(g.mirror_of)});
     s += "\n";
     for (const std::uint32_t k : g.parts) {
         const Part& p = list.parts[k];
-        s += "  " + format_message(Msg::PartsCopy, lang, {std::to_string(k + 1), std::to_string(p.plate), cut_lines(p)}) +
+        s += "  " +
+             format_message(Msg::PartsCopy, lang, {std::to_string(k + 1), std::to_string(p.plate), cut_lines(p)}) +
              "\n";
     }
     return s;
@@ -41,10 +42,10 @@ std::string plate_text(const PlateUse& p, Lang lang) {
          fixed_text(100 * p.utilisation, 1)});
     if (p.scrap_kg) s += format_message(Msg::PartsScrap, lang, {fixed_text(*p.scrap_kg, 3)});
     if (p.remnant)
-        s += format_message(Msg::PartsRemnant, lang, {mm_text(p.remnant->min_x), mm_text(p.remnant->max_x),
-                                                      mm_text(p.remnant->min_y), mm_text(p.remnant->max_y)});
-    else
-        s += text(Msg::PartsNoRemnant, lang);
+        s += format_message(Msg::PartsRemnant, lang,
+                            {mm_text(p.remnant->min_x), mm_text(p.remnant->max_x), mm_text(p.remnant->min_y),
+                             mm_text(p.remnant->max_y)});
+    else s += text(Msg::PartsNoRemnant, lang);
     return s + "\n";
 }
 

@@ -8,7 +8,9 @@ namespace essi {
 bool CheckResult::ok() const { return count(Severity::Error) == 0; }
 
 std::size_t CheckResult::count(Severity s) const {
-    const std::size_t omitted = s == Severity::Error ? omitted_errors : s == Severity::Warning ? omitted_warnings : omitted_notes;
+    const std::size_t omitted = s == Severity::Error     ? omitted_errors
+                                : s == Severity::Warning ? omitted_warnings
+                                                         : omitted_notes;
     return omitted + static_cast<std::size_t>(std::count_if(diagnostics.begin(), diagnostics.end(),
                                                             [&](const Diagnostic& d) { return d.severity == s; }));
 }

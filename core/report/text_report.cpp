@@ -51,7 +51,8 @@ std::string file_report_text(const FileReport& r, bool quiet, Lang lang) {
         out += '\n';
     }
     if (r.omitted() > 0)
-        out += r.display_path() + ": " + std::string(severity_text(Severity::Note, lang)) + ": " + omitted_text(r, lang) + "\n";
+        out += r.display_path() + ": " + std::string(severity_text(Severity::Note, lang)) + ": " +
+               omitted_text(r, lang) + "\n";
     if (!quiet) {
         if (r.result.auto_profile)
             out += format_message(Msg::ReportAutoProfile, lang, {r.display_path(), r.result.profile}) + "\n";
@@ -75,8 +76,9 @@ std::string diagnostics_csv(std::span<const FileReport> files, Lang lang) {
     std::string out = "file,severity,code,line,column,message\r\n";
     for (const FileReport& f : files)
         for (const Diagnostic& d : f.result.diagnostics)
-            out += csv_field(f.display_path()) + "," + std::string(severity_name(d.severity)) + "," + code_name(d.code) + "," +
-                   std::to_string(d.line) + "," + std::to_string(d.column) + "," + csv_field(diagnostic_message(d, lang)) + "\r\n";
+            out += csv_field(f.display_path()) + "," + std::string(severity_name(d.severity)) + "," +
+                   code_name(d.code) + "," + std::to_string(d.line) + "," + std::to_string(d.column) + "," +
+                   csv_field(diagnostic_message(d, lang)) + "\r\n";
     return out;
 }
 
@@ -120,10 +122,12 @@ std::string file_stats_line(const FileReport& file, Lang lang) {
                                        mm(st.mark_length_mm), mm(st.travel_length_mm), mm(st.rapid_length_mm),
                                        st.pierces, st.blocks, st.motions, format_duration(st.estimated_time_s)});
     if (st.machine_time)
-        line += "; " + format_message(Msg::ReportMachineTime, lang,
-                                      {format_duration(st.machine_time->total_s), fixed_text(st.machine_time->acceleration_s, 1)});
+        line += "; " + format_message(
+                           Msg::ReportMachineTime, lang,
+                           {format_duration(st.machine_time->total_s), fixed_text(st.machine_time->acceleration_s, 1)});
     if (st.cost) line += "; " + format_message(Msg::ReportCost, lang, {money(st.cost->total, *st.cost)});
-    if (st.consumables) line += "; " + format_message(Msg::ReportElectrodes, lang, {electrodes(st.consumables->electrodes)});
+    if (st.consumables)
+        line += "; " + format_message(Msg::ReportElectrodes, lang, {electrodes(st.consumables->electrodes)});
     return line;
 }
 
@@ -134,10 +138,10 @@ std::string summary_line(std::span<const FileReport> files, std::string_view pro
         errors += f.errors();
         warnings += f.warnings();
     }
-    return format_message(Msg::ReportSummary, lang,
-                          {files.size(), profile_name, ok, files.size() - ok,
-                           format_message(Msg::ReportErrors, lang, {errors}),
-                           format_message(Msg::ReportWarnings, lang, {warnings})});
+    return format_message(
+        Msg::ReportSummary, lang,
+        {files.size(), profile_name, ok, files.size() - ok, format_message(Msg::ReportErrors, lang, {errors}),
+         format_message(Msg::ReportWarnings, lang, {warnings})});
 }
 
 std::vector<StatsRow> stats_rows(const Stats& st) {
@@ -156,7 +160,8 @@ std::vector<StatsRow> stats_rows(const Stats& st) {
         const MachineTime& t = *st.machine_time;
         const auto s1 = [](double v) { return fixed_text(v, 1); };
         rows.push_back({Msg::StatsMachineTime, s1(t.total_s) + " s (" + format_duration(t.total_s) + ")"});
-        rows.push_back({Msg::StatsMachineTimeBreakdown, "",
+        rows.push_back({Msg::StatsMachineTimeBreakdown,
+                        "",
                         {Msg::StatsMachineTimeParts,
                          {s1(t.cutting_s), s1(t.marking_s), s1(t.rapid_s), s1(t.travel_s), s1(t.pierce_s),
                           s1(t.dwell_s), s1(t.acceleration_s)}}});
@@ -164,7 +169,8 @@ std::vector<StatsRow> stats_rows(const Stats& st) {
     if (st.cost) {
         const Cost& c = *st.cost;
         rows.push_back({Msg::StatsCost, money(c.total, c)});
-        rows.push_back({Msg::StatsCostBreakdown, "",
+        rows.push_back({Msg::StatsCostBreakdown,
+                        "",
                         {Msg::StatsCostParts,
                          {money(c.machine, c), c.machine_time ? Msg::StatsMachineTime : Msg::StatsEstimatedTime,
                           money(c.pierces, c), money(c.cut, c),
@@ -172,25 +178,29 @@ std::vector<StatsRow> stats_rows(const Stats& st) {
     }
     if (st.consumables) {
         const ConsumableUse& u = *st.consumables;
-        rows.push_back({Msg::StatsElectrodes, "",
+        rows.push_back({Msg::StatsElectrodes,
+                        "",
                         {Msg::StatsElectrodesParts, {electrodes(u.electrodes), u.pierces, fixed_text(u.arc_on_s, 1)}}});
     }
     if (st.cut_bbox.empty) {
         rows.push_back({Msg::StatsCutBox, "", Msg::StatsNone});
     } else {
-        rows.push_back({Msg::StatsCutBox, "x " + mm_text(st.cut_bbox.min_x) + " .. " + mm_text(st.cut_bbox.max_x) + ", y " +
-                                              mm_text(st.cut_bbox.min_y) + " .. " + mm_text(st.cut_bbox.max_y) + " mm (" +
+        rows.push_back({Msg::StatsCutBox, "x " + mm_text(st.cut_bbox.min_x) + " .. " + mm_text(st.cut_bbox.max_x) +
+                                              ", y " + mm_text(st.cut_bbox.min_y) + " .. " +
+                                              mm_text(st.cut_bbox.max_y) + " mm (" +
                                               mm_text(st.cut_bbox.max_x - st.cut_bbox.min_x) + " x " +
                                               mm_text(st.cut_bbox.max_y - st.cut_bbox.min_y) + " mm)"});
     }
-    rows.push_back({Msg::StatsEndPosition, "x " + mm_text(st.end_position.x) + ", y " + mm_text(st.end_position.y) + " mm"});
+    rows.push_back(
+        {Msg::StatsEndPosition, "x " + mm_text(st.end_position.x) + ", y " + mm_text(st.end_position.y) + " mm"});
     return rows;
 }
 
 std::string stats_block(const FileReport& file, Lang lang) {
     std::vector<std::pair<std::string, std::string>> rows;
     rows.emplace_back(std::string(text(Msg::StatsFile, lang)), file.display_path());
-    for (const StatsRow& r : stats_rows(file.result.stats)) rows.emplace_back(std::string(text(r.key, lang)), r.text(lang));
+    for (const StatsRow& r : stats_rows(file.result.stats))
+        rows.emplace_back(std::string(text(r.key, lang)), r.text(lang));
 
     std::size_t width = 0;
     for (const auto& [k, v] : rows) width = std::max(width, display_width(k) + 1);

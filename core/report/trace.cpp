@@ -38,7 +38,8 @@ void append(std::string& s, const char* fmt, int decimals, double a) {
 class TraceSink : public MotionSink {
 public:
     static constexpr std::size_t kTraceChunkBytes = 1 << 16;
-    TraceSink(const TraceWriter& write, Dialect dialect, int decimals) : write_(write), dialect_(dialect), decimals_(decimals) {}
+    TraceSink(const TraceWriter& write, Dialect dialect, int decimals)
+        : write_(write), dialect_(dialect), decimals_(decimals) {}
     ~TraceSink() override { flush(); }
     void on_motion(const MotionRecord& m) override { add(trace_line(m, decimals_)); }
     void on_event(const MachineEvent& e) override { add(trace_line(e, dialect_)); }
@@ -51,6 +52,7 @@ public:
         if (!buffer_.empty()) write_(buffer_);
         buffer_.clear();
     }
+
 private:
     const TraceWriter& write_;
     Dialect dialect_;
@@ -140,7 +142,8 @@ std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profil
         interpret(tape, bytes, profile, torch, diagnostics);
         torch.finish();
         for (KerfGouge& g : torch.take_gouges())
-            diagnostics.push_back(make_diagnostic(Severity::Error, DiagCode::E307_KerfGouge, g.line, 1, g.msg, std::move(g.args)));
+            diagnostics.push_back(
+                make_diagnostic(Severity::Error, DiagCode::E307_KerfGouge, g.line, 1, g.msg, std::move(g.args)));
     } else {
         interpret(tape, bytes, profile, after_kerf, diagnostics);
     }
@@ -155,7 +158,8 @@ std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profil
 
 std::string trace_tape(std::string_view bytes, const Profile& profile, InputFormat format) {
     std::string out;
-    (void)trace_tape(bytes, profile, [&](std::string_view piece) { out += piece; }, format);
+    (void)trace_tape(
+        bytes, profile, [&](std::string_view piece) { out += piece; }, format);
     return out;
 }
 

@@ -19,7 +19,8 @@ struct Layer {
     const char* name;
     int colour;  // AutoCAD colour index
 };
-constexpr Layer kCut{"CUT", 1}, kMark{"MARK", 3}, kTravel{"TRAVEL", 8}, kKerf{"KERF", 4}, kDiagnostics{"DIAGNOSTICS", 6};
+constexpr Layer kCut{"CUT", 1}, kMark{"MARK", 3}, kTravel{"TRAVEL", 8}, kKerf{"KERF", 4},
+    kDiagnostics{"DIAGNOSTICS", 6};
 
 const Layer& layer_of(MotionKind k) {
     switch (k) {
@@ -32,9 +33,7 @@ const Layer& layer_of(MotionKind k) {
 // Writes group codes and values, one per line (LF).
 class DxfText {
 public:
-    void code(int c, const std::string& v) {
-        text_ += std::to_string(c) + "\n" + v + "\n";
-    }
+    void code(int c, const std::string& v) { text_ += std::to_string(c) + "\n" + v + "\n"; }
     void number(int c, double v) {
         char buf[48];
         std::snprintf(buf, sizeof buf, "%.6f", std::fabs(v) < 5e-7 ? 0.0 : v);

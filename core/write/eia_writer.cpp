@@ -39,7 +39,9 @@ private:
             if (c.function == code) return word_text(c.word);
         return {};
     }
-    std::string coordinate(char letter, long long units) const { return std::string(1, letter) + mm_text(units, options_.target); }
+    std::string coordinate(char letter, long long units) const {
+        return std::string(1, letter) + mm_text(units, options_.target);
+    }
     std::string point(Units p) const {
         const Units base = absolute_ ? Units{} : position();
         return coordinate('X', p.x - base.x) + " " + coordinate('Y', p.y - base.y);
@@ -55,8 +57,8 @@ private:
     void line(const MotionRecord& m, Units end) override { block(motion_word(m, kGLine) + point(end)); }
     void arc(const MotionRecord& m, Units end, Units centre) override {
         const Units start = position();  // I J: always relative to the start
-        block(motion_word(m, m.ccw ? kGArcCcw : kGArcCw) + point(end) + " " + coordinate('I', centre.x - start.x) + " " +
-              coordinate('J', centre.y - start.y));
+        block(motion_word(m, m.ccw ? kGArcCcw : kGArcCw) + point(end) + " " + coordinate('I', centre.x - start.x) +
+              " " + coordinate('J', centre.y - start.y));
     }
     void function(const MachineEvent& e) override {
         const bool rapid_word = e.code == fn::kRapidOn || e.code == fn::kRapidOff;
@@ -98,7 +100,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<ProgramWriter> make_eia_writer(const Profile& source, const ConvertOptions& o, std::vector<Diagnostic>& d) {
+std::unique_ptr<ProgramWriter> make_eia_writer(const Profile& source, const ConvertOptions& o,
+                                               std::vector<Diagnostic>& d) {
     return std::make_unique<EiaWriter>(source, o, d);
 }
 

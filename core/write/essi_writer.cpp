@@ -11,7 +11,8 @@ namespace {
 
 class EssiWriter final : public ProgramWriter {
 public:
-    EssiWriter(const Profile& source, const ConvertOptions& o, std::vector<Diagnostic>& d) : ProgramWriter(source, o, d) {
+    EssiWriter(const Profile& source, const ConvertOptions& o, std::vector<Diagnostic>& d)
+        : ProgramWriter(source, o, d) {
         out_ = "%\n";
         if (o.absolute) block(std::to_string(fn::kAbsolute));
     }
@@ -67,7 +68,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<ProgramWriter> make_essi_writer(const Profile& source, const ConvertOptions& o, std::vector<Diagnostic>& d) {
+std::unique_ptr<ProgramWriter> make_essi_writer(const Profile& source, const ConvertOptions& o,
+                                                std::vector<Diagnostic>& d) {
     return std::make_unique<EssiWriter>(source, o, d);
 }
 

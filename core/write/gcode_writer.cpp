@@ -16,7 +16,8 @@ constexpr double kRadiusTolerance = 1e-4;  // mm: an arc whose radii differ more
 
 class GcodeWriter final : public ProgramWriter {
 public:
-    GcodeWriter(const Profile& source, const ConvertOptions& o, std::vector<Diagnostic>& d) : ProgramWriter(source, o, d) {
+    GcodeWriter(const Profile& source, const ConvertOptions& o, std::vector<Diagnostic>& d)
+        : ProgramWriter(source, o, d) {
         out_ = std::string("G17 G21 G40 ") + (o.absolute ? "G90" : "G91") + " G91.1 G94\n";
     }
     std::string finish() override { return std::move(out_); }
@@ -24,7 +25,9 @@ public:
 private:
     void block(const std::string& text) { out_ += text + "\n"; }
     void comment(const std::string& text) override { block("(" + text + ")"); }
-    std::string coordinate(char letter, long long units) const { return std::string(1, letter) + mm_text(units, options_.target, 4); }
+    std::string coordinate(char letter, long long units) const {
+        return std::string(1, letter) + mm_text(units, options_.target, 4);
+    }
     std::string point(Units p) const {
         const Units base = options_.absolute ? Units{} : position();
         return coordinate('X', p.x - base.x) + " " + coordinate('Y', p.y - base.y);
@@ -41,7 +44,8 @@ private:
         if (kerf_ != KerfSide::Off) block("G40");
         kerf_ = side;
         kerf_mm_ = m.kerf_mm;
-        if (side != KerfSide::Off) block(std::string(side == KerfSide::Left ? "G41.1" : "G42.1") + " D" + number_text(2 * m.kerf_mm));
+        if (side != KerfSide::Off)
+            block(std::string(side == KerfSide::Left ? "G41.1" : "G42.1") + " D" + number_text(2 * m.kerf_mm));
     }
     void line(const MotionRecord& m, Units end) override {
         compensation(m);
@@ -88,12 +92,14 @@ private:
             case fn::kDwell: block("G4 P" + number_text(e.value)); return;
             case fn::kProgramStop: block("M0"); return;
             case fn::kCancelFunctions:
-            case fn::kEndOfTape: return;  // (no end here: the stored functions cancelled; tools above, kerf with the motions)
+            case fn::kEndOfTape:
+                return;  // (no end here: the stored functions cancelled; tools above, kerf with the motions)
             case fn::kOptionalStop: block("M1"); return;
             default: break;
         }
         const bool tool_word = e.code == fn::kOxygenOn || e.code == fn::kOxygenOff || e.code == fn::kPlasmaOn ||
-                               e.code == fn::kPlasmaOff || e.code == fn::kPunchMarkingOn || e.code == fn::kPunchMarkingOff;
+                               e.code == fn::kPlasmaOff || e.code == fn::kPunchMarkingOn ||
+                               e.code == fn::kPunchMarkingOff;
         if (tool_word) return;  // (a tool switched that was already so)
         comment(no_counterpart(e, "G-code"));
     }
@@ -112,7 +118,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<ProgramWriter> make_gcode_writer(const Profile& source, const ConvertOptions& o, std::vector<Diagnostic>& d) {
+std::unique_ptr<ProgramWriter> make_gcode_writer(const Profile& source, const ConvertOptions& o,
+                                                 std::vector<Diagnostic>& d) {
     return std::make_unique<GcodeWriter>(source, o, d);
 }
 

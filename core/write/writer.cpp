@@ -15,9 +15,9 @@ namespace essi {
 namespace detail {
 namespace {
 
-constexpr double kOnGrid = 1e-6;         // units: a coordinate this close to a whole unit is on the grid
+constexpr double kOnGrid = 1e-6;  // units: a coordinate this close to a whole unit is on the grid
 constexpr int kMaxArcsPerParabola = 4096;
-constexpr double kGcodeUnitMm = 1e-4;    // G-code coordinates: mm to 4 decimals
+constexpr double kGcodeUnitMm = 1e-4;  // G-code coordinates: mm to 4 decimals
 
 // The circle through three points: false when they are (nearly) on a line.
 bool circle_through(Point a, Point b, Point c, Point& centre) {
@@ -158,7 +158,8 @@ std::string mm_text(long long units, const Profile& target, int max_decimals) {
     long long p = 1;
     for (int k = 0; k < decimals; ++k) p *= 10;
     const bool negative = units < 0;
-    const unsigned long long a = negative ? 0ULL - static_cast<unsigned long long>(units) : static_cast<unsigned long long>(units);
+    const unsigned long long a =
+        negative ? 0ULL - static_cast<unsigned long long>(units) : static_cast<unsigned long long>(units);
     std::string s = (negative ? "-" : "") + std::to_string(a / static_cast<unsigned long long>(p));
     unsigned long long frac = a % static_cast<unsigned long long>(p);
     if (frac != 0) {
@@ -220,7 +221,8 @@ std::optional<OutputFormat> parse_output_format(std::string_view name) {
 }
 
 bool ConvertResult::ok() const {
-    return std::none_of(diagnostics.begin(), diagnostics.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
+    return std::none_of(diagnostics.begin(), diagnostics.end(),
+                        [](const Diagnostic& d) { return d.severity == Severity::Error; });
 }
 
 ConvertResult convert_tape(std::string_view bytes, const TapeSetup& source, const ConvertOptions& options) {

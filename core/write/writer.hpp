@@ -86,8 +86,11 @@ private:
 // `tolerance_mm` of the curve; the last ends at the parabola's end exactly.
 [[nodiscard]] std::vector<MotionRecord> parabola_arcs(const MotionRecord& parabola, double tolerance_mm);
 
-std::unique_ptr<ProgramWriter> make_essi_writer(const Profile& source, const ConvertOptions& o, std::vector<Diagnostic>& d);
-std::unique_ptr<ProgramWriter> make_eia_writer(const Profile& source, const ConvertOptions& o, std::vector<Diagnostic>& d);
-std::unique_ptr<ProgramWriter> make_gcode_writer(const Profile& source, const ConvertOptions& o, std::vector<Diagnostic>& d);
+std::unique_ptr<ProgramWriter> make_essi_writer(const Profile& source, const ConvertOptions& o,
+                                                std::vector<Diagnostic>& d);
+std::unique_ptr<ProgramWriter> make_eia_writer(const Profile& source, const ConvertOptions& o,
+                                               std::vector<Diagnostic>& d);
+std::unique_ptr<ProgramWriter> make_gcode_writer(const Profile& source, const ConvertOptions& o,
+                                                 std::vector<Diagnostic>& d);
 
 }  // namespace essi::detail

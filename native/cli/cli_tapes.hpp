@@ -23,7 +23,7 @@ namespace essi::cli {
 
 // --profile and --input: "auto" leaves the choice to each tape's content (essi/dialect.hpp).
 [[nodiscard]] std::optional<native::TapeRequest> resolve_request(const std::string& profile_arg,
-                                                                const std::string& input_arg);
+                                                                 const std::string& input_arg);
 
 // One tape file read and set up as --profile and --input say (trace, render, convert, diff). Built in place: `file`
 // views its own bytes, so it is never moved.

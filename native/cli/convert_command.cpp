@@ -70,9 +70,10 @@ Subcommand define_convert(CLI::App& essi) {
         ->check(CLI::IsMember(targets))
         ->type_name(join(targets, "|"));
     add_profile_option(convert, o->profile);
-    convert->add_option("--to-profile", o->to_profile,
-                        "The dialect written (units, end code, EIA table): a built-in name or a JSON profile file; "
-                        "default: the profile the tape is read with")
+    convert
+        ->add_option("--to-profile", o->to_profile,
+                     "The dialect written (units, end code, EIA table): a built-in name or a JSON profile file; "
+                     "default: the profile the tape is read with")
         ->type_name("NAME|FILE");
     add_input_option(convert, o->input);
     auto* absolute_flag = convert->add_flag("--absolute", o->absolute, "Absolute coordinates (82, G90)");

@@ -38,8 +38,9 @@ int run_diff(const DiffOptions& o) {
 
 Subcommand define_diff(CLI::App& essi) {
     auto o = std::make_shared<DiffOptions>();
-    CLI::App* diff = essi.add_subcommand("diff", "Compare two revisions of a tape: contours same, moved, changed, "
-                                                 "removed, added, and the statistics before and after");
+    CLI::App* diff = essi.add_subcommand("diff",
+                                         "Compare two revisions of a tape: contours same, moved, changed, "
+                                         "removed, added, and the statistics before and after");
     add_text_or_json_option(diff, o->format);
     add_profile_option(diff, o->profile);
     add_input_option(diff, o->input);

@@ -147,8 +147,9 @@ Subcommand define_render(CLI::App& essi) {
     render->add_option("-o,--output", o->output, "Output file ('-' = stdout; default NAME.svg)");
     add_profile_option(render, o->profile);
     add_input_option(render, o->input);
-    render->add_option("--format", o->format,
-                       "svg (default) or dxf (R12: layers CUT, MARK, TRAVEL, DIAGNOSTICS; also when OUT ends in .dxf)")
+    render
+        ->add_option("--format", o->format,
+                     "svg (default) or dxf (R12: layers CUT, MARK, TRAVEL, DIAGNOSTICS; also when OUT ends in .dxf)")
         ->check(CLI::IsMember({"svg", "dxf"}))
         ->type_name("svg|dxf");
     render->add_flag("--png", o->png, "Write PNG (through rsvg-convert; also when OUT ends in .png)");

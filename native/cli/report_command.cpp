@@ -117,14 +117,16 @@ Subcommand define_report(CLI::App& essi) {
     CLI::App* report = essi.add_subcommand(
         "report", "A tape's job sheet as PDF or HTML: drawing, statistics, time, profile, open diagnostics");
     report->add_option("PATH", o->path, "Tape file ('-' reads standard input)")->required();
-    report->add_option("-o,--output", o->output, "Output file ('-' = stdout; default NAME.pdf, or NAME.html without PDF)");
+    report->add_option("-o,--output", o->output,
+                       "Output file ('-' = stdout; default NAME.pdf, or NAME.html without PDF)");
     report->add_option("--format", o->format, "pdf or html (default: by OUT's extension)")
         ->check(CLI::IsMember({"pdf", "html"}))
         ->type_name("pdf|html");
     add_profile_option(report, o->profile);
     add_input_option(report, o->input);
-    report->add_option("--max-diagnostics", o->max_diagnostics,
-                       "At most N diagnostics listed and marked (the rest are counted in a note)")
+    report
+        ->add_option("--max-diagnostics", o->max_diagnostics,
+                     "At most N diagnostics listed and marked (the rest are counted in a note)")
         ->check(CLI::Range(0LL, 1LL << 40))
         ->type_name("N")
         ->capture_default_str();

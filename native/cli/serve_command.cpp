@@ -15,8 +15,7 @@ void add_limit_options(CLI::App* serve, native::ServeOptions& o) {
         serve->add_option(name, value, help)->check(CLI::Range(1, max))->capture_default_str();
     };
     limit_option("--threads", o.threads, 1024, "Requests handled at once (each connection waits in its own thread)");
-    limit_option("--max-connections", o.max_connections, 100000,
-                 "Connections open at once (more wait to be accepted)");
+    limit_option("--max-connections", o.max_connections, 100000, "Connections open at once (more wait to be accepted)");
     limit_option("--max-client-connections", o.max_client_connections, 100000,
                  "Connections open at once from one client address (more get 429)");
     limit_option("--request-timeout", o.request_timeout_s, 3600,
@@ -51,22 +50,28 @@ Subcommand define_serve(CLI::App& essi) {
     o->web_root = ESSI_DEFAULT_WEB_ROOT;
     o->examples_dir = ESSI_DEFAULT_EXAMPLES_DIR;
     o->share_store_js = ESSI_DEFAULT_SHARE_STORE_JS;
-    CLI::App* serve = essi.add_subcommand("serve", "Serve the browser viewer, the example tapes and the check/share API");
+    CLI::App* serve =
+        essi.add_subcommand("serve", "Serve the browser viewer, the example tapes and the check/share API");
     serve->add_option("--host", o->host, "Address to listen on")->capture_default_str();
-    serve->add_option("--port", o->port, "Port (0 picks a free one)")->check(CLI::Range(0, 65535))->capture_default_str();
-    serve->add_option("--web-root", o->web_root,
-                      "The built viewer (index.html, essi_viewer.js/.wasm); empty: the viewer compiled into essi "
-                      "(make dist)")
+    serve->add_option("--port", o->port, "Port (0 picks a free one)")
+        ->check(CLI::Range(0, 65535))
+        ->capture_default_str();
+    serve
+        ->add_option("--web-root", o->web_root,
+                     "The built viewer (index.html, essi_viewer.js/.wasm); empty: the viewer compiled into essi "
+                     "(make dist)")
         ->capture_default_str();
     serve->add_option("--examples", o->examples_dir, "Folder of example tapes served at /examples/")
         ->capture_default_str();
-    serve->add_option("--data", o->data_dir,
-                      "Folder of the share store (SQLite); default $XDG_DATA_HOME/essikit, else ./essi-data")
+    serve
+        ->add_option("--data", o->data_dir,
+                     "Folder of the share store (SQLite); default $XDG_DATA_HOME/essikit, else ./essi-data")
         ->type_name("DIR");
     add_size_options(serve, *o);
     add_limit_options(serve, *o);
-    serve->add_option("--allowed-host", o->allowed_hosts,
-                      "A Host name served besides localhost, 127.0.0.1, ::1 and --host (repeatable; DNS rebinding)")
+    serve
+        ->add_option("--allowed-host", o->allowed_hosts,
+                     "A Host name served besides localhost, 127.0.0.1, ::1 and --host (repeatable; DNS rebinding)")
         ->type_name("NAME");
     const std::map<std::string, std::int64_t> seconds_per{{"s", 1}, {"m", 60}, {"h", 3600}, {"d", 86400}};
     serve->add_option("--share-ttl", o->share_ttl_s, "How long a share lives (suffixes s m h d; default 30d)")

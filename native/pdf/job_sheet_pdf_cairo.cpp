@@ -131,7 +131,8 @@ private:
         PangoLayout* layout_;
     };
 
-    [[nodiscard]] Text text(const std::string& s, Font f, double width_mm = 0, PangoAlignment a = PANGO_ALIGN_LEFT) const {
+    [[nodiscard]] Text text(const std::string& s, Font f, double width_mm = 0,
+                            PangoAlignment a = PANGO_ALIGN_LEFT) const {
         return Text(context_, s, f, width_mm, a);
     }
     void show(const Text& t, double x, double y, Rgb color) {
@@ -302,7 +303,7 @@ std::vector<double> Pages::column_widths(const SheetTable& t) const {
 }
 
 Pages::Row Pages::lay_out_row(const SheetTable& t, const std::vector<std::string>& texts, Font f,
-                             const std::vector<double>& widths) const {
+                              const std::vector<double>& widths) const {
     Row row;
     for (std::size_t c = 0; c < texts.size(); ++c) {
         row.cells.push_back(
@@ -317,7 +318,8 @@ Pages::Row Pages::lay_out_row(const SheetTable& t, const std::vector<std::string
 void Pages::show_row(const Row& row, const std::vector<double>& widths, std::optional<Severity> severity) {
     double x = kSheetMarginMm;
     for (std::size_t c = 0; c < row.cells.size(); ++c) {
-        show(row.cells[c], x + kCellPadMm, y_ + kRowPadMm, severity && c == 0 ? rgb(sheet_mark_color(*severity)) : kText);
+        show(row.cells[c], x + kCellPadMm, y_ + kRowPadMm,
+             severity && c == 0 ? rgb(sheet_mark_color(*severity)) : kText);
         x += widths[c];
     }
 }
@@ -504,8 +506,8 @@ void Pages::note(const std::string& s) {
 
 // One pass on a PDF surface writing to `closure` with `write`; the pages it took.
 int lay_out(const JobSheet& sheet, cairo_write_func_t write, void* closure, bool draw, int total, std::string& error) {
-    cairo_surface_t* surface =
-        cairo_pdf_surface_create_for_stream(write, closure, kSheetPageWidthMm * kPtPerMm, kSheetPageHeightMm * kPtPerMm);
+    cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(write, closure, kSheetPageWidthMm * kPtPerMm,
+                                                                   kSheetPageHeightMm * kPtPerMm);
     if (draw) {
         const std::string title = sheet.title + ": " + sheet.tape, date = pdf_date(sheet.date);
         cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, title.c_str());

@@ -81,7 +81,8 @@ const essi::Tape& read_once(LineEnding eol) {
 
 // The EIA tape (generated on first use) and the profile that reads it.
 const std::string& eia_bytes() {
-    static const std::string bytes = essi::bench::generate_eia_nest_tape(static_cast<std::size_t>(g_tape_mb * 1e6), kSeed);
+    static const std::string bytes =
+        essi::bench::generate_eia_nest_tape(static_cast<std::size_t>(g_tape_mb * 1e6), kSeed);
     return bytes;
 }
 const essi::Profile& woyda() {
@@ -292,19 +293,17 @@ int main(int argc, char** argv) {
     argc = out;
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
 
-    benchmark::AddCustomContext("essi_tape", "generated nest tape, seed " + std::to_string(kSeed) + ", " +
-                                                 std::to_string(g_tape_mb) + " MB");
+    benchmark::AddCustomContext(
+        "essi_tape", "generated nest tape, seed " + std::to_string(kSeed) + ", " + std::to_string(g_tape_mb) + " MB");
     for (LineEnding eol : {LineEnding::CrLf, LineEnding::Lf}) {
         const std::string suffix = std::string("/") + name_of(eol);
-        benchmark::RegisterBenchmark(("read" + suffix).c_str(), bm_read, eol)
-            ->Unit(benchmark::kMillisecond);
-        benchmark::RegisterBenchmark(("interp" + suffix).c_str(), bm_interp, eol)
-            ->Unit(benchmark::kMillisecond);
-        benchmark::RegisterBenchmark(("check" + suffix).c_str(), bm_check, eol)
-            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("read" + suffix).c_str(), bm_read, eol)->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("interp" + suffix).c_str(), bm_interp, eol)->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("check" + suffix).c_str(), bm_check, eol)->Unit(benchmark::kMillisecond);
 #ifndef __EMSCRIPTEN__
         benchmark::RegisterBenchmark(("wc_l" + suffix).c_str(), bm_wc_l, eol)
-            ->Unit(benchmark::kMillisecond)->UseManualTime();
+            ->Unit(benchmark::kMillisecond)
+            ->UseManualTime();
 #endif
     }
     benchmark::RegisterBenchmark("check_every_rule/crlf", bm_check_every_rule, LineEnding::CrLf)

@@ -122,9 +122,9 @@ private:
 struct NestState {
     // The plate: 3000 x 1500 mm in 0.1 mm units, parts placed in columns from the lower left.
     static constexpr long long kPlateW = 30000, kPlateH = 15000, kMargin = 200, kGap = 350;
-    long long col_x = kMargin;   // left edge of the current column
-    long long col_w = 0;         // widest part in the current column
-    long long cur_y = kMargin;   // next free y in the current column
+    long long col_x = kMargin;  // left edge of the current column
+    long long col_w = 0;        // widest part in the current column
+    long long cur_y = kMargin;  // next free y in the current column
     int plate = 1;
     int part = 0;
 };
@@ -137,9 +137,9 @@ inline void rapid_to(TapeWriter& w, long long X, long long Y) {
 
 inline void start_cut(TapeWriter& w, Rng& rng) {
     if (rng.chance(20)) {
-        w.function_value(29, 20);   // kerf width 2.0 mm, given explicitly
+        w.function_value(29, 20);  // kerf width 2.0 mm, given explicitly
     } else {
-        w.function(29);             // the profile's kerf
+        w.function(29);  // the profile's kerf
     }
     w.function(7);
 }
@@ -155,7 +155,7 @@ inline void cut_hole(TapeWriter& w, Rng& rng, long long cx, long long cy, long l
     rapid_to(w, cx, cy);
     start_cut(w, rng);
     w.line_to(cx + rh, cy);
-    w.arc_to(cx + rh, cy, cx, cy, true);   // DX = DY = 0: full circle
+    w.arc_to(cx + rh, cy, cx, cy, true);  // DX = DY = 0: full circle
     end_cut(w);
 }
 

@@ -25,10 +25,10 @@
 
 namespace {
 
-constexpr double kScale = 1e5;              // Clipper's integers: 10 nm
-constexpr double kChordMm = 1e-4;           // flattening of both loops (mm)
-constexpr double kRelativeTolerance = 1e-3; // 0.1 %
-constexpr double kCloseMm = 1e-6;           // a contour is closed when its end is this near its start
+constexpr double kScale = 1e5;               // Clipper's integers: 10 nm
+constexpr double kChordMm = 1e-4;            // flattening of both loops (mm)
+constexpr double kRelativeTolerance = 1e-3;  // 0.1 %
+constexpr double kCloseMm = 1e-6;            // a contour is closed when its end is this near its start
 
 struct Collect : essi::MotionSink {
     std::vector<essi::MotionRecord> motions;
@@ -44,15 +44,17 @@ double polygon_area(const std::vector<essi::Point>& p) {
 std::vector<essi::Point> flatten_all(const std::vector<essi::MotionRecord>& motions) {
     std::vector<essi::Point> pts;
     for (const auto& m : motions) essi::flatten(m, kChordMm, pts, pts.empty());
-    if (pts.size() > 1 && std::hypot(pts.front().x - pts.back().x, pts.front().y - pts.back().y) < kCloseMm) pts.pop_back();
+    if (pts.size() > 1 && std::hypot(pts.front().x - pts.back().x, pts.front().y - pts.back().y) < kCloseMm)
+        pts.pop_back();
     return pts;
 }
 
 // Clipper's offset of a closed polygon by `delta` mm (round joins), as an area (holes subtracted).
 double clipper_offset_area(const std::vector<essi::Point>& pts, double delta) {
     ClipperLib::Path path;
-    for (const auto& p : pts) path.push_back({static_cast<ClipperLib::cInt>(std::llround(p.x * kScale)),
-                                              static_cast<ClipperLib::cInt>(std::llround(p.y * kScale))});
+    for (const auto& p : pts)
+        path.push_back({static_cast<ClipperLib::cInt>(std::llround(p.x * kScale)),
+                        static_cast<ClipperLib::cInt>(std::llround(p.y * kScale))});
     if (!ClipperLib::Orientation(path)) ClipperLib::ReversePath(path);
     ClipperLib::ClipperOffset offset(2.0, kChordMm * kScale / 10);
     offset.AddPath(path, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
@@ -92,13 +94,17 @@ std::vector<std::vector<essi::MotionRecord>> closed_contours(const std::vector<e
             continue;
         }
         std::size_t end = i;
-        while (end < motions.size() && motions[end].kind == essi::MotionKind::Cut && same_compensation(motions[end], first)) ++end;
+        while (end < motions.size() && motions[end].kind == essi::MotionKind::Cut &&
+               same_compensation(motions[end], first))
+            ++end;
         bool done = false;
         for (std::size_t a = i; a < end && !done; ++a)
             for (std::size_t b = end; b-- > a && !done;) {
-                const bool closes = std::hypot(motions[a].start.x - motions[b].end.x, motions[a].start.y - motions[b].end.y) < kCloseMm;
+                const bool closes =
+                    std::hypot(motions[a].start.x - motions[b].end.x, motions[a].start.y - motions[b].end.y) < kCloseMm;
                 if (closes && (b > a || motions[a].curve == essi::CurveKind::Arc)) {
-                    found.emplace_back(motions.begin() + static_cast<std::ptrdiff_t>(a), motions.begin() + static_cast<std::ptrdiff_t>(b) + 1);
+                    found.emplace_back(motions.begin() + static_cast<std::ptrdiff_t>(a),
+                                       motions.begin() + static_cast<std::ptrdiff_t>(b) + 1);
                     done = true;
                 }
             }
@@ -132,8 +138,9 @@ int main(int argc, char** argv) {
             bool gouged = false;
             const auto loop = compensated_loop(contour, gouged);
             if (gouged) {
-                std::printf("skip %s contour %d (line %u): the compensated path gouges (E307), Clipper's offset does not\n",
-                            argv[t], n, contour.front().line);
+                std::printf(
+                    "skip %s contour %d (line %u): the compensated path gouges (E307), Clipper's offset does not\n",
+                    argv[t], n, contour.front().line);
                 continue;
             }
             const double ours = std::abs(polygon_area(flatten_all(loop)));
@@ -142,12 +149,13 @@ int main(int argc, char** argv) {
             ++compared;
             const bool ok = rel <= kRelativeTolerance;
             if (!ok) ++failures;
-            std::printf("%s %s contour %d (line %u, %zu motions, offset %+.3f mm): %.4f mm2, Clipper %.4f mm2 (%.4f %%)\n",
-                        ok ? "ok  " : "FAIL", argv[t], n, contour.front().line, contour.size(), delta, ours, theirs, rel * 100);
+            std::printf(
+                "%s %s contour %d (line %u, %zu motions, offset %+.3f mm): %.4f mm2, Clipper %.4f mm2 (%.4f %%)\n",
+                ok ? "ok  " : "FAIL", argv[t], n, contour.front().line, contour.size(), delta, ours, theirs, rel * 100);
         }
     }
-    std::printf("%d of %d compensated contours within %.1f %% of Clipper's offset area\n", compared - failures, compared,
-                kRelativeTolerance * 100);
+    std::printf("%d of %d compensated contours within %.1f %% of Clipper's offset area\n", compared - failures,
+                compared, kRelativeTolerance * 100);
     if (compared == 0) {
         std::printf("FAIL no closed contour with kerf compensation was compared\n");
         return 1;

@@ -48,11 +48,13 @@ public:
         const double sy = static_cast<double>(l.start_y) * profile_.unit_mm;
         units_agree = units_agree && ex == l.end.x && sy == l.start.y;
     }
+
 private:
     const essi::Profile& profile_;
 };
 
-inline void check_also(std::string_view bytes, const char* name, essi::InputFormat format, const essi::CheckResult& want) {
+inline void check_also(std::string_view bytes, const char* name, essi::InputFormat format,
+                       const essi::CheckResult& want) {
     const essi::Profile& profile = profile_named(name);
     CountingSink also(profile);
     essi::TapeChecker checker(bytes, profile, &also);

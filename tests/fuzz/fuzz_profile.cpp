@@ -23,13 +23,25 @@ namespace {
 }
 
 void check_accepted(const essi::Profile& p) {
-    const double values[] = {p.unit_mm,     p.arc_tolerance_units, p.chord_tolerance_mm, p.kerf_units,
-                             p.default_dwell_s, p.feed_mm_min,     p.rapid_mm_min,       p.pierce_time_s,
-                             p.active_zero_offset().x, p.active_zero_offset().y, p.plate_rotation_deg,
-                             p.marker_offset.x, p.marker_offset.y, p.powder_marker_offset.x, p.powder_marker_offset.y};
+    const double values[] = {p.unit_mm,
+                             p.arc_tolerance_units,
+                             p.chord_tolerance_mm,
+                             p.kerf_units,
+                             p.default_dwell_s,
+                             p.feed_mm_min,
+                             p.rapid_mm_min,
+                             p.pierce_time_s,
+                             p.active_zero_offset().x,
+                             p.active_zero_offset().y,
+                             p.plate_rotation_deg,
+                             p.marker_offset.x,
+                             p.marker_offset.y,
+                             p.powder_marker_offset.x,
+                             p.powder_marker_offset.y};
     for (double v : values)
         if (!std::isfinite(v)) fail("an accepted profile holds a number that is not finite");
-    if (!(p.unit_mm > 0) || !(p.feed_mm_min > 0) || !(p.rapid_mm_min > 0)) fail("an accepted profile has a zero unit or speed");
+    if (!(p.unit_mm > 0) || !(p.feed_mm_min > 0) || !(p.rapid_mm_min > 0))
+        fail("an accepted profile has a zero unit or speed");
     const std::string json = essi::profile_to_json(p);
     const essi::ProfileResult again = essi::parse_profile(json);
     if (!again.profile) fail("profile_to_json wrote a profile that parse_profile refuses");

@@ -75,8 +75,10 @@ void check_responses(std::string_view out) {
         for (std::size_t p = head.find("\r\n"); p != std::string_view::npos; p = head.find("\r\n", p + 2)) {
             const std::string_view line = head.substr(p + 2, head.find("\r\n", p + 2) - (p + 2));
             if (line.substr(0, 14) == "Cache-Control:") ++cache;
-            if (line.substr(0, 15) == "Content-Length:") length = std::strtoul(std::string(line.substr(15)).c_str(), nullptr, 10);
-            if (line.substr(0, 13) == "Content-Type:" && line.find("application/json") != std::string_view::npos) json = true;
+            if (line.substr(0, 15) == "Content-Length:")
+                length = std::strtoul(std::string(line.substr(15)).c_str(), nullptr, 10);
+            if (line.substr(0, 13) == "Content-Type:" && line.find("application/json") != std::string_view::npos)
+                json = true;
         }
         if (cache > 1) fail("more than one Cache-Control", out);
         if (status >= 400 && status < 500 && !json && length > 0) fail("an error that is not JSON", out);

@@ -30,7 +30,6 @@ using namespace essi::native;
 
 namespace {
 
-
 void write(const fs::path& p, const std::string& s) {
     fs::create_directories(p.parent_path());
     std::ofstream(p, std::ios::binary) << s;
@@ -54,8 +53,8 @@ TEST(Expand, ExtensionsSniffingAndOrder) {
     write(d / "b.esi", "+1+1\n63\n");
     write(d / "a.NC", "+1+1\n63\n");
     write(d / "sub/c.txt", "+1+1\n63\n");
-    write(d / "sub/PART7", "3\nPART 7\n4\n+100+0\n63\n");   // no extension, ESSI content
-    write(d / "sub/notes", "just some notes\n");             // no extension, not ESSI
+    write(d / "sub/PART7", "3\nPART 7\n4\n+100+0\n63\n");  // no extension, ESSI content
+    write(d / "sub/notes", "just some notes\n");           // no extension, not ESSI
     write(d / "sub/x.json", "{}\n");
     std::vector<std::string> errors;
     auto files = expand_paths({d.string()}, ExpandOptions{}, errors);
@@ -130,7 +129,8 @@ TEST(ThreadPool, EmitsInOrderWithManyWorkers) {
             [&](std::size_t i) {
                 const int now = ++running;
                 int m = max_running.load();
-                while (now > m && !max_running.compare_exchange_weak(m, now)) {}
+                while (now > m && !max_running.compare_exchange_weak(m, now)) {
+                }
                 if (i % 7 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
                 results[i] = static_cast<int>(i * 3);
                 --running;
@@ -148,7 +148,8 @@ TEST(ThreadPool, EmitsInOrderWithManyWorkers) {
 
 TEST(Batch, SameResultsForAnyJobCountAndLimit) {
     const fs::path d = temp_dir("batch");
-    for (int i = 0; i < 20; ++i) write(d / ("t" + std::to_string(100 + i) + ".esi"), i % 3 ? "+100+0\n63\n" : "+1x\n+5\n");
+    for (int i = 0; i < 20; ++i)
+        write(d / ("t" + std::to_string(100 + i) + ".esi"), i % 3 ? "+100+0\n63\n" : "+1x\n+5\n");
     std::vector<std::string> errors;
     const auto files = expand_paths({d.string()}, ExpandOptions{}, errors);
     ASSERT_EQ(files.size(), 20u);
@@ -156,7 +157,8 @@ TEST(Batch, SameResultsForAnyJobCountAndLimit) {
     const TapeRequest iso_request{std::nullopt, essi::builtin_profile("iso6582"), "iso6582", std::nullopt};
     BatchOptions o;
     o.jobs = 1;
-    check_batch(files, iso_request, o, [&](BatchItem&& it) { seen1.push_back(it.report.path + ":" + std::to_string(it.report.errors())); });
+    check_batch(files, iso_request, o,
+                [&](BatchItem&& it) { seen1.push_back(it.report.path + ":" + std::to_string(it.report.errors())); });
     o.jobs = 4;
     o.max_diagnostics = 1;
     check_batch(files, iso_request, o, [&](BatchItem&& it) {
@@ -173,8 +175,9 @@ TEST(Formats, GithubCommands) {
     BatchItem it;
     it.read_ok = true;
     it.report.path = "a b.esi";
-    it.report.result.diagnostics = {diag(essi::Severity::Error, essi::DiagCode::E301_ArcEndNotOnCircle, 12, 3, "off 50%"),
-                                    diag(essi::Severity::Warning, essi::DiagCode::W114_NoProgramEnd, 0, 0, "no end")};
+    it.report.result.diagnostics = {
+        diag(essi::Severity::Error, essi::DiagCode::E301_ArcEndNotOnCircle, 12, 3, "off 50%"),
+        diag(essi::Severity::Warning, essi::DiagCode::W114_NoProgramEnd, 0, 0, "no end")};
     EXPECT_EQ(github_file_block(it),
               "::error file=a b.esi,line=12,col=3,title=E301::off 50%25\n"
               "::warning file=a b.esi,title=W114::no end\n");
@@ -186,7 +189,8 @@ TEST(Formats, UrisAndXml) {
     // A backslash is a character of a Linux file name, not a separator: percent-encoded like any other byte.
     EXPECT_EQ(path_to_uri("dir\\x.esi"), "dir%5Cx.esi");
     EXPECT_EQ(path_to_uri("bad\xFF.esi"), "bad%FF.esi");
-    EXPECT_EQ(essi::xml_escape("<a href=\"x\">'&'\x01</a>"), "&lt;a href=&quot;x&quot;&gt;&apos;&amp;&apos;?&lt;/a&gt;");
+    EXPECT_EQ(essi::xml_escape("<a href=\"x\">'&'\x01</a>"),
+              "&lt;a href=&quot;x&quot;&gt;&apos;&amp;&apos;?&lt;/a&gt;");
 }
 
 TEST(Formats, SarifHasOneRulePerCode) {
@@ -225,7 +229,6 @@ TEST(ShareStore, ContentAddressedAndPersistent) {
     fs::remove_all(d);
 }
 
-
 // `essi check` on two threads (native/pipelined_check.cpp) gives check_tape's result to the bit: the
 // statistics (doubles compared bit for bit) and every diagnostic, on a tape of many chunks. Whether a chunk's arcs
 // are measured by the reading thread or by the interpreter depends on which thread is ahead at that moment,
@@ -241,16 +244,19 @@ TEST(PipelinedCheck, SameResultAsOneThread) {
         const std::size_t next = end == std::string::npos ? valid.size() : end + 1;
         flawed.append(valid, at, next - at);
         at = next;
-        if (++line % 40'009 == 0) flawed += (line / 40'009) % 3 == 0 ? "+1x2\r\n" : (line / 40'009) % 3 == 1 ? "117\r\n" : "7+5\r\n";
+        if (++line % 40'009 == 0)
+            flawed += (line / 40'009) % 3 == 0 ? "+1x2\r\n" : (line / 40'009) % 3 == 1 ? "117\r\n" : "7+5\r\n";
     }
     ASSERT_GT(valid.size(), kPipelineMinBytes * 2);
-    for (const std::string* tape : {static_cast<const std::string*>(&valid), static_cast<const std::string*>(&flawed)}) {
+    for (const std::string* tape :
+         {static_cast<const std::string*>(&valid), static_cast<const std::string*>(&flawed)}) {
         SCOPED_TRACE(tape == &valid ? "valid tape" : "tape with errors and warnings");
         const essi::CheckResult one = essi::check_tape(*tape, profile);
         EXPECT_GT(one.stats.motions, 100'000u);
         if (tape == &valid) EXPECT_TRUE(one.diagnostics.empty());
         else EXPECT_GE(one.diagnostics.size(), 6u);
-        for (int run = 0; run < 3; ++run) essi_test::expect_same_result(check_tape_pipelined(*tape, profile), one, "run " + std::to_string(run));
+        for (int run = 0; run < 3; ++run)
+            essi_test::expect_same_result(check_tape_pipelined(*tape, profile), one, "run " + std::to_string(run));
     }
     // The cut plan's plates analysed by the reading thread or at the end (SharedPlateRunner): the same findings in
     // the same order.
@@ -259,5 +265,6 @@ TEST(PipelinedCheck, SameResultAsOneThread) {
     wide.kerf_units = 400;
     const essi::CheckResult one = essi::check_tape(valid, wide);
     EXPECT_GT(one.count(essi::Severity::Error), 100u);
-    for (int run = 0; run < 3; ++run) essi_test::expect_same_result(check_tape_pipelined(valid, wide), one, "wide kerf, run " + std::to_string(run));
+    for (int run = 0; run < 3; ++run)
+        essi_test::expect_same_result(check_tape_pipelined(valid, wide), one, "wide kerf, run " + std::to_string(run));
 }

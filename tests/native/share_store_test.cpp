@@ -17,7 +17,6 @@ using namespace essi::native;
 
 namespace {
 
-
 std::unique_ptr<ShareStore> open_store(const fs::path& dir, StoreLimits limits = {}) {
     std::string error;
     auto store = ShareStore::open(dir.string(), error, limits);
@@ -52,7 +51,8 @@ TEST(ShareStoreLimits, ATapeIsReadInPieces) {
     ASSERT_EQ(store->size_of(put.id), tape.size());
     std::string back;
     char buf[4096];
-    for (std::int64_t n; (n = store->read(put.id, back.size(), buf, sizeof buf)) > 0;) back.append(buf, static_cast<std::size_t>(n));
+    for (std::int64_t n; (n = store->read(put.id, back.size(), buf, sizeof buf)) > 0;)
+        back.append(buf, static_cast<std::size_t>(n));
     EXPECT_EQ(back, tape);
     EXPECT_EQ(store->read(put.id, tape.size() + 5, buf, sizeof buf), 0);
     EXPECT_FALSE(store->size_of(essi::sha256_hex("never stored")));
@@ -92,8 +92,10 @@ TEST(ShareStoreLimits, OpensAStoreWithoutTokens) {
     sqlite3* db = nullptr;
     ASSERT_EQ(sqlite3_open((d / "shares.sqlite3").c_str(), &db), SQLITE_OK);
     const std::string id = essi::sha256_hex("old");
-    const std::string sql = "CREATE TABLE shares (id TEXT PRIMARY KEY NOT NULL, size INTEGER NOT NULL, created_unix INTEGER "
-                            "NOT NULL, content BLOB NOT NULL); INSERT INTO shares VALUES ('" + id + "', 3, strftime('%s','now'), 'old');";
+    const std::string sql =
+        "CREATE TABLE shares (id TEXT PRIMARY KEY NOT NULL, size INTEGER NOT NULL, created_unix INTEGER "
+        "NOT NULL, content BLOB NOT NULL); INSERT INTO shares VALUES ('" +
+        id + "', 3, strftime('%s','now'), 'old');";
     ASSERT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr), SQLITE_OK);
     sqlite3_close(db);
     auto store = open_store(d);

@@ -17,7 +17,8 @@
 #include <string>
 #include <sys/stat.h>
 
-#if !defined(__EMSCRIPTEN__) && (!defined(ESSI_EXAMPLES_DIR) || !defined(ESSI_TEST_DATA_DIR) || !defined(ESSI_CORPUS_DIR))
+#if !defined(__EMSCRIPTEN__) && \
+    (!defined(ESSI_EXAMPLES_DIR) || !defined(ESSI_TEST_DATA_DIR) || !defined(ESSI_CORPUS_DIR))
 #error "ESSI_EXAMPLES_DIR / ESSI_TEST_DATA_DIR / ESSI_CORPUS_DIR must be defined (tests/CMakeLists.txt does it)"
 #endif
 

@@ -8,13 +8,13 @@
 
 namespace {
 const std::string kUtf8Chinese = "\xE4\xB8\xAD\xE6\x96\x87";  // 中文
-const std::string kGbChinese = "\xD6\xD0\xCE\xC4";             // 中文 in GB 2312 / GBK / GB 18030
+const std::string kGbChinese = "\xD6\xD0\xCE\xC4";            // 中文 in GB 2312 / GBK / GB 18030
 }  // namespace
 
 TEST(Charset, Gb18030CharactersToUtf8) {
     EXPECT_EQ(essi::gb18030_char_to_utf8("\xD6\xD0"), "\xE4\xB8\xAD");
-    EXPECT_EQ(essi::gb18030_char_to_utf8("\x81\x30\x8A\x31"), "\xC3\xA4");  // a four-byte character: U+00E4
-    EXPECT_EQ(essi::gb18030_char_to_utf8("\x84\x31\xA4\x39"), "\xEF\xBF\xBF");  // the last of the BMP: U+FFFF
+    EXPECT_EQ(essi::gb18030_char_to_utf8("\x81\x30\x8A\x31"), "\xC3\xA4");          // a four-byte character: U+00E4
+    EXPECT_EQ(essi::gb18030_char_to_utf8("\x84\x31\xA4\x39"), "\xEF\xBF\xBF");      // the last of the BMP: U+FFFF
     EXPECT_EQ(essi::gb18030_char_to_utf8("\x90\x30\x81\x30"), "\xF0\x90\x80\x80");  // beyond it: U+10000
     EXPECT_EQ(essi::gb18030_char_to_utf8("\xE3\x32\x9A\x35"), "\xF4\x8F\xBF\xBF");  // the last: U+10FFFF
 }
@@ -50,7 +50,11 @@ TEST(Charset, Utf8ToTheChineseCharsets) {
 TEST(Charset, WhatTheCharsetLacksBecomesAQuestionMark) {
     // "ä" has no code in GB 2312; a byte that is no UTF-8 none in any charset.
     EXPECT_EQ(essi::utf8_to_charset("K\xC3\xA4se", "GB2312"), "K?se");
-    EXPECT_EQ(essi::utf8_to_charset("a\xFF" "b" + kUtf8Chinese, "GB18030"), "a?b" + kGbChinese);
+    EXPECT_EQ(essi::utf8_to_charset("a\xFF"
+                                    "b" +
+                                        kUtf8Chinese,
+                                    "GB18030"),
+              "a?b" + kGbChinese);
     EXPECT_EQ(essi::utf8_to_charset("", "GB18030"), "");
 }
 #endif

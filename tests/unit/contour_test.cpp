@@ -37,7 +37,8 @@ public:
         m.end = to;
         m.head = head;
         motions_.push_back(m);
-        builder_.motion(m, [&](Contour& c) { began.push_back(c); }, ended_into());
+        builder_.motion(
+            m, [&](Contour& c) { began.push_back(c); }, ended_into());
         return *this;
     }
     Stream& tools(std::uint8_t after) {
@@ -243,7 +244,8 @@ TEST(ContourModel, ThePlansLoopIsReachableAsMotionsParabolasWhole) {
 
 TEST(ContourModel, DiffAndPlanFindTheSameContours) {
     const std::string nest = bench::generate_nest_tape(200000, 3);  // (several plates)
-    for (const char* name : {"kerf_parts.esi", "three_axis.esi", "marking.esi", "parabola.esi", "plate_holes.esi", "nest"}) {
+    for (const char* name :
+         {"kerf_parts.esi", "three_axis.esi", "marking.esi", "parabola.esi", "plate_holes.esi", "nest"}) {
         SCOPED_TRACE(name);
         const std::string bytes = std::string(name) == "nest" ? nest : read_file(examples_dir() + "/" + name);
         TapeSetup setup;

@@ -154,8 +154,9 @@ TEST(Convert, GcodeKerfSideAsTheMotionsHaveIt) {
     o.absolute = true;
     const std::string tape = "22\n29+20\n7\n+1000+0\n30+30\n+0+1000\n8\n38\n+100+0\n64\n";
     const ConvertResult g = convert_tape(tape, setup_of(InputFormat::Essi, iso), o);
-    EXPECT_EQ(g.text, "G17 G21 G40 G90 G91.1 G94\nM3 $0 S1\nG42.1 D2\nG1 X100 Y0 F1000\nG40\nG41.1 D3\nG1 X100 Y-100\n"
-                      "M5 $0\nG40\nG1 X110 Y-100\nM2\n");
+    EXPECT_EQ(g.text,
+              "G17 G21 G40 G90 G91.1 G94\nM3 $0 S1\nG42.1 D2\nG1 X100 Y0 F1000\nG40\nG41.1 D3\nG1 X100 Y-100\n"
+              "M5 $0\nG40\nG1 X110 Y-100\nM2\n");
 }
 
 TEST(Convert, WritersText) {
@@ -172,8 +173,9 @@ TEST(Convert, WritersText) {
     o.to = OutputFormat::Gcode;
     o.absolute = true;
     const ConvertResult g = convert_tape(tape, setup_of(InputFormat::Essi, woyda), o);
-    EXPECT_EQ(g.text, "G17 G21 G40 G90 G91.1 G94\nM3 $0 S1\nG41.1 D2\nG1 X100 Y0 F600\nG3 X100 Y0 I0 J50\nM5 $0\n"
-                      "G4 P2\n(ESSI 45: Torch head lower)\nG40\nM2\n");
+    EXPECT_EQ(g.text,
+              "G17 G21 G40 G90 G91.1 G94\nM3 $0 S1\nG41.1 D2\nG1 X100 Y0 F600\nG3 X100 Y0 I0 J50\nM5 $0\n"
+              "G4 P2\n(ESSI 45: Torch head lower)\nG40\nM2\n");
     // The check's (N603: the kerf inside a lone contour), then the conversion's: 45 has no G-code counterpart.
     ASSERT_EQ(g.diagnostics.size(), 2u);
     EXPECT_EQ(g.diagnostics[0].code, DiagCode::N603_KerfInsideLoneContour);

@@ -28,8 +28,8 @@ std::string fan_of_parts(int n) {
         const double a = 1.5707963267948966 * k / n;
         const long long ax = std::llround(1000 * std::cos(a)), ay = std::llround(1000 * std::sin(a));
         const long long bx = std::llround(-100 * std::sin(a)), by = std::llround(100 * std::cos(a));
-        t += "7\n" + word(ax) + word(ay) + "\n" + word(bx) + word(by) + "\n" + word(-ax) + word(-ay) + "\n" + word(-bx) +
-             word(-by) + "\n8\n";
+        t += "7\n" + word(ax) + word(ay) + "\n" + word(bx) + word(by) + "\n" + word(-ax) + word(-ay) + "\n" +
+             word(-bx) + word(-by) + "\n8\n";
     }
     return t + "38\n64\n";
 }
@@ -198,8 +198,10 @@ TEST(PlanBounds, BigArcsSplitAPlateByItsPoints) {
         if (d.code != DiagCode::N614_PlateSplit) continue;
         const std::size_t last_line = 4 * 511 + 2;  // the circle of the 512th cut (4 lines a cut)
         EXPECT_EQ(d.line, last_line);
-        EXPECT_EQ(d.message, "the plate is analysed in parts of at most 524288 points of its contours flattened: the "
-                             "cuts after line " + std::to_string(last_line) + " are not compared with those up to it");
+        EXPECT_EQ(d.message,
+                  "the plate is analysed in parts of at most 524288 points of its contours flattened: the "
+                  "cuts after line " +
+                      std::to_string(last_line) + " are not compared with those up to it");
     }
     EXPECT_EQ(count_code(r, DiagCode::N615_CutTooLong), 0u);
 }
@@ -218,8 +220,9 @@ TEST(PlanBounds, ACutOfTooManyPointsIsLeftOut) {
         EXPECT_EQ(d.contour_first, 2u);
         EXPECT_EQ(d.contour_last, 601u);
         EXPECT_EQ(d.severity, Severity::Note);
-        EXPECT_EQ(d.message, "the cut of lines 2-601 is more than 524288 points when flattened: the cut plan leaves it "
-                             "out (no nesting, collision or crossing tests for it)");
+        EXPECT_EQ(d.message,
+                  "the cut of lines 2-601 is more than 524288 points when flattened: the cut plan leaves it "
+                  "out (no nesting, collision or crossing tests for it)");
     }
     EXPECT_EQ(r.stats.motions, 600u);  // (the statistics still count every motion)
     EXPECT_TRUE(r.ok());

@@ -53,7 +53,7 @@ std::string attr(const std::string& element, const std::string& name) {
 
 TEST(DiagnosticMarks, PlaceIsAtThenTheLinesFirstMotionEndThenTheMachinePosition) {
     std::vector<essi::Diagnostic> ds = {diag(essi::Severity::Error, 3), diag(essi::Severity::Warning, 4),
-                                        diag(essi::Severity::Note, 1), diag(essi::Severity::Error, 0),
+                                        diag(essi::Severity::Note, 1),  diag(essi::Severity::Error, 0),
                                         diag(essi::Severity::Error, 6), diag(essi::Severity::Error, 2)};
     ds[5].has_at = true;
     ds[5].at = {42, 7};
@@ -96,8 +96,8 @@ TEST(DiagnosticMarks, RangesMerge) {
 }
 
 TEST(RenderMarks, AMarkPerDiagnosticAtItsPlaceInItsColourNotesToo) {
-    const std::string svg = render({diag(essi::Severity::Error, 3, "bad <arc>"), diag(essi::Severity::Warning, 4),
-                                    diag(essi::Severity::Note, 5)});
+    const std::string svg = render(
+        {diag(essi::Severity::Error, 3, "bad <arc>"), diag(essi::Severity::Warning, 4), diag(essi::Severity::Note, 5)});
     const std::string e = element_with(svg, "id=\"diagnostic-0\"");
     EXPECT_EQ(attr(e, "class"), "diagnostic error");
     EXPECT_EQ(attr(e, "data-line"), "3");
@@ -116,7 +116,9 @@ TEST(RenderMarks, TheMarkHasTheSameSizeInTheSvgsPixelsAtEveryWidth) {
     for (const double width : {400.0, 1200.0, 3000.0}) {
         const std::string svg = render({diag(essi::Severity::Error, 3)}, false, width);
         double vx = 0, vy = 0, vw = 0, vh = 0;
-        ASSERT_EQ(std::sscanf(attr(element_with(svg, "viewBox="), "viewBox").c_str(), "%lf %lf %lf %lf", &vx, &vy, &vw, &vh), 4);
+        ASSERT_EQ(
+            std::sscanf(attr(element_with(svg, "viewBox="), "viewBox").c_str(), "%lf %lf %lf %lf", &vx, &vy, &vw, &vh),
+            4);
         const std::string mark = svg.substr(svg.find("id=\"diagnostic-0\""));
         const double r = std::stod(attr(element_with(mark, "<circle"), "r"));
         EXPECT_NEAR(r * width / vw, essi::kSvgMarkRadiusPx, 0.01) << width;

@@ -16,7 +16,7 @@ namespace {
 // A square part of 100 mm at (x, y), a hole of radius 20 mm in it, cut in that order (hole first), 0.1 mm units.
 std::string part(int x, int y, int size = 1000) {
     std::string s = "5\n+" + std::to_string(x * 10 + 500) + "+" + std::to_string(y * 10 + 300) + "\n6\n";
-    s += "7\n+0+0+0+200+\n8\n";                                                   // the hole (a full circle)
+    s += "7\n+0+0+0+200+\n8\n";  // the hole (a full circle)
     s += "5\n-500-300\n6\n7\n+" + std::to_string(size) + "+0\n+0+1000\n-" + std::to_string(size) + "+0\n+0-1000\n8\n";
     s += "5\n-" + std::to_string(x * 10) + "-" + std::to_string(y * 10) + "\n6\n";  // back to the origin
     return s;

@@ -48,7 +48,8 @@ TEST(Dxf, LinesArcsAndLayers) {
     EXPECT_EQ(value_after(e, starts[0], 8), "TRAVEL");
     EXPECT_EQ(value_after(e, starts[1], 8), "CUT");
     EXPECT_EQ(e[starts[2]].second, "ARC");
-    // the clockwise quarter from (110, 0) to (160, -50) around (110, -50): written from its end (0 deg) to its start (90)
+    // the clockwise quarter from (110, 0) to (160, -50) around (110, -50): written from its end (0 deg) to its start
+    // (90)
     EXPECT_EQ(value_after(e, starts[2], 10), "110.000000");
     EXPECT_EQ(value_after(e, starts[2], 20), "-50.000000");
     EXPECT_EQ(value_after(e, starts[2], 40), "50.000000");

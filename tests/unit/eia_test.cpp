@@ -41,23 +41,27 @@ TEST(EiaRead, WoydaBlocksBecomeEssiBlocks) {
     EXPECT_TRUE(t.block(2).tc_positive());  // G03: counter-clockwise
     EXPECT_EQ(t.block(3).code, 41);
     EXPECT_DOUBLE_EQ(t.block(3).function_value(t.words(3)[0]), 0.5);  // 500 ms
-    EXPECT_TRUE(t.block(4).ends_program());  // M02 = 63: the end under woyda
+    EXPECT_TRUE(t.block(4).ends_program());                           // M02 = 63: the end under woyda
     EXPECT_EQ(t.block(4).line, 5u);
 }
 
 TEST(EiaRead, ModalArcsAndFullCircle) {
     // G02 stays in force for the blocks with I/J; a block with only X/Y is a line; I/J alone: a full circle
-    const std::string trace = trace_tape("G02 X20 Y0 I10 J0\nX0 Y-20 I0 J-10\nX5\nI-5 J0\nM02\n", builtin("woyda"),
-                                         InputFormat::Eia);
-    EXPECT_NE(trace.find("1 travel arc (0.000,0.000)->(20.000,0.000) c=(10.000,0.000) r=10.000 cw"), std::string::npos) << trace;
-    EXPECT_NE(trace.find("2 travel arc (20.000,0.000)->(20.000,-20.000) c=(20.000,-10.000) r=10.000 cw"), std::string::npos) << trace;
+    const std::string trace =
+        trace_tape("G02 X20 Y0 I10 J0\nX0 Y-20 I0 J-10\nX5\nI-5 J0\nM02\n", builtin("woyda"), InputFormat::Eia);
+    EXPECT_NE(trace.find("1 travel arc (0.000,0.000)->(20.000,0.000) c=(10.000,0.000) r=10.000 cw"), std::string::npos)
+        << trace;
+    EXPECT_NE(trace.find("2 travel arc (20.000,0.000)->(20.000,-20.000) c=(20.000,-10.000) r=10.000 cw"),
+              std::string::npos)
+        << trace;
     EXPECT_NE(trace.find("3 travel line (20.000,-20.000)->(25.000,-20.000)"), std::string::npos) << trace;
     EXPECT_NE(trace.find("sweep=-360.000"), std::string::npos) << trace;
 }
 
 TEST(EiaRead, AbsoluteModeKeepsMissingAxesAndCentresStayRelative) {
     // Woyda G92 = absolute (82): X only keeps Y; I/J relative to the block's start
-    const std::string trace = trace_tape("G92\nX100 Y50\nX150\nG03 X150 Y150 I0 J50\nM02\n", builtin("woyda"), InputFormat::Eia);
+    const std::string trace =
+        trace_tape("G92\nX100 Y50\nX150\nG03 X150 Y150 I0 J50\nM02\n", builtin("woyda"), InputFormat::Eia);
     EXPECT_NE(trace.find("3 travel line (100.000,50.000)->(150.000,50.000)"), std::string::npos) << trace;
     EXPECT_NE(trace.find("c=(150.000,100.000) r=50.000 ccw"), std::string::npos) << trace;
 }
@@ -136,7 +140,8 @@ TEST(EiaRead, ChunksGiveTheWholeTape) {
         for (std::size_t i = 0; i < whole.size(); ++i) {
             ASSERT_EQ(all.block(i).code, whole.block(i).code) << n << " " << i;
             ASSERT_EQ(all.block(i).line, whole.block(i).line) << n << " " << i;
-            ASSERT_TRUE(std::equal(all.words(i).begin(), all.words(i).end(), whole.words(i).begin(), whole.words(i).end()));
+            ASSERT_TRUE(
+                std::equal(all.words(i).begin(), all.words(i).end(), whole.words(i).begin(), whole.words(i).end()));
         }
         EXPECT_EQ(all.end_block(), whole.end_block());
     }
@@ -217,5 +222,6 @@ TEST(FunctionValues, OutOfRangeIsAnErrorNamingTheRange) {
                             [](const Diagnostic& d) { return d.code == DiagCode::E216_FunctionValueRange; }),
               3);
     EXPECT_NE(r.diagnostics[0].message.find("outside 0 to 3600 s"), std::string::npos) << r.diagnostics[0].message;
-    EXPECT_DOUBLE_EQ(r.stats.estimated_time_s, 10.0 / 1000.0 * 60.0 + 2.0);  // none of them took effect (10 mm at the profile feed)
+    EXPECT_DOUBLE_EQ(r.stats.estimated_time_s,
+                     10.0 / 1000.0 * 60.0 + 2.0);  // none of them took effect (10 mm at the profile feed)
 }

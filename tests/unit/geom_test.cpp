@@ -16,9 +16,9 @@ using namespace essi_test;
 
 namespace {
 
-constexpr double kBoxTol = 1e-9;        // mm, bounding boxes
-constexpr double kOnCurveTol = 1e-9;    // mm, flattened points lie on the exact curve
-constexpr double kChordSlack = 1e-12;   // mm, rounding allowance on top of the chord tolerance
+constexpr double kBoxTol = 1e-9;       // mm, bounding boxes
+constexpr double kOnCurveTol = 1e-9;   // mm, flattened points lie on the exact curve
+constexpr double kChordSlack = 1e-12;  // mm, rounding allowance on top of the chord tolerance
 
 // Arc length of the parabola y = t^2/(2p) from 0 to t: the antiderivative of sqrt(1 + (t/p)^2).
 double parabola_F(double t, double p) { return t / 2 * std::sqrt(1 + (t / p) * (t / p)) + p / 2 * std::asinh(t / p); }
@@ -278,13 +278,9 @@ TEST(GeomBox, ArcTopExtremeOnly) {
     expect_box(bounding_box(w), -10, -10, 10, h, "arc pi/4 -> 3pi/4 cw");
 }
 
-TEST(GeomBox, Line) {
-    expect_box(bounding_box(make_line({5, 7}, {-3, 2})), -3, 2, 5, 7, "line");
-}
+TEST(GeomBox, Line) { expect_box(bounding_box(make_line({5, 7}, {-3, 2})), -3, 2, 5, 7, "line"); }
 
-TEST(GeomBox, ParabolaIncludesVertex) {
-    expect_box(bounding_box(make_parabola_u()), 0, -10, 20, 0, "parabola");
-}
+TEST(GeomBox, ParabolaIncludesVertex) { expect_box(bounding_box(make_parabola_u()), 0, -10, 20, 0, "parabola"); }
 
 // ---------------------------------------------------------------- parabolas (§6)
 

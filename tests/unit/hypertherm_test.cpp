@@ -68,7 +68,8 @@ TEST(Hypertherm, MarkerOffsetsOneToEight) {
     EXPECT_FALSE(has(check_tape("11+8\n12+8\n64\n", hypertherm()), DiagCode::E216_FunctionValueRange));
     const CheckResult nine = check_tape("11+9\n64\n", hypertherm());
     ASSERT_TRUE(has(nine, DiagCode::E216_FunctionValueRange));
-    EXPECT_NE(nine.diagnostics.front().message.find("outside 1 to 8"), std::string::npos) << nine.diagnostics.front().message;
+    EXPECT_NE(nine.diagnostics.front().message.find("outside 1 to 8"), std::string::npos)
+        << nine.diagnostics.front().message;
 }
 
 TEST(Hypertherm, DwellValueInMilliseconds) {
@@ -85,7 +86,8 @@ TEST(Hypertherm, DwellValueInMilliseconds) {
     EXPECT_NE(over.diagnostics.front().message.find("(3600.001 s at 0.001 s a unit)"), std::string::npos)
         << over.diagnostics.front().message;
     // iso6582: seconds
-    EXPECT_DOUBLE_EQ(essi_test::run("41+2\n64\n", *builtin_profile("iso6582")).sink.events_of(EventKind::Dwell)[0].value, 2.0);
+    EXPECT_DOUBLE_EQ(
+        essi_test::run("41+2\n64\n", *builtin_profile("iso6582")).sink.events_of(EventKind::Dwell)[0].value, 2.0);
 }
 
 TEST(Hypertherm, ProgrammableKerfIsWhatTwentyNineUsesWithoutAValue) {
@@ -165,7 +167,8 @@ TEST(Hypertherm, EiaWordsThatStandForAFunctionWithAValue) {
 }
 
 TEST(Hypertherm, ProfileCodesTakeAValueAndRoundTrip) {
-    const ProfileResult ok = parse_profile(R"({"base": "hypertherm", "eia": {"codes": [["M275", 11, 3], ["M07", 7]]}})");
+    const ProfileResult ok =
+        parse_profile(R"({"base": "hypertherm", "eia": {"codes": [["M275", 11, 3], ["M07", 7]]}})");
     ASSERT_TRUE(ok.profile.has_value());
     ASSERT_EQ(ok.profile->eia.codes.size(), 2u);
     EXPECT_EQ(ok.profile->eia.codes[0].value, 3);
@@ -173,7 +176,8 @@ TEST(Hypertherm, ProfileCodesTakeAValueAndRoundTrip) {
     const ProfileResult again = parse_profile(profile_to_json(*ok.profile));  // written as ["M275", 11, 3]
     ASSERT_TRUE(again.profile.has_value());
     EXPECT_EQ(again.profile->eia.codes, ok.profile->eia.codes);
-    for (const char* bad : {R"([["M275", 11, -1]])", R"([["M275", 11, 10000]])", R"([["M275", 11, 3, 4]])", R"([["M275", 11, 1.5]])"}) {
+    for (const char* bad :
+         {R"([["M275", 11, -1]])", R"([["M275", 11, 10000]])", R"([["M275", 11, 3, 4]])", R"([["M275", 11, 1.5]])"}) {
         SCOPED_TRACE(bad);
         const ProfileResult r = parse_profile(std::string(R"({"eia": {"codes": )") + bad + "}}");
         EXPECT_FALSE(r.profile.has_value());
@@ -190,7 +194,8 @@ TEST(Hypertherm, ConversionWritesTheTargetsDwellUnit) {
     ConvertOptions to_h;
     to_h.to = OutputFormat::Essi;
     to_h.target = hypertherm();
-    const ConvertResult h = convert_tape("41+2\n64\n", TapeSetup{InputFormat::Essi, *builtin_profile("iso6582"), false, {}, {}}, to_h);
+    const ConvertResult h =
+        convert_tape("41+2\n64\n", TapeSetup{InputFormat::Essi, *builtin_profile("iso6582"), false, {}, {}}, to_h);
     EXPECT_NE(h.text.find("41+2000"), std::string::npos) << h.text;
     ConvertOptions to_iso;
     to_iso.to = OutputFormat::Essi;

@@ -43,7 +43,8 @@ TEST(I18nFunctions, EveryFunctionOfEveryDialectHasItsWordsInEveryLanguage) {
             ASSERT_TRUE(info) << code;
             if (info->name.empty()) continue;
             ++named;
-            const std::string where = "dialect " + std::to_string(static_cast<int>(d)) + " code " + std::to_string(code);
+            const std::string where =
+                "dialect " + std::to_string(static_cast<int>(d)) + " code " + std::to_string(code);
             // The English the callers read is the catalogue's English.
             EXPECT_EQ(info->name, essi::text(info->name_msg, Lang::En)) << where;
             EXPECT_EQ(info->explanation, essi::text(info->explanation_msg, Lang::En)) << where;
@@ -87,7 +88,8 @@ TEST(I18nFunctions, EveryFunctionRowIsCompleteAndItsTemplatesMatch) {
     const auto arguments = [](std::string_view t) {
         std::string digits;
         for (std::size_t i = 0; i + 1 < t.size(); ++i)
-            if (t[i] == '{' && std::isdigit(static_cast<unsigned char>(t[i + 1])) && digits.find(t[i + 1]) == std::string::npos)
+            if (t[i] == '{' && std::isdigit(static_cast<unsigned char>(t[i + 1])) &&
+                digits.find(t[i + 1]) == std::string::npos)
                 digits += t[i + 1];
         return digits;
     };
@@ -135,12 +137,14 @@ TEST(I18nFunctions, DescribeFunctionInGerman) {
 
 TEST(I18nFunctions, DescribeFunctionInChinese) {
     const essi::Profile iso;
-    EXPECT_EQ(essi::describe_function(7, false, 0, iso, Lang::Zh), "功能 7:切割氧开:中心割炬(工具 1)切割氧开启:开始切割");
+    EXPECT_EQ(essi::describe_function(7, false, 0, iso, Lang::Zh),
+              "功能 7:切割氧开:中心割炬(工具 1)切割氧开启:开始切割");
     EXPECT_EQ(essi::describe_function(29, false, 0, iso, Lang::Zh),
               "功能 29:左割缝补偿开,配置的割缝宽度 2 mm(割炬向一侧偏移 1 mm):沿运动方向左侧的割缝补偿");
     EXPECT_EQ(essi::describe_function(30, true, 30, iso, Lang::Zh),
               "功能 30:右割缝补偿开,割缝宽度 3 mm(割炬向一侧偏移 1.5 mm):沿运动方向右侧的割缝补偿");
-    EXPECT_EQ(essi::describe_function(39, true, 1400, iso, Lang::Zh), "功能 39:编程进给速度,1400 mm/min:设定切割进给速度");
+    EXPECT_EQ(essi::describe_function(39, true, 1400, iso, Lang::Zh),
+              "功能 39:编程进给速度,1400 mm/min:设定切割进给速度");
     EXPECT_EQ(essi::describe_function(37, false, 0, iso, Lang::Zh),
               "功能 37:未分配(已忽略):GB/T 22217 未分配此功能,控制器将其忽略");
     EXPECT_EQ(essi::describe_function(1000, false, 0, iso, Lang::Zh), "功能 1000:不是机器功能");
@@ -170,7 +174,8 @@ TEST(I18nFunctions, EnglishUnchanged) {
     EXPECT_EQ(essi::describe_function(29, false, 0, iso, Lang::En),
               "function 29: Left kerf compensation ON, the profile's kerf width 2 mm (the torch 1 mm to the side): "
               "kerf compensation left of the direction of travel");
-    EXPECT_EQ(essi::describe_function(39, true, 1400, iso), "function 39: Programmed feed, 1400 mm/min: sets the cutting feed");
+    EXPECT_EQ(essi::describe_function(39, true, 1400, iso),
+              "function 39: Programmed feed, 1400 mm/min: sets the cutting feed");
     EXPECT_EQ(essi::describe_function(37, true, 25, iso),
               "function 37: Unassigned (ignored), value 25: not assigned by ISO 6582; a controller ignores it");
     EXPECT_EQ(essi::describe_function(1000, false, 0, iso), "function 1000: not a machine function");

@@ -27,9 +27,11 @@ essi::TapeContours contours_of(const std::string& tape) {
 
 // Two revisions: a square and a second one that B moves 5 mm along x (the lines renumbered by a comment).
 struct TwoRevisions {
-    essi::TapeContours a = contours_of("7\n+1000+0\n+0+1000\n-1000+0\n+0-1000\n8\n5\n+2000+0\n6\n7\n+500+0\n+0+500\n-500+0\n+0-500\n8\n64\n");
-    essi::TapeContours b =
-        contours_of("3\nREV B\n4\n7\n+1000+0\n+0+1000\n-1000+0\n+0-1000\n8\n5\n+2050+0\n6\n7\n+500+0\n+0+500\n-500+0\n+0-500\n8\n64\n");
+    essi::TapeContours a = contours_of(
+        "7\n+1000+0\n+0+1000\n-1000+0\n+0-1000\n8\n5\n+2000+0\n6\n7\n+500+0\n+0+500\n-500+0\n+0-500\n8\n64\n");
+    essi::TapeContours b = contours_of(
+        "3\nREV "
+        "B\n4\n7\n+1000+0\n+0+1000\n-1000+0\n+0-1000\n8\n5\n+2050+0\n6\n7\n+500+0\n+0+500\n-500+0\n+0-500\n8\n64\n");
     essi::TapeDiff d = essi::diff_contours(a.contours, b.contours);
     essi::DiffSide sa{"a.esi", &a}, sb{"b.esi", &b};
 };
@@ -50,7 +52,13 @@ TEST(I18nMore, MessagesWithTheirOwnArgumentsAreWordedInTheReadersLanguage) {
     EXPECT_EQ(essi::format_template("{0}|{1}", Lang::De, {MessageArgs::Arg(slash), "y"}),
               "woyda: `/` beendet das Programm in Zeile 29|y");
     const Message list{Msg::ReadNoProgramEnd, {MessageArgs::Arg::alternatives({"63", "64"})}};
-    const Message odd{Msg::DialectEvidence, {"a\x18" "b", "c\x19" "d\x1f" "e", Msg::EvidenceEndsProgram, 1}};
+    const Message odd{Msg::DialectEvidence,
+                      {"a\x18"
+                       "b",
+                       "c\x19"
+                       "d\x1f"
+                       "e",
+                       Msg::EvidenceEndsProgram, 1}};
     EXPECT_EQ(essi::format_template("{0}|{1}", Lang::Zh, {MessageArgs::Arg::messages({list, odd}), "z"}),
               "控制带结束时没有程序结束;最后一个程序块应为 63 或 64;a\\x18b:第 1 行 `c\\x19d\\x1Fe` 结束程序|z");
     EXPECT_EQ(essi::format_template("[{0}]", Lang::En, {MessageArgs::Arg::messages({})}), "[]");
@@ -65,8 +73,9 @@ TEST(I18nMore, DiffInEachLanguage) {
     // English as `essi diff` has always written it (tests/cli/diff_cli.sh reads it too).
     EXPECT_EQ(essi::difference_text(r.a, r.b, moved),
               "moved: A lines 11-14 -> B lines 14-17, by (+5.000, +0.000) mm: cut 200.000 mm from (200.000, 0.000)");
-    EXPECT_EQ(essi::difference_text(r.a, r.b, moved, Lang::De),
-              "verschoben: A Zeilen 11-14 -> B Zeilen 14-17, um (+5.000, +0.000) mm: Schnitt 200.000 mm ab (200.000, 0.000)");
+    EXPECT_EQ(
+        essi::difference_text(r.a, r.b, moved, Lang::De),
+        "verschoben: A Zeilen 11-14 -> B Zeilen 14-17, um (+5.000, +0.000) mm: Schnitt 200.000 mm ab (200.000, 0.000)");
     EXPECT_EQ(essi::difference_text(r.a, r.b, moved, Lang::Zh),
               "移位:A 第 11-14 行 -> B 第 14-17 行,偏移 (+5.000, +0.000) mm:切割 200.000 mm,起点 (200.000, 0.000)");
     EXPECT_EQ(essi::difference_text(r.a, r.b, r.d.contours[0], Lang::De), "gleich");
@@ -80,14 +89,16 @@ TEST(I18nMore, DiffInEachLanguage) {
               "moved: A lines 11-14 -> B lines 14-17, by (+5.000, +0.000) mm: cut 200.000 mm from (200.000, 0.000)\n"
               "contours: 1 same, 1 moved, 0 changed, 0 removed, 0 added\n"
               "statistics: travel_length_mm 200.000 -> 205.000 (+5.000), estimated_time_s 41.200 -> 41.230 (+0.030)\n");
-    EXPECT_EQ(essi::diff_text(r.sa, r.sb, r.d, Lang::De),
-              "A: a.esi (Profil iso6582): 2 Konturen, Schneiden 600.000 mm, 2 Anschnitte, Zeit 0:00:41\n"
-              "B: b.esi (Profil iso6582): 2 Konturen, Schneiden 600.000 mm, 2 Anschnitte, Zeit 0:00:41\n"
-              "verschoben: A Zeilen 11-14 -> B Zeilen 14-17, um (+5.000, +0.000) mm: Schnitt 200.000 mm ab (200.000, 0.000)\n"
-              "Konturen: 1 gleich, 1 verschoben, 0 geändert, 0 entfernt, 0 hinzugefügt\n"
-              "Statistik: Leerweglänge (mm) 200.000 -> 205.000 (+5.000), geschätzte Zeit (s) 41.200 -> 41.230 (+0.030)\n");
+    EXPECT_EQ(
+        essi::diff_text(r.sa, r.sb, r.d, Lang::De),
+        "A: a.esi (Profil iso6582): 2 Konturen, Schneiden 600.000 mm, 2 Anschnitte, Zeit 0:00:41\n"
+        "B: b.esi (Profil iso6582): 2 Konturen, Schneiden 600.000 mm, 2 Anschnitte, Zeit 0:00:41\n"
+        "verschoben: A Zeilen 11-14 -> B Zeilen 14-17, um (+5.000, +0.000) mm: Schnitt 200.000 mm ab (200.000, 0.000)\n"
+        "Konturen: 1 gleich, 1 verschoben, 0 geändert, 0 entfernt, 0 hinzugefügt\n"
+        "Statistik: Leerweglänge (mm) 200.000 -> 205.000 (+5.000), geschätzte Zeit (s) 41.200 -> 41.230 (+0.030)\n");
     const std::string zh = essi::diff_text(r.sa, r.sb, r.d, Lang::Zh);
-    EXPECT_NE(zh.find("A:a.esi(配置 iso6582):轮廓 2 个,切割 600.000 mm,穿孔 2 次,时间 0:00:41\n"), std::string::npos) << zh;
+    EXPECT_NE(zh.find("A:a.esi(配置 iso6582):轮廓 2 个,切割 600.000 mm,穿孔 2 次,时间 0:00:41\n"), std::string::npos)
+        << zh;
     EXPECT_NE(zh.find("\n统计:空行程长度(mm) 200.000 -> 205.000 (+5.000)、估计时间(s) 41.200 -> 41.230 (+0.030)\n"),
               std::string::npos)
         << zh;
@@ -104,18 +115,22 @@ TEST(I18nMore, DiffOfTheSameCutAndTheOtherChanges) {
     for (const essi::ContourDiff& c : d.contours) {
         if (c.change == essi::ContourChange::Changed) {
             EXPECT_EQ(essi::difference_text(a, b, c),
-                      "changed: A line 5 -> B line 5: mark 50.000 mm from (100.000, 0.000) -> mark 60.000 mm from (100.000, 0.000)");
+                      "changed: A line 5 -> B line 5: mark 50.000 mm from (100.000, 0.000) -> mark 60.000 mm from "
+                      "(100.000, 0.000)");
             EXPECT_EQ(essi::difference_text(a, b, c, Lang::De),
-                      "geändert: A Zeile 5 -> B Zeile 5: Markierung 50.000 mm ab (100.000, 0.000) -> Markierung 60.000 mm ab (100.000, 0.000)");
+                      "geändert: A Zeile 5 -> B Zeile 5: Markierung 50.000 mm ab (100.000, 0.000) -> Markierung 60.000 "
+                      "mm ab (100.000, 0.000)");
         }
         if (c.change == essi::ContourChange::Added) {
-            EXPECT_EQ(essi::difference_text(a, b, c, Lang::Zh), "新增:B 第 11 行:切割 10.000 mm,起点 (600.000, 560.000)");
+            EXPECT_EQ(essi::difference_text(a, b, c, Lang::Zh),
+                      "新增:B 第 11 行:切割 10.000 mm,起点 (600.000, 560.000)");
         }
     }
     const essi::TapeDiff back = essi::diff_contours(b.contours, a.contours);
     for (const essi::ContourDiff& c : back.contours) {
         if (c.change == essi::ContourChange::Removed) {
-            EXPECT_EQ(essi::difference_text(b, a, c, Lang::De), "entfernt: A Zeile 11: Schnitt 10.000 mm ab (600.000, 560.000)");
+            EXPECT_EQ(essi::difference_text(b, a, c, Lang::De),
+                      "entfernt: A Zeile 11: Schnitt 10.000 mm ab (600.000, 560.000)");
         }
     }
 }
@@ -160,7 +175,7 @@ TEST(I18nMore, ProfileErrorsInEachLanguage) {
     ASSERT_EQ(r.diagnostics.size(), 5u);
     for (const essi::Diagnostic& d : r.diagnostics) {
         EXPECT_EQ(d.code, essi::DiagCode::E402_BadProfile);
-        EXPECT_EQ(d.line, 1u);  // at its key
+        EXPECT_EQ(d.line, 1u);                     // at its key
         EXPECT_NE(d.msg, Msg::None) << d.message;  // (made from the catalogue: any language)
         EXPECT_EQ(essi::diagnostic_message(d, Lang::En), d.message);
     }
@@ -170,8 +185,10 @@ TEST(I18nMore, ProfileErrorsInEachLanguage) {
     EXPECT_EQ(r.diagnostics[1].message, "\"feed_mm_min\" must be between 1e-09 and 1000000000; found 1e+300");
     EXPECT_EQ(essi::diagnostic_message(r.diagnostics[1], Lang::De),
               "\"feed_mm_min\" muss zwischen 1e-09 und 1000000000 liegen; gefunden: 1e+300");
-    EXPECT_EQ(essi::diagnostic_message(r.diagnostics[1], Lang::Zh), "\"feed_mm_min\" 必须在 1e-09 到 1000000000 之间;实际为 1e+300");
-    EXPECT_EQ(r.diagnostics[2].message, "\"zero_offsets\" entry \"G55\" needs a number \"y_mm\" between -1000000000 and 1000000000");
+    EXPECT_EQ(essi::diagnostic_message(r.diagnostics[1], Lang::Zh),
+              "\"feed_mm_min\" 必须在 1e-09 到 1000000000 之间;实际为 1e+300");
+    EXPECT_EQ(r.diagnostics[2].message,
+              "\"zero_offsets\" entry \"G55\" needs a number \"y_mm\" between -1000000000 and 1000000000");
     EXPECT_EQ(essi::diagnostic_message(r.diagnostics[2], Lang::De),
               "Eintrag \"G55\" von \"zero_offsets\" braucht eine Zahl \"y_mm\" zwischen -1000000000 und 1000000000");
     EXPECT_EQ(essi::diagnostic_message(r.diagnostics[2], Lang::Zh),
@@ -183,9 +200,10 @@ TEST(I18nMore, ProfileErrorsInEachLanguage) {
 
     const essi::ProfileResult not_json = essi::parse_profile("{");
     ASSERT_EQ(not_json.diagnostics.size(), 1u);
-    EXPECT_EQ(not_json.diagnostics[0].message,
-              "the text is not valid JSON at line 1, column 2 (syntax error while parsing object key - unexpected end "
-              "of input; expected string literal); expected an object such as {\"base\": \"woyda\", \"feed_mm_min\": 1200}");
+    EXPECT_EQ(
+        not_json.diagnostics[0].message,
+        "the text is not valid JSON at line 1, column 2 (syntax error while parsing object key - unexpected end "
+        "of input; expected string literal); expected an object such as {\"base\": \"woyda\", \"feed_mm_min\": 1200}");
     EXPECT_EQ(essi::diagnostic_message(not_json.diagnostics[0], Lang::Zh),
               "文本在第 1 行第 2 列不是有效的 JSON(syntax error while parsing object key - unexpected end of input; "
               "expected string literal);应为 {\"base\": \"woyda\", \"feed_mm_min\": 1200} 这样的对象");
@@ -197,12 +215,13 @@ TEST(I18nMore, ProfileErrorsInEachLanguage) {
               "such as {\"base\": \"woyda\", \"feed_mm_min\": 1200}");
     const essi::ProfileResult base = essi::parse_profile(R"({"base": "nope"})");
     ASSERT_EQ(base.diagnostics.size(), 1u);
-    EXPECT_EQ(essi::diagnostic_message(base.diagnostics[0], Lang::De),
-              "unbekanntes Basisprofil \"nope\"; erwartet: eines von " + [] {
-                  std::string s;
-                  for (const std::string& n : essi::builtin_profile_names()) s += (s.empty() ? "" : ", ") + n;
-                  return s;
-              }());
+    EXPECT_EQ(
+        essi::diagnostic_message(base.diagnostics[0], Lang::De),
+        "unbekanntes Basisprofil \"nope\"; erwartet: eines von " + [] {
+            std::string s;
+            for (const std::string& n : essi::builtin_profile_names()) s += (s.empty() ? "" : ", ") + n;
+            return s;
+        }());
 }
 
 TEST(I18nMore, ShareLinkProblemsInEachLanguage) {
@@ -223,7 +242,8 @@ TEST(I18nMore, ShareLinkProblemsInEachLanguage) {
     const essi::ShareLink name = essi::parse_share_fragment("n=" + std::string(300, 'a'));
     ASSERT_EQ(name.problem_messages.size(), 1u);
     EXPECT_EQ(name.problems[0].rfind("n: the name is longer than 255 bytes; cut (\"aaaa", 0), 0u) << name.problems[0];
-    EXPECT_EQ(name.problem_messages[0].text(Lang::De).rfind("n: der Name ist länger als 255 Bytes; gekürzt (\"aaaa", 0), 0u);
+    EXPECT_EQ(name.problem_messages[0].text(Lang::De).rfind("n: der Name ist länger als 255 Bytes; gekürzt (\"aaaa", 0),
+              0u);
     const essi::ShareLink big = essi::parse_share_fragment(std::string(essi::kMaxShareFragmentBytes + 1, 'a'));
     ASSERT_EQ(big.problem_messages.size(), 1u);
     EXPECT_EQ(big.problems[0], "the link is 3000001 bytes long; at most 3000000 are read");

@@ -19,8 +19,8 @@ TEST(I18n, TemplatesPutArgumentsAndPluralWords) {
     EXPECT_EQ(essi::format_template("{0} word{0||s}", Lang::En, {1}), "1 word");
     EXPECT_EQ(essi::format_template("{0} word{0||s}", Lang::En, {2}), "2 words");
     EXPECT_EQ(essi::format_template("{0} {0|Wort|Wörter}", Lang::De, {3}), "3 Wörter");
-    EXPECT_EQ(essi::format_template("{2}", Lang::En, {"only"}), "");            // a missing argument: nothing
-    EXPECT_EQ(essi::format_template("{x} {", Lang::En, {"a"}), "{x} {");         // not a placeholder: as written
+    EXPECT_EQ(essi::format_template("{2}", Lang::En, {"only"}), "");      // a missing argument: nothing
+    EXPECT_EQ(essi::format_template("{x} {", Lang::En, {"a"}), "{x} {");  // not a placeholder: as written
 }
 
 TEST(I18n, ArgumentsThatAreWordsAreShownInTheReadersLanguage) {
@@ -29,7 +29,8 @@ TEST(I18n, ArgumentsThatAreWordsAreShownInTheReadersLanguage) {
               "a tab inside a block was skipped; ESSI blocks hold only + - 0-9");
     EXPECT_EQ(essi::format_message(Msg::ReadWhitespaceSkipped, Lang::De, args),
               "ein Tabulator in einem Satz wurde übersprungen; ESSI-Sätze enthalten nur + - 0-9");
-    EXPECT_EQ(essi::format_message(Msg::ReadWhitespaceSkipped, Lang::Zh, args), "已跳过程序块内的制表符;ESSI 程序块只含 + - 0-9");
+    EXPECT_EQ(essi::format_message(Msg::ReadWhitespaceSkipped, Lang::Zh, args),
+              "已跳过程序块内的制表符;ESSI 程序块只含 + - 0-9");
 }
 
 TEST(I18n, ListsJoinInTheReadersLanguage) {
@@ -41,7 +42,11 @@ TEST(I18n, ListsJoinInTheReadersLanguage) {
     EXPECT_EQ(essi::format_template("{0}", Lang::En, tools), "oxygen+punch");
     EXPECT_EQ(essi::format_template("{0}", Lang::De, tools), "Sauerstoff+Körner");
     // Bytes the packing uses cannot come in through a text argument.
-    EXPECT_EQ(essi::format_template("{0}|{1}", Lang::En, {"a\x1f" "b", "c"}), "a\\x1Fb|c");
+    EXPECT_EQ(essi::format_template("{0}|{1}", Lang::En,
+                                    {"a\x1f"
+                                     "b",
+                                     "c"}),
+              "a\\x1Fb|c");
 }
 
 TEST(I18n, LanguageFromTagsAndTheEnvironment) {
@@ -64,7 +69,8 @@ TEST(I18n, DiagnosticsOfATapeInEachLanguage) {
     EXPECT_EQ(bad_char.code, essi::DiagCode::E101_InvalidCharacter);
     EXPECT_EQ(essi::diagnostic_message(bad_char, Lang::En), bad_char.message);
     EXPECT_EQ(bad_char.message, "unexpected 'x' (0x78); expected + - or a digit");
-    EXPECT_EQ(essi::diagnostic_message(bad_char, Lang::De), "unerwartetes Zeichen 'x' (0x78); erwartet: + - oder eine Ziffer");
+    EXPECT_EQ(essi::diagnostic_message(bad_char, Lang::De),
+              "unerwartetes Zeichen 'x' (0x78); erwartet: + - oder eine Ziffer");
     EXPECT_EQ(essi::diagnostic_message(bad_char, Lang::Zh), "意外的字符 'x'(0x78);应为 + - 或数字");
     const essi::Diagnostic& count = r.diagnostics[1];
     EXPECT_EQ(count.code, essi::DiagCode::E105_WordCount);

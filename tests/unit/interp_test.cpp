@@ -280,8 +280,8 @@ TEST(InterpTransform, Line) {
         int code;
         double x, y;
     };
-    const Case cases[] = {{21, 10, 5}, {22, 10, -5}, {23, -10, -5}, {24, -10, 5},
-                          {25, -5, -10}, {26, 5, -10}, {27, 5, 10}, {28, -5, 10}};
+    const Case cases[] = {{21, 10, 5},   {22, 10, -5}, {23, -10, -5}, {24, -10, 5},
+                          {25, -5, -10}, {26, 5, -10}, {27, 5, 10},   {28, -5, 10}};
     for (const auto& c : cases) {
         auto r = run(std::to_string(c.code) + "\n+100+50\n+100+50\n64\n");
         ASSERT_EQ(r.motions().size(), 2u) << c.code << r.dump();
@@ -307,9 +307,9 @@ TEST(InterpTransform, QuarterArc) {
         bool ccw;
     };
     const Case cases[] = {
-        {21, 10, 10, 0, 10, true},    {22, 10, -10, 0, -10, false}, {23, -10, -10, 0, -10, true},
-        {24, -10, 10, 0, 10, false},  {25, -10, -10, -10, 0, false}, {26, 10, -10, 10, 0, true},
-        {27, 10, 10, 10, 0, false},   {28, -10, 10, -10, 0, true},
+        {21, 10, 10, 0, 10, true},   {22, 10, -10, 0, -10, false},  {23, -10, -10, 0, -10, true},
+        {24, -10, 10, 0, 10, false}, {25, -10, -10, -10, 0, false}, {26, 10, -10, 10, 0, true},
+        {27, 10, 10, 10, 0, false},  {28, -10, 10, -10, 0, true},
     };
     for (const auto& c : cases) {
         auto r = run(std::to_string(c.code) + "\n+100+100+0+100+\n64\n");
@@ -483,7 +483,7 @@ TEST(InterpStops, EndCodes) {
 TEST(InterpStops, Iso63CancelsAndTheProgramGoesOn) {
     auto r = run("29\n7\n5\n+100+0\n63\n+100+0\n");
     ASSERT_EQ(r.motions().size(), 2u) << r.dump();
-    EXPECT_EQ(r.motions()[1].tools, 0);          // 63 switched the oxygen off
+    EXPECT_EQ(r.motions()[1].tools, 0);  // 63 switched the oxygen off
     EXPECT_EQ(r.motions()[1].kerf, KerfSide::Off);
     EXPECT_EQ(r.motions()[1].kind, MotionKind::Travel);  // and rapid traverse
     EXPECT_TRUE(r.sink.events_of(EventKind::End).empty()) << r.dump();
@@ -516,8 +516,9 @@ TEST(InterpFunctions, UnknownW201NamesTheCode) {
 }
 
 TEST(InterpFunctions, KnownCodesGiveNoW201) {
-    auto r = run("0\n5\n6\n7\n8\n9\n10\n11\n12\n13\n14\n15\n16\n17\n18\n21\n38\n41\n42\n45\n46\n48\n49\n50\n51\n"
-                 "52\n53\n54\n81\n82\n81\n102\n105\n106\n107\n110\n111\n112\n113\n114\n12\n115\n12\n64\n");
+    auto r =
+        run("0\n5\n6\n7\n8\n9\n10\n11\n12\n13\n14\n15\n16\n17\n18\n21\n38\n41\n42\n45\n46\n48\n49\n50\n51\n"
+            "52\n53\n54\n81\n82\n81\n102\n105\n106\n107\n110\n111\n112\n113\n114\n12\n115\n12\n64\n");
     EXPECT_FALSE(r.has(DiagCode::W201_UnknownFunction)) << r.dump();
 }
 

@@ -106,7 +106,8 @@ TEST(JobSheet, TheOpenDiagnosticsAreListedAndMarked) {
     EXPECT_EQ(c.sheet.sheet.drawing.marks.size(), 2u);
     const auto& legend = c.sheet.sheet.legend;
     EXPECT_TRUE(std::any_of(legend.begin(), legend.end(), [](const essi::SheetLegendEntry& e) {
-        return e.sample == essi::SheetLegendEntry::Sample::Mark && e.severity == essi::Severity::Error && e.text == "error";
+        return e.sample == essi::SheetLegendEntry::Sample::Mark && e.severity == essi::Severity::Error &&
+               e.text == "error";
     }));
 }
 
@@ -196,8 +197,8 @@ TEST(JobSheet, PartsThroughTheSeamNumberTheDrawing) {
     EXPECT_EQ(p->table->rows[0], (std::vector<std::string>{"1", "2", "100.000 x 50.000 mm", "4800.3 mm²"}));
     const essi::SheetSection* pl = section(s, "plates");
     ASSERT_TRUE(pl && pl->table);
-    EXPECT_EQ(pl->table->rows[0], (std::vector<std::string>{"1", "3000.000 x 1500.000 mm", "73.4 %",
-                                                            "1000.000 x 1500.000 mm"}));
+    EXPECT_EQ(pl->table->rows[0],
+              (std::vector<std::string>{"1", "3000.000 x 1500.000 mm", "73.4 %", "1000.000 x 1500.000 mm"}));
     ASSERT_EQ(s.drawing.labels.size(), 3u);
     EXPECT_EQ(s.drawing.labels[2].text, "2");
     EXPECT_EQ(s.legend.back().sample, essi::SheetLegendEntry::Sample::Label);

@@ -27,7 +27,8 @@ struct Collect : MotionSink {
 // The programmed stream of a contour: lines and arcs from one point to the next, kerf `side` of `kerf_mm`.
 class Contour {
 public:
-    explicit Contour(Point start, KerfSide side = KerfSide::Left, double kerf_mm = 1) : at_(start), side_(side), kerf_(kerf_mm) {}
+    explicit Contour(Point start, KerfSide side = KerfSide::Left, double kerf_mm = 1)
+        : at_(start), side_(side), kerf_(kerf_mm) {}
     Contour& line(double x, double y) {
         MotionRecord m = base({x, y});
         m.curve = CurveKind::Line;
@@ -95,14 +96,14 @@ TEST(KerfPath, SquareWithArcAsLinuxCncCutsIt) {
     c.line(0, 0).line(10, 0).line(10, 10).arc(0, 10, 5, 10, true).line(0, 0).kerf(KerfSide::Off).line(0, -10);
     const Collect out = compensate(c.records);
     ASSERT_EQ(out.motions.size(), 7u);
-    expect_end(out.motions[0], -1, 0, CurveKind::Line);   // entry: the end shifted along the entry's normal
-    expect_end(out.motions[1], 0, 1, CurveKind::Arc);     // convex corner: joined around (0,0)
+    expect_end(out.motions[0], -1, 0, CurveKind::Line);  // entry: the end shifted along the entry's normal
+    expect_end(out.motions[1], 0, 1, CurveKind::Arc);    // convex corner: joined around (0,0)
     EXPECT_FALSE(out.motions[1].ccw);
     EXPECT_NEAR(out.motions[1].radius, 1, 1e-12);
-    EXPECT_EQ(out.motions[1].line, 2u);                   // the join belongs to the motion after the corner
-    expect_end(out.motions[2], 9, 1, CurveKind::Line);    // concave corner at (10,0): trimmed
-    expect_end(out.motions[3], 9, 10, CurveKind::Line);   // tangent into the arc
-    expect_end(out.motions[4], 1, 10, CurveKind::Arc);    // the arc's radius shrinks by the offset
+    EXPECT_EQ(out.motions[1].line, 2u);                  // the join belongs to the motion after the corner
+    expect_end(out.motions[2], 9, 1, CurveKind::Line);   // concave corner at (10,0): trimmed
+    expect_end(out.motions[3], 9, 10, CurveKind::Line);  // tangent into the arc
+    expect_end(out.motions[4], 1, 10, CurveKind::Arc);   // the arc's radius shrinks by the offset
     EXPECT_NEAR(out.motions[4].radius, 4, 1e-12);
     EXPECT_NEAR(out.motions[4].length_mm, 4 * kPi, 1e-9);
     expect_end(out.motions[5], 1, 0, CurveKind::Line);    // the last compensated piece: its end shifted
@@ -145,7 +146,7 @@ TEST(KerfPath, PieceTrimmedToNothingStays) {
     Contour c({0, -10});
     c.line(0, 0).line(10, 0).line(10, 1).line(11, 1).line(11, 0).line(20, 0).kerf(KerfSide::Off).line(25, -10);
     const Collect out = compensate(c.records);
-    const std::vector<std::pair<double, double>> want = {{-1, 0}, {0, 1},  {9, 1},  {9, 1},   {10, 2},
+    const std::vector<std::pair<double, double>> want = {{-1, 0}, {0, 1},  {9, 1},  {9, 1},  {10, 2},
                                                          {11, 2}, {12, 1}, {12, 1}, {20, 1}, {25, -10}};
     ASSERT_EQ(out.motions.size(), want.size());
     for (std::size_t i = 0; i < want.size(); ++i) {

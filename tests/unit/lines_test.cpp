@@ -37,7 +37,7 @@ TEST(LineIndex, SameLinesAsTheRule) {
     for (const std::string& t : {tricky, tricky + "\n", tricky + "\r\n", std::string("\n\r\n"), std::string("7"),
                                  essi::bench::generate_nest_tape(100000, 2)}) {
         expect_lines(t, static_cast<std::size_t>(-1));
-        expect_lines(t, 5);    // a pair CR LF split between two calls, an 8-byte skip past the slice
+        expect_lines(t, 5);  // a pair CR LF split between two calls, an 8-byte skip past the slice
         expect_lines(t, 4096);
     }
 }
@@ -70,7 +70,9 @@ namespace {
 // find_line_end against the rule written out plainly, from every position of text with tabs, control bytes,
 // lines longer than eight bytes and every kind of line end.
 TEST(Lines, FindLineEndIsTheFirstCrOrLf) {
-    const std::string text = "+100+200\n\t7\r\n0123456789abcdefghij\x01\x0B\x0D\n\r\n\x0C" "end";
+    const std::string text =
+        "+100+200\n\t7\r\n0123456789abcdefghij\x01\x0B\x0D\n\r\n\x0C"
+        "end";
     for (std::size_t pos = 0; pos <= text.size(); ++pos) {
         std::size_t want = pos;
         while (want < text.size() && text[want] != '\n' && text[want] != '\r') ++want;

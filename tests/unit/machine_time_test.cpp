@@ -96,8 +96,7 @@ TEST(MachineTimeData, HasTheCasesOfTheSemantics) {
     const std::vector<std::string> names = names_with(machine_time_dir(), ".esi");
     for (const char* name : {"line", "square", "square_17", "circle", "rapids", "junction_90", "cost_machine"})
         EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
-    for (const std::string& n : names)
-        EXPECT_FALSE(read_file(machine_time_dir() + "/" + n + ".expected").empty()) << n;
+    for (const std::string& n : names) EXPECT_FALSE(read_file(machine_time_dir() + "/" + n + ".expected").empty()) << n;
 }
 
 // Without accel_mm_s2 (the built-in profiles) nothing of it is reported, and the estimate is what it was.
@@ -119,8 +118,7 @@ TEST(MachineTimer, PiecesOfALineTakeTheLinesTime) {
     essi::MachineTimer whole(a, 0.01), pieces(a, 0.01);
     whole.line(essi::MotionKind::Cut, {0, 0}, {200, 0}, 200, feed);
     const int n = 2000;  // 0.1 mm each: 512 of them are 51.2 mm, beyond the 10 mm
-    for (int i = 0; i < n; ++i)
-        pieces.line(essi::MotionKind::Cut, {i * 0.1, 0}, {(i + 1) * 0.1, 0}, 0.1, feed);
+    for (int i = 0; i < n; ++i) pieces.line(essi::MotionKind::Cut, {i * 0.1, 0}, {(i + 1) * 0.1, 0}, 0.1, feed);
     whole.finish(0);
     pieces.finish(0);
     EXPECT_NEAR(whole.time().total_s, 2.2, 1e-12);  // 0.2 + 0.2 + 180/100
@@ -133,8 +131,7 @@ TEST(MachineTimer, TooShortForTheWindowIsPlannedAsAShorterLookAhead) {
     const double a = 500, feed = 6000;
     essi::MachineTimer pieces(a, 0.01);
     const int n = 5000;  // 0.001 mm each: half a window is 0.512 mm, far below the 10 mm to brake from 100 mm/s
-    for (int i = 0; i < n; ++i)
-        pieces.line(essi::MotionKind::Cut, {i * 0.001, 0}, {(i + 1) * 0.001, 0}, 0.001, feed);
+    for (int i = 0; i < n; ++i) pieces.line(essi::MotionKind::Cut, {i * 0.001, 0}, {(i + 1) * 0.001, 0}, 0.001, feed);
     pieces.finish(0);
     const double ideal = 2 * std::sqrt(5.0 / a);  // 5 mm never reach the feed: a triangle of peak √(a·L)
     EXPECT_GE(pieces.time().total_s, ideal - 1e-12);

@@ -62,5 +62,6 @@ TEST(MeasureMotions, SameStatisticsWhenWorkedOutAhead) {
     expect_identical(essi::bench::generate_nest_tape(400'000, 3), "generated nest tape");
     // Mirrors turn the sweep; absolute mode (82) takes nothing ahead; 83 sets an origin.
     expect_identical("7\n23\n+100+0+50+0+\n+0+100-50+50-\n26\n+100+0+50+0-\n8\n63\n", "mirrors");
-    expect_identical("81\n7\n+100+0\n+200+0+150+0+\n82\n83\n+10+10\n+300+300\n+400+200+350+200-\n8\n81\n+50+50\n63\n", "absolute");
+    expect_identical("81\n7\n+100+0\n+200+0+150+0+\n82\n83\n+10+10\n+300+300\n+400+200+350+200-\n8\n81\n+50+50\n63\n",
+                     "absolute");
 }

@@ -40,7 +40,8 @@ TEST(Placement, ZeroOffsetMovesTheMachineBoxesOnly) {
 }
 
 TEST(Placement, TheActiveEntryOfTheTableCounts) {
-    const auto parsed = parse_profile(R"({"zero_offsets": {"G54": {"x_mm": 1, "y_mm": 2}, "G55": {"x_mm": 2000, "y_mm": 0}},
+    const auto parsed =
+        parse_profile(R"({"zero_offsets": {"G54": {"x_mm": 1, "y_mm": 2}, "G55": {"x_mm": 2000, "y_mm": 0}},
                                           "zero_offset": "G55"})");
     ASSERT_TRUE(parsed.profile.has_value());
     const CheckResult r = check_tape(kRectangle, *parsed.profile);
@@ -93,7 +94,8 @@ TEST(Placement, LeavingTheTableIsE401ThroughEveryLink) {
     // 11 at (0,0): the carriage goes to (10-50, 10): off the table at the 11
     const CheckResult marker = check_tape("11\n9\n+1000+0\n10\n12\n64\n", p);
     EXPECT_TRUE(has(marker, DiagCode::E401_LeavesTable, 1));
-    EXPECT_NE(marker.diagnostics.front().message.find("tool offset"), std::string::npos) << marker.diagnostics.front().message;
+    EXPECT_NE(marker.diagnostics.front().message.find("tool offset"), std::string::npos)
+        << marker.diagnostics.front().message;
 }
 
 TEST(Placement, TraceMachinePlacesEveryRecord) {
@@ -101,8 +103,9 @@ TEST(Placement, TraceMachinePlacesEveryRecord) {
     p.zero_offsets["G54"] = {100, 200};
     p.plate_rotation_deg = 90;
     std::string out;
-    (void)trace_tape("7\n+1000+0\n+0+0+0+100+\n8\n64\n", p, [&](std::string_view s) { out += s; }, InputFormat::Essi,
-                     3, TraceView{false, true});
+    (void)trace_tape(
+        "7\n+1000+0\n+0+0+0+100+\n8\n64\n", p, [&](std::string_view s) { out += s; }, InputFormat::Essi, 3,
+        TraceView{false, true});
     EXPECT_NE(out.find("cut line (100.000,200.000)->(100.000,300.000)"), std::string::npos) << out;
     EXPECT_NE(out.find("c=(90.000,300.000) r=10.000 ccw"), std::string::npos) << out;
 }

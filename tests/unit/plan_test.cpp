@@ -95,13 +95,13 @@ TEST(CutPlanLoops, LeadInAndLeadOutAroundTheLoop) {
     const auto contours = essi::plan_contours(t.end(), essi::Profile{});
     ASSERT_EQ(contours.size(), 1u);
     const essi::PlanContour& c = contours[0];
-    EXPECT_EQ(c.first_line, 7u);   // the lead-in
+    EXPECT_EQ(c.first_line, 7u);       // the lead-in
     EXPECT_EQ(c.loop_first_line, 8u);  // the loop: lines 8-12
     EXPECT_EQ(c.loop_last_line, 12u);
-    EXPECT_EQ(c.last_line, 13u);   // the lead-out
+    EXPECT_EQ(c.last_line, 13u);  // the lead-out
     EXPECT_TRUE(c.lead_in);
     EXPECT_DOUBLE_EQ(c.area_mm2, -200.0 * 100.0);  // clockwise
-    EXPECT_EQ(c.role, ContourRole::LonePart);       // kerf left of a clockwise loop: outside
+    EXPECT_EQ(c.role, ContourRole::LonePart);      // kerf left of a clockwise loop: outside
 }
 
 TEST(CutPlanLoops, FullCircleHoleAndOvercut) {
@@ -146,18 +146,18 @@ TEST(CutPlanLoops, AStraightCutOutAndBackHasNoLoop) {
 
 TEST(CutPlanRoles, ByNestingAndByKerf) {
     Tape t;
-    t.hole(150, 100, 20);                       // a hole of the part below
-    t.part_cw(50, 40, 350, 160);                // a part: holds a hole
-    t.hole(600, 100, 80);                       // a hole (of the part around it) ...
-    t.part_cw(570, 80, 630, 120, "29", 5);      // ... with a part inside it, cut first? no: after (W604 below)
-    t.part_cw(500, 0, 700, 200, "29", 10);      // the part around both
-    t.hole(900, 100, 30, "29");                 // lone, kerf inside: a hole in the plate by its program
-    t.part_cw(1000, 50, 1100, 150, "29");       // lone, kerf outside: a part by its program
+    t.hole(150, 100, 20);                   // a hole of the part below
+    t.part_cw(50, 40, 350, 160);            // a part: holds a hole
+    t.hole(600, 100, 80);                   // a hole (of the part around it) ...
+    t.part_cw(570, 80, 630, 120, "29", 5);  // ... with a part inside it, cut first? no: after (W604 below)
+    t.part_cw(500, 0, 700, 200, "29", 10);  // the part around both
+    t.hole(900, 100, 30, "29");             // lone, kerf inside: a hole in the plate by its program
+    t.part_cw(1000, 50, 1100, 150, "29");   // lone, kerf outside: a part by its program
     t.rapid(1200, 100).function("7").to(1210, 100).to(1210, 150).to(1300, 150).to(1300, 50).to(1210, 50).to(1210, 100);
-    t.function("8");                            // lone, no compensation: unknown
+    t.function("8");  // lone, no compensation: unknown
     const auto c = essi::plan_contours(t.end(), essi::Profile{});
     ASSERT_EQ(c.size(), 8u);
-    const ContourRole want[] = {ContourRole::Hole, ContourRole::Part, ContourRole::Hole, ContourRole::Part,
+    const ContourRole want[] = {ContourRole::Hole, ContourRole::Part,     ContourRole::Hole,     ContourRole::Part,
                                 ContourRole::Part, ContourRole::LoneHole, ContourRole::LonePart, ContourRole::Lone};
     const int depth[] = {1, 0, 1, 2, 0, 0, 0, 0};
     const int parent[] = {1, -1, 4, 2, -1, -1, -1, -1};
@@ -207,13 +207,15 @@ TEST(CutPlanRules, KerfSideOfPartsHolesAndLoneContours) {
               "the kerf is outside this hole (right (30), travelling counter-clockwise): the hole comes out a kerf too "
               "small; travelling counter-clockwise, a hole's kerf belongs on the left (29)");
     EXPECT_EQ(d[1].code, DiagCode::E602_KerfIntoPart);
-    EXPECT_NE(d[1].message.find("inside this part (right (30), travelling clockwise)"), std::string::npos) << d[1].message;
+    EXPECT_NE(d[1].message.find("inside this part (right (30), travelling clockwise)"), std::string::npos)
+        << d[1].message;
     EXPECT_NE(d[1].message.find("belongs on the left (29)"), std::string::npos);
     EXPECT_EQ(d[2].code, DiagCode::N603_KerfInsideLoneContour);
     EXPECT_EQ(d[2].severity, essi::Severity::Note);
-    EXPECT_EQ(essi::diagnostic_message(d[0], essi::Lang::De),
-              "die Schnittfuge liegt außerhalb dieses Lochs (rechts (30), Fahrt gegen den Uhrzeigersinn): das Loch wird um "
-              "eine Fuge zu klein; bei Fahrt gegen den Uhrzeigersinn gehört die Fuge eines Lochs nach links (29)");
+    EXPECT_EQ(
+        essi::diagnostic_message(d[0], essi::Lang::De),
+        "die Schnittfuge liegt außerhalb dieses Lochs (rechts (30), Fahrt gegen den Uhrzeigersinn): das Loch wird um "
+        "eine Fuge zu klein; bei Fahrt gegen den Uhrzeigersinn gehört die Fuge eines Lochs nach links (29)");
 }
 
 TEST(CutPlanRules, PartBeforeItsHolesNamesThem) {
@@ -229,7 +231,8 @@ TEST(CutPlanRules, PartBeforeItsHolesNamesThem) {
     EXPECT_EQ(d[0].related[0].line, 20u);
     EXPECT_EQ(d[0].related[1].line, 29u);
     EXPECT_EQ(essi::related_message(d[0].related[0], essi::Lang::En), "a hole cut after its part");
-    EXPECT_NE(d[0].message.find("before 2 holes inside it (the first at lines 20-21)"), std::string::npos) << d[0].message;
+    EXPECT_NE(d[0].message.find("before 2 holes inside it (the first at lines 20-21)"), std::string::npos)
+        << d[0].message;
     // Holes first: nothing to say.
     Tape good;
     good.hole(110, 100, 20).hole(210, 100, 20).part_cw(60, 50, 260, 150);
@@ -250,8 +253,9 @@ TEST(CutPlanRules, CollisionsOverlapAndTooClose) {
     ASSERT_EQ(d[0].related.size(), 1u);
     EXPECT_EQ(d[0].related[0].line, 7u);
     EXPECT_EQ(d[1].code, DiagCode::E605_PartsCollide);
-    EXPECT_NE(d[1].message.find("comes within 1.000 mm of the part at lines 20-25, closer than the kerf width (2.000 mm)"),
-              std::string::npos)
+    EXPECT_NE(
+        d[1].message.find("comes within 1.000 mm of the part at lines 20-25, closer than the kerf width (2.000 mm)"),
+        std::string::npos)
         << d[1].message;
     EXPECT_TRUE(d[1].overlap.empty());
     // Without compensation only a real overlap counts, and the roles are unknown: a note.
@@ -268,7 +272,9 @@ TEST(CutPlanRules, ACrowdedColumnAndARowGiveTheSameFindings) {
     for (const bool column : {true, false}) {
         SCOPED_TRACE(column ? "one column" : "one row");
         Tape t;
-        const auto corner = [&](int k) { return column ? std::pair{100.0, 100.0 + 20 * k} : std::pair{100.0 + 20 * k, 100.0}; };
+        const auto corner = [&](int k) {
+            return column ? std::pair{100.0, 100.0 + 20 * k} : std::pair{100.0 + 20 * k, 100.0};
+        };
         for (int k = 0; k < 120; ++k) {
             const auto [x, y] = corner(k);
             if (k == 60) t.hole(x + 5, y + 5, 2);  // (a hole in part 60, cut before it)
@@ -280,7 +286,8 @@ TEST(CutPlanRules, ACrowdedColumnAndARowGiveTheSameFindings) {
         ASSERT_EQ(d.size(), 1u) << codes_of(d);
         EXPECT_EQ(d[0].code, DiagCode::E605_PartsCollide);
         ASSERT_EQ(d[0].related.size(), 1u);
-        EXPECT_EQ(d[0].related[0].line, 2 + 30 * 13 + 5u);  // (part 30's first cut: 30 parts of 13 lines and the feed before it)
+        EXPECT_EQ(d[0].related[0].line,
+                  2 + 30 * 13 + 5u);  // (part 30's first cut: 30 parts of 13 lines and the feed before it)
     }
 }
 
@@ -330,13 +337,16 @@ TEST(CutPlanRules, FeedDwellLeadInAndTableFromTheProfile) {
     const auto d = plan_of(check(t.end(), p));
     ASSERT_EQ(d.size(), 4u) << codes_of(d);
     EXPECT_EQ(d[0].code, DiagCode::W609_DwellTooLong);  // line 7
-    EXPECT_EQ(d[0].message, "a dwell of 600 s, longer than the profile's max_dwell_s (120 s); check the dwell's value and unit");
+    EXPECT_EQ(d[0].message,
+              "a dwell of 600 s, longer than the profile's max_dwell_s (120 s); check the dwell's value and unit");
     EXPECT_EQ(d[1].code, DiagCode::W608_FeedOutOfRange);  // once, at the first cut at 30 mm/min (line 9)
     EXPECT_EQ(d[1].line, 9u);
     ASSERT_EQ(d[1].related.size(), 1u);
-    EXPECT_EQ(d[1].related[0].line, 2u);  // where 39+30 is
+    EXPECT_EQ(d[1].related[0].line, 2u);                      // where 39+30 is
     EXPECT_EQ(d[2].code, DiagCode::W611_CutLargerThanTable);  // the first cut, 200 mm on a 150 mm table
-    EXPECT_NE(d[2].message.find("this cut is 200.000 x 100.000 mm, larger than the table's travel (150.000 x 1000.000 mm)"), std::string::npos)
+    EXPECT_NE(
+        d[2].message.find("this cut is 200.000 x 100.000 mm, larger than the table's travel (150.000 x 1000.000 mm)"),
+        std::string::npos)
         << d[2].message;
     EXPECT_EQ(d[3].code, DiagCode::W610_PierceWithoutLeadIn);  // the second part (110 mm wide) fits and has a lead-in
     // The defaults: no lead-in asked for, no table.
@@ -361,7 +371,7 @@ TEST(CutPlanRules, AHoleInThePlateOverAPartWhicheverIsCutFirst) {
     for (const bool hole_first : {true, false}) {
         SCOPED_TRACE(hole_first ? "hole first" : "part first");
         Tape t;
-        if (hole_first) t.hole(260, 100, 20, "29");      // lone, kerf inside: a hole in the plate, over the part's edge
+        if (hole_first) t.hole(260, 100, 20, "29");  // lone, kerf inside: a hole in the plate, over the part's edge
         t.part_cw(60, 50, 260, 150);
         if (!hole_first) t.hole(260, 100, 20, "29");
         const auto d = plan_of(check(t.end()));
@@ -370,7 +380,8 @@ TEST(CutPlanRules, AHoleInThePlateOverAPartWhicheverIsCutFirst) {
             if (x.code != DiagCode::E605_PartsCollide) continue;
             ++collisions;
             EXPECT_NE(x.message.find(hole_first ? "this part overlaps the hole in the plate at lines 7-8"
-                                                : "this hole in the plate (a lone contour with its kerf inside) overlaps the part at lines 7-12"),
+                                                : "this hole in the plate (a lone contour with its kerf inside) "
+                                                  "overlaps the part at lines 7-12"),
                       std::string::npos)
                 << x.message;
             EXPECT_EQ(x.overlap.size(), 2u);
@@ -401,7 +412,9 @@ TEST(CutPlanRules, PartsWithoutCompensationThatTouch) {
     const auto d = plan_of(check(t.end()));
     ASSERT_EQ(d.size(), 1u) << codes_of(d);
     EXPECT_EQ(d[0].code, DiagCode::E605_PartsCollide);
-    EXPECT_NE(d[0].message.find("this part touches or overlaps the part at lines 16-21: neither has kerf compensation"), std::string::npos) << d[0].message;
+    EXPECT_NE(d[0].message.find("this part touches or overlaps the part at lines 16-21: neither has kerf compensation"),
+              std::string::npos)
+        << d[0].message;
 }
 
 TEST(CutPlanRules, TheHeadsOfAThreeAxisTapeAreComparedApart) {
@@ -422,11 +435,11 @@ TEST(CutPlanRules, TheHeadsOfAThreeAxisTapeAreComparedApart) {
 TEST(CutPlanDeferred, KeptPlatesGiveTheDiagnosticsOfTheCheck) {
     Tape t;
     t.part_cw(60, 50, 260, 150);
-    t.part_cw(240, 50, 440, 150, "29", 5);      // E605 with the first
+    t.part_cw(240, 50, 440, 150, "29", 5);  // E605 with the first
     t.hole(500, 100, 20).part_cw(460, 50, 560, 150);
     t.part_cw(600, 50, 700, 150).hole(650, 100, 20);  // W604: the part before its hole
     t.next_plate();
-    t.part_cw(60, 50, 260, 150).part_cw(60, 50, 260, 150);  // W607 on the second plate
+    t.part_cw(60, 50, 260, 150).part_cw(60, 50, 260, 150);     // W607 on the second plate
     t.function("39+30").part_cw(300, 50, 400, 150, "29", 50);  // W608, and E606 across the first part
     const std::string tape = t.end();
     {

@@ -150,20 +150,22 @@ TEST(ProfileParse, ValuesBeyondTheirRangeAreErrorsNamingKeyAndRange) {
     struct Case {
         const char* json;
         const char* key;
-    } cases[] = {{R"({"unit_mm": 1e308})", "\"unit_mm\" must be between"},
-                 {R"({"feed_mm_min": 1e300})", "\"feed_mm_min\" must be between"},
-                 {R"({"rapid_mm_min": -5})", "\"rapid_mm_min\" must be between"},
-                 {R"({"pierce_time_s": 1e20})", "\"pierce_time_s\" must be between"},
-                 {R"({"kerf": 1e300})", "\"kerf\" must be between"},
-                 {R"({"setup_offset_x_mm": 1e300})", "\"setup_offset_x_mm\" must be between"},
-                 {R"({"plate_rotation_deg": 400})", "\"plate_rotation_deg\" must be a number between -360 and 360"},
-                 {R"({"zero_offset": "G57"})", "\"zero_offset\" names \"G57\", which \"zero_offsets\" does not have"},
-                 {R"({"zero_offsets": {"G55": {"x_mm": 1}}})", "\"zero_offsets\" entry \"G55\" needs a number \"y_mm\""},
-                 {R"({"zero_offsets": {"G55": {"x_mm": 1, "y_mm": 2, "z_mm": 3}}})", "unknown key \"z_mm\""},
-                 {R"({"tool_offsets": {"scribe": {"x_mm": 1, "y_mm": 2}}})", "\"tool_offsets\": unknown key \"scribe\""},
-                 {R"({"tool_offsets": {"marker": {"x_mm": 1e300, "y_mm": 2}}})", "\"tool_offsets.marker\" needs a number \"x_mm\""},
-                 {R"({"table": {"min_x_mm": -1e300, "min_y_mm": 0, "max_x_mm": 10, "max_y_mm": 10}})",
-                  "\"table\" needs a number \"min_x_mm\" between"}};
+    } cases[] = {
+        {R"({"unit_mm": 1e308})", "\"unit_mm\" must be between"},
+        {R"({"feed_mm_min": 1e300})", "\"feed_mm_min\" must be between"},
+        {R"({"rapid_mm_min": -5})", "\"rapid_mm_min\" must be between"},
+        {R"({"pierce_time_s": 1e20})", "\"pierce_time_s\" must be between"},
+        {R"({"kerf": 1e300})", "\"kerf\" must be between"},
+        {R"({"setup_offset_x_mm": 1e300})", "\"setup_offset_x_mm\" must be between"},
+        {R"({"plate_rotation_deg": 400})", "\"plate_rotation_deg\" must be a number between -360 and 360"},
+        {R"({"zero_offset": "G57"})", "\"zero_offset\" names \"G57\", which \"zero_offsets\" does not have"},
+        {R"({"zero_offsets": {"G55": {"x_mm": 1}}})", "\"zero_offsets\" entry \"G55\" needs a number \"y_mm\""},
+        {R"({"zero_offsets": {"G55": {"x_mm": 1, "y_mm": 2, "z_mm": 3}}})", "unknown key \"z_mm\""},
+        {R"({"tool_offsets": {"scribe": {"x_mm": 1, "y_mm": 2}}})", "\"tool_offsets\": unknown key \"scribe\""},
+        {R"({"tool_offsets": {"marker": {"x_mm": 1e300, "y_mm": 2}}})",
+         "\"tool_offsets.marker\" needs a number \"x_mm\""},
+        {R"({"table": {"min_x_mm": -1e300, "min_y_mm": 0, "max_x_mm": 10, "max_y_mm": 10}})",
+         "\"table\" needs a number \"min_x_mm\" between"}};
     for (const Case& c : cases) {
         const ProfileResult r = parse_profile(c.json);
         EXPECT_FALSE(r.profile.has_value()) << c.json;

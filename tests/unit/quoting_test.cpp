@@ -37,14 +37,15 @@ TEST(Quoting, EveryByteInEveryQuotingPlaceIsEscaped) {
         // W124: a G word that is no code, the byte right after it (and a line after that one).
         expect_safe(check_tape("%\nG90\nM03\nG-1" + x + "\nM05\nM30\n", din, InputFormat::Eia).diagnostics, b, "W124");
         // E122: a number of too many digits, the byte after its digits.
-        expect_safe(check_tape("%\nG90\nX12345678901234" + x + "\nM30\n", din, InputFormat::Eia).diagnostics, b, "E122");
+        expect_safe(check_tape("%\nG90\nX12345678901234" + x + "\nM30\n", din, InputFormat::Eia).diagnostics, b,
+                    "E122");
         // E119: the byte where a letter should be.
         expect_safe(check_tape("%\nG90\nX1" + x + "Y2\nM30\n", din, InputFormat::Eia).diagnostics, b, "E119");
         // E101/E102/W109 and E103: ESSI bytes, and a function code of too many digits before the byte.
         expect_safe(check_tape("+10+0" + x + "\n1234567890123" + x + "\n64\n", Profile{}).diagnostics, b, "ESSI");
         // The dialect's evidence (N403) quotes a line of the tape.
-        expect_safe(check_tape("7\n+10+0\n8\n/" + x + "\n", setup_tape("7\n+10+0\n8\n/" + x + "\n", InputFormat::Essi,
-                                                                       *builtin_profile("iso6582")))
+        expect_safe(check_tape("7\n+10+0\n8\n/" + x + "\n",
+                               setup_tape("7\n+10+0\n8\n/" + x + "\n", InputFormat::Essi, *builtin_profile("iso6582")))
                         .diagnostics,
                     b, "N403");
     }
@@ -78,7 +79,7 @@ TEST(Quoting, AProfileNameIsPrintableAndShort) {
     ASSERT_TRUE(ok.profile);
     EXPECT_EQ(ok.profile->name, "Werk 2 – Plasma 零件");
     for (const std::string& bad : {std::string(R"({"name": "a\u001b[2Jb"})"), std::string(R"({"name": "two\nlines"})"),
-                                  std::string(R"({"name": ""})"), R"({"name": ")" + std::string(65, 'n') + "\"}"}) {
+                                   std::string(R"({"name": ""})"), R"({"name": ")" + std::string(65, 'n') + "\"}"}) {
         const ProfileResult r = parse_profile(bad);
         EXPECT_FALSE(r.profile) << bad;
         ASSERT_EQ(r.diagnostics.size(), 1u) << bad;

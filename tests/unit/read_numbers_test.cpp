@@ -91,7 +91,7 @@ TEST(ReadNumbers, SameBlockFarFromAndAtTheEnd) {
         {"+1234567890+0", {}, "E104"},
         {"+10+20+5+5+", {10, 20, 5, 5, 0}, nullptr},
         {"+10+20+5+5-+", {10, 20, 5, 5, 0, 0}, nullptr},  // a parabola: TC -, TP +
-        {"+1+2+3+4+5+6+7+8+9", {}, "E105"},  // more words than the fast path takes: the general path
+        {"+1+2+3+4+5+6+7+8+9", {}, "E105"},               // more words than the fast path takes: the general path
         {"+1+2+3", {}, "E105"},
         {"7", {}, nullptr},
         {"39+1400", {1400}, nullptr},

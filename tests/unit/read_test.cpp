@@ -507,8 +507,7 @@ TEST(ReadChars, InvalidCharacterE101) {
     EXPECT_EQ(d->severity, Severity::Error);
     EXPECT_EQ(d->line, 2u);
     EXPECT_EQ(d->column, 5u);
-    const bool names_byte = d->message.find('X') != std::string::npos ||
-                            d->message.find("0x58") != std::string::npos ||
+    const bool names_byte = d->message.find('X') != std::string::npos || d->message.find("0x58") != std::string::npos ||
                             d->message.find("0X58") != std::string::npos;
     EXPECT_TRUE(names_byte) << d->message;
     EXPECT_TRUE(t.has_errors());
@@ -643,7 +642,8 @@ TEST(ReadBlock, WholeTapeReservationStaysExact) {
         const Tape t = rd(tape);
         const std::string s(tape);
         const std::size_t lines = static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')) + 1;
-        const std::size_t signs = static_cast<std::size_t>(std::count(s.begin(), s.end(), '+') + std::count(s.begin(), s.end(), '-'));
+        const std::size_t signs =
+            static_cast<std::size_t>(std::count(s.begin(), s.end(), '+') + std::count(s.begin(), s.end(), '-'));
         const std::size_t room_for_one_line = 8;  // the reader's kMaxPlainWords
         EXPECT_EQ(t.memory_bytes(), lines * sizeof(essi::Block) + (signs + room_for_one_line) * sizeof(std::int32_t) +
                                         (lines / Tape::kWordIndexStride + 1) * sizeof(std::uint32_t));

@@ -49,10 +49,8 @@ FileReport sample_bad() {
     f.path = "b.esi";
     f.result.diagnostics.push_back(
         diag(essi::Severity::Error, essi::DiagCode::E101_InvalidCharacter, 2, 7, "invalid character '#'"));
-    f.result.diagnostics.push_back(
-        diag(essi::Severity::Warning, essi::DiagCode::W114_NoProgramEnd, 9, 1, "no end"));
-    f.result.diagnostics.push_back(
-        diag(essi::Severity::Error, essi::DiagCode::E301_ArcEndNotOnCircle, 12, 1, "arc"));
+    f.result.diagnostics.push_back(diag(essi::Severity::Warning, essi::DiagCode::W114_NoProgramEnd, 9, 1, "no end"));
+    f.result.diagnostics.push_back(diag(essi::Severity::Error, essi::DiagCode::E301_ArcEndNotOnCircle, 12, 1, "arc"));
     return f;
 }
 

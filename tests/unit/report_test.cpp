@@ -30,16 +30,16 @@ void expect_box(const Box& b, double x0, double y0, double x1, double y1, const 
 // rapid 100 mm, cut 50 mm + semicircle r=10 (bulging to x=110), mark 30 mm, travel 70 mm
 const char* const kTapeA =
     "5\n"
-    "+1000+0\n"        // rapid (0,0) -> (100,0)
+    "+1000+0\n"  // rapid (0,0) -> (100,0)
     "6\n"
     "7\n"
     "+0+500\n"         // cut (100,0) -> (100,50)
     "+0+200+0+100+\n"  // cut arc (100,50) -> (100,70) around (100,60), ccw: through (110,60)
     "8\n"
     "9\n"
-    "+300+0\n"         // mark (100,70) -> (130,70)
+    "+300+0\n"  // mark (100,70) -> (130,70)
     "10\n"
-    "+0-700\n"         // travel (130,70) -> (130,0)
+    "+0-700\n"  // travel (130,70) -> (130,0)
     "64\n";
 
 }  // namespace
@@ -102,8 +102,7 @@ TEST(ReportStats, WoydaFeedDwell) {
 
 TEST(ReportStats, Pierces) {
     // 7 on: pierce; 13 while 7 on: none; 8 with 13 still on: still cutting; 14: off; 7: pierce; 53: pierce
-    const char* tape =
-        "7\n+100+0\n13\n+100+0\n8\n+100+0\n14\n7\n+100+0\n8\n53\n+100+0\n54\n+100+0\n64\n";
+    const char* tape = "7\n+100+0\n13\n+100+0\n8\n+100+0\n14\n7\n+100+0\n8\n53\n+100+0\n54\n+100+0\n64\n";
     CheckResult r = check_tape(tape, Profile{});
     EXPECT_EQ(r.stats.pierces, 3u);
     EXPECT_NEAR(r.stats.cut_length_mm, 50.0, kLenTol);
@@ -282,6 +281,7 @@ public:
         EXPECT_TRUE(same_bits(static_cast<double>(l.end_y) * profile_.unit_mm, l.end.y));
         RecordingSink::on_line(l);
     }
+
 private:
     const Profile& profile_;
 };
@@ -347,5 +347,6 @@ TEST(TextReport, FileReportTextIsWhatCheckPrintsAndCsvQuotes) {
     EXPECT_EQ(csv.rfind("file,severity,code,line,column,message\r\n\"a,b.esi\",warning,W201,4,1,", 0), 0u) << csv;
     EXPECT_EQ(csv.substr(csv.size() - 2), "\r\n");
     f.result.diagnostics[0].message = "say \"x\"";
-    EXPECT_NE(essi::diagnostics_csv(std::span<const essi::FileReport>(&f, 1)).find(",\"say \"\"x\"\"\"\r\n"), std::string::npos);
+    EXPECT_NE(essi::diagnostics_csv(std::span<const essi::FileReport>(&f, 1)).find(",\"say \"\"x\"\"\"\r\n"),
+              std::string::npos);
 }

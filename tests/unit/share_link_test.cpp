@@ -9,7 +9,8 @@ using namespace essi;
 
 TEST(ShareLink, ReadsTheInlineLink) {
     const std::string packed("\x01\x02\xFF\x00\x7F", 5);
-    const ShareLink l = parse_share_fragment("#c=12.5,-3,0.25&l=17&n=part+7%2Fa.esi&t=" + base64url_encode(packed) + "&p=woyda");
+    const ShareLink l =
+        parse_share_fragment("#c=12.5,-3,0.25&l=17&n=part+7%2Fa.esi&t=" + base64url_encode(packed) + "&p=woyda");
     ASSERT_TRUE(l.view.has_value());
     EXPECT_DOUBLE_EQ(l.view->x, 12.5);
     EXPECT_DOUBLE_EQ(l.view->y, -3);
@@ -115,7 +116,8 @@ TEST(ShareLink, AProfileNameReadsBackAsWritten) {
 }
 
 TEST(ShareLink, BadReadingFieldsAreProblems) {
-    const ShareLink l = parse_share_fragment("i=gcode&b=-1&pj=" + base64url_encode(std::string(kMaxShareProfileBytes + 1, 'x')) + "&p=ok");
+    const ShareLink l = parse_share_fragment(
+        "i=gcode&b=-1&pj=" + base64url_encode(std::string(kMaxShareProfileBytes + 1, 'x')) + "&p=ok");
     EXPECT_FALSE(l.input.has_value());
     EXPECT_FALSE(l.tape_bytes.has_value());
     EXPECT_TRUE(l.profile_json.empty());
@@ -134,9 +136,9 @@ TEST(ShareLink, StoreIdIsSixtyFourLowerCaseHexDigits) {
     EXPECT_TRUE(is_store_id(std::string(64, '0')));
     EXPECT_FALSE(is_store_id(""));
     EXPECT_FALSE(is_store_id("abc"));
-    EXPECT_FALSE(is_store_id(id.substr(1)));                  // 63 digits
-    EXPECT_FALSE(is_store_id(id + "0"));                      // 65 digits
-    EXPECT_FALSE(is_store_id(std::string(64, 'A')));          // upper case
+    EXPECT_FALSE(is_store_id(id.substr(1)));          // 63 digits
+    EXPECT_FALSE(is_store_id(id + "0"));              // 65 digits
+    EXPECT_FALSE(is_store_id(std::string(64, 'A')));  // upper case
     EXPECT_FALSE(is_store_id(std::string(63, 'a') + "/"));
     EXPECT_FALSE(is_store_id(std::string(63, 'a') + "g"));
     EXPECT_EQ(parse_share_fragment("share=" + id).store_id, id);

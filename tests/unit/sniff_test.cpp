@@ -12,24 +12,25 @@ using essi::looks_binary;
 using essi::looks_like_essi;
 
 TEST(Sniff, TapesAndOtherFiles) {
-    EXPECT_TRUE(looks_like_essi("%\r\n3\r\nPART 12 - any text\r\n4\r\n39+3000\r\n+100+200\r\n7\r\n-100\r\n8\r\n63\r\n"));
+    EXPECT_TRUE(
+        looks_like_essi("%\r\n3\r\nPART 12 - any text\r\n4\r\n39+3000\r\n+100+200\r\n7\r\n-100\r\n8\r\n63\r\n"));
     EXPECT_TRUE(looks_like_essi("\xEF\xBB\xBF+100+200\n-50+0\n64\n"));
     EXPECT_TRUE(looks_like_essi("+100+200\n+5+5 \n+1x\n0\n/\n"));  // one bad line of five is still a tape
     EXPECT_FALSE(looks_like_essi("# README\nSome text\n"));
     EXPECT_FALSE(looks_like_essi("{\"a\": 1}\n"));
     EXPECT_FALSE(looks_like_essi("1 fn 39 value=30 tools=-\n2 fn 29 tools=-\n"));  // a trace
-    EXPECT_FALSE(looks_like_essi("123\n"));                                         // one line says nothing
+    EXPECT_FALSE(looks_like_essi("123\n"));                                        // one line says nothing
     EXPECT_FALSE(looks_like_essi(std::string("+1+2\n\0\n+3+4\n", 12)));
     EXPECT_FALSE(looks_like_essi(""));
 }
 
 TEST(Sniff, BinaryBytes) {
-    EXPECT_TRUE(looks_binary(std::string("+1+2\n\0", 6)));                   // a NUL anywhere in the head
-    EXPECT_FALSE(looks_binary("+100+200\r\n\t7\x0b\x0c\n63\n"));             // tab, VT, FF are text
+    EXPECT_TRUE(looks_binary(std::string("+1+2\n\0", 6)));        // a NUL anywhere in the head
+    EXPECT_FALSE(looks_binary("+100+200\r\n\t7\x0b\x0c\n63\n"));  // tab, VT, FF are text
     std::string mostly_text(100, '+');
-    mostly_text[10] = '\x01';                                                // 1 control byte in 100
+    mostly_text[10] = '\x01';  // 1 control byte in 100
     EXPECT_FALSE(looks_binary(mostly_text));
-    for (int k = 0; k < 5; ++k) mostly_text[20 + k] = '\x1b';               // 6 in 100: more than 1 in 20
+    for (int k = 0; k < 5; ++k) mostly_text[20 + k] = '\x1b';  // 6 in 100: more than 1 in 20
     EXPECT_TRUE(looks_binary(mostly_text));
     EXPECT_FALSE(looks_like_essi(mostly_text + "\n+1+1\n"));
     EXPECT_FALSE(looks_binary(""));

@@ -47,7 +47,8 @@ void expect_same(const Tape& a, const Tape& b, const std::string& what) {
         ASSERT_TRUE(std::equal(wa.begin(), wa.end(), wb.begin(), wb.end())) << what << ": words of block " << i;
     }
     const auto all_a = a.all_words(), all_b = b.all_words();
-    EXPECT_TRUE(std::equal(all_a.begin(), all_a.end(), all_b.begin(), all_b.end())) << what;  // (Emscripten's libc++ has no ranges::equal)
+    EXPECT_TRUE(std::equal(all_a.begin(), all_a.end(), all_b.begin(), all_b.end()))
+        << what;  // (Emscripten's libc++ has no ranges::equal)
     Tape::WordCursor ca(a), cb(b);
     for (std::size_t i = 0; i < a.size(); ++i) {
         const auto wa = ca.next(i), wb = cb.next(i);
@@ -76,12 +77,14 @@ TEST(TapeAppend, EmptyTapeStaysEmpty) {
 
 TEST(TapeAppend, SmallTapeAnyChunkSize) {
     const Profile p;
-    const std::string text = "3\r\nheader\r\n4\r\n39+1000\r\n5\r\n+100+0\r\n6\r\n29\r\n7\r\n+100+0\r\n+0+100-50+0+\r\n"
-                             "8\r\n38\r\n64\r\n+1+1\r\n";
+    const std::string text =
+        "3\r\nheader\r\n4\r\n39+1000\r\n5\r\n+100+0\r\n6\r\n29\r\n7\r\n+100+0\r\n+0+100-50+0+\r\n"
+        "8\r\n38\r\n64\r\n+1+1\r\n";
     const Tape whole = read_tape(text, p);
     ASSERT_TRUE(whole.has_program_end());
     ASSERT_LT(whole.end_block(), whole.size() + 1);
-    for (std::size_t n : {1u, 2u, 3u, 5u, 64u, 1000u}) expect_same(read_appended(text, p, n), whole, "chunk " + std::to_string(n));
+    for (std::size_t n : {1u, 2u, 3u, 5u, 64u, 1000u})
+        expect_same(read_appended(text, p, n), whole, "chunk " + std::to_string(n));
 }
 
 TEST(TapeAppend, TapeWithoutEndAndWithErrors) {
@@ -99,7 +102,8 @@ TEST(TapeAppend, GeneratedNestTapeAcrossManyIndexStrides) {
     const Tape whole = read_tape(text, p);
     ASSERT_GT(whole.size(), 10 * Tape::kWordIndexStride);
     // Chunk sizes that are and are not multiples of the word index stride.
-    for (std::size_t n : {63u, 64u, 100u, 8192u}) expect_same(read_appended(text, p, n), whole, "chunk " + std::to_string(n));
+    for (std::size_t n : {63u, 64u, 100u, 8192u})
+        expect_same(read_appended(text, p, n), whole, "chunk " + std::to_string(n));
     expect_same(read_appended(text, p, 100, true), whole, "reserved first");
 }
 
@@ -111,7 +115,8 @@ TEST(TapeAppend, EveryExampleTape) {
         if (e.path().extension() != ".esi") continue;
         const std::string text = read_file(e.path().string());
         const Tape whole = read_tape(text, p);
-        for (std::size_t c : {1u, 7u, 4096u}) expect_same(read_appended(text, p, c), whole, e.path().filename().string());
+        for (std::size_t c : {1u, 7u, 4096u})
+            expect_same(read_appended(text, p, c), whole, e.path().filename().string());
         ++n;
     }
     EXPECT_GT(n, 3u);

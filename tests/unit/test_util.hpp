@@ -22,10 +22,10 @@
 namespace essi_test {
 
 // Named tolerances (mm, rad, s). Positions are unit increments times 0.1 mm: exact to rounding.
-constexpr double kPosTol = 1e-9;     // mm, positions that are integer units * unit_mm
-constexpr double kLenTol = 1e-6;     // mm, closed-form lengths
-constexpr double kAngTol = 1e-9;     // rad, sweeps
-constexpr double kTimeTol = 1e-6;    // s, time estimates
+constexpr double kPosTol = 1e-9;   // mm, positions that are integer units * unit_mm
+constexpr double kLenTol = 1e-6;   // mm, closed-form lengths
+constexpr double kAngTol = 1e-9;   // rad, sweeps
+constexpr double kTimeTol = 1e-6;  // s, time estimates
 
 // The lines of `s` by the line-end rule (CR, LF, CR LF, LF CR), written out the plain way: what the line index
 // and the reader must agree with. A line end at the very end starts no line.
@@ -201,8 +201,8 @@ inline void expect_same_record(const essi::MotionRecord& got, const essi::Motion
     ASSERT_EQ(got.head, want.head) << at;
     ASSERT_EQ(got.kerf, want.kerf) << at;
     ASSERT_EQ(got.ccw, want.ccw) << at;
-    for (const auto& [x, y] : {std::pair{got.start, want.start}, std::pair{got.end, want.end},
-                               std::pair{got.centre, want.centre}})
+    for (const auto& [x, y] :
+         {std::pair{got.start, want.start}, std::pair{got.end, want.end}, std::pair{got.centre, want.centre}})
         ASSERT_TRUE(same_bits(x.x, y.x) && same_bits(x.y, y.y)) << at;
     for (const auto& [x, y] : {std::pair{got.radius, want.radius}, std::pair{got.end_radius, want.end_radius},
                                std::pair{got.sweep, want.sweep}, std::pair{got.length_mm, want.length_mm}})
@@ -218,9 +218,9 @@ inline void expect_same_record(const essi::MotionRecord& got, const essi::Motion
     }
 }
 
-#define EXPECT_POINT_NEAR(p, ex, ey, tol)                 \
-    do {                                                  \
-        const essi::Point essi_pt_ = (p);                 \
+#define EXPECT_POINT_NEAR(p, ex, ey, tol)                   \
+    do {                                                    \
+        const essi::Point essi_pt_ = (p);                   \
         EXPECT_NEAR(essi_pt_.x, (ex), (tol)) << "x of " #p; \
         EXPECT_NEAR(essi_pt_.y, (ey), (tol)) << "y of " #p; \
     } while (0)

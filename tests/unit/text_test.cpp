@@ -16,7 +16,9 @@ using essi::is_valid_utf8;
 
 TEST(Text, ValidUtf8) {
     EXPECT_TRUE(is_valid_utf8("plain ASCII"));
-    EXPECT_TRUE(is_valid_utf8("\xC3\x9C" "ber \xE4\xB8\xAD\xE6\x96\x87 \xF0\x9F\x94\xA5"));  // Ü, 中文, an emoji
+    EXPECT_TRUE(
+        is_valid_utf8("\xC3\x9C"
+                      "ber \xE4\xB8\xAD\xE6\x96\x87 \xF0\x9F\x94\xA5"));  // Ü, 中文, an emoji
     EXPECT_FALSE(is_valid_utf8("\xFF"));
     EXPECT_FALSE(is_valid_utf8("\xC3"));              // cut off
     EXPECT_FALSE(is_valid_utf8("\xC0\xAF"));          // overlong '/'
@@ -27,7 +29,10 @@ TEST(Text, ValidUtf8) {
 
 TEST(Text, DisplayTextKeepsTextAndNamesTheRest) {
     EXPECT_EQ(display_text("tapes/PR002.esi"), "tapes/PR002.esi");
-    EXPECT_EQ(display_text("Z\xC3\xBC" "ge/\xE9\x92\xA2\xE6\x9D\xBF.esi"), "Z\xC3\xBC" "ge/\xE9\x92\xA2\xE6\x9D\xBF.esi");
+    EXPECT_EQ(display_text("Z\xC3\xBC"
+                           "ge/\xE9\x92\xA2\xE6\x9D\xBF.esi"),
+              "Z\xC3\xBC"
+              "ge/\xE9\x92\xA2\xE6\x9D\xBF.esi");
     EXPECT_EQ(display_text("bad\xFF\xFE.esi"), "bad\\xFF\\xFE.esi");
     EXPECT_EQ(display_text("a\x1B[31m\x7F\tb\n"), "a\\x1B[31m\\x7F\\x09b\\x0A");
     EXPECT_EQ(display_text(std::string("nul\0x", 5)), "nul\\x00x");
@@ -38,8 +43,14 @@ TEST(Text, DisplayTextKeepsTextAndNamesTheRest) {
 TEST(Text, ExcerptQuotesTheStartAtACharacterBoundary) {
     EXPECT_EQ(essi::excerpt("12345", 12), "12345");
     EXPECT_EQ(essi::excerpt("123456789012345", 12), "123456789012...");
-    EXPECT_EQ(essi::excerpt("ab\xE4\xB8\xAD" "cd", 3), "ab...");  // not inside the 3-byte character
-    EXPECT_EQ(essi::excerpt("ab\xE4\xB8\xAD" "cd", 5), "ab\xE4\xB8\xAD...");
+    EXPECT_EQ(essi::excerpt("ab\xE4\xB8\xAD"
+                            "cd",
+                            3),
+              "ab...");  // not inside the 3-byte character
+    EXPECT_EQ(essi::excerpt("ab\xE4\xB8\xAD"
+                            "cd",
+                            5),
+              "ab\xE4\xB8\xAD...");
 }
 
 }  // namespace
@@ -62,8 +73,9 @@ TEST(Text, KerfValuesSayWidthOrOffset) {
     EXPECT_EQ(essi::kerf_offset_text(essi::KerfSide::Left, 1.5), "torch 1.500 mm to the left (a cut 3.000 mm wide)");
     // a 29 block in words: the profile's kerf, as a width (iso6582)
     const essi::Profile iso;
-    EXPECT_NE(essi::describe_function(29, false, 0, iso).find("the profile's kerf width 2 mm (the torch 1 mm to the side)"),
-              std::string::npos)
+    EXPECT_NE(
+        essi::describe_function(29, false, 0, iso).find("the profile's kerf width 2 mm (the torch 1 mm to the side)"),
+        std::string::npos)
         << essi::describe_function(29, false, 0, iso);
     EXPECT_NE(essi::describe_function(30, true, 30, iso).find("kerf width 3 mm"), std::string::npos);
 }

@@ -42,8 +42,8 @@ TEST(ViewerColourBy, TwoFeedsAreTheRampsEnds) {
     EXPECT_TRUE(b.colour_legend(Lang::En).empty());
     const std::map<int, int> by_feed = kinds_drawn(*doc, ColourBy::Feed, b);
     EXPECT_EQ(by_feed.count(kCut), 0u);
-    EXPECT_EQ(by_feed.at(kFirstBin), 1);  // 150 mm/min
-    EXPECT_EQ(by_feed.at(kLastBin), 3);   // 300 mm/min
+    EXPECT_EQ(by_feed.at(kFirstBin), 1);                  // 150 mm/min
+    EXPECT_EQ(by_feed.at(kLastBin), 3);                   // 300 mm/min
     EXPECT_EQ(by_feed.at(kTravel), by_kind.at(kTravel));  // (the travel keeps its kind)
     const auto legend = b.colour_legend(Lang::En);
     ASSERT_EQ(legend.size(), 2u);

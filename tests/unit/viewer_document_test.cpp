@@ -18,17 +18,19 @@
 #include "test_util.hpp"
 
 using namespace essi;
+using essi::viewer::Document;
+using essi::viewer::DocumentLoader;
+using essi::viewer::LineBlocks;
 using essi_test::expect_same_record;
 using essi_test::RecordMatch;
 using essi_test::split_lines;
 using essi_test::tricky_lines_text;
-using essi::viewer::Document;
-using essi::viewer::DocumentLoader;
-using essi::viewer::LineBlocks;
 
 namespace {
 
-std::unique_ptr<Document> load(const std::string& bytes, const Profile& p) { return essi_test::load_document(bytes, p); }
+std::unique_ptr<Document> load(const std::string& bytes, const Profile& p) {
+    return essi_test::load_document(bytes, p);
+}
 
 void expect_same_records(const Document& doc, const std::vector<MotionRecord>& want, const std::string& what) {
     ASSERT_EQ(doc.motions.size(), want.size()) << what;
@@ -104,8 +106,8 @@ TEST(ViewerDocument, ExamplesRebuildTheInterpretersRecordsAndBlocks) {
         const std::string name = path.filename().string();
         std::filesystem::path expected = path;
         expected.replace_extension(".expected.json");
-        const bool woyda = std::filesystem::exists(expected) &&
-                           read_file(expected.string()).find("\"woyda\"") != std::string::npos;
+        const bool woyda =
+            std::filesystem::exists(expected) && read_file(expected.string()).find("\"woyda\"") != std::string::npos;
         const Profile p = *builtin_profile(woyda ? "woyda" : "iso6582");
         check_tape(read_file(path.string()), p, name);
     }
@@ -115,7 +117,8 @@ TEST(ViewerDocument, ExamplesRebuildTheInterpretersRecordsAndBlocks) {
 TEST(ViewerDocument, CorpusRebuildsTheInterpretersRecordsAndBlocks) {
     const auto dir = corpus_dir();
     if (!dir) GTEST_SKIP() << "no corpus";
-    for (const auto& path : tapes_in(*dir)) check_tape(read_file(path.string()), *builtin_profile("iso6582"), path.string());
+    for (const auto& path : tapes_in(*dir))
+        check_tape(read_file(path.string()), *builtin_profile("iso6582"), path.string());
 }
 
 TEST(ViewerDocument, GeneratedTapeOfManyChunks) {

@@ -50,8 +50,9 @@ TEST(ViewerKerf, CompensatedTapeGetsTheTorchPathAndTheBand) {
     EXPECT_FLOAT_EQ(b.kerf_widths[0], 3.0f);  // 29+30: 3 mm
     // The kerf path's segments end where essi trace --kerf's pieces do: the first cut piece's end is among them.
     std::string trace;
-    (void)trace_tape(doc->bytes, doc->profile, [&](std::string_view s) { trace += s; }, InputFormat::Essi, 3,
-                     TraceView{true, false});
+    (void)trace_tape(
+        doc->bytes, doc->profile, [&](std::string_view s) { trace += s; }, InputFormat::Essi, 3,
+        TraceView{true, false});
     EXPECT_NE(trace.find("->(198.500,210.000)"), std::string::npos) << trace;  // the entry's trimmed end
     bool found = false;
     for (std::size_t s = 0; s < b.staged_kinds.size() && !found; ++s) {

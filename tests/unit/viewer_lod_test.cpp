@@ -27,7 +27,8 @@ std::unique_ptr<Document> load(const std::string& bytes) { return essi_test::loa
 // The cell of machine point p at level k (each level halves the cell index; an odd last row or column of the
 // level below goes into the last cell).
 std::pair<int, int> cell_of(const LodRaster& lod, const Document& d, Point p, int k) {
-    const double fx = (p.x - d.origin.x - lod.min_x()) / lod.cell_mm(), fy = (p.y - d.origin.y - lod.min_y()) / lod.cell_mm();
+    const double fx = (p.x - d.origin.x - lod.min_x()) / lod.cell_mm(),
+                 fy = (p.y - d.origin.y - lod.min_y()) / lod.cell_mm();
     int x = static_cast<int>(std::floor(fx)), y = static_cast<int>(std::floor(fy));
     for (int j = 1; j <= k; ++j) {
         x = std::min(x / 2, lod.width(j) - 1);
@@ -40,7 +41,8 @@ std::pair<int, int> cell_of(const LodRaster& lod, const Document& d, Point p, in
 
 TEST(ViewerLod, CellsFollowTheMotionsWithinTheirShare) {
     // A square tape: cells^2 <= kCellsPerMotion x motions, between kMinCells and kMaxCells.
-    EXPECT_EQ(LodRaster::cells_for(1000, 1000, 100000), static_cast<int>(std::sqrt(LodRaster::kCellsPerMotion * 100000)));
+    EXPECT_EQ(LodRaster::cells_for(1000, 1000, 100000),
+              static_cast<int>(std::sqrt(LodRaster::kCellsPerMotion * 100000)));
     EXPECT_EQ(LodRaster::cells_for(1000, 1000, 10000000), LodRaster::kMaxCells);
     EXPECT_EQ(LodRaster::cells_for(1000, 1000, 100), LodRaster::kMinCells);
     // A 2:1 plate of 150 000 motions: twice the cells on the longer side for the same bytes.

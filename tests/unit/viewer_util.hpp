@@ -12,8 +12,8 @@
 namespace essi_test {
 
 // An ESSI tape read with `profile` (default: iso6582), as the viewer's DocumentLoader loads it.
-inline std::unique_ptr<essi::viewer::Document> load_document(const std::string& bytes,
-                                                             const essi::Profile& profile = *essi::builtin_profile("iso6582")) {
+inline std::unique_ptr<essi::viewer::Document> load_document(
+    const std::string& bytes, const essi::Profile& profile = *essi::builtin_profile("iso6582")) {
     essi::TapeSetup setup;
     setup.profile = profile;
     essi::viewer::DocumentLoader loader("tape", bytes, std::move(setup));

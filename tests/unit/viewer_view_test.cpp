@@ -9,8 +9,8 @@
 #include "essi/profile.hpp"
 
 using essi::Point;
-using essi::viewer::Rect;
 using essi::viewer::Coordinates;
+using essi::viewer::Rect;
 using essi::viewer::Rotation;
 using essi::viewer::View;
 
@@ -70,14 +70,14 @@ TEST(ViewerView, FitSwapsWidthAndHeightWhenTurned) {
     View flat = view_at(0), turned = view_at(1);
     flat.fit(wide, {0, 0}, 0);
     turned.fit(wide, {0, 0}, 0);
-    EXPECT_DOUBLE_EQ(flat.zoom, 400.0 / 300);   // the width fills the area's width
+    EXPECT_DOUBLE_EQ(flat.zoom, 400.0 / 300);    // the width fills the area's width
     EXPECT_DOUBLE_EQ(turned.zoom, 200.0 / 300);  // turned, it runs up the area's height
 }
 
 // Machine coordinates: the plate's rotation turns the drawing before the orientation's quarter turns.
 TEST(ViewerView, ThePlatesRotationTurnsTheDrawingBeforeTheQuarterTurns) {
     View v = view_at(1);
-    v.plate = {0.6, 0.8};  // (cos, sin) of about 53.13 degrees
+    v.plate = {0.6, 0.8};             // (cos, sin) of about 53.13 degrees
     const Rotation r = v.rotation();  // then a quarter turn: (cos, sin) = (-0.8, 0.6)
     EXPECT_NEAR(r.c, -0.8, 1e-15);
     EXPECT_NEAR(r.s, 0.6, 1e-15);

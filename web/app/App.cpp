@@ -9,23 +9,16 @@
 namespace essi::viewer {
 
 App::App(PlatformServices& platform)
-    : platform_(platform),
-      fonts_(platform),
-      notices_(fonts_),
-      load_(renderer_),
-      preferences_(platform, renderer_, layers_, ui_),
-      navigation_(load_, platform),
-      comments_(fonts_, platform),
+    : platform_(platform), fonts_(platform), notices_(fonts_), load_(renderer_),
+      preferences_(platform, renderer_, layers_, ui_), navigation_(load_, platform), comments_(fonts_, platform),
       compare_(navigation_, notices_, fonts_),
       session_({load_, navigation_, playback_, measure_, compare_, comments_, notices_, fonts_, ui_, platform}),
-      exports_(session_, navigation_, notices_, platform),
-      shares_(session_, navigation_, notices_, ui_, platform),
+      exports_(session_, navigation_, notices_, platform), shares_(session_, navigation_, notices_, ui_, platform),
       input_({session_, navigation_, layers_, playback_, measure_, shares_, preferences_, ui_, platform}),
-      parts_{session_,  load_,      navigation_, layers_,   playback_,    measure_, compare_,
-             comments_, exports_,   shares_,     preferences_, notices_,  ui_,       fonts_,
-             renderer_, ui_renderer_, scene_,    platform,     graphics_ok_},
-      panels_(parts_),
-      automation_(parts_) {}
+      parts_{session_,  load_,        navigation_, layers_,      playback_,   measure_, compare_,
+             comments_, exports_,     shares_,     preferences_, notices_,    ui_,      fonts_,
+             renderer_, ui_renderer_, scene_,      platform,     graphics_ok_},
+      panels_(parts_), automation_(parts_) {}
 
 bool App::init_graphics() {
     fonts_.update(framebuffer_scale());  // (the atlas, before ui_renderer_ uploads it)
@@ -33,7 +26,7 @@ bool App::init_graphics() {
     load_.set_graphics(graphics_ok_);
     ImGuiIO& io = ImGui::GetIO();
     if (!io.Fonts->IsBuilt()) io.Fonts->Build();  // (ui_renderer_.init() makes the atlas unless the GPU refused it)
-    io.IniFilename = nullptr;  // no imgui.ini: the layout is fixed
+    io.IniFilename = nullptr;                     // no imgui.ini: the layout is fixed
     preferences_.graphics_ready(graphics_ok_);
     return graphics_ok_;
 }
@@ -63,9 +56,17 @@ void App::frame() {
 
 void App::prepare_scene() {
     const auto [fb_w, fb_h] = framebuffer_size();
-    const SceneInputs in{navigation_.view(), fb_w, fb_h, framebuffer_scale(), panels::panel_color(renderer_.theme().background),
-                         layers_, playback_, navigation_.selection(), load_,
-                         navigation_.coordinates().shown(navigation_.origin()), ui_.hovered_mark};
+    const SceneInputs in{navigation_.view(),
+                         fb_w,
+                         fb_h,
+                         framebuffer_scale(),
+                         panels::panel_color(renderer_.theme().background),
+                         layers_,
+                         playback_,
+                         navigation_.selection(),
+                         load_,
+                         navigation_.coordinates().shown(navigation_.origin()),
+                         ui_.hovered_mark};
     const bool prepared = scene_.prepare(in, renderer_, graphics_ok_);
     load_.note_frame(prepared && scene_.tape_drawn());
 }

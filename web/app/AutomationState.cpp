@@ -18,8 +18,7 @@ using nlohmann::json;
 constexpr std::size_t kStateMarks = 1000;  // marks listed in state().marks.items at most (the count is all of them)
 
 // The document's part of the state: statistics, diagnostics, sizes, memory, level of detail.
-void add_document(json& j, const Document& doc, const LoadController& load, const Renderer& renderer,
-                  bool lod_drawn) {
+void add_document(json& j, const Document& doc, const LoadController& load, const Renderer& renderer, bool lod_drawn) {
     j["stats"] = stats_to_json(doc.stats);  // the report's own writer (essi/report_json.hpp)
     j["diagnostics"] = diagnostics_to_json(doc.diagnostics);
     j["ok"] = !doc.has_errors();
@@ -34,7 +33,8 @@ void add_document(json& j, const Document& doc, const LoadController& load, cons
     // a table in the profile.
     if (doc.profile.table) {
         json corners = json::array();
-        for (const Point& c : Placement(doc.profile).table_in_program(*doc.profile.table)) corners.push_back({c.x, c.y});
+        for (const Point& c : Placement(doc.profile).table_in_program(*doc.profile.table))
+            corners.push_back({c.x, c.y});
         j["table_mm"] = corners;
     } else {
         j["table_mm"] = nullptr;
@@ -57,7 +57,9 @@ void add_document(json& j, const Document& doc, const LoadController& load, cons
 
 // What the Playback panel shows: the motion at the scrubber, its line, the tools and where the tool is.
 json playback_json(const Playback& playback, const Document* doc, const Coordinates& cs) {
-    json p = {{"active", playback.active}, {"playing", playback.playing}, {"position", playback.position},
+    json p = {{"active", playback.active},
+              {"playing", playback.playing},
+              {"position", playback.position},
               {"factor", playback.factor}};
     if (doc) {
         p["elapsed_s"] = playback.elapsed_s(*doc);
@@ -104,9 +106,13 @@ json inspector_json(const Document* doc, std::uint32_t line) {
 }
 
 json render_json(const RenderStats& rs, std::uint64_t unchanged_frames) {
-    return {{"frames", rs.frames}, {"full_redraws", rs.full_redraws}, {"partial_redraws", rs.partial_redraws},
-            {"cached_frames", rs.cached_frames}, {"filling_frames", rs.filling_frames},
-            {"pending_segments", rs.pending_segments}, {"unchanged_frames", unchanged_frames}};
+    return {{"frames", rs.frames},
+            {"full_redraws", rs.full_redraws},
+            {"partial_redraws", rs.partial_redraws},
+            {"cached_frames", rs.cached_frames},
+            {"filling_frames", rs.filling_frames},
+            {"pending_segments", rs.pending_segments},
+            {"unchanged_frames", unchanged_frames}};
 }
 
 // The toolbar's items as the last frame drew them: where each is, in the bar or in its overflow menu ("more").
@@ -137,9 +143,14 @@ json marks_json(const Document& doc, const View& view, std::size_t hovered, std:
         const DiagnosticMark& m = doc.marks[k];
         const Diagnostic& d = doc.diagnostics[m.diagnostic];
         const Point px = mark_screen(doc, view, m);
-        items.push_back({{"mark", k}, {"diagnostic", m.diagnostic}, {"code", code_name(d.code)},
-                         {"severity", severity_name(d.severity)}, {"line", d.line}, {"at_mm", {m.at.x, m.at.y}},
-                         {"px", {px.x, px.y}}, {"in_view", view.area.contains(static_cast<float>(px.x), static_cast<float>(px.y))}});
+        items.push_back({{"mark", k},
+                         {"diagnostic", m.diagnostic},
+                         {"code", code_name(d.code)},
+                         {"severity", severity_name(d.severity)},
+                         {"line", d.line},
+                         {"at_mm", {m.at.x, m.at.y}},
+                         {"px", {px.x, px.y}},
+                         {"in_view", view.area.contains(static_cast<float>(px.x), static_cast<float>(px.y))}});
     }
     std::size_t overlaps = 0;
     for (const Diagnostic& d : doc.diagnostics) overlaps += d.overlap.empty() ? 0 : 1;
@@ -148,9 +159,10 @@ json marks_json(const Document& doc, const View& view, std::size_t hovered, std:
     return {{"count", doc.marks.size()},
             {"radius_px", Renderer::kMarkRadiusPx},
             {"hit_radius_px", kMarkHitRadiusPx},
-            {"hovered", hovered < doc.marks.size() ? mark_diagnostic_json(doc.diagnostics[doc.marks[hovered].diagnostic],
-                                                                          doc.marks[hovered].diagnostic)
-                                                   : json(nullptr)},
+            {"hovered",
+             hovered < doc.marks.size()
+                 ? mark_diagnostic_json(doc.diagnostics[doc.marks[hovered].diagnostic], doc.marks[hovered].diagnostic)
+                 : json(nullptr)},
             {"active", active},
             {"overlaps", overlaps},
             {"concerned_motion_runs", doc.concerned_motions.size()},
@@ -163,8 +175,8 @@ json selection_json(const Selection& s) {
 }
 
 json layers_json(const Layers& l) {
-    json j = {{"pierces", l.pierces}, {"start", l.start}, {"grid", l.grid}, {"kerf", l.kerf}, {"kerf_band", l.kerf_band},
-              {"table", l.table}};
+    json j = {{"pierces", l.pierces}, {"start", l.start},         {"grid", l.grid},
+              {"kerf", l.kerf},       {"kerf_band", l.kerf_band}, {"table", l.table}};
     for (std::size_t k = 0; k < kMotionKinds; ++k) j[motion_kind_name(static_cast<MotionKind>(k))] = l.kinds[k];
     return j;
 }
@@ -181,7 +193,9 @@ json colour_by_json(const Layers& l, const LoadController& load) {
         }
         legend.push_back({{"text", e.text}, {"colors", colors}});
     }
-    return {{"mode", colour_by_name(l.colour_by)}, {"drawn", colour_by_name(load.buffers().colour_by())}, {"legend", legend}};
+    return {{"mode", colour_by_name(l.colour_by)},
+            {"drawn", colour_by_name(load.buffers().colour_by())},
+            {"legend", legend}};
 }
 
 // How the last load went in frame numbers (LoadController::LoadFrames): a tape loaded at once (under 1 MB) handed
@@ -241,12 +255,16 @@ json encoding_json(const CommentText& comments) {
 // glyphs (of them from the CJK font), characters no font has, and the CJK font's state.
 json fonts_json(const UiFonts& fonts, const UiRenderer& ui_renderer) {
     const UiFonts::Counts fc = fonts.counts();
-    return {{"pixel_size", fonts.pixel_size()},   {"ratio", fonts.pixel_ratio()},
+    return {{"pixel_size", fonts.pixel_size()},
+            {"ratio", fonts.pixel_ratio()},
             {"css_size", fonts.real_font() ? UiFonts::kCssPixels : fonts.pixel_size()},
             {"font", fonts.real_font() ? "DejaVu Sans" : "ProggyClean"},
-            {"glyphs", fc.glyphs},                 {"cjk_glyphs", fc.cjk_glyphs},
-            {"missing", fc.missing},               {"cjk", UiFonts::cjk_name(fonts.cjk())},
-            {"cjk_loads", fonts.cjk_loads()},      {"builds", fonts.builds()},
+            {"glyphs", fc.glyphs},
+            {"cjk_glyphs", fc.cjk_glyphs},
+            {"missing", fc.missing},
+            {"cjk", UiFonts::cjk_name(fonts.cjk())},
+            {"cjk_loads", fonts.cjk_loads()},
+            {"builds", fonts.builds()},
             {"pending", fonts.pending()},
             {"texture", {ui_renderer.font_texture_size()[0], ui_renderer.font_texture_size()[1]}}};
 }
@@ -257,7 +275,8 @@ json layout_json(const panels::PanelLayout& l) {
 
 json kind_colors_json() {
     json colors = json::array();
-    for (const Rgba& c : kKindColors) colors.push_back({std::lround(c.r * 255), std::lround(c.g * 255), std::lround(c.b * 255)});
+    for (const Rgba& c : kKindColors)
+        colors.push_back({std::lround(c.r * 255), std::lround(c.g * 255), std::lround(c.b * 255)});
     return colors;
 }
 

@@ -68,7 +68,8 @@ std::uint8_t ColourBins::feed_bin(float feed) const {
     constexpr double last = kColourBins - 1;
     if (!feeds_.empty()) {
         const auto k = static_cast<double>(std::lower_bound(feeds_.begin(), feeds_.end(), feed) - feeds_.begin());
-        return static_cast<std::uint8_t>(feeds_.size() == 1 ? last / 2 : std::lround(k * last / static_cast<double>(feeds_.size() - 1)));
+        return static_cast<std::uint8_t>(
+            feeds_.size() == 1 ? last / 2 : std::lround(k * last / static_cast<double>(feeds_.size() - 1)));
     }
     if (!(high_ > low_)) return static_cast<std::uint8_t>(last / 2);
     const double t = std::clamp((feed - low_) / static_cast<double>(high_ - low_), 0.0, 1.0);

@@ -45,10 +45,10 @@ private:
 
     const Document& doc_;
     ColourBy by_;
-    std::vector<float> feeds_;     // the distinct feeds of the feeds table, ascending (up to kColourBins of them)
-    float low_ = 0, high_ = 0;     // the feeds' range (more distinct feeds than bins: binned linearly)
-    std::size_t feed_at_ = 0;      // the feeds table's entry in force at the motion asked last
-    std::size_t pierce_at_ = 0;    // the pierces at or before the motion asked last
+    std::vector<float> feeds_;   // the distinct feeds of the feeds table, ascending (up to kColourBins of them)
+    float low_ = 0, high_ = 0;   // the feeds' range (more distinct feeds than bins: binned linearly)
+    std::size_t feed_at_ = 0;    // the feeds table's entry in force at the motion asked last
+    std::size_t pierce_at_ = 0;  // the pierces at or before the motion asked last
 };
 
 }  // namespace essi::viewer

@@ -44,7 +44,8 @@ void CommentText::require_glyphs(const Document& d) {
 std::string CommentText::line_text(const Document& d, std::size_t line, std::size_t max) const {
     const std::string_view bytes = d.line(line);
     const std::string_view shown = bytes.substr(0, max);
-    const bool ascii = std::all_of(shown.begin(), shown.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; });
+    const bool ascii =
+        std::all_of(shown.begin(), shown.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; });
     if (ascii) return printable(bytes, max);
     std::string text = decode_text(shown, used());
     std::replace(text.begin(), text.end(), '\t', ' ');

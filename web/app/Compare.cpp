@@ -22,11 +22,13 @@ std::vector<std::vector<Point>> flattened(const std::vector<DiffContour>& contou
 
 }  // namespace
 
-std::unique_ptr<Compare> make_compare(const Document& a, bool auto_profile, std::string name, const std::string& bytes) {
+std::unique_ptr<Compare> make_compare(const Document& a, bool auto_profile, std::string name,
+                                      const std::string& bytes) {
     auto c = std::make_unique<Compare>();
     c->name = std::move(name);
     c->a = tape_contours(a.bytes, a.setup, true);
-    c->b = tape_contours(bytes, setup_tape(bytes, std::nullopt, auto_profile ? std::nullopt : std::optional<Profile>(a.profile)), true);
+    c->b = tape_contours(
+        bytes, setup_tape(bytes, std::nullopt, auto_profile ? std::nullopt : std::optional<Profile>(a.profile)), true);
     c->diff = diff_contours(c->a.contours, c->b.contours);
     c->summary = diff_counts_text(c->diff);
     c->a_lines = flattened(c->a.contours);

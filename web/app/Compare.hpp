@@ -18,8 +18,8 @@ namespace essi::viewer {
 struct Document;
 
 struct Compare {
-    std::string name;     // B's
-    TapeContours a, b;    // with their paths
+    std::string name;   // B's
+    TapeContours a, b;  // with their paths
     TapeDiff diff;
     std::string summary;  // "2 same, 1 moved, ..." in English (state()); the window words it in the viewer's language
     // Each contour flattened for drawing (program mm): A's, B's.

@@ -13,7 +13,7 @@ namespace essi::viewer {
 
 class Coordinates {
 public:
-    Coordinates() = default;  // program coordinates
+    Coordinates() = default;                                                          // program coordinates
     explicit Coordinates(const Profile& profile) : placement_(Placement(profile)) {}  // machine coordinates
 
     [[nodiscard]] bool machine() const { return placement_.has_value(); }

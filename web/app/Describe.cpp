@@ -54,22 +54,25 @@ std::string describe_motion(const MotionRecord& m, Lang lang) {
         case CurveKind::Arc: {
             const bool full = std::fabs(std::fabs(m.sweep) - 2 * kPi) < kFullTurnTolerance;
             s = format_message(Msg::UiMotionArc, lang,
-                               {kind, full ? Msg::UiFullCircle : Msg::UiArc, m.ccw ? Msg::UiCcw : Msg::UiCw, mm_text(m.radius),
-                                xy(m.centre), xy(m.start), xy(m.end), fixed_text(m.sweep * 180.0 / kPi, kSweepDecimals), mm_text(m.length_mm)});
+                               {kind, full ? Msg::UiFullCircle : Msg::UiArc, m.ccw ? Msg::UiCcw : Msg::UiCw,
+                                mm_text(m.radius), xy(m.centre), xy(m.start), xy(m.end),
+                                fixed_text(m.sweep * 180.0 / kPi, kSweepDecimals), mm_text(m.length_mm)});
             if (std::fabs(m.end_radius - m.radius) > kSameRadiusMm)
                 s += " " + format_message(Msg::UiArcEndRadius, lang, {mm_text(m.end_radius)});
             break;
         }
         case CurveKind::Parabola: {
             const ParabolaGeom& g = m.parabola;
-            s = format_message(Msg::UiMotionParabola, lang,
-                               {kind, xy(g.vertex), xy(g.n), mm_text(g.p), xy(m.start), xy(m.end), mm_text(m.length_mm)});
+            s = format_message(
+                Msg::UiMotionParabola, lang,
+                {kind, xy(g.vertex), xy(g.n), mm_text(g.p), xy(m.start), xy(m.end), mm_text(m.length_mm)});
             break;
         }
     }
     s += format_message(Msg::UiMotionTools, lang, {tools_label(m.tools, lang)});
     if (m.head == 2) s += text(Msg::UiMotionHead2, lang);
-    if (m.kerf != KerfSide::Off) s += format_message(Msg::UiMotionKerf, lang, {kerf_offset_text(m.kerf, m.kerf_mm, lang)});
+    if (m.kerf != KerfSide::Off)
+        s += format_message(Msg::UiMotionKerf, lang, {kerf_offset_text(m.kerf, m.kerf_mm, lang)});
     s += (lang == Lang::Zh ? "，" : ", ") + fmt("%.0f mm/min", m.feed_mm_min);
     return s;
 }
@@ -86,7 +89,8 @@ std::string motion_block_text(const Tape& tape, std::size_t i, Lang lang) {
     const std::size_t named = w.size() == 2 ? 2 : w.size() == 5 || w.size() == 6 ? 4 : 0;
     std::string s = format_message(Msg::UiMotionBlock, lang, {b.word_count()});
     const char* comma = lang == Lang::Zh ? "，" : ", ";
-    for (std::size_t k = 0; k < named; ++k) s += (k == 0 ? std::string(" ") : comma) + fmt("%s %+d", names[k], static_cast<int>(w[k]));
+    for (std::size_t k = 0; k < named; ++k)
+        s += (k == 0 ? std::string(" ") : comma) + fmt("%s %+d", names[k], static_cast<int>(w[k]));
     if (named == 0)
         for (auto v : w) s += fmt(" %+d", static_cast<int>(v));
     if (w.size() >= 5) s += comma + std::string(text(b.tc_positive() ? Msg::UiTcCcw : Msg::UiTcCw, lang));
@@ -100,8 +104,7 @@ std::string motion_block_text(const Tape& tape, std::size_t i, Lang lang) {
 std::string describe_block(const Tape& tape, std::size_t i, const Profile& profile, Lang lang) {
     const Block& b = tape.block(i);
     switch (b.kind) {
-        case BlockKind::Function:
-            return describe_function(b.code, false, 0, profile, lang);
+        case BlockKind::Function: return describe_function(b.code, false, 0, profile, lang);
         case BlockKind::FunctionValue: {
             const auto w = tape.words(i);
             return describe_function(b.code, true, w.empty() ? 0.0 : b.function_value(w[0]), profile, lang);
@@ -120,7 +123,8 @@ std::vector<InspectorLine> inspector_lines(const Document& doc, std::uint32_t li
     if (line == 0) return out;
     const LineBlocks blocks = doc.blocks_of_line(line);
     for (std::size_t b = blocks.first; b < blocks.last; ++b)
-        out.push_back({InspectorLine::Of::Block, MotionKind::Travel, describe_block(*blocks.chunk, b, doc.profile, lang)});
+        out.push_back(
+            {InspectorLine::Of::Block, MotionKind::Travel, describe_block(*blocks.chunk, b, doc.profile, lang)});
     const auto [m0, m1] = doc.motions_of_line(line);
     for (std::size_t m = m0; m < m1 && m < m0 + kInspectorMotions; ++m) {
         const MotionRecord r = doc.record(m);
@@ -128,7 +132,8 @@ std::vector<InspectorLine> inspector_lines(const Document& doc, std::uint32_t li
     }
     const std::vector<MotionRecord> torch = doc.torch_path_of_line(line);
     for (std::size_t k = 0; k < torch.size() && k < kInspectorMotions; ++k)
-        out.push_back({InspectorLine::Of::Torch, torch[k].kind, format_message(Msg::UiTorchKerf, lang, {describe_motion(torch[k], lang)})});
+        out.push_back({InspectorLine::Of::Torch, torch[k].kind,
+                       format_message(Msg::UiTorchKerf, lang, {describe_motion(torch[k], lang)})});
     return out;
 }
 

@@ -142,8 +142,9 @@ MotionRecord Document::record(std::size_t i) const {
     r.curve = m.curve;
     r.tools = m.tools;
     r.head = (m.flags & Motion::kFlagHead2) ? 2 : 1;
-    r.kerf = (m.flags & Motion::kFlagKerfLeft) ? KerfSide::Left
-             : (m.flags & Motion::kFlagKerfRight) ? KerfSide::Right : KerfSide::Off;
+    r.kerf = (m.flags & Motion::kFlagKerfLeft)    ? KerfSide::Left
+             : (m.flags & Motion::kFlagKerfRight) ? KerfSide::Right
+                                                  : KerfSide::Off;
     r.start = start_of(i);
     r.end = point_mm(m.end_units);
     r.feed_mm_min = feed_of(i);
@@ -240,7 +241,8 @@ void Document::place_diagnostics() {
     for (const LineRange& r : merge_ranges(std::move(lines))) {
         const auto [a, b] = motions_of_lines(r);
         if (a == b) continue;
-        if (!concerned_motions.empty() && concerned_motions.back().second >= a) concerned_motions.back().second = static_cast<std::uint32_t>(b);
+        if (!concerned_motions.empty() && concerned_motions.back().second >= a)
+            concerned_motions.back().second = static_cast<std::uint32_t>(b);
         else concerned_motions.emplace_back(static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b));
     }
 }
@@ -264,7 +266,8 @@ std::vector<std::pair<const char*, std::size_t>> Document::memory_parts() const 
         {"diagnostics", diagnostics.capacity() * sizeof(Diagnostic) + marks.capacity() * sizeof(DiagnosticMark) +
                             concerned_motions.capacity() * sizeof(concerned_motions[0])},
         {"line_index", line_index.memory_bytes()},
-        {"read_chunks", chunks.capacity() * sizeof(ReadChunk) + (chunks.empty() ? 0 : chunks.size() * chunks.front().reader.state_bytes()) +
+        {"read_chunks", chunks.capacity() * sizeof(ReadChunk) +
+                            (chunks.empty() ? 0 : chunks.size() * chunks.front().reader.state_bytes()) +
                             reread_.memory_bytes()},
     };
 }

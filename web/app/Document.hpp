@@ -44,8 +44,8 @@ struct Motion {
     std::uint8_t flags = 0;  // kFlag*
     static constexpr std::uint8_t kFlagHead2 = 1, kFlagKerfLeft = 2, kFlagKerfRight = 4, kFlagJump = 8,
                                   kFlagCcw = 16,  // arcs: counter-clockwise in machine coordinates
-                                  kFlagKept = 32,  // the full record is in Document::kept
-                                  kFlagRapidFeed = 64;  // the feed is the profile's rapid speed (else: `feeds`)
+        kFlagKept = 32,                           // the full record is in Document::kept
+        kFlagRapidFeed = 64;                      // the feed is the profile's rapid speed (else: `feeds`)
 };
 static_assert(sizeof(Motion) == 16, "Motion must stay compact");
 
@@ -58,6 +58,7 @@ public:
     // Entries of the motions before i (the index of motion i's entry when it has one).
     [[nodiscard]] std::size_t rank(std::size_t i) const;
     [[nodiscard]] std::size_t memory_bytes() const;
+
 private:
     std::vector<std::uint64_t> bits_;
     std::vector<std::uint32_t> before_;  // entries before each 64 motions
@@ -98,25 +99,25 @@ struct Document {
     std::vector<Diagnostic> diagnostics;  // sorted by line, column (as `essi check`)
     Stats stats;
     std::vector<Motion> motions;
-    std::vector<UnitPoint> arc_centres;   // of the arcs that are not kept, in motion order
-    RankIndex arc_rank;                   // motion -> its entry in arc_centres
+    std::vector<UnitPoint> arc_centres;                        // of the arcs that are not kept, in motion order
+    RankIndex arc_rank;                                        // motion -> its entry in arc_centres
     std::vector<std::pair<std::uint32_t, MotionRecord>> kept;  // (motion, full record) where kFlagKept is set
-    std::vector<std::pair<std::uint32_t, Point>> jumps;  // (motion, start) where kFlagJump is set
+    std::vector<std::pair<std::uint32_t, Point>> jumps;        // (motion, start) where kFlagJump is set
     // (first motion, kerf mm) whenever the kerf changes, over the motions with kerf compensation on (off: 0)
     std::vector<std::pair<std::uint32_t, float>> kerfs;
     // (first motion, mm/min) whenever the feed changes, over the motions without kFlagRapidFeed
     std::vector<std::pair<std::uint32_t, float>> feeds;
-    std::vector<std::uint32_t> pierces;   // the motions the statistics' pierces are at (essi::PierceTracker)
-    LineIndex line_index;                 // where each line starts (the core's rule, essi/lines.hpp)
+    std::vector<std::uint32_t> pierces;  // the motions the statistics' pierces are at (essi::PierceTracker)
+    LineIndex line_index;                // where each line starts (the core's rule, essi/lines.hpp)
     // Made after the check (DocumentLoader's last stage): a mark per diagnostic that has a place, and the motions
     // the diagnostics concern (their blocks, contours and related places: [first, last) ranges, sorted, merged).
     std::vector<DiagnosticMark> marks;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> concerned_motions;
-    std::vector<ReadChunk> chunks;        // the reader before each chunk of kReadChunkBlocks blocks
+    std::vector<ReadChunk> chunks;            // the reader before each chunk of kReadChunkBlocks blocks
     std::size_t blocks = 0, block_words = 0;  // what the reader read (all chunks)
-    std::size_t curves = 0;               // arcs and parabolas (the drawing depends on the zoom)
-    Box bbox;                             // all motion
-    Point origin;                         // GPU coordinates are relative to this (float precision)
+    std::size_t curves = 0;                   // arcs and parabolas (the drawing depends on the zoom)
+    Box bbox;                                 // all motion
+    Point origin;                             // GPU coordinates are relative to this (float precision)
 
     // Blocks per TapeReader chunk: a few ms in the browser; the chunk, read again for the inspector, ~150 KB.
     static constexpr std::size_t kReadChunkBlocks = 8192;

@@ -23,7 +23,8 @@ void grow(std::vector<T>& v, std::size_t more, std::size_t read, std::size_t tot
     if (v.size() + more <= v.capacity()) return;
     const double share = read > 0 ? static_cast<double>(read) / static_cast<double>(total) : 0.0;
     std::size_t want = v.size() + more;
-    if (share > 0.01) want = std::max(want, static_cast<std::size_t>(static_cast<double>(v.size()) / share * 1.05) + 1024);
+    if (share > 0.01)
+        want = std::max(want, static_cast<std::size_t>(static_cast<double>(v.size()) / share * 1.05) + 1024);
     else want = std::max(want, v.capacity() * 2);
     v.reserve(want);
 }
@@ -116,7 +117,8 @@ bool DocumentLoader::read_and_check(double until) {
             return true;
         }
         if (chunk_.size() > 0)
-            doc_->chunks.push_back({std::move(before), static_cast<std::uint32_t>(chunk_.first_block()), chunk_.block(0).line});
+            doc_->chunks.push_back(
+                {std::move(before), static_cast<std::uint32_t>(chunk_.first_block()), chunk_.block(0).line});
         read_chunk_done();
         checker_->check_chunk(chunk_);
         if (now_ms() > until) return false;
@@ -165,7 +167,8 @@ bool DocumentLoader::step_plan(Document& doc, double budget_ms) {
     while (checker_->analyse_plan_plate())
         if (now_ms() > until) return false;
     std::vector<Diagnostic> found = checker_->plan_findings();
-    doc.diagnostics.insert(doc.diagnostics.end(), std::make_move_iterator(found.begin()), std::make_move_iterator(found.end()));
+    doc.diagnostics.insert(doc.diagnostics.end(), std::make_move_iterator(found.begin()),
+                           std::make_move_iterator(found.end()));
     sort_diagnostics(doc.diagnostics);  // (as TapeChecker::finish orders them: the same list as essi check's)
     doc.place_diagnostics();
     checker_.reset();
@@ -182,7 +185,8 @@ float DocumentLoader::plan_progress() const {
 float DocumentLoader::progress() const {
     const double n = static_cast<double>(std::max<std::size_t>(doc_ ? doc_->bytes.size() : 1, 1));
     switch (stage_) {
-        case Stage::IndexLines: return static_cast<float>(0.1 * static_cast<double>(doc_ ? doc_->line_index.position() : 0) / n);
+        case Stage::IndexLines:
+            return static_cast<float>(0.1 * static_cast<double>(doc_ ? doc_->line_index.position() : 0) / n);
         case Stage::ReadAndCheck: return static_cast<float>(0.1 + 0.6 * static_cast<double>(read_pos_) / n);
         default: return 0.7f;
     }

@@ -25,8 +25,8 @@ public:
     // Runs for about budget_ms; returns true when the document is complete (but for the plan's findings when
     // plan_later: plan_pending()).
     bool step(double budget_ms = 12);
-    [[nodiscard]] float progress() const;      // 0..1
-    [[nodiscard]] Msg stage() const;           // "indexing lines", "reading and checking", ... (ui.def)
+    [[nodiscard]] float progress() const;  // 0..1
+    [[nodiscard]] Msg stage() const;       // "indexing lines", "reading and checking", ... (ui.def)
     [[nodiscard]] std::unique_ptr<Document> take() { return std::move(doc_); }
     // After step() returned true and take(): the cut plan's plates still to analyse.
     [[nodiscard]] bool plan_pending() const { return checker_ != nullptr; }
@@ -54,7 +54,7 @@ private:
     enum class Stage { IndexLines, ReadAndCheck, Finish, Done };
     Stage stage_ = Stage::IndexLines;
     static constexpr std::size_t kMotionReserveSlack = 64;  // 1/64 more for addressed motions ("1+100+0")
-    std::size_t read_pos_ = 0;  // byte offset reached by the reader
+    std::size_t read_pos_ = 0;                              // byte offset reached by the reader
 };
 
 }  // namespace essi::viewer

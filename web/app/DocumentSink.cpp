@@ -6,8 +6,7 @@ namespace essi::viewer {
 
 void DocumentSink::on_motion(const MotionRecord& r) {
     Document& d = doc_;
-    Motion m = start_motion(r.line, r.kind, r.curve, r.tools, r.head, r.kerf, r.start, r.end, r.kerf_mm,
-                            r.feed_mm_min);
+    Motion m = start_motion(r.line, r.kind, r.curve, r.tools, r.head, r.kerf, r.start, r.end, r.kerf_mm, r.feed_mm_min);
     // Compact when every point is whole units (always, but for positions beyond 32 bits), not a parabola, and
     // its kerf is what the flags say.
     UnitPoint start, centre;
@@ -30,13 +29,12 @@ void DocumentSink::on_motion(const MotionRecord& r) {
 void DocumentSink::on_line(const UnitLine& l) {
     constexpr long long kMax = std::numeric_limits<std::int32_t>::max();
     const auto fits = [](long long v) { return v >= -kMax && v <= kMax; };
-    if (!kerf_in_flags(l.kerf, l.kerf_mm) || !fits(l.start_x) || !fits(l.start_y) ||
-        !fits(l.end_x) || !fits(l.end_y)) {
+    if (!kerf_in_flags(l.kerf, l.kerf_mm) || !fits(l.start_x) || !fits(l.start_y) || !fits(l.end_x) || !fits(l.end_y)) {
         on_motion(record_of(l));
         return;
     }
-    Motion m = start_motion(l.line, l.kind, CurveKind::Line, l.tools, 1, l.kerf, l.start, l.end, l.kerf_mm,
-                            l.feed_mm_min);
+    Motion m =
+        start_motion(l.line, l.kind, CurveKind::Line, l.tools, 1, l.kerf, l.start, l.end, l.kerf_mm, l.feed_mm_min);
     m.end_units = {static_cast<std::int32_t>(l.end_x), static_cast<std::int32_t>(l.end_y)};
     doc_.arc_rank.push_back(false);
     add(m);

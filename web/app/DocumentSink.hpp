@@ -34,7 +34,7 @@ private:
 
     Document& doc_;
     const float rapid_feed_ = static_cast<float>(doc_.profile.rapid_mm_min);
-    Point last_end_;  // of the motion before (a motion that starts elsewhere is a jump)
+    Point last_end_;         // of the motion before (a motion that starts elsewhere is a jump)
     PierceTracker pierces_;  // the statistics' pierces, each at its motion
 };
 

@@ -58,7 +58,9 @@ std::string Exports::copy_text(CopyWhat what, std::uint32_t index) const {
                    summary_line(std::span<const FileReport>(&r, 1), session_.profile_name(), ui_lang()) + "\n";
         }
         case CopyWhat::Diagnostic:
-            return index < d->diagnostics.size() ? diagnostic_line(display_text(d->name), d->diagnostics[index], ui_lang()) + "\n" : "";
+            return index < d->diagnostics.size()
+                       ? diagnostic_line(display_text(d->name), d->diagnostics[index], ui_lang()) + "\n"
+                       : "";
         case CopyWhat::Line: return std::string(d->line(index)) + "\n";
         case CopyWhat::Inspector: return inspector_text(*d);
     }
@@ -80,7 +82,8 @@ void Exports::copy(CopyWhat what, std::uint32_t index) {
     if (text.empty()) return notices_.notify(Msg::UiNothingToCopy);
     platform_.copy_text(text);
     copied_ = text;
-    static constexpr Msg kCopied[] = {Msg::UiCopiedReport, Msg::UiCopiedProblem, Msg::UiCopiedLine, Msg::UiCopiedInspector};
+    static constexpr Msg kCopied[] = {Msg::UiCopiedReport, Msg::UiCopiedProblem, Msg::UiCopiedLine,
+                                      Msg::UiCopiedInspector};
     notices_.notify(kCopied[static_cast<int>(what)]);
 }
 

@@ -59,7 +59,7 @@ private:
     PlatformServices& platform_;
     std::string copied_;
     bool png_pending_ = false;
-    struct JobSectionsOf {  // what job_sections() were made for
+    struct JobSectionsOf {       // what job_sections() were made for
         std::uint64_t load = 0;  // Session::documents_read when it was made (0: never)
         std::size_t diagnostics = 0;
         Lang lang = Lang::En;

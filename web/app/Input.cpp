@@ -35,8 +35,8 @@ bool beyond(const Document& d, std::size_t i, Point p, double best) {
     const Motion& m = d.motions[i];
     if (m.curve == CurveKind::Line) {
         const Point a = d.start_of(i), e = d.end_of(i);
-        return p.x < std::min(a.x, e.x) - best || p.x > std::max(a.x, e.x) + best ||
-               p.y < std::min(a.y, e.y) - best || p.y > std::max(a.y, e.y) + best;
+        return p.x < std::min(a.x, e.x) - best || p.x > std::max(a.x, e.x) + best || p.y < std::min(a.y, e.y) - best ||
+               p.y > std::max(a.y, e.y) + best;
     }
     if (m.curve == CurveKind::Arc) {
         const Point c = d.arc_centre(i), a = d.start_of(i), e = d.end_of(i);
@@ -122,17 +122,25 @@ void Input::handle_characters() {
     Layers& layers = p_.layers;
     for (int i = 0; i < io.InputQueueCharacters.Size; ++i) {
         switch (io.InputQueueCharacters[i]) {
-            case 'f': case 'F': p_.navigation.fit(); break;
-            case 'h': case 'H': case '?': p_.ui.help = !p_.ui.help; break;
-            case 'm': case 'M': p_.measure.toggle(); break;
+            case 'f':
+            case 'F': p_.navigation.fit(); break;
+            case 'h':
+            case 'H':
+            case '?': p_.ui.help = !p_.ui.help; break;
+            case 'm':
+            case 'M': p_.measure.toggle(); break;
             case ' ':
                 if (const Document* d = p_.session.document()) p_.playback.toggle(d->motions.size());
                 break;
-            case '+': case '=': view.zoom_at(view.ox(), view.oy(), kKeyZoom); break;
+            case '+':
+            case '=': view.zoom_at(view.ox(), view.oy(), kKeyZoom); break;
             case '-': view.zoom_at(view.ox(), view.oy(), 1 / kKeyZoom); break;
-            case 'g': case 'G': layers.grid = !layers.grid; break;
-            case 's': case 'S': p_.shares.share(); break;
-            case 'p': case 'P': p_.preferences.set_problems_only(!p_.preferences.problems_only()); break;
+            case 'g':
+            case 'G': layers.grid = !layers.grid; break;
+            case 's':
+            case 'S': p_.shares.share(); break;
+            case 'p':
+            case 'P': p_.preferences.set_problems_only(!p_.preferences.problems_only()); break;
             case '1': layers.kind(MotionKind::Cut) = !layers.kind(MotionKind::Cut); break;
             case '2':  // travel and rapid together
                 layers.kind(MotionKind::Travel) = !layers.kind(MotionKind::Travel);

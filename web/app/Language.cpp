@@ -1,6 +1,5 @@
 #include "app/Language.hpp"
 
-
 namespace essi::viewer {
 
 namespace {

@@ -1,6 +1,6 @@
 // The viewer's language (docs/viewer.md, "Languages"): every text it shows is a row of the core's catalogue
-// (essi/i18n.hpp; the viewer's own rows are core/i18n/messages/ui.def) in the language chosen (Preferences::set_language:
-// the browser's or the environment's, or the user's switch, kept as the setting "lang").
+// (essi/i18n.hpp; the viewer's own rows are core/i18n/messages/ui.def) in the language chosen
+// (Preferences::set_language: the browser's or the environment's, or the user's switch, kept as the setting "lang").
 #pragma once
 
 #include <string>

@@ -11,7 +11,7 @@ namespace essi::viewer {
 namespace {
 
 constexpr std::size_t kBuildMotionsPerFrame = 200000;  // tapes up to this size are drawn in the loading frame
-constexpr std::size_t kBuildMotionsPerStep = 4096;  // between two looks at the clock (and texture uploads)
+constexpr std::size_t kBuildMotionsPerStep = 4096;     // between two looks at the clock (and texture uploads)
 // Tapes with at least this many motions get a level-of-detail raster for zoomed-out views (below, drawing every
 // segment costs a CPU renderer less than a frame or two).
 constexpr std::size_t kLodMinMotions = 100000;

@@ -42,14 +42,14 @@ public:
     // How the last load went, in the caller's frame numbers (begin_frame), for state().load: a tape handed over
     // between frames N and N + 1 and loaded at once is drawable before frame N + 1 begins and shown by it.
     struct LoadFrames {
-        bool at_once = false;         // loaded at once (kAtOnceBytes), not in slices
-        std::uint64_t handed = 0;     // frames begun when the tape was handed over (start())
-        std::uint64_t drawable = 0;   // frames begun when its drawing was complete (read, checked, segments on the GPU)
-        std::uint64_t shown = 0;      // the first frame that drew it (its segments or its level of detail); 0: none yet
-        std::uint64_t complete = 0;   // the first frame that drew it complete: loaded, no segment left to draw
-        std::uint64_t planned = 0;    // frames begun when its cut plan's findings joined the diagnostics (a tape
-                                      // loaded in slices: after `drawable`); 0: checked with the reading
-        std::uint64_t steps = 0;      // slices of work (in frames and between them) until its drawing was complete
+        bool at_once = false;        // loaded at once (kAtOnceBytes), not in slices
+        std::uint64_t handed = 0;    // frames begun when the tape was handed over (start())
+        std::uint64_t drawable = 0;  // frames begun when its drawing was complete (read, checked, segments on the GPU)
+        std::uint64_t shown = 0;     // the first frame that drew it (its segments or its level of detail); 0: none yet
+        std::uint64_t complete = 0;  // the first frame that drew it complete: loaded, no segment left to draw
+        std::uint64_t planned = 0;   // frames begun when its cut plan's findings joined the diagnostics (a tape
+                                     // loaded in slices: after `drawable`); 0: checked with the reading
+        std::uint64_t steps = 0;     // slices of work (in frames and between them) until its drawing was complete
         std::uint64_t progress_frames = 0;  // frames that showed its progress bar
     };
 
@@ -89,7 +89,9 @@ public:
         return loader_ != nullptr || lod_building_ || building_ != nullptr || plan_ != nullptr;
     }
     // The slice may run outside a frame (not before the first frame of a load has shown the progress bar).
-    [[nodiscard]] bool may_step_outside_frame() const { return !(loader_ && !frames_.at_once && frames_since_start_ == 0); }
+    [[nodiscard]] bool may_step_outside_frame() const {
+        return !(loader_ && !frames_.at_once && frames_since_start_ == 0);
+    }
     // The segments are being made again at a new zoom's tolerance (not the load's first build), over the overview.
     [[nodiscard]] bool remaking() const { return building_ != nullptr && !first_build_ && renderer_.has_lod(); }
     [[nodiscard]] bool first_build() const { return first_build_; }
@@ -131,24 +133,24 @@ private:
     int frames_since_start_ = 0;
     double started_ = 0;
     double load_seconds_ = 0;
-    double shown_seconds_ = 0;      // from the start of the load to the first frame that drew the tape
+    double shown_seconds_ = 0;  // from the start of the load to the first frame that drew the tape
     LoadFrames frames_;
-    std::uint64_t frame_ = 0;       // frames begun (begin_frame)
-    bool awaiting_shown_ = false;   // begin_drawing ran and no frame has drawn the new document yet
+    std::uint64_t frame_ = 0;      // frames begun (begin_frame)
+    bool awaiting_shown_ = false;  // begin_drawing ran and no frame has drawn the new document yet
 
     // The document and its drawing
     std::unique_ptr<Document> doc_;
     std::uint64_t documents_ = 0;
     ColourBy colour_by_ = ColourBy::Kind;
-    PathBuffers buffers_;           // the drawn set's motion -> segment map (its segments are on the GPU only)
-    GpuPath gpu_;                   // the drawn segments
+    PathBuffers buffers_;                    // the drawn set's motion -> segment map (its segments are on the GPU only)
+    GpuPath gpu_;                            // the drawn segments
     std::unique_ptr<PathBuffers> building_;  // being built (first build or a rebuild at a new tolerance)
-    GpuPath gpu_building_;          // its segments, uploaded as they are made
+    GpuPath gpu_building_;                   // its segments, uploaded as they are made
     bool first_build_ = false;
-    LodRaster lod_;                 // zoomed-out drawing of big tapes, made before the first build
-    bool lod_building_ = false;     // lod_ is being made (the first build waits for it; a finer one waits for builds)
-    int lod_cells_ = 0;             // cells on the longer side of the level of detail being made or drawn
-    int lod_full_cells_ = 0;        // the tape's own (LodRaster::cells_for)
+    LodRaster lod_;              // zoomed-out drawing of big tapes, made before the first build
+    bool lod_building_ = false;  // lod_ is being made (the first build waits for it; a finer one waits for builds)
+    int lod_cells_ = 0;          // cells on the longer side of the level of detail being made or drawn
+    int lod_full_cells_ = 0;     // the tape's own (LodRaster::cells_for)
 };
 
 }  // namespace essi::viewer

@@ -21,7 +21,8 @@ panels::PanelLayout layout_from_setting(const std::optional<std::string>& text) 
     const nlohmann::json j = nlohmann::json::parse(*text, nullptr, false);
     if (!j.is_object()) return l;
     const auto width = [&](const char* k, float& to) {
-        if (j.contains(k) && j[k].is_number() && j[k].get<double>() >= panels::kMinPanelWidth && j[k].get<double>() <= 4000)
+        if (j.contains(k) && j[k].is_number() && j[k].get<double>() >= panels::kMinPanelWidth &&
+            j[k].get<double>() <= 4000)
             to = j[k].get<float>();
     };
     width("left", l.left);
@@ -32,7 +33,9 @@ panels::PanelLayout layout_from_setting(const std::optional<std::string>& text) 
 }
 
 std::string layout_setting(const panels::PanelLayout& l) {
-    return nlohmann::json{{"left", l.left}, {"right", l.right}, {"left_shown", l.left_shown}, {"right_shown", l.right_shown}}.dump();
+    return nlohmann::json{
+        {"left", l.left}, {"right", l.right}, {"left_shown", l.left_shown}, {"right_shown", l.right_shown}}
+        .dump();
 }
 
 }  // namespace

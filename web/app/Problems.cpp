@@ -48,7 +48,8 @@ std::size_t mark_at(const Document& doc, const View& view, double sx, double sy)
     return near.empty() ? kNoMark : near.front();
 }
 
-std::vector<std::size_t> active_diagnostics(const Document& doc, std::size_t hovered_mark, std::uint32_t selected_line) {
+std::vector<std::size_t> active_diagnostics(const Document& doc, std::size_t hovered_mark,
+                                            std::uint32_t selected_line) {
     std::vector<std::size_t> out;
     if (hovered_mark < doc.marks.size()) out.push_back(doc.marks[hovered_mark].diagnostic);
     if (selected_line == 0) return out;

@@ -117,8 +117,14 @@ bool SceneAssembly::prepare(const SceneInputs& in, const Renderer& renderer, boo
     tape_drawn_ = doc && (o.lod || path != nullptr);
     // The first frame of a tape loaded at once shows all of it (under 1 MB: at most about half a million segments).
     whole_ = in.load.draw_whole();
-    scene_ = SceneFrame{view, in.fb_w, in.fb_h, o, in.layers.grid ? grid_step(view.zoom) : kNoGrid,
-                        in.grid_origin, path, path ? path->version : 0};
+    scene_ = SceneFrame{view,
+                        in.fb_w,
+                        in.fb_h,
+                        o,
+                        in.layers.grid ? grid_step(view.zoom) : kNoGrid,
+                        in.grid_origin,
+                        path,
+                        path ? path->version : 0};
     return true;
 }
 

@@ -62,9 +62,9 @@ private:
     bool whole_ = false;                    // its image is drawn whole, not filled over frames (a load at once)
     std::optional<SceneFrame> last_scene_;  // the last frame drawn
     std::uint64_t last_ui_hash_ = 0;
-    std::uint64_t skipped_frames_ = 0;      // frames that drew nothing (the same pixels as the last)
-    bool lod_drawn_ = false;                // the last frame drew the level of detail
-    bool tape_drawn_ = false;               // the last frame drew the tape (its segments or its level of detail)
+    std::uint64_t skipped_frames_ = 0;  // frames that drew nothing (the same pixels as the last)
+    bool lod_drawn_ = false;            // the last frame drew the level of detail
+    bool tape_drawn_ = false;           // the last frame drew the tape (its segments or its level of detail)
 };
 
 }  // namespace essi::viewer

@@ -87,7 +87,8 @@ public:
 private:
     bool use_profile_file(const std::string& name, const std::string& bytes);
     void use_link_profile(const ShareLink& link);
-    void read(std::string name, std::string bytes, std::optional<ViewRequest> view);  // with the profile and format chosen
+    void read(std::string name, std::string bytes,
+              std::optional<ViewRequest> view);  // with the profile and format chosen
     void step();
     void document_loaded();
     void remember_name(const std::string& name);
@@ -104,7 +105,7 @@ private:
     SettingsStore& settings_;
 
     std::string profile_name_ = std::string(kAutoProfile);  // a built-in profile, the dropped one, or "auto"
-    std::optional<Profile> dropped_profile_;  // a profile file dropped on the page (its name is a choice too)
+    std::optional<Profile> dropped_profile_;   // a profile file dropped on the page (its name is a choice too)
     std::optional<InputFormat> input_format_;  // the format a share link said the tape was read as (else the content's)
     Phrase link_problem_;
     Msg banner_ = Msg::None;

@@ -20,9 +20,9 @@ public:
                PlatformServices& platform)
         : session_(session), navigation_(navigation), notices_(notices), ui_(ui), platform_(platform) {}
 
-    void share();                   // the Share button and S
-    void done(std::string url);     // the link is made (and copied)
-    void failed(Phrase why);        // it could not be made
+    void share();                // the Share button and S
+    void done(std::string url);  // the link is made (and copied)
+    void failed(Phrase why);     // it could not be made
     // The share link, or why there is none (the Share link window, state().share_url).
     [[nodiscard]] std::string text() const;
     // "c=X,Y,ZOOM&l=LINE&p=PROFILE[&pj=JSON]&i=FORMAT": the view, the selection and how the tape is read.
@@ -34,8 +34,8 @@ private:
     Notices& notices_;
     UiState& ui_;
     PlatformServices& platform_;
-    std::string url_;   // the last link
-    Phrase problem_;    // or why the last one could not be made
+    std::string url_;  // the last link
+    Phrase problem_;   // or why the last one could not be made
 };
 
 }  // namespace essi::viewer

@@ -15,16 +15,16 @@ namespace essi::viewer {
 // there only while the menu is open).
 struct ToolbarItem {
     const char* id = "";
-    Rect rect;             // screen pixels (nothing while it is in the closed menu)
+    Rect rect;  // screen pixels (nothing while it is in the closed menu)
     bool in_menu = false;
 };
 
 struct UiState {
     bool help = false;
-    bool share_popup = false;   // the Share link window (ShareLinks::text)
+    bool share_popup = false;                    // the Share link window (ShareLinks::text)
     std::size_t hovered_mark = ~std::size_t(0);  // the diagnostic's mark under the mouse (Document::marks), or none
-    std::vector<ToolbarItem> toolbar;  // the toolbar's items (Panels::toolbar)
-    Rect toolbar_more;                 // its overflow menu's button (w 0: every item fits)
+    std::vector<ToolbarItem> toolbar;            // the toolbar's items (Panels::toolbar)
+    Rect toolbar_more;                           // its overflow menu's button (w 0: every item fits)
     bool toolbar_menu_open = false;
     std::vector<std::string> examples;  // the tapes the server offers (the start screen), none natively
     panels::PanelLayout layout;         // the side panels (kept across sessions: Preferences::set_layout)

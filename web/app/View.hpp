@@ -81,8 +81,10 @@ struct View {
             return;
         }
         const Rotation r = rotation();
-        const double hw = std::max(b.max_x - b.min_x, kMinFitSizeMm) / 2, hh = std::max(b.max_y - b.min_y, kMinFitSizeMm) / 2;
-        const double w = 2 * (std::fabs(r.c) * hw + std::fabs(r.s) * hh), h = 2 * (std::fabs(r.s) * hw + std::fabs(r.c) * hh);
+        const double hw = std::max(b.max_x - b.min_x, kMinFitSizeMm) / 2,
+                     hh = std::max(b.max_y - b.min_y, kMinFitSizeMm) / 2;
+        const double w = 2 * (std::fabs(r.c) * hw + std::fabs(r.s) * hh),
+                     h = 2 * (std::fabs(r.s) * hw + std::fabs(r.c) * hh);
         const double aw = std::max(area.w - 2 * margin_px, 10.f), ah = std::max(area.h - 2 * margin_px, 10.f);
         zoom = std::clamp(std::min(aw / w, ah / h), kMinZoom, kMaxZoom);
         cx = (b.min_x + b.max_x) / 2 - origin.x;

@@ -34,15 +34,22 @@ essi::viewer::Phrase page_phrase(const char* json) {
         Msg msg;
         Msg arg;  // its argument when it is a catalogue word (else the page's arguments)
     } kKinds[] = {
-        {"cut", Msg::UiLinkCut, Msg::None},                    {"no-tape", Msg::UiLinkCut, Msg::UiLinkNoTape},
-        {"no-stored-tape", Msg::UiLinkCut, Msg::UiLinkNoStoredTape}, {"unpack", Msg::UiLinkCut, Msg::UiLinkNoUnpack},
-        {"length", Msg::UiLinkCutLength, Msg::None},           {"store-down", Msg::UiLinkStoreDown, Msg::None},
-        {"gone", Msg::UiLinkGone, Msg::None},                  {"store-error", Msg::UiLinkStoreError, Msg::None},
-        {"too-large", Msg::UiLinkTooLarge, Msg::None},         {"make-failed", Msg::UiLinkMakeFailed, Msg::None},
-        {"store-too-large", Msg::UiLinkStoreTooLarge, Msg::None}, {"store-failed", Msg::UiLinkStoreFailed, Msg::None},
+        {"cut", Msg::UiLinkCut, Msg::None},
+        {"no-tape", Msg::UiLinkCut, Msg::UiLinkNoTape},
+        {"no-stored-tape", Msg::UiLinkCut, Msg::UiLinkNoStoredTape},
+        {"unpack", Msg::UiLinkCut, Msg::UiLinkNoUnpack},
+        {"length", Msg::UiLinkCutLength, Msg::None},
+        {"store-down", Msg::UiLinkStoreDown, Msg::None},
+        {"gone", Msg::UiLinkGone, Msg::None},
+        {"store-error", Msg::UiLinkStoreError, Msg::None},
+        {"too-large", Msg::UiLinkTooLarge, Msg::None},
+        {"make-failed", Msg::UiLinkMakeFailed, Msg::None},
+        {"store-too-large", Msg::UiLinkStoreTooLarge, Msg::None},
+        {"store-failed", Msg::UiLinkStoreFailed, Msg::None},
     };
     const nlohmann::json j = nlohmann::json::parse(json ? json : "", nullptr, false);
-    const std::string kind = j.is_object() && j.contains("kind") && j["kind"].is_string() ? j["kind"].get<std::string>() : "";
+    const std::string kind =
+        j.is_object() && j.contains("kind") && j["kind"].is_string() ? j["kind"].get<std::string>() : "";
     std::vector<std::string> args;
     if (j.is_object() && j.contains("args") && j["args"].is_array())
         for (const auto& a : j["args"]) args.push_back(a.is_string() ? a.get<std::string>() : a.dump());
@@ -186,7 +193,8 @@ EMSCRIPTEN_KEEPALIVE void essi_pinch(double x0, double y0, double x1, double y1,
 
 // The side panels shown or hidden, and their widths (0: as they are); kept across sessions.
 EMSCRIPTEN_KEEPALIVE void essi_set_layout(int left_shown, int right_shown, double left, double right) {
-    if (g_api) g_api->set_layout({static_cast<float>(left), static_cast<float>(right), left_shown != 0, right_shown != 0});
+    if (g_api)
+        g_api->set_layout({static_cast<float>(left), static_cast<float>(right), left_shown != 0, right_shown != 0});
 }
 
 // Compare mode: the tape in the load buffer (essi_load_buffer) is compared with the loaded one (essikit.compare);
@@ -253,7 +261,7 @@ EMSCRIPTEN_KEEPALIVE void essi_set_profile(const char* name) {
 namespace {
 std::string g_share_packed;
 std::string g_share_json;
-}
+}  // namespace
 
 EMSCRIPTEN_KEEPALIVE const char* essi_parse_share(const char* fragment) {
     essi::ShareLink link = essi::parse_share_fragment(fragment ? fragment : "");
@@ -289,9 +297,7 @@ EMSCRIPTEN_KEEPALIVE const char* essi_export(const char* format) {
 EMSCRIPTEN_KEEPALIVE void essi_require_glyphs(const char* text) {
     if (g_api && text) g_api->require_glyphs(text);
 }
-EMSCRIPTEN_KEEPALIVE int essi_has_glyphs(const char* text) {
-    return g_api && text && g_api->has_glyphs(text) ? 1 : 0;
-}
+EMSCRIPTEN_KEEPALIVE int essi_has_glyphs(const char* text) { return g_api && text && g_api->has_glyphs(text) ? 1 : 0; }
 
 // Makes a share link as the Share button does; the page's essikitShare finishes it.
 EMSCRIPTEN_KEEPALIVE void essi_share() {

@@ -34,7 +34,8 @@ void install_drop_handler(GLFWwindow* window, AppCallbacks& app) {
 void Platform::open_button_at(float, float, float, float) {}  // a desktop dialog can open from any frame
 
 void Platform::open_file_dialog() {
-    const std::string command = std::string("zenity --file-selection --title='") + tr(Msg::UiOpenDialogTitle) + "' 2>/dev/null";
+    const std::string command =
+        std::string("zenity --file-selection --title='") + tr(Msg::UiOpenDialogTitle) + "' 2>/dev/null";
     FILE* p = popen(command.c_str(), "r");
     std::string path;
     if (p != nullptr) {

@@ -26,9 +26,11 @@ void Platform::load_cjk_font(UiFonts& fonts) {
     std::FILE* f = std::fopen(path, "rb");
     unsigned char* data = nullptr;
     long size = -1;
-    if (f != nullptr && std::fseek(f, 0, SEEK_END) == 0 && (size = std::ftell(f)) > 0 && std::fseek(f, 0, SEEK_SET) == 0) {
+    if (f != nullptr && std::fseek(f, 0, SEEK_END) == 0 && (size = std::ftell(f)) > 0 &&
+        std::fseek(f, 0, SEEK_SET) == 0) {
         data = static_cast<unsigned char*>(std::malloc(static_cast<std::size_t>(size)));
-        if (data != nullptr && std::fread(data, 1, static_cast<std::size_t>(size), f) != static_cast<std::size_t>(size)) {
+        if (data != nullptr &&
+            std::fread(data, 1, static_cast<std::size_t>(size), f) != static_cast<std::size_t>(size)) {
             std::free(data);
             data = nullptr;
         }

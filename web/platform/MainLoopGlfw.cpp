@@ -36,7 +36,9 @@ struct Options {
 };
 
 int usage() {
-    std::fprintf(stderr, "usage: essi_viewer [--frames N] [--screenshot FILE.ppm] [--state FILE.json] [--lang en|de|zh] [TAPE]\n");
+    std::fprintf(
+        stderr,
+        "usage: essi_viewer [--frames N] [--screenshot FILE.ppm] [--state FILE.json] [--lang en|de|zh] [TAPE]\n");
     return 2;
 }
 
@@ -128,7 +130,8 @@ int run(const Options& opt, GLFWwindow* window) {
     platform::Platform platform;
     App app(platform);
     platform.connect(app);
-    if (opt.lang) app.automation().set_language(*opt.lang, false);  // (for this run: the viewer's own choice stays kept)
+    if (opt.lang)
+        app.automation().set_language(*opt.lang, false);  // (for this run: the viewer's own choice stays kept)
     if (!app.init_graphics()) std::fprintf(stderr, "essi_viewer: the drawing programs did not compile\n");
     platform::install_drop_handler(window, app);
     if (!opt.tape.empty()) {
@@ -162,7 +165,8 @@ int run(const Options& opt, GLFWwindow* window) {
 int main(int argc, char** argv) {
     Options opt;
     if (!parse(argc, argv, opt)) return usage();
-    glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "essi_viewer: GLFW error %d: %s\n", code, text); });
+    glfwSetErrorCallback(
+        [](int code, const char* text) { std::fprintf(stderr, "essi_viewer: GLFW error %d: %s\n", code, text); });
     if (!glfwInit()) {
         std::fprintf(stderr, "essi_viewer: cannot initialise GLFW (no display?)\n");
         return 2;

@@ -1,4 +1,5 @@
-// Viewer settings on the desktop: one line "NAME VALUE" each (the value the rest of the line) in $XDG_CONFIG_HOME/essikit/viewer.conf (else
+// Viewer settings on the desktop: one line "NAME VALUE" each (the value the rest of the line) in
+// $XDG_CONFIG_HOME/essikit/viewer.conf (else
 // ~/.config/essikit/viewer.conf), kept across sessions.
 #include <algorithm>
 #include <cstdlib>
@@ -13,8 +14,10 @@ namespace essi::viewer::platform {
 namespace {
 
 std::filesystem::path settings_file() {
-    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "essikit/viewer.conf";
-    if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".config/essikit/viewer.conf";
+    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
+        return std::filesystem::path(xdg) / "essikit/viewer.conf";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return std::filesystem::path(home) / ".config/essikit/viewer.conf";
     return {};
 }
 

@@ -6,8 +6,6 @@ namespace essi::viewer::platform {
 
 bool Platform::has_share_links() const { return false; }
 
-void Platform::share(const std::string&, std::string_view, const std::string&) {
-    notify(Msg::UiShareBrowserOnly);
-}
+void Platform::share(const std::string&, std::string_view, const std::string&) { notify(Msg::UiShareBrowserOnly); }
 
 }  // namespace essi::viewer::platform

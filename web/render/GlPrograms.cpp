@@ -120,8 +120,8 @@ bool ScenePrograms::init(int tex_width) {
     if (!blit_id || !lod_id) return false;
 
     const Setup p(path_id);
-    path = {p.scene(), p("u_half_width"), p("u_layer_mask"), p("u_override"), p("u_extra_width"), p("u_first"),
-            p("u_band_half_mm"), p("u_alpha")};
+    path = {p.scene(),          p("u_half_width"), p("u_layer_mask"),   p("u_override"),
+            p("u_extra_width"), p("u_first"),      p("u_band_half_mm"), p("u_alpha")};
     p.set("u_alpha", 1.f);
     p.set("u_colors", kPathColorTable.data(), kPathColors);
     p.set("u_ramp", kColourRamp.data(), kColourBins);
@@ -133,8 +133,8 @@ bool ScenePrograms::init(int tex_width) {
     grid = {g.scene(), g("u_world_origin"), g("u_step")};
 
     const Setup m(marker_id);
-    marker = {m.scene(),          m("u_radius_px"),      m("u_type_mask"), m("u_use_single"),
-              m("u_single"),      m("u_mark_radius_px"), m("u_plain_alpha"), m("u_first")};
+    marker = {m.scene(),     m("u_radius_px"),      m("u_type_mask"),   m("u_use_single"),
+              m("u_single"), m("u_mark_radius_px"), m("u_plain_alpha"), m("u_first")};
     m.set("u_plain_alpha", 1.f);
     m.set("u_first", 0);
     m.set("u_markers", 0);

@@ -66,7 +66,8 @@ bool LodRaster::step(std::size_t max_motions) {
         }
         scratch_.clear();
         flatten(doc.record(next_), tolerance_cells * cell_, scratch_, true);
-        for (std::size_t k = 1; k < scratch_.size(); ++k) add_cells(to_cells(scratch_[k - 1]), to_cells(scratch_[k]), bit);
+        for (std::size_t k = 1; k < scratch_.size(); ++k)
+            add_cells(to_cells(scratch_[k - 1]), to_cells(scratch_[k]), bit);
     }
     if (next_ < doc.motions.size()) return false;
     scratch_ = std::vector<Point>();
@@ -150,7 +151,8 @@ std::vector<std::vector<std::uint8_t>> LodRaster::blank(int w, int h) {
     const int rows = rows_for(w);
     strips.reserve(static_cast<std::size_t>((h + rows - 1) / rows));
     for (int y = 0; y < h; y += rows)
-        strips.emplace_back(static_cast<std::size_t>(w) * static_cast<std::size_t>(std::min(rows, h - y)), std::uint8_t{0});
+        strips.emplace_back(static_cast<std::size_t>(w) * static_cast<std::size_t>(std::min(rows, h - y)),
+                            std::uint8_t{0});
     return strips;
 }
 
@@ -173,7 +175,8 @@ void LodRaster::add_cells(Point a, Point b, std::uint8_t bit) {
         const int length = in_row ? width_ : height_, breadth = in_row ? height_ : width_;
         if (!(across >= 0 && across < breadth && along1 >= 0 && along0 < length)) return;  // (NaN: nothing)
         const int k = static_cast<int>(across);
-        const int first = static_cast<int>(std::max(along0, 0.0)), last = static_cast<int>(std::min(along1, length - 1.0));
+        const int first = static_cast<int>(std::max(along0, 0.0)),
+                  last = static_cast<int>(std::min(along1, length - 1.0));
         if (in_row) {
             std::uint8_t* cells = rows_[static_cast<std::size_t>(k)];
             for (int x = first; x <= last; ++x) cells[x] |= bit;
@@ -189,7 +192,7 @@ void LodRaster::add_cells(Point a, Point b, std::uint8_t bit) {
     const double span = std::max(std::fabs(b.x - a.x), std::fabs(b.y - a.y));
     const int n = static_cast<int>(std::min(span, static_cast<double>(2 * cells_))) + 1;
     constexpr double kOne = 4294967296.0;  // 2^32
-    constexpr double kFar = 1e9;  // cells: far outside, and within the fixed point's range
+    constexpr double kFar = 1e9;           // cells: far outside, and within the fixed point's range
     std::int64_t fx = static_cast<std::int64_t>(std::clamp(a.x, -kFar, kFar) * kOne);
     std::int64_t fy = static_cast<std::int64_t>(std::clamp(a.y, -kFar, kFar) * kOne);
     const std::int64_t sx = static_cast<std::int64_t>(std::clamp((b.x - a.x) / n, -kFar, kFar) * kOne);

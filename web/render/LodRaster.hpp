@@ -20,8 +20,8 @@ namespace essi::viewer {
 
 class LodRaster {
 public:
-    static constexpr int kMaxCells = 2048;          // finest level, on the longer side (GLES 3 guarantees 2048)
-    static constexpr int kMinCells = 256;           // (a tape with fewer motions than a few thousand has no LOD)
+    static constexpr int kMaxCells = 2048;  // finest level, on the longer side (GLES 3 guarantees 2048)
+    static constexpr int kMinCells = 256;   // (a tape with fewer motions than a few thousand has no LOD)
     // The finest level holds at most this many cells a motion (one byte a cell, while it is built on the CPU):
     // a tape of 100 000-250 000 motions gets a raster of ~900-1 400 cells on its longer side instead of 2 048,
     // which keeps the page's memory peak within its budget (docs/performance.md) and still covers a fitted view
@@ -45,7 +45,7 @@ public:
     // Rasterises up to `max_motions` more motions of the document given to begin(doc); true when all are in.
     bool step(std::size_t max_motions);
     [[nodiscard]] float progress() const;
-    void finish();  // builds the coarser levels
+    void finish();   // builds the coarser levels
     void release();  // frees the CPU copy (once on the GPU)
 
     [[nodiscard]] bool active() const { return width_ > 0; }
@@ -53,11 +53,17 @@ public:
     [[nodiscard]] double cell_mm() const { return cell_; }
     [[nodiscard]] float min_x() const { return min_x_; }
     [[nodiscard]] float min_y() const { return min_y_; }
-    [[nodiscard]] int width(int level = 0) const { return level < static_cast<int>(sizes_.size()) ? sizes_[level].first : 0; }
-    [[nodiscard]] int height(int level = 0) const { return level < static_cast<int>(sizes_.size()) ? sizes_[level].second : 0; }
+    [[nodiscard]] int width(int level = 0) const {
+        return level < static_cast<int>(sizes_.size()) ? sizes_[level].first : 0;
+    }
+    [[nodiscard]] int height(int level = 0) const {
+        return level < static_cast<int>(sizes_.size()) ? sizes_[level].second : 0;
+    }
     [[nodiscard]] int levels() const { return static_cast<int>(sizes_.size()); }
     // Level k as strips of whole rows, bottom row first: strip j holds rows [j x strip_rows(k), ...).
-    [[nodiscard]] const std::vector<std::vector<std::uint8_t>>& strips(int k) const { return data_[static_cast<std::size_t>(k)]; }
+    [[nodiscard]] const std::vector<std::vector<std::uint8_t>>& strips(int k) const {
+        return data_[static_cast<std::size_t>(k)];
+    }
     [[nodiscard]] int strip_rows(int k) const { return rows_for(width(k)); }
     // The cell (x, y) of level k (tests).
     [[nodiscard]] std::uint8_t at(int k, int x, int y) const;
@@ -66,7 +72,8 @@ public:
 private:
     [[nodiscard]] static int rows_for(int width) {  // (a power of two)
         int rows = 1;
-        while (static_cast<std::size_t>(rows) * 2 * static_cast<std::size_t>(std::max(width, 1)) <= kStripBytes) rows *= 2;
+        while (static_cast<std::size_t>(rows) * 2 * static_cast<std::size_t>(std::max(width, 1)) <= kStripBytes)
+            rows *= 2;
         return rows;
     }
     [[nodiscard]] static std::vector<std::vector<std::uint8_t>> blank(int w, int h);
@@ -96,7 +103,7 @@ private:
     std::size_t next_ = 0;
     std::vector<Point> scratch_;
     double units_to_cells_ = 0, cells_at_zero_x_ = 0, cells_at_zero_y_ = 0;  // (begin(doc))
-    UnitPoint last_end_;         // of the motion before, when it was compact
+    UnitPoint last_end_;  // of the motion before, when it was compact
     bool last_in_units_ = false;
     std::vector<std::pair<int, int>> sizes_;
     std::vector<std::vector<std::vector<std::uint8_t>>> data_;  // level, strip, cells

@@ -38,7 +38,10 @@ inline constexpr std::size_t kPathColors = 6;  // the path program's colours: th
 inline constexpr int kKerfPathBit = 1 << kKerfPathKind, kKerfBandBit = 1 << kKerfBandKind;
 inline constexpr int kAllPathMask = kAllKindsMask | kKerfPathBit | kKerfBandBit;
 inline constexpr std::array<Rgba, kPathColors> kPathColorTable = {{
-    kKindColors[0], kKindColors[1], kKindColors[2], kKindColors[3],
+    kKindColors[0],
+    kKindColors[1],
+    kKindColors[2],
+    kKindColors[3],
     {0.30f, 0.95f, 0.45f, 1.00f},  // kerf path: green, the torch's path
     {1.00f, 0.55f, 0.10f, 0.28f},  // kerf band: the cut's colour, translucent
 }};
@@ -50,11 +53,21 @@ inline constexpr std::uint8_t kColourByCutKind = kKerfBandKind + kKerfBandWidths
 inline constexpr std::uint8_t kColourByMarkKind = kColourByCutKind + kColourBins;
 // The ramp: "turbo" from blue to red, its darkest ends left out (bright on the dark and the light theme).
 inline constexpr std::array<Rgba, kColourBins> kColourRamp = {{
-    {0.27f, 0.40f, 0.92f, 1.00f}, {0.21f, 0.55f, 0.98f, 1.00f}, {0.16f, 0.69f, 0.92f, 1.00f},
-    {0.15f, 0.81f, 0.80f, 1.00f}, {0.19f, 0.91f, 0.67f, 1.00f}, {0.29f, 0.97f, 0.53f, 1.00f},
-    {0.43f, 0.99f, 0.41f, 1.00f}, {0.60f, 0.98f, 0.31f, 1.00f}, {0.76f, 0.93f, 0.24f, 1.00f},
-    {0.90f, 0.84f, 0.19f, 1.00f}, {1.00f, 0.72f, 0.15f, 1.00f}, {1.00f, 0.58f, 0.13f, 1.00f},
-    {0.99f, 0.43f, 0.10f, 1.00f}, {0.90f, 0.28f, 0.07f, 1.00f}, {0.76f, 0.15f, 0.04f, 1.00f},
+    {0.27f, 0.40f, 0.92f, 1.00f},
+    {0.21f, 0.55f, 0.98f, 1.00f},
+    {0.16f, 0.69f, 0.92f, 1.00f},
+    {0.15f, 0.81f, 0.80f, 1.00f},
+    {0.19f, 0.91f, 0.67f, 1.00f},
+    {0.29f, 0.97f, 0.53f, 1.00f},
+    {0.43f, 0.99f, 0.41f, 1.00f},
+    {0.60f, 0.98f, 0.31f, 1.00f},
+    {0.76f, 0.93f, 0.24f, 1.00f},
+    {0.90f, 0.84f, 0.19f, 1.00f},
+    {1.00f, 0.72f, 0.15f, 1.00f},
+    {1.00f, 0.58f, 0.13f, 1.00f},
+    {0.99f, 0.43f, 0.10f, 1.00f},
+    {0.90f, 0.28f, 0.07f, 1.00f},
+    {0.76f, 0.15f, 0.04f, 1.00f},
     {0.63f, 0.07f, 0.00f, 1.00f},
 }};
 
@@ -97,8 +110,14 @@ struct Theme {
     Rgba background, grid_minor, grid_major, grid_axis, tool;
     Rgba label, scale_bar;  // grid labels, the scale bar
 };
-inline constexpr Theme kDarkTheme = {false, kBackground, kGridMinor, kGridMajor, kGridAxis, kMarkerColors[2],
-                                     {0.59f, 0.63f, 0.67f, 0.63f}, {0.9f, 0.9f, 0.9f, 0.86f}};
+inline constexpr Theme kDarkTheme = {false,
+                                     kBackground,
+                                     kGridMinor,
+                                     kGridMajor,
+                                     kGridAxis,
+                                     kMarkerColors[2],
+                                     {0.59f, 0.63f, 0.67f, 0.63f},
+                                     {0.9f, 0.9f, 0.9f, 0.86f}};
 inline constexpr Theme kLightTheme = {true,
                                       {0.97f, 0.97f, 0.96f, 1.f},
                                       {0.15f, 0.2f, 0.25f, 0.10f},

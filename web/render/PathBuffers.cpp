@@ -33,7 +33,8 @@ void PathBuffers::begin(const Document& doc, double tol, ColourBy colour_by) {
     kerf_widths.fill(0);
     kerf_width_count = 0;
     // (a tape without compensation makes no kerf path: its segments are the motions' only)
-    const bool compensated = std::any_of(doc.kerfs.begin(), doc.kerfs.end(), [](const auto& k) { return k.second > 0; });
+    const bool compensated =
+        std::any_of(doc.kerfs.begin(), doc.kerfs.end(), [](const auto& k) { return k.second > 0; });
     kerf_sink_ = compensated ? std::make_unique<KerfSegments>(*this) : nullptr;
     kerf_ = compensated ? std::make_unique<KerfPath>(*kerf_sink_, tolerance_) : nullptr;
     next_ = 0;
@@ -83,7 +84,8 @@ bool PathBuffers::step(std::size_t max_motions) {
         auto kind = static_cast<std::uint8_t>(m.kind);
         if (bins_) {
             if (const std::optional<std::uint8_t> bin = bins_->bin(next_))
-                kind = static_cast<std::uint8_t>((m.kind == MotionKind::Cut ? kColourByCutKind : kColourByMarkKind) + *bin);
+                kind = static_cast<std::uint8_t>((m.kind == MotionKind::Cut ? kColourByCutKind : kColourByMarkKind) +
+                                                 *bin);
         }
         // A cut by several torches (kept: its record says how many) is drawn once per torch.
         const MotionRecord* torches = doc.torch_copies(next_);
@@ -108,7 +110,8 @@ bool PathBuffers::step(std::size_t max_motions) {
             kerf_.reset();
             kerf_sink_.reset();
         }
-        if (first_segment.size() == doc.motions.size()) first_segment.push_back(static_cast<std::uint32_t>(segment_count));
+        if (first_segment.size() == doc.motions.size())
+            first_segment.push_back(static_cast<std::uint32_t>(segment_count));
         return true;
     }
     return false;
@@ -130,7 +133,8 @@ void PathBuffers::put_kerf_piece(const MotionRecord& piece) {
     const std::uint8_t band = piece.kind == MotionKind::Cut ? band_kind(2 * piece.kerf_mm) : 0;
     for (int c = 0; c < piece.torches; ++c) {
         for (std::size_t k = 1; k < kerf_scratch_.size(); ++k) {
-            const Point a = torch_copy(kerf_scratch_[k - 1], piece.torch_step, c), b = torch_copy(kerf_scratch_[k], piece.torch_step, c);
+            const Point a = torch_copy(kerf_scratch_[k - 1], piece.torch_step, c),
+                        b = torch_copy(kerf_scratch_[k], piece.torch_step, c);
             if (band) put(a, b, band);
             put(a, b, kKerfPathKind);
             kerf_segments += band ? 2 : 1;

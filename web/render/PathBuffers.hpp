@@ -57,12 +57,12 @@ public:
     std::size_t kerf_width_count = 0;
 
     // Segments made but not yet taken by the renderer: [staged_first, segment_count).
-    std::vector<float> staged_ends;            // 4 floats a segment
-    std::vector<std::uint8_t> staged_kinds;    // MotionKind
+    std::vector<float> staged_ends;          // 4 floats a segment
+    std::vector<std::uint8_t> staged_kinds;  // MotionKind
     std::size_t staged_first = 0;
     [[nodiscard]] std::size_t staged_count() const { return staged_kinds.size(); }
-    void drop_staged(std::size_t n);           // the first n staged segments are on the GPU
-    void release_staging();                    // frees the staging area (the build is complete)
+    void drop_staged(std::size_t n);  // the first n staged segments are on the GPU
+    void release_staging();           // frees the staging area (the build is complete)
 
     [[nodiscard]] std::size_t memory_bytes() const;
 

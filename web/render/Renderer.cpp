@@ -13,8 +13,9 @@ namespace {
 // The image around the drawing area: this share of the area's width (height) on each side.
 constexpr float kCacheMarginShare = 0.5f;
 // Line half widths by MotionKind, in window pixels: rapid, travel, cut, mark.
-constexpr float kHalfWidthPx[kPathColors] = {0.6f, 0.6f, 1.1f, 1.0f, 0.6f, 1.1f};  // (a band: at least as wide as a cut)
-constexpr float kSelectionExtraPx = 1.0f;  // the selection is drawn this much wider on each side
+constexpr float kHalfWidthPx[kPathColors] = {0.6f, 0.6f, 1.1f,
+                                             1.0f, 0.6f, 1.1f};  // (a band: at least as wide as a cut)
+constexpr float kSelectionExtraPx = 1.0f;                        // the selection is drawn this much wider on each side
 constexpr float kMarkerRadiusPx = 5.0f;
 constexpr float kToolRadiusPx = 8.0f;
 // "Everything" for the culling box (mm): wider than any tape.
@@ -129,7 +130,8 @@ void Renderer::upload_markers(const std::vector<MarkerInstance>& markers) {
         data[4 * i + 2] = markers[i].type;
     }
     glBindTexture(GL_TEXTURE_2D, marker_tex_);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kTexWidth, static_cast<GLsizei>(rows), 0, GL_RGBA, GL_FLOAT, data.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kTexWidth, static_cast<GLsizei>(rows), 0, GL_RGBA, GL_FLOAT,
+                 data.data());
     glBindTexture(GL_TEXTURE_2D, 0);
     marker_count_ = n;
     marks_first_ = n;
@@ -313,7 +315,8 @@ void Renderer::draw_selection(const Target& t, const GpuPath& path, const DrawOp
 // The markers of the texture: pierces, the start point and the diagnostics' marks (uploaded last: on top). `dim`:
 // the pierces and the start faint (the problems-only view).
 void Renderer::draw_markers(const Target& t, int marker_mask, bool dim) {
-    constexpr int kTextureMarkers = marker_bit(MarkerType::Pierce) | marker_bit(MarkerType::Start) | kDiagnosticMarkersMask;
+    constexpr int kTextureMarkers =
+        marker_bit(MarkerType::Pierce) | marker_bit(MarkerType::Start) | kDiagnosticMarkersMask;
     if (marker_count_ == 0 || (marker_mask & kTextureMarkers) == 0) return;
     const MarkerProgram& p = programs_.marker;
     glUseProgram(p.id);
@@ -449,9 +452,23 @@ void Renderer::draw_uncached(const Frame& f) {
 void Renderer::update_image(const Frame& f) {
     const View& view = f.view;
     const float s = f.scale;
-    const SceneKey key{view.zoom, f.grid_step, f.world_origin, f.layer_mask, f.o.marker_mask, f.fb_w, f.fb_h, s,
-                       view.area, f.path, f.path ? f.path->version : 0, markers_version_, lod_version_, f.lod,
-                       view.rotation(), f.o.dim && !f.lod, f.o.dim && !f.lod ? f.o.bright : std::vector<SegmentRun>{}};
+    const SceneKey key{view.zoom,
+                       f.grid_step,
+                       f.world_origin,
+                       f.layer_mask,
+                       f.o.marker_mask,
+                       f.fb_w,
+                       f.fb_h,
+                       s,
+                       view.area,
+                       f.path,
+                       f.path ? f.path->version : 0,
+                       markers_version_,
+                       lod_version_,
+                       f.lod,
+                       view.rotation(),
+                       f.o.dim && !f.lod,
+                       f.o.dim && !f.lod ? f.o.bright : std::vector<SegmentRun>{}};
     // Where the image's top-left corner is now: where it was, moved by the pan since (whole pixels).
     const Point moved = pan_px(view, s);
     const float left = cache_left_ + std::round(static_cast<float>(moved.x));
@@ -481,9 +498,15 @@ void Renderer::update_image(const Frame& f) {
         glBindFramebuffer(GL_FRAMEBUFFER, cache_fbo_);
         glViewport(0, 0, cache_w_, cache_h_);
         // The image's own mapping: its centre view (cache_cx_, cache_cy_) at the area's centre.
-        const Target own{static_cast<float>(cache_cx_), static_cast<float>(cache_cy_), f.window.zoom,
-                         static_cast<float>(view.ox() * s) - cache_left_, static_cast<float>(view.oy() * s) - cache_top_,
-                         cache_w_, cache_h_, s, f.window.rot};
+        const Target own{static_cast<float>(cache_cx_),
+                         static_cast<float>(cache_cy_),
+                         f.window.zoom,
+                         static_cast<float>(view.ox() * s) - cache_left_,
+                         static_cast<float>(view.oy() * s) - cache_top_,
+                         cache_w_,
+                         cache_h_,
+                         s,
+                         f.window.rot};
         const bool filling = cache_markers_pending_;
         cache_limit_ = draw_scene(f, own, cache_limit_, false, f.fill_budget);
         ++(filling ? stats_.filling_frames : stats_.partial_redraws);
@@ -525,13 +548,35 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
     glBindVertexArray(empty_vao_);
     glActiveTexture(GL_TEXTURE0);
     const float s = o.framebuffer_scale;
-    const Target window{static_cast<float>(view.cx), static_cast<float>(view.cy), static_cast<float>(view.zoom * s),
-                        static_cast<float>(view.ox() * s), static_cast<float>(view.oy() * s), fb_w, fb_h, s, view.rotation()};
+    const Target window{static_cast<float>(view.cx),
+                        static_cast<float>(view.cy),
+                        static_cast<float>(view.zoom * s),
+                        static_cast<float>(view.ox() * s),
+                        static_cast<float>(view.oy() * s),
+                        fb_w,
+                        fb_h,
+                        s,
+                        view.rotation()};
     const std::size_t count = path ? path->count : 0;
     const float aw = view.area.w * s, ah = view.area.h * s;
-    const Frame f{view, fb_w, fb_h, o, grid_step, world_origin, path, s, window, std::min(count, o.segment_limit),
-                  o.layer_mask & kAllPathMask, o.lod && lod_levels_ > 0, view.area.x * s, view.area.y * s, aw, ah,
-                  static_cast<int>(std::ceil(aw * kCacheMarginShare)), static_cast<int>(std::ceil(ah * kCacheMarginShare)),
+    const Frame f{view,
+                  fb_w,
+                  fb_h,
+                  o,
+                  grid_step,
+                  world_origin,
+                  path,
+                  s,
+                  window,
+                  std::min(count, o.segment_limit),
+                  o.layer_mask & kAllPathMask,
+                  o.lod && lod_levels_ > 0,
+                  view.area.x * s,
+                  view.area.y * s,
+                  aw,
+                  ah,
+                  static_cast<int>(std::ceil(aw * kCacheMarginShare)),
+                  static_cast<int>(std::ceil(ah * kCacheMarginShare)),
                   fill_budget};
     const int cw = static_cast<int>(std::ceil(aw)) + 2 * f.mx, ch = static_cast<int>(std::ceil(ah)) + 2 * f.my;
     if (cw > 0 && ch > 0 && ensure_cache(cw, ch)) {

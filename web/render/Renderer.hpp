@@ -38,15 +38,15 @@ struct Highlight {
 };
 
 struct DrawOptions {
-    int layer_mask = kAllPathMask;      // a bit per MotionKind (kind_bit), kKerfPathBit, kKerfBandBit
+    int layer_mask = kAllPathMask;                      // a bit per MotionKind (kind_bit), kKerfPathBit, kKerfBandBit
     std::array<float, kKerfBandWidths> kerf_band_mm{};  // the kerf bands' widths (PathBuffers::kerf_widths)
-    int marker_mask = kAllMarkersMask;  // a bit per MarkerType (marker_bit)
-    std::size_t segment_limit = ~std::size_t(0);  // playback: draw segments [0, limit)
+    int marker_mask = kAllMarkersMask;                  // a bit per MarkerType (marker_bit)
+    std::size_t segment_limit = ~std::size_t(0);        // playback: draw segments [0, limit)
     std::size_t selection_first = 0, selection_count = 0;  // segments drawn highlighted
-    bool has_tool = false;         // playback: the tool marker
-    Point tool;                    // relative to the document origin
+    bool has_tool = false;                                 // playback: the tool marker
+    Point tool;                                            // relative to the document origin
     float framebuffer_scale = 1;
-    bool lod = false;              // draw the level-of-detail raster instead of the segments (and pierces)
+    bool lod = false;                 // draw the level-of-detail raster instead of the segments (and pierces)
     Rgba panel_color = {0, 0, 0, 1};  // the window around the drawing area (the panels draw no background)
     // The problems-only view: every motion and marker drawn at kDimAlpha, then `bright` (what the diagnostics
     // concern) again in full, and the diagnostics' marks in full (not with the level of detail).
@@ -59,11 +59,11 @@ struct DrawOptions {
 // What the last frames cost (the e2e tests check that a pan reuses the image and a zoom redraws it).
 struct RenderStats {
     std::uint64_t frames = 0;
-    std::uint64_t full_redraws = 0;    // the whole scene drawn (into the image or the window)
-    std::uint64_t partial_redraws = 0; // playback moved forward: only the new segments drawn into the image
-    std::uint64_t cached_frames = 0;   // the image reused, moved by the pan
-    std::uint64_t filling_frames = 0;  // frames that went on drawing an image too big for one frame
-    std::size_t pending_segments = 0;  // segments of the current image still to draw (0: it is complete)
+    std::uint64_t full_redraws = 0;     // the whole scene drawn (into the image or the window)
+    std::uint64_t partial_redraws = 0;  // playback moved forward: only the new segments drawn into the image
+    std::uint64_t cached_frames = 0;    // the image reused, moved by the pan
+    std::uint64_t filling_frames = 0;   // frames that went on drawing an image too big for one frame
+    std::size_t pending_segments = 0;   // segments of the current image still to draw (0: it is complete)
 };
 
 // One page of segments: RGBA32F x0 y0 x1 y1 and R8UI kind, kTexWidth segments a row.
@@ -87,9 +87,9 @@ struct GpuPath {
 
 class Renderer {
 public:
-    static constexpr int kTexWidth = 4096;        // segments a texture row (GLES 3 guarantees 2048; WebGL2 4096+)
-    static constexpr std::size_t kPageRows = 256;  // rows a page at most: 1 M segments, 17 MB
-    static constexpr std::size_t kRowQuantum = 16; // page heights are multiples of this
+    static constexpr int kTexWidth = 4096;          // segments a texture row (GLES 3 guarantees 2048; WebGL2 4096+)
+    static constexpr std::size_t kPageRows = 256;   // rows a page at most: 1 M segments, 17 MB
+    static constexpr std::size_t kRowQuantum = 16;  // page heights are multiples of this
     // Segments drawn into the image a frame at most: SwiftShader draws about a million segments a second, so a
     // zoomed-in view of a big tape fills its image over several frames instead of freezing the page (the
     // pan, the zoom and the panels go on meanwhile; what is drawn so far shows).
@@ -97,7 +97,7 @@ public:
     static constexpr std::size_t kWholeImage = ~std::size_t(0);  // draw()'s fill budget: the whole image at once
     static constexpr float kCullMarginPx = 8;  // a group's box meets the view when it is this close (line widths)
     static constexpr float kDimAlpha = 0.18f;  // the problems-only view: what no diagnostic concerns
-    static constexpr float kMarkRadiusPx = 8;   // a diagnostic's mark (window pixels, the same at every zoom)
+    static constexpr float kMarkRadiusPx = 8;  // a diagnostic's mark (window pixels, the same at every zoom)
 
     bool init();  // compiles the programs and finds their uniforms; false (program_error()) when the GPU refuses them
     // The theme's colours (background, grid, tool marker); the cached image is drawn again.
@@ -141,14 +141,14 @@ private:
         double grid_step;
         Point world_origin;
         const GpuPath* path;
-        float scale;               // framebuffer pixels a window pixel
-        Target window;             // the view in the window's framebuffer
-        std::size_t limit;         // segments [0, limit) are drawn (playback)
+        float scale;        // framebuffer pixels a window pixel
+        Target window;      // the view in the window's framebuffer
+        std::size_t limit;  // segments [0, limit) are drawn (playback)
         int layer_mask;
-        bool lod;                  // the raster instead of the segments
-        float ax, ay, aw, ah;      // the drawing area in framebuffer pixels (top-left origin)
-        int mx, my;                // the image's margin on each side
-        std::size_t fill_budget;   // segments drawn into the image at most (kSegmentsPerFrame, kWholeImage)
+        bool lod;                 // the raster instead of the segments
+        float ax, ay, aw, ah;     // the drawing area in framebuffer pixels (top-left origin)
+        int mx, my;               // the image's margin on each side
+        std::size_t fill_budget;  // segments drawn into the image at most (kSegmentsPerFrame, kWholeImage)
     };
     // The state the cached image was drawn for (a pan is not part of it).
     struct SceneKey {
@@ -205,15 +205,15 @@ private:
     int cache_w_ = 0, cache_h_ = 0;
     bool cache_valid_ = false;
     SceneKey cache_key_;
-    std::size_t cache_limit_ = 0;        // segments [0, limit) are in the image
-    bool cache_markers_pending_ = false; // the markers go on top once the image's segments are all in
-    double cache_cx_ = 0, cache_cy_ = 0; // the view centre (mm) the image was drawn at
+    std::size_t cache_limit_ = 0;           // segments [0, limit) are in the image
+    bool cache_markers_pending_ = false;    // the markers go on top once the image's segments are all in
+    double cache_cx_ = 0, cache_cy_ = 0;    // the view centre (mm) the image was drawn at
     float cache_left_ = 0, cache_top_ = 0;  // the image's top-left corner in window pixels, then
     std::uint64_t version_counter_ = 0, markers_version_ = 0;
     RenderStats stats_;
 
-    unsigned empty_vao_ = 0;     // the programs pull their data by gl_VertexID: no attributes
-    unsigned marker_tex_ = 0;    // RGBA32F x y type, kTexWidth a row
+    unsigned empty_vao_ = 0;   // the programs pull their data by gl_VertexID: no attributes
+    unsigned marker_tex_ = 0;  // RGBA32F x y type, kTexWidth a row
     std::size_t marker_count_ = 0;
     std::size_t marks_first_ = 0;  // the diagnostics' marks are markers [marks_first_, marker_count_)
 };

@@ -182,8 +182,8 @@ void UiFonts::build(float ratio) {
         main.OversampleV = 1;
         main.PixelSnapH = snap;
         ImFormatString(main.Name, sizeof main.Name, "DejaVu Sans %.0f px", static_cast<double>(pixel_size_));
-        atlas.AddFontFromMemoryTTF(const_cast<unsigned char*>(fonts::kUiFontTtf), static_cast<int>(sizeof fonts::kUiFontTtf),
-                                   pixel_size_, &main, main_ranges_.Data);
+        atlas.AddFontFromMemoryTTF(const_cast<unsigned char*>(fonts::kUiFontTtf),
+                                   static_cast<int>(sizeof fonts::kUiFontTtf), pixel_size_, &main, main_ranges_.Data);
     } else {
         ImFontConfig proggy;  // ImGui's 13 px bitmap font, magnified at the ratio (no TTF in this build)
         proggy.SizePixels = 13;
@@ -197,8 +197,9 @@ void UiFonts::build(float ratio) {
         seed.OversampleH = snap ? 1 : 2;
         seed.OversampleV = 1;
         seed.PixelSnapH = snap;
-        atlas.AddFontFromMemoryTTF(const_cast<unsigned char*>(fonts::kCjkSeedTtf), static_cast<int>(sizeof fonts::kCjkSeedTtf),
-                                   pixel_size_, &seed, fonts::kCjkSeedRanges);
+        atlas.AddFontFromMemoryTTF(const_cast<unsigned char*>(fonts::kCjkSeedTtf),
+                                   static_cast<int>(sizeof fonts::kCjkSeedTtf), pixel_size_, &seed,
+                                   fonts::kCjkSeedRanges);
     }
     cjk_ranges_.clear();
     if (cjk_ == Cjk::Loaded && fonts::kHaveUiFont) {

@@ -74,18 +74,18 @@ public:
     enum class Cjk : std::uint8_t { None, Loading, Loaded, Failed, Unavailable };
     [[nodiscard]] Cjk cjk() const { return cjk_; }
     [[nodiscard]] static const char* cjk_name(Cjk c);
-    [[nodiscard]] float pixel_size() const { return pixel_size_; }    // the atlas' font size in device pixels
-    [[nodiscard]] float pixel_ratio() const { return ratio_; }        // the ratio it was made for
-    [[nodiscard]] int glyphs() const;                                 // glyphs in the atlas
+    [[nodiscard]] float pixel_size() const { return pixel_size_; }  // the atlas' font size in device pixels
+    [[nodiscard]] float pixel_ratio() const { return ratio_; }      // the ratio it was made for
+    [[nodiscard]] int glyphs() const;                               // glyphs in the atlas
     struct Counts {
         int glyphs = 0;      // in the atlas
         int cjk_glyphs = 0;  // of them from the CJK font
         int missing = 0;     // characters asked for that no font has (drawn as U+FFFD)
     };
     [[nodiscard]] Counts counts() const;  // (goes over every character asked for: for the state, not each frame)
-    [[nodiscard]] int builds() const { return builds_; }              // atlases made so far
-    [[nodiscard]] int cjk_loads() const { return cjk_loads_; }        // times the CJK font was asked for (0 or 1)
-    [[nodiscard]] bool real_font() const;                             // false: ImGui's bitmap font (no TTF built in)
+    [[nodiscard]] int builds() const { return builds_; }        // atlases made so far
+    [[nodiscard]] int cjk_loads() const { return cjk_loads_; }  // times the CJK font was asked for (0 or 1)
+    [[nodiscard]] bool real_font() const;                       // false: ImGui's bitmap font (no TTF built in)
     // Glyphs asked for wait for the next update() or for the CJK font.
     [[nodiscard]] bool pending() const { return main_dirty_ || cjk_dirty_; }
 
@@ -99,15 +99,15 @@ private:
     CjkFontSource& cjk_source_;
     float ratio_ = 0, pixel_size_ = 0;
     bool built_ = false, main_dirty_ = false, cjk_dirty_ = false;
-    std::bitset<0x10000> asked_;            // characters looked at: in the atlas, asked for, or missing
-    ImFontGlyphRangesBuilder main_extra_;   // characters of the embedded font beyond the first ranges
-    ImFontGlyphRangesBuilder cjk_wanted_;   // characters asked of the CJK font
+    std::bitset<0x10000> asked_;                  // characters looked at: in the atlas, asked for, or missing
+    ImFontGlyphRangesBuilder main_extra_;         // characters of the embedded font beyond the first ranges
+    ImFontGlyphRangesBuilder cjk_wanted_;         // characters asked of the CJK font
     ImVector<ImWchar> main_ranges_, cjk_ranges_;  // (ImGui keeps pointers to these until the atlas is built)
     Cjk cjk_ = Cjk::None;
     unsigned char* cjk_data_ = nullptr;
     std::size_t cjk_size_ = 0;
     int builds_ = 0, cjk_loads_ = 0;
-    std::bitset<3> languages_;              // require_language done for these (by Lang)
+    std::bitset<3> languages_;  // require_language done for these (by Lang)
 };
 
 }  // namespace essi::viewer

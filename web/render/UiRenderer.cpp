@@ -15,8 +15,10 @@ namespace {
 // The clip rectangle of `cmd` as GL's scissor (framebuffer pixels, y upwards); false when it is empty.
 bool scissor_of(const ImDrawData& data, const ImDrawCmd& cmd, int fb_h) {
     const ImVec2 scale = data.FramebufferScale;
-    const float x0 = (cmd.ClipRect.x - data.DisplayPos.x) * scale.x, y0 = (cmd.ClipRect.y - data.DisplayPos.y) * scale.y;
-    const float x1 = (cmd.ClipRect.z - data.DisplayPos.x) * scale.x, y1 = (cmd.ClipRect.w - data.DisplayPos.y) * scale.y;
+    const float x0 = (cmd.ClipRect.x - data.DisplayPos.x) * scale.x,
+                y0 = (cmd.ClipRect.y - data.DisplayPos.y) * scale.y;
+    const float x1 = (cmd.ClipRect.z - data.DisplayPos.x) * scale.x,
+                y1 = (cmd.ClipRect.w - data.DisplayPos.y) * scale.y;
     if (x1 <= x0 || y1 <= y0) return false;
     glScissor(static_cast<GLint>(x0), static_cast<GLint>(static_cast<float>(fb_h) - y1), static_cast<GLsizei>(x1 - x0),
               static_cast<GLsizei>(y1 - y0));
@@ -44,7 +46,8 @@ bool UiRenderer::init() {
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(IM_OFFSETOF(ImDrawVert, uv)));
     glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride, reinterpret_cast<void*>(IM_OFFSETOF(ImDrawVert, col)));
+    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                          reinterpret_cast<void*>(IM_OFFSETOF(ImDrawVert, col)));
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 
@@ -93,9 +96,11 @@ void UiRenderer::draw(const ImDrawData& data, int fb_w, int fb_h) {
     glBindBuffer(GL_ARRAY_BUFFER, vertices_);
     for (int n = 0; n < data.CmdListsCount; ++n) {
         const ImDrawList& list = *data.CmdLists[n];
-        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(list.VtxBuffer.Size) * static_cast<GLsizeiptr>(sizeof(ImDrawVert)),
+        glBufferData(GL_ARRAY_BUFFER,
+                     static_cast<GLsizeiptr>(list.VtxBuffer.Size) * static_cast<GLsizeiptr>(sizeof(ImDrawVert)),
                      list.VtxBuffer.Data, GL_STREAM_DRAW);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(list.IdxBuffer.Size) * static_cast<GLsizeiptr>(sizeof(ImDrawIdx)),
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                     static_cast<GLsizeiptr>(list.IdxBuffer.Size) * static_cast<GLsizeiptr>(sizeof(ImDrawIdx)),
                      list.IdxBuffer.Data, GL_STREAM_DRAW);
         for (const ImDrawCmd& cmd : list.CmdBuffer) {
             if (cmd.UserCallback != nullptr) {  // (the viewer adds none)

@@ -39,7 +39,8 @@ std::optional<std::string> detail::gb18030_two_byte_to_utf8(std::string_view cha
     ucnv_resetToUnicode(gb.get());  // (after a character it refused)
     UChar utf16[4];
     UErrorCode err = U_ZERO_ERROR;
-    const int32_t n16 = ucnv_toUChars(gb.get(), utf16, 4, character.data(), static_cast<int32_t>(character.size()), &err);
+    const int32_t n16 =
+        ucnv_toUChars(gb.get(), utf16, 4, character.data(), static_cast<int32_t>(character.size()), &err);
     if (U_FAILURE(err) || n16 <= 0) return std::nullopt;
     char utf8[16];
     int32_t n8 = 0;

@@ -16,9 +16,9 @@ namespace essi {
 // or at the end of the stream. The other head's motions may come between its motions, and neither end it nor
 // belong to it.
 struct Contour {
-    MotionKind kind = MotionKind::Cut;             // Cut or Mark
-    std::uint8_t head = 1;                         // 1, or 2 for head 2 of a 3-axis tape
-    std::uint32_t first_line = 0, last_line = 0;   // the source lines of its first and last motion
+    MotionKind kind = MotionKind::Cut;            // Cut or Mark
+    std::uint8_t head = 1;                        // 1, or 2 for head 2 of a 3-axis tape
+    std::uint32_t first_line = 0, last_line = 0;  // the source lines of its first and last motion
     // Where it is in the motion stream (0: the stream's first motion): its motions are those of its head with
     // an index in [first_motion, end_motion) (of_contour; contour_motions reads them back).
     std::uint32_t first_motion = 0, end_motion = 0;

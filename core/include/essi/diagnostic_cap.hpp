@@ -34,8 +34,8 @@ public:
 
 private:
     struct Count {
-        std::uint64_t seen = 0;      // admitted or not
-        std::uint64_t omitted = 0;   // not kept (here or by a cap folded in)
+        std::uint64_t seen = 0;     // admitted or not
+        std::uint64_t omitted = 0;  // not kept (here or by a cap folded in)
         std::uint32_t first_omitted_line = UINT32_MAX;
         Severity severity = Severity::Error;
     };

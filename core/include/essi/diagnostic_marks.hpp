@@ -36,9 +36,9 @@ public:
 
 private:
     const std::vector<Diagnostic>& diagnostics_;
-    std::vector<std::uint32_t> lines_;    // the lines asked for, sorted, once each
-    std::vector<LineEnds> ends_;          // by lines_
-    std::size_t next_ = 0;                // the first line of lines_ the stream has not passed
+    std::vector<std::uint32_t> lines_;  // the lines asked for, sorted, once each
+    std::vector<LineEnds> ends_;        // by lines_
+    std::size_t next_ = 0;              // the first line of lines_ the stream has not passed
     std::optional<Point> last_end_;
 };
 

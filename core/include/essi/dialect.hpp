@@ -20,9 +20,9 @@ constexpr std::string_view kAutoProfile = "auto";
 [[nodiscard]] InputFormat detect_input_format(std::string_view bytes);
 
 struct DialectGuess {
-    std::string profile;                // a built-in profile name
-    std::vector<std::string> evidence;  // "woyda: `/` ends the program at line 120", at most a few per dialect
-    bool clear = false;                 // some evidence, and more of it than for any other dialect
+    std::string profile;                       // a built-in profile name
+    std::vector<std::string> evidence;         // "woyda: `/` ends the program at line 120", at most a few per dialect
+    bool clear = false;                        // some evidence, and more of it than for any other dialect
     std::vector<Message> evidence_messages{};  // the evidence to be worded in any language (evidence[i]: the English)
 };
 // The dialect whose codes the tape uses (a scan of its lines, no interpretation). Without evidence: iso6582 for
@@ -33,9 +33,9 @@ struct DialectGuess {
 struct TapeSetup {
     InputFormat format = InputFormat::Essi;
     Profile profile;
-    bool auto_profile = false;           // chosen from the evidence
-    std::vector<std::string> evidence;   // the guess's evidence (for an auto profile: why it was chosen), in English
-    std::optional<Diagnostic> note;      // N403 when the given profile is not the one the evidence clearly shows
+    bool auto_profile = false;          // chosen from the evidence
+    std::vector<std::string> evidence;  // the guess's evidence (for an auto profile: why it was chosen), in English
+    std::optional<Diagnostic> note;     // N403 when the given profile is not the one the evidence clearly shows
     std::vector<Message> evidence_messages{};  // the evidence to be worded in any language (.text(lang))
 };
 // The format asked for (`--input`, the server's and the Python module's `input`): a format's name

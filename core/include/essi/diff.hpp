@@ -33,7 +33,7 @@ struct DiffContour : Contour {
     std::size_t motions = 0;
     Box box;
     double length_mm = 0;
-    std::vector<double> shape;  // the motions relative to the start: x, y of each end, arc centre, sweep
+    std::vector<double> shape;       // the motions relative to the start: x, y of each end, arc centre, sweep
     std::vector<MotionRecord> path;  // its motions, when asked for (tape_contours' keep_paths: to draw them)
 };
 

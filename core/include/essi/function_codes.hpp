@@ -41,7 +41,7 @@ enum Code : int {
     kWoydaProgramZero = 62,  // Woyda: back to the program's start point on a straight line
     kCancelFunctions = 63,   // ISO: zero auxiliary function; Woyda: end of program
     kEndOfTape = 64,
-    kWoydaLoopEnd = 67,      // Woyda macro files only
+    kWoydaLoopEnd = 67,  // Woyda macro files only
     kWoydaLoopStart = 68,
     kHyperthermGoHome = 79,  // Hypertherm: 79+n, home position n
     kIncremental = 81,

@@ -25,13 +25,13 @@ struct FunctionInfo {
     std::string_view name;         // "Oxygen ON" (English: text(name_msg, Lang::En))
     std::string_view explanation;  // "cutting oxygen on (tool 1)" (English: text(explanation_msg, Lang::En))
     FunctionValue value = FunctionValue::None;
-    std::string_view value_unit;   // "mm/min", "s", "unit increments", "" (English: text(unit_msg, Lang::En))
+    std::string_view value_unit;      // "mm/min", "s", "unit increments", "" (English: text(unit_msg, Lang::En))
     Msg name_msg = Msg::None;         // the name in the catalogue, for any language
     Msg explanation_msg = Msg::None;  // the explanation in the catalogue
     Msg unit_msg = Msg::None;         // the value's unit in the catalogue (Msg::None: no unit)
-    bool assigned = true;          // false: 'Unassigned' in Annex B or unknown in the dialect
-    bool manufacturer = false;     // 55-62 in ISO: specified by the manufacturer
-    bool drawing_machine = false;  // 70-74, 76-79, 84-86, 89-90, 93-98: for drawing machines
+    bool assigned = true;             // false: 'Unassigned' in Annex B or unknown in the dialect
+    bool manufacturer = false;        // 55-62 in ISO: specified by the manufacturer
+    bool drawing_machine = false;     // 70-74, 76-79, 84-86, 89-90, 93-98: for drawing machines
 };
 
 // The values a function with a value allows (E216 beyond them), in the unit of `unit`: as written (mm/min,
@@ -45,8 +45,8 @@ struct FunctionValueRange {
 
 // What a dialect's code does in ISO terms (ESSI_ACTS_AS in function_table.def): Hypertherm's 53 is ISO's 7.
 struct FunctionAction {
-    int action = 0;          // the ISO code it acts as, or an action of its own (>= fn::kFirstAction)
-    int fixed_value = -1;    // >= 0: the value it acts with (Hypertherm 15 = 11+2); else its own value
+    int action = 0;        // the ISO code it acts as, or an action of its own (>= fn::kFirstAction)
+    int fixed_value = -1;  // >= 0: the value it acts with (Hypertherm 15 = 11+2); else its own value
 };
 // nullopt: the code means in `dialect` what it means in ISO 6582 (or nothing).
 [[nodiscard]] std::optional<FunctionAction> function_action(int code, Dialect dialect);

@@ -104,8 +104,7 @@ namespace geom_detail {
 [[nodiscard]] inline Point tangent_at(const MotionRecord& m, bool end) {
     switch (m.curve) {
         case CurveKind::Line: return line_direction(m);
-        case CurveKind::Arc:
-            return arc_tangent(end ? m.end : m.start, m.centre, m.ccw, end ? m.end_radius : m.radius);
+        case CurveKind::Arc: return arc_tangent(end ? m.end : m.start, m.centre, m.ccw, end ? m.end_radius : m.radius);
         case CurveKind::Parabola: return parabola_tangent(m.parabola, end ? m.parabola.t1 : m.parabola.t0);
     }
     return {};
@@ -155,6 +154,6 @@ struct AreaTerms {
 
 // Tolerances that are not profile settings.
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kMinChordTolerance = 1e-6; // mm
+constexpr double kMinChordTolerance = 1e-6;  // mm
 
 }  // namespace essi

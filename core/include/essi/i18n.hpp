@@ -63,8 +63,9 @@ public:
         Arg(const char* s) : text(s) {}
         Arg(Msg m) : msg(m) {}
         Arg(const Arg& o)
-            : owned(o.owned), text(!o.owned.empty() && o.text.data() == o.owned.data() ? std::string_view(owned) : o.text),
-              msg(o.msg), list(o.list) {}
+            : owned(o.owned),
+              text(!o.owned.empty() && o.text.data() == o.owned.data() ? std::string_view(owned) : o.text), msg(o.msg),
+              list(o.list) {}
         Arg& operator=(const Arg&) = delete;
         // Alternatives shown as a list in the reader's language: "63, 64 or /", "63、64 或 /".
         [[nodiscard]] static Arg alternatives(const std::vector<std::string>& items);

@@ -42,7 +42,8 @@ void measure_motions(const Tape& chunk, std::vector<MotionMeasure>& out);
 // interpretation and geometry are appended to `diagnostics` (columns computed from `source`).
 class Interpreter {
 public:
-    Interpreter(std::string_view source, const Profile& profile, MotionSink& sink, std::vector<Diagnostic>& diagnostics);
+    Interpreter(std::string_view source, const Profile& profile, MotionSink& sink,
+                std::vector<Diagnostic>& diagnostics);
     // The statistics and, when given, one more sink `also` (what TapeChecker runs): the statistics are fed
     // directly, `also` gets every motion and event, its straight lines of head 1 as MotionSink::on_line.
     Interpreter(std::string_view source, const Profile& profile, StatsSink& stats, MotionSink* also,
@@ -55,6 +56,7 @@ public:
     void run(const Tape& chunk, std::span<const MotionMeasure> measures = {});
     // After the last chunk: reports what the program opened and never closed.
     void finish();
+
 private:
     std::unique_ptr<detail::Machine> machine_;
 };

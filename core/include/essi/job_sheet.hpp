@@ -55,7 +55,7 @@ constexpr double kSheetPierceRadiusMm = 0.6, kSheetMarkRadiusMm = 1.4, kSheetLab
 
 // The drawing: the tape's motions as polylines in program mm, and where they go on paper.
 struct SheetDrawing {
-    Box box;                    // the program's area shown (the motions' extent and a margin)
+    Box box;                             // the program's area shown (the motions' extent and a margin)
     double width_mm = 0, height_mm = 0;  // its size on paper
     std::array<std::vector<std::vector<Point>>, 4> paths;  // by MotionKind: polylines
     std::vector<Point> pierces;
@@ -63,7 +63,7 @@ struct SheetDrawing {
         Point at;
         Severity severity = Severity::Error;
     };
-    std::vector<Mark> marks;    // the listed diagnostics that have a place (essi/diagnostic_marks.hpp)
+    std::vector<Mark> marks;  // the listed diagnostics that have a place (essi/diagnostic_marks.hpp)
     struct Label {
         Point at;
         std::string text;
@@ -78,7 +78,7 @@ struct SheetLegendEntry {
     enum class Sample : std::uint8_t { Stroke, Pierce, Mark, Label };
     Sample sample = Sample::Stroke;
     std::string text;
-    MotionKind kind = MotionKind::Cut;  // Stroke
+    MotionKind kind = MotionKind::Cut;    // Stroke
     Severity severity = Severity::Error;  // Mark
 };
 
@@ -88,7 +88,7 @@ struct SheetField {
 };
 struct SheetTable {
     std::vector<std::string> columns;
-    std::vector<bool> numeric;                   // by column: right-aligned
+    std::vector<bool> numeric;  // by column: right-aligned
     std::vector<std::vector<std::string>> rows;
     std::vector<std::optional<Severity>> row_severity;  // one a row: a diagnostic's (its first cell in its colour)
 };
@@ -103,12 +103,12 @@ struct SheetSection {
 
 struct JobSheet {
     Lang lang = Lang::En;
-    std::string title;        // "Job sheet: NAME"
-    std::string tape;         // the tape's name
-    std::string sha256;       // of the tape's bytes, 64 hex digits
-    std::string date;         // "2026-11-27 14:05 UTC"
+    std::string title;   // "Job sheet: NAME"
+    std::string tape;    // the tape's name
+    std::string sha256;  // of the tape's bytes, 64 hex digits
+    std::string date;    // "2026-11-27 14:05 UTC"
     std::int64_t created_unix = 0;
-    std::string footer;       // on every page: the tape, the start of its digest, the date
+    std::string footer;         // on every page: the tape, the start of its digest, the date
     std::string page_template;  // "page {0} of {1}" in the sheet's language
     std::vector<SheetSection> sections;
     SheetDrawing drawing;
@@ -143,8 +143,8 @@ struct SheetParts {
 
 // What the sheet says about where it comes from.
 struct JobSheetInput {
-    std::string tape_name;  // as the user named it (made safe to print here)
-    std::string sha256;     // of the tape's bytes
+    std::string tape_name;          // as the user named it (made safe to print here)
+    std::string sha256;             // of the tape's bytes
     std::int64_t created_unix = 0;  // the sheet's date (seconds since 1970, UTC)
     Lang lang = Lang::En;
     std::size_t max_diagnostics = kSheetDefaultMaxDiagnostics;

@@ -79,10 +79,10 @@ private:
         MotionRecord rec;
         Point corner;
         Point tangent_end;
-        Point tangent_start;  // the programmed direction of travel at the start
-        double sweep = 0;     // an arc's programmed sweep (radians, unsigned)
-        Point start_radius;   // an arc's programmed start less its centre
-        bool chord = false;   // one of a parabola's chords
+        Point tangent_start;       // the programmed direction of travel at the start
+        double sweep = 0;          // an arc's programmed sweep (radians, unsigned)
+        Point start_radius;        // an arc's programmed start less its centre
+        bool chord = false;        // one of a parabola's chords
         bool start_moved = false;  // its start is not its offset start (trimmed, or where the piece before ended)
     };
     void enter(const MotionRecord& m);
@@ -113,9 +113,9 @@ private:
     // The open piece is an entry (it starts at the torch): a concave corner after it may trim it anywhere.
     bool open_is_entry_ = false;
     std::vector<Piece> chords_;  // a parabola's chords after the first
-    double side_ = 1;    // +1: left of the direction of travel, -1: right
-    double radius_ = 0;  // the offset (mm)
-    Point torch_;        // where the last piece passed on ended
+    double side_ = 1;            // +1: left of the direction of travel, -1: right
+    double radius_ = 0;          // the offset (mm)
+    Point torch_;                // where the last piece passed on ended
     bool torch_known_ = false;
     std::vector<std::variant<MotionRecord, MachineEvent>> held_;  // behind the open piece
     std::vector<KerfGouge> gouges_;

@@ -37,14 +37,14 @@ constexpr double kJunctionCosLimit = 0.999999;
 // The machine time and where it goes (seconds). cutting + marking + rapid + travel + pierce + dwell = total.
 struct MachineTime {
     double total_s = 0;
-    double cutting_s = 0;       // motions while a cutting tool is on
-    double marking_s = 0;       // motions while a marking tool is on, no cutting tool
-    double rapid_s = 0;         // rapid traverse (5) with the tools off
-    double travel_s = 0;        // other motion with the tools off (at the feed)
+    double cutting_s = 0;  // motions while a cutting tool is on
+    double marking_s = 0;  // motions while a marking tool is on, no cutting tool
+    double rapid_s = 0;    // rapid traverse (5) with the tools off
+    double travel_s = 0;   // other motion with the tools off (at the feed)
     double pierce_s = 0;
     double dwell_s = 0;
-    double acceleration_s = 0;  // of the motions' time: how much longer they take than at their feed
-    double torch_cutting_s = 0; // cutting_s once per torch that cuts (for the consumables)
+    double acceleration_s = 0;   // of the motions' time: how much longer they take than at their feed
+    double torch_cutting_s = 0;  // cutting_s once per torch that cuts (for the consumables)
 };
 
 class MachineTimer {
@@ -100,8 +100,7 @@ private:
     // A motion with its top speed (above 0: every feed is) and its directions at both ends; `block` < 0: a block
     // of its own.
     [[gnu::always_inline]] void add(MotionKind kind, double length_mm, double top, Point start_dir, Point end_dir,
-                                    std::uint8_t torches,
-             int head, std::int64_t block) {
+                                    std::uint8_t torches, int head, std::int64_t block) {
         if (head != watch_head_) [[unlikely]] {  // another head; a pause waiting; under block stops, another block?
             if (pause_.pending && block > pause_.after_block) {
                 standing_ = standing_ || pause_.stop;
@@ -116,14 +115,15 @@ private:
         const double top_squared = top * top;
         double entry_max_squared = 0;
         if (!standing_) {
-            entry_max_squared = std::min(std::min(last_top_squared_, top_squared),
-                                         junction_speed_squared(last_dir_, start_dir));
+            entry_max_squared =
+                std::min(std::min(last_top_squared_, top_squared), junction_speed_squared(last_dir_, start_dir));
         }
         window_[pending_++] = {length_mm, top, entry_max_squared, kind, torches};
         last_dir_ = end_dir;
         last_top_squared_ = top_squared;
         standing_ = false;
-        if (pending_ == kMachineTimeWindow) [[unlikely]] plan(false);
+        if (pending_ == kMachineTimeWindow) [[unlikely]]
+            plan(false);
     }
     [[gnu::noinline]] void curve(const MotionRecord& m, std::uint8_t torches);
     [[gnu::noinline]] void parabola(const MotionRecord& m, std::uint8_t torches);
@@ -133,7 +133,7 @@ private:
     [[nodiscard]] double junction_speed_squared(Point in, Point out) const {
         const double cos_theta = -(in.x * out.x + in.y * out.y);
         if (cos_theta < -kJunctionCosLimit) return std::numeric_limits<double>::infinity();  // straight on
-        if (cos_theta > kJunctionCosLimit) return 0;                                          // a reversal
+        if (cos_theta > kJunctionCosLimit) return 0;                                         // a reversal
         const double s = std::sqrt(0.5 * (1 - cos_theta));
         return accel_deviation_ * s / (1 - s);
     }
@@ -143,28 +143,28 @@ private:
     void commit(const Pending& p, double v0, double v1, double v0_squared, double v1_squared);
 
     double accel_;
-    double accel_deviation_;        // a · δ
-    double half_inverse_accel_;     // 1 / (2a)
+    double accel_deviation_;     // a · δ
+    double half_inverse_accel_;  // 1 / (2a)
     MachineTime time_;
-    double kind_s_[4] = {};         // the motions' time by MotionKind
-    double extra_torches_s_ = 0;    // the cutting time once more for each torch beyond the first
-    std::vector<Pending> window_;   // kMachineTimeWindow long; the first `pending_` wait
-    std::vector<double> lowest_;    // the backward pass: squared entry speeds if the machine stops after the window
+    double kind_s_[4] = {};        // the motions' time by MotionKind
+    double extra_torches_s_ = 0;   // the cutting time once more for each torch beyond the first
+    std::vector<Pending> window_;  // kMachineTimeWindow long; the first `pending_` wait
+    std::vector<double> lowest_;   // the backward pass: squared entry speeds if the machine stops after the window
     std::size_t pending_ = 0;
-    double entry_ = 0;              // the speed at the start of window_[0] (the last committed motion's exit)
-    bool standing_ = true;          // the machine stands still before the next motion
+    double entry_ = 0;      // the speed at the start of window_[0] (the last committed motion's exit)
+    bool standing_ = true;  // the machine stands still before the next motion
     bool block_stops_ = false;
-    Point last_dir_;                // the direction of travel at the end of the last motion
+    Point last_dir_;  // the direction of travel at the end of the last motion
     double last_top_squared_ = 0;
     int last_head_ = 1;
-    int watch_head_ = 1;            // last_head_, or -1 under block stops or with a pause waiting: a motion of
-                                    // another head is looked at
+    int watch_head_ = 1;  // last_head_, or -1 under block stops or with a pause waiting: a motion of
+                          // another head is looked at
     struct Pause {
         bool pending = false;
         bool stop = false;
         bool block_stops = false;
         std::int64_t after_block = -1;
-    } pause_;                       // a pause waiting for the first motion of a block after `after_block`
+    } pause_;  // a pause waiting for the first motion of a block after `after_block`
     std::int64_t last_block_ = -1;
 };
 

@@ -50,23 +50,23 @@ struct ParabolaGeom {
 
 // One motion: a line, arc or parabola from `start` to `end` (the programmed end point, exactly).
 struct MotionRecord {
-    std::uint32_t line = 0;       // source line of the block
-    std::uint32_t block = 0;      // index of the block in the Tape
+    std::uint32_t line = 0;   // source line of the block
+    std::uint32_t block = 0;  // index of the block in the Tape
     MotionKind kind = MotionKind::Travel;
     CurveKind curve = CurveKind::Line;
-    std::uint8_t tools = 0;       // ToolBits on during the motion
-    std::uint8_t head = 1;        // 1, or 2 for head 2 on a 3-axis machine
+    std::uint8_t tools = 0;  // ToolBits on during the motion
+    std::uint8_t head = 1;   // 1, or 2 for head 2 on a 3-axis machine
     KerfSide kerf = KerfSide::Off;
-    bool ccw = false;             // arcs: direction in machine coordinates (after mirroring)
+    bool ccw = false;  // arcs: direction in machine coordinates (after mirroring)
     Point start, end;
-    Point centre;                 // arcs
-    double radius = 0;            // arcs: start radius (distance start-centre)
-    double end_radius = 0;        // arcs: distance end-centre (differs within arc_tolerance)
-    double sweep = 0;             // arcs: signed angle in radians, + = ccw; full circle = +-2*pi
-    ParabolaGeom parabola;        // parabolas
-    double length_mm = 0;         // closed-form length
-    double feed_mm_min = 0;       // speed used for the time estimate (rapid speed for rapids)
-    double kerf_mm = 0;           // kerf offset (half width) in force, 0 when off
+    Point centre;            // arcs
+    double radius = 0;       // arcs: start radius (distance start-centre)
+    double end_radius = 0;   // arcs: distance end-centre (differs within arc_tolerance)
+    double sweep = 0;        // arcs: signed angle in radians, + = ccw; full circle = +-2*pi
+    ParabolaGeom parabola;   // parabolas
+    double length_mm = 0;    // closed-form length
+    double feed_mm_min = 0;  // speed used for the time estimate (rapid speed for rapids)
+    double kerf_mm = 0;      // kerf offset (half width) in force, 0 when off
     // Multiple torches (Woyda 135+n, 136+d): a cut is made `torches` times, copy k offset by k x torch_step (mm);
     // 1 for every motion that is not a cut.
     std::uint8_t torches = 1;
@@ -78,21 +78,21 @@ struct MotionRecord {
 
 // Everything that is not a motion but changes the machine or the estimate.
 enum class EventKind : std::uint8_t {
-    Function,   // a machine function took effect (code, value)
-    Dwell,      // seconds in `value`
-    Stop,       // 0 programmed stop / 102 optional stop
-    End,        // end of program (63, 64, '/', ...)
-    ZeroOffset, // 83: new origin in `x`, `y` (mm, machine)
+    Function,    // a machine function took effect (code, value)
+    Dwell,       // seconds in `value`
+    Stop,        // 0 programmed stop / 102 optional stop
+    End,         // end of program (63, 64, '/', ...)
+    ZeroOffset,  // 83: new origin in `x`, `y` (mm, machine)
 };
 
 struct MachineEvent {
     std::uint32_t line = 0;
     std::uint32_t block = 0;
     EventKind kind = EventKind::Function;
-    std::uint16_t code = 0;     // the machine function
+    std::uint16_t code = 0;  // the machine function
     bool has_value = false;
-    double value = 0;           // the function's value as written (unit increments, mm/min, s ...)
-    double x = 0, y = 0;        // ZeroOffset: the new origin
+    double value = 0;     // the function's value as written (unit increments, mm/min, s ...)
+    double x = 0, y = 0;  // ZeroOffset: the new origin
     std::uint8_t tools_after = 0;
     std::uint8_t torches_after = 1;  // torches cutting after the event (a pierce pierces with each)
 };
@@ -126,10 +126,10 @@ public:
     virtual void on_line(const UnitLine& line) { on_motion(record_of(line)); }
 };
 
-[[nodiscard]] const char* motion_kind_name(MotionKind k);   // "rapid", "travel", "cut", "mark"
-[[nodiscard]] const char* curve_kind_name(CurveKind k);     // "line", "arc", "parabola"
-[[nodiscard]] const char* kerf_side_name(KerfSide k);       // "off", "left", "right"
-[[nodiscard]] std::string tools_text(std::uint8_t tools);    // "oxygen+punch", "-" for none
+[[nodiscard]] const char* motion_kind_name(MotionKind k);  // "rapid", "travel", "cut", "mark"
+[[nodiscard]] const char* curve_kind_name(CurveKind k);    // "line", "arc", "parabola"
+[[nodiscard]] const char* kerf_side_name(KerfSide k);      // "off", "left", "right"
+[[nodiscard]] std::string tools_text(std::uint8_t tools);  // "oxygen+punch", "-" for none
 // The tools as a message argument, in the reader's language ("oxygen+punch", "Sauerstoff+Körner").
 [[nodiscard]] MessageArgs::Arg tools_arg(std::uint8_t tools);
 

@@ -26,8 +26,8 @@ enum class KerfValueMeaning : std::uint8_t { Width, Offset };
 
 // A program end marker: a function code (63, 64, 0, 99) or one of the characters '/' and '='.
 struct EndCode {
-    int function = -1;   // >= 0: a machine function
-    char mark = 0;       // '/' or '=' when function < 0
+    int function = -1;  // >= 0: a machine function
+    char mark = 0;      // '/' or '=' when function < 0
     friend bool operator==(const EndCode&, const EndCode&) = default;
 };
 
@@ -48,16 +48,16 @@ struct EiaCode {
 // How a dialect writes its EIA tapes (docs/semantics.md §10). G01, G02 and G03 mean the same everywhere; every
 // other word is in `codes`, so that what differs between dialects is this data, not code.
 struct EiaDialect {
-    std::string letters = "NGXYIJFM";     // the address letters a block may hold, in their order
-    bool strict_order = true;             // letters out of that order are an error (Woyda)
-    bool one_function_per_block = true;   // at most one of G, M and F in a block (Woyda)
-    int rapid_motion_g = -1;              // G number of a rapid motion mode (G00: modal until G01-G03); -1 none
-    int position_preset_g = -1;           // G number that sets the current position (DIN G92 X Y); -1 none
-    char dwell_letter = 'X';              // the letter of the dwell's time (G04 X)
-    double dwell_unit_s = 0.001;          // the dwell's time unit (Woyda: milliseconds)
-    std::vector<EiaWord> inch_words;      // words that switch coordinates to inches (G20, G70)
-    std::vector<EiaWord> mm_words;        // words that switch them back to millimetres (G21, G71)
-    std::vector<EiaCode> codes;           // EIA word <-> ESSI function; the first row of a function is its word
+    std::string letters = "NGXYIJFM";    // the address letters a block may hold, in their order
+    bool strict_order = true;            // letters out of that order are an error (Woyda)
+    bool one_function_per_block = true;  // at most one of G, M and F in a block (Woyda)
+    int rapid_motion_g = -1;             // G number of a rapid motion mode (G00: modal until G01-G03); -1 none
+    int position_preset_g = -1;          // G number that sets the current position (DIN G92 X Y); -1 none
+    char dwell_letter = 'X';             // the letter of the dwell's time (G04 X)
+    double dwell_unit_s = 0.001;         // the dwell's time unit (Woyda: milliseconds)
+    std::vector<EiaWord> inch_words;     // words that switch coordinates to inches (G20, G70)
+    std::vector<EiaWord> mm_words;       // words that switch them back to millimetres (G21, G71)
+    std::vector<EiaCode> codes;          // EIA word <-> ESSI function; the first row of a function is its word
     friend bool operator==(const EiaDialect&, const EiaDialect&) = default;
 };
 
@@ -102,27 +102,27 @@ struct Profile {
     Dialect dialect = Dialect::Iso6582;
 
     // Reading
-    double unit_mm = 0.1;                       // one unit increment in mm (ISO A.6)
+    double unit_mm = 0.1;  // one unit increment in mm (ISO A.6)
     WhitespacePolicy whitespace = WhitespacePolicy::Skip;
     std::vector<EndCode> end_codes = {{fn::kEndOfTape, 0}};
-    bool end_at_data_end = true;                // the end of the data ends the program without a warning (ISO)
+    bool end_at_data_end = true;  // the end of the data ends the program without a warning (ISO)
 
     // Geometry
-    double arc_tolerance_units = 2.0;           // |r_end - r_start| allowed, in unit increments (§5)
-    double chord_tolerance_mm = 0.01;           // flattening tolerance for previews and traces
+    double arc_tolerance_units = 2.0;  // |r_end - r_start| allowed, in unit increments (§5)
+    double chord_tolerance_mm = 0.01;  // flattening tolerance for previews and traces
 
     // Interpretation
-    bool optional_ignore = false;               // 100/101 skip the blocks between them (panel switch)
-    bool rapid_single_block = false;            // 5 lasts one block when the machine has no 6 (Annex B)
+    bool optional_ignore = false;     // 100/101 skip the blocks between them (panel switch)
+    bool rapid_single_block = false;  // 5 lasts one block when the machine has no 6 (Annex B)
     KerfValueMeaning kerf_value = KerfValueMeaning::Width;
-    double kerf_units = 20.0;                   // kerf used by 29/30 without a value, in unit increments
-    double default_dwell_s = 1.0;               // 41 without a value
-    double dwell_unit_s = 1.0;                  // the unit of 41+v in seconds (Hypertherm: 0.001, milliseconds)
+    double kerf_units = 20.0;      // kerf used by 29/30 without a value, in unit increments
+    double default_dwell_s = 1.0;  // 41 without a value
+    double dwell_unit_s = 1.0;     // the unit of 41+v in seconds (Hypertherm: 0.001, milliseconds)
 
     // Time estimate (§9)
-    double feed_mm_min = 1000.0;                // cutting feed when the tape gives none (39+v)
-    double rapid_mm_min = 10000.0;              // rapid traverse speed
-    double pierce_time_s = 2.0;                 // added once per pierce
+    double feed_mm_min = 1000.0;    // cutting feed when the tape gives none (39+v)
+    double rapid_mm_min = 10000.0;  // rapid traverse speed
+    double pierce_time_s = 2.0;     // added once per pierce
 
     // Machine time (§9): the path acceleration (none: no machine time) and grbl's junction deviation
     std::optional<double> accel_mm_s2;
@@ -130,7 +130,7 @@ struct Profile {
 
     // The plate and the costs (§9)
     std::optional<Material> material;
-    std::optional<PlateSize> plate;                 // plate_mm
+    std::optional<PlateSize> plate;  // plate_mm
     std::optional<Costs> costs;
     std::optional<ElectrodeLife> consumables;
 
@@ -143,18 +143,18 @@ struct Profile {
 
     // Machine placement (§12): machine = zero offset + R(plate rotation) · program − tool offset
     std::map<std::string, Point> zero_offsets{{kDefaultZeroOffset, {}}};  // a G54-G59-like table, mm
-    std::string zero_offset = kDefaultZeroOffset;  // the active entry
-    double plate_rotation_deg = 0;                 // counter-clockwise about the program origin
-    Point marker_offset;                           // tool_offsets.marker: where the marker sits from the centre torch (11)
-    Point powder_marker_offset;                    // tool_offsets.powder_marker (114)
-    std::optional<TableLimits> table;              // travel limits in machine mm; none = unlimited
+    std::string zero_offset = kDefaultZeroOffset;                         // the active entry
+    double plate_rotation_deg = 0;                                        // counter-clockwise about the program origin
+    Point marker_offset;               // tool_offsets.marker: where the marker sits from the centre torch (11)
+    Point powder_marker_offset;        // tool_offsets.powder_marker (114)
+    std::optional<TableLimits> table;  // travel limits in machine mm; none = unlimited
 
     // The cut plan's checks (essi/plan.hpp, docs/diagnostics.md 6xx)
-    double closure_gap_mm = 5.0;                   // a cut ending this close to closing its contour: W601
-    double feed_min_mm_min = 50.0;                 // feed_range_mm_min: cutting feeds outside are W608
+    double closure_gap_mm = 5.0;    // a cut ending this close to closing its contour: W601
+    double feed_min_mm_min = 50.0;  // feed_range_mm_min: cutting feeds outside are W608
     double feed_max_mm_min = 15000.0;
-    double max_dwell_s = 120.0;                    // a longer dwell: W609
-    bool lead_in_required = false;                 // a contour pierced on its own line: W610
+    double max_dwell_s = 120.0;     // a longer dwell: W609
+    bool lead_in_required = false;  // a contour pierced on its own line: W610
 
     // At most this many diagnostics of one code are listed, then one that says how many more (0: all;
     // essi/diagnostic_cap.hpp)

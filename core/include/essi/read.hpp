@@ -74,8 +74,12 @@ public:
     [[nodiscard]] std::span<const T> span() const { return {data_, size_}; }
 
     void clear() { size_ = 0; }
-    void truncate(std::size_t n) { if (n < size_) size_ = n; }
-    void reserve(std::size_t n) { if (n > cap_) reallocate(n); }
+    void truncate(std::size_t n) {
+        if (n < size_) size_ = n;
+    }
+    void reserve(std::size_t n) {
+        if (n > cap_) reallocate(n);
+    }
     void push_back(const T& v) {
         if (size_ == cap_) reallocate(grown(size_ + 1));
         data_[size_++] = v;
@@ -94,7 +98,9 @@ public:
     // The values up to `end` (a pointer into the room made) are now part of the array.
     void commit_to(const T* end) { size_ = static_cast<std::size_t>(end - data_); }
     [[nodiscard]] T* end_of_room() { return data_ + cap_; }
-    void shrink_to_fit() { if (cap_ != size_) reallocate(size_); }
+    void shrink_to_fit() {
+        if (cap_ != size_) reallocate(size_);
+    }
 
 private:
     [[nodiscard]] std::size_t grown(std::size_t need) const { return need > 2 * cap_ ? need : 2 * cap_; }
@@ -117,8 +123,8 @@ private:
 
 // One block. `code` is the leading unsigned number (function code or head address), or kNoCode.
 struct Block {
-    std::uint32_t offset = 0;      // byte offset of the block's first character
-    std::uint32_t line = 0;        // 1-based line (every CR, LF, CR LF or LF CR counts one)
+    std::uint32_t offset = 0;  // byte offset of the block's first character
+    std::uint32_t line = 0;    // 1-based line (every CR, LF, CR LF or LF CR counts one)
     std::uint16_t code = 0;
     BlockKind kind = BlockKind::Invalid;
     // low 4 bits: number of signed words (0-6); bit 4: sign of word 5 (TC) is '-' (a FunctionValue: its word is
@@ -189,6 +195,7 @@ public:
         explicit WordCursor(const Tape& tape) : tape_(&tape) {}
         // Words of block i; blocks must be visited in increasing order.
         std::span<const std::int32_t> next(std::size_t i);
+
     private:
         const Tape* tape_;
         std::size_t block_ = 0;
@@ -270,6 +277,7 @@ public:
     // Empties `chunk` and reads up to `max_blocks` more blocks into it, with the diagnostics found
     // meanwhile. Returns false when the tape is done (nothing was read).
     bool read_chunk(Tape& chunk, std::size_t max_blocks);
+
 private:
     std::unique_ptr<BlockReader> impl_;
 };

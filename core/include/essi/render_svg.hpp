@@ -32,9 +32,9 @@ constexpr std::string_view kSvgKerfBandColor = "#d62728";  // the cut's real wid
 constexpr std::string_view kSvgRemnantColor = "#9467bd";   // a plate's remnant (and the plate's outline)
 
 struct RenderOptions {
-    std::string title;             // shown in the legend (the file name)
-    double width_px = 1200;        // the SVG's width attribute; height follows the aspect ratio
-    bool show_travel = true;       // travel and rapid motion
+    std::string title;        // shown in the legend (the file name)
+    double width_px = 1200;   // the SVG's width attribute; height follows the aspect ratio
+    bool show_travel = true;  // travel and rapid motion
     // A part of the drawing (program mm): the picture shows this box (the viewer's view), the legend below it;
     // none: the whole tape with a margin.
     std::optional<Box> view;

@@ -29,7 +29,7 @@ struct CheckResult {
     // The parts and plates (essi/parts.hpp), when they were asked for (`essi check --parts`, `essi parts`, the job
     // sheet): the check alone does not make them.
     std::optional<PartsList> parts;
-    [[nodiscard]] bool ok() const;  // no error, listed or left out
+    [[nodiscard]] bool ok() const;                      // no error, listed or left out
     [[nodiscard]] std::size_t count(Severity s) const;  // listed and left out
     [[nodiscard]] std::size_t omitted() const { return omitted_errors + omitted_warnings + omitted_notes; }
 };

@@ -25,17 +25,17 @@ struct ShareView {
 };
 
 struct ShareLink {
-    std::optional<ShareView> view;      // c=X,Y,ZOOM (finite numbers, zoom > 0)
-    std::uint32_t line = 0;             // l=LINE: the selected line (0: none)
-    std::string name;                   // n=NAME, decoded (%XX and '+'); empty: none given
-    std::string store_id;               // share=ID: 64 lower-case hex digits (SHA-256)
-    std::string packed;                 // t=DATA, base64url-decoded: the deflate-raw bytes of the tape
-    std::string profile;                // p=NAME: the profile to read the tape with (is_valid_profile_name)
-    std::string profile_json;           // pj=DATA, base64url-decoded: a user profile (its JSON), when p names it
-    std::optional<InputFormat> input;   // i=essi|eia: the format the sender read the tape as; nullopt: from the content
+    std::optional<ShareView> view;     // c=X,Y,ZOOM (finite numbers, zoom > 0)
+    std::uint32_t line = 0;            // l=LINE: the selected line (0: none)
+    std::string name;                  // n=NAME, decoded (%XX and '+'); empty: none given
+    std::string store_id;              // share=ID: 64 lower-case hex digits (SHA-256)
+    std::string packed;                // t=DATA, base64url-decoded: the deflate-raw bytes of the tape
+    std::string profile;               // p=NAME: the profile to read the tape with (is_valid_profile_name)
+    std::string profile_json;          // pj=DATA, base64url-decoded: a user profile (its JSON), when p names it
+    std::optional<InputFormat> input;  // i=essi|eia: the format the sender read the tape as; nullopt: from the content
     std::optional<std::uint64_t> tape_bytes;  // b=BYTES: the tape's length, to tell a whole tape from a cut one
-    std::vector<std::string> problems;  // each field that could not be read, in words (the rest is still used)
-    std::vector<Message> problem_messages;  // the same problems, to be worded in any language (problems: English)
+    std::vector<std::string> problems;        // each field that could not be read, in words (the rest is still used)
+    std::vector<Message> problem_messages;    // the same problems, to be worded in any language (problems: English)
     [[nodiscard]] bool has_tape() const { return !packed.empty() || !store_id.empty(); }
 };
 

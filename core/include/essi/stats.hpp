@@ -20,20 +20,20 @@ struct Stats {
     double cut_length_mm = 0;
     double cut_length_compensated_mm = 0;  // the torch's path while cutting (kerf compensation, §8)
     double mark_length_mm = 0;
-    double travel_length_mm = 0;   // rapid and other tool-off motion
-    double rapid_length_mm = 0;    // the rapid part of travel_length_mm
+    double travel_length_mm = 0;  // rapid and other tool-off motion
+    double rapid_length_mm = 0;   // the rapid part of travel_length_mm
     unsigned long long pierces = 0;
-    unsigned long long blocks = 0; // program blocks read (comment lines and empty lines excluded)
+    unsigned long long blocks = 0;  // program blocks read (comment lines and empty lines excluded)
     unsigned long long motions = 0;
-    double estimated_time_s = 0;   // along the compensated path
-    Box cut_bbox;                  // empty when nothing is cut (program coordinates)
-    Box motion_bbox;               // all motion (program coordinates)
-    Box machine_cut_bbox;          // the same in machine coordinates (§12: zero offset, plate rotation, tool offsets)
-    Box machine_motion_bbox;       // ... and where the carriage goes when a tool offset is selected
-    Point end_position;            // machine position at the end (head 1)
-    std::optional<MachineTime> machine_time;     // with the profile's accel_mm_s2 (§9)
-    std::optional<Cost> cost;                    // with the profile's costs
-    std::optional<ConsumableUse> consumables;    // with the profile's consumables
+    double estimated_time_s = 0;  // along the compensated path
+    Box cut_bbox;                 // empty when nothing is cut (program coordinates)
+    Box motion_bbox;              // all motion (program coordinates)
+    Box machine_cut_bbox;         // the same in machine coordinates (§12: zero offset, plate rotation, tool offsets)
+    Box machine_motion_bbox;      // ... and where the carriage goes when a tool offset is selected
+    Point end_position;           // machine position at the end (head 1)
+    std::optional<MachineTime> machine_time;   // with the profile's accel_mm_s2 (§9)
+    std::optional<Cost> cost;                  // with the profile's costs
+    std::optional<ConsumableUse> consumables;  // with the profile's consumables
 };
 
 // The time a motion of `length_mm` takes at `feed_mm_min` (none without a feed): what the statistics estimate
@@ -51,7 +51,8 @@ public:
     bool on_tools(std::uint8_t tools_after) {
         const bool pierce = starts_cutting(tools_, tools_after);
         tools_ = tools_after;
-        if (pierce) [[unlikely]] pending_ = true;
+        if (pierce) [[unlikely]]
+            pending_ = true;
         return pierce;
     }
     // A motion with `tools` on: true when it is where the pierce made before it is (the cutting tools still on).
@@ -79,14 +80,16 @@ public:
                                       : torch_path_,
                 profile.chord_tolerance_mm),
           placement_(profile), plain_(!placement_.turns()) {
-        if (profile.accel_mm_s2) [[unlikely]] timer_.emplace(*profile.accel_mm_s2, profile.junction_deviation_mm);
+        if (profile.accel_mm_s2) [[unlikely]]
+            timer_.emplace(*profile.accel_mm_s2, profile.junction_deviation_mm);
     }
     StatsSink(const StatsSink&) = delete;
     StatsSink& operator=(const StatsSink&) = delete;
 
     void on_motion(const MotionRecord& m) override {
         kerf_.motion(m);
-        if (!plain_) [[unlikely]] add_machine_boxes(m);
+        if (!plain_) [[unlikely]]
+            add_machine_boxes(m);
         if (m.torches > 1 && m.kind == MotionKind::Cut) [[unlikely]] {
             add_torch_copies(m);
             return;
@@ -108,15 +111,19 @@ public:
     }
     // A straight line without compensation while none is open (kerf_open() false): what on_motion counts of
     // one. The interpreter calls it directly for the lines of a tape that is only checked, without their records.
-    [[gnu::always_inline]] void add_line(MotionKind kind, int head, Point start, Point end, double length_mm, double feed_mm_min) {
-        if (!plain_) [[unlikely]] add_machine_line(kind, start, end);
+    [[gnu::always_inline]] void add_line(MotionKind kind, int head, Point start, Point end, double length_mm,
+                                         double feed_mm_min) {
+        if (!plain_) [[unlikely]]
+            add_machine_line(kind, start, end);
         add_programmed_line(kind, head, start, end, length_mm);
         TorchPath::add(stats_, kind, length_mm, feed_mm_min, 1);
-        if (timed_) [[unlikely]] time_line(kind, start, end, length_mm, feed_mm_min);
+        if (timed_) [[unlikely]]
+            time_line(kind, start, end, length_mm, feed_mm_min);
     }
     void on_event(const MachineEvent& e) override {
         count_event(e.kind, e.value, e.tools_after, e.torches_after);
-        if (timed_) [[unlikely]] time_event(e);
+        if (timed_) [[unlikely]]
+            time_event(e);
     }
     // What on_event counts of an event: the interpreter calls it directly, without making the event.
     // Several torches pierce together: each pierce counts, the pierce time once.
@@ -162,7 +169,8 @@ public:
             timer_->finish(stats_.estimated_time_s);
             stats_.machine_time = timer_->time();
         }
-        if (profile_.costs || profile_.consumables) [[unlikely]] reckon_costs();  // (after the machine time)
+        if (profile_.costs || profile_.consumables) [[unlikely]]
+            reckon_costs();  // (after the machine time)
     }
     // Whether a compensated piece is open: a line without compensation must then come as a record (it is the
     // exit from compensation).
@@ -197,7 +205,8 @@ private:
     public:
         explicit MachineTorchPath(StatsSink& owner) : owner_(owner) {}
         void on_motion(const MotionRecord& m) override {
-            TorchPath::add(owner_.stats_, m.kind, m.length_mm, m.feed_mm_min, m.kind == MotionKind::Cut ? m.torches : 1);
+            TorchPath::add(owner_.stats_, m.kind, m.length_mm, m.feed_mm_min,
+                           m.kind == MotionKind::Cut ? m.torches : 1);
             owner_.timer_->motion(m);
         }
 
@@ -248,7 +257,8 @@ private:
             }
         }
         if (!timer_) return;
-        if (starts_cutting(before, e.tools_after)) timer_->add_pierce(profile_.pierce_time_s);  // (PierceTracker's rule)
+        if (starts_cutting(before, e.tools_after))
+            timer_->add_pierce(profile_.pierce_time_s);  // (PierceTracker's rule)
         timer_->pause(stop, block_stops_, kerf_.open() ? std::int64_t{kerf_.open_block()} : -1);
     }
     // The cost and the consumables, from the statistics (the machine time when there is one).
@@ -261,7 +271,8 @@ private:
         }
         if (profile_.consumables) {
             const double cutting = machine ? stats_.machine_time->torch_cutting_s : torch_cutting_s_;
-            const double arc_on = cutting + static_cast<double>(stats_.pierces) * profile_.pierce_time_s + cutting_dwell_s_;
+            const double arc_on =
+                cutting + static_cast<double>(stats_.pierces) * profile_.pierce_time_s + cutting_dwell_s_;
             stats_.consumables = consumable_use(*profile_.consumables, stats_.pierces, arc_on);
         }
     }
@@ -308,7 +319,8 @@ private:
         add_box(b, true);  // the copies lie between the first and the last
         add_box(Box{b.min_x + far.x, b.min_y + far.y, b.max_x + far.x, b.max_y + far.y, false}, true);
     }
-    [[gnu::always_inline]] void add_programmed_line(MotionKind kind, int head, Point start, Point end, double length_mm) {
+    [[gnu::always_inline]] void add_programmed_line(MotionKind kind, int head, Point start, Point end,
+                                                    double length_mm) {
         count_motion(kind, head, end, length_mm);
         add_box(Box::of(start, end), kind == MotionKind::Cut);  // a line's box is its end points
     }
@@ -344,7 +356,7 @@ private:
     Stats stats_;
     PierceTracker pierces_;
     // The machine time (with the profile's accel_mm_s2), what it follows of the events, and the consumables' times.
-    bool timed_;                  // accel_mm_s2 or consumables
+    bool timed_;  // accel_mm_s2 or consumables
     std::optional<MachineTimer> timer_;
     double torch_cutting_s_ = 0;  // the cutting motions at their feed, once per torch
     double cutting_dwell_s_ = 0;  // dwells while a cutting tool is on, once per torch

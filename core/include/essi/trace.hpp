@@ -18,7 +18,8 @@ namespace essi {
 constexpr int kTraceDecimals = 3;
 
 // One line (no newline) for a motion:
-//   "12 cut arc (10.000,0.000)->(0.000,10.000) c=(0.000,0.000) r=10.000 ccw sweep=90.000 len=15.708 tools=oxygen feed=1000"
+//   "12 cut arc (10.000,0.000)->(0.000,10.000) c=(0.000,0.000) r=10.000 ccw sweep=90.000 len=15.708 tools=oxygen
+//   feed=1000"
 // Lengths and coordinates to `decimals` decimals (default 3: micrometres, the golden files'; essi trace
 // --decimals N).
 [[nodiscard]] std::string trace_line(const MotionRecord& m, int decimals = kTraceDecimals);

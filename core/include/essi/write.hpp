@@ -24,9 +24,9 @@ inline constexpr OutputFormat kOutputFormats[] = {OutputFormat::Essi, OutputForm
 
 struct ConvertOptions {
     OutputFormat to = OutputFormat::Essi;
-    Profile target;           // the dialect written (units, end code, EIA table)
-    bool absolute = false;    // 82 / G92 (Woyda) / G90 instead of incremental
-    bool force = false;       // write a tape that has errors too (--force): what the machine would run of it
+    Profile target;         // the dialect written (units, end code, EIA table)
+    bool absolute = false;  // 82 / G92 (Woyda) / G90 instead of incremental
+    bool force = false;     // write a tape that has errors too (--force): what the machine would run of it
 };
 
 struct ConvertResult {
@@ -39,6 +39,7 @@ struct ConvertResult {
 
 // Checks `bytes` as `source` says (check_tape: every rule, the kerf path and the cut plan included); when the tape
 // has no error, or options.force, runs the program and writes it in options.to. Never throws.
-[[nodiscard]] ConvertResult convert_tape(std::string_view bytes, const TapeSetup& source, const ConvertOptions& options);
+[[nodiscard]] ConvertResult convert_tape(std::string_view bytes, const TapeSetup& source,
+                                         const ConvertOptions& options);
 
 }  // namespace essi

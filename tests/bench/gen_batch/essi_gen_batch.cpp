@@ -24,7 +24,8 @@ int main(int argc, char** argv) {
     unsigned long long total = 0;
     for (long i = 0; i < count; ++i) {
         const double kb = min_kb + (max_kb - min_kb) * static_cast<double>(i % 97) / 96.0;
-        const std::string tape = essi::bench::generate_nest_tape(static_cast<std::size_t>(kb * 1000), static_cast<unsigned>(i + 1));
+        const std::string tape =
+            essi::bench::generate_nest_tape(static_cast<std::size_t>(kb * 1000), static_cast<unsigned>(i + 1));
         char sub[32], name[32];
         std::snprintf(sub, sizeof sub, "%03ld", i / 100);
         std::snprintf(name, sizeof name, "t%05ld.esi", i);

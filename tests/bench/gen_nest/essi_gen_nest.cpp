@@ -30,8 +30,7 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    const std::string tape =
-        essi::bench::generate_nest_tape(static_cast<std::size_t>(mb * 1e6), seed, eol);
+    const std::string tape = essi::bench::generate_nest_tape(static_cast<std::size_t>(mb * 1e6), seed, eol);
     std::FILE* f = std::fopen(argv[2], "wb");
     if (!f) {
         std::perror(argv[2]);

@@ -8,10 +8,10 @@
 namespace essi::viewer::panels {
 namespace {
 
-constexpr ImU32 kSameColor = IM_COL32(80, 220, 255, 70);     // B's contours that are the same: a faint cyan
-constexpr ImU32 kBColor = IM_COL32(80, 220, 255, 255);       // B's that differ
-constexpr ImU32 kAColor = IM_COL32(255, 70, 90, 200);        // A's that differ (removed, changed, moved from)
-constexpr std::size_t kMaxSamePoints = 200000;               // B's same contours drawn up to this many points
+constexpr ImU32 kSameColor = IM_COL32(80, 220, 255, 70);  // B's contours that are the same: a faint cyan
+constexpr ImU32 kBColor = IM_COL32(80, 220, 255, 255);    // B's that differ
+constexpr ImU32 kAColor = IM_COL32(255, 70, 90, 200);     // A's that differ (removed, changed, moved from)
+constexpr std::size_t kMaxSamePoints = 200000;            // B's same contours drawn up to this many points
 
 void polyline(ImDrawList* dl, const View& view, Point o, const std::vector<Point>& pts, ImU32 colour, float width) {
     if (pts.size() < 2) return;
@@ -33,11 +33,13 @@ void Panels::compare_overlay(ImDrawList* dl) {
     const Point o = p_.navigation.origin();
     std::size_t points = 0;
     for (const ContourDiff& d : c->diff.contours) {
-        if (d.change != ContourChange::Same && d.a >= 0) polyline(dl, view, o, c->a_lines[static_cast<std::size_t>(d.a)], kAColor, 3.5f);
+        if (d.change != ContourChange::Same && d.a >= 0)
+            polyline(dl, view, o, c->a_lines[static_cast<std::size_t>(d.a)], kAColor, 3.5f);
         if (d.b < 0) continue;
         const auto& pts = c->b_lines[static_cast<std::size_t>(d.b)];
         if (d.change == ContourChange::Same && (points += pts.size()) > kMaxSamePoints) continue;
-        polyline(dl, view, o, pts, d.change == ContourChange::Same ? kSameColor : kBColor, d.change == ContourChange::Same ? 1.f : 2.f);
+        polyline(dl, view, o, pts, d.change == ContourChange::Same ? kSameColor : kBColor,
+                 d.change == ContourChange::Same ? 1.f : 2.f);
     }
 }
 
@@ -48,7 +50,8 @@ void Panels::compare_window() {
     ImGui::SetNextWindowPos(ImVec2(a.x + a.w - 8, a.y + 8), ImGuiCond_Appearing, ImVec2(1.f, 0.f));
     ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 16, 420.f), 0), ImGuiCond_Appearing);
     bool open = true;
-    ImGui::Begin(tr_id(Msg::UiCompareTitle, "Compare").c_str(), &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+    ImGui::Begin(tr_id(Msg::UiCompareTitle, "Compare").c_str(), &open,
+                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
     const Document* doc = p_.session.document();
     ImGui::TextWrapped("A: %s  B: %s", doc ? doc->name.c_str() : "-", c->name.c_str());
     ImGui::TextColored(ImVec4(0.31f, 0.86f, 1, 1), "%s", tr(Msg::UiBContours));
@@ -58,7 +61,8 @@ void Panels::compare_window() {
     ImGui::Separator();
     const std::size_t rows = c->diff.contours.size() - c->diff.count(ContourChange::Same);
     const float list_h = ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(std::max<std::size_t>(rows, 1) + 1);
-    ImGui::BeginChild("differences", ImVec2(0, std::min({list_h, 300.f, a.h / 2})), false, ImGuiWindowFlags_HorizontalScrollbar);
+    ImGui::BeginChild("differences", ImVec2(0, std::min({list_h, 300.f, a.h / 2})), false,
+                      ImGuiWindowFlags_HorizontalScrollbar);
     int row = 0;
     for (const ContourDiff& d : c->diff.contours) {
         if (d.change == ContourChange::Same) continue;

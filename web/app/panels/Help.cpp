@@ -57,7 +57,8 @@ void colours() {
 void Panels::help() {
     const Rect& a = p_.navigation.view().area;
     ImGui::SetNextWindowPos(ImVec2(a.x + a.w / 2, a.y + 40), ImGuiCond_Appearing, ImVec2(0.5f, 0));
-    ImGui::Begin(tr_id(Msg::UiHelpTitle, "Help").c_str(), &p_.ui.help, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+    ImGui::Begin(tr_id(Msg::UiHelpTitle, "Help").c_str(), &p_.ui.help,
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
         for (const auto& r : kShortcuts) {
             ImGui::TableNextRow();

@@ -27,7 +27,8 @@ bool begin_side_panel(PanelLayout& layout, bool& dragged, const char* name, bool
     float& set = set_width[left ? 0 : 1];
     ImGui::SetNextWindowPos(ImVec2(left ? 0 : io.DisplaySize.x - w, kToolbarHeight));
     if (w != set) ImGui::SetNextWindowSize(ImVec2(w, h));
-    ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(kMinPanelWidth, w), h), ImVec2(std::max(io.DisplaySize.x / 2, w), h));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(kMinPanelWidth, w), h),
+                                        ImVec2(std::max(io.DisplaySize.x / 2, w), h));
     set = w;
     ImGui::Begin(name, nullptr, kPanelFlags | ImGuiWindowFlags_NoCollapse);
     const float now = ImGui::GetWindowWidth();

@@ -12,7 +12,7 @@ namespace {
 constexpr ImGuiWindowFlags kMessageFlags =
     ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove;
 constexpr std::size_t kShareUrlShown = 600;  // characters of a share link shown
-constexpr std::size_t kExamplesPerRow = 3;    // buttons a row on the start screen
+constexpr std::size_t kExamplesPerRow = 3;   // buttons a row on the start screen
 
 void loading(const LoadController& load, const Rect& a, ImVec2 centre, bool tape_drawn) {
     // Over the middle of the drawing area; at its top once the level of detail shows the tape.
@@ -20,7 +20,8 @@ void loading(const LoadController& load, const Rect& a, ImVec2 centre, bool tape
     else ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(420, 0));
     ImGui::Begin("##loading", nullptr, kMessageFlags);
-    ImGui::TextWrapped("%s", tr(Msg::UiLoadingLine, {load.loading_name(), size_text(load.loading_bytes()), load.stage()}).c_str());
+    ImGui::TextWrapped(
+        "%s", tr(Msg::UiLoadingLine, {load.loading_name(), size_text(load.loading_bytes()), load.stage()}).c_str());
     ImGui::ProgressBar(stepped(load.progress()), ImVec2(-1, 0));
     ImGui::End();
 }
@@ -31,9 +32,11 @@ void drawing(const LoadController& load, const Renderer& renderer, const Rect& a
     ImGui::SetNextWindowPos(ImVec2(centre.x, a.y + 8), ImGuiCond_Always, ImVec2(0.5f, 0.f));
     ImGui::Begin("##drawing", nullptr, kMessageFlags | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
     if (load.remaking())
-        ImGui::TextUnformatted(tr(Msg::UiDrawingRemake, {fmt("%.0f", 100.0 * stepped(load.building()->progress()))}).c_str());
+        ImGui::TextUnformatted(
+            tr(Msg::UiDrawingRemake, {fmt("%.0f", 100.0 * stepped(load.building()->progress()))}).c_str());
     else
-        ImGui::TextUnformatted(tr(Msg::UiDrawingPending, {fmt("%.1f", renderer.stats().pending_segments / 1e6)}).c_str());
+        ImGui::TextUnformatted(
+            tr(Msg::UiDrawingPending, {fmt("%.1f", renderer.stats().pending_segments / 1e6)}).c_str());
     ImGui::End();
 }
 
@@ -59,7 +62,8 @@ void welcome(const Panels::Parts& p, ImVec2 centre) {
         ImGui::TextDisabled("%s", tr(Msg::UiWelcomeRecent));
         for (const std::string& name : p.session.recent()) ImGui::BulletText("%s", name.c_str());
     }
-    if (!p.graphics_ok) ImGui::TextColored(severity_color(Severity::Error), "%s", tr(Msg::UiGraphicsError, {program_error()}).c_str());
+    if (!p.graphics_ok)
+        ImGui::TextColored(severity_color(Severity::Error), "%s", tr(Msg::UiGraphicsError, {program_error()}).c_str());
     ImGui::End();
 }
 
@@ -77,9 +81,11 @@ void problem(const Document& doc, const std::string& banner, const Rect& a, ImVe
 void share_popup(UiState& ui, const ShareLinks& shares, PlatformServices& platform, const Rect& a, ImVec2 centre) {
     ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 40, 560.f), 0));
-    ImGui::Begin(tr_id(Msg::UiShareLink, "Share link").c_str(), &ui.share_popup, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+    ImGui::Begin(tr_id(Msg::UiShareLink, "Share link").c_str(), &ui.share_popup,
+                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
     const std::string url = shares.text();  // (the link, or why there is none)
-    ImGui::TextWrapped("%s", url.size() > kShareUrlShown ? (url.substr(0, kShareUrlShown) + " ...").c_str() : url.c_str());
+    ImGui::TextWrapped("%s",
+                       url.size() > kShareUrlShown ? (url.substr(0, kShareUrlShown) + " ...").c_str() : url.c_str());
     if (ImGui::Button(tr_id(Msg::UiCopyAgain, "copy again").c_str())) platform.copy_text(url);
     ImGui::SameLine();
     if (ImGui::Button(tr_id(Msg::UiClose, "close").c_str())) ui.share_popup = false;

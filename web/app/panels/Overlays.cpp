@@ -63,7 +63,8 @@ void grid_labels(ImDrawList* dl, const View& view, const Coordinates& cs, Point 
     dl->AddLine(p, ImVec2(p.x + bar, p.y), kScaleBarColor, 2);
     dl->AddLine(p, ImVec2(p.x, p.y - 5), kScaleBarColor, 2);
     dl->AddLine(ImVec2(p.x + bar, p.y), ImVec2(p.x + bar, p.y - 5), kScaleBarColor, 2);
-    dl->AddText(ImVec2(p.x + bar / 2 - 20, p.y - 20), kScaleBarColor, (step >= 1000 ? fmt("%g m", step / 1000) : fmt("%g mm", step)).c_str());
+    dl->AddText(ImVec2(p.x + bar / 2 - 20, p.y - 20), kScaleBarColor,
+                (step >= 1000 ? fmt("%g m", step / 1000) : fmt("%g mm", step)).c_str());
 }
 
 // An arrow at the middle of each selected motion, pointing the way it runs.
@@ -86,8 +87,10 @@ void selection_arrows(ImDrawList* dl, const Document& doc, const Selection& sel,
         dy /= len;
         const double s = kArrowPx;
         const ImVec2 tip(static_cast<float>(ps.x + dx * s), static_cast<float>(ps.y + dy * s));
-        const ImVec2 l(static_cast<float>(ps.x - dx * s - dy * s * 0.7), static_cast<float>(ps.y - dy * s + dx * s * 0.7));
-        const ImVec2 rr(static_cast<float>(ps.x - dx * s + dy * s * 0.7), static_cast<float>(ps.y - dy * s - dx * s * 0.7));
+        const ImVec2 l(static_cast<float>(ps.x - dx * s - dy * s * 0.7),
+                       static_cast<float>(ps.y - dy * s + dx * s * 0.7));
+        const ImVec2 rr(static_cast<float>(ps.x - dx * s + dy * s * 0.7),
+                        static_cast<float>(ps.y - dy * s - dx * s * 0.7));
         dl->AddTriangleFilled(tip, l, rr, to_u32(kSelectionColor));
     }
 }
@@ -96,17 +99,20 @@ void selection_arrows(ImDrawList* dl, const Document& doc, const Selection& sel,
 void measure_window(const Measure& m, Point b, const Coordinates& cs, const Rect& a) {
     ImGui::SetNextWindowPos(ImVec2(a.x + 10, a.y + 10));
     ImGui::SetNextWindowBgAlpha(0.85f);
-    ImGui::Begin(tr_id(Msg::UiMeasureTitle, "Measure").c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
-                                         ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing);
+    ImGui::Begin(tr_id(Msg::UiMeasureTitle, "Measure").c_str(), nullptr,
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoFocusOnAppearing);
     if (m.points == 0) {
         ImGui::TextUnformatted(tr(Msg::UiMeasureFirst));
     } else {
         const Point sa = cs.shown(m.a), sb = cs.shown(b);
         const double dx = sb.x - sa.x, dy = sb.y - sa.y;
         ImGui::Text("A (%.3f, %.3f)", sa.x, sa.y);
-        ImGui::Text("B (%.3f, %.3f)%s%s", sb.x, sb.y, m.points == 2 ? "" : "  ", m.points == 2 ? "" : tr(Msg::UiMeasureClickToFix));
+        ImGui::Text("B (%.3f, %.3f)%s%s", sb.x, sb.y, m.points == 2 ? "" : "  ",
+                    m.points == 2 ? "" : tr(Msg::UiMeasureClickToFix));
         ImGui::TextUnformatted(tr(Msg::UiDistance, {fmt("%.3f", std::hypot(dx, dy))}).c_str());
-        ImGui::Text("dx %.3f mm   dy %.3f mm (%s)", dx, dy, tr(cs.machine() ? Msg::UiMachineCoordinates : Msg::UiProgramCoordinates));
+        ImGui::Text("dx %.3f mm   dy %.3f mm (%s)", dx, dy,
+                    tr(cs.machine() ? Msg::UiMachineCoordinates : Msg::UiProgramCoordinates));
     }
     ImGui::TextDisabled("%s", tr(Msg::UiMeasureLeave));
     ImGui::End();

@@ -14,10 +14,10 @@ namespace essi::viewer::panels {
 
 namespace {
 
-constexpr float kRingGapPx = 3;            // the ring around an active mark, outside the mark
+constexpr float kRingGapPx = 3;  // the ring around an active mark, outside the mark
 constexpr float kRingWidthPx = 2;
-constexpr float kOverlapAlpha = 0.45f;     // the overlapping area's fill
-constexpr float kOverlapRowPx = 1;         // its rows (window pixels)
+constexpr float kOverlapAlpha = 0.45f;          // the overlapping area's fill
+constexpr float kOverlapRowPx = 1;              // its rows (window pixels)
 constexpr std::size_t kTooltipDiagnostics = 4;  // diagnostics listed in one tooltip (more marks at one spot)
 constexpr std::size_t kTooltipRelated = 6;      // related places listed for one diagnostic
 
@@ -59,7 +59,8 @@ void ring(ImDrawList* dl, const Document& doc, const View& view, const Diagnosti
 // One diagnostic in the tooltip: its code and line in its colour, its message, its related places.
 void tooltip_diagnostic(UiFonts& fonts, const Diagnostic& d) {
     const Lang lang = ui_lang();
-    ImGui::TextColored(severity_color(d.severity), "%s  %s", code_name(d.code).c_str(), tr(Msg::UiMarkAt, {d.line}).c_str());
+    ImGui::TextColored(severity_color(d.severity), "%s  %s", code_name(d.code).c_str(),
+                       tr(Msg::UiMarkAt, {d.line}).c_str());
     const std::string message = diagnostic_message(d, lang);
     fonts.require_glyphs(message);
     ImGui::TextUnformatted(message.c_str());
@@ -80,7 +81,8 @@ void tooltip(UiFonts& fonts, const Document& doc, const std::vector<std::size_t>
         if (k > 0) ImGui::Separator();
         tooltip_diagnostic(fonts, doc.diagnostics[doc.marks[near[k]].diagnostic]);
     }
-    if (near.size() > kTooltipDiagnostics) ImGui::TextDisabled("%s", tr(Msg::UiMarkMore, {near.size() - kTooltipDiagnostics}).c_str());
+    if (near.size() > kTooltipDiagnostics)
+        ImGui::TextDisabled("%s", tr(Msg::UiMarkMore, {near.size() - kTooltipDiagnostics}).c_str());
     ImGui::TextDisabled("%s", tr(Msg::UiMarkClick));
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();

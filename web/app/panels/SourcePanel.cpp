@@ -124,7 +124,8 @@ void inspector(const Panels::Parts& p) {
     for (const InspectorLine& l : lines) {
         using Of = InspectorLine::Of;
         if (l.of != Of::Block)
-            ImGui::PushStyleColor(ImGuiCol_Text, opaque(l.of == Of::Torch ? kPathColorTable[kKerfPathKind] : kind_color(l.kind)));
+            ImGui::PushStyleColor(ImGuiCol_Text,
+                                  opaque(l.of == Of::Torch ? kPathColorTable[kKerfPathKind] : kind_color(l.kind)));
         ImGui::TextWrapped("%s", l.text.c_str());
         if (l.of != Of::Block) ImGui::PopStyleColor();
     }
@@ -132,8 +133,8 @@ void inspector(const Panels::Parts& p) {
     const LineDiagnostics diags = diagnostics_of(d, line);
     for (auto it = diags.begin; it != diags.end; ++it) {
         ImGui::PushStyleColor(ImGuiCol_Text, severity_color(it->severity));
-        ImGui::TextWrapped("%s %s: %s", std::string(essi::severity_text(it->severity, ui_lang())).c_str(), code_name(it->code).c_str(),
-                           diagnostic_message(*it, ui_lang()).c_str());
+        ImGui::TextWrapped("%s %s: %s", std::string(essi::severity_text(it->severity, ui_lang())).c_str(),
+                           code_name(it->code).c_str(), diagnostic_message(*it, ui_lang()).c_str());
         ImGui::PopStyleColor();
     }
 }
@@ -141,7 +142,8 @@ void inspector(const Panels::Parts& p) {
 }  // namespace
 
 void Panels::source_panel() {
-    if (!begin_side_panel(p_.ui.layout, p_.ui.layout_changed, tr_id(Msg::UiSourcePanel, "Source").c_str(), false)) return;
+    if (!begin_side_panel(p_.ui.layout, p_.ui.layout_changed, tr_id(Msg::UiSourcePanel, "Source").c_str(), false))
+        return;
     // (the inspector a third of a short window at most: the source keeps its lines)
     const float inspector_h = std::min(kInspectorHeight, ImGui::GetWindowHeight() / 3);
     ImGui::BeginChild("source", ImVec2(0, -inspector_h), true, ImGuiWindowFlags_HorizontalScrollbar);

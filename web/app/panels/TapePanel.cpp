@@ -49,7 +49,8 @@ void stats_table(const Document& doc) {
         stats_row(Msg::UiStatCutBox, fmt("(%.1f, %.1f) - (%.1f, %.1f)", c.min_x, c.min_y, c.max_x, c.max_y));
     }
     const Box& m = s.motion_bbox;
-    if (!m.empty) stats_row(Msg::UiStatMotionBox, fmt("(%.1f, %.1f) - (%.1f, %.1f)", m.min_x, m.min_y, m.max_x, m.max_y));
+    if (!m.empty)
+        stats_row(Msg::UiStatMotionBox, fmt("(%.1f, %.1f) - (%.1f, %.1f)", m.min_x, m.min_y, m.max_x, m.max_y));
     stats_row(Msg::UiStatEnd, fmt("(%.3f, %.3f)", s.end_position.x, s.end_position.y));
     ImGui::EndTable();
 }
@@ -66,7 +67,8 @@ void sheet_table(const SheetTable& t) {
         for (std::size_t c = 0; c < row.size() && c < t.columns.size(); ++c) {
             ImGui::TableNextColumn();
             if (c < t.numeric.size() && t.numeric[c])
-                ImGui::SetCursorPosX(ImGui::GetCursorPosX() + ImGui::GetColumnWidth() - ImGui::CalcTextSize(row[c].c_str()).x);
+                ImGui::SetCursorPosX(ImGui::GetCursorPosX() + ImGui::GetColumnWidth() -
+                                     ImGui::CalcTextSize(row[c].c_str()).x);
             ImGui::TextUnformatted(row[c].c_str());
         }
     }
@@ -98,8 +100,9 @@ void reading(Session& session, CommentText& comments) {
         return;
     }
     const TapeSetup& s = doc->setup;
-    ImGui::TextWrapped("%s", tr(Msg::UiReadingLine, {s.format == InputFormat::Eia ? "EIA (RS-274)" : "ESSI", s.profile.name,
-                                                     s.auto_profile ? " (auto)" : ""}).c_str());
+    ImGui::TextWrapped("%s", tr(Msg::UiReadingLine, {s.format == InputFormat::Eia ? "EIA (RS-274)" : "ESSI",
+                                                     s.profile.name, s.auto_profile ? " (auto)" : ""})
+                                 .c_str());
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     if (s.evidence.empty()) ImGui::TextWrapped("%s", tr(Msg::UiNoDialectCodes, {s.profile.name}).c_str());
     for (const Message& e : s.evidence_messages) ImGui::TextWrapped("%s", e.text(ui_lang()).c_str());
@@ -127,8 +130,8 @@ void statistics(const Document* doc, const LoadController& load) {
     const PathBuffers* building = load.building();
     const std::string about =
         building && load.first_build()  // (the segments are still being made: none to count yet)
-            ? tr(Msg::UiAboutBuilding, {size_text(doc->bytes.size()), doc->line_count(),
-                                        fmt("%.0f", 100.0 * stepped(building->progress()))})
+            ? tr(Msg::UiAboutBuilding,
+                 {size_text(doc->bytes.size()), doc->line_count(), fmt("%.0f", 100.0 * stepped(building->progress()))})
             : tr(Msg::UiAboutLoaded, {size_text(doc->bytes.size()), doc->line_count(), load.buffers().segment_count,
                                       fmt("%.2f", load.load_seconds())});
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
@@ -161,7 +164,8 @@ void colour_by(Layers& layers, const LoadController& load) {
     ImGui::SetNextItemWidth(-1);
     if (ImGui::BeginCombo("##colour_by", current.c_str())) {
         for (const ColourBy by : kColourByModes)
-            if (ImGui::Selectable(tr_id(colour_by_label(by), std::string(colour_by_name(by)).c_str()).c_str(), by == layers.colour_by))
+            if (ImGui::Selectable(tr_id(colour_by_label(by), std::string(colour_by_name(by)).c_str()).c_str(),
+                                  by == layers.colour_by))
                 layers.colour_by = by;
         ImGui::EndCombo();
     }
@@ -173,8 +177,9 @@ void colour_by(Layers& layers, const LoadController& load) {
         for (int b = 0; b < bins; ++b) {
             const float x0 = at.x + swatch * 2 * static_cast<float>(b) / static_cast<float>(bins);
             const float x1 = at.x + swatch * 2 * static_cast<float>(b + 1) / static_cast<float>(bins);
-            dl->AddRectFilled(ImVec2(x0, at.y + 2), ImVec2(x1, at.y + swatch - 2),
-                              ImGui::ColorConvertFloat4ToU32(opaque(kColourRamp[static_cast<std::size_t>(e.first_bin + b)])));
+            dl->AddRectFilled(
+                ImVec2(x0, at.y + 2), ImVec2(x1, at.y + swatch - 2),
+                ImGui::ColorConvertFloat4ToU32(opaque(kColourRamp[static_cast<std::size_t>(e.first_bin + b)])));
         }
         ImGui::Dummy(ImVec2(swatch * 2, swatch));
         ImGui::SameLine();
@@ -186,7 +191,8 @@ void layers(Layers& layers, Preferences& preferences, const Document* doc, const
     bool first = true;
     for (MotionKind k : {MotionKind::Cut, MotionKind::Mark, MotionKind::Travel, MotionKind::Rapid}) {
         const ImVec4 c = opaque(kind_color(k));
-        layer_switch(std::string(motion_kind_text(k, ui_lang())) + "###" + motion_kind_name(k), layers.kind(k), &c, first);
+        layer_switch(std::string(motion_kind_text(k, ui_lang())) + "###" + motion_kind_name(k), layers.kind(k), &c,
+                     first);
         first = false;
     }
     colour_by(layers, load);
@@ -222,9 +228,11 @@ void playback(Playback& p, Navigation& navigation, const Document* doc) {
     if (ImGui::Button(tr_id(Msg::UiAll, "all").c_str())) p.show_all(n);
     int pos = static_cast<int>(std::floor(p.position));
     ImGui::SetNextItemWidth(-1);
-    if (ImGui::SliderInt("##pos", &pos, 0, static_cast<int>(n), tr_format(Msg::UiSliderMotion, "%d").c_str())) p.seek(pos);
+    if (ImGui::SliderInt("##pos", &pos, 0, static_cast<int>(n), tr_format(Msg::UiSliderMotion, "%d").c_str()))
+        p.seek(pos);
     ImGui::SetNextItemWidth(-1);
-    ImGui::SliderFloat("##factor", &p.factor, Playback::kMinFactor, Playback::kMaxFactor, tr_format(Msg::UiSliderSpeed, "%.0f").c_str(),
+    ImGui::SliderFloat("##factor", &p.factor, Playback::kMinFactor, Playback::kMaxFactor,
+                       tr_format(Msg::UiSliderSpeed, "%.0f").c_str(),
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     const double elapsed = p.elapsed_s(*doc), total = p.total_s(*doc);
     ImGui::TextWrapped("%s", tr(Msg::UiMachineTime, {hms(elapsed), hms(total), hms(total - elapsed)}).c_str());
@@ -232,13 +240,17 @@ void playback(Playback& p, Navigation& navigation, const Document* doc) {
     const std::size_t cur = p.at(n).motion;
     const Motion& m = doc->motions[cur];
     const Lang lang = ui_lang();
-    ImGui::TextWrapped("%s", tr(Msg::UiPlaybackLine, {m.line, motion_kind_text(m.kind, lang), curve_kind_text(m.curve, lang)}).c_str());
-    ImGui::TextWrapped("%s", tr(Msg::UiPlaybackTools, {tools_label(m.tools, lang), fmt("%.0f", doc->feed_of(cur))}).c_str());
+    ImGui::TextWrapped(
+        "%s",
+        tr(Msg::UiPlaybackLine, {m.line, motion_kind_text(m.kind, lang), curve_kind_text(m.curve, lang)}).c_str());
+    ImGui::TextWrapped("%s",
+                       tr(Msg::UiPlaybackTools, {tools_label(m.tools, lang), fmt("%.0f", doc->feed_of(cur))}).c_str());
     const Playback::At at = p.at(n);
     const Coordinates cs = navigation.coordinates();
     const Point tool = cs.shown(point_at(doc->record(at.motion), at.fraction));
     ImGui::TextWrapped("%s", tr(Msg::UiToolAt, {fmt("%.3f", tool.x), fmt("%.3f", tool.y),
-                                                cs.machine() ? Msg::UiCoordsMachineShort : Msg::UiCoordsProgramShort}).c_str());
+                                                cs.machine() ? Msg::UiCoordsMachineShort : Msg::UiCoordsProgramShort})
+                                 .c_str());
     if (ImGui::SmallButton(tr_id(Msg::UiShowLine, "show line").c_str())) navigation.select_line(m.line, false);
 }
 
@@ -297,12 +309,14 @@ void diagnostics(const Document* doc, Navigation& navigation, Exports& exports) 
                 navigation.select_diagnostic(static_cast<std::size_t>(i));
             ImGui::PopStyleColor();
             if (ImGui::BeginPopupContextItem("diagnostic menu")) {
-                if (ImGui::Selectable(tr(Msg::UiCopyThisProblem))) exports.copy(Exports::CopyWhat::Diagnostic, static_cast<std::uint32_t>(i));
+                if (ImGui::Selectable(tr(Msg::UiCopyThisProblem)))
+                    exports.copy(Exports::CopyWhat::Diagnostic, static_cast<std::uint32_t>(i));
                 if (ImGui::Selectable(tr(Msg::UiCopyReport))) exports.copy(Exports::CopyWhat::Report);
                 ImGui::EndPopup();
             }
             const std::string message = diagnostic_message(d, ui_lang());
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\n%s", message.c_str(), std::string(code_summary(d.code, ui_lang())).c_str());
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("%s\n%s", message.c_str(), std::string(code_summary(d.code, ui_lang())).c_str());
             ImGui::SameLine();
             ImGui::TextWrapped("%s", message.c_str());
             ImGui::PopID();

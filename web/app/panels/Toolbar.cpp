@@ -19,17 +19,41 @@ namespace essi::viewer::panels {
 
 namespace {
 
-enum class Item { Open, Paste, Share, Export, Fit, Measure, Help, Panels, Compare, Profile, Orientation, Coordinates, Language, Verdict };
+enum class Item {
+    Open,
+    Paste,
+    Share,
+    Export,
+    Fit,
+    Measure,
+    Help,
+    Panels,
+    Compare,
+    Profile,
+    Orientation,
+    Coordinates,
+    Language,
+    Verdict
+};
 struct ItemInfo {
     Item item;
     const char* id;  // in state().toolbar
 };
 constexpr ItemInfo kItems[] = {
-    {Item::Open, "open"},       {Item::Paste, "paste"},     {Item::Share, "share"},
-    {Item::Export, "export"},   {Item::Fit, "fit"},         {Item::Measure, "measure"},
-    {Item::Help, "help"},       {Item::Panels, "panels"},   {Item::Compare, "compare"},
-    {Item::Profile, "profile"}, {Item::Orientation, "orientation"}, {Item::Coordinates, "coordinates"},
-    {Item::Language, "language"}, {Item::Verdict, "verdict"},
+    {Item::Open, "open"},
+    {Item::Paste, "paste"},
+    {Item::Share, "share"},
+    {Item::Export, "export"},
+    {Item::Fit, "fit"},
+    {Item::Measure, "measure"},
+    {Item::Help, "help"},
+    {Item::Panels, "panels"},
+    {Item::Compare, "compare"},
+    {Item::Profile, "profile"},
+    {Item::Orientation, "orientation"},
+    {Item::Coordinates, "coordinates"},
+    {Item::Language, "language"},
+    {Item::Verdict, "verdict"},
 };
 constexpr const char* kMoreLabel = "\xC2\xBB###more";  // » (no words: its tooltip says what it is)
 
@@ -39,7 +63,9 @@ constexpr std::array<Msg, 2> kCoordinates = {Msg::UiProgramCoordinates, Msg::UiM
 
 // Widths as ImGui will lay the widgets out (the label's text before "###").
 float text_width(const char* s) { return ImGui::CalcTextSize(s, nullptr, true).x; }
-float button_width(const std::string& label) { return text_width(label.c_str()) + ImGui::GetStyle().FramePadding.x * 2; }
+float button_width(const std::string& label) {
+    return text_width(label.c_str()) + ImGui::GetStyle().FramePadding.x * 2;
+}
 float checkbox_width(const std::string& label) {
     return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + text_width(label.c_str());
 }
@@ -65,7 +91,8 @@ std::string profile_shown(const Session& session) {
 std::vector<std::string> profile_choices(const Session& session) {
     std::vector<std::string> names{std::string(kAutoProfile)};
     for (const std::string& n : builtin_profile_names()) names.push_back(n);
-    if (session.dropped_profile()) names.push_back(session.dropped_profile()->name);  // (a profile file dropped on the page)
+    if (session.dropped_profile())
+        names.push_back(session.dropped_profile()->name);  // (a profile file dropped on the page)
     return names;
 }
 
@@ -98,14 +125,16 @@ float item_width(const Parts& p, Item item) {
             return w;
         }
         case Item::Orientation:
-            return combo_width({tr(kOrientations[0]), tr(kOrientations[1]), tr(kOrientations[2]), tr(kOrientations[3])});
+            return combo_width(
+                {tr(kOrientations[0]), tr(kOrientations[1]), tr(kOrientations[2]), tr(kOrientations[3])});
         case Item::Coordinates: return combo_width({tr(kCoordinates[0]), tr(kCoordinates[1])});
         case Item::Language:
             return combo_width({lang_native_name(Lang::En), lang_native_name(Lang::De), lang_native_name(Lang::Zh)});
         case Item::Verdict: {
             const Document* doc = p.session.document();
             if (!doc) return 0;
-            return text_width(doc->name.c_str()) + ImGui::GetStyle().ItemSpacing.x + text_width(verdict_text(*doc).c_str());
+            return text_width(doc->name.c_str()) + ImGui::GetStyle().ItemSpacing.x +
+                   text_width(verdict_text(*doc).c_str());
         }
     }
     return 0;
@@ -115,16 +144,15 @@ float item_width(const Parts& p, Item item) {
 void export_menu(Exports& exports) {
     if (!ImGui::BeginPopup("export")) return;
     // (format names are no words: they stay as they are)
-    const std::pair<std::string, const char*> formats[] = {
-        {"ESSI (.esi)", "essi"},
-        {"EIA, RS-274 (.eia)", "eia"},
-        {tr(Msg::UiExportGcode), "gcode"},
-        {tr(Msg::UiExportDxf), "dxf"},
-        {tr(Msg::UiExportReportText), "report-text"},
-        {tr(Msg::UiExportReportJson), "report-json"},
-        {tr(Msg::UiExportProblemsCsv), "report-csv"},
-        {tr(Msg::UiExportViewSvg), "view-svg"},
-        {tr(Msg::UiExportJobSheet), "job-html"}};
+    const std::pair<std::string, const char*> formats[] = {{"ESSI (.esi)", "essi"},
+                                                           {"EIA, RS-274 (.eia)", "eia"},
+                                                           {tr(Msg::UiExportGcode), "gcode"},
+                                                           {tr(Msg::UiExportDxf), "dxf"},
+                                                           {tr(Msg::UiExportReportText), "report-text"},
+                                                           {tr(Msg::UiExportReportJson), "report-json"},
+                                                           {tr(Msg::UiExportProblemsCsv), "report-csv"},
+                                                           {tr(Msg::UiExportViewSvg), "view-svg"},
+                                                           {tr(Msg::UiExportJobSheet), "job-html"}};
     for (const auto& [label, format] : formats)
         if (ImGui::Selectable(label.c_str())) exports.export_file(format);
     if (ImGui::Selectable(tr(Msg::UiExportViewPng))) exports.export_view_png();
@@ -172,7 +200,8 @@ void profile_combo(Session& session, float width) {
     ImGui::SetNextItemWidth(width);
     if (ImGui::BeginCombo("##profile", profile_shown(session).c_str())) {
         for (const std::string& n : profile_choices(session))
-            if (ImGui::Selectable(n.c_str(), n == session.profile_name()) && n != session.profile_name()) session.set_profile(n);
+            if (ImGui::Selectable(n.c_str(), n == session.profile_name()) && n != session.profile_name())
+                session.set_profile(n);
         ImGui::EndCombo();
     }
     tooltip(Msg::UiProfileTip);
@@ -210,7 +239,8 @@ void language_combo(Preferences& preferences, float width) {
     ImGui::SetNextItemWidth(width);
     if (ImGui::BeginCombo("##language", std::string(lang_native_name(now)).c_str())) {
         for (const Lang l : kLanguages)
-            if (ImGui::Selectable(std::string(lang_native_name(l)).c_str(), l == now) && l != now) preferences.set_language(l);
+            if (ImGui::Selectable(std::string(lang_native_name(l)).c_str(), l == now) && l != now)
+                preferences.set_language(l);
         ImGui::EndCombo();
     }
     tooltip(Msg::UiLanguageTip);
@@ -221,7 +251,9 @@ void verdict(const Document* doc) {
     ImGui::TextUnformatted(doc->name.c_str());
     ImGui::SameLine();
     const std::size_t e = doc->count(Severity::Error), w = doc->count(Severity::Warning);
-    const ImVec4 colour = e > 0 ? severity_color(Severity::Error) : w > 0 ? severity_color(Severity::Warning) : to_vec4(kOkColor);
+    const ImVec4 colour = e > 0   ? severity_color(Severity::Error)
+                          : w > 0 ? severity_color(Severity::Warning)
+                                  : to_vec4(kOkColor);
     ImGui::TextColored(colour, "%s", verdict_text(*doc).c_str());
 }
 
@@ -297,7 +329,8 @@ void message(const Notices& notices, const Rect& area, float bar_end, float righ
     ImGui::SetNextWindowPos(ImVec2(area.x + area.w / 2, area.y + 8), ImGuiCond_Always, ImVec2(0.5f, 0.f));
     ImGui::Begin("##toolbar message", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
-                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoFocusOnAppearing);
+                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
+                     ImGuiWindowFlags_NoFocusOnAppearing);
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + std::max(area.w - 60, 180.f));
     ImGui::TextColored(to_vec4(kMessageColor), "%s", text.c_str());
     ImGui::PopTextWrapPos();

@@ -35,8 +35,8 @@ void hint_wrapped(const char* text);
 [[nodiscard]] inline ImU32 to_u32(const Rgba& c) { return ImGui::ColorConvertFloat4ToU32(to_vec4(c)); }
 
 // Colours of the panels' text.
-inline constexpr Rgba kOkColor = {0.5f, 0.9f, 0.5f, 1};       // "ok", "No problems found."
-inline constexpr Rgba kMessageColor = {0.6f, 0.85f, 1, 1};     // toolbar messages, the Help window's keys
+inline constexpr Rgba kOkColor = {0.5f, 0.9f, 0.5f, 1};     // "ok", "No problems found."
+inline constexpr Rgba kMessageColor = {0.6f, 0.85f, 1, 1};  // toolbar messages, the Help window's keys
 inline constexpr Rgba kLineNumberColor = {0.5f, 0.5f, 0.55f, 1};
 
 }  // namespace essi::viewer
