@@ -300,12 +300,7 @@ SheetDrawing draw_sheet(std::string_view bytes, const TapeSetup& setup, const st
         std::max(extent * kSheetDrawingTolerance, std::max(setup.profile.chord_tolerance_mm, kMinChordTolerance));
     DiagnosticPlaces places(marked);
     SheetSink sink(drawing, tolerance, places);
-    std::vector<Diagnostic> ignored;  // (the check has them)
-    Interpreter interpreter(bytes, setup.profile, sink, ignored);
-    TapeReader reader(bytes, setup.profile, setup.format);
-    Tape chunk;
-    while (reader.read_chunk(chunk, kCheckChunkBlocks)) interpreter.run(chunk);
-    interpreter.finish();
+    replay_tape(bytes, setup.profile, setup.format, sink);
     const std::vector<std::optional<Point>> at = places.places();
     for (std::size_t k = 0; k < marked.size(); ++k)
         if (at[k]) drawing.marks.push_back({*at[k], marked[k].severity});

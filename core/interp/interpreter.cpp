@@ -763,7 +763,7 @@ bool Machine::zero_offset_motion(const Block& b, std::size_t index, std::span<co
             // record), without making the record; the one more sink's UnitLine.
             const MotionState state = begin_motion(b);
             const Point start_mm = to_mm(cur), end_mm = to_mm(end);
-            stats_->add_line(state.kind, /*head*/ 1, start_mm, end_mm, length_mm, state.feed_mm_min);
+            stats_->add_line(state.kind, /*head*/ 1, start_mm, end_mm, length_mm, state.feed_mm_min, b.line);
             if (also_) {
                 UnitLine l;
                 l.line = b.line;

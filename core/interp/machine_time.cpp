@@ -25,20 +25,21 @@ void MachineTimer::curve(const MotionRecord& m, std::uint8_t torches) {
     const double r = std::max(std::min(m.radius, m.end_radius), kMinCurvatureRadiusMm);  // (min_curvature_radius)
     add(m.kind, m.length_mm, std::min(m.feed_mm_min / 60, std::sqrt(accel_ * r)),
         arc_tangent(m.start, m.centre, m.ccw, m.radius), arc_tangent(m.end, m.centre, m.ccw, m.end_radius), torches,
-        m.head, m.block);
+        m.head, m.block, m.line);
 }
 
 void MachineTimer::parabola(const MotionRecord& m, std::uint8_t torches) {
     const double r = std::max(min_curvature_radius(m), kMinCurvatureRadiusMm);
     add(m.kind, m.length_mm, std::min(m.feed_mm_min / 60, std::sqrt(accel_ * r)), start_tangent(m), end_tangent(m),
-        torches, m.head, m.block);
+        torches, m.head, m.block, m.line);
 }
 
-void MachineTimer::line(MotionKind kind, Point start, Point end, double length_mm, double feed_mm_min) {
+void MachineTimer::line(MotionKind kind, Point start, Point end, double length_mm, double feed_mm_min,
+                        std::uint32_t line) {
     if (!(length_mm > kMachineTimeMinLength)) return;
     const double k = 1 / length_mm;
     const Point dir{(end.x - start.x) * k, (end.y - start.y) * k};
-    add(kind, length_mm, feed_mm_min / 60, dir, dir, 1, 1, -1);
+    add(kind, length_mm, feed_mm_min / 60, dir, dir, 1, 1, -1, line);
 }
 
 // A motion from speed v0 to v1 (mm/s): a trapezoid (accelerate, cruise at the top speed, decelerate) or, when the
@@ -47,14 +48,17 @@ void MachineTimer::line(MotionKind kind, Point start, Point end, double length_m
 [[gnu::always_inline]] inline void MachineTimer::commit(const Pending& p, double v0, double v1, double v0_squared,
                                                         double v1_squared) {
     const double peak_squared = accel_ * p.length_mm + 0.5 * (v0_squared + v1_squared);
-    double t;
+    double t, peak;
     if (peak_squared >= p.top * p.top) {
         const double up = p.top - v0, down = p.top - v1;
         t = (p.length_mm + (up * up + down * down) * half_inverse_accel_) / p.top;
+        peak = p.top;
     } else {
-        const double peak = std::max({std::sqrt(peak_squared), v0, v1});
+        peak = std::max({std::sqrt(peak_squared), v0, v1});
         t = (2 * peak - v0 - v1) / accel_;
     }
+    if (trace_) [[unlikely]]
+        trace_->push_back({p.line, static_cast<float>(t), static_cast<float>(peak * 60), p.kind});
     kind_s_[static_cast<int>(p.kind)] += t;
     if (p.torches > 1) [[unlikely]]
         extra_torches_s_ += t * (p.torches - 1);

@@ -6,10 +6,12 @@
 #include <dirent.h>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "essi/interp.hpp"
 #include "essi/machine_time.hpp"
 #include "essi/pipeline.hpp"
 #include "essi/profile.hpp"
@@ -99,6 +101,29 @@ TEST(MachineTimeData, HasTheCasesOfTheSemantics) {
     for (const std::string& n : names) EXPECT_FALSE(read_file(machine_time_dir() + "/" + n + ".expected").empty()) << n;
 }
 
+// The planner's motions one by one (planned_motions: colour by speed): line.esi's 100 mm cut reaches its feed in
+// 1.2 s, circle.esi's circle only sqrt(a r) = 50 mm/s in 0.728319 s (their .expected files work both out); together
+// they make the machine time. Without accel_mm_s2 there are none.
+TEST(PlannedMotions, TheirTimesAndTopSpeedsAreTheMachineTimes) {
+    const essi::ProfileResult profile = essi::parse_profile(R"({"accel_mm_s2": 500, "pierce_time_s": 0})");
+    ASSERT_TRUE(profile.profile);
+    for (const auto& [name, seconds, peak] :
+         {std::tuple{"line", 1.2, 6000.0}, std::tuple{"circle", 0.728319, 3000.0}}) {
+        SCOPED_TRACE(name);
+        const std::string tape = read_file(machine_time_dir() + "/" + name + ".esi");
+        const std::vector<essi::PlannedMotion> planned =
+            essi::planned_motions(tape, *profile.profile, essi::InputFormat::Essi);
+        ASSERT_EQ(planned.size(), 1u);
+        EXPECT_EQ(planned[0].line, 3u);
+        EXPECT_EQ(planned[0].kind, essi::MotionKind::Cut);
+        EXPECT_NEAR(planned[0].seconds, seconds, 1e-5);
+        EXPECT_NEAR(planned[0].peak_mm_min, peak, 1e-2);
+        EXPECT_NEAR(planned[0].seconds, essi::check_tape(tape, *profile.profile).stats.machine_time->cutting_s, 1e-5);
+    }
+    EXPECT_TRUE(essi::planned_motions("39+6000\n7\n+1000+0\n8\n64\n", essi_test::iso_profile(), essi::InputFormat::Essi)
+                    .empty());
+}
+
 // Without accel_mm_s2 (the built-in profiles) nothing of it is reported, and the estimate is what it was.
 TEST(MachineTime, AbsentWithoutTheProfileKeys) {
     const essi::CheckResult r = essi::check_tape("39+6000\n7\n+1000+0\n8\n64\n", essi_test::iso_profile());
@@ -116,9 +141,9 @@ TEST(MachineTime, AbsentWithoutTheProfileKeys) {
 TEST(MachineTimer, PiecesOfALineTakeTheLinesTime) {
     const double a = 500, feed = 6000;  // 100 mm/s: braking distance 10 mm
     essi::MachineTimer whole(a, 0.01), pieces(a, 0.01);
-    whole.line(essi::MotionKind::Cut, {0, 0}, {200, 0}, 200, feed);
+    whole.line(essi::MotionKind::Cut, {0, 0}, {200, 0}, 200, feed, 1);
     const int n = 2000;  // 0.1 mm each: 512 of them are 51.2 mm, beyond the 10 mm
-    for (int i = 0; i < n; ++i) pieces.line(essi::MotionKind::Cut, {i * 0.1, 0}, {(i + 1) * 0.1, 0}, 0.1, feed);
+    for (int i = 0; i < n; ++i) pieces.line(essi::MotionKind::Cut, {i * 0.1, 0}, {(i + 1) * 0.1, 0}, 0.1, feed, 1);
     whole.finish(0);
     pieces.finish(0);
     EXPECT_NEAR(whole.time().total_s, 2.2, 1e-12);  // 0.2 + 0.2 + 180/100
@@ -131,7 +156,8 @@ TEST(MachineTimer, TooShortForTheWindowIsPlannedAsAShorterLookAhead) {
     const double a = 500, feed = 6000;
     essi::MachineTimer pieces(a, 0.01);
     const int n = 5000;  // 0.001 mm each: half a window is 0.512 mm, far below the 10 mm to brake from 100 mm/s
-    for (int i = 0; i < n; ++i) pieces.line(essi::MotionKind::Cut, {i * 0.001, 0}, {(i + 1) * 0.001, 0}, 0.001, feed);
+    for (int i = 0; i < n; ++i)
+        pieces.line(essi::MotionKind::Cut, {i * 0.001, 0}, {(i + 1) * 0.001, 0}, 0.001, feed, 1);
     pieces.finish(0);
     const double ideal = 2 * std::sqrt(5.0 / a);  // 5 mm never reach the feed: a triangle of peak √(a·L)
     EXPECT_GE(pieces.time().total_s, ideal - 1e-12);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "essi/diagnostics.hpp"
+#include "essi/machine_time.hpp"
 #include "essi/motion.hpp"
 #include "essi/profile.hpp"
 #include "essi/read.hpp"
@@ -65,6 +66,18 @@ private:
 // interpretation and geometry are appended to `diagnostics` (with columns computed from `source`).
 void interpret(const Tape& tape, std::string_view source, const Profile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics);
+
+// Blocks read and run at a time by replay_tape.
+constexpr std::size_t kReplayChunkBlocks = 8192;
+
+// Reads and runs a tape again, a chunk at a time, for what one more sink makes of it (the check has its
+// diagnostics: they are left out here).
+void replay_tape(std::string_view bytes, const Profile& profile, InputFormat format, MotionSink& sink);
+
+// Every motion of the tape's torch path as the machine-time planner runs it (essi/machine_time.hpp), in order:
+// empty when the profile has no accel_mm_s2. Reads and runs the tape again.
+[[nodiscard]] std::vector<PlannedMotion> planned_motions(std::string_view bytes, const Profile& profile,
+                                                         InputFormat format);
 
 // The coordinate mapping of functions 21-28 (§7): machine = M * tape.
 struct AxisMapping {

@@ -47,9 +47,20 @@ struct MachineTime {
     double torch_cutting_s = 0;  // cutting_s once per torch that cuts (for the consumables)
 };
 
+// One motion as the planner runs it (MachineTimer::trace_into): its source line, how long it takes and the highest
+// speed it reaches. Motions shorter than kMachineTimeMinLength have none.
+struct PlannedMotion {
+    std::uint32_t line = 0;
+    float seconds = 0;
+    float peak_mm_min = 0;
+    MotionKind kind = MotionKind::Travel;
+};
+
 class MachineTimer {
 public:
     MachineTimer(double accel_mm_s2, double junction_deviation_mm);
+    // Every motion's plan appended to `out` as it is made (in order), or none (null).
+    void trace_into(std::vector<PlannedMotion>* out) { trace_ = out; }
 
     // A motion of the torch's path, in order. `block` tells the blocks apart for block stops. (Inline, as what it
     // calls for a line: the statistics give it every motion of the compensated path.)
@@ -59,10 +70,10 @@ public:
         if (m.curve != CurveKind::Line) return curve(m, torches);
         const double k = 1 / m.length_mm;
         const Point d{(m.end.x - m.start.x) * k, (m.end.y - m.start.y) * k};
-        add(m.kind, m.length_mm, m.feed_mm_min / 60, d, d, torches, m.head, m.block);
+        add(m.kind, m.length_mm, m.feed_mm_min / 60, d, d, torches, m.head, m.block, m.line);
     }
-    // A straight motion of its own block (what the statistics get without a record).
-    void line(MotionKind kind, Point start, Point end, double length_mm, double feed_mm_min);
+    // A straight motion of its own block, source line `line` (what the statistics get without a record).
+    void line(MotionKind kind, Point start, Point end, double length_mm, double feed_mm_min, std::uint32_t line);
     // What the events between two motions do: the machine stands still there (`stop`), and from there on it stops
     // at the end of every block or not (`block_stops`: ISO 6582 function 17, until 18). It takes effect before the
     // next motion, or, with `after_block` >= 0, before the first motion of a later block (the events came while
@@ -96,11 +107,12 @@ private:
         double entry_max_squared;  // the most its entry may be: the junction's speed, both top speeds; 0 after a stop
         MotionKind kind;
         std::uint8_t torches;
+        std::uint32_t line;  // its source line (the trace's)
     };
     // A motion with its top speed (above 0: every feed is) and its directions at both ends; `block` < 0: a block
     // of its own.
     [[gnu::always_inline]] void add(MotionKind kind, double length_mm, double top, Point start_dir, Point end_dir,
-                                    std::uint8_t torches, int head, std::int64_t block) {
+                                    std::uint8_t torches, int head, std::int64_t block, std::uint32_t line) {
         if (head != watch_head_) [[unlikely]] {  // another head; a pause waiting; under block stops, another block?
             if (pause_.pending && block > pause_.after_block) {
                 standing_ = standing_ || pause_.stop;
@@ -118,7 +130,7 @@ private:
             entry_max_squared =
                 std::min(std::min(last_top_squared_, top_squared), junction_speed_squared(last_dir_, start_dir));
         }
-        window_[pending_++] = {length_mm, top, entry_max_squared, kind, torches};
+        window_[pending_++] = {length_mm, top, entry_max_squared, kind, torches, line};
         last_dir_ = end_dir;
         last_top_squared_ = top_squared;
         standing_ = false;
@@ -166,6 +178,7 @@ private:
         std::int64_t after_block = -1;
     } pause_;  // a pause waiting for the first motion of a block after `after_block`
     std::int64_t last_block_ = -1;
+    std::vector<PlannedMotion>* trace_ = nullptr;
 };
 
 }  // namespace essi

@@ -110,15 +110,16 @@ public:
         add_box(bounding_box(m), cut);
     }
     // A straight line without compensation while none is open (kerf_open() false): what on_motion counts of
-    // one. The interpreter calls it directly for the lines of a tape that is only checked, without their records.
+    // one. The interpreter calls it directly for the lines of a tape that is only checked, without their records;
+    // `line`: its source line.
     [[gnu::always_inline]] void add_line(MotionKind kind, int head, Point start, Point end, double length_mm,
-                                         double feed_mm_min) {
+                                         double feed_mm_min, std::uint32_t line) {
         if (!plain_) [[unlikely]]
             add_machine_line(kind, start, end);
         add_programmed_line(kind, head, start, end, length_mm);
         TorchPath::add(stats_, kind, length_mm, feed_mm_min, 1);
         if (timed_) [[unlikely]]
-            time_line(kind, start, end, length_mm, feed_mm_min);
+            time_line(kind, start, end, length_mm, feed_mm_min, line);
     }
     void on_event(const MachineEvent& e) override {
         count_event(e.kind, e.value, e.tools_after, e.torches_after);
@@ -156,6 +157,11 @@ public:
         go_explicit();
         tool_offset_ = offset;
         if (stats_.motions > 0) add_machine_box(Box::of(machine_end(), machine_end()), false);
+    }
+    // The planner's motions appended to `out` as they are planned (MachineTimer::trace_into); none without the
+    // profile's accel_mm_s2.
+    void trace_machine_time(std::vector<PlannedMotion>* out) {
+        if (timer_) timer_->trace_into(out);
     }
     // The end of the program: the compensated path's last piece; the machine boxes when they are the program's
     // moved.
@@ -226,8 +232,9 @@ private:
     private:
         StatsSink& owner_;
     };
-    [[gnu::noinline]] void time_line(MotionKind kind, Point start, Point end, double length_mm, double feed_mm_min) {
-        if (timer_) timer_->line(kind, start, end, length_mm, feed_mm_min);
+    [[gnu::noinline]] void time_line(MotionKind kind, Point start, Point end, double length_mm, double feed_mm_min,
+                                     std::uint32_t line) {
+        if (timer_) timer_->line(kind, start, end, length_mm, feed_mm_min, line);
         else if (kind == MotionKind::Cut) torch_cutting_s_ += motion_time_s(length_mm, feed_mm_min);
     }
 
