@@ -730,6 +730,55 @@ test('colour by feed and by cut order: the cuts in the ramp\'s colours, a legend
   await page.close();
 });
 
+test('parts: the Job panel, the parts layer and colour by part group as essi parts has them; colour by speed', async () => {
+  const page = await newPage();
+  // kerf_parts.esi makes two parts of different shapes on one plate, with a remnant at its far end in x.
+  const file = 'kerf_parts.esi';
+  await loadExample(page, file);
+  await page.mouse.move(5, 890);  // (the cursor away from the path)
+  const cli = JSON.parse(execFileSync(essiBin, ['parts', '--format', 'json', file], { encoding: 'utf8', cwd: examplesDir }));
+  assert.equal(cli.groups.length, 2);
+  // The Job panel's parts table: a row a group, as the job sheet has it.
+  const job = (await page.evaluate(() => essikit.state())).job;
+  const parts = job.find((s) => s.id === 'parts');
+  assert.ok(parts && parts.table && parts.table.rows.length === cli.groups.length, JSON.stringify(job));
+  // The parts layer: off at first; on, the remnant is filled with its colour (purple: more blue than green).
+  const frames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r()))));
+  const r = cli.plates[0].remnant_mm;
+  const fillAt = async () => {
+    const at = await pixels(page, await page.screenshot());
+    const p = await page.evaluate(([x, y]) => essikit.project(x, y), [(r.x0 + r.x1) / 2, (r.y0 + r.y1) / 2]);
+    return at(p.x, p.y);
+  };
+  assert.equal((await page.evaluate(() => essikit.state())).layers.parts, false);
+  const before = await fillAt();
+  await page.evaluate(() => essikit.setLayer(9, true));
+  await frames();
+  assert.equal((await page.evaluate(() => essikit.state())).layers.parts, true);
+  const after = await fillAt();
+  assert.ok(after[2] > after[1] + 8 && !(before[2] > before[1] + 8), `the remnant filled: ${before} -> ${after}`);
+  // Colour by part group: a colour a group, the legend names them with their counts.
+  const colourBy = async (mode) => {
+    assert.equal(await page.evaluate((m) => essikit.setColourBy(m), mode), true);
+    await until(page, (m) => essikit.state().colour_by.drawn === m && essikit.state().status === 'ready', mode,
+                `colour by ${mode} drawn`);
+    return (await page.evaluate(() => essikit.state())).colour_by;
+  };
+  const group = await colourBy('group');
+  assert.deepEqual(group.legend.map((e) => e.text), cli.groups.map((g) => `group ${g.group} (${g.count}\u00d7)`));
+  assert.notDeepEqual(group.legend[0].colors[0], group.legend[1].colors[0]);
+  // Colour by speed with a profile that accelerates: the planner's top speeds, never above the fastest feed.
+  const feeds = (await colourBy('feed')).legend.map((e) => parseFloat(e.text));
+  await page.evaluate(() => essikit.load('accel.json', '{"accel_mm_s2": 0.5, "junction_deviation_mm": 0.01}'));
+  await until(page, () => essikit.state().status === 'ready', null, 'read again with accel.json');
+  const speed = await colourBy('speed');
+  const speeds = speed.legend.map((e) => parseFloat(e.text));
+  assert.ok(speeds.length >= 1 && speed.legend.every((e) => / mm\/min$/.test(e.text)), JSON.stringify(speed.legend));
+  assert.ok(Math.max(...speeds) <= Math.max(...feeds) + 0.5, `${speeds} above ${feeds}`);
+  assert.ok(Math.min(...speeds) < Math.min(...feeds), `a = 0.5 mm/s² keeps the short lines below the feed: ${speeds} / ${feeds}`);
+  await page.close();
+});
+
 test('touch: a tap selects, one finger pans, two fingers zoom about their middle', async () => {
   const ctx = await browser.newContext({ viewport: { width: 1600, height: 900 }, hasTouch: true });
   const page = await ctx.newPage();

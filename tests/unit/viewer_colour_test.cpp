@@ -7,6 +7,8 @@
 #include <string>
 
 #include "app/ColourBy.hpp"
+#include "essi/interp.hpp"
+#include "essi/parts.hpp"
 #include "paths.hpp"
 #include "render/PathBuffers.hpp"
 #include "test_util.hpp"
@@ -18,9 +20,21 @@ using essi::viewer::PathBuffers;
 
 namespace {
 
+// The tape's parts and planned motions as the viewer's TapeFacts makes them (the core's tape_parts and
+// planned_motions).
+struct Facts final : viewer::ColourSources {
+    Facts(const std::string& bytes, const Profile& profile)
+        : parts_(tape_parts(bytes, profile)), planned_(planned_motions(bytes, profile, InputFormat::Essi)) {}
+    const PartsList* parts() const override { return &parts_; }
+    const std::vector<PlannedMotion>* planned() const override { return &planned_; }
+    PartsList parts_;
+    std::vector<PlannedMotion> planned_;
+};
+
 // The segments' kinds, counted, when the document is drawn coloured `by`.
-std::map<int, int> kinds_drawn(const viewer::Document& doc, ColourBy by, PathBuffers& b) {
-    b.begin(doc, 0.01, by);
+std::map<int, int> kinds_drawn(const viewer::Document& doc, ColourBy by, PathBuffers& b,
+                               const viewer::ColourSources* sources = nullptr) {
+    b.begin(doc, 0.01, by, sources);
     while (!b.step(1000)) {
     }
     std::map<int, int> count;
@@ -93,8 +107,56 @@ TEST(ViewerColourBy, CutOrderRunsFromTheFirstPierceToTheLast) {
     EXPECT_EQ(legend[1].text, "Schnitt 5 (der letzte)");
 }
 
+// mirrored.esi (tests/data/parts): part 1 is group 1, parts 2 and 3 (its mirror image, once turned) group 2.
+// Group g takes bin ((g - 1) x 7) mod 16: every cut of the three is in bin 0 or bin 7, and more in 7.
+TEST(ViewerColourBy, PartGroupsTakeTheirGroupsColours) {
+    const std::string bytes = read_file(test_data_dir() + "/parts/mirrored.esi");
+    const auto doc = essi_test::load_document(bytes);
+    const Facts facts(bytes, doc->profile);
+    ASSERT_EQ(facts.parts_.groups.size(), 2u);
+    PathBuffers b;
+    const std::map<int, int> by_group = kinds_drawn(*doc, ColourBy::PartGroup, b, &facts);
+    EXPECT_EQ(by_group.count(kCut), 0u);
+    EXPECT_GT(by_group.at(kFirstBin), 0);
+    EXPECT_GT(by_group.at(kFirstBin + 7), by_group.at(kFirstBin));
+    EXPECT_EQ(by_group.size(), 3u) << "travel, bin 0, bin 7";
+    const auto legend = b.colour_legend(Lang::En);
+    ASSERT_EQ(legend.size(), 2u);
+    EXPECT_EQ(legend[0].text, "group 1 (1\u00d7)");
+    EXPECT_EQ(legend[0].first_bin, 0);
+    EXPECT_EQ(legend[1].text, "group 2 (2\u00d7)");
+    EXPECT_EQ(legend[1].first_bin, 7);
+    // Without a parts list (no sources), the cuts keep their kind.
+    EXPECT_EQ(kinds_drawn(*doc, ColourBy::PartGroup, b).count(kFirstBin), 0u);
+}
+
+// Speed: what the planner reaches. circle.esi (tests/data/machine_time) cuts a circle of radius 5 mm at 6000 mm/min;
+// with a = 500 mm/s² it runs at sqrt(a r) = 50 mm/s = 3000 mm/min at most. Without accel_mm_s2 speed is the feed.
+TEST(ViewerColourBy, SpeedIsThePlannersTopSpeed) {
+    const std::string bytes = read_file(test_data_dir() + "/machine_time/circle.esi");
+    const ProfileResult accel = parse_profile(R"({"accel_mm_s2": 500, "pierce_time_s": 0})");
+    ASSERT_TRUE(accel.profile);
+    const auto doc = essi_test::load_document(bytes, *accel.profile);
+    const Facts facts(bytes, *accel.profile);
+    PathBuffers b;
+    const std::map<int, int> by_speed = kinds_drawn(*doc, ColourBy::Speed, b, &facts);
+    EXPECT_EQ(by_speed.count(kCut), 0u);
+    auto legend = b.colour_legend(Lang::En);
+    ASSERT_EQ(legend.size(), 1u);
+    EXPECT_EQ(legend[0].text, "3000 mm/min");
+    const auto plain = essi_test::load_document(bytes);
+    const Facts none(bytes, plain->profile);
+    EXPECT_TRUE(none.planned_.empty());
+    (void)kinds_drawn(*plain, ColourBy::Speed, b, &none);
+    legend = b.colour_legend(Lang::En);
+    ASSERT_EQ(legend.size(), 1u);
+    EXPECT_EQ(legend[0].text, "6000 mm/min");
+}
+
 TEST(ViewerColourBy, NamesBothWays) {
     for (const ColourBy by : viewer::kColourByModes) EXPECT_EQ(viewer::colour_by_named(viewer::colour_by_name(by)), by);
     EXPECT_EQ(viewer::colour_by_named("order"), ColourBy::CutOrder);
     EXPECT_FALSE(viewer::colour_by_named("speed!"));
+    EXPECT_EQ(viewer::colour_by_named("group"), ColourBy::PartGroup);
+    EXPECT_EQ(viewer::colour_by_named("speed"), ColourBy::Speed);
 }

@@ -9,15 +9,16 @@
 namespace essi::viewer {
 
 App::App(PlatformServices& platform)
-    : platform_(platform), fonts_(platform), notices_(fonts_), load_(renderer_),
+    : platform_(platform), fonts_(platform), notices_(fonts_), load_(renderer_), tape_facts_(load_),
       preferences_(platform, renderer_, layers_, ui_), navigation_(load_, platform), comments_(fonts_, platform),
       compare_(navigation_, notices_, fonts_),
       session_({load_, navigation_, playback_, measure_, compare_, comments_, notices_, fonts_, ui_, platform}),
-      exports_(session_, navigation_, notices_, platform), shares_(session_, navigation_, notices_, ui_, platform),
+      exports_(session_, tape_facts_, navigation_, notices_, platform),
+      shares_(session_, navigation_, notices_, ui_, platform),
       input_({session_, navigation_, layers_, playback_, measure_, shares_, preferences_, ui_, platform}),
-      parts_{session_,  load_,        navigation_, layers_,      playback_,   measure_, compare_,
-             comments_, exports_,     shares_,     preferences_, notices_,    ui_,      fonts_,
-             renderer_, ui_renderer_, scene_,      platform,     graphics_ok_},
+      parts_{session_,  load_,     navigation_,  layers_, playback_,    measure_,    compare_,
+             comments_, exports_,  tape_facts_,  shares_, preferences_, notices_,    ui_,
+             fonts_,    renderer_, ui_renderer_, scene_,  platform,     graphics_ok_},
       panels_(parts_), automation_(parts_) {}
 
 bool App::init_graphics() {
@@ -46,7 +47,7 @@ void App::frame() {
     }
     input_.handle_shortcuts();
     input_.handle_canvas();
-    load_.set_colour_by(layers_.colour_by);
+    load_.set_colour_by(layers_.colour_by, &tape_facts_);
     load_.maybe_rebuild(view.chord_tolerance_mm());
     panels_.draw();
     prepare_scene();  // (drawn by render(), below the panels)

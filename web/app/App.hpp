@@ -5,6 +5,7 @@
 //   Input          the mouse and the shortcuts                 SceneAssembly what the renderer draws
 //   CompareMode    compare mode                                CommentText   the comments' text encoding
 //   Exports        copies, exports, the view as PNG            ShareLinks    share links
+//   TapeFacts      its parts and plates, its planned speeds (the Job panel, the parts layer, colour by)
 //   Preferences    the theme, the problems-only view, the layout, the language
 //   panels::Panels the toolbar, side panels, overlays and windows
 //   Automation     window.essikit: the page's API and the state it reads
@@ -31,6 +32,7 @@
 #include "app/SceneAssembly.hpp"
 #include "app/Selection.hpp"
 #include "app/Session.hpp"
+#include "app/TapeFacts.hpp"
 #include "app/ShareLinks.hpp"
 #include "app/UiState.hpp"
 #include "app/ViewerParts.hpp"
@@ -80,6 +82,7 @@ private:
     bool graphics_ok_ = false;
     bool fonts_changed_ = false;  // the atlas was made again after the last frame: the next one is drawn in full
     LoadController load_;
+    TapeFacts tape_facts_;
     SceneAssembly scene_;
     Layers layers_;
     Playback playback_;

@@ -13,6 +13,7 @@ constexpr int kLayerStart = 5;
 constexpr int kLayerKerf = 6;      // the compensated torch path
 constexpr int kLayerKerfBand = 7;  // the band of the cut's width
 constexpr int kLayerTable = 8;     // the table and the plate
+constexpr int kLayerParts = 9;     // the parts' group numbers, the plates and their remnants
 
 }  // namespace
 
@@ -24,6 +25,7 @@ void Automation::set_layer(int layer, bool visible) {
     if (layer == kLayerKerf) layers.kerf = visible;
     if (layer == kLayerKerfBand) layers.kerf_band = visible;
     if (layer == kLayerTable) layers.table = visible;
+    if (layer == kLayerParts) layers.parts = visible;
 }
 
 void Automation::set_playback(double factor, bool playing) {

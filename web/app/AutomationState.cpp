@@ -175,8 +175,8 @@ json selection_json(const Selection& s) {
 }
 
 json layers_json(const Layers& l) {
-    json j = {{"pierces", l.pierces}, {"start", l.start},         {"grid", l.grid},
-              {"kerf", l.kerf},       {"kerf_band", l.kerf_band}, {"table", l.table}};
+    json j = {{"pierces", l.pierces},     {"start", l.start}, {"grid", l.grid},  {"kerf", l.kerf},
+              {"kerf_band", l.kerf_band}, {"table", l.table}, {"parts", l.parts}};
     for (std::size_t k = 0; k < kMotionKinds; ++k) j[motion_kind_name(static_cast<MotionKind>(k))] = l.kinds[k];
     return j;
 }

@@ -101,7 +101,7 @@ std::string Exports::export_text(const std::string& format) const {
     if (format == "job-html") {
         JobSheetInput in = job_input(*d);
         in.sha256 = sha256_hex(d->bytes);
-        return job_sheet_html(job_sheet_of(d->bytes, d->setup, report().result, in));
+        return job_sheet_html(job_sheet_of(d->bytes, d->setup, job_result(), in));
     }
     if (format == "report-json" || format == "report-csv") {
         const FileReport r = report();
@@ -131,6 +131,12 @@ JobSheetInput Exports::job_input(const Document& d) const {
     return in;
 }
 
+CheckResult Exports::job_result() const {
+    CheckResult result = report().result;
+    if (const PartsList* parts = facts_.parts()) result.parts = *parts;
+    return result;
+}
+
 const std::vector<SheetSection>& Exports::job_sections() {
     const Document* d = session_.document();
     const JobSectionsOf now{d ? session_.documents_read() : 0, d ? d->diagnostics.size() : 0, ui_lang()};
@@ -139,8 +145,8 @@ const std::vector<SheetSection>& Exports::job_sections() {
     job_of_ = now;
     job_sections_.clear();
     if (!d) return job_sections_;
-    const FileReport r = report();
-    JobSheet sheet = make_job_sheet(r.result, d->profile, SheetDrawing{}, sheet_parts(r.result), job_input(*d));
+    const CheckResult result = job_result();
+    JobSheet sheet = make_job_sheet(result, d->profile, SheetDrawing{}, sheet_parts(result), job_input(*d));
     for (SheetSection& s : sheet.sections)
         if (s.id == "time" || s.id == "parts" || s.id == "plates") job_sections_.push_back(std::move(s));
     return job_sections_;

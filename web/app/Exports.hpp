@@ -11,6 +11,7 @@
 #include "app/Notices.hpp"
 #include "app/PlatformServices.hpp"
 #include "app/Session.hpp"
+#include "app/TapeFacts.hpp"
 #include "essi/job_sheet.hpp"
 #include "essi/report_json.hpp"
 
@@ -18,8 +19,9 @@ namespace essi::viewer {
 
 class Exports {
 public:
-    Exports(const Session& session, const Navigation& navigation, Notices& notices, PlatformServices& platform)
-        : session_(session), navigation_(navigation), notices_(notices), platform_(platform) {}
+    Exports(const Session& session, const TapeFacts& facts, const Navigation& navigation, Notices& notices,
+            PlatformServices& platform)
+        : session_(session), facts_(facts), navigation_(navigation), notices_(notices), platform_(platform) {}
 
     // The tape's report: as `essi check` makes it (its path the tape's name).
     [[nodiscard]] FileReport report() const;
@@ -52,8 +54,11 @@ public:
 private:
     [[nodiscard]] std::string inspector_text(const Document& d) const;
     [[nodiscard]] JobSheetInput job_input(const Document& d) const;
+    // The report's result with the tape's parts list, as `essi report` makes the sheet from.
+    [[nodiscard]] CheckResult job_result() const;
 
     const Session& session_;
+    const TapeFacts& facts_;
     const Navigation& navigation_;
     Notices& notices_;
     PlatformServices& platform_;

@@ -18,6 +18,9 @@ struct Layers {
     bool kerf = true;       // the compensated torch path (a tape with kerf compensation)
     bool kerf_band = true;  // the band of the cut's real width along it
     bool table = true;      // the machine's table (a profile with one) and the plate (the cut box)
+    // The parts (TapeFacts::parts): each part's group number, each plate and its remnant. Off at first: the core
+    // reads the tape again for them.
+    bool parts = false;
     // The problems only: what no diagnostic concerns drawn faint (the marks, the blocks, contours and related places
     // of the diagnostics in full); kept across sessions (Preferences::set_problems_only).
     bool problems_only = false;

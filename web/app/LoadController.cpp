@@ -129,7 +129,7 @@ void LoadController::begin_drawing(double tolerance, double zoom, double framebu
     renderer_.release(gpu_building_);
     buffers_ = PathBuffers{};
     building_ = std::make_unique<PathBuffers>();
-    building_->begin(d, tolerance, colour_by_);
+    building_->begin(d, tolerance, colour_by_, colour_sources_);
     if (graphics_ok_) renderer_.upload_markers(building_->markers);
     building_->markers = std::vector<MarkerInstance>();  // (the GPU has them)
     renderer_.clear_lod();
@@ -167,7 +167,7 @@ void LoadController::maybe_rebuild(double tolerance) {
     if (recolour || (doc_->curves > 0 && (have > tolerance * kRebuildCoarser || have < tolerance / kRebuildFiner))) {
         renderer_.release(gpu_building_);
         building_ = std::make_unique<PathBuffers>();
-        building_->begin(*doc_, tolerance, colour_by_);
+        building_->begin(*doc_, tolerance, colour_by_, colour_sources_);
         if (doc_->motions.size() <= kBuildMotionsPerFrame) build(glfwGetTime() + kStepBudgetMs / 1000.0);
     }
 }

@@ -67,8 +67,11 @@ public:
     // The segments again at `tolerance` when the drawn ones are too coarse (zoomed in 2x) or too fine (out 16x).
     void maybe_rebuild(double tolerance);
     // The cuts' colours (Layers::colour_by): a new choice makes the segments again (maybe_rebuild) and the next
-    // drawing with it.
-    void set_colour_by(ColourBy by) { colour_by_ = by; }
+    // drawing with it. `sources`: the tape's parts and planned speeds (TapeFacts), asked only by those modes.
+    void set_colour_by(ColourBy by, const ColourSources* sources) {
+        colour_by_ = by;
+        colour_sources_ = sources;
+    }
     // This frame's scene (before it is drawn): whether it draws the tape (the first such frame after a load gives
     // shown_seconds()); a frame while loading shows the progress bar.
     void note_frame(bool drawn);
@@ -142,6 +145,7 @@ private:
     std::unique_ptr<Document> doc_;
     std::uint64_t documents_ = 0;
     ColourBy colour_by_ = ColourBy::Kind;
+    const ColourSources* colour_sources_ = nullptr;
     PathBuffers buffers_;                    // the drawn set's motion -> segment map (its segments are on the GPU only)
     GpuPath gpu_;                            // the drawn segments
     std::unique_ptr<PathBuffers> building_;  // being built (first build or a rebuild at a new tolerance)

@@ -33,6 +33,7 @@ struct ViewerParts {
     CompareMode& compare;
     CommentText& comments;
     Exports& exports;
+    const TapeFacts& tape_facts;
     ShareLinks& shares;
     Preferences& preferences;
     const Notices& notices;

@@ -150,7 +150,8 @@ EMSCRIPTEN_KEEPALIVE void essi_select_line(int line) {
     if (g_api) g_api->select_line(static_cast<std::uint32_t>(line > 0 ? line : 0));
 }
 
-// layer: 0 rapid, 1 travel, 2 cut, 3 mark (essi::MotionKind), 4 pierces, 5 start, 6 kerf path, 7 kerf width, 8 table
+// layer: 0 rapid, 1 travel, 2 cut, 3 mark (essi::MotionKind), 4 pierces, 5 start, 6 kerf path, 7 kerf width, 8 table, 9
+// parts
 EMSCRIPTEN_KEEPALIVE void essi_set_layer(int layer, int visible) {
     if (g_api) g_api->set_layer(layer, visible != 0);
 }

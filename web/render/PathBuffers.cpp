@@ -24,11 +24,11 @@ PathBuffers::~PathBuffers() = default;
 PathBuffers::PathBuffers(PathBuffers&&) noexcept = default;
 PathBuffers& PathBuffers::operator=(PathBuffers&&) noexcept = default;
 
-void PathBuffers::begin(const Document& doc, double tol, ColourBy colour_by) {
+void PathBuffers::begin(const Document& doc, double tol, ColourBy colour_by, const ColourSources* sources) {
     doc_ = &doc;
     tolerance_ = std::max(tol, kMinChordTolerance);
     colour_by_ = colour_by;
-    bins_ = colour_by == ColourBy::Kind ? nullptr : std::make_unique<ColourBins>(doc, colour_by);
+    bins_ = colour_by == ColourBy::Kind ? nullptr : std::make_unique<ColourBins>(doc, colour_by, sources);
     kerf_segments = 0;
     kerf_widths.fill(0);
     kerf_width_count = 0;

@@ -32,7 +32,9 @@ public:
     PathBuffers(PathBuffers&&) noexcept;
     PathBuffers& operator=(PathBuffers&&) noexcept;
     // `colour_by`: the cuts' and marks' segments of a colour bin get its kind (kColourByCutKind, render/Palette.hpp).
-    void begin(const Document& doc, double chord_tolerance_mm, ColourBy colour_by = ColourBy::Kind);
+    // `sources`: what colour by part group and by speed take their values from (ColourSources).
+    void begin(const Document& doc, double chord_tolerance_mm, ColourBy colour_by = ColourBy::Kind,
+               const ColourSources* sources = nullptr);
     // Flattens up to `max_motions` more motions into the staging area; returns true when complete.
     bool step(std::size_t max_motions);
     [[nodiscard]] bool complete() const { return doc_ != nullptr && next_ >= doc_->motions.size(); }

@@ -1,6 +1,6 @@
-// Drawn over the drawing area every frame: the grid's labels and scale bar, the diagnostics' marks' hover and
-// overlapping areas (ProblemMarks.cpp), the direction of the selected motions, and the measure (its points, its line
-// and its window).
+// Drawn over the drawing area every frame: the grid's labels and scale bar, the table and plate, the parts layer
+// (group numbers, plates, remnants), the diagnostics' marks' hover and overlapping areas (ProblemMarks.cpp), the
+// direction of the selected motions, and the measure (its points, its line and its window).
 #include <algorithm>
 #include <cmath>
 
@@ -17,6 +17,15 @@ namespace {
 constexpr ImU32 kTableColor = IM_COL32(120, 200, 255, 200);  // the machine's table (its travel limits)
 constexpr ImU32 kPlateColor = IM_COL32(200, 200, 200, 110);  // the plate: the box of what is cut
 constexpr ImU32 kMeasureColor = IM_COL32(255, 255, 0, 255);
+// The parts layer: the plates and their remnants in essi render --remnant's colour (kSvgRemnantColor, #9467bd),
+// the remnant filled faintly; the group numbers.
+constexpr ImU32 kRemnantColor = IM_COL32(0x94, 0x67, 0xbd, 230);
+constexpr ImU32 kRemnantFill = IM_COL32(0x94, 0x67, 0xbd, 48);
+constexpr ImU32 kPartLabelColor = IM_COL32(255, 255, 255, 220);
+// A part's group number is written when its box is at least this wide on the screen (pixels), for at most this many
+// parts a frame (the first in the cutting order that are in view).
+constexpr float kPartLabelMinPx = 18;
+constexpr std::size_t kMaxPartLabels = 2000;
 constexpr std::size_t kMaxArrows = 64;  // direction arrows drawn on a selected line at most
 constexpr float kArrowPx = 9;
 constexpr double kArrowAt = 0.5, kArrowAhead = 0.01;  // the arrow's place along the motion, its direction's look-ahead
@@ -153,6 +162,44 @@ void table_and_plate(ImDrawList* dl, const Document& doc, const View& view, Poin
     dl->AddPolyline(plate, 4, kPlateColor, ImDrawFlags_Closed, 1.f);
 }
 
+// The parts layer: each plate's area and its remnant (with its size), each part's group number at its label point.
+void parts_layer(ImDrawList* dl, const PartsList& parts, const View& view, Point o) {
+    const auto screen = [&](Point p) { return to_im(view.to_screen({p.x - o.x, p.y - o.y})); };
+    const auto corners = [&](const Box& b, ImVec2* out) {
+        out[0] = screen({b.min_x, b.min_y});
+        out[1] = screen({b.max_x, b.min_y});
+        out[2] = screen({b.max_x, b.max_y});
+        out[3] = screen({b.min_x, b.max_y});
+    };
+    ImVec2 pts[4];
+    for (const PlateUse& plate : parts.plates) {
+        corners(plate.area, pts);
+        dl->AddPolyline(pts, 4, kRemnantColor, ImDrawFlags_Closed, 1.f);
+        if (!plate.remnant) continue;
+        const Box& r = *plate.remnant;
+        corners(r, pts);
+        dl->AddQuadFilled(pts[0], pts[1], pts[2], pts[3], kRemnantFill);
+        dl->AddPolyline(pts, 4, kRemnantColor, ImDrawFlags_Closed, 2.f);
+        const ImVec2 top_left(std::min({pts[0].x, pts[1].x, pts[2].x, pts[3].x}),
+                              std::min({pts[0].y, pts[1].y, pts[2].y, pts[3].y}));
+        dl->AddText(ImVec2(top_left.x + 4, top_left.y + 2), kRemnantColor,
+                    tr(Msg::UiRemnantSize, {fmt("%.0f", r.max_x - r.min_x), fmt("%.0f", r.max_y - r.min_y)}).c_str());
+    }
+    const Rect& a = view.area;
+    std::size_t labels = 0;
+    for (const Part& part : parts.parts) {
+        if (labels == kMaxPartLabels) break;
+        const ImVec2 lo = screen({part.box.min_x, part.box.min_y}), hi = screen({part.box.max_x, part.box.max_y});
+        if (std::max(std::fabs(hi.x - lo.x), std::fabs(hi.y - lo.y)) < kPartLabelMinPx) continue;
+        const ImVec2 at = screen(part.label_at);
+        if (at.x < a.x || at.y < a.y || at.x > a.x + a.w || at.y > a.y + a.h) continue;
+        const std::string number = std::to_string(part.group);
+        const ImVec2 size = ImGui::CalcTextSize(number.c_str());
+        dl->AddText(ImVec2(at.x - size.x / 2, at.y - size.y / 2), kPartLabelColor, number.c_str());
+        ++labels;
+    }
+}
+
 }  // namespace
 
 void Panels::overlays() {
@@ -165,6 +212,8 @@ void Panels::overlays() {
     const Coordinates cs = p_.navigation.coordinates();
     if (p_.layers.grid) grid_labels(dl, view, cs, o, p_.renderer.theme());
     if (doc && p_.layers.table) table_and_plate(dl, *doc, view, o);
+    if (doc && p_.layers.parts)
+        if (const PartsList* parts = p_.tape_facts.parts()) parts_layer(dl, *parts, view, o);
     compare_overlay(dl);
     problem_marks(dl);
     const Selection& sel = p_.navigation.selection();

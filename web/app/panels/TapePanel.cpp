@@ -201,6 +201,8 @@ void layers(Layers& layers, Preferences& preferences, const Document* doc, const
     layer_switch(tr_id(Msg::UiLayerGrid, "grid"), layers.grid, nullptr);
     layer_switch(tr_id(Msg::UiLayerTable, "table"), layers.table, nullptr);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiLayerTableTip));
+    layer_switch(tr_id(Msg::UiLayerParts, "parts"), layers.parts, nullptr);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiLayerPartsTip));
     // The kerf layers, where the tape uses compensation (docs/semantics.md §8).
     if (doc && std::any_of(doc->kerfs.begin(), doc->kerfs.end(), [](const auto& k) { return k.second > 0; })) {
         const ImVec4 path = opaque(kPathColorTable[kKerfPathKind]), band = opaque(kPathColorTable[kKerfBandKind]);

@@ -1,0 +1,37 @@
+// What the viewer works out from the open tape beyond its check, when first asked: its parts and plates
+// (essi/parts.hpp, what `essi parts` lists: the Job panel, the job sheet, the parts layer, colour by part group) and
+// the machine-time planner's motions (essi/machine_time.hpp: colour by speed). Each is made by the core reading the
+// tape's bytes again, and kept until another tape is read.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "app/ColourBy.hpp"
+#include "app/LoadController.hpp"
+#include "essi/machine_time.hpp"
+#include "essi/parts.hpp"
+
+namespace essi::viewer {
+
+class TapeFacts final : public ColourSources {
+public:
+    explicit TapeFacts(const LoadController& load) : load_(load) {}
+
+    // The open tape's parts list; null while no tape is open.
+    [[nodiscard]] const PartsList* parts() const override;
+    // The open tape's planned motions (empty without the profile's accel_mm_s2); null while no tape is open.
+    [[nodiscard]] const std::vector<PlannedMotion>* planned() const override;
+
+private:
+    template <class T>
+    struct Kept {
+        std::uint64_t made_for = 0;  // LoadController::documents_read() when it was made (0: never)
+        T value;
+    };
+    const LoadController& load_;
+    mutable Kept<PartsList> parts_;
+    mutable Kept<std::vector<PlannedMotion>> planned_;
+};
+
+}  // namespace essi::viewer
