@@ -77,8 +77,9 @@ std::int64_t sheet_time() {
 int run_report(const ReportOptions& o) {
     const std::optional<SheetFormat> format = sheet_format(o);
     if (!format) return kExitUsage;
-    if (*format == SheetFormat::Pdf && !native::pdf_available()) {
-        say(Msg::ReportNoPdf, {});
+    if (std::string why; *format == SheetFormat::Pdf && !native::pdf_available(&why)) {
+        if (native::pdf_writer_built()) say(Msg::ReportPdfFailed, {display_text(output_path(o, *format)), why});
+        else say(Msg::ReportNoPdf, {});
         return kExitUsage;
     }
     const auto tape = load_tape(o.path, o.profile, o.input, o.max_size);

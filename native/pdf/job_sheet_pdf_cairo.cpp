@@ -1,4 +1,5 @@
-// The job sheet as PDF through cairo's PDF surface, its text laid out by pango (native/job_sheet_pdf.hpp). Every
+// The job sheet as PDF through cairo's PDF surface, its text laid out by pango: the module essi-pdf.so that essi
+// loads when it writes a PDF (native/job_sheet_pdf.hpp, pdf/job_sheet_pdf_module.cpp). Every
 // length here is in mm on paper (the context is scaled from cairo's points once). Fonts: DejaVu Sans, and for what
 // it lacks (Chinese) WenQuanYi Micro Hei, the viewer's CJK font, both made known to fontconfig from the files the
 // build names (ESSI_LATIN_FONT, ESSI_CJK_FONT); cairo embeds the glyphs used as subsets with their Unicode, so
@@ -20,8 +21,6 @@
 #include <pango/pangocairo.h>
 
 namespace essi::native {
-
-bool pdf_available() { return true; }
 
 namespace {
 
@@ -538,12 +537,17 @@ int lay_out(const JobSheet& sheet, cairo_write_func_t write, void* closure, bool
 
 }  // namespace
 
-bool job_sheet_pdf(const JobSheet& sheet, std::string& pdf, std::string& error) {
+}  // namespace essi::native
+
+// The module's two entry points (native/job_sheet_pdf.hpp: kPdfModuleBuild, PdfWriterFunction).
+extern "C" [[gnu::visibility("default")]] const char* essi_pdf_module_build() { return essi::native::kPdfModuleBuild; }
+
+extern "C" [[gnu::visibility("default")]] bool essi_job_sheet_pdf(const essi::JobSheet& sheet, std::string& pdf,
+                                                                  std::string& error) {
+    using namespace essi::native;
     add_fonts();
     const int pages = lay_out(sheet, discard_bytes, nullptr, false, 0, error);
     if (pages == 0) return false;
     pdf.clear();
     return lay_out(sheet, append_bytes, &pdf, true, pages, error) == pages;
 }
-
-}  // namespace essi::native

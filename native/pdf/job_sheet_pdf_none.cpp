@@ -3,7 +3,12 @@
 
 namespace essi::native {
 
-bool pdf_available() { return false; }
+bool pdf_writer_built() { return false; }
+
+bool pdf_available(std::string* why) {
+    if (why) *why = "this build has no PDF writer";
+    return false;
+}
 
 bool job_sheet_pdf(const JobSheet&, std::string&, std::string& error) {
     error = "this build has no PDF writer";

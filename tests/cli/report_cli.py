@@ -228,6 +228,21 @@ def main():
     check(f"{listed - 5} more diagnostics not shown (--max-diagnostics 5)" in pdf_text(os.path.join(tmp, "few.pdf")),
           f"--max-diagnostics 5: the other {listed - 5} counted")
 
+    # The PDF writer is the module essi-pdf.so beside essi, loaded only for a PDF: essi itself links no cairo or pango,
+    # and a module that cannot be found (ESSI_PDF_MODULE) is an error that names where it was looked for.
+    ldd = subprocess.run(["ldd", ESSI], capture_output=True).stdout.decode()
+    check("libcairo" not in ldd and "libpango" not in ldd, "essi links neither cairo nor pango")
+    check(os.path.exists(os.path.join(os.path.dirname(ESSI), "essi-pdf.so")), "essi-pdf.so beside essi")
+    missing = os.path.join(tmp, "no-such-module.so")
+    r = subprocess.run([ESSI, "report", os.path.join(EXAMPLES, "marking.esi"), "-o", os.path.join(tmp, "m.pdf")],
+                       capture_output=True, env=dict(os.environ, LANG="C.UTF-8", ESSI_PDF_MODULE=missing))
+    err = r.stderr.decode()
+    check(r.returncode == 2 and "cannot make the PDF" in err and f"{missing}: not found" in err,
+          f"ESSI_PDF_MODULE not found: exit 2, said where ({r.returncode}: {err.strip()})")
+    r = subprocess.run([ESSI, "report", os.path.join(EXAMPLES, "marking.esi"), "-o", os.path.join(tmp, "m.html")],
+                       capture_output=True, env=dict(os.environ, LANG="C.UTF-8", ESSI_PDF_MODULE=missing))
+    check(r.returncode == 0, "HTML needs no module")
+
     check_wasm_build(tape, tmp)
     shutil.rmtree(tmp)
     print(f"{failures} failed" if failures else "all passed")

@@ -43,6 +43,17 @@ if zcat /usr/share/man/man1/essi.1.gz | grep -q '^\.TH ESSI 1' && man -w essi 2>
 else
   fail "man page: $(man -w essi 2>&1)"
 fi
+# essi report's PDF: the writer module is installed where essi looks for it, and loaded only for a PDF.
+if [ -f /usr/lib/essikit/essi-pdf.so ]; then pass "installed /usr/lib/essikit/essi-pdf.so"; else fail "missing /usr/lib/essikit/essi-pdf.so"; fi
+pdf="$(mktemp --suffix=.pdf)"
+if /usr/bin/essi report -o "$pdf" /usr/share/essikit/examples/crlf.esi >/dev/null 2>&1 && head -c 5 "$pdf" | grep -q '%PDF-'; then
+  pass "essi report -o job.pdf: a PDF"
+else
+  fail "essi report -o job.pdf: $(/usr/bin/essi report -o "$pdf" /usr/share/essikit/examples/crlf.esi 2>&1)"
+fi
+rm -f "$pdf"
+if ldd /usr/bin/essi | grep -Eq 'libcairo|libpango'; then fail "essi links cairo or pango: $(ldd /usr/bin/essi | grep -E 'cairo|pango')"
+else pass "essi itself links neither cairo nor pango"; fi
 out="$(/usr/bin/essi check /usr/share/essikit/examples/bad_arc_off_circle.esi 2>&1)"; rc=$?
 if [ $rc -eq 1 ] && grep -q "error" <<<"$out"; then pass "essi check: an example's error, exit 1"; else fail "essi check: rc $rc $out"; fi
 
