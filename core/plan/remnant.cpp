@@ -1,6 +1,8 @@
 // The remnant of a plate (remnant.hpp): the plate cut into horizontal slabs at its outlines' points; in each slab
 // the outlines reach to some x (their edges clipped to the slab, grown by the margin); the largest rectangle that
-// ends at the plate's far end is the largest rectangle of that histogram (widths: from that x to the far end).
+// ends at the plate's far end is the largest rectangle of that histogram (widths: from that x to the far end). The
+// outlines run counter-clockwise round their parts: an edge going down has the part to its right, so at each height
+// the outline reaches further right than it; only the edges going up or level are followed slab by slab.
 #include "remnant.hpp"
 
 #include <algorithm>
@@ -38,6 +40,27 @@ std::optional<double> reach(Point a, Point b, double y0, double y1, double margi
     const double c0 = std::max(y0 - margin, std::min(a.y, b.y)), c1 = std::min(y1 + margin, std::max(a.y, b.y));
     const auto x_at = [&](double y) { return a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y); };
     return std::max(x_at(c0), x_at(c1)) + margin;
+}
+
+// reach() of the edge a-b in each slab of [s0, s1), raising `reached` to it: the same clip of the edge to each slab
+// widened by the margin, the edge's slope worked out once.
+void raise_slabs(Point a, Point b, double margin, const std::vector<double>& ys, std::size_t s0, std::size_t s1,
+                 std::vector<double>& reached) {
+    const double lo = std::min(a.y, b.y), hi = std::max(a.y, b.y);
+    if (a.y == b.y) {
+        const double x = std::max(a.x, b.x) + margin;
+        for (std::size_t s = s0; s < s1; ++s)
+            if (hi + margin > ys[s] && lo - margin < ys[s + 1]) reached[s] = std::max(reached[s], x);
+        return;
+    }
+    const double slope = (b.x - a.x) / (b.y - a.y);
+    for (std::size_t s = s0; s < s1; ++s) {
+        const double y0 = ys[s], y1 = ys[s + 1];
+        if (hi + margin <= y0 || lo - margin >= y1) continue;
+        const double c0 = std::max(y0 - margin, lo), c1 = std::min(y1 + margin, hi);
+        const double x = std::max(a.x + slope * (c0 - a.y), a.x + slope * (c1 - a.y)) + margin;
+        reached[s] = std::max(reached[s], x);
+    }
 }
 
 // Past kPartsMaxRemnantSteps, an edge is cut into at most this many pieces over the slabs it spans.
@@ -84,21 +107,27 @@ std::optional<Box> remnant(const Box& plate, const std::vector<std::vector<Point
             steps += slab_of(std::max(a.y, b.y) + margin) - std::min(slab_of(std::min(a.y, b.y) - margin), slabs) + 1;
         }
     const bool exact = steps <= kPartsMaxRemnantSteps;
-    Reach reach_of(slabs, plate.min_x);
+    std::vector<double> reached(slabs, plate.min_x);
+    Reach reach_of(exact ? 0 : slabs, plate.min_x);  // (exact: each slab raised on its own, no tree)
     for (const std::vector<Point>& o : outlines)
         for (std::size_t k = 0; k < o.size(); ++k) {
             const Point a = o[k], b = o[(k + 1) % o.size()];
             const std::size_t s0 = std::max<std::size_t>(slab_of(std::min(a.y, b.y) - margin), 1) - 1;
             const std::size_t s1 = std::min(slabs, slab_of(std::max(a.y, b.y) + margin));
             if (s1 <= s0) continue;
-            const std::size_t pieces = exact ? s1 - s0 : std::min<std::size_t>(s1 - s0, kRemnantPieces);
+            if (exact) {
+                if (b.y < a.y) continue;  // (going down: the part's material lies to its right, so does its outline)
+                raise_slabs(a, b, margin, ys, s0, s1, reached);
+                continue;
+            }
+            const std::size_t pieces = std::min<std::size_t>(s1 - s0, kRemnantPieces);
             for (std::size_t p = 0; p < pieces; ++p) {
                 const std::size_t first = s0 + (s1 - s0) * p / pieces, end = s0 + (s1 - s0) * (p + 1) / pieces;
                 if (const auto x = reach(a, b, ys[first], ys[end], margin)) reach_of.raise(first, end, *x);
             }
         }
-    std::vector<double> reached(slabs);
-    for (std::size_t s = 0; s < slabs; ++s) reached[s] = reach_of.at(s);
+    if (!exact)
+        for (std::size_t s = 0; s < slabs; ++s) reached[s] = reach_of.at(s);
     // The largest rectangle of the histogram (a stack of slabs whose free width only grows)
     double best = 0;
     Box out;
