@@ -464,31 +464,33 @@ std::vector<Point> convex_hull(const std::vector<Point>& p) {
 }
 
 // The direction (radians) of the smallest-area rectangle around a convex polygon: one of its sides lies along an
-// edge of the polygon (Freeman and Shapira); the edges are walked with rotating calipers.
+// edge of the polygon (Freeman and Shapira); the edges are walked with rotating calipers (each edge's direction
+// d unscaled: the rectangle's sides along d and across it are the spans of p·d and p·d⊥ over |d|, its area
+// their product over |d|²).
 double smallest_rectangle_angle(const std::vector<Point>& h) {
     const std::size_t n = h.size();
     if (n < 3) return n == 2 ? std::atan2(h[1].y - h[0].y, h[1].x - h[0].x) : 0;
     const auto dot = [](Point a, Point e) { return a.x * e.x + a.y * e.y; };
+    const auto after = [n](std::size_t k) { return k + 1 == n ? 0 : k + 1; };
     std::size_t right = 0, top = 0, left = 0;
-    double best = std::numeric_limits<double>::infinity(), angle = 0;
+    double best = std::numeric_limits<double>::infinity();
+    Point best_d{1, 0};
     for (std::size_t i = 0; i < n; ++i) {
-        const Point d = sub(h[(i + 1) % n], h[i]);
-        const double len = std::hypot(d.x, d.y);
-        if (len <= 0) continue;
-        const Point e{d.x / len, d.y / len}, up{-e.y, e.x};
-        if (i == 0) right = top = left = 0;
-        for (std::size_t s = 0; s < n && dot(h[(right + 1) % n], e) >= dot(h[right], e); ++s) right = (right + 1) % n;
+        const Point d = sub(h[after(i)], h[i]), up{-d.y, d.x};
+        const double len2 = d.x * d.x + d.y * d.y;
+        if (!(len2 > 0)) continue;
+        for (std::size_t s = 0; s < n && dot(h[after(right)], d) >= dot(h[right], d); ++s) right = after(right);
         if (i == 0) top = right;
-        for (std::size_t s = 0; s < n && dot(h[(top + 1) % n], up) >= dot(h[top], up); ++s) top = (top + 1) % n;
+        for (std::size_t s = 0; s < n && dot(h[after(top)], up) >= dot(h[top], up); ++s) top = after(top);
         if (i == 0) left = top;
-        for (std::size_t s = 0; s < n && dot(h[(left + 1) % n], e) <= dot(h[left], e); ++s) left = (left + 1) % n;
-        const double area = (dot(h[right], e) - dot(h[left], e)) * (dot(h[top], up) - dot(h[i], up));
+        for (std::size_t s = 0; s < n && dot(h[after(left)], d) <= dot(h[left], d); ++s) left = after(left);
+        const double area = (dot(h[right], d) - dot(h[left], d)) * (dot(h[top], up) - dot(h[i], up)) / len2;
         if (area < best) {
             best = area;
-            angle = std::atan2(e.y, e.x);
+            best_d = d;
         }
     }
-    return angle;
+    return std::atan2(best_d.y, best_d.x);
 }
 
 }  // namespace

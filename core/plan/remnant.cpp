@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "essi/parts.hpp"
@@ -42,25 +43,64 @@ std::optional<double> reach(Point a, Point b, double y0, double y1, double margi
     return std::max(x_at(c0), x_at(c1)) + margin;
 }
 
-// reach() of the edge a-b in each slab of [s0, s1), raising `reached` to it: the same clip of the edge to each slab
-// widened by the margin, the edge's slope worked out once.
-void raise_slabs(Point a, Point b, double margin, const std::vector<double>& ys, std::size_t s0, std::size_t s1,
-                 std::vector<double>& reached) {
-    const double lo = std::min(a.y, b.y), hi = std::max(a.y, b.y);
-    if (a.y == b.y) {
-        const double x = std::max(a.x, b.x) + margin;
-        for (std::size_t s = s0; s < s1; ++s)
-            if (hi + margin > ys[s] && lo - margin < ys[s + 1]) reached[s] = std::max(reached[s], x);
-        return;
+// reach() of the edge a-b, its slope worked out once: the x it reaches (grown by the margin) in the slab
+// [y0, y1] widened by the margin, -infinity when it misses it.
+class EdgeReach {
+public:
+    EdgeReach(Point a, Point b, double margin)
+        : a_(a), lo_(std::min(a.y, b.y)), hi_(std::max(a.y, b.y)), margin_(margin),
+          level_x_(std::max(a.x, b.x) + margin), slope_(a.y == b.y ? 0 : (b.x - a.x) / (b.y - a.y)), level_(a.y == b.y) {}
+    [[nodiscard]] double in(double y0, double y1) const {
+        if (hi_ + margin_ <= y0 || lo_ - margin_ >= y1) return -std::numeric_limits<double>::infinity();
+        if (level_) return level_x_;
+        const double c0 = std::max(y0 - margin_, lo_), c1 = std::min(y1 + margin_, hi_);
+        return std::max(a_.x + slope_ * (c0 - a_.y), a_.x + slope_ * (c1 - a_.y)) + margin_;
     }
-    const double slope = (b.x - a.x) / (b.y - a.y);
-    for (std::size_t s = s0; s < s1; ++s) {
-        const double y0 = ys[s], y1 = ys[s + 1];
-        if (hi + margin <= y0 || lo - margin >= y1) continue;
-        const double c0 = std::max(y0 - margin, lo), c1 = std::min(y1 + margin, hi);
-        const double x = std::max(a.x + slope * (c0 - a.y), a.x + slope * (c1 - a.y)) + margin;
-        reached[s] = std::max(reached[s], x);
+
+private:
+    Point a_;
+    double lo_, hi_, margin_, level_x_, slope_;
+    bool level_;
+};
+
+// An outline's edge a-b and the slabs [s0, s1) it spans (grown by the margin).
+struct EdgeSlabs {
+    Point a, b;
+    std::uint32_t s0 = 0, s1 = 0;
+};
+
+// Each slab raised to the largest x the edges reach in it (EdgeReach), the outlines taken from the one that
+// reaches furthest: a slab already raised as far as an outline's furthest x cannot be raised by it or any later
+// one, so it is passed over from then on (`next`: the next slab that is not, path-halving).
+void raise_exactly(const std::vector<std::vector<Point>>& outlines, const std::vector<EdgeSlabs>& edges,
+                   const std::vector<double>& ys, double margin, std::vector<double>& reached) {
+    struct Outline {
+        std::size_t first_edge, end_edge;
+        double furthest;  // its edges' largest x, grown by the margin
+    };
+    std::vector<Outline> order;
+    for (std::size_t k = 0, first = 0; k < outlines.size(); first += outlines[k++].size()) {
+        Outline o{first, first + outlines[k].size(), -std::numeric_limits<double>::infinity()};
+        for (const Point& p : outlines[k]) o.furthest = std::max(o.furthest, p.x + margin);
+        order.push_back(o);
     }
+    std::stable_sort(order.begin(), order.end(), [](const Outline& a, const Outline& b) { return a.furthest > b.furthest; });
+    std::vector<std::uint32_t> next(reached.size() + 1);
+    for (std::size_t s = 0; s < next.size(); ++s) next[s] = static_cast<std::uint32_t>(s);
+    const auto open_from = [&](std::uint32_t s) {
+        while (next[s] != s) s = next[s] = next[next[s]];
+        return s;
+    };
+    for (const Outline& o : order)
+        for (std::size_t k = o.first_edge; k < o.end_edge; ++k) {
+            const EdgeSlabs& e = edges[k];
+            if (e.b.y < e.a.y) continue;  // (going down: the part's material lies to its right, so does its outline)
+            const EdgeReach edge(e.a, e.b, margin);
+            for (std::uint32_t s = open_from(e.s0); s < e.s1; s = open_from(s + 1)) {
+                reached[s] = std::max(reached[s], edge.in(ys[s], ys[s + 1]));
+                if (reached[s] >= o.furthest) next[s] = s + 1;
+            }
+        }
 }
 
 // Past kPartsMaxRemnantSteps, an edge is cut into at most this many pieces over the slabs it spans.
@@ -100,34 +140,32 @@ std::optional<Box> remnant(const Box& plate, const std::vector<std::vector<Point
     // Each edge over the slabs it spans, slab by slab while that takes at most kPartsMaxRemnantSteps steps in all;
     // past that an edge over more than kRemnantPieces slabs is cut into that many pieces, each raising its slabs to
     // its largest x (a little more than the edge reaches in some of them: the remnant only gets smaller).
+    std::vector<EdgeSlabs> edges;
     std::size_t steps = 0;
     for (const std::vector<Point>& o : outlines)
         for (std::size_t k = 0; k < o.size(); ++k) {
             const Point a = o[k], b = o[(k + 1) % o.size()];
-            steps += slab_of(std::max(a.y, b.y) + margin) - std::min(slab_of(std::min(a.y, b.y) - margin), slabs) + 1;
+            const std::size_t lo = slab_of(std::min(a.y, b.y) - margin), hi = slab_of(std::max(a.y, b.y) + margin);
+            steps += hi - std::min(lo, slabs) + 1;
+            edges.push_back({a, b, static_cast<std::uint32_t>(std::max<std::size_t>(lo, 1) - 1),
+                             static_cast<std::uint32_t>(std::min(slabs, hi))});
         }
-    const bool exact = steps <= kPartsMaxRemnantSteps;
     std::vector<double> reached(slabs, plate.min_x);
-    Reach reach_of(exact ? 0 : slabs, plate.min_x);  // (exact: each slab raised on its own, no tree)
-    for (const std::vector<Point>& o : outlines)
-        for (std::size_t k = 0; k < o.size(); ++k) {
-            const Point a = o[k], b = o[(k + 1) % o.size()];
-            const std::size_t s0 = std::max<std::size_t>(slab_of(std::min(a.y, b.y) - margin), 1) - 1;
-            const std::size_t s1 = std::min(slabs, slab_of(std::max(a.y, b.y) + margin));
-            if (s1 <= s0) continue;
-            if (exact) {
-                if (b.y < a.y) continue;  // (going down: the part's material lies to its right, so does its outline)
-                raise_slabs(a, b, margin, ys, s0, s1, reached);
-                continue;
-            }
-            const std::size_t pieces = std::min<std::size_t>(s1 - s0, kRemnantPieces);
+    if (steps <= kPartsMaxRemnantSteps) {
+        raise_exactly(outlines, edges, ys, margin, reached);
+    } else {
+        Reach reach_of(slabs, plate.min_x);
+        for (const EdgeSlabs& e : edges) {
+            if (e.s1 <= e.s0) continue;
+            const std::size_t pieces = std::min<std::size_t>(e.s1 - e.s0, kRemnantPieces);
             for (std::size_t p = 0; p < pieces; ++p) {
-                const std::size_t first = s0 + (s1 - s0) * p / pieces, end = s0 + (s1 - s0) * (p + 1) / pieces;
-                if (const auto x = reach(a, b, ys[first], ys[end], margin)) reach_of.raise(first, end, *x);
+                const std::size_t first = e.s0 + (e.s1 - e.s0) * p / pieces;
+                const std::size_t end = e.s0 + (e.s1 - e.s0) * (p + 1) / pieces;
+                if (const auto x = reach(e.a, e.b, ys[first], ys[end], margin)) reach_of.raise(first, end, *x);
             }
         }
-    if (!exact)
         for (std::size_t s = 0; s < slabs; ++s) reached[s] = reach_of.at(s);
+    }
     // The largest rectangle of the histogram (a stack of slabs whose free width only grows)
     double best = 0;
     Box out;
