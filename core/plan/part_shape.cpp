@@ -479,12 +479,31 @@ double smallest_rectangle_angle(const std::vector<Point>& h) {
         const Point d = sub(h[after(i)], h[i]), up{-d.y, d.x};
         const double len2 = d.x * d.x + d.y * d.y;
         if (!(len2 > 0)) continue;
-        for (std::size_t s = 0; s < n && dot(h[after(right)], d) >= dot(h[right], d); ++s) right = after(right);
+        // each caliper moves on while the next point lies as far out as its own
+        double far_right = dot(h[right], d);
+        for (std::size_t s = 0; s < n; ++s) {
+            const double next = dot(h[after(right)], d);
+            if (next < far_right) break;
+            right = after(right);
+            far_right = next;
+        }
         if (i == 0) top = right;
-        for (std::size_t s = 0; s < n && dot(h[after(top)], up) >= dot(h[top], up); ++s) top = after(top);
+        double far_up = dot(h[top], up);
+        for (std::size_t s = 0; s < n; ++s) {
+            const double next = dot(h[after(top)], up);
+            if (next < far_up) break;
+            top = after(top);
+            far_up = next;
+        }
         if (i == 0) left = top;
-        for (std::size_t s = 0; s < n && dot(h[after(left)], d) <= dot(h[left], d); ++s) left = after(left);
-        const double area = (dot(h[right], d) - dot(h[left], d)) * (dot(h[top], up) - dot(h[i], up)) / len2;
+        double far_left = dot(h[left], d);
+        for (std::size_t s = 0; s < n; ++s) {
+            const double next = dot(h[after(left)], d);
+            if (next > far_left) break;
+            left = after(left);
+            far_left = next;
+        }
+        const double area = (far_right - far_left) * (far_up - dot(h[i], up)) / len2;
         if (area < best) {
             best = area;
             best_d = d;

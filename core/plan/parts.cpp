@@ -58,7 +58,7 @@ public:
         bool is_new = false;
         std::optional<std::size_t> mirror_of;
     };
-    // The group of a part of this shape (a new one when no kept shape is the same).
+    // The group of a part of this shape (a new one when no kept shape is the same; keep() it then).
     Found place(const parts::Shape& shape) {
         Bucket& bucket = buckets_[{shape.loops.size(), shape.pieces}];
         bool any_similar = false;
@@ -67,11 +67,14 @@ public:
         // (a mirror image has the same signature: only a shape with similar ones kept can have its twin among them)
         if (any_similar)
             if (const auto twin = find(bucket, parts::mirrored(shape), any_similar)) out.mirror_of = twin->first;
-        if (kept_pieces_ + shape.pieces <= kPartsMaxKeptPieces) {
-            kept_pieces_ += shape.pieces;
-            bucket.emplace(shape.area, Kept{shape, out.group});
-        }
         return out;
+    }
+    // The shape of a new group kept to compare later parts with, while the kept shapes' pieces allow it.
+    void keep(parts::Shape&& shape, const Found& found) {
+        if (!found.is_new || kept_pieces_ + shape.pieces > kPartsMaxKeptPieces) return;
+        kept_pieces_ += shape.pieces;
+        const double area = shape.area;
+        buckets_[{shape.loops.size(), shape.pieces}].emplace(area, Kept{std::move(shape), found.group});
     }
 
 private:
@@ -171,10 +174,11 @@ private:
             polygons_[k].clear();
             parts::flatten_loop(loops[k], kPlanChordToleranceMm, kPlanMaxArcChords, polygons_[k]);
         }
-        const parts::Shape shape = parts::make_shape(std::move(loops));
+        parts::Shape shape = parts::make_shape(std::move(loops));
         part.label_at = parts::label_point(shape, part.box, std::span(polygons_.data(), shape.loops.size()));
         const Grouper::Found found = grouper_.place(shape);
         if (found.is_new) new_group(shape, found);
+        grouper_.keep(std::move(shape), found);
         PartGroup& g = list_.groups[found.group];
         part.group = g.number;
         part.turned_deg = degrees(found.turned);

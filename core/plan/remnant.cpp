@@ -63,6 +63,32 @@ private:
     bool level_;
 };
 
+// The slab holding y, plus one (the first bound above y), searched outward from `hint` (galloping).
+std::size_t slab_near(const std::vector<double>& ys, double y, std::size_t hint) {
+    const std::size_t n = ys.size();
+    hint = std::min(hint, n);
+    const auto first_above = [&](std::size_t lo, std::size_t hi) {
+        return static_cast<std::size_t>(std::upper_bound(ys.begin() + static_cast<std::ptrdiff_t>(lo),
+                                                         ys.begin() + static_cast<std::ptrdiff_t>(hi), y) -
+                                        ys.begin());
+    };
+    std::size_t step = 1;
+    if (hint < n && ys[hint] <= y) {  // (the answer lies right of hint)
+        std::size_t lo = hint + 1;
+        while (lo + step - 1 < n && ys[lo + step - 1] <= y) {
+            lo += step;
+            step *= 2;
+        }
+        return first_above(lo, std::min(n, lo + step - 1));
+    }
+    std::size_t hi = hint;  // (ys[hi] > y, or hi == n: the answer is hi or left of it)
+    while (hi >= step && ys[hi - step] > y) {
+        hi -= step;
+        step *= 2;
+    }
+    return first_above(hi >= step ? hi - step + 1 : 0, hi);
+}
+
 // An outline's edge a-b and the slabs [s0, s1) it spans (grown by the margin).
 struct EdgeSlabs {
     Point a, b;
@@ -134,22 +160,29 @@ std::optional<Box> remnant(const Box& plate, const std::vector<std::vector<Point
     if (plate.empty || !(plate.max_x > plate.min_x) || !(plate.max_y > plate.min_y)) return std::nullopt;
     const std::vector<double> ys = slab_bounds(plate, outlines, margin);
     const std::size_t slabs = ys.size() - 1;
-    const auto slab_of = [&](double y) {  // (the slab holding y, plus one)
-        return static_cast<std::size_t>(std::upper_bound(ys.begin(), ys.end(), y) - ys.begin());
-    };
     // Each edge over the slabs it spans, slab by slab while that takes at most kPartsMaxRemnantSteps steps in all;
     // past that an edge over more than kRemnantPieces slabs is cut into that many pieces, each raising its slabs to
     // its largest x (a little more than the edge reaches in some of them: the remnant only gets smaller).
     std::vector<EdgeSlabs> edges;
+    std::vector<std::size_t> below, above;  // slab_of(y - margin) and slab_of(y + margin) of an outline's points
     std::size_t steps = 0;
-    for (const std::vector<Point>& o : outlines)
+    for (const std::vector<Point>& o : outlines) {
+        below.resize(o.size());
+        above.resize(o.size());
+        for (std::size_t k = 0; k < o.size(); ++k) {  // (searched from the point before's: they lie close)
+            below[k] = slab_near(ys, o[k].y - margin, k > 0 ? below[k - 1] : slabs / 2);
+            above[k] = slab_near(ys, o[k].y + margin, k > 0 ? above[k - 1] : slabs / 2);
+        }
         for (std::size_t k = 0; k < o.size(); ++k) {
-            const Point a = o[k], b = o[(k + 1) % o.size()];
-            const std::size_t lo = slab_of(std::min(a.y, b.y) - margin), hi = slab_of(std::max(a.y, b.y) + margin);
+            const std::size_t next = k + 1 == o.size() ? 0 : k + 1;
+            const Point a = o[k], b = o[next];
+            // (slab_of(min(a.y, b.y) - margin) and slab_of(max(a.y, b.y) + margin): slab_of only grows with y)
+            const std::size_t lo = std::min(below[k], below[next]), hi = std::max(above[k], above[next]);
             steps += hi - std::min(lo, slabs) + 1;
             edges.push_back({a, b, static_cast<std::uint32_t>(std::max<std::size_t>(lo, 1) - 1),
                              static_cast<std::uint32_t>(std::min(slabs, hi))});
         }
+    }
     std::vector<double> reached(slabs, plate.min_x);
     if (steps <= kPartsMaxRemnantSteps) {
         raise_exactly(outlines, edges, ys, margin, reached);
