@@ -3,10 +3,14 @@
 #include "essi/parts.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cmath>
 #include <map>
 #include <memory>
 #include <span>
+#include <tuple>
+#include <unordered_map>
 #include <utility>
 
 #include "essi/interp.hpp"
@@ -60,21 +64,20 @@ public:
     };
     // The group of a part of this shape (a new one when no kept shape is the same; keep() it then).
     Found place(const parts::Shape& shape) {
-        Bucket& bucket = buckets_[{shape.loops.size(), shape.pieces}];
         bool any_similar = false;
-        if (const auto found = find(bucket, shape, any_similar)) return {found->first, -found->second, false, std::nullopt};
+        if (const auto found = find(shape, any_similar)) return {found->first, -found->second, false, std::nullopt};
         Found out{groups_++, 0, true, std::nullopt};
         // (a mirror image has the same signature: only a shape with similar ones kept can have its twin among them)
         if (any_similar)
-            if (const auto twin = find(bucket, parts::mirrored(shape), any_similar)) out.mirror_of = twin->first;
+            if (const auto twin = find(parts::mirrored(shape), any_similar)) out.mirror_of = twin->first;
         return out;
     }
     // The shape of a new group kept to compare later parts with, while the kept shapes' pieces allow it.
     void keep(parts::Shape&& shape, const Found& found) {
         if (!found.is_new || kept_pieces_ + shape.pieces > kPartsMaxKeptPieces) return;
         kept_pieces_ += shape.pieces;
-        const double area = shape.area;
-        buckets_[{shape.loops.size(), shape.pieces}].emplace(area, Kept{std::move(shape), found.group});
+        buckets_[key_of(shape, 0)].emplace(shape.area, Entry{longest(shape), static_cast<std::uint32_t>(kept_.size())});
+        kept_.push_back({std::move(shape), found.group});
     }
 
 private:
@@ -82,28 +85,69 @@ private:
         parts::Shape shape;
         std::size_t group;
     };
-    using Bucket = std::multimap<double, Kept>;  // by net area
+    // A kept shape in its bucket: its longest piece (two similar shapes' longest pieces are as long within twice
+    // the tolerance: most are told apart without reading the shape) and where it is in kept_.
+    struct Entry {
+        double longest;
+        std::uint32_t kept;
+    };
+    using Bucket = std::multimap<double, Entry>;  // by net area
+    static double longest(const parts::Shape& shape) { return shape.lengths.empty() ? 0 : shape.lengths.back(); }
+    // Shapes of one number of loops and of pieces, their perimeters in one cell of the width within which similar()
+    // takes two perimeters as the same: a shape's similar ones are in its cell or a neighbour.
+    using Key = std::tuple<std::size_t, std::size_t, long long>;
+    [[nodiscard]] Key key_of(const parts::Shape& shape, int neighbour) const {
+        const double cell = 2 * tolerance_ * static_cast<double>(std::max<std::size_t>(shape.pieces, 1));
+        const double c = std::floor(shape.perimeter / cell);
+        const long long index = std::isfinite(c) && std::fabs(c) < 1e15 ? static_cast<long long>(c) : 0;
+        return {shape.loops.size(), shape.pieces, index + neighbour};
+    }
 
-    // The first kept shape that `shape` turns onto (its group and the turn), among the first kPartsMaxCompares of
-    // similar signature.
+    // The first kept shape that `shape` turns onto (its group and the turn), in the order of their areas, among the
+    // first kPartsMaxCompares of similar signature and the first kPartsMaxVisits of about its area and perimeter;
     // `any_similar`: whether one was similar.
-    std::optional<std::pair<std::size_t, double>> find(const Bucket& bucket, const parts::Shape& shape,
-                                                       bool& any_similar) const {
+    std::optional<std::pair<std::size_t, double>> find(const parts::Shape& shape, bool& any_similar) const {
         const double slack = 2 * tolerance_ * shape.perimeter + 4 * tolerance_ * tolerance_;
-        std::size_t compared = 0;
-        for (auto it = bucket.lower_bound(shape.area - slack);
-             it != bucket.end() && it->first <= shape.area + slack && compared < kPartsMaxCompares; ++it) {
-            if (!parts::similar(shape, it->second.shape, tolerance_)) continue;
+        // the three cells' shapes within the slack, merged by area
+        std::array<Bucket::const_iterator, 3> at, end;
+        std::size_t cells = 0;
+        for (int n = -1; n <= 1; ++n) {
+            const auto b = buckets_.find(key_of(shape, n));
+            if (b == buckets_.end()) continue;
+            at[cells] = b->second.lower_bound(shape.area - slack);
+            end[cells++] = b->second.end();
+        }
+        const double its_longest = longest(shape);
+        std::size_t compared = 0, visited = 0;
+        while (compared < kPartsMaxCompares && visited < kPartsMaxVisits) {
+            std::size_t next = cells;
+            for (std::size_t c = 0; c < cells; ++c)
+                if (at[c] != end[c] && at[c]->first <= shape.area + slack &&
+                    (next == cells || at[c]->first < at[next]->first))
+                    next = c;
+            if (next == cells) break;
+            const Entry entry = (at[next]++)->second;
+            ++visited;
+            if (std::fabs(entry.longest - its_longest) > 2 * tolerance_) continue;  // (not similar)
+            const Kept& kept = kept_[entry.kept];
+            if (!parts::similar(shape, kept.shape, tolerance_)) continue;
             any_similar = true;
             ++compared;
-            if (const auto turn = parts::turn_onto(shape, it->second.shape, tolerance_))
-                return std::pair{it->second.group, *turn};
+            if (const auto turn = parts::turn_onto(shape, kept.shape, tolerance_)) return std::pair{kept.group, *turn};
         }
         return std::nullopt;
     }
 
     double tolerance_;
-    std::map<std::pair<std::size_t, std::size_t>, Bucket> buckets_;  // by (loops, pieces)
+    struct KeyHash {
+        std::size_t operator()(const Key& k) const {
+            const auto mix = [](std::size_t h, std::size_t v) { return (h ^ v) * 0x100000001b3ULL; };
+            return mix(mix(mix(0xcbf29ce484222325ULL, std::get<0>(k)), std::get<1>(k)),
+                       static_cast<std::size_t>(std::get<2>(k)));
+        }
+    };
+    std::unordered_map<Key, Bucket, KeyHash> buckets_;  // (a hash: a part looks up three of them)
+    std::vector<Kept> kept_;
     std::size_t groups_ = 0;
     std::size_t kept_pieces_ = 0;
 };

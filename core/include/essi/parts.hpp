@@ -32,6 +32,9 @@ constexpr double kPartsSameShapeUnits = 2;
 // A part is compared exactly with at most this many earlier groups whose signature it shares (area, perimeter,
 // pieces, their lengths, its holes' places); past that it makes a group of its own.
 constexpr std::size_t kPartsMaxCompares = 32;
+// A part's search for its group visits at most this many earlier groups of its number of loops and pieces, its area
+// and its perimeter (within the same-shape tolerance), similar or not; past that it makes a group of its own.
+constexpr std::size_t kPartsMaxVisits = 4096;
 // A comparison tries at most this many alignments (the features of the other part as far from its centroid as the
 // farthest of this one's).
 constexpr std::size_t kPartsMaxAlignments = 64;
