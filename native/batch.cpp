@@ -78,7 +78,8 @@ void walk_directory(const std::string& dir, const ExpandOptions& options, std::v
         for (; !ec && it != end; it.increment(ec)) {
             std::error_code entry_ec;
             if (it->is_symlink(entry_ec)) {
-                if (it->is_regular_file(entry_ec) && takes_file(it->path(), options)) found.push_back(it->path().string());
+                if (it->is_regular_file(entry_ec) && takes_file(it->path(), options))
+                    found.push_back(it->path().string());
             } else if (it->is_directory(entry_ec)) {
                 pending.push_back(it->path());
             } else if (it->is_regular_file(entry_ec) && takes_file(it->path(), options)) {

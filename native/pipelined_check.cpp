@@ -40,7 +40,8 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
         TapeReader reader(bytes, profile, format);
         for (std::size_t k = 0;; ++k) {
             Slot& slot = slots[k % slots.size()];
-            while (slot.full.load(std::memory_order_acquire) && plates.run_one()) {}
+            while (slot.full.load(std::memory_order_acquire) && plates.run_one()) {
+            }
             slot.full.wait(true, std::memory_order_acquire);
             const bool more = reader.read_chunk(slot.chunk, kPipelineChunkBlocks);
             // The arcs' square roots and atan2s, off the interpreting thread, but only while a chunk waits for

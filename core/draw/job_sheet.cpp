@@ -190,11 +190,11 @@ SheetSection plates_section(const SheetParts& parts, Lang lang) {
     SheetSection s = fields_section("plates", Msg::SheetPlates, lang);
     SheetTable t = table_of({Msg::SheetPlate, Msg::SheetPartSize, Msg::SheetUtilisation, Msg::SheetRemnant}, lang);
     for (const SheetPlate& p : parts.plates) {
-        const std::string remnant = p.remnant && !p.remnant->empty
-                                        ? size_text(p.remnant->max_x - p.remnant->min_x, p.remnant->max_y - p.remnant->min_y)
-                                        : std::string(text(Msg::StatsNone, lang));
-        add_row(t, {std::to_string(p.number), size_text(p.width_mm, p.height_mm), fixed_text(100 * p.utilisation, 1) + " %",
-                    remnant});
+        const std::string remnant = p.remnant && !p.remnant->empty ? size_text(p.remnant->max_x - p.remnant->min_x,
+                                                                               p.remnant->max_y - p.remnant->min_y)
+                                                                   : std::string(text(Msg::StatsNone, lang));
+        add_row(t, {std::to_string(p.number), size_text(p.width_mm, p.height_mm),
+                    fixed_text(100 * p.utilisation, 1) + " %", remnant});
     }
     s.table = std::move(t);
     return s;
@@ -210,7 +210,8 @@ SheetSection profile_section(const CheckResult& result, const Profile& p, Lang l
     add_field(s, Msg::SheetRapid, number_text(p.rapid_mm_min) + " mm/min", lang);
     add_field(s, Msg::SheetPierceTime, number_text(p.pierce_time_s) + " s", lang);
     const Point zero = p.active_zero_offset();
-    add_field(s, Msg::SheetZeroOffset, p.zero_offset + ": x " + mm_text(zero.x) + ", y " + mm_text(zero.y) + " mm", lang);
+    add_field(s, Msg::SheetZeroOffset, p.zero_offset + ": x " + mm_text(zero.x) + ", y " + mm_text(zero.y) + " mm",
+              lang);
     add_field(s, Msg::SheetPlateRotation, number_text(p.plate_rotation_deg) + "°", lang);
     add_field(s, Msg::SheetTravelLimits,
               p.table ? "x " + mm_text(p.table->min_x_mm) + " .. " + mm_text(p.table->max_x_mm) + ", y " +
@@ -255,7 +256,8 @@ std::vector<SheetLegendEntry> legend_of(const SheetDrawing& d, Lang lang) {
         const bool marked = std::any_of(d.marks.begin(), d.marks.end(),
                                         [sev](const SheetDrawing::Mark& m) { return m.severity == sev; });
         if (marked)
-            legend.push_back({SheetLegendEntry::Sample::Mark, std::string(severity_text(sev, lang)), MotionKind::Cut, sev});
+            legend.push_back(
+                {SheetLegendEntry::Sample::Mark, std::string(severity_text(sev, lang)), MotionKind::Cut, sev});
     }
     if (!d.labels.empty())
         legend.push_back({SheetLegendEntry::Sample::Label, std::string(text(Msg::SheetPartGroupKey, lang))});
@@ -294,8 +296,8 @@ SheetDrawing draw_sheet(std::string_view bytes, const TapeSetup& setup, const st
     SheetDrawing drawing;
     place_drawing(drawing, stats);
     const double extent = std::max(drawing.box.max_x - drawing.box.min_x, drawing.box.max_y - drawing.box.min_y);
-    const double tolerance = std::max(extent * kSheetDrawingTolerance,
-                                      std::max(setup.profile.chord_tolerance_mm, kMinChordTolerance));
+    const double tolerance =
+        std::max(extent * kSheetDrawingTolerance, std::max(setup.profile.chord_tolerance_mm, kMinChordTolerance));
     DiagnosticPlaces places(marked);
     SheetSink sink(drawing, tolerance, places);
     std::vector<Diagnostic> ignored;  // (the check has them)

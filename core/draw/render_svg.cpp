@@ -194,18 +194,19 @@ void write_highlights(std::string& s, const std::vector<Diagnostic>& diagnostics
             const LineRange r{d.contour_first, std::max(d.contour_first, d.contour_last)};
             const std::string path = sink.lines_path(r);
             if (!path.empty())
-                s += "<path class=\"contour-highlight\" data-diagnostic=\"" + index + "\" data-lines=\"" + range_text(r) +
-                     "\" stroke=\"" + color + "\" stroke-opacity=\"" + num(kContourOpacity) + "\" stroke-width=\"" +
-                     scale_text(kContourWidthPx * px) + "\" d=\"" + path + "\"/>\n";
+                s += "<path class=\"contour-highlight\" data-diagnostic=\"" + index + "\" data-lines=\"" +
+                     range_text(r) + "\" stroke=\"" + color + "\" stroke-opacity=\"" + num(kContourOpacity) +
+                     "\" stroke-width=\"" + scale_text(kContourWidthPx * px) + "\" d=\"" + path + "\"/>\n";
         }
         for (const RelatedLocation& rel : d.related) {
             const LineRange r{rel.line, std::max(rel.line, rel.end_line)};
             const std::string path = rel.line > 0 ? sink.lines_path(r) : std::string();
             if (path.empty()) continue;
-            s += "<path class=\"related\" data-diagnostic=\"" + index + "\" data-lines=\"" + range_text(r) + "\" stroke=\"" +
-                 color + "\" stroke-opacity=\"" + num(kRelatedOpacity) + "\" stroke-width=\"" + scale_text(kRelatedWidthPx * px) +
-                 "\" stroke-dasharray=\"" + scale_text(6 * px) + " " + scale_text(4 * px) + "\" d=\"" + path + "\"><title>" +
-                 xml_escape(related_message(rel, Lang::En)) + "</title></path>\n";
+            s += "<path class=\"related\" data-diagnostic=\"" + index + "\" data-lines=\"" + range_text(r) +
+                 "\" stroke=\"" + color + "\" stroke-opacity=\"" + num(kRelatedOpacity) + "\" stroke-width=\"" +
+                 scale_text(kRelatedWidthPx * px) + "\" stroke-dasharray=\"" + scale_text(6 * px) + " " +
+                 scale_text(4 * px) + "\" d=\"" + path + "\"><title>" + xml_escape(related_message(rel, Lang::En)) +
+                 "</title></path>\n";
         }
     }
     s += "</g>\n";
@@ -248,11 +249,11 @@ void write_marks(std::string& s, const std::vector<Diagnostic>& diagnostics,
         const std::string color(mark_color(d.severity));
         std::string tip = diagnostic_line(title, d);
         for (const RelatedLocation& rel : d.related) tip += "\n  " + related_message(rel, Lang::En);
-        s += "<g class=\"diagnostic " + std::string(severity_name(d.severity)) + "\" id=\"diagnostic-" + std::to_string(k) +
-             "\" data-index=\"" + std::to_string(k) + "\" data-code=\"" + code_name(d.code) + "\" data-line=\"" +
-             std::to_string(d.line) + "\" data-x=\"" + num(p.x) + "\" data-y=\"" + num(p.y) + "\" data-r-px=\"" +
-             num(kSvgMarkRadiusPx) + "\" stroke=\"" + color + "\" fill=\"" + color + "\" fill-opacity=\"" +
-             num(kMarkFillOpacity) + "\"><title>" + xml_escape(tip) + "</title>";
+        s += "<g class=\"diagnostic " + std::string(severity_name(d.severity)) + "\" id=\"diagnostic-" +
+             std::to_string(k) + "\" data-index=\"" + std::to_string(k) + "\" data-code=\"" + code_name(d.code) +
+             "\" data-line=\"" + std::to_string(d.line) + "\" data-x=\"" + num(p.x) + "\" data-y=\"" + num(p.y) +
+             "\" data-r-px=\"" + num(kSvgMarkRadiusPx) + "\" stroke=\"" + color + "\" fill=\"" + color +
+             "\" fill-opacity=\"" + num(kMarkFillOpacity) + "\"><title>" + xml_escape(tip) + "</title>";
         s += "<circle cx=\"" + num(p.x) + "\" cy=\"" + num(-p.y) + "\" r=\"" + num(r) + "\"/>";
         if (d.severity == Severity::Error)
             s += "<path d=\"M" + num(p.x - r) + " " + num(-p.y - r) + "L" + num(p.x + r) + " " + num(-p.y + r) + "M" +
@@ -266,15 +267,15 @@ void write_marks(std::string& s, const std::vector<Diagnostic>& diagnostics,
 void write_concerned(std::string& s, const std::vector<LineRange>& wanted, const SvgSink& sink, double px) {
     s += "<g id=\"concerned\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
     const std::pair<MotionKind, std::string_view> kinds[] = {{MotionKind::Rapid, kSvgRapidColor},
-                                                              {MotionKind::Travel, kSvgTravelColor},
-                                                              {MotionKind::Mark, kSvgMarkColor},
-                                                              {MotionKind::Cut, kSvgCutColor}};
+                                                             {MotionKind::Travel, kSvgTravelColor},
+                                                             {MotionKind::Mark, kSvgMarkColor},
+                                                             {MotionKind::Cut, kSvgCutColor}};
     for (const auto& [kind, color] : kinds) {
         std::string d;
         for (const LineRange& r : wanted) d += sink.lines_path(r, kind);
         if (!d.empty())
-            s += "<path class=\"concerned " + std::string(motion_kind_name(kind)) + "\" stroke=\"" + std::string(color) +
-                 "\" stroke-width=\"" + scale_text(2 * px) + "\" d=\"" + d + "\"/>\n";
+            s += "<path class=\"concerned " + std::string(motion_kind_name(kind)) + "\" stroke=\"" +
+                 std::string(color) + "\" stroke-width=\"" + scale_text(2 * px) + "\" d=\"" + d + "\"/>\n";
     }
     s += "</g>\n";
 }
@@ -300,7 +301,8 @@ void write_plates(std::string& s, const std::vector<PlateUse>& plates, const std
 
 }  // namespace
 
-RenderResult render_svg(std::string_view bytes, const Profile& profile, const RenderOptions& options, InputFormat format) {
+RenderResult render_svg(std::string_view bytes, const Profile& profile, const RenderOptions& options,
+                        InputFormat format) {
     RenderResult out;
     // Pass 1: the check (diagnostics, stats, extent).
     out.result = check_tape(bytes, profile, format, static_cast<std::size_t>(-1), options.remnant);
@@ -353,10 +355,13 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
                         Key{"warning", kSvgWarningColor, ""}, Key{"note", kSvgNoteColor, ""}})
         keys.push_back(k);
     const double sample = font * 2;
-    const auto key_width = [&](const Key& k) { return sample + font * (1.0 + 0.62 * static_cast<double>(k.name.size())); };
+    const auto key_width = [&](const Key& k) {
+        return sample + font * (1.0 + 0.62 * static_cast<double>(k.name.size()));
+    };
     double keys_width = 0;
     for (const Key& k : keys) keys_width += key_width(k);
-    const std::size_t key_break = keys_width > w + margin ? keys.size() / 2 + 1 : keys.size();  // (the second row's first)
+    const std::size_t key_break =
+        keys_width > w + margin ? keys.size() / 2 + 1 : keys.size();  // (the second row's first)
     const double legend_h = font * (key_break < keys.size() ? 5.9 : 4.6);
     const double vx = box.min_x - margin, vy = -box.max_y - margin;
     const double vw = w + 2 * margin, vh = h + 2 * margin + legend_h;
@@ -376,7 +381,9 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     s += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + num(options.width_px) + "\" height=\"" +
          num(height_px) + "\" viewBox=\"" + num(vx) + " " + num(vy) + " " + num(vw) + " " + num(vh) +
          "\" data-generator=\"essi render\"" +
-         (options.view ? " data-view=\"" + num(box.min_x) + " " + num(box.min_y) + " " + num(box.max_x) + " " + num(box.max_y) + "\"" : "") +
+         (options.view ? " data-view=\"" + num(box.min_x) + " " + num(box.min_y) + " " + num(box.max_x) + " " +
+                             num(box.max_y) + "\""
+                       : "") +
          ">\n";
     s += "<title>" + xml_escape(options.title) + "</title>\n";
     s += "<rect id=\"background\" x=\"" + num(vx) + "\" y=\"" + num(vy) + "\" width=\"" + num(vw) + "\" height=\"" +
@@ -405,15 +412,17 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     }
     // The kerf: the cut's real width (a band as wide as the kerf along the compensated path) and the torch's path.
     for (const auto& [width, d] : sink.kerf_bands_)
-        s += "<path class=\"kerf-band\" data-width-mm=\"" + num(width) + "\" stroke=\"" + std::string(kSvgKerfBandColor) +
-             "\" stroke-opacity=\"0.25\" stroke-width=\"" + num(width) + "\" d=\"" + d + "\"/>\n";
+        s += "<path class=\"kerf-band\" data-width-mm=\"" + num(width) + "\" stroke=\"" +
+             std::string(kSvgKerfBandColor) + "\" stroke-opacity=\"0.25\" stroke-width=\"" + num(width) + "\" d=\"" +
+             d + "\"/>\n";
     if (!sink.kerf_path_.empty())
-        s += "<path id=\"kerf\" class=\"kerf\" stroke=\"" + std::string(kSvgKerfColor) +
-             "\"" + stroke(1) + " d=\"" + sink.kerf_path_ + "\"/>\n";
+        s += "<path id=\"kerf\" class=\"kerf\" stroke=\"" + std::string(kSvgKerfColor) + "\"" + stroke(1) + " d=\"" +
+             sink.kerf_path_ + "\"/>\n";
     s += "</g>\n<g id=\"pierces\" fill=\"none\" stroke=\"" + std::string(kSvgPierceColor) + "\"" + stroke(1.5) +
          (options.problems_only ? " opacity=\"" + num(kSvgDimOpacity) + "\"" : std::string()) + ">\n";
     for (const Point& p : sink.pierces_)
-        s += "<circle class=\"pierce\" cx=\"" + num(p.x) + "\" cy=\"" + num(-p.y) + "\" r=\"" + num(marker_r) + "\"/>\n";
+        s +=
+            "<circle class=\"pierce\" cx=\"" + num(p.x) + "\" cy=\"" + num(-p.y) + "\" r=\"" + num(marker_r) + "\"/>\n";
     s += "</g>\n";
     if (out.result.parts) write_plates(s, out.result.parts->plates, stroke(1), dashes(6, 3));
     if (options.problems_only) write_concerned(s, wanted, sink, px);
@@ -436,18 +445,18 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
     ly += font_px * 1.3;
     s += "<text id=\"legend-numbers\" x=\"0\" y=\"" + num(ly) + "\" data-cut-length-mm=\"" + cut_mm +
          "\" data-pierces=\"" + std::to_string(st.pierces) + "\" data-time-s=\"" + timebuf + "\" data-errors=\"" +
-         std::to_string(errors) + "\" data-warnings=\"" + std::to_string(warnings) +
-         "\" data-notes=\"" + std::to_string(notes) + "\">cut " + cut_mm + " mm, " +
-         std::to_string(st.pierces) + (st.pierces == 1 ? " pierce" : " pierces") + ", time " +
-         format_duration(st.estimated_time_s) + ", " + std::to_string(errors) + (errors == 1 ? " error" : " errors") +
-         ", " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings") + "</text>\n";
+         std::to_string(errors) + "\" data-warnings=\"" + std::to_string(warnings) + "\" data-notes=\"" +
+         std::to_string(notes) + "\">cut " + cut_mm + " mm, " + std::to_string(st.pierces) +
+         (st.pierces == 1 ? " pierce" : " pierces") + ", time " + format_duration(st.estimated_time_s) + ", " +
+         std::to_string(errors) + (errors == 1 ? " error" : " errors") + ", " + std::to_string(warnings) +
+         (warnings == 1 ? " warning" : " warnings") + "</text>\n";
     ly += font_px * 1.3;
     double kx = 0;
     auto key = [&](std::string_view name, std::string_view color, const char* dash) {
         s += "<g class=\"key\" data-kind=\"" + std::string(name) + "\"><path d=\"M" + num(kx) + " " +
              num(ly - font_px * 0.35) + "h" + num(sample_px) + "\" stroke=\"" + std::string(color) +
-             "\" stroke-width=\"2\"" + dash + "/><text x=\"" + num(kx + sample_px + font_px * 0.3) + "\" y=\"" + num(ly) +
-             "\">" + std::string(name) + "</text></g>\n";
+             "\" stroke-width=\"2\"" + dash + "/><text x=\"" + num(kx + sample_px + font_px * 0.3) + "\" y=\"" +
+             num(ly) + "\">" + std::string(name) + "</text></g>\n";
         kx += sample_px + font_px * (1.0 + 0.62 * static_cast<double>(name.size()));
     };
     for (std::size_t k = 0; k < keys.size(); ++k) {

@@ -143,12 +143,14 @@ Box bounding_box(const MotionRecord& m) {
             static constexpr double kAxisSin[4] = {0, 1, 0, -1};
             if (m.radius == m.end_radius) {
                 // Constant radius (the usual case): a full circle (holes, common) reaches all four extremes.
-                const unsigned extremes = std::abs(m.sweep) >= kTwoPi
-                                              ? 0xFu
-                                              : arc_axis_extremes({m.start.x - m.centre.x, m.start.y - m.centre.y},
-                                                                  {m.end.x - m.centre.x, m.end.y - m.centre.y}, m.sweep >= 0);
+                const unsigned extremes =
+                    std::abs(m.sweep) >= kTwoPi
+                        ? 0xFu
+                        : arc_axis_extremes({m.start.x - m.centre.x, m.start.y - m.centre.y},
+                                            {m.end.x - m.centre.x, m.end.y - m.centre.y}, m.sweep >= 0);
                 for (int k = 0; k < 4; ++k)
-                    if (extremes & (1u << k)) b.add(Point{m.centre.x + m.radius * kAxisCos[k], m.centre.y + m.radius * kAxisSin[k]});
+                    if (extremes & (1u << k))
+                        b.add(Point{m.centre.x + m.radius * kAxisCos[k], m.centre.y + m.radius * kAxisSin[k]});
                 break;
             }
             const double a0 = angle_of(m.start, m.centre);
@@ -261,8 +263,8 @@ Point velocity_at(const MotionRecord& m, double f) {
 // Gauss-Legendre nodes and weights on [0, 1] (5 points: exact for polynomials up to degree 9).
 constexpr double kGaussNodes[5] = {0.04691007703066800, 0.23076534494715845, 0.5, 0.76923465505284155,
                                    0.95308992296933200};
-constexpr double kGaussWeights[5] = {0.11846344252809454, 0.23931433524968324, 0.28444444444444444,
-                                     0.23931433524968324, 0.11846344252809454};
+constexpr double kGaussWeights[5] = {0.11846344252809454, 0.23931433524968324, 0.28444444444444444, 0.23931433524968324,
+                                     0.11846344252809454};
 // An arc's moments are integrated over pieces of at most this sweep (radians).
 constexpr double kMomentStep = kPi / 16;
 

@@ -31,7 +31,8 @@ void block_columns(std::string_view bytes, std::vector<Diagnostic>& diagnostics)
 TapeChecker::TapeChecker(std::string_view bytes, const Profile& profile, MotionSink* also)
     : bytes_(bytes), profile_(profile), cap_(profile.max_per_code), stats_(profile), plan_(profile),
       both_(also ? std::make_unique<PlanThenAlso>(plan_, *also) : nullptr),
-      interpreter_(bytes, profile, stats_, both_ ? static_cast<MotionSink*>(both_.get()) : &plan_, result_.diagnostics) {}
+      interpreter_(bytes, profile, stats_, both_ ? static_cast<MotionSink*>(both_.get()) : &plan_,
+                   result_.diagnostics) {}
 
 TapeChecker::~TapeChecker() = default;
 
@@ -40,7 +41,8 @@ void TapeChecker::check_chunk(const Tape& chunk, std::span<const MotionMeasure> 
     result_.diagnostics.insert(result_.diagnostics.end(), chunk.diagnostics().begin(), chunk.diagnostics().end());
     interpreter_.run(chunk, measures);
     blocks_ += chunk.program_blocks();
-    if (result_.diagnostics.size() > first) [[unlikely]] keep_diagnostics_from(first);
+    if (result_.diagnostics.size() > first) [[unlikely]]
+        keep_diagnostics_from(first);
 }
 
 // The chunk's diagnostics (from `first` on) through max_per_code; past twice max_kept_ the list is sorted and cut

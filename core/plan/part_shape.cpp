@@ -264,9 +264,8 @@ bool same_loops(const Shape& a, const Shape& b, const Rigid& t, double tolerance
         const Loop& la = a.loops[k];
         const Point c = t(la.centroid);
         const double reach = 4 * tolerance;  // (a centroid moves less than the points, but on a thin loop more)
-        const auto first = std::lower_bound(b.by_x.begin(), b.by_x.end(), c.x - reach, [&](std::size_t i, double x) {
-            return b.loops[i].centroid.x < x;
-        });
+        const auto first = std::lower_bound(b.by_x.begin(), b.by_x.end(), c.x - reach,
+                                            [&](std::size_t i, double x) { return b.loops[i].centroid.x < x; });
         bool found = false;
         for (auto it = first; it != b.by_x.end() && b.loops[*it].centroid.x <= c.x + reach && !found; ++it) {
             const Loop& lb = b.loops[*it];
@@ -407,7 +406,8 @@ Box seg_box(const Seg& s) {
                 if (d > 0) d -= 2 * kPi;
                 if (d < s.sweep) continue;
             }
-            box.add(Point{s.centre.x + s.radius * std::cos(k * kPi / 2), s.centre.y + s.radius * std::sin(k * kPi / 2)});
+            box.add(
+                Point{s.centre.x + s.radius * std::cos(k * kPi / 2), s.centre.y + s.radius * std::sin(k * kPi / 2)});
         }
     } else if (s.curve == CurveKind::Parabola) {
         const double den[2] = {s.a.x - 2 * s.control.x + s.b.x, s.a.y - 2 * s.control.y + s.b.y};
@@ -473,36 +473,29 @@ double smallest_rectangle_angle(const std::vector<Point>& h) {
     const auto dot = [](Point a, Point e) { return a.x * e.x + a.y * e.y; };
     const auto after = [n](std::size_t k) { return k + 1 == n ? 0 : k + 1; };
     std::size_t right = 0, top = 0, left = 0;
+    // A caliper at h[k] moves on while the next point lies as far along `dir` (sign -1: against it) as its own; the
+    // span it reaches along `dir`.
+    const auto advance = [&](std::size_t& k, Point dir, double sign) {
+        double far = sign * dot(h[k], dir);
+        for (std::size_t s = 0; s < n; ++s) {
+            const double next = sign * dot(h[after(k)], dir);
+            if (next < far) break;
+            k = after(k);
+            far = next;
+        }
+        return sign * far;
+    };
     double best = std::numeric_limits<double>::infinity();
     Point best_d{1, 0};
     for (std::size_t i = 0; i < n; ++i) {
         const Point d = sub(h[after(i)], h[i]), up{-d.y, d.x};
         const double len2 = d.x * d.x + d.y * d.y;
         if (!(len2 > 0)) continue;
-        // each caliper moves on while the next point lies as far out as its own
-        double far_right = dot(h[right], d);
-        for (std::size_t s = 0; s < n; ++s) {
-            const double next = dot(h[after(right)], d);
-            if (next < far_right) break;
-            right = after(right);
-            far_right = next;
-        }
+        const double far_right = advance(right, d, 1);
         if (i == 0) top = right;
-        double far_up = dot(h[top], up);
-        for (std::size_t s = 0; s < n; ++s) {
-            const double next = dot(h[after(top)], up);
-            if (next < far_up) break;
-            top = after(top);
-            far_up = next;
-        }
+        const double far_up = advance(top, up, 1);
         if (i == 0) left = top;
-        double far_left = dot(h[left], d);
-        for (std::size_t s = 0; s < n; ++s) {
-            const double next = dot(h[after(left)], d);
-            if (next > far_left) break;
-            left = after(left);
-            far_left = next;
-        }
+        const double far_left = advance(left, d, -1);
         const double area = (far_right - far_left) * (far_up - dot(h[i], up)) / len2;
         if (area < best) {
             best = area;

@@ -28,7 +28,7 @@ struct Seg {
 // one circle): the same outline cut from another start or in another direction gives the same pieces.
 struct Loop {
     std::vector<Seg> segs;
-    double area = 0;    // > 0 (exact: arcs and parabolas as curves)
+    double area = 0;  // > 0 (exact: arcs and parabolas as curves)
     Point centroid;
     bool circle = false;  // one full circle: no point of it stands out
 };
@@ -44,10 +44,10 @@ struct Shape {
     Point centroid;   // of the net area
     double perimeter = 0;
     std::size_t pieces = 0;
-    std::vector<double> lengths;           // of its pieces, sorted
-    std::vector<double> hole_areas;        // sorted
-    std::vector<double> hole_distances;    // of the holes' centroids from the part's, sorted
-    std::vector<std::size_t> by_x;         // its loops by their centroid's x
+    std::vector<double> lengths;         // of its pieces, sorted
+    std::vector<double> hole_areas;      // sorted
+    std::vector<double> hole_distances;  // of the holes' centroids from the part's, sorted
+    std::vector<std::size_t> by_x;       // its loops by their centroid's x
 };
 [[nodiscard]] Shape make_shape(std::vector<Loop> loops);
 // The shape mirrored in the x axis (a port part's starboard twin).

@@ -141,9 +141,10 @@ private:
     double tolerance_;
     struct KeyHash {
         std::size_t operator()(const Key& k) const {
-            const auto mix = [](std::size_t h, std::size_t v) { return (h ^ v) * 0x100000001b3ULL; };
-            return mix(mix(mix(0xcbf29ce484222325ULL, std::get<0>(k)), std::get<1>(k)),
-                       static_cast<std::size_t>(std::get<2>(k)));
+            // (FNV-1a over the three, 64 bits on every platform)
+            const auto mix = [](std::uint64_t h, std::uint64_t v) { return (h ^ v) * 0x100000001b3ULL; };
+            return static_cast<std::size_t>(mix(mix(mix(0xcbf29ce484222325ULL, std::get<0>(k)), std::get<1>(k)),
+                                                static_cast<std::uint64_t>(std::get<2>(k))));
         }
     };
     std::unordered_map<Key, Bucket, KeyHash> buckets_;  // (a hash: a part looks up three of them)
@@ -158,10 +159,8 @@ private:
 class PartsBuilder {
 public:
     explicit PartsBuilder(const Profile& profile)
-        : profile_(profile),
-          tolerance_(std::max(kPartsSameShapeMm, kPartsSameShapeUnits * profile.unit_mm)),
-          closure_mm_(profile.arc_tolerance_units * profile.unit_mm),
-          grouper_(tolerance_) {}
+        : profile_(profile), tolerance_(std::max(kPartsSameShapeMm, kPartsSameShapeUnits * profile.unit_mm)),
+          closure_mm_(profile.arc_tolerance_units * profile.unit_mm), grouper_(tolerance_) {}
 
     // One plate's contours (a parent: `parent_base` + its index in `all`); motions_of(k): contour k's motions
     // (std::span<const MotionRecord>).
@@ -270,9 +269,10 @@ private:
             plate.scrap_kg = std::max(0.0, area - plate.net_area_mm2) * profile_.material->thickness_mm *
                              profile_.material->density_kg_m3 / kMm3PerM3;
         // (the full kerf width from every outline: the compensation's, else the profile's width)
-        const double width = kerf_mm > 0                                             ? 2 * kerf_mm
-                             : profile_.kerf_value == KerfValueMeaning::Width ? profile_.kerf_units * profile_.unit_mm
-                                                                               : 2 * profile_.kerf_units * profile_.unit_mm;
+        const double width = kerf_mm > 0 ? 2 * kerf_mm
+                             : profile_.kerf_value == KerfValueMeaning::Width
+                                 ? profile_.kerf_units * profile_.unit_mm
+                                 : 2 * profile_.kerf_units * profile_.unit_mm;
         plate.remnant = parts::remnant(plate.area, outlines, width);
     }
 
@@ -288,8 +288,8 @@ private:
     double closure_mm_;
     Grouper grouper_;
     PartsList list_;
-    std::vector<MotionRecord> loop_;                // the loop of a contour (loop_motions)
-    std::vector<std::vector<Point>> polygons_;      // the part's loops flattened, the outline first
+    std::vector<MotionRecord> loop_;            // the loop of a contour (loop_motions)
+    std::vector<std::vector<Point>> polygons_;  // the part's loops flattened, the outline first
 };
 
 PartsList find_parts(const std::vector<PlanContour>& contours, const MotionStore& store, const Profile& profile) {

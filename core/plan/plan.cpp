@@ -32,9 +32,9 @@ struct PlateJob {
     std::vector<plan::Piece> pieces;
     plan::PlateSettings settings;
     bool keep_contours = false;
-    bool keep_motions = false;              // the cuts' records, for a PlateContoursSink
+    bool keep_motions = false;  // the cuts' records, for a PlateContoursSink
     std::vector<MotionRecord> records;
-    std::vector<MotionRange> ranges;        // of each contour's records (keep_motions)
+    std::vector<MotionRange> ranges;  // of each contour's records (keep_motions)
     std::vector<Diagnostic> found;
     DiagnosticCap cap;  // max_per_code within the plate (what it left out is counted for the tape)
     std::vector<PlanContour> contours;
@@ -84,14 +84,14 @@ struct CutPlan::State {
     const Profile& profile;
     bool keep_contours;
     double closure_mm;
-    std::vector<plan::Cut> cuts;       // the plate's cuts, in cutting order
-    std::vector<plan::Piece> pieces;   // their pieces, cut after cut
+    std::vector<plan::Cut> cuts;      // the plate's cuts, in cutting order
+    std::vector<plan::Piece> pieces;  // their pieces, cut after cut
     // The cut of each head in progress (the cut contours: marks are no part of the plan). Head 1's pieces go
     // straight to the plate's; head 2's are gathered apart (the heads' motions interleave) and join the plate's
     // when it ends, or after head 1's cut if that is still going.
     ContourBuilder<plan::Cut, kCuttingTools> cuts_found;
     std::vector<plan::Piece> head2_pieces;
-    std::vector<plan::Cut> deferred;   // head 2's cuts that ended while head 1 was cutting, with their pieces
+    std::vector<plan::Cut> deferred;  // head 2's cuts that ended while head 1 was cutting, with their pieces
     std::vector<std::vector<plan::Piece>> deferred_pieces;
     // keep_plate_motions: the plate's cutting motions as records, beside the pieces (head 2's apart as its pieces)
     PlateContoursSink* plate_sink = nullptr;
@@ -99,21 +99,21 @@ struct CutPlan::State {
     std::vector<std::vector<MotionRecord>> deferred_records;
     int plate = 1;
     bool moved = false;
-    Point home, here;                  // where the program started, where head 1 is
-    std::uint32_t feed_line = 0;       // the block that set the feed in force (39), 0: the profile's
-    double checked_feed = -1;          // the feed of the last cut motion (checked, and reported, once per change)
-    std::vector<Diagnostic> found;     // as far as `cap` admits them: the stream's, then each plate's in plate order
-    DiagnosticCap cap;                 // max_per_code for the tape
+    Point home, here;               // where the program started, where head 1 is
+    std::uint32_t feed_line = 0;    // the block that set the feed in force (39), 0: the profile's
+    double checked_feed = -1;       // the feed of the last cut motion (checked, and reported, once per change)
+    std::vector<Diagnostic> found;  // as far as `cap` admits them: the stream's, then each plate's in plate order
+    DiagnosticCap cap;              // max_per_code for the tape
     std::vector<PlanContour> contours;
     PlateRunner* runner = nullptr;
     std::vector<std::unique_ptr<PlateJob>> jobs;  // the plates handed over, in order
-    std::size_t folded = 0;            // jobs[0, folded) are folded into `found` (and freed)
-    std::size_t plate_motions = 0;     // cutting motions of the plate so far (its part: kPlanMaxPlateMotions)
-    std::size_t plate_points = 0;      // their points flattened, as held (its part: kPlanMaxPlatePoints)
+    std::size_t folded = 0;                       // jobs[0, folded) are folded into `found` (and freed)
+    std::size_t plate_motions = 0;       // cutting motions of the plate so far (its part: kPlanMaxPlateMotions)
+    std::size_t plate_points = 0;        // their points flattened, as held (its part: kPlanMaxPlatePoints)
     std::size_t cut_points[2] = {0, 0};  // the open cut's points flattened
     bool too_long[2] = {false, false};   // the open cut has more than kPlanMaxPlatePoints: left out (N615)
     std::size_t overlap_points_left = kPlanMaxOverlapPointsPerTape;  // for the collisions' overlap polygons
-    bool ended = false;                // end_input() was called
+    bool ended = false;                                              // end_input() was called
     // defer_plates: the store the plates' motions are read back from, and the plates kept (the first
     // `next_deferred` of them analysed).
     const MotionStore* store = nullptr;
@@ -151,11 +151,14 @@ struct CutPlan::State {
     // The cut `c` of head `h` gets a motion of line `line` and `points` points, cut with this kerf.
     void cut_of(plan::Cut& c, int h, std::uint32_t line, KerfSide kerf, double kerf_mm, double feed,
                 std::size_t points) {
-        if (feed != checked_feed) [[unlikely]] check_feed(line, feed);
+        if (feed != checked_feed) [[unlikely]]
+            check_feed(line, feed);
         ++plate_motions;
         count_points(c, h, points);
-        if (kerf != c.kerf) [[unlikely]] c.kerf_changed = true;
-        if (2 * kerf_mm > c.kerf_width_mm) [[unlikely]] c.kerf_width_mm = 2 * kerf_mm;
+        if (kerf != c.kerf) [[unlikely]]
+            c.kerf_changed = true;
+        if (2 * kerf_mm > c.kerf_width_mm) [[unlikely]]
+            c.kerf_width_mm = 2 * kerf_mm;
     }
     // Head 1's pieces go straight to the plate's; head 2's wait apart (the heads' motions interleave).
     std::vector<plan::Piece>& pieces_of(int h) { return h == 0 ? pieces : head2_pieces; }
@@ -190,7 +193,8 @@ struct CutPlan::State {
         cut_of(*c, h, m.line, m.kerf, m.kerf_mm, m.feed_mm_min, plan::plan_points(m));
         if (!keeps_pieces(h)) return;
         plan::append_pieces(m, pieces_of(h));
-        if (plate_sink) [[unlikely]] (h == 0 ? records : head2_records).push_back(m);
+        if (plate_sink) [[unlikely]]
+            (h == 0 ? records : head2_records).push_back(m);
     }
     // A straight motion of head 1 (most of a tape): no record made.
     [[gnu::flatten]] void add(const UnitLine& l) {
@@ -201,13 +205,15 @@ struct CutPlan::State {
         cut_of(*c, 0, l.line, l.kerf, l.kerf_mm, l.feed_mm_min, 1);
         if (!keeps_pieces(0)) return;
         pieces.push_back({l.start, l.end, {}, 0, 0, l.line, false});
-        if (plate_sink) [[unlikely]] records.push_back(record_of(l));
+        if (plate_sink) [[unlikely]]
+            records.push_back(record_of(l));
     }
 
     void end_cut(plan::Cut& c) {
         const int h = c.head == 2 ? 1 : 0;
         c.points = too_long[h] ? 0 : cut_points[h];
-        if (too_long[h]) [[unlikely]] leave_out(c);
+        if (too_long[h]) [[unlikely]]
+            leave_out(c);
         if (c.kerf_changed) c.kerf = KerfSide::Off;
         if (c.kerf == KerfSide::Off) c.kerf_width_mm = 0;
         const bool head2 = c.head == 2;
@@ -263,22 +269,21 @@ struct CutPlan::State {
         const std::uint32_t last = cuts.back().last_line;
         if (cap.admit(DiagCode::N614_PlateSplit, last, Severity::Note)) {
             const bool by_motions = plate_motions >= kPlanMaxPlateMotions;
-            found.push_back(make_diagnostic(
-                Severity::Note, DiagCode::N614_PlateSplit, last, 0,
-                by_motions ? Msg::PlanPlateSplit : Msg::PlanPlateSplitPoints,
-                {last, by_motions ? kPlanMaxPlateMotions : kPlanMaxPlatePoints}));
+            found.push_back(make_diagnostic(Severity::Note, DiagCode::N614_PlateSplit, last, 0,
+                                            by_motions ? Msg::PlanPlateSplit : Msg::PlanPlateSplitPoints,
+                                            {last, by_motions ? kPlanMaxPlateMotions : kPlanMaxPlatePoints}));
         }
         end_plate();
     }
 
     plan::PlateSettings settings() const {
-        return {closure_mm, profile.closure_gap_mm, profile.lead_in_required, plate, profile.table, profile.max_per_code};
+        return {closure_mm, profile.closure_gap_mm, profile.lead_in_required,
+                plate,      profile.table,          profile.max_per_code};
     }
     // The plate ends (no cut is going on).
     void end_plate() {
         // (the runner's queue weighs a plate by its motions, or by its points at the scale of the motions' limit)
-        const std::size_t weight =
-            std::max(plate_motions, plate_points / (kPlanMaxPlatePoints / kPlanMaxPlateMotions));
+        const std::size_t weight = std::max(plate_motions, plate_points / (kPlanMaxPlatePoints / kPlanMaxPlateMotions));
         plate_motions = 0;
         plate_points = 0;
         if (cuts.empty()) return;
@@ -340,8 +345,7 @@ struct CutPlan::State {
     void keep_plate() {
         DeferredPlate kept{{}, settings()};
         kept.cuts.reserve(cuts.size());
-        for (const plan::Cut& c : cuts)
-            kept.cuts.push_back({c, c.kerf_width_mm, c.kerf});
+        for (const plan::Cut& c : cuts) kept.cuts.push_back({c, c.kerf_width_mm, c.kerf});
         deferred_plates.push_back(std::move(kept));
         cuts.clear();
         pieces.clear();
@@ -390,9 +394,9 @@ struct CutPlan::State {
     void check_feed(std::uint32_t line, double feed) {
         checked_feed = feed;
         if (feed >= profile.feed_min_mm_min && feed <= profile.feed_max_mm_min) return;
-        Diagnostic d = make_diagnostic(Severity::Warning, DiagCode::W608_FeedOutOfRange, line, 0, Msg::PlanFeed,
-                                       {number_text(feed), number_text(profile.feed_min_mm_min),
-                                        number_text(profile.feed_max_mm_min)});
+        Diagnostic d = make_diagnostic(
+            Severity::Warning, DiagCode::W608_FeedOutOfRange, line, 0, Msg::PlanFeed,
+            {number_text(feed), number_text(profile.feed_min_mm_min), number_text(profile.feed_max_mm_min)});
         if (feed_line > 0) d.related.push_back({feed_line, feed_line, Msg::RelatedFeedSet, {}});
         if (cap.admit(d)) found.push_back(std::move(d));
     }
@@ -434,7 +438,8 @@ std::size_t CutPlan::deferred_plates() const { return s_->deferred_plates.size()
 
 std::vector<Diagnostic> CutPlan::finish() {
     end_input();
-    while (s_->analyse_deferred()) {}
+    while (s_->analyse_deferred()) {
+    }
     s_->collect();
     return std::move(s_->found);
 }

@@ -20,9 +20,9 @@ namespace essi::plan {
 // A programmed motion of a cut, as small as the analysis needs it (parabolas arrive as lines).
 struct Piece {
     Point start, end;
-    Point centre;      // arcs
-    double sweep = 0;  // arcs: signed, radians
-    double radius = 0; // arcs
+    Point centre;       // arcs
+    double sweep = 0;   // arcs: signed, radians
+    double radius = 0;  // arcs
     std::uint32_t line = 0;
     bool arc = false;
     bool continues = false;  // a parabola's chord after its first: of the same motion as the piece before
@@ -36,20 +36,20 @@ struct Piece {
 struct Cut : Contour {
     std::uint32_t first_piece = 0, end_piece = 0;
     std::uint32_t first_record = 0, end_record = 0;  // its motions kept as records (CutPlan::keep_plate_motions)
-    int order = 0;                  // cutting order in the plate
+    int order = 0;                                   // cutting order in the plate
     KerfSide kerf = KerfSide::Off;  // the side in force on the whole cut (Off when it changes along it)
     bool kerf_changed = false;      // (while it is cut: the side changed along it)
     bool closed = false;            // it holds a loop
     double kerf_width_mm = 0;       // the full width the compensation cuts (0 when off)
     Box box;
-    std::size_t points = 0;         // its pieces' points flattened (plan_points of its motions)
+    std::size_t points = 0;  // its pieces' points flattened (plan_points of its motions)
 
     // Its loop, when it holds one: pieces [loop_begin, loop_end) (plate indices), starting at `loop_start` on the
     // first of them (its start, or a point on it for a path that closes on a line rather than at a point).
     std::uint32_t loop_begin = 0, loop_end = 0;
     Point loop_start;
     Box loop_box;
-    double area_mm2 = 0;            // signed, exact (arcs as arcs)
+    double area_mm2 = 0;  // signed, exact (arcs as arcs)
     // Left open: how far the end is from where the contour began, and that point's line.
     double gap_mm = 0;
     Point gap_from;
@@ -78,8 +78,8 @@ inline void append_pieces(const MotionRecord& m, std::vector<Piece>& out) {
 // The motion piece `k` of the cut is part of, counted from the cut's first (0).
 [[nodiscard]] std::uint32_t motion_of_piece(const Cut& cut, std::span<const Piece> pieces, std::uint32_t k);
 
-// Finds the cut's box and its loop (or its gap): fills box, closed, loop_*, area, gap_*. `closure_mm`: ends this close to a point
-// passed close the loop (the arc tolerance in mm).
+// Finds the cut's box and its loop (or its gap): fills box, closed, loop_*, area, gap_*. `closure_mm`: ends this close
+// to a point passed close the loop (the arc tolerance in mm).
 void close_loop(Cut& cut, std::span<const Piece> pieces, double closure_mm, double gap_limit_mm);
 // The loop flattened within kPlanChordToleranceMm, without repeating its first point.
 std::vector<Point> loop_polygon(const Cut& cut, std::span<const Piece> pieces);
@@ -96,8 +96,8 @@ bool inside_loop(const Cut& cut, std::span<const Piece> pieces, Point q);
 
 // A plate's cuts analysed: roles by nesting and the rules that need contours (W601-W607, W610, N612).
 struct PlateSettings {
-    double closure_mm = 0;      // the arc tolerance in mm
-    double gap_limit_mm = 0;    // closure_gap_mm
+    double closure_mm = 0;    // the arc tolerance in mm
+    double gap_limit_mm = 0;  // closure_gap_mm
     bool lead_in_required = false;
     int plate = 1;
     std::optional<TableLimits> table;  // W611

@@ -49,7 +49,8 @@ class EdgeReach {
 public:
     EdgeReach(Point a, Point b, double margin)
         : a_(a), lo_(std::min(a.y, b.y)), hi_(std::max(a.y, b.y)), margin_(margin),
-          level_x_(std::max(a.x, b.x) + margin), slope_(a.y == b.y ? 0 : (b.x - a.x) / (b.y - a.y)), level_(a.y == b.y) {}
+          level_x_(std::max(a.x, b.x) + margin), slope_(a.y == b.y ? 0 : (b.x - a.x) / (b.y - a.y)),
+          level_(a.y == b.y) {}
     [[nodiscard]] double in(double y0, double y1) const {
         if (hi_ + margin_ <= y0 || lo_ - margin_ >= y1) return -std::numeric_limits<double>::infinity();
         if (level_) return level_x_;
@@ -110,7 +111,8 @@ void raise_exactly(const std::vector<std::vector<Point>>& outlines, const std::v
         for (const Point& p : outlines[k]) o.furthest = std::max(o.furthest, p.x + margin);
         order.push_back(o);
     }
-    std::stable_sort(order.begin(), order.end(), [](const Outline& a, const Outline& b) { return a.furthest > b.furthest; });
+    std::stable_sort(order.begin(), order.end(),
+                     [](const Outline& a, const Outline& b) { return a.furthest > b.furthest; });
     std::vector<std::uint32_t> next(reached.size() + 1);
     for (std::size_t s = 0; s < next.size(); ++s) next[s] = static_cast<std::uint32_t>(s);
     const auto open_from = [&](std::uint32_t s) {

@@ -66,6 +66,11 @@ public:
         buf_.append(digits, end);
     }
     template <class Int>
+    void integer(std::string_view name, Int v) {
+        key(name);
+        integer(v);
+    }
+    template <class Int>
     void integer(Int v) {
         char digits[24];
         const auto r = std::to_chars(digits, digits + sizeof digits, v);
@@ -121,35 +126,28 @@ void part_json(JsonText& j, const Part& p) {
     for (const PartCut& c : p.cuts) {
         j.element();
         j.open('{');
-        j.key("first_line");
-        j.integer(c.first_line);
-        j.key("last_line");
-        j.integer(c.last_line);
+        j.integer("first_line", c.first_line);
+        j.integer("last_line", c.last_line);
         j.close('}');
     }
     j.close(']');
-    j.key("group");
-    j.integer(p.group);
+    j.integer("group", p.group);
     j.key("label_mm");
     j.open('{');
     j.rounded("x", p.label_at.x);
     j.rounded("y", p.label_at.y);
     j.close('}');
-    j.key("plate");
-    j.integer(p.plate);
+    j.integer("plate", p.plate);
     j.rounded("turned_deg", p.turned_deg);
     j.close('}');
 }
 
 void group_json(JsonText& j, const PartGroup& g) {
     j.open('{');
-    j.key("count");
-    j.integer(g.count);
+    j.integer("count", g.count);
     j.rounded("cut_length_mm", g.cut_length_mm);
-    j.key("group");
-    j.integer(g.number);
-    j.key("holes");
-    j.integer(g.holes);
+    j.integer("group", g.number);
+    j.integer("holes", g.holes);
     j.rounded_or_null("mass_kg", g.mass_kg);
     j.key("mirror_of");
     if (g.mirror_of > 0) j.integer(g.mirror_of);
@@ -167,8 +165,7 @@ void group_json(JsonText& j, const PartGroup& g) {
         j.integer(k);
     }
     j.close(']');
-    j.key("pierces");
-    j.integer(g.pierces);
+    j.integer("pierces", g.pierces);
     j.close('}');
 }
 
@@ -178,10 +175,8 @@ void plate_json(JsonText& j, const PlateUse& p) {
     j.key("from_profile");
     j.boolean(p.from_profile);
     j.rounded("net_area_mm2", p.net_area_mm2);
-    j.key("parts");
-    j.integer(p.parts);
-    j.key("plate");
-    j.integer(p.plate);
+    j.integer("parts", p.parts);
+    j.integer("plate", p.plate);
     j.key("plate_mm");
     j.open('{');
     j.rounded("x", p.area.max_x - p.area.min_x);

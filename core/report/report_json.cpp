@@ -15,9 +15,7 @@ constexpr double pow10(int n) {
 }
 constexpr double kJsonLengthScale = pow10(kJsonLengthDecimals);
 
-nlohmann::json point_to_json(Point p) {
-    return {{"x", round_for_json(p.x)}, {"y", round_for_json(p.y)}};
-}
+nlohmann::json point_to_json(Point p) { return {{"x", round_for_json(p.x)}, {"y", round_for_json(p.y)}}; }
 
 nlohmann::json rounded_or_null(const std::optional<double>& v) {
     return v ? nlohmann::json(round_for_json(*v)) : nlohmann::json(nullptr);
@@ -42,7 +40,6 @@ double round_for_json(double value) {
     const double r = std::round(value * kJsonLengthScale) / kJsonLengthScale;
     return r == 0 ? 0.0 : r;  // no "-0.0" in reports
 }
-
 
 nlohmann::json diagnostic_to_json(const Diagnostic& d, Lang lang) {
     nlohmann::json j = nlohmann::json::object();
@@ -106,11 +103,13 @@ nlohmann::json stats_to_json(const Stats& s) {
     if (s.machine_time) {
         const MachineTime& t = *s.machine_time;
         j["machine_time_s"] = round_for_json(t.total_s);
-        j["machine_time_breakdown_s"] = {
-            {"cutting", round_for_json(t.cutting_s)}, {"marking", round_for_json(t.marking_s)},
-            {"rapid", round_for_json(t.rapid_s)},     {"travel", round_for_json(t.travel_s)},
-            {"pierce", round_for_json(t.pierce_s)},   {"dwell", round_for_json(t.dwell_s)},
-            {"acceleration", round_for_json(t.acceleration_s)}};
+        j["machine_time_breakdown_s"] = {{"cutting", round_for_json(t.cutting_s)},
+                                         {"marking", round_for_json(t.marking_s)},
+                                         {"rapid", round_for_json(t.rapid_s)},
+                                         {"travel", round_for_json(t.travel_s)},
+                                         {"pierce", round_for_json(t.pierce_s)},
+                                         {"dwell", round_for_json(t.dwell_s)},
+                                         {"acceleration", round_for_json(t.acceleration_s)}};
     }
     if (s.cost) j["cost"] = cost_to_json(*s.cost);
     if (s.consumables) {
@@ -155,11 +154,14 @@ nlohmann::json group_to_json(const PartGroup& g) {
 nlohmann::json plate_to_json(const PlateUse& p) {
     nlohmann::json remnant = nullptr;
     if (p.remnant)
-        remnant = {{"x0", round_for_json(p.remnant->min_x)}, {"y0", round_for_json(p.remnant->min_y)},
-                   {"x1", round_for_json(p.remnant->max_x)}, {"y1", round_for_json(p.remnant->max_y)}};
+        remnant = {{"x0", round_for_json(p.remnant->min_x)},
+                   {"y0", round_for_json(p.remnant->min_y)},
+                   {"x1", round_for_json(p.remnant->max_x)},
+                   {"y1", round_for_json(p.remnant->max_y)}};
     return {{"plate", p.plate},
             {"area_mm", box_to_json(p.area)},
-            {"plate_mm", {{"x", round_for_json(p.area.max_x - p.area.min_x)}, {"y", round_for_json(p.area.max_y - p.area.min_y)}}},
+            {"plate_mm",
+             {{"x", round_for_json(p.area.max_x - p.area.min_x)}, {"y", round_for_json(p.area.max_y - p.area.min_y)}}},
             {"from_profile", p.from_profile},
             {"parts", p.parts},
             {"net_area_mm2", round_for_json(p.net_area_mm2)},

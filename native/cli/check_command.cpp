@@ -127,26 +127,30 @@ Subcommand define_check(CLI::App& essi) {
         ->type_name("LIST");
     check->add_flag("--no-sniff", o->no_sniff,
                     "In directories, do not look into files with other extensions for ESSI content");
-    check->add_option("-j,--jobs", o->jobs, "Files checked in parallel (default: all cores)")->check(CLI::Range(1u, 1024u));
+    check->add_option("-j,--jobs", o->jobs, "Files checked in parallel (default: all cores)")
+        ->check(CLI::Range(1u, 1024u));
     check->add_option("--fail-on", o->fail_on, "Exit code 1 on: error, warning or never")
         ->check(CLI::IsMember({"error", "warning", "never"}))
         ->type_name("error|warning|never")
         ->capture_default_str();
-    check->add_option("--max-diagnostics", o->max_diagnostics,
-                      "At most N diagnostics per file (the rest are counted in a note)")
+    check
+        ->add_option("--max-diagnostics", o->max_diagnostics,
+                     "At most N diagnostics per file (the rest are counted in a note)")
         ->check(CLI::Range(0LL, 1LL << 40))
         ->type_name("N");
-    check->add_option("--max-per-code", o->max_per_code,
-                      "At most N diagnostics of one code per file, then one that counts the rest (default: the "
-                      "profile's max_per_code, 1000; 0: no limit)")
+    check
+        ->add_option("--max-per-code", o->max_per_code,
+                     "At most N diagnostics of one code per file, then one that counts the rest (default: the "
+                     "profile's max_per_code, 1000; 0: no limit)")
         ->check(CLI::Range(0LL, static_cast<long long>(kMaxPerCodeLimit)))
         ->type_name("N");
     check->add_flag("--parts", o->parts,
                     "JSON: each file's parts, groups and plates too (essi parts; found in the same pass)");
     check->add_flag("-q,--quiet", o->quiet,
                     "Text: only errors, warnings and the summary; json/junit/sarif: no summary on stderr");
-    check->add_option("--docs-url", o->docs_url,
-                      "Base URL of the docs/ folder for SARIF help links (helpUri = URL/diagnostics.md#e301)")
+    check
+        ->add_option("--docs-url", o->docs_url,
+                     "Base URL of the docs/ folder for SARIF help links (helpUri = URL/diagnostics.md#e301)")
         ->capture_default_str();
     add_max_size_option(check, o->max_size);
     check->add_option("PATH", o->paths, "Tape files or directories ('-' reads standard input)")->required();

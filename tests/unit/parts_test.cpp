@@ -84,7 +84,8 @@ void expect_values(const Expected& e, const std::map<std::string, double>& actua
 
 std::string lines_text(const essi::Part& p) {
     std::string s;
-    for (const essi::PartCut& c : p.cuts) s += (s.empty() ? "" : ",") + std::to_string(c.first_line) + "-" + std::to_string(c.last_line);
+    for (const essi::PartCut& c : p.cuts)
+        s += (s.empty() ? "" : ",") + std::to_string(c.first_line) + "-" + std::to_string(c.last_line);
     return s;
 }
 
@@ -101,10 +102,10 @@ void check_case(const std::string& name) {
         } else if (e.kind == "group") {
             ASSERT_LE(e.number, p.groups.size()) << what;
             const essi::PartGroup& g = p.groups[e.number - 1];
-            std::map<std::string, double> actual{{"count", g.count},           {"net_area_mm2", g.net_area_mm2},
-                                                 {"length_mm", g.length_mm},   {"width_mm", g.width_mm},
-                                                 {"cut_length_mm", g.cut_length_mm}, {"holes", g.holes},
-                                                 {"pierces", g.pierces},       {"mirror_of", g.mirror_of}};
+            std::map<std::string, double> actual{
+                {"count", g.count},       {"net_area_mm2", g.net_area_mm2},   {"length_mm", g.length_mm},
+                {"width_mm", g.width_mm}, {"cut_length_mm", g.cut_length_mm}, {"holes", g.holes},
+                {"pierces", g.pierces},   {"mirror_of", g.mirror_of}};
             if (g.mass_kg) actual["mass_kg"] = *g.mass_kg;
             expect_values(e, actual, what);
         } else if (e.kind == "part") {
@@ -116,8 +117,9 @@ void check_case(const std::string& name) {
             ASSERT_LE(e.number, p.plates.size()) << what;
             const essi::PlateUse& u = p.plates[e.number - 1];
             std::map<std::string, double> actual{
-                {"x0", u.area.min_x}, {"y0", u.area.min_y}, {"x1", u.area.max_x}, {"y1", u.area.max_y},
-                {"parts", u.parts},   {"net_area_mm2", u.net_area_mm2},          {"utilisation", u.utilisation}};
+                {"x0", u.area.min_x},          {"y0", u.area.min_y}, {"x1", u.area.max_x},
+                {"y1", u.area.max_y},          {"parts", u.parts},   {"net_area_mm2", u.net_area_mm2},
+                {"utilisation", u.utilisation}};
             if (u.scrap_kg) actual["scrap_kg"] = *u.scrap_kg;
             if (u.remnant) {
                 actual["remnant_x0"] = u.remnant->min_x;
@@ -148,9 +150,14 @@ TEST(Parts, CorpusFlangeByHand) {
         ASSERT_EQ(p.groups.size(), 1u);
         const essi::PartGroup& g = p.groups[0];
         expect_values(e,
-                      {{"count", g.count}, {"net_area_mm2", g.net_area_mm2}, {"length_mm", g.length_mm},
-                       {"width_mm", g.width_mm}, {"cut_length_mm", g.cut_length_mm}, {"holes", g.holes},
-                       {"pierces", g.pierces}, {"mirror_of", g.mirror_of}},
+                      {{"count", g.count},
+                       {"net_area_mm2", g.net_area_mm2},
+                       {"length_mm", g.length_mm},
+                       {"width_mm", g.width_mm},
+                       {"cut_length_mm", g.cut_length_mm},
+                       {"holes", g.holes},
+                       {"pierces", g.pierces},
+                       {"mirror_of", g.mirror_of}},
                       "group 1");
     }
 }
@@ -168,7 +175,8 @@ TEST(Parts, JsonTextAndCsv) {
     const std::string text = essi::parts_text(c.parts);
     EXPECT_NE(text.find("1 part in 1 group\n"), std::string::npos) << text;
     EXPECT_NE(text.find("group 1: 1 x, net area 4685.841 mm², outline 100.000 x 50.000 mm"), std::string::npos) << text;
-    EXPECT_NE(text.find("plate 1: 300.000 x 100.000 mm (profile plate_mm), 1 part, utilisation 15.6 %"), std::string::npos)
+    EXPECT_NE(text.find("plate 1: 300.000 x 100.000 mm (profile plate_mm), 1 part, utilisation 15.6 %"),
+              std::string::npos)
         << text;
     EXPECT_EQ(essi::parts_csv(c.parts),
               "group,count,net_area_mm2,length_mm,width_mm,cut_length_mm,holes,pierces,mass_kg,mirror_of,parts\r\n"

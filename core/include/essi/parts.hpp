@@ -55,41 +55,41 @@ struct PartCut {
 };
 
 struct Part {
-    unsigned group = 0;          // its group's number (1, 2, ...)
+    unsigned group = 0;  // its group's number (1, 2, ...)
     int plate = 1;
-    std::vector<PartCut> cuts;   // its outline, then its holes (in the order they are cut)
-    Box box;                     // its outline's exact box
-    Point label_at;              // a point of the part's material, for its number on a drawing
-    double cut_length_mm = 0;    // its cuts' programmed length, pierce to torch off (lead-ins and -outs included)
-    double turned_deg = 0;       // how far it is turned from its group's first part, counter-clockwise (-180, 180]
+    std::vector<PartCut> cuts;  // its outline, then its holes (in the order they are cut)
+    Box box;                    // its outline's exact box
+    Point label_at;             // a point of the part's material, for its number on a drawing
+    double cut_length_mm = 0;   // its cuts' programmed length, pierce to torch off (lead-ins and -outs included)
+    double turned_deg = 0;      // how far it is turned from its group's first part, counter-clockwise (-180, 180]
 };
 
 struct PartGroup {
-    unsigned number = 0;         // 1, 2, ...: in the order their first parts are cut
+    unsigned number = 0;  // 1, 2, ...: in the order their first parts are cut
     unsigned count = 0;
-    double net_area_mm2 = 0;     // the outline's area less its holes' (arcs and parabolas exact)
+    double net_area_mm2 = 0;             // the outline's area less its holes' (arcs and parabolas exact)
     double length_mm = 0, width_mm = 0;  // the outline's smallest enclosing rectangle, length >= width
-    double cut_length_mm = 0;    // per part: the mean of its parts' cut lengths
+    double cut_length_mm = 0;            // per part: the mean of its parts' cut lengths
     unsigned holes = 0;
-    unsigned pierces = 0;        // per part: its cuts (the outline's and each hole's)
-    std::optional<double> mass_kg;  // net area x the profile's material thickness and density
-    unsigned mirror_of = 0;      // the group of its mirror image (0: none, or the part is its own mirror image)
+    unsigned pierces = 0;              // per part: its cuts (the outline's and each hole's)
+    std::optional<double> mass_kg;     // net area x the profile's material thickness and density
+    unsigned mirror_of = 0;            // the group of its mirror image (0: none, or the part is its own mirror image)
     std::vector<std::uint32_t> parts;  // its parts (indices in PartsList::parts), in cutting order
 };
 
 struct PlateUse {
     int plate = 1;
-    Box area;                    // the plate: profile plate_mm from the program's origin, else the parts' box
-    bool from_profile = false;   // `area` is plate_mm's
+    Box area;                   // the plate: profile plate_mm from the program's origin, else the parts' box
+    bool from_profile = false;  // `area` is plate_mm's
     unsigned parts = 0;
-    double net_area_mm2 = 0;     // its parts' net areas
-    double utilisation = 0;      // net_area_mm2 / the plate's area
+    double net_area_mm2 = 0;         // its parts' net areas
+    double utilisation = 0;          // net_area_mm2 / the plate's area
     std::optional<double> scrap_kg;  // (plate area - net area) x thickness x density, with the profile's material
-    std::optional<Box> remnant;  // the largest rectangle at the plate's far end in x clear of every part and kerf
+    std::optional<Box> remnant;      // the largest rectangle at the plate's far end in x clear of every part and kerf
 };
 
 struct PartsList {
-    std::vector<Part> parts;     // in cutting order (by their outlines)
+    std::vector<Part> parts;  // in cutting order (by their outlines)
     std::vector<PartGroup> groups;
     std::vector<PlateUse> plates;  // the plates that hold parts
 };

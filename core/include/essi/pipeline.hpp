@@ -73,17 +73,28 @@ public:
     // After finish_before_plan: the cut plan's diagnostics (the plates not analysed yet are analysed first),
     // unsorted. Call once.
     [[nodiscard]] std::vector<Diagnostic> plan_findings();
+
 private:
     void finish_reading();  // the interpreter's and the plan's input ended; the statistics taken
     void keep_diagnostics_from(std::size_t first);  // max_per_code on the new ones, then max_kept_
-    void finish_diagnostics();  // the summaries of max_per_code, sorted, cut to max_kept_
+    void finish_diagnostics();                      // the summaries of max_per_code, sorted, cut to max_kept_
     // The cut plan, then `also`: the one more sink the interpreter feeds.
     class PlanThenAlso final : public MotionSink {
     public:
         PlanThenAlso(CutPlan& plan, MotionSink& also) : plan_(plan), also_(also) {}
-        void on_motion(const MotionRecord& m) override { plan_.on_motion(m); also_.on_motion(m); }
-        void on_event(const MachineEvent& e) override { plan_.on_event(e); also_.on_event(e); }
-        void on_line(const UnitLine& l) override { plan_.on_line(l); also_.on_line(l); }
+        void on_motion(const MotionRecord& m) override {
+            plan_.on_motion(m);
+            also_.on_motion(m);
+        }
+        void on_event(const MachineEvent& e) override {
+            plan_.on_event(e);
+            also_.on_event(e);
+        }
+        void on_line(const UnitLine& l) override {
+            plan_.on_line(l);
+            also_.on_line(l);
+        }
+
     private:
         CutPlan& plan_;
         MotionSink& also_;
@@ -91,13 +102,13 @@ private:
     std::string_view bytes_;
     const Profile& profile_;
     CheckResult result_;
-    DiagnosticCap cap_;        // max_per_code for the diagnostics of the reader and the interpreter
+    DiagnosticCap cap_;  // max_per_code for the diagnostics of the reader and the interpreter
     std::size_t max_kept_ = static_cast<std::size_t>(-1);
     StatsSink stats_;
-    CutPlan plan_;              // the cut plan's rules (essi/plan.hpp)
+    CutPlan plan_;                        // the cut plan's rules (essi/plan.hpp)
     std::unique_ptr<PartsFinder> parts_;  // find_parts
     std::unique_ptr<PlanThenAlso> both_;
-    Interpreter interpreter_;   // feeds the statistics directly, and the plan (and `also`)
+    Interpreter interpreter_;  // feeds the statistics directly, and the plan (and `also`)
     unsigned long long blocks_ = 0;
 };
 

@@ -67,11 +67,11 @@ constexpr std::size_t kPlanMaxPlateMotions = std::size_t{1} << 17;
 constexpr std::size_t kPlanMaxPlatePoints = std::size_t{1} << 19;
 
 enum class ContourRole : std::uint8_t {
-    Part,     // holds holes, or lies inside a hole (even depth >= 2)
-    Hole,     // inside another contour (odd depth)
-    LonePart, // lone, its kerf outside: a part by its program
-    LoneHole, // lone, its kerf inside: a hole in the plate by its program
-    Lone,     // lone, no kerf compensation: unknown
+    Part,      // holds holes, or lies inside a hole (even depth >= 2)
+    Hole,      // inside another contour (odd depth)
+    LonePart,  // lone, its kerf outside: a part by its program
+    LoneHole,  // lone, its kerf inside: a hole in the plate by its program
+    Lone,      // lone, no kerf compensation: unknown
 };
 [[nodiscard]] const char* contour_role_name(ContourRole r);  // "part", "hole", "lone-part", "lone-hole", "lone"
 
