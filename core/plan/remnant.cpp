@@ -18,12 +18,21 @@ namespace {
 // The slabs' bounds: the outlines' ys (each grown by the margin both ways) within the plate, or, past
 // kPartsMaxRemnantSlabs of them, that many even slabs.
 std::vector<double> slab_bounds(const Box& plate, const std::vector<std::vector<Point>>& outlines, double margin) {
-    std::vector<double> ys{plate.min_y, plate.max_y};
+    // (the points' ys sorted once: less the margin and plus it they are two sorted runs, merged)
+    std::vector<double> at;
     for (const std::vector<Point>& o : outlines)
         for (const Point& p : o)
-            for (const double y : {p.y - margin, p.y + margin})
-                if (y > plate.min_y && y < plate.max_y) ys.push_back(y);
-    std::sort(ys.begin(), ys.end());
+            if (!std::isnan(p.y)) at.push_back(p.y);
+    std::sort(at.begin(), at.end());
+    std::vector<double> ys;
+    ys.reserve(2 * at.size() + 2);
+    ys.push_back(plate.min_y);
+    for (std::size_t below = 0, above = 0; below < at.size() || above < at.size();) {
+        const bool take_below = above == at.size() || (below < at.size() && at[below] - margin <= at[above] + margin);
+        const double y = take_below ? at[below++] - margin : at[above++] + margin;
+        if (y > plate.min_y && y < plate.max_y) ys.push_back(y);
+    }
+    ys.push_back(plate.max_y);
     ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
     if (ys.size() <= kPartsMaxRemnantSlabs + 1) return ys;
     ys.resize(kPartsMaxRemnantSlabs + 1);
