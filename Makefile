@@ -73,6 +73,8 @@ bench: setup-test
 	PROFILE=tests/bench/every_rule.profile.json GOAL_MBPS=150 scripts/bench_compare 100
 	@echo "== essi check with machine time, cost and consumables against without, 100 MB nest (goal: within 10 %) =="
 	scripts/bench_machine_time 100
+	@echo "== essi check --parts against without, one thread, 100 MB nest (goal: within 1.10x) =="
+	scripts/bench_parts 100
 	cmake --preset wasm
 	@if [ -f third_party/benchmark/CMakeLists.txt ]; then \
 	  cmake --build --preset wasm -j$(JOBS) --target essi_bench && \

@@ -124,10 +124,10 @@ void check_batch(const std::vector<std::string>& files, const TapeRequest& reque
         } else {
             item.read_ok = true;
             const TapeSetup setup = request.setup(file.bytes);
-            item.report.result = pipelined ? check_tape_pipelined(file.bytes, setup, options.max_diagnostics)
-                                           : check_tape(file.bytes, setup, options.max_diagnostics);
+            item.report.result = pipelined
+                                     ? check_tape_pipelined(file.bytes, setup, options.max_diagnostics, options.parts)
+                                     : check_tape(file.bytes, setup, options.max_diagnostics, options.parts);
             limit_diagnostics(item.report.result, options.max_diagnostics);  // (with the setup's note)
-            if (options.parts) item.report.result.parts = tape_parts(file.bytes, setup.profile, setup.format);
         }
         item.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };

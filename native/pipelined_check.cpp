@@ -10,16 +10,18 @@
 
 namespace essi::native {
 
-CheckResult check_tape_pipelined(std::string_view bytes, const TapeSetup& setup, std::size_t max_diagnostics) {
-    CheckResult r = check_tape_pipelined(bytes, setup.profile, setup.format, max_diagnostics);
+CheckResult check_tape_pipelined(std::string_view bytes, const TapeSetup& setup, std::size_t max_diagnostics,
+                                 bool parts) {
+    CheckResult r = check_tape_pipelined(bytes, setup.profile, setup.format, max_diagnostics, parts);
     record_setup(r, setup);
     return r;
 }
 
 CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile, InputFormat format,
-                                 std::size_t max_diagnostics) {
+                                 std::size_t max_diagnostics, bool parts) {
     // (without threads, e.g. under Emscripten without pthreads: the same check on this thread)
-    if (bytes.size() < kPipelineMinBytes || !kHaveThreads) return check_tape(bytes, profile, format, max_diagnostics);
+    if (bytes.size() < kPipelineMinBytes || !kHaveThreads)
+        return check_tape(bytes, profile, format, max_diagnostics, parts);
 
     // A ring of chunks: the reader fills slot k, the checker empties it, in order. A slot changes hands through
     // its atomic `full` flag (C++20 wait/notify: a short spin, then a futex), so a thread that is only a little
@@ -60,6 +62,7 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
     TapeChecker checker(bytes, profile);
     checker.set_max_diagnostics(max_diagnostics);
     checker.set_plate_runner(&plates);
+    if (parts) checker.find_parts();
     for (std::size_t k = 0;; ++k) {
         Slot& slot = slots[k % slots.size()];
         slot.full.wait(false, std::memory_order_acquire);

@@ -14,11 +14,14 @@ constexpr std::size_t kPipelineMinBytes = 1u << 20;
 constexpr std::size_t kPipelineChunkBlocks = 16384;
 constexpr int kPipelineChunks = 4;
 
+// `parts`: the result has the parts list too (TapeChecker::find_parts).
 [[nodiscard]] CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
                                                InputFormat format = InputFormat::Essi,
-                                               std::size_t max_diagnostics = static_cast<std::size_t>(-1));
+                                               std::size_t max_diagnostics = static_cast<std::size_t>(-1),
+                                               bool parts = false);
 // The check of a tape as `setup` reads it (check_tape(bytes, setup) on two cores).
 [[nodiscard]] CheckResult check_tape_pipelined(std::string_view bytes, const TapeSetup& setup,
-                                               std::size_t max_diagnostics = static_cast<std::size_t>(-1));
+                                               std::size_t max_diagnostics = static_cast<std::size_t>(-1),
+                                               bool parts = false);
 
 }  // namespace essi::native

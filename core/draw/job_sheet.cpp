@@ -336,8 +336,7 @@ JobSheet make_job_sheet(const CheckResult& result, const Profile& profile, Sheet
 
 JobSheetResult job_sheet(std::string_view bytes, const TapeSetup& setup, const JobSheetInput& in) {
     JobSheetResult out;
-    out.result = check_tape(bytes, setup, in.max_diagnostics);
-    out.result.parts = tape_parts(bytes, setup.profile, setup.format);
+    out.result = check_tape(bytes, setup, in.max_diagnostics, /*parts*/ true);
     out.sheet = job_sheet_of(bytes, setup, out.result, in);
     return out;
 }

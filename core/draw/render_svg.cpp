@@ -305,8 +305,7 @@ RenderResult render_svg(std::string_view bytes, const Profile& profile, const Re
                         InputFormat format) {
     RenderResult out;
     // Pass 1: the check (diagnostics, stats, extent).
-    out.result = check_tape(bytes, profile, format);
-    if (options.remnant) out.result.parts = tape_parts(bytes, profile, format);
+    out.result = check_tape(bytes, profile, format, static_cast<std::size_t>(-1), options.remnant);
     const Stats& st = out.result.stats;
     Box box = st.motion_bbox;
     box.add(st.cut_bbox);

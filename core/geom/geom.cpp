@@ -278,6 +278,58 @@ void add_moments(const MotionRecord& m, double f0, double f1, AreaTerms& t) {
     }
 }
 
+// The moments of an arc of one radius r about centre c, in closed form: with x = cx + r cos a, y = cy + r sin a
+// from the start's angle a0 to a1 = a0 + sweep,
+//   ∫ x² dy = cx² r [sin a] + cx r² [a + sin a cos a] + r³ [sin a - sin³ a / 3],
+//   ∫ y² dx = cy² r [cos a] - cy r² [a - sin a cos a] + r³ [cos a - cos³ a / 3]
+// (each [f] is f(a1) - f(a0); a1's direction is the start's turned by the sweep).
+void add_circular_arc_moments(const MotionRecord& m, AreaTerms& t) {
+    const double r = m.radius, cx = m.centre.x, cy = m.centre.y;
+    const double r0 = std::hypot(m.start.x - cx, m.start.y - cy);
+    const double c0 = r0 > 0 ? (m.start.x - cx) / r0 : 1, s0 = r0 > 0 ? (m.start.y - cy) / r0 : 0;
+    const double turn_c = std::cos(m.sweep), turn_s = std::sin(m.sweep);
+    const double c1 = c0 * turn_c - s0 * turn_s, s1 = s0 * turn_c + c0 * turn_s;
+    const double sc = s1 * c1 - s0 * c0;
+    t.x2dy += cx * cx * r * (s1 - s0) + cx * r * r * (m.sweep + sc) +
+              r * r * r * ((s1 - s1 * s1 * s1 / 3) - (s0 - s0 * s0 * s0 / 3));
+    t.y2dx += cy * cy * r * (c1 - c0) - cy * r * r * (m.sweep - sc) +
+              r * r * r * ((c1 - c1 * c1 * c1 / 3) - (c0 - c0 * c0 * c0 / 3));
+}
+
+// add_moments over an arc's pieces of at most kMomentStep, the points' directions turned from the start's by
+// rotations rather than each found by its own sine and cosine (the same nodes, the same sums).
+void add_arc_moments(const MotionRecord& m, AreaTerms& t) {
+    if (m.radius == m.end_radius) {
+        add_circular_arc_moments(m, t);
+        return;
+    }
+    const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(m.sweep) / kMomentStep)));
+    const double step = m.sweep / pieces, dr = m.end_radius - m.radius;
+    const double r0 = std::hypot(m.start.x - m.centre.x, m.start.y - m.centre.y);
+    // the direction of the piece's start (cos, sin), and the turn from it to each node
+    double c = r0 > 0 ? (m.start.x - m.centre.x) / r0 : 1, s = r0 > 0 ? (m.start.y - m.centre.y) / r0 : 0;
+    double node_c[5], node_s[5];
+    for (int i = 0; i < 5; ++i) {
+        node_c[i] = std::cos(step * kGaussNodes[i]);
+        node_s[i] = std::sin(step * kGaussNodes[i]);
+    }
+    const double step_c = std::cos(step), step_s = std::sin(step);
+    for (int k = 0; k < pieces; ++k) {
+        for (int i = 0; i < 5; ++i) {
+            const double f = (k + kGaussNodes[i]) / pieces, w = kGaussWeights[i] / pieces;
+            const double ca = c * node_c[i] - s * node_s[i], sa = s * node_c[i] + c * node_s[i];
+            const double r = m.radius + dr * f;
+            const Point p{m.centre.x + r * ca, m.centre.y + r * sa};
+            const Point v{dr * ca - r * m.sweep * sa, dr * sa + r * m.sweep * ca};
+            t.x2dy += w * p.x * p.x * v.y;
+            t.y2dx += w * p.y * p.y * v.x;
+        }
+        const double next_c = c * step_c - s * step_s;
+        s = s * step_c + c * step_s;
+        c = next_c;
+    }
+}
+
 }  // namespace
 
 AreaTerms area_terms(const MotionRecord& m) {
@@ -294,9 +346,7 @@ AreaTerms area_terms(const MotionRecord& m) {
             const Point c = m.centre;
             const double r0 = m.radius, r1 = m.end_radius;
             t.twice_area = c.x * (b.y - a.y) - c.y * (b.x - a.x) + m.sweep * (r0 * r0 + r0 * r1 + r1 * r1) / 3;
-            const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(m.sweep) / kMomentStep)));
-            for (int k = 0; k < pieces; ++k)
-                add_moments(m, static_cast<double>(k) / pieces, static_cast<double>(k + 1) / pieces, t);
+            add_arc_moments(m, t);
             return t;
         }
         case CurveKind::Parabola: {

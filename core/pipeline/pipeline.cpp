@@ -29,7 +29,7 @@ void block_columns(std::string_view bytes, std::vector<Diagnostic>& diagnostics)
 // ---- TapeChecker ----
 
 TapeChecker::TapeChecker(std::string_view bytes, const Profile& profile, MotionSink* also)
-    : bytes_(bytes), cap_(profile.max_per_code), stats_(profile), plan_(profile),
+    : bytes_(bytes), profile_(profile), cap_(profile.max_per_code), stats_(profile), plan_(profile),
       both_(also ? std::make_unique<PlanThenAlso>(plan_, *also) : nullptr),
       interpreter_(bytes, profile, stats_, both_ ? static_cast<MotionSink*>(both_.get()) : &plan_,
                    result_.diagnostics) {}
@@ -69,11 +69,17 @@ void TapeChecker::finish_reading() {
     result_.stats.blocks = blocks_;
 }
 
+void TapeChecker::find_parts() {
+    parts_ = std::make_unique<PartsFinder>(profile_);
+    plan_.keep_plate_motions(parts_.get());
+}
+
 CheckResult TapeChecker::finish() {
     finish_reading();
     std::vector<Diagnostic> plan = plan_findings();
     result_.diagnostics.insert(result_.diagnostics.end(), std::make_move_iterator(plan.begin()),
                                std::make_move_iterator(plan.end()));
+    if (parts_) result_.parts = parts_->finish();
     finish_diagnostics();
     return std::move(result_);
 }
@@ -90,12 +96,13 @@ std::vector<Diagnostic> TapeChecker::plan_findings() {
     return plan;
 }
 
-CheckResult check_tape(std::string_view bytes, const Profile& profile, InputFormat format,
-                       std::size_t max_diagnostics) {
+CheckResult check_tape(std::string_view bytes, const Profile& profile, InputFormat format, std::size_t max_diagnostics,
+                       bool parts) {
     // A chunk at a time: each chunk is interpreted while it is still in cache, and the whole tape is
     // never held (a 100 MB tape would cost some 200 MB of blocks).
     TapeChecker checker(bytes, profile);
     checker.set_max_diagnostics(max_diagnostics);
+    if (parts) checker.find_parts();
     TapeReader reader(bytes, profile, format);
     Tape chunk;
     while (reader.read_chunk(chunk, kCheckChunkBlocks)) checker.check_chunk(chunk);
@@ -116,8 +123,8 @@ void record_setup(CheckResult& result, const TapeSetup& setup) {
     }
 }
 
-CheckResult check_tape(std::string_view bytes, const TapeSetup& setup, std::size_t max_diagnostics) {
-    CheckResult r = check_tape(bytes, setup.profile, setup.format, max_diagnostics);
+CheckResult check_tape(std::string_view bytes, const TapeSetup& setup, std::size_t max_diagnostics, bool parts) {
+    CheckResult r = check_tape(bytes, setup.profile, setup.format, max_diagnostics, parts);
     record_setup(r, setup);
     return r;
 }

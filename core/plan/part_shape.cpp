@@ -13,8 +13,10 @@ namespace {
 
 constexpr std::size_t kMaxTurns = kPartsMaxAlignments;
 constexpr double kOutlineTolerance = kPartsOutlineToleranceMm;
-constexpr double kLabelTolerance = kPlanChordToleranceMm;  // (a label needs no more)
 constexpr int kOutlineMaxChords = kPlanMaxArcChords;
+// Runs of material this close in width (mm) are as wide for the label: a symmetric part's label does not move
+// from one side to the other with the rounding of its points.
+constexpr double kLabelTieMm = 1e-9;
 
 double dist(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
 double cross(Point a, Point b) { return a.x * b.y - a.y * b.x; }
@@ -32,13 +34,27 @@ struct Rigid {
     [[nodiscard]] double angle() const { return std::atan2(s, c); }
 };
 
+// The direction from `centre` to `p` (cos, sin), and that turned by `angle`.
+Point direction(Point p, Point centre) {
+    const double r = dist(p, centre);
+    return r > 0 ? Point{(p.x - centre.x) / r, (p.y - centre.y) / r} : Point{1, 0};
+}
+Point turned(Point d, double c, double s) { return {d.x * c - d.y * s, d.x * s + d.y * c}; }
+
+// The point halfway along an arc motion (point_at(m, 0.5): its radius halfway from the start's to the end's).
+Point arc_middle(const MotionRecord& m) {
+    const Point d = turned(direction(m.start, m.centre), std::cos(m.sweep / 2), std::sin(m.sweep / 2));
+    const double r = (m.radius + m.end_radius) / 2;
+    return {m.centre.x + r * d.x, m.centre.y + r * d.y};
+}
+
 // The piece of a motion.
 Seg seg_of(const MotionRecord& m) {
     Seg s;
     s.curve = m.curve;
     s.a = m.start;
     s.b = m.end;
-    s.mid = point_at(m, 0.5);
+    s.mid = m.curve == CurveKind::Arc ? arc_middle(m) : point_at(m, 0.5);
     s.length = m.length_mm;
     if (m.curve == CurveKind::Arc) {
         s.centre = m.centre;
@@ -60,8 +76,8 @@ Seg reversed(Seg s) {
 
 // The point of an arc piece at `angle` from its start about its centre.
 Point arc_point(const Seg& s, double angle) {
-    const double a0 = std::atan2(s.a.y - s.centre.y, s.a.x - s.centre.x) + angle;
-    return {s.centre.x + s.radius * std::cos(a0), s.centre.y + s.radius * std::sin(a0)};
+    const Point d = turned(direction(s.a, s.centre), std::cos(angle), std::sin(angle));
+    return {s.centre.x + s.radius * d.x, s.centre.y + s.radius * d.y};
 }
 
 // `next` goes on as `s` (s then next are one line or one arc) within `tolerance`: s grows by it.
@@ -355,11 +371,18 @@ void flatten_loop(const Loop& loop, double tolerance, int max_chords, std::vecto
             n = static_cast<int>(std::ceil(std::sqrt(bend / (4 * tolerance))));
         }
         n = std::clamp(n, 1, max_chords);
+        if (s.curve == CurveKind::Arc && n > 1) {  // (each point the one before turned by the step)
+            const double c = std::cos(s.sweep / n), sn = std::sin(s.sweep / n);
+            Point d = direction(s.a, s.centre);
+            for (int k = 1; k < n; ++k) {
+                d = turned(d, c, sn);
+                out.push_back({s.centre.x + s.radius * d.x, s.centre.y + s.radius * d.y});
+            }
+            continue;
+        }
         for (int k = 1; k < n; ++k) {
             const double f = static_cast<double>(k) / n;
-            if (s.curve == CurveKind::Arc) {
-                out.push_back(arc_point(s, s.sweep * f));
-            } else {
+            {
                 const double u = 1 - f;
                 out.push_back({u * u * s.a.x + 2 * u * f * s.control.x + f * f * s.b.x,
                                u * u * s.a.y + 2 * u * f * s.control.y + f * f * s.b.y});
@@ -402,59 +425,95 @@ Box seg_box(const Seg& s) {
 
 namespace {
 
-// The convex hull of the points, counter-clockwise (Andrew's monotone chain).
-std::vector<Point> convex_hull(std::vector<Point> p) {
-    std::sort(p.begin(), p.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-    p.erase(std::unique(p.begin(), p.end()), p.end());
-    if (p.size() < 3) return p;
-    std::vector<Point> h(2 * p.size());
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        while (k >= 2 && cross(sub(h[k - 1], h[k - 2]), sub(p[i], h[k - 2])) <= 0) --k;
-        h[k++] = p[i];
+// The convex hull of a simple polygon (its points in order), counter-clockwise, without points on its sides
+// (Melkman's algorithm: one pass over the points, a deque of the hull so far).
+std::vector<Point> convex_hull(const std::vector<Point>& p) {
+    const auto left = [](Point a, Point b, Point c) { return cross(sub(b, a), sub(c, a)) > 0; };
+    // the first point not on the line of the first two (distinct) points
+    std::size_t second = 1;
+    while (second < p.size() && p[second] == p[0]) ++second;
+    std::size_t third = second + 1;
+    while (third < p.size() && cross(sub(p[second], p[0]), sub(p[third], p[0])) == 0) ++third;
+    if (third >= p.size()) {  // (all on one line: its two ends)
+        if (second >= p.size()) return {p.empty() ? Point{} : p[0]};
+        const auto less = [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
+        const auto [lo, hi] = std::minmax_element(p.begin(), p.end(), less);
+        return {*lo, *hi};
     }
-    for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
-        while (k >= lower && cross(sub(h[k - 1], h[k - 2]), sub(p[i], h[k - 2])) <= 0) --k;
-        h[k++] = p[i];
+    second = third - 1;  // (the run on the line goes one way along it: its last point is its far end)
+    // the deque in a vector of room for the points both ways: d[bottom, top] (d[bottom] == d[top])
+    std::vector<Point> d(2 * p.size() + 4);
+    std::size_t bottom = p.size(), top = bottom + 3;
+    d[bottom] = d[top] = p[third];
+    if (left(p[0], p[second], p[third])) {
+        d[bottom + 1] = p[0];
+        d[bottom + 2] = p[second];
+    } else {
+        d[bottom + 1] = p[second];
+        d[bottom + 2] = p[0];
     }
-    h.resize(k - 1);
-    return h;
+    for (std::size_t i = third + 1; i < p.size(); ++i) {
+        const Point v = p[i];
+        if (left(d[bottom], d[bottom + 1], v) && left(d[top - 1], d[top], v)) continue;  // (inside)
+        while (top - bottom > 2 && !left(d[bottom], d[bottom + 1], v)) ++bottom;
+        d[--bottom] = v;
+        while (top - bottom > 2 && !left(d[top - 1], d[top], v)) --top;
+        d[++top] = v;
+    }
+    return {d.begin() + static_cast<std::ptrdiff_t>(bottom), d.begin() + static_cast<std::ptrdiff_t>(top)};
 }
 
 // The direction (radians) of the smallest-area rectangle around a convex polygon: one of its sides lies along an
-// edge of the polygon (Freeman and Shapira); the edges are walked with rotating calipers.
+// edge of the polygon (Freeman and Shapira); the edges are walked with rotating calipers (each edge's direction
+// d unscaled: the rectangle's sides along d and across it are the spans of p·d and p·d⊥ over |d|, its area
+// their product over |d|²).
 double smallest_rectangle_angle(const std::vector<Point>& h) {
     const std::size_t n = h.size();
     if (n < 3) return n == 2 ? std::atan2(h[1].y - h[0].y, h[1].x - h[0].x) : 0;
     const auto dot = [](Point a, Point e) { return a.x * e.x + a.y * e.y; };
+    const auto after = [n](std::size_t k) { return k + 1 == n ? 0 : k + 1; };
     std::size_t right = 0, top = 0, left = 0;
-    double best = std::numeric_limits<double>::infinity(), angle = 0;
+    // A caliper at h[k] moves on while the next point lies as far along `dir` (sign -1: against it) as its own; the
+    // span it reaches along `dir`.
+    const auto advance = [&](std::size_t& k, Point dir, double sign) {
+        double far = sign * dot(h[k], dir);
+        for (std::size_t s = 0; s < n; ++s) {
+            const double next = sign * dot(h[after(k)], dir);
+            if (next < far) break;
+            k = after(k);
+            far = next;
+        }
+        return sign * far;
+    };
+    double best = std::numeric_limits<double>::infinity();
+    Point best_d{1, 0};
     for (std::size_t i = 0; i < n; ++i) {
-        const Point d = sub(h[(i + 1) % n], h[i]);
-        const double len = std::hypot(d.x, d.y);
-        if (len <= 0) continue;
-        const Point e{d.x / len, d.y / len}, up{-e.y, e.x};
-        if (i == 0) right = top = left = 0;
-        for (std::size_t s = 0; s < n && dot(h[(right + 1) % n], e) >= dot(h[right], e); ++s) right = (right + 1) % n;
+        const Point d = sub(h[after(i)], h[i]), up{-d.y, d.x};
+        const double len2 = d.x * d.x + d.y * d.y;
+        if (!(len2 > 0)) continue;
+        const double far_right = advance(right, d, 1);
         if (i == 0) top = right;
-        for (std::size_t s = 0; s < n && dot(h[(top + 1) % n], up) >= dot(h[top], up); ++s) top = (top + 1) % n;
+        const double far_up = advance(top, up, 1);
         if (i == 0) left = top;
-        for (std::size_t s = 0; s < n && dot(h[(left + 1) % n], e) <= dot(h[left], e); ++s) left = (left + 1) % n;
-        const double area = (dot(h[right], e) - dot(h[left], e)) * (dot(h[top], up) - dot(h[i], up));
+        const double far_left = advance(left, d, -1);
+        const double area = (far_right - far_left) * (far_up - dot(h[i], up)) / len2;
         if (area < best) {
             best = area;
-            angle = std::atan2(e.y, e.x);
+            best_d = d;
         }
     }
-    return angle;
+    return std::atan2(best_d.y, best_d.x);
 }
 
 }  // namespace
 
 OutlineRect smallest_rectangle(const Loop& outline) {
-    std::vector<Point> points;
-    flatten_loop(outline, kOutlineTolerance, kOutlineMaxChords, points);
-    const double angle = smallest_rectangle_angle(convex_hull(std::move(points)));
+    double angle = 0;  // (a circle: any direction)
+    if (!outline.circle) {
+        std::vector<Point> points;
+        flatten_loop(outline, kOutlineTolerance, kOutlineMaxChords, points);
+        angle = smallest_rectangle_angle(convex_hull(points));
+    }
     // the loop turned by -angle: its exact box
     const Rigid turn(-angle, {0, 0}, {0, 0});
     Box box;
@@ -470,15 +529,13 @@ OutlineRect smallest_rectangle(const Loop& outline) {
     return {std::max(w, h), std::min(w, h)};
 }
 
-Point label_point(const Shape& s, const Box& box) {
-    // The widest run of material along a horizontal line through the centroid (else the box's middle): the loops'
-    // crossings of the line, even-odd (the holes lie inside the outline).
-    std::vector<Point> polygon;
+Point label_point(const Shape& s, const Box& box, std::span<const std::vector<Point>> polygons) {
+    // The widest run of material along a horizontal line through the centroid (else the box's middle), the first
+    // from the left of runs as wide within kLabelTieMm: the loops' crossings of the line, even-odd (the holes lie
+    // inside the outline).
     for (const double y : {s.centroid.y, (box.min_y + box.max_y) / 2}) {
         std::vector<double> xs;
-        for (const Loop& l : s.loops) {
-            polygon.clear();
-            flatten_loop(l, kLabelTolerance, kOutlineMaxChords, polygon);
+        for (const std::vector<Point>& polygon : polygons) {
             for (std::size_t k = 0; k < polygon.size(); ++k) {
                 const Point a = polygon[k], b = polygon[(k + 1) % polygon.size()];
                 if ((a.y > y) != (b.y > y)) xs.push_back(a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y));
@@ -488,7 +545,7 @@ Point label_point(const Shape& s, const Box& box) {
         double widest = 0;
         Point at{};
         for (std::size_t k = 0; k + 1 < xs.size(); k += 2)
-            if (xs[k + 1] - xs[k] > widest) {
+            if (xs[k + 1] - xs[k] > widest + kLabelTieMm) {
                 widest = xs[k + 1] - xs[k];
                 at = {(xs[k] + xs[k + 1]) / 2, y};
             }

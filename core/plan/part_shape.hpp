@@ -69,7 +69,8 @@ struct OutlineRect {
 void flatten_loop(const Loop& loop, double tolerance, int max_chords, std::vector<Point>& out);
 // The exact box of a piece.
 [[nodiscard]] Box seg_box(const Seg& s);
-// A point of the shape's material (inside its outline, outside its holes), for its label.
-[[nodiscard]] Point label_point(const Shape& s, const Box& box);
+// A point of the shape's material (inside its outline, outside its holes), for its label: `polygons`, its loops
+// flattened (flatten_loop within kPlanChordToleranceMm, in at most kPlanMaxArcChords chords each).
+[[nodiscard]] Point label_point(const Shape& s, const Box& box, std::span<const std::vector<Point>> polygons);
 
 }  // namespace essi::parts

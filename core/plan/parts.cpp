@@ -3,8 +3,14 @@
 #include "essi/parts.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cmath>
 #include <map>
+#include <memory>
+#include <span>
+#include <tuple>
+#include <unordered_map>
 #include <utility>
 
 #include "essi/interp.hpp"
@@ -23,9 +29,10 @@ constexpr std::size_t kPartsChunkBlocks = 8192;
 
 // The loop of a contour: its motions [loop_begin, loop_end), the first from loop_start, the last to where the loop
 // closes (a parabola's chord may close it inside the motion).
-std::vector<MotionRecord> loop_motions(const PlanContour& c, const std::vector<MotionRecord>& all, double closure_mm) {
-    std::vector<MotionRecord> loop(all.begin() + c.loop_begin, all.begin() + c.loop_end);
-    if (loop.empty()) return loop;
+void loop_motions(const PlanContour& c, std::span<const MotionRecord> all, double closure_mm,
+                  std::vector<MotionRecord>& loop) {
+    loop.assign(all.begin() + c.loop_begin, all.begin() + c.loop_end);
+    if (loop.empty()) return;
     const auto near = [&](Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y) <= closure_mm; };
     if (!(loop.front().start == c.loop_start)) {
         const double f = nearest_fraction(loop.front(), c.loop_start);
@@ -36,10 +43,9 @@ std::vector<MotionRecord> loop_motions(const PlanContour& c, const std::vector<M
         const double f = nearest_fraction(loop.back(), c.loop_start);
         if (f > 0 && f < 1) loop.back() = sub_motion(loop.back(), 0, f);
     }
-    return loop;
 }
 
-double contour_length(const std::vector<MotionRecord>& motions) {
+double contour_length(std::span<const MotionRecord> motions) {
     double length = 0;
     for (const MotionRecord& m : motions) length += m.length_mm;
     return length;
@@ -56,17 +62,22 @@ public:
         bool is_new = false;
         std::optional<std::size_t> mirror_of;
     };
-    // The group of a part of this shape (a new one when no kept shape is the same).
+    // The group of a part of this shape (a new one when no kept shape is the same; keep() it then).
     Found place(const parts::Shape& shape) {
-        Bucket& bucket = buckets_[{shape.loops.size(), shape.pieces}];
-        if (const auto found = find(bucket, shape)) return {found->first, -found->second, false, std::nullopt};
+        bool any_similar = false;
+        if (const auto found = find(shape, any_similar)) return {found->first, -found->second, false, std::nullopt};
         Found out{groups_++, 0, true, std::nullopt};
-        if (const auto twin = find(bucket, parts::mirrored(shape))) out.mirror_of = twin->first;
-        if (kept_pieces_ + shape.pieces <= kPartsMaxKeptPieces) {
-            kept_pieces_ += shape.pieces;
-            bucket.emplace(shape.area, Kept{shape, out.group});
-        }
+        // (a mirror image has the same signature: only a shape with similar ones kept can have its twin among them)
+        if (any_similar)
+            if (const auto twin = find(parts::mirrored(shape), any_similar)) out.mirror_of = twin->first;
         return out;
+    }
+    // The shape of a new group kept to compare later parts with, while the kept shapes' pieces allow it.
+    void keep(parts::Shape&& shape, const Found& found) {
+        if (!found.is_new || kept_pieces_ + shape.pieces > kPartsMaxKeptPieces) return;
+        kept_pieces_ += shape.pieces;
+        buckets_[key_of(shape, 0)].emplace(shape.area, Entry{longest(shape), static_cast<std::uint32_t>(kept_.size())});
+        kept_.push_back({std::move(shape), found.group});
     }
 
 private:
@@ -74,28 +85,75 @@ private:
         parts::Shape shape;
         std::size_t group;
     };
-    using Bucket = std::multimap<double, Kept>;  // by net area
+    // A kept shape in its bucket: its longest piece (two similar shapes' longest pieces are as long within twice
+    // the tolerance: most are told apart without reading the shape) and where it is in kept_.
+    struct Entry {
+        double longest;
+        std::uint32_t kept;
+    };
+    using Bucket = std::multimap<double, Entry>;  // by net area
+    static double longest(const parts::Shape& shape) { return shape.lengths.empty() ? 0 : shape.lengths.back(); }
+    // Shapes of one number of loops and of pieces, their perimeters in one cell of the width within which similar()
+    // takes two perimeters as the same: a shape's similar ones are in its cell or a neighbour.
+    using Key = std::tuple<std::size_t, std::size_t, long long>;
+    [[nodiscard]] Key key_of(const parts::Shape& shape, int neighbour) const {
+        const double cell = 2 * tolerance_ * static_cast<double>(std::max<std::size_t>(shape.pieces, 1));
+        const double c = std::floor(shape.perimeter / cell);
+        const long long index = std::isfinite(c) && std::fabs(c) < 1e15 ? static_cast<long long>(c) : 0;
+        return {shape.loops.size(), shape.pieces, index + neighbour};
+    }
 
-    // The first kept shape that `shape` turns onto (its group and the turn), among the first kPartsMaxCompares of
-    // similar signature.
-    std::optional<std::pair<std::size_t, double>> find(const Bucket& bucket, const parts::Shape& shape) const {
+    // The first kept shape that `shape` turns onto (its group and the turn), in the order of their areas, among the
+    // first kPartsMaxCompares of similar signature and the first kPartsMaxVisits of about its area and perimeter;
+    // `any_similar`: whether one was similar.
+    std::optional<std::pair<std::size_t, double>> find(const parts::Shape& shape, bool& any_similar) const {
         const double slack = 2 * tolerance_ * shape.perimeter + 4 * tolerance_ * tolerance_;
-        std::size_t compared = 0;
-        for (auto it = bucket.lower_bound(shape.area - slack);
-             it != bucket.end() && it->first <= shape.area + slack && compared < kPartsMaxCompares; ++it) {
-            if (!parts::similar(shape, it->second.shape, tolerance_)) continue;
+        // the three cells' shapes within the slack, merged by area
+        std::array<Bucket::const_iterator, 3> at, end;
+        std::size_t cells = 0;
+        for (int n = -1; n <= 1; ++n) {
+            const auto b = buckets_.find(key_of(shape, n));
+            if (b == buckets_.end()) continue;
+            at[cells] = b->second.lower_bound(shape.area - slack);
+            end[cells++] = b->second.end();
+        }
+        const double its_longest = longest(shape);
+        std::size_t compared = 0, visited = 0;
+        while (compared < kPartsMaxCompares && visited < kPartsMaxVisits) {
+            std::size_t next = cells;
+            for (std::size_t c = 0; c < cells; ++c)
+                if (at[c] != end[c] && at[c]->first <= shape.area + slack &&
+                    (next == cells || at[c]->first < at[next]->first))
+                    next = c;
+            if (next == cells) break;
+            const Entry entry = (at[next]++)->second;
+            ++visited;
+            if (std::fabs(entry.longest - its_longest) > 2 * tolerance_) continue;  // (not similar)
+            const Kept& kept = kept_[entry.kept];
+            if (!parts::similar(shape, kept.shape, tolerance_)) continue;
+            any_similar = true;
             ++compared;
-            if (const auto turn = parts::turn_onto(shape, it->second.shape, tolerance_))
-                return std::pair{it->second.group, *turn};
+            if (const auto turn = parts::turn_onto(shape, kept.shape, tolerance_)) return std::pair{kept.group, *turn};
         }
         return std::nullopt;
     }
 
     double tolerance_;
-    std::map<std::pair<std::size_t, std::size_t>, Bucket> buckets_;  // by (loops, pieces)
+    struct KeyHash {
+        std::size_t operator()(const Key& k) const {
+            // (FNV-1a over the three, 64 bits on every platform)
+            const auto mix = [](std::uint64_t h, std::uint64_t v) { return (h ^ v) * 0x100000001b3ULL; };
+            return static_cast<std::size_t>(mix(mix(mix(0xcbf29ce484222325ULL, std::get<0>(k)), std::get<1>(k)),
+                                                static_cast<std::uint64_t>(std::get<2>(k))));
+        }
+    };
+    std::unordered_map<Key, Bucket, KeyHash> buckets_;  // (a hash: a part looks up three of them)
+    std::vector<Kept> kept_;
     std::size_t groups_ = 0;
     std::size_t kept_pieces_ = 0;
 };
+
+}  // namespace
 
 // The parts list made a plate at a time.
 class PartsBuilder {
@@ -104,24 +162,28 @@ public:
         : profile_(profile), tolerance_(std::max(kPartsSameShapeMm, kPartsSameShapeUnits * profile.unit_mm)),
           closure_mm_(profile.arc_tolerance_units * profile.unit_mm), grouper_(tolerance_) {}
 
-    // The contours [begin, end) of `all`, one plate's, their motions in `store`.
-    void add_plate(const std::vector<PlanContour>& all, std::size_t begin, std::size_t end, const MotionStore& store) {
+    // One plate's contours (a parent: `parent_base` + its index in `all`); motions_of(k): contour k's motions
+    // (std::span<const MotionRecord>).
+    template <class MotionsOf>
+    void add_plate(std::span<const PlanContour> all, int parent_base, MotionsOf&& motions_of) {
+        if (all.empty()) return;
         std::map<int, std::vector<std::size_t>> holes;  // by the part they lie in
-        for (std::size_t k = begin; k < end; ++k)
-            if (all[k].role == ContourRole::Hole && all[k].parent >= 0 && is_part(all[all[k].parent].role))
-                holes[all[k].parent].push_back(k);
+        for (std::size_t k = 0; k < all.size(); ++k) {
+            const int parent = all[k].parent - parent_base;
+            if (all[k].role == ContourRole::Hole && all[k].parent >= 0 && is_part(all[parent].role))
+                holes[parent].push_back(k);
+        }
         PlateUse plate;
-        plate.plate = all[begin].plate;
+        plate.plate = all[0].plate;
         std::vector<std::vector<Point>> outlines;
         double kerf_mm = 0;
-        for (std::size_t k = begin; k < end; ++k) {
+        for (std::size_t k = 0; k < all.size(); ++k) {
             if (!is_part(all[k].role)) continue;
             std::vector<std::size_t> cuts{k};
             const auto h = holes.find(static_cast<int>(k));
             if (h != holes.end()) cuts.insert(cuts.end(), h->second.begin(), h->second.end());
-            add_part(all, cuts, store, plate, kerf_mm);
-            outlines.emplace_back();
-            parts::flatten_loop(last_outline_, kPlanChordToleranceMm, kPlanMaxArcChords, outlines.back());
+            add_part(all, cuts, motions_of, plate, kerf_mm);
+            outlines.push_back(polygons_[0]);
         }
         if (plate.parts == 0) return;
         finish_plate(plate, outlines, kerf_mm);
@@ -134,25 +196,32 @@ public:
     }
 
 private:
-    void add_part(const std::vector<PlanContour>& all, const std::vector<std::size_t>& cuts, const MotionStore& store,
+    template <class MotionsOf>
+    void add_part(std::span<const PlanContour> all, const std::vector<std::size_t>& cuts, MotionsOf& motions_of,
                   PlateUse& plate, double& kerf_mm) {
         Part part;
         part.plate = all[cuts[0]].plate;
         std::vector<parts::Loop> loops;
         for (const std::size_t k : cuts) {
             const PlanContour& c = all[k];
-            const std::vector<MotionRecord> motions = contour_motions(c, store);
+            const std::span<const MotionRecord> motions = motions_of(k);
             for (const MotionRecord& m : motions) kerf_mm = std::max(kerf_mm, m.kerf_mm);
             part.cuts.push_back({c.first_line, c.last_line});
             part.cut_length_mm += contour_length(motions);
-            loops.push_back(parts::make_loop(loop_motions(c, motions, closure_mm_), tolerance_));
+            loop_motions(c, motions, closure_mm_, loop_);
+            loops.push_back(parts::make_loop(loop_, tolerance_));
         }
         for (const parts::Seg& s : loops[0].segs) part.box.add(parts::seg_box(s));
-        last_outline_ = loops[0];
-        const parts::Shape shape = parts::make_shape(std::move(loops));
-        part.label_at = parts::label_point(shape, part.box);
+        polygons_.resize(loops.size());
+        for (std::size_t k = 0; k < loops.size(); ++k) {
+            polygons_[k].clear();
+            parts::flatten_loop(loops[k], kPlanChordToleranceMm, kPlanMaxArcChords, polygons_[k]);
+        }
+        parts::Shape shape = parts::make_shape(std::move(loops));
+        part.label_at = parts::label_point(shape, part.box, std::span(polygons_.data(), shape.loops.size()));
         const Grouper::Found found = grouper_.place(shape);
         if (found.is_new) new_group(shape, found);
+        grouper_.keep(std::move(shape), found);
         PartGroup& g = list_.groups[found.group];
         part.group = g.number;
         part.turned_deg = degrees(found.turned);
@@ -219,92 +288,45 @@ private:
     double closure_mm_;
     Grouper grouper_;
     PartsList list_;
-    parts::Loop last_outline_;
+    std::vector<MotionRecord> loop_;            // the loop of a contour (loop_motions)
+    std::vector<std::vector<Point>> polygons_;  // the part's loops flattened, the outline first
 };
 
-// Where the plates' contours begin and end in the list (contours are listed plate by plate).
-template <class EachPlate>
-void for_each_plate(const std::vector<PlanContour>& contours, EachPlate each) {
+PartsList find_parts(const std::vector<PlanContour>& contours, const MotionStore& store, const Profile& profile) {
+    PartsBuilder builder(profile);
+    std::vector<MotionRecord> motions;
     for (std::size_t begin = 0, end = 0; begin < contours.size(); begin = end) {
         for (end = begin + 1; end < contours.size() && contours[end].plate == contours[begin].plate;) ++end;
-        each(begin, end);
-    }
-}
-
-// The motions of one plate's contours, kept from the stream while it passes them (a store of the motions with
-// indices in [first, end)); the plate's parts are made when the stream has passed its last motion.
-class PlateMotions final : public MotionSink, public MotionStore {
-public:
-    PlateMotions(const std::vector<PlanContour>& contours, PartsBuilder& builder)
-        : contours_(contours), builder_(builder) {
-        for_each_plate(contours, [&](std::size_t begin, std::size_t end) {
-            Span s{begin, end, contours[begin].first_motion, contours[begin].end_motion};
-            for (std::size_t k = begin; k < end; ++k) {
-                s.first = std::min(s.first, contours[k].first_motion);
-                s.end = std::max(s.end, contours[k].end_motion);
-            }
-            plates_.push_back(s);
+        const std::span<const PlanContour> plate(contours.data() + begin, end - begin);
+        builder.add_plate(plate, static_cast<int>(begin), [&](std::size_t k) {
+            motions = contour_motions(plate[k], store);
+            return std::span<const MotionRecord>(motions);
         });
     }
-    void on_motion(const MotionRecord& m) override {
-        const std::size_t index = next_++;
-        while (current_ < plates_.size() && index >= plates_[current_].end) finish_plate();
-        if (current_ < plates_.size() && index >= plates_[current_].first) kept_.push_back(m);
-    }
-    // After the stream: the plates not made yet.
-    void end() {
-        while (current_ < plates_.size()) finish_plate();
-    }
-    [[nodiscard]] MotionRecord motion(std::size_t index) const override {
-        return kept_[index - plates_[current_].first];
-    }
+    return builder.finish();
+}
 
-private:
-    struct Span {
-        std::size_t begin, end_contour;
-        std::uint32_t first, end;  // the motions
-    };
-    void finish_plate() {
-        builder_.add_plate(contours_, plates_[current_].begin, plates_[current_].end_contour, *this);
-        kept_.clear();
-        ++current_;
-    }
-    const std::vector<PlanContour>& contours_;
-    PartsBuilder& builder_;
-    std::vector<Span> plates_;
-    std::size_t current_ = 0;
-    std::size_t next_ = 0;
-    std::vector<MotionRecord> kept_;
-};
+PartsFinder::PartsFinder(const Profile& profile) : builder_(std::make_unique<PartsBuilder>(profile)) {}
+PartsFinder::~PartsFinder() = default;
 
-// Reads and interprets the tape into `sink`, a chunk of blocks at a time.
-void stream_tape(std::string_view bytes, const Profile& profile, InputFormat format, MotionSink& sink) {
+void PartsFinder::on_plate(const PlateContours& plate) {
+    builder_->add_plate(plate.contours, 0, [&](std::size_t k) { return plate.of(k); });
+}
+
+PartsList PartsFinder::finish() { return builder_->finish(); }
+
+PartsList tape_parts(std::string_view bytes, const Profile& profile, InputFormat format) {
+    PartsFinder finder(profile);
+    CutPlan plan(profile);
+    plan.keep_plate_motions(&finder);
     std::vector<Diagnostic> ignored;  // (the check has them)
-    Interpreter interpreter(bytes, profile, sink, ignored);
+    Interpreter interpreter(bytes, profile, plan, ignored);
     TapeReader reader(bytes, profile, format);
     Tape chunk;
     while (reader.read_chunk(chunk, kPartsChunkBlocks)) interpreter.run(chunk);
     interpreter.finish();
-}
-
-}  // namespace
-
-PartsList find_parts(const std::vector<PlanContour>& contours, const MotionStore& store, const Profile& profile) {
-    PartsBuilder builder(profile);
-    for_each_plate(contours,
-                   [&](std::size_t begin, std::size_t end) { builder.add_plate(contours, begin, end, store); });
-    return builder.finish();
-}
-
-PartsList tape_parts(std::string_view bytes, const Profile& profile, InputFormat format) {
-    CutPlan plan(profile, /*keep_contours*/ true);
-    stream_tape(bytes, profile, format, plan);
     (void)plan.finish();
-    PartsBuilder builder(profile);
-    PlateMotions motions(plan.contours(), builder);
-    stream_tape(bytes, profile, format, motions);
-    motions.end();
-    return builder.finish();
+    return finder.finish();
 }
 
 }  // namespace essi

@@ -32,6 +32,9 @@ struct PlateJob {
     std::vector<plan::Piece> pieces;
     plan::PlateSettings settings;
     bool keep_contours = false;
+    bool keep_motions = false;  // the cuts' records, for a PlateContoursSink
+    std::vector<MotionRecord> records;
+    std::vector<MotionRange> ranges;  // of each contour's records (keep_motions)
     std::vector<Diagnostic> found;
     DiagnosticCap cap;  // max_per_code within the plate (what it left out is counted for the tape)
     std::vector<PlanContour> contours;
@@ -40,9 +43,17 @@ struct PlateJob {
         cap = DiagnosticCap(settings.max_per_code);
         for (plan::Cut& c : cuts) plan::close_loop(c, pieces, settings.closure_mm, settings.gap_limit_mm);
         plan::analyse_plate(cuts, pieces, settings, found, cap, keep_contours ? &contours : nullptr);
+        if (keep_motions) record_ranges();
         std::vector<plan::Cut>().swap(cuts);  // (only the findings are kept until they are folded in)
         std::vector<plan::Piece>().swap(pieces);
         done.store(true, std::memory_order_release);
+    }
+    // Each contour's records: its cut's (the contours are cuts, in cutting order, some left out).
+    void record_ranges() {
+        ranges.reserve(contours.size());
+        for (const plan::Cut& c : cuts)
+            if (ranges.size() < contours.size() && contours[ranges.size()].first_motion == c.first_motion)
+                ranges.push_back({c.first_record, c.end_record});
     }
 };
 
@@ -82,6 +93,10 @@ struct CutPlan::State {
     std::vector<plan::Piece> head2_pieces;
     std::vector<plan::Cut> deferred;  // head 2's cuts that ended while head 1 was cutting, with their pieces
     std::vector<std::vector<plan::Piece>> deferred_pieces;
+    // keep_plate_motions: the plate's cutting motions as records, beside the pieces (head 2's apart as its pieces)
+    PlateContoursSink* plate_sink = nullptr;
+    std::vector<MotionRecord> records, head2_records;
+    std::vector<std::vector<MotionRecord>> deferred_records;
     int plate = 1;
     bool moved = false;
     Point home, here;               // where the program started, where head 1 is
@@ -126,7 +141,9 @@ struct CutPlan::State {
     void begin_cut(plan::Cut& c, KerfSide kerf) {
         c.kerf = kerf;
         if (c.head == 2) head2_pieces.clear();
+        if (c.head == 2) head2_records.clear();
         c.first_piece = static_cast<std::uint32_t>(pieces.size());
+        c.first_record = static_cast<std::uint32_t>(records.size());
         const int h = c.head == 2 ? 1 : 0;
         cut_points[h] = 0;
         too_long[h] = false;
@@ -160,6 +177,8 @@ struct CutPlan::State {
         plate_points -= cut_points[h] - points;  // (what the cut added before this motion)
         if (h == 0) pieces.resize(c.first_piece);
         else head2_pieces.clear();
+        if (h == 0) records.resize(c.first_record);
+        else head2_records.clear();
     }
     // Whether the pieces of head `h`'s motion are kept (not when the plate's motions are read back from a store, nor
     // for a cut left out).
@@ -172,7 +191,10 @@ struct CutPlan::State {
         plan::Cut* c = cuts_found.motion(m, began, cut_ended());
         if (!c) return;
         cut_of(*c, h, m.line, m.kerf, m.kerf_mm, m.feed_mm_min, plan::plan_points(m));
-        if (keeps_pieces(h)) plan::append_pieces(m, pieces_of(h));
+        if (!keeps_pieces(h)) return;
+        plan::append_pieces(m, pieces_of(h));
+        if (plate_sink) [[unlikely]]
+            (h == 0 ? records : head2_records).push_back(m);
     }
     // A straight motion of head 1 (most of a tape): no record made.
     [[gnu::flatten]] void add(const UnitLine& l) {
@@ -181,7 +203,10 @@ struct CutPlan::State {
         plan::Cut* c = cuts_found.motion(l, began, cut_ended());
         if (!c) return;
         cut_of(*c, 0, l.line, l.kerf, l.kerf_mm, l.feed_mm_min, 1);
-        if (keeps_pieces(0)) pieces.push_back({l.start, l.end, {}, 0, 0, l.line, false});
+        if (!keeps_pieces(0)) return;
+        pieces.push_back({l.start, l.end, {}, 0, 0, l.line, false});
+        if (plate_sink) [[unlikely]]
+            records.push_back(record_of(l));
     }
 
     void end_cut(plan::Cut& c) {
@@ -196,21 +221,28 @@ struct CutPlan::State {
             if (cutting(0)) {  // (head 1's cut is filling the plate's pieces: head 2's joins after it)
                 deferred.push_back(std::move(c));
                 deferred_pieces.push_back(std::move(head2_pieces));
+                deferred_records.push_back(std::move(head2_records));
                 return;
             }
-            c.first_piece = static_cast<std::uint32_t>(pieces.size());
-            pieces.insert(pieces.end(), head2_pieces.begin(), head2_pieces.end());
+            join(c, head2_pieces, head2_records);
         }
         finish_cut(c);
         if (!head2 && !deferred.empty()) {
             for (std::size_t k = 0; k < deferred.size(); ++k) {
-                deferred[k].first_piece = static_cast<std::uint32_t>(pieces.size());
-                pieces.insert(pieces.end(), deferred_pieces[k].begin(), deferred_pieces[k].end());
+                join(deferred[k], deferred_pieces[k], deferred_records[k]);
                 finish_cut(deferred[k]);
             }
             deferred.clear();
             deferred_pieces.clear();
+            deferred_records.clear();
         }
+    }
+    // A cut of head 2, its pieces and records gathered apart, joins the plate's.
+    void join(plan::Cut& c, const std::vector<plan::Piece>& its_pieces, const std::vector<MotionRecord>& its_records) {
+        c.first_piece = static_cast<std::uint32_t>(pieces.size());
+        pieces.insert(pieces.end(), its_pieces.begin(), its_pieces.end());
+        c.first_record = static_cast<std::uint32_t>(records.size());
+        records.insert(records.end(), its_records.begin(), its_records.end());
     }
     // A cut of more points than a plate's part holds: no pieces and no motions (a store gives none back), so the
     // plate's tests pass over it; N615 says so.
@@ -225,6 +257,7 @@ struct CutPlan::State {
     }
     void finish_cut(plan::Cut& c) {
         c.end_piece = static_cast<std::uint32_t>(pieces.size());
+        c.end_record = static_cast<std::uint32_t>(records.size());
         c.order = static_cast<int>(cuts.size());
         cuts.push_back(std::move(c));
         if ((plate_motions >= kPlanMaxPlateMotions || plate_points >= kPlanMaxPlatePoints) && !cutting(0) &&
@@ -264,7 +297,10 @@ struct CutPlan::State {
         job->settings = settings();
         cuts.reserve(job->cuts.size());  // (the next plate is likely as large)
         pieces.reserve(job->pieces.size());
-        job->keep_contours = keep_contours;
+        job->keep_contours = keep_contours || plate_sink;
+        job->keep_motions = plate_sink != nullptr;
+        job->records.swap(records);
+        records.reserve(job->records.size());
         PlateJob* j = job.get();
         jobs.push_back(std::move(job));
         if (runner) runner->run([j] { j->run(); }, weight);
@@ -281,10 +317,13 @@ struct CutPlan::State {
             cap.move_admitted(j.found, found);
             for (std::size_t k = first_new; k < found.size(); ++k) keep_overlap_within_budget(found[k]);
             cap.add_omitted(j.cap);
-            const int before = static_cast<int>(contours.size());  // (the plate's parents: in the plate's list)
-            for (PlanContour& c : j.contours) {
-                if (c.parent >= 0) c.parent += before;
-                contours.push_back(std::move(c));
+            if (j.keep_motions) plate_sink->on_plate({j.contours, j.records, j.ranges});
+            if (keep_contours) {
+                const int before = static_cast<int>(contours.size());  // (the plate's parents: in the plate's list)
+                for (PlanContour& c : j.contours) {
+                    if (c.parent >= 0) c.parent += before;
+                    contours.push_back(std::move(c));
+                }
             }
             jobs[folded++].reset();
         }
@@ -384,6 +423,7 @@ void CutPlan::on_event(const MachineEvent& e) { s_->event(e); }
 
 void CutPlan::set_runner(PlateRunner* runner) { s_->runner = runner; }
 void CutPlan::defer_plates(const MotionStore* store) { s_->store = store; }
+void CutPlan::keep_plate_motions(PlateContoursSink* sink) { s_->plate_sink = sink; }
 
 void CutPlan::end_input() {
     if (s_->ended) return;

@@ -35,7 +35,8 @@ struct Piece {
 // One cut: a cut contour, pierce to torch off, one head. Its pieces are the plate's pieces [first_piece, end_piece).
 struct Cut : Contour {
     std::uint32_t first_piece = 0, end_piece = 0;
-    int order = 0;                  // cutting order in the plate
+    std::uint32_t first_record = 0, end_record = 0;  // its motions kept as records (CutPlan::keep_plate_motions)
+    int order = 0;                                   // cutting order in the plate
     KerfSide kerf = KerfSide::Off;  // the side in force on the whole cut (Off when it changes along it)
     bool kerf_changed = false;      // (while it is cut: the side changed along it)
     bool closed = false;            // it holds a loop

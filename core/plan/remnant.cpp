@@ -1,10 +1,13 @@
 // The remnant of a plate (remnant.hpp): the plate cut into horizontal slabs at its outlines' points; in each slab
 // the outlines reach to some x (their edges clipped to the slab, grown by the margin); the largest rectangle that
-// ends at the plate's far end is the largest rectangle of that histogram (widths: from that x to the far end).
+// ends at the plate's far end is the largest rectangle of that histogram (widths: from that x to the far end). The
+// outlines run counter-clockwise round their parts: an edge going down has the part to its right, so at each height
+// the outline reaches further right than it; only the edges going up or level are followed slab by slab.
 #include "remnant.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "essi/parts.hpp"
@@ -15,12 +18,21 @@ namespace {
 // The slabs' bounds: the outlines' ys (each grown by the margin both ways) within the plate, or, past
 // kPartsMaxRemnantSlabs of them, that many even slabs.
 std::vector<double> slab_bounds(const Box& plate, const std::vector<std::vector<Point>>& outlines, double margin) {
-    std::vector<double> ys{plate.min_y, plate.max_y};
+    // (the points' ys sorted once: less the margin and plus it they are two sorted runs, merged)
+    std::vector<double> at;
     for (const std::vector<Point>& o : outlines)
         for (const Point& p : o)
-            for (const double y : {p.y - margin, p.y + margin})
-                if (y > plate.min_y && y < plate.max_y) ys.push_back(y);
-    std::sort(ys.begin(), ys.end());
+            if (!std::isnan(p.y)) at.push_back(p.y);
+    std::sort(at.begin(), at.end());
+    std::vector<double> ys;
+    ys.reserve(2 * at.size() + 2);
+    ys.push_back(plate.min_y);
+    for (std::size_t below = 0, above = 0; below < at.size() || above < at.size();) {
+        const bool take_below = above == at.size() || (below < at.size() && at[below] - margin <= at[above] + margin);
+        const double y = take_below ? at[below++] - margin : at[above++] + margin;
+        if (y > plate.min_y && y < plate.max_y) ys.push_back(y);
+    }
+    ys.push_back(plate.max_y);
     ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
     if (ys.size() <= kPartsMaxRemnantSlabs + 1) return ys;
     ys.resize(kPartsMaxRemnantSlabs + 1);
@@ -38,6 +50,94 @@ std::optional<double> reach(Point a, Point b, double y0, double y1, double margi
     const double c0 = std::max(y0 - margin, std::min(a.y, b.y)), c1 = std::min(y1 + margin, std::max(a.y, b.y));
     const auto x_at = [&](double y) { return a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y); };
     return std::max(x_at(c0), x_at(c1)) + margin;
+}
+
+// reach() of the edge a-b, its slope worked out once: the x it reaches (grown by the margin) in the slab
+// [y0, y1] widened by the margin, -infinity when it misses it.
+class EdgeReach {
+public:
+    EdgeReach(Point a, Point b, double margin)
+        : a_(a), lo_(std::min(a.y, b.y)), hi_(std::max(a.y, b.y)), margin_(margin),
+          level_x_(std::max(a.x, b.x) + margin), slope_(a.y == b.y ? 0 : (b.x - a.x) / (b.y - a.y)),
+          level_(a.y == b.y) {}
+    [[nodiscard]] double in(double y0, double y1) const {
+        if (hi_ + margin_ <= y0 || lo_ - margin_ >= y1) return -std::numeric_limits<double>::infinity();
+        if (level_) return level_x_;
+        const double c0 = std::max(y0 - margin_, lo_), c1 = std::min(y1 + margin_, hi_);
+        return std::max(a_.x + slope_ * (c0 - a_.y), a_.x + slope_ * (c1 - a_.y)) + margin_;
+    }
+
+private:
+    Point a_;
+    double lo_, hi_, margin_, level_x_, slope_;
+    bool level_;
+};
+
+// The slab holding y, plus one (the first bound above y), searched outward from `hint` (galloping).
+std::size_t slab_near(const std::vector<double>& ys, double y, std::size_t hint) {
+    const std::size_t n = ys.size();
+    hint = std::min(hint, n);
+    const auto first_above = [&](std::size_t lo, std::size_t hi) {
+        return static_cast<std::size_t>(std::upper_bound(ys.begin() + static_cast<std::ptrdiff_t>(lo),
+                                                         ys.begin() + static_cast<std::ptrdiff_t>(hi), y) -
+                                        ys.begin());
+    };
+    std::size_t step = 1;
+    if (hint < n && ys[hint] <= y) {  // (the answer lies right of hint)
+        std::size_t lo = hint + 1;
+        while (lo + step - 1 < n && ys[lo + step - 1] <= y) {
+            lo += step;
+            step *= 2;
+        }
+        return first_above(lo, std::min(n, lo + step - 1));
+    }
+    std::size_t hi = hint;  // (ys[hi] > y, or hi == n: the answer is hi or left of it)
+    while (hi >= step && ys[hi - step] > y) {
+        hi -= step;
+        step *= 2;
+    }
+    return first_above(hi >= step ? hi - step + 1 : 0, hi);
+}
+
+// An outline's edge a-b and the slabs [s0, s1) it spans (grown by the margin).
+struct EdgeSlabs {
+    Point a, b;
+    std::uint32_t s0 = 0, s1 = 0;
+};
+
+// Each slab raised to the largest x the edges reach in it (EdgeReach), the outlines taken from the one that
+// reaches furthest: a slab already raised as far as an outline's furthest x cannot be raised by it or any later
+// one, so it is passed over from then on (`next`: the next slab that is not, path-halving).
+void raise_exactly(const std::vector<std::vector<Point>>& outlines, const std::vector<EdgeSlabs>& edges,
+                   const std::vector<double>& ys, double margin, std::vector<double>& reached) {
+    struct Outline {
+        std::size_t first_edge, end_edge;
+        double furthest;  // its edges' largest x, grown by the margin
+    };
+    std::vector<Outline> order;
+    for (std::size_t k = 0, first = 0; k < outlines.size(); first += outlines[k++].size()) {
+        Outline o{first, first + outlines[k].size(), -std::numeric_limits<double>::infinity()};
+        for (const Point& p : outlines[k]) o.furthest = std::max(o.furthest, p.x + margin);
+        order.push_back(o);
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [](const Outline& a, const Outline& b) { return a.furthest > b.furthest; });
+    std::vector<std::uint32_t> next(reached.size() + 1);
+    for (std::size_t s = 0; s < next.size(); ++s) next[s] = static_cast<std::uint32_t>(s);
+    const auto open_from = [&](std::uint32_t s) {
+        while (next[s] != s) s = next[s] = next[next[s]];
+        return s;
+    };
+    for (const Outline& o : order)
+        for (std::size_t k = o.first_edge; k < o.end_edge; ++k) {
+            const EdgeSlabs& e = edges[k];
+            if (e.b.y < e.a.y) continue;  // (going down: the part's material lies to its right, so does its outline)
+            const EdgeReach edge(e.a, e.b, margin);
+            for (std::uint32_t s = open_from(e.s0); s < e.s1; s = open_from(s + 1)) {
+                reached[s] = std::max(reached[s], edge.in(ys[s], ys[s + 1]));
+                if (reached[s] >= o.furthest) next[s] = s + 1;
+            }
+        }
 }
 
 // Past kPartsMaxRemnantSteps, an edge is cut into at most this many pieces over the slabs it spans.
@@ -71,34 +171,45 @@ std::optional<Box> remnant(const Box& plate, const std::vector<std::vector<Point
     if (plate.empty || !(plate.max_x > plate.min_x) || !(plate.max_y > plate.min_y)) return std::nullopt;
     const std::vector<double> ys = slab_bounds(plate, outlines, margin);
     const std::size_t slabs = ys.size() - 1;
-    const auto slab_of = [&](double y) {  // (the slab holding y, plus one)
-        return static_cast<std::size_t>(std::upper_bound(ys.begin(), ys.end(), y) - ys.begin());
-    };
     // Each edge over the slabs it spans, slab by slab while that takes at most kPartsMaxRemnantSteps steps in all;
     // past that an edge over more than kRemnantPieces slabs is cut into that many pieces, each raising its slabs to
     // its largest x (a little more than the edge reaches in some of them: the remnant only gets smaller).
+    std::vector<EdgeSlabs> edges;
+    std::vector<std::size_t> below, above;  // slab_of(y - margin) and slab_of(y + margin) of an outline's points
     std::size_t steps = 0;
-    for (const std::vector<Point>& o : outlines)
-        for (std::size_t k = 0; k < o.size(); ++k) {
-            const Point a = o[k], b = o[(k + 1) % o.size()];
-            steps += slab_of(std::max(a.y, b.y) + margin) - std::min(slab_of(std::min(a.y, b.y) - margin), slabs) + 1;
+    for (const std::vector<Point>& o : outlines) {
+        below.resize(o.size());
+        above.resize(o.size());
+        for (std::size_t k = 0; k < o.size(); ++k) {  // (searched from the point before's: they lie close)
+            below[k] = slab_near(ys, o[k].y - margin, k > 0 ? below[k - 1] : slabs / 2);
+            above[k] = slab_near(ys, o[k].y + margin, k > 0 ? above[k - 1] : slabs / 2);
         }
-    const bool exact = steps <= kPartsMaxRemnantSteps;
-    Reach reach_of(slabs, plate.min_x);
-    for (const std::vector<Point>& o : outlines)
         for (std::size_t k = 0; k < o.size(); ++k) {
-            const Point a = o[k], b = o[(k + 1) % o.size()];
-            const std::size_t s0 = std::max<std::size_t>(slab_of(std::min(a.y, b.y) - margin), 1) - 1;
-            const std::size_t s1 = std::min(slabs, slab_of(std::max(a.y, b.y) + margin));
-            if (s1 <= s0) continue;
-            const std::size_t pieces = exact ? s1 - s0 : std::min<std::size_t>(s1 - s0, kRemnantPieces);
+            const std::size_t next = k + 1 == o.size() ? 0 : k + 1;
+            const Point a = o[k], b = o[next];
+            // (slab_of(min(a.y, b.y) - margin) and slab_of(max(a.y, b.y) + margin): slab_of only grows with y)
+            const std::size_t lo = std::min(below[k], below[next]), hi = std::max(above[k], above[next]);
+            steps += hi - std::min(lo, slabs) + 1;
+            edges.push_back({a, b, static_cast<std::uint32_t>(std::max<std::size_t>(lo, 1) - 1),
+                             static_cast<std::uint32_t>(std::min(slabs, hi))});
+        }
+    }
+    std::vector<double> reached(slabs, plate.min_x);
+    if (steps <= kPartsMaxRemnantSteps) {
+        raise_exactly(outlines, edges, ys, margin, reached);
+    } else {
+        Reach reach_of(slabs, plate.min_x);
+        for (const EdgeSlabs& e : edges) {
+            if (e.s1 <= e.s0) continue;
+            const std::size_t pieces = std::min<std::size_t>(e.s1 - e.s0, kRemnantPieces);
             for (std::size_t p = 0; p < pieces; ++p) {
-                const std::size_t first = s0 + (s1 - s0) * p / pieces, end = s0 + (s1 - s0) * (p + 1) / pieces;
-                if (const auto x = reach(a, b, ys[first], ys[end], margin)) reach_of.raise(first, end, *x);
+                const std::size_t first = e.s0 + (e.s1 - e.s0) * p / pieces;
+                const std::size_t end = e.s0 + (e.s1 - e.s0) * (p + 1) / pieces;
+                if (const auto x = reach(e.a, e.b, ys[first], ys[end], margin)) reach_of.raise(first, end, *x);
             }
         }
-    std::vector<double> reached(slabs);
-    for (std::size_t s = 0; s < slabs; ++s) reached[s] = reach_of.at(s);
+        for (std::size_t s = 0; s < slabs; ++s) reached[s] = reach_of.at(s);
+    }
     // The largest rectangle of the histogram (a stack of slabs whose free width only grows)
     double best = 0;
     Box out;

@@ -1,6 +1,8 @@
 #include "essi/report_json.hpp"
 
 #include <cmath>
+#include <optional>
+#include <string>
 
 namespace essi {
 
@@ -178,7 +180,16 @@ nlohmann::json parts_to_json(const PartsList& list) {
     return {{"parts", std::move(parts)}, {"groups", std::move(groups)}, {"plates", std::move(plates)}};
 }
 
-nlohmann::json file_report_to_json(const FileReport& file, Lang lang) {
+namespace {
+
+// What stands for a file's parts list member in write_report_json's text until it is written there.
+std::string parts_placeholder(std::size_t file, std::string_view member) {
+    return "(parts list of file " + std::to_string(file) + ": " + std::string(member) + ")";
+}
+constexpr std::string_view kPartsMembers[] = {"groups", "parts", "plates"};  // (as a JSON object orders them)
+
+// file_report_to_json, the parts list's members as their placeholders when `file_index` is given.
+nlohmann::json file_json(const FileReport& file, Lang lang, std::optional<std::size_t> file_index) {
     nlohmann::json j = nlohmann::json::object();
     j["path"] = file.display_path();
     j["ok"] = file.ok();
@@ -190,19 +201,24 @@ nlohmann::json file_report_to_json(const FileReport& file, Lang lang) {
     j["diagnostics"] = diagnostics_to_json(file.result.diagnostics, lang);
     j["stats"] = stats_to_json(file.result.stats);
     if (file.omitted() > 0) j["diagnostics_omitted"] = file.omitted();
-    if (file.result.parts) {
+    if (file.result.parts && file_index) {
+        for (const std::string_view member : kPartsMembers)
+            j[std::string(member)] = parts_placeholder(*file_index, member);
+    } else if (file.result.parts) {
         nlohmann::json parts = parts_to_json(*file.result.parts);
         for (auto& [key, value] : parts.items()) j[key] = std::move(value);
     }
     return j;
 }
 
-nlohmann::json report_to_json(std::span<const FileReport> files, std::string_view profile_name, Lang lang) {
+nlohmann::json report_json(std::span<const FileReport> files, std::string_view profile_name, Lang lang,
+                           bool parts_as_placeholders) {
     nlohmann::json out = nlohmann::json::object();
     nlohmann::json arr = nlohmann::json::array();
     std::size_t files_ok = 0, errors = 0, warnings = 0;
-    for (const FileReport& f : files) {
-        arr.push_back(file_report_to_json(f, lang));
+    for (std::size_t k = 0; k < files.size(); ++k) {
+        const FileReport& f = files[k];
+        arr.push_back(file_json(f, lang, parts_as_placeholders ? std::optional<std::size_t>(k) : std::nullopt));
         if (f.ok()) ++files_ok;
         errors += f.errors();
         warnings += f.warnings();
@@ -216,6 +232,36 @@ nlohmann::json report_to_json(std::span<const FileReport> files, std::string_vie
     };
     out["profile"] = std::string(profile_name);
     return out;
+}
+
+}  // namespace
+
+nlohmann::json file_report_to_json(const FileReport& file, Lang lang) { return file_json(file, lang, std::nullopt); }
+
+nlohmann::json report_to_json(std::span<const FileReport> files, std::string_view profile_name, Lang lang) {
+    return report_json(files, profile_name, lang, false);
+}
+
+void write_report_json(std::span<const FileReport> files, std::string_view profile_name, Lang lang, int indent,
+                       const std::function<void(std::string_view)>& write) {
+    const std::string text = report_json(files, profile_name, lang, indent > 0).dump(indent);
+    const std::string_view all(text);
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < files.size() && indent > 0; ++k) {
+        if (!files[k].result.parts) continue;
+        for (const std::string_view member : kPartsMembers) {
+            // `"member": "placeholder"` (a quote inside a string is written escaped: nothing else reads so)
+            const std::string stand_in = "\"" + std::string(member) + "\": \"" + parts_placeholder(k, member) + "\"";
+            const std::size_t found = all.find(stand_in, at);
+            if (found == std::string_view::npos) continue;
+            const std::size_t line = all.rfind('\n', found) + 1;  // (the member's indentation: its line's spaces)
+            write(all.substr(at, found + member.size() + 4 - at));
+            write_parts_member_json(*files[k].result.parts, member, indent, static_cast<int>((found - line) / indent),
+                                    write);
+            at = found + stand_in.size();
+        }
+    }
+    write(all.substr(at));
 }
 
 nlohmann::json stats_report_to_json(std::span<const FileReport> files, std::string_view profile_name) {

@@ -48,7 +48,7 @@ void write_kept_report(std::vector<native::BatchItem>& kept, const CheckOptions&
         reports.reserve(kept.size());
         for (native::BatchItem& it : kept)
             if (it.read_ok) reports.push_back(std::move(it.report));
-        out(report_to_json(reports, profile_name, lang()).dump(kJsonIndent));
+        write_report_json(reports, profile_name, lang(), kJsonIndent, [](std::string_view s) { out(s); });
         out("\n");
     } else if (o.format == "junit") {
         out(native::junit_report(kept, profile_name, seconds, fail_on, lang()));
@@ -145,7 +145,7 @@ Subcommand define_check(CLI::App& essi) {
         ->check(CLI::Range(0LL, static_cast<long long>(kMaxPerCodeLimit)))
         ->type_name("N");
     check->add_flag("--parts", o->parts,
-                    "JSON: each file's parts, groups and plates too (essi parts; reads each tape twice more)");
+                    "JSON: each file's parts, groups and plates too (essi parts; found in the same pass)");
     check->add_flag("-q,--quiet", o->quiet,
                     "Text: only errors, warnings and the summary; json/junit/sarif: no summary on stderr");
     check

@@ -12,6 +12,10 @@
 #include "essi/geom.hpp"
 #include "essi/parts.hpp"
 #include "essi/parts_report.hpp"
+#include "essi/pipeline.hpp"
+#include "essi/plan.hpp"
+#include "essi/read.hpp"
+#include "essi/interp.hpp"
 #include "essi/profile.hpp"
 #include "essi/report_json.hpp"
 #include "paths.hpp"
@@ -210,6 +214,61 @@ TEST(Parts, FullCircleAreaAndCentroid) {
     EXPECT_NEAR(t.twice_area / 2, 100 * essi::kPi, 1e-9);
     EXPECT_NEAR(t.x2dy / t.twice_area, 3, 1e-9);
     EXPECT_NEAR(-t.y2dx / t.twice_area, 4, 1e-9);
+}
+
+// The three ways to a parts list give the same list: the check's own pass (check_tape with parts), tape_parts, and
+// find_parts over the plan's contours with the motions read back from a store (as the viewer has them).
+class AllMotions final : public essi::MotionSink, public essi::MotionStore {
+public:
+    void on_motion(const essi::MotionRecord& m) override { motions_.push_back(m); }
+    [[nodiscard]] essi::MotionRecord motion(std::size_t index) const override { return motions_.at(index); }
+
+private:
+    std::vector<essi::MotionRecord> motions_;
+};
+
+TEST(Parts, TheChecksPassTapePartsAndAStoreAgree) {
+    for (const char* name : {"rect_round_hole", "turned", "mirrored"}) {
+        SCOPED_TRACE(name);
+        const Case c = run_case(name);
+        const std::string bytes = read_file(test_data_dir() + "/parts/" + name + ".esi");
+        const essi::CheckResult checked =
+            essi::check_tape(bytes, c.profile, essi::InputFormat::Essi, static_cast<std::size_t>(-1), true);
+        ASSERT_TRUE(checked.parts.has_value());
+        AllMotions store;
+        std::vector<essi::Diagnostic> ignored;
+        essi::interpret(essi::read_tape(bytes, c.profile), bytes, c.profile, store, ignored);
+        const PartsList stored = essi::find_parts(essi::plan_contours(bytes, c.profile), store, c.profile);
+        const std::string expected = essi::parts_to_json(c.parts).dump();
+        EXPECT_EQ(essi::parts_to_json(*checked.parts).dump(), expected);
+        EXPECT_EQ(essi::parts_to_json(stored).dump(), expected);
+        EXPECT_GT(c.parts.parts.size(), 0u);
+    }
+}
+
+// The report written a piece at a time (write_report_json: the parts lists never made JSON values) is the text of
+// the report's JSON value, byte for byte.
+TEST(Parts, ReportWrittenInPiecesIsTheDump) {
+    std::vector<essi::FileReport> files;
+    for (const char* name : {"rect_round_hole", "mirrored"}) {
+        const Case c = run_case(name);
+        essi::FileReport f;
+        f.path = std::string(name) + ".esi";
+        f.result = essi::check_tape(read_file(test_data_dir() + "/parts/" + name + ".esi"), c.profile,
+                                    essi::InputFormat::Essi, static_cast<std::size_t>(-1), true);
+        files.push_back(std::move(f));
+    }
+    essi::FileReport without;  // (a file without parts between them)
+    without.path = "none.esi";
+    files.insert(files.begin() + 1, std::move(without));
+    std::string written;
+    std::size_t pieces = 0;
+    essi::write_report_json(files, "iso6582", essi::Lang::En, 2, [&](std::string_view s) {
+        written += s;
+        ++pieces;
+    });
+    EXPECT_EQ(written, essi::report_to_json(files, "iso6582", essi::Lang::En).dump(2));
+    EXPECT_GT(pieces, 3u);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -31,6 +32,9 @@ constexpr double kPartsSameShapeUnits = 2;
 // A part is compared exactly with at most this many earlier groups whose signature it shares (area, perimeter,
 // pieces, their lengths, its holes' places); past that it makes a group of its own.
 constexpr std::size_t kPartsMaxCompares = 32;
+// A part's search for its group visits at most this many earlier groups of its number of loops and pieces, its area
+// and its perimeter (within the same-shape tolerance), similar or not; past that it makes a group of its own.
+constexpr std::size_t kPartsMaxVisits = 4096;
 // A comparison tries at most this many alignments (the features of the other part as far from its centroid as the
 // farthest of this one's).
 constexpr std::size_t kPartsMaxAlignments = 64;
@@ -90,11 +94,31 @@ struct PartsList {
     std::vector<PlateUse> plates;  // the plates that hold parts
 };
 
-// The parts of the plan's contours (CutPlan::contours(), plan_contours), their motions read back from `store`.
+// The parts of the plan's contours (CutPlan::contours(), plan_contours), their motions read back from `store`
+// (contours listed plate by plate).
 [[nodiscard]] PartsList find_parts(const std::vector<PlanContour>& contours, const MotionStore& store,
                                    const Profile& profile);
 
-// The parts of a tape: reads and interprets it twice (its contours, then their motions, a plate at a time).
+// The parts list made from the cut plan's plates as they are analysed (CutPlan::keep_plate_motions), in the pass
+// that checks the tape (TapeChecker::find_parts): each plate's parts are made, grouped with the earlier plates',
+// and its utilisation and remnant found when the plan hands it on; what is kept between plates is the list itself
+// and the groups' shapes (kPartsMaxKeptPieces).
+class PartsBuilder;
+class PartsFinder final : public PlateContoursSink {
+public:
+    explicit PartsFinder(const Profile& profile);
+    ~PartsFinder() override;
+    PartsFinder(const PartsFinder&) = delete;
+    PartsFinder& operator=(const PartsFinder&) = delete;
+    void on_plate(const PlateContours& plate) override;
+    // After the plan's finish(): the list. Call once.
+    [[nodiscard]] PartsList finish();
+
+private:
+    std::unique_ptr<PartsBuilder> builder_;
+};
+
+// The parts of a tape: reads and interprets it once, through the cut plan (without the rest of the check).
 [[nodiscard]] PartsList tape_parts(std::string_view bytes, const Profile& profile,
                                    InputFormat format = InputFormat::Essi);
 

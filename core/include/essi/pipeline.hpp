@@ -14,6 +14,7 @@
 #include "essi/dialect.hpp"
 #include "essi/interp.hpp"
 #include "essi/motion.hpp"
+#include "essi/parts.hpp"
 #include "essi/plan.hpp"
 #include "essi/profile.hpp"
 #include "essi/read.hpp"
@@ -22,14 +23,15 @@
 
 namespace essi {
 
-// `max_diagnostics`: at most that many are kept (TapeChecker::set_max_diagnostics).
+// `max_diagnostics`: at most that many are kept (TapeChecker::set_max_diagnostics); `parts`: the result has the
+// parts list too (TapeChecker::find_parts).
 [[nodiscard]] CheckResult check_tape(std::string_view bytes, const Profile& profile,
                                      InputFormat format = InputFormat::Essi,
-                                     std::size_t max_diagnostics = static_cast<std::size_t>(-1));
+                                     std::size_t max_diagnostics = static_cast<std::size_t>(-1), bool parts = false);
 // The check of a tape as `setup` reads it (essi/dialect.hpp: format and profile given or found), with the
 // setup's note (N403) among the diagnostics and the setup in the result.
 [[nodiscard]] CheckResult check_tape(std::string_view bytes, const TapeSetup& setup,
-                                     std::size_t max_diagnostics = static_cast<std::size_t>(-1));
+                                     std::size_t max_diagnostics = static_cast<std::size_t>(-1), bool parts = false);
 // The result's record of `setup` (format, profile, evidence, note): for callers that run their own TapeChecker.
 void record_setup(CheckResult& result, const TapeSetup& setup);
 
@@ -51,6 +53,9 @@ public:
     // result would keep them; the rest counted): the memory the check's diagnostics take is bounded by it too.
     // Before the first chunk.
     void set_max_diagnostics(std::size_t max) { max_kept_ = max; }
+    // finish() gives the parts list too (essi/parts.hpp), made from the cut plan's plates in this same pass.
+    // Before the first chunk; not with defer_plan.
+    void find_parts();
     // After the last chunk: the result (diagnostics sorted). Call once.
     [[nodiscard]] CheckResult finish();
 
@@ -95,11 +100,13 @@ private:
         MotionSink& also_;
     };
     std::string_view bytes_;
+    const Profile& profile_;
     CheckResult result_;
     DiagnosticCap cap_;  // max_per_code for the diagnostics of the reader and the interpreter
     std::size_t max_kept_ = static_cast<std::size_t>(-1);
     StatsSink stats_;
-    CutPlan plan_;  // the cut plan's rules (essi/plan.hpp)
+    CutPlan plan_;                        // the cut plan's rules (essi/plan.hpp)
+    std::unique_ptr<PartsFinder> parts_;  // find_parts
     std::unique_ptr<PlanThenAlso> both_;
     Interpreter interpreter_;  // feeds the statistics directly, and the plan (and `also`)
     unsigned long long blocks_ = 0;

@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -106,6 +107,26 @@ public:
     virtual void wait() = 0;
 };
 
+// A plate's contours with their cutting motions, as the cut plan hands them on (CutPlan::keep_plate_motions): what
+// the parts list (essi/parts.hpp) is made from in the check's own pass.
+struct MotionRange {
+    std::uint32_t first = 0, end = 0;
+};
+struct PlateContours {
+    std::span<const PlanContour> contours;  // as contours() lists them, a parent an index in this span
+    std::span<const MotionRecord> motions;  // the plate's cutting motions
+    std::span<const MotionRange> ranges;    // contour k's: motions[ranges[k].first, ranges[k].end)
+    [[nodiscard]] std::span<const MotionRecord> of(std::size_t k) const {
+        return motions.subspan(ranges[k].first, ranges[k].end - ranges[k].first);
+    }
+};
+class PlateContoursSink {
+public:
+    virtual ~PlateContoursSink() = default;
+    // One plate, after its analysis, in plate order on the thread that feeds the plan.
+    virtual void on_plate(const PlateContours& plate) = 0;
+};
+
 // The cut plan of one tape, fed the motion stream (a MotionSink): diagnostics come out when a plate ends and at
 // finish(). TapeChecker runs one on every tape it checks.
 class CutPlan final : public MotionSink {
@@ -125,6 +146,10 @@ public:
     // (analyse_deferred_plate, or finish). Before the first motion; `store` must hold every motion given to this
     // plan by then and outlive it.
     void defer_plates(const MotionStore* store);
+    // Each plate's contours and their cutting motions go to `sink` once the plate is analysed (the plate's cutting
+    // motions are kept as records until then: a plate's parts are bounded by kPlanMaxPlateMotions and
+    // kPlanMaxPlatePoints). Before the first motion; `sink` must outlive finish(). Not with defer_plates.
+    void keep_plate_motions(PlateContoursSink* sink);
     // After the last motion: the last plate ended (analysed, handed to the runner, or kept when deferred).
     void end_input();
     // Analyses the next plate kept by defer_plates (after end_input, or between motions); false when none is left.

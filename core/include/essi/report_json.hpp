@@ -3,6 +3,7 @@
 // value out. The formats only the CLI writes (text, SARIF, JUnit, GitHub) live in native/.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -62,6 +63,16 @@ struct FileReport {
 // {"files":[...],"summary":{"files","files_ok","errors","warnings"},"profile":"name"}
 [[nodiscard]] nlohmann::json report_to_json(std::span<const FileReport> files, std::string_view profile_name,
                                             Lang lang = Lang::En);
+
+// report_to_json(files, profile_name, lang).dump(indent) (indent > 0), written to `write` a piece at a time: the
+// files' parts lists are written from the lists (write_parts_member_json), never made JSON values, so a report of
+// many parts takes little memory beyond the lists.
+void write_report_json(std::span<const FileReport> files, std::string_view profile_name, Lang lang, int indent,
+                       const std::function<void(std::string_view)>& write);
+// The member `member` ("parts", "groups" or "plates") of parts_to_json(parts), written as dump(indent) writes it
+// at `depth` levels of indentation, to `write` a piece at a time.
+void write_parts_member_json(const PartsList& parts, std::string_view member, int indent, int depth,
+                             const std::function<void(std::string_view)>& write);
 
 // The report of `essi stats --format json`: {"files":[{"path","stats"}],"profile":"name"}
 [[nodiscard]] nlohmann::json stats_report_to_json(std::span<const FileReport> files, std::string_view profile_name);
