@@ -24,8 +24,6 @@ namespace {
 bool is_part(ContourRole r) { return r == ContourRole::Part || r == ContourRole::LonePart; }
 
 constexpr double kMm3PerM3 = 1e9;
-// Blocks read at a time (as the check reads them).
-constexpr std::size_t kPartsChunkBlocks = 8192;
 
 // The loop of a contour: its motions [loop_begin, loop_end), the first from loop_start, the last to where the loop
 // closes (a parabola's chord may close it inside the motion).
@@ -319,12 +317,7 @@ PartsList tape_parts(std::string_view bytes, const Profile& profile, InputFormat
     PartsFinder finder(profile);
     CutPlan plan(profile);
     plan.keep_plate_motions(&finder);
-    std::vector<Diagnostic> ignored;  // (the check has them)
-    Interpreter interpreter(bytes, profile, plan, ignored);
-    TapeReader reader(bytes, profile, format);
-    Tape chunk;
-    while (reader.read_chunk(chunk, kPartsChunkBlocks)) interpreter.run(chunk);
-    interpreter.finish();
+    replay_tape(bytes, profile, format, plan);
     (void)plan.finish();
     return finder.finish();
 }
