@@ -101,7 +101,7 @@ std::string Exports::export_text(const std::string& format) const {
     if (format == "job-html") {
         JobSheetInput in = job_input(*d);
         in.sha256 = sha256_hex(d->bytes);
-        return job_sheet_html(job_sheet_of(d->bytes, d->setup, job_result(), in));
+        return job_sheet_html(job_sheet_of(d->bytes, d->setup, job_result(true), in));
     }
     if (format == "report-json" || format == "report-csv") {
         const FileReport r = report();
@@ -131,21 +131,23 @@ JobSheetInput Exports::job_input(const Document& d) const {
     return in;
 }
 
-CheckResult Exports::job_result() const {
+CheckResult Exports::job_result(bool make_parts) const {
     CheckResult result = report().result;
-    if (const PartsList* parts = facts_.parts()) result.parts = *parts;
+    if (const PartsList* parts = make_parts ? facts_.parts() : facts_.parts_made()) result.parts = *parts;
     return result;
 }
 
 const std::vector<SheetSection>& Exports::job_sections() {
     const Document* d = session_.document();
-    const JobSectionsOf now{d ? session_.documents_read() : 0, d ? d->diagnostics.size() : 0, ui_lang()};
-    if (now.load == job_of_.load && now.diagnostics == job_of_.diagnostics && now.lang == job_of_.lang)
+    const JobSectionsOf now{d ? session_.documents_read() : 0, d ? d->diagnostics.size() : 0, ui_lang(),
+                            facts_.parts_made() != nullptr};
+    if (now.load == job_of_.load && now.diagnostics == job_of_.diagnostics && now.lang == job_of_.lang &&
+        now.parts == job_of_.parts)
         return job_sections_;
     job_of_ = now;
     job_sections_.clear();
     if (!d) return job_sections_;
-    const CheckResult result = job_result();
+    const CheckResult result = job_result(false);
     JobSheet sheet = make_job_sheet(result, d->profile, SheetDrawing{}, sheet_parts(result), job_input(*d));
     for (SheetSection& s : sheet.sections)
         if (s.id == "time" || s.id == "parts" || s.id == "plates") job_sections_.push_back(std::move(s));

@@ -45,8 +45,9 @@ public:
     // Right after that frame is drawn: its drawing area (framebuffer pixels) saved.
     void save_view_png(PixelRect area);
 
-    // The job sheet's sections the Job panel shows (time and cost, parts, plates), in the UI's language: made again
-    // when the tape, its diagnostics (the cut plan's join later) or the language change.
+    // The job sheet's sections the Job panel shows (time and cost; parts and plates once the parts list is made:
+    // TapeFacts::parts_made), in the UI's language: made again when the tape, its diagnostics (the cut plan's join
+    // later), the parts list or the language change.
     [[nodiscard]] const std::vector<SheetSection>& job_sections();
     // The job sheet in a new tab of the browser, to read and print (saved as a file where no tab opens).
     void print_job_sheet();
@@ -54,8 +55,9 @@ public:
 private:
     [[nodiscard]] std::string inspector_text(const Document& d) const;
     [[nodiscard]] JobSheetInput job_input(const Document& d) const;
-    // The report's result with the tape's parts list, as `essi report` makes the sheet from.
-    [[nodiscard]] CheckResult job_result() const;
+    // The report's result with the tape's parts list, as `essi report` makes the sheet from (`make_parts`: made
+    // now if need be; else only when made already).
+    [[nodiscard]] CheckResult job_result(bool make_parts) const;
 
     const Session& session_;
     const TapeFacts& facts_;
@@ -68,6 +70,7 @@ private:
         std::uint64_t load = 0;  // Session::documents_read when it was made (0: never)
         std::size_t diagnostics = 0;
         Lang lang = Lang::En;
+        bool parts = false;  // with the parts list
     } job_of_;
     std::vector<SheetSection> job_sections_;
 };

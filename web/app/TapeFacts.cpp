@@ -14,6 +14,10 @@ const PartsList* TapeFacts::parts() const {
     return &parts_.value;
 }
 
+const PartsList* TapeFacts::parts_made() const {
+    return load_.document() && parts_.made_for == load_.documents_read() ? &parts_.value : nullptr;
+}
+
 const std::vector<PlannedMotion>* TapeFacts::planned() const {
     const Document* d = load_.document();
     if (!d) return nullptr;

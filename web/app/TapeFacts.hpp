@@ -20,6 +20,9 @@ public:
 
     // The open tape's parts list; null while no tape is open.
     [[nodiscard]] const PartsList* parts() const override;
+    // The same when it has been made for the open tape already, else null (makes nothing: the Job panel and
+    // state() show the parts once something asked for them, and never read a big tape again by themselves).
+    [[nodiscard]] const PartsList* parts_made() const;
     // The open tape's planned motions (empty without the profile's accel_mm_s2); null while no tape is open.
     [[nodiscard]] const std::vector<PlannedMotion>* planned() const override;
 
