@@ -112,7 +112,9 @@ void check_case(const std::string& name) {
             ASSERT_LE(e.number, p.parts.size()) << what;
             const essi::Part& part = p.parts[e.number - 1];
             expect_values(e, {{"group", part.group}, {"plate", part.plate}, {"turned_deg", part.turned_deg}}, what);
-            if (e.values.count("lines")) EXPECT_EQ(lines_text(part), e.values.at("lines")) << what;
+            if (e.values.count("lines")) {
+                EXPECT_EQ(lines_text(part), e.values.at("lines")) << what;
+            }
         } else if (e.kind == "plate") {
             ASSERT_LE(e.number, p.plates.size()) << what;
             const essi::PlateUse& u = p.plates[e.number - 1];
