@@ -27,10 +27,26 @@ public:
     [[nodiscard]] const std::vector<PlannedMotion>* planned() const override;
 
 private:
+    // A value kept for the tape it was made for.
     template <class T>
     struct Kept {
         std::uint64_t made_for = 0;  // LoadController::documents_read() when it was made (0: never)
         T value;
+        // The value for the open tape (made by make(document) unless it was made for it); null without a tape.
+        template <class Make>
+        const T* get(const LoadController& load, Make make) {
+            const Document* d = load.document();
+            if (!d) return nullptr;
+            if (made_for != load.documents_read()) {
+                value = make(*d);
+                made_for = load.documents_read();
+            }
+            return &value;
+        }
+        // The same when made for the open tape already, else null.
+        [[nodiscard]] const T* made(const LoadController& load) const {
+            return load.document() && made_for == load.documents_read() ? &value : nullptr;
+        }
     };
     const LoadController& load_;
     mutable Kept<PartsList> parts_;
