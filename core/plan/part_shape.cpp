@@ -13,6 +13,7 @@ namespace {
 
 constexpr std::size_t kMaxTurns = kPartsMaxAlignments;
 constexpr double kOutlineTolerance = kPartsOutlineToleranceMm;
+constexpr double kOutlineCoarseMm = kPartsOutlineCoarseMm;
 constexpr int kOutlineMaxChords = kPlanMaxArcChords;
 // Runs of material this close in width (mm) are as wide for the label: a symmetric part's label does not move
 // from one side to the other with the rounding of its points.
@@ -425,51 +426,94 @@ Box seg_box(const Seg& s) {
 
 namespace {
 
-// The convex hull of a simple polygon (its points in order), counter-clockwise, without points on its sides
-// (Melkman's algorithm: one pass over the points, a deque of the hull so far).
-std::vector<Point> convex_hull(const std::vector<Point>& p) {
-    const auto left = [](Point a, Point b, Point c) { return cross(sub(b, a), sub(c, a)) > 0; };
-    // the first point not on the line of the first two (distinct) points
-    std::size_t second = 1;
-    while (second < p.size() && p[second] == p[0]) ++second;
-    std::size_t third = second + 1;
-    while (third < p.size() && cross(sub(p[second], p[0]), sub(p[third], p[0])) == 0) ++third;
-    if (third >= p.size()) {  // (all on one line: its two ends)
-        if (second >= p.size()) return {p.empty() ? Point{} : p[0]};
-        const auto less = [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
-        const auto [lo, hi] = std::minmax_element(p.begin(), p.end(), less);
-        return {*lo, *hi};
+// The convex hull of points, counter-clockwise, without points on its sides (Andrew's monotone chain).
+std::vector<Point> convex_hull(std::vector<Point> p) {
+    std::sort(p.begin(), p.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    if (p.size() < 3) return p;
+    std::vector<Point> h(2 * p.size());
+    std::size_t k = 0;
+    const auto turns_left = [&](Point c) { return cross(sub(h[k - 1], h[k - 2]), sub(c, h[k - 2])) > 0; };
+    for (const Point& q : p) {  // (the lower chain)
+        while (k >= 2 && !turns_left(q)) --k;
+        h[k++] = q;
     }
-    second = third - 1;  // (the run on the line goes one way along it: its last point is its far end)
-    // the deque in a vector of room for the points both ways: d[bottom, top] (d[bottom] == d[top])
-    std::vector<Point> d(2 * p.size() + 4);
-    std::size_t bottom = p.size(), top = bottom + 3;
-    d[bottom] = d[top] = p[third];
-    if (left(p[0], p[second], p[third])) {
-        d[bottom + 1] = p[0];
-        d[bottom + 2] = p[second];
-    } else {
-        d[bottom + 1] = p[second];
-        d[bottom + 2] = p[0];
+    for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {  // (the upper chain)
+        while (k >= lower && !turns_left(p[i])) --k;
+        h[k++] = p[i];
     }
-    for (std::size_t i = third + 1; i < p.size(); ++i) {
-        const Point v = p[i];
-        if (left(d[bottom], d[bottom + 1], v) && left(d[top - 1], d[top], v)) continue;  // (inside)
-        while (top - bottom > 2 && !left(d[bottom], d[bottom + 1], v)) ++bottom;
-        d[--bottom] = v;
-        while (top - bottom > 2 && !left(d[top - 1], d[top], v)) --top;
-        d[++top] = v;
-    }
-    return {d.begin() + static_cast<std::ptrdiff_t>(bottom), d.begin() + static_cast<std::ptrdiff_t>(top)};
+    h.resize(k - 1);
+    return h;
 }
 
-// The direction (radians) of the smallest-area rectangle around a convex polygon: one of its sides lies along an
-// edge of the polygon (Freeman and Shapira); the edges are walked with rotating calipers (each edge's direction
-// d unscaled: the rectangle's sides along d and across it are the spans of p·d and p·d⊥ over |d|, its area
-// their product over |d|²).
-double smallest_rectangle_angle(const std::vector<Point>& h) {
+// What reaches furthest of an outline in any direction: its pieces' ends, a parabola's points (followed within
+// kOutlineTolerance), and each arc, which in a direction within its normals reaches as far as its centre plus its
+// radius.
+class Support {
+public:
+    explicit Support(const Loop& outline) {
+        for (const Seg& s : outline.segs) {
+            points_.push_back(s.a);
+            if (s.curve == CurveKind::Arc) {
+                const Point start = direction(s.a, s.centre), end = direction(s.b, s.centre);
+                const bool wide = std::fabs(s.sweep) > kPi, full = std::fabs(s.sweep) >= 2 * kPi - 1e-9;
+                bulges_.push_back(
+                    {s.centre, s.radius, s.sweep > 0 ? start : end, s.sweep > 0 ? end : start, wide, full});
+            } else if (s.curve == CurveKind::Parabola) {
+                Loop one;
+                one.segs.push_back(s);
+                flatten_loop(one, kOutlineTolerance, kOutlineMaxChords, points_);
+            }
+        }
+    }
+    // How far the outline reaches along the unit direction n, and against it: the span of p·n.
+    [[nodiscard]] double span(Point n) const {
+        double far = -std::numeric_limits<double>::infinity(), near = std::numeric_limits<double>::infinity();
+        for (const Point& p : points_) {
+            const double along = p.x * n.x + p.y * n.y;
+            far = std::max(far, along);
+            near = std::min(near, along);
+        }
+        for (const Bulge& b : bulges_) {
+            const double along = b.centre.x * n.x + b.centre.y * n.y;
+            if (b.faces(n)) far = std::max(far, along + b.radius);
+            if (b.faces({-n.x, -n.y})) near = std::min(near, along - b.radius);
+        }
+        return far - near;
+    }
+    // The area of the rectangle around the outline with a side in the direction `angle`.
+    [[nodiscard]] double rectangle_area(double angle) const {
+        const Point d{std::cos(angle), std::sin(angle)};
+        return span(d) * span({-d.y, d.x});
+    }
+
+private:
+    // An arc as what it reaches: its normals go from `from` to `to` counter-clockwise.
+    struct Bulge {
+        Point centre;
+        double radius;
+        Point from, to;
+        bool wide, full;  // more than a half turn; a full turn
+        [[nodiscard]] bool faces(Point n) const {
+            if (full) return true;
+            const bool after_from = cross(from, n) >= 0, before_to = cross(n, to) >= 0;
+            return wide ? after_from || before_to : after_from && before_to;
+        }
+    };
+    std::vector<Point> points_;
+    std::vector<Bulge> bulges_;
+};
+
+// The edges' directions (radians) of a convex polygon, counter-clockwise, and the area of the rectangle around it
+// with a side along each (rotating calipers: each edge's direction d unscaled, the rectangle's sides along d and
+// across it are the spans of p·d and p·d⊥ over |d|, its area their product over |d|²). The smallest of all
+// directions lies along one of them (Freeman and Shapira).
+struct EdgeRectangle {
+    double angle, area;
+};
+std::vector<EdgeRectangle> caliper_rectangles(const std::vector<Point>& h) {
     const std::size_t n = h.size();
-    if (n < 3) return n == 2 ? std::atan2(h[1].y - h[0].y, h[1].x - h[0].x) : 0;
+    if (n < 3) return {{n == 2 ? std::atan2(h[1].y - h[0].y, h[1].x - h[0].x) : 0, 0}};
     const auto dot = [](Point a, Point e) { return a.x * e.x + a.y * e.y; };
     const auto after = [n](std::size_t k) { return k + 1 == n ? 0 : k + 1; };
     std::size_t right = 0, top = 0, left = 0;
@@ -485,8 +529,7 @@ double smallest_rectangle_angle(const std::vector<Point>& h) {
         }
         return sign * far;
     };
-    double best = std::numeric_limits<double>::infinity();
-    Point best_d{1, 0};
+    std::vector<EdgeRectangle> out;
     for (std::size_t i = 0; i < n; ++i) {
         const Point d = sub(h[after(i)], h[i]), up{-d.y, d.x};
         const double len2 = d.x * d.x + d.y * d.y;
@@ -496,24 +539,77 @@ double smallest_rectangle_angle(const std::vector<Point>& h) {
         const double far_up = advance(top, up, 1);
         if (i == 0) left = top;
         const double far_left = advance(left, d, -1);
-        const double area = (far_right - far_left) * (far_up - dot(h[i], up)) / len2;
-        if (area < best) {
-            best = area;
-            best_d = d;
+        out.push_back({std::atan2(d.y, d.x), (far_right - far_left) * (far_up - dot(h[i], up)) / len2});
+    }
+    return out;
+}
+
+// A rectangle turned by a quarter turn is the same rectangle: directions are compared within one.
+constexpr double kQuarterTurn = kPi / 2;
+double in_quarter(double angle) { return angle - kQuarterTurn * std::floor(angle / kQuarterTurn); }
+
+// Each direction base + (j + 1/2) step (j in [0, n): the chords of an arc) that lies, within a quarter turn, in
+// [lo, hi] (0 <= lo <= hi <= lo + a quarter turn).
+template <class Visit>
+void chords_between(double base, double step, int n, double lo, double hi, Visit&& visit) {
+    const double first = base + step / 2, last = first + (n - 1) * step;
+    const double low = std::min(first, last), high = std::max(first, last);
+    for (double m = std::floor((low - hi) / kQuarterTurn); m * kQuarterTurn + lo <= high; ++m) {
+        double j0 = (m * kQuarterTurn + lo - first) / step, j1 = (m * kQuarterTurn + hi - first) / step;
+        if (j0 > j1) std::swap(j0, j1);
+        for (int j = std::max(0, static_cast<int>(std::ceil(j0))); j < n && j <= j1; ++j) visit(first + j * step);
+    }
+}
+
+// The direction (radians) of the smallest rectangle around the outline. The hull of the outline's points with its
+// arcs followed within kOutlineCoarseMm lies inside the outline: in every direction its rectangle is no larger than
+// the outline's. Between two of its edges' directions next to each other within a quarter turn its rectangle is at
+// least the smaller of theirs (Freeman and Shapira: the same four points touch the sides, the area has no minimum
+// inside). So the outline's rectangle is taken in the direction of each edge whose rectangle is smaller than the
+// smallest found so far, and within each such pair of directions, in the directions of the outline's bulging arcs'
+// chords within kOutlineTolerance.
+double smallest_rectangle_angle(const Loop& outline) {
+    std::vector<Point> points;
+    flatten_loop(outline, kOutlineCoarseMm, kOutlineMaxChords, points);
+    std::vector<EdgeRectangle> edges = caliper_rectangles(convex_hull(std::move(points)));
+    if (edges.size() < 3) return edges.empty() ? 0 : edges[0].angle;
+    const Support support(outline);
+    EdgeRectangle best{0, std::numeric_limits<double>::infinity()};
+    const auto take = [&](double angle) {
+        if (const double area = support.rectangle_area(angle); area < best.area) best = {angle, area};
+    };
+    for (EdgeRectangle& e : edges) e.angle = in_quarter(e.angle);
+    std::sort(edges.begin(), edges.end(),
+              [](const EdgeRectangle& a, const EdgeRectangle& b) { return a.area < b.area; });
+    for (const EdgeRectangle& e : edges) {
+        if (!(e.area < best.area)) break;
+        take(e.angle);
+    }
+    std::sort(edges.begin(), edges.end(),
+              [](const EdgeRectangle& a, const EdgeRectangle& b) { return a.angle < b.angle; });
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        const EdgeRectangle& lo = edges[k];
+        const EdgeRectangle& hi = edges[(k + 1) % edges.size()];
+        if (!(std::min(lo.area, hi.area) < best.area)) continue;
+        const double to = k + 1 < edges.size() ? hi.angle : hi.angle + kQuarterTurn;
+        for (const Seg& s : outline.segs) {
+            if (s.curve != CurveKind::Arc || !(s.sweep > 0) || !(s.radius > kOutlineTolerance)) continue;
+            const int chords =
+                std::clamp(static_cast<int>(std::ceil(s.sweep / (2 * std::acos(1 - kOutlineTolerance / s.radius)))), 1,
+                           kOutlineMaxChords);
+            // (a chord's direction: the tangent's halfway along it)
+            const double start = std::atan2(s.a.y - s.centre.y, s.a.x - s.centre.x) + kQuarterTurn;
+            chords_between(start, s.sweep / chords, chords, lo.angle, to, take);
         }
     }
-    return std::atan2(best_d.y, best_d.x);
+    return best.angle;
 }
 
 }  // namespace
 
 OutlineRect smallest_rectangle(const Loop& outline) {
-    double angle = 0;  // (a circle: any direction)
-    if (!outline.circle) {
-        std::vector<Point> points;
-        flatten_loop(outline, kOutlineTolerance, kOutlineMaxChords, points);
-        angle = smallest_rectangle_angle(convex_hull(points));
-    }
+    // (a circle: any direction)
+    const double angle = outline.circle || outline.segs.empty() ? 0 : smallest_rectangle_angle(outline);
     // the loop turned by -angle: its exact box
     const Rigid turn(-angle, {0, 0}, {0, 0});
     Box box;

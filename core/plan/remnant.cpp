@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 
 #include "essi/parts.hpp"
 
@@ -17,11 +18,12 @@ namespace {
 
 // The slabs' bounds: the outlines' ys (each grown by the margin both ways) within the plate, or, past
 // kPartsMaxRemnantSlabs of them, that many even slabs.
-std::vector<double> slab_bounds(const Box& plate, const std::vector<std::vector<Point>>& outlines, double margin) {
+std::vector<double> slab_bounds(const Box& plate, const std::vector<std::vector<Point>>& outlines,
+                                const std::vector<std::size_t>& kept, double margin) {
     // (the points' ys sorted once: less the margin and plus it they are two sorted runs, merged)
     std::vector<double> at;
-    for (const std::vector<Point>& o : outlines)
-        for (const Point& p : o)
+    for (const std::size_t k : kept)
+        for (const Point& p : outlines[k])
             if (!std::isnan(p.y)) at.push_back(p.y);
     std::sort(at.begin(), at.end());
     std::vector<double> ys;
@@ -108,16 +110,18 @@ struct EdgeSlabs {
 // Each slab raised to the largest x the edges reach in it (EdgeReach), the outlines taken from the one that
 // reaches furthest: a slab already raised as far as an outline's furthest x cannot be raised by it or any later
 // one, so it is passed over from then on (`next`: the next slab that is not, path-halving).
-void raise_exactly(const std::vector<std::vector<Point>>& outlines, const std::vector<EdgeSlabs>& edges,
-                   const std::vector<double>& ys, double margin, std::vector<double>& reached) {
+void raise_exactly(const std::vector<std::vector<Point>>& outlines, const std::vector<std::size_t>& kept,
+                   const std::vector<EdgeSlabs>& edges, const std::vector<double>& ys, double margin,
+                   std::vector<double>& reached) {
     struct Outline {
         std::size_t first_edge, end_edge;
         double furthest;  // its edges' largest x, grown by the margin
     };
     std::vector<Outline> order;
-    for (std::size_t k = 0, first = 0; k < outlines.size(); first += outlines[k++].size()) {
-        Outline o{first, first + outlines[k].size(), -std::numeric_limits<double>::infinity()};
-        for (const Point& p : outlines[k]) o.furthest = std::max(o.furthest, p.x + margin);
+    for (std::size_t i = 0, first = 0; i < kept.size(); first += outlines[kept[i++]].size()) {
+        const std::vector<Point>& outline = outlines[kept[i]];
+        Outline o{first, first + outline.size(), -std::numeric_limits<double>::infinity()};
+        for (const Point& p : outline) o.furthest = std::max(o.furthest, p.x + margin);
         order.push_back(o);
     }
     std::stable_sort(order.begin(), order.end(),
@@ -138,6 +142,51 @@ void raise_exactly(const std::vector<std::vector<Point>>& outlines, const std::v
                 if (reached[s] >= o.furthest) next[s] = s + 1;
             }
         }
+}
+
+// The outlines that cannot raise any slab: at every height of one (grown by the margin) another outline lies
+// wholly to its right. A counter-clockwise outline's rightmost edge at a height within it goes up and lies right of
+// its leftmost point, so there the other raises the slab at least as far as this one's furthest. (The outlines
+// taken from the one ending furthest right; the heights covered by the outlines starting right of that end kept as
+// merged spans.)
+std::vector<bool> shadowed(const std::vector<std::vector<Point>>& outlines, double margin) {
+    const std::size_t n = outlines.size();
+    std::vector<Box> boxes(n);
+    for (std::size_t k = 0; k < n; ++k)
+        for (const Point& p : outlines[k]) boxes[k].add(p);
+    std::vector<std::size_t> by_end(n), by_start(n);
+    for (std::size_t k = 0; k < n; ++k) by_end[k] = by_start[k] = k;
+    std::sort(by_end.begin(), by_end.end(),
+              [&](std::size_t a, std::size_t b) { return boxes[a].max_x > boxes[b].max_x; });
+    std::sort(by_start.begin(), by_start.end(),
+              [&](std::size_t a, std::size_t b) { return boxes[a].min_x > boxes[b].min_x; });
+    std::map<double, double> covered;  // disjoint spans of height: low -> high
+    const auto cover = [&](double lo, double hi) {
+        auto it = covered.upper_bound(lo);
+        if (it != covered.begin() && std::prev(it)->second >= lo) {
+            --it;
+            lo = it->first;
+        }
+        while (it != covered.end() && it->first <= hi) {
+            hi = std::max(hi, it->second);
+            it = covered.erase(it);
+        }
+        covered.emplace(lo, hi);
+    };
+    const auto covers = [&](double lo, double hi) {
+        auto it = covered.upper_bound(lo);
+        return it != covered.begin() && std::prev(it)->second >= hi;
+    };
+    std::vector<bool> out(n, false);
+    std::size_t next = 0;
+    for (const std::size_t k : by_end) {
+        const Box& b = boxes[k];
+        if (b.empty) continue;
+        for (; next < n && boxes[by_start[next]].min_x >= b.max_x; ++next)
+            if (const Box& o = boxes[by_start[next]]; !o.empty && o.max_y > o.min_y) cover(o.min_y, o.max_y);
+        out[k] = b.max_x > b.min_x && covers(b.min_y - margin, b.max_y + margin);  // (not covered by itself)
+    }
+    return out;
 }
 
 // Past kPartsMaxRemnantSteps, an edge is cut into at most this many pieces over the slabs it spans.
@@ -169,7 +218,11 @@ private:
 
 std::optional<Box> remnant(const Box& plate, const std::vector<std::vector<Point>>& outlines, double margin) {
     if (plate.empty || !(plate.max_x > plate.min_x) || !(plate.max_y > plate.min_y)) return std::nullopt;
-    const std::vector<double> ys = slab_bounds(plate, outlines, margin);
+    const std::vector<bool> passed = shadowed(outlines, margin);
+    std::vector<std::size_t> kept;
+    for (std::size_t k = 0; k < outlines.size(); ++k)
+        if (!passed[k]) kept.push_back(k);
+    const std::vector<double> ys = slab_bounds(plate, outlines, kept, margin);
     const std::size_t slabs = ys.size() - 1;
     // Each edge over the slabs it spans, slab by slab while that takes at most kPartsMaxRemnantSteps steps in all;
     // past that an edge over more than kRemnantPieces slabs is cut into that many pieces, each raising its slabs to
@@ -177,7 +230,8 @@ std::optional<Box> remnant(const Box& plate, const std::vector<std::vector<Point
     std::vector<EdgeSlabs> edges;
     std::vector<std::size_t> below, above;  // slab_of(y - margin) and slab_of(y + margin) of an outline's points
     std::size_t steps = 0;
-    for (const std::vector<Point>& o : outlines) {
+    for (const std::size_t i : kept) {
+        const std::vector<Point>& o = outlines[i];
         below.resize(o.size());
         above.resize(o.size());
         for (std::size_t k = 0; k < o.size(); ++k) {  // (searched from the point before's: they lie close)
@@ -196,7 +250,7 @@ std::optional<Box> remnant(const Box& plate, const std::vector<std::vector<Point
     }
     std::vector<double> reached(slabs, plate.min_x);
     if (steps <= kPartsMaxRemnantSteps) {
-        raise_exactly(outlines, edges, ys, margin, reached);
+        raise_exactly(outlines, kept, edges, ys, margin, reached);
     } else {
         Reach reach_of(slabs, plate.min_x);
         for (const EdgeSlabs& e : edges) {

@@ -139,6 +139,7 @@ void check_case(const std::string& name) {
 TEST(Parts, RectangleWithARoundHoleInTwoHalfArcs) { check_case("rect_round_hole"); }
 TEST(Parts, TurnedBy90AndBy37Degrees) { check_case("turned"); }
 TEST(Parts, MirroredCopiesAreTheirTwinsGroup) { check_case("mirrored"); }
+TEST(Parts, ALensOfTwoArcsHasItsRectangleAlongItsArcsTangents) { check_case("lens"); }
 
 // A real tape of the corpus (KH18105-1000): a flange of four arcs and four lines round a hole of radius 65 mm,
 // worked out by hand in tests/data/parts/KH18105-1000.expected.

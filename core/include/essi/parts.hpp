@@ -41,8 +41,10 @@ constexpr std::size_t kPartsMaxAlignments = 64;
 // The groups' shapes, kept to compare later parts with, hold at most this many pieces together; a new shape past
 // that is a group that no later part joins.
 constexpr std::size_t kPartsMaxKeptPieces = std::size_t{1} << 20;
-// The outline's smallest enclosing rectangle: its arcs are followed within this (mm) to find the rectangle's
-// direction; its size in that direction is exact.
+// The outline's smallest enclosing rectangle: its direction is sought by the edges of the hull of its arcs followed
+// within kPartsOutlineCoarseMm, among the directions of its arcs' chords within kPartsOutlineToleranceMm; its size in
+// the direction found is exact.
+constexpr double kPartsOutlineCoarseMm = 0.2;
 constexpr double kPartsOutlineToleranceMm = 0.001;
 // The remnant is found over at most this many horizontal slabs of the plate's part outlines, and within this many
 // steps (an outline's edge over a slab); past that over the parts' boxes.
