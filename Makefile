@@ -75,6 +75,8 @@ bench: setup-test
 	scripts/bench_machine_time 100
 	@echo "== essi check --parts against without, one thread, 100 MB nest (goal: within 1.10x) =="
 	scripts/bench_parts 100
+	@echo "== essi check against the build before the kerf path and the cut plan (d60aff7), 100 MB nest and batch =="
+	scripts/bench_baseline 100
 	cmake --preset wasm
 	@if [ -f third_party/benchmark/CMakeLists.txt ]; then \
 	  cmake --build --preset wasm -j$(JOBS) --target essi_bench && \
