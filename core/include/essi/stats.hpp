@@ -37,14 +37,20 @@ struct Stats {
 };
 
 // The time a motion of `length_mm` takes at `feed_mm_min` (none without a feed): what the statistics estimate
-// along the compensated path, and what the viewer's playback gives each motion.
+// along the compensated path.
 [[nodiscard]] constexpr double motion_time_s(double length_mm, double feed_mm_min) {
     return feed_mm_min > 0 ? length_mm / feed_mm_min * 60.0 : 0.0;
 }
 
+// The statistics' time: the machine time with the profile's accel_mm_s2 (§9), else the estimate. What the cost is
+// reckoned from, what the viewer's Statistics panel shows and what its playback lasts.
+[[nodiscard]] inline double statistics_time_s(const Stats& s) {
+    return s.machine_time ? s.machine_time->total_s : s.estimated_time_s;
+}
+
 // Where the pierces fall in the motion stream. A pierce is made when a cutting tool comes on (starts_cutting: the
 // statistics count it and its time then); it is at the first motion after that, when that motion cuts (the
-// viewer's marker and the playback's pierce time). Tools that go off before any motion leave the pierce at none.
+// viewer's marker). Tools that go off before any motion leave the pierce at none.
 class PierceTracker {
 public:
     // The tools on after an event: true when it makes a pierce.
@@ -163,6 +169,16 @@ public:
     void trace_machine_time(std::vector<PlannedMotion>* out) {
         if (timer_) timer_->trace_into(out);
     }
+    // Every part of the statistics' time (statistics_time_s) appended to `out` as it is counted, on the source line
+    // it comes from: each motion of the torch's path (as the planner runs it with the profile's accel_mm_s2, else at
+    // its feed), each pierce and each dwell (their peak_mm_min 0). Not in line order (the planner's motions come
+    // when they are planned); the seconds add up to the statistics' time. Call before the first motion.
+    void trace_time(std::vector<PlannedMotion>* out) {
+        time_trace_ = out;
+        timed_ = true;  // (every event and line reaches time_event and time_line)
+        torch_path_.trace = out;
+        trace_machine_time(out);
+    }
     // The end of the program: the compensated path's last piece; the machine boxes when they are the program's
     // moved.
     void finish() {
@@ -193,7 +209,9 @@ private:
     public:
         explicit TorchPath(Stats& stats) : stats_(stats) {}
         void on_motion(const MotionRecord& m) override {
-            add(stats_, m.kind, m.length_mm, m.feed_mm_min, m.kind == MotionKind::Cut ? m.torches : 1);
+            const double t = add(stats_, m.kind, m.length_mm, m.feed_mm_min, m.kind == MotionKind::Cut ? m.torches : 1);
+            if (trace) [[unlikely]]
+                traced(trace, m.kind, m.feed_mm_min, m.line, t);
         }
         // Returns the motion's time.
         static double add(Stats& s, MotionKind kind, double length_mm, double feed_mm_min, int torches) {
@@ -202,6 +220,12 @@ private:
             s.estimated_time_s += t;
             return t;
         }
+        // A part of the time, appended to `out` (trace_time).
+        static void traced(std::vector<PlannedMotion>* out, MotionKind kind, double feed_mm_min, std::uint32_t line,
+                           double seconds) {
+            out->push_back({line, static_cast<float>(seconds), static_cast<float>(feed_mm_min), kind});
+        }
+        std::vector<PlannedMotion>* trace = nullptr;  // trace_time
 
     private:
         Stats& stats_;
@@ -227,6 +251,8 @@ private:
             const int torches = m.kind == MotionKind::Cut ? m.torches : 1;
             const double t = TorchPath::add(owner_.stats_, m.kind, m.length_mm, m.feed_mm_min, torches);
             if (m.kind == MotionKind::Cut) owner_.torch_cutting_s_ += t * torches;
+            if (owner_.time_trace_) [[unlikely]]
+                TorchPath::traced(owner_.time_trace_, m.kind, m.feed_mm_min, m.line, t);
         }
 
     private:
@@ -234,8 +260,10 @@ private:
     };
     [[gnu::noinline]] void time_line(MotionKind kind, Point start, Point end, double length_mm, double feed_mm_min,
                                      std::uint32_t line) {
-        if (timer_) timer_->line(kind, start, end, length_mm, feed_mm_min, line);
-        else if (kind == MotionKind::Cut) torch_cutting_s_ += motion_time_s(length_mm, feed_mm_min);
+        if (timer_) return timer_->line(kind, start, end, length_mm, feed_mm_min, line);
+        const double t = motion_time_s(length_mm, feed_mm_min);
+        if (kind == MotionKind::Cut) torch_cutting_s_ += t;
+        if (time_trace_) TorchPath::traced(time_trace_, kind, feed_mm_min, line, t);
     }
 
     // An event that may change the time (affects_time): its dwell while cutting (the consumables), its pierce and
@@ -261,11 +289,13 @@ private:
             if (e.kind == EventKind::Dwell) {
                 if (e.tools_after & kCuttingTools) cutting_dwell_s_ += e.value * e.torches_after;
                 if (timer_) timer_->add_dwell(e.value);
+                if (time_trace_) TorchPath::traced(time_trace_, MotionKind::Travel, 0, e.line, e.value);
             }
         }
+        const bool pierce = starts_cutting(before, e.tools_after);  // (PierceTracker's rule)
+        if (pierce && time_trace_) TorchPath::traced(time_trace_, MotionKind::Cut, 0, e.line, profile_.pierce_time_s);
         if (!timer_) return;
-        if (starts_cutting(before, e.tools_after))
-            timer_->add_pierce(profile_.pierce_time_s);  // (PierceTracker's rule)
+        if (pierce) timer_->add_pierce(profile_.pierce_time_s);
         timer_->pause(stop, block_stops_, kerf_.open() ? std::int64_t{kerf_.open_block()} : -1);
     }
     // The cost and the consumables, from the statistics (the machine time when there is one).
@@ -273,8 +303,7 @@ private:
         const bool machine = stats_.machine_time.has_value();
         if (profile_.costs) {
             stats_.cost = reckon_cost(*profile_.costs, profile_.material, profile_.plate,
-                                      {machine ? stats_.machine_time->total_s : stats_.estimated_time_s, machine,
-                                       stats_.pierces, stats_.cut_length_mm});
+                                      {statistics_time_s(stats_), machine, stats_.pierces, stats_.cut_length_mm});
         }
         if (profile_.consumables) {
             const double cutting = machine ? stats_.machine_time->torch_cutting_s : torch_cutting_s_;
@@ -369,6 +398,7 @@ private:
     double cutting_dwell_s_ = 0;  // dwells while a cutting tool is on, once per torch
     std::uint8_t timed_tools_ = 0;
     bool block_stops_ = false;
+    std::vector<PlannedMotion>* time_trace_ = nullptr;  // trace_time
     TorchPath torch_path_;
     MachineTorchPath machine_path_;
     CuttingTimeTorchPath cutting_path_;
