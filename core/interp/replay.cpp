@@ -46,8 +46,7 @@ std::vector<PlannedMotion> planned_motions(std::string_view bytes, const Profile
 
 std::vector<float> motion_seconds(std::string_view bytes, const Profile& profile, InputFormat format) {
     std::vector<PlannedMotion> parts;  // of the time, on their lines
-    StatsSink stats(profile);
-    stats.trace_time(&parts);
+    StatsSink stats(profile, &parts);
     MotionLines motions;
     std::vector<Diagnostic> ignored;
     Interpreter interpreter(bytes, profile, stats, &motions, ignored);

@@ -78,16 +78,22 @@ private:
 // last motion.
 class StatsSink final : public MotionSink {
 public:
-    explicit StatsSink(const Profile& profile)
-        : profile_(profile), timed_(profile.accel_mm_s2 || profile.consumables), torch_path_(stats_),
+    // `time_trace`: every part of the statistics' time (statistics_time_s) appended to it as it is counted, on the
+    // source line it comes from: each motion of the torch's path (as the planner runs it with the profile's
+    // accel_mm_s2, else at its feed), each pierce and each dwell (their peak_mm_min 0). Not in line order (the
+    // planner's motions come when they are planned); the seconds add up to the statistics' time.
+    explicit StatsSink(const Profile& profile, std::vector<PlannedMotion>* time_trace = nullptr)
+        : profile_(profile), timed_(profile.accel_mm_s2 || profile.consumables || time_trace), torch_path_(stats_),
           machine_path_(*this), cutting_path_(*this),
-          kerf_(profile.accel_mm_s2   ? static_cast<MotionSink&>(machine_path_)
-                : profile.consumables ? static_cast<MotionSink&>(cutting_path_)
-                                      : torch_path_,
+          kerf_(profile.accel_mm_s2                 ? static_cast<MotionSink&>(machine_path_)
+                : profile.consumables || time_trace ? static_cast<MotionSink&>(cutting_path_)
+                                                    : torch_path_,
                 profile.chord_tolerance_mm),
-          placement_(profile), plain_(!placement_.turns()) {
-        if (profile.accel_mm_s2) [[unlikely]]
+          placement_(profile), plain_(!placement_.turns()), time_trace_(time_trace) {
+        if (profile.accel_mm_s2) [[unlikely]] {
             timer_.emplace(*profile.accel_mm_s2, profile.junction_deviation_mm);
+            timer_->trace_into(time_trace);
+        }
     }
     StatsSink(const StatsSink&) = delete;
     StatsSink& operator=(const StatsSink&) = delete;
@@ -169,16 +175,6 @@ public:
     void trace_machine_time(std::vector<PlannedMotion>* out) {
         if (timer_) timer_->trace_into(out);
     }
-    // Every part of the statistics' time (statistics_time_s) appended to `out` as it is counted, on the source line
-    // it comes from: each motion of the torch's path (as the planner runs it with the profile's accel_mm_s2, else at
-    // its feed), each pierce and each dwell (their peak_mm_min 0). Not in line order (the planner's motions come
-    // when they are planned); the seconds add up to the statistics' time. Call before the first motion.
-    void trace_time(std::vector<PlannedMotion>* out) {
-        time_trace_ = out;
-        timed_ = true;  // (every event and line reaches time_event and time_line)
-        torch_path_.trace = out;
-        trace_machine_time(out);
-    }
     // The end of the program: the compensated path's last piece; the machine boxes when they are the program's
     // moved.
     void finish() {
@@ -209,9 +205,7 @@ private:
     public:
         explicit TorchPath(Stats& stats) : stats_(stats) {}
         void on_motion(const MotionRecord& m) override {
-            const double t = add(stats_, m.kind, m.length_mm, m.feed_mm_min, m.kind == MotionKind::Cut ? m.torches : 1);
-            if (trace) [[unlikely]]
-                traced(trace, m.kind, m.feed_mm_min, m.line, t);
+            add(stats_, m.kind, m.length_mm, m.feed_mm_min, m.kind == MotionKind::Cut ? m.torches : 1);
         }
         // Returns the motion's time.
         static double add(Stats& s, MotionKind kind, double length_mm, double feed_mm_min, int torches) {
@@ -220,12 +214,11 @@ private:
             s.estimated_time_s += t;
             return t;
         }
-        // A part of the time, appended to `out` (trace_time).
+        // A part of the time, appended to `out` (the time trace).
         static void traced(std::vector<PlannedMotion>* out, MotionKind kind, double feed_mm_min, std::uint32_t line,
                            double seconds) {
             out->push_back({line, static_cast<float>(seconds), static_cast<float>(feed_mm_min), kind});
         }
-        std::vector<PlannedMotion>* trace = nullptr;  // trace_time
 
     private:
         Stats& stats_;
@@ -243,7 +236,8 @@ private:
     private:
         StatsSink& owner_;
     };
-    // The compensated path for the consumables without a machine time: the cutting time at the feed, once per torch.
+    // The compensated path for the consumables or the time trace without a machine time: the cutting time at the
+    // feed, once per torch.
     class CuttingTimeTorchPath final : public MotionSink {
     public:
         explicit CuttingTimeTorchPath(StatsSink& owner) : owner_(owner) {}
@@ -392,13 +386,12 @@ private:
     Stats stats_;
     PierceTracker pierces_;
     // The machine time (with the profile's accel_mm_s2), what it follows of the events, and the consumables' times.
-    bool timed_;  // accel_mm_s2 or consumables
+    bool timed_;  // accel_mm_s2, consumables or the time trace
     std::optional<MachineTimer> timer_;
     double torch_cutting_s_ = 0;  // the cutting motions at their feed, once per torch
     double cutting_dwell_s_ = 0;  // dwells while a cutting tool is on, once per torch
     std::uint8_t timed_tools_ = 0;
     bool block_stops_ = false;
-    std::vector<PlannedMotion>* time_trace_ = nullptr;  // trace_time
     TorchPath torch_path_;
     MachineTorchPath machine_path_;
     CuttingTimeTorchPath cutting_path_;
@@ -406,6 +399,7 @@ private:
     Placement placement_;
     bool plain_;
     Point tool_offset_;
+    std::vector<PlannedMotion>* time_trace_;  // (the constructor's)
 };
 
 }  // namespace essi
