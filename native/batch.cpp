@@ -118,7 +118,7 @@ void check_batch(const std::vector<std::string>& files, const TapeRequest& reque
         const auto t0 = std::chrono::steady_clock::now();
         BatchItem& item = items[i];
         item.report.path = files[i];
-        ReadResult file = read_whole_file(files[i], options.max_size);
+        ReadResult file = read_tape_file(files[i], options.max_size, options.lang);
         if (!file.ok) {
             item.error = file.error;
         } else {

@@ -46,7 +46,8 @@ struct BatchOptions {
     unsigned jobs = 1;                                                      // worker threads
     std::size_t max_diagnostics = std::numeric_limits<std::size_t>::max();  // per file
     std::uint64_t max_size = kDefaultMaxInputBytes;                         // per file (--max-size)
-    bool parts = false;  // each result with its parts list (--parts; essi/parts.hpp)
+    bool parts = false;    // each result with its parts list (--parts; essi/parts.hpp)
+    Lang lang = Lang::En;  // of the reason a file cannot be read
 };
 
 // Reads and checks `files` on options.jobs threads and calls emit for each, on the calling thread, in the

@@ -10,6 +10,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "essi/text_encoding.hpp"
+
 namespace essi::native {
 
 namespace {
@@ -143,6 +145,21 @@ ReadResult read_whole_file(const std::string& path, std::uint64_t max_bytes) {
         r.error = "file too large for memory";
     }
     return r;
+}
+
+ReadResult read_tape_file(const std::string& path, std::uint64_t max_bytes, Lang lang) {
+    ReadResult file = read_whole_file(path, max_bytes);
+    if (!file.ok) return file;
+    TapeText text = decode_tape_text(file.bytes);
+    if (!text.ok()) {
+        file.ok = false;
+        file.error = text.problem.text(lang);
+    } else if (text.decoded) {
+        file.owned = std::move(*text.decoded);
+        file.bytes = file.owned;
+        file.storage.reset();
+    }
+    return file;
 }
 
 }  // namespace essi::native

@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "essi/i18n.hpp"
+
 namespace essi::native {
 
 // A file's bytes: read into `storage` for regular files (one read, no page clearing), into `owned` for streams.
@@ -29,6 +31,10 @@ constexpr std::uint64_t kMaxProfileBytes = 1ull << 20;  // 1 MiB
 // read (a regular file is not even mapped): ok is false and the error says the size and the limit; a stream
 // is read up to the limit and then refused the same way.
 [[nodiscard]] ReadResult read_whole_file(const std::string& path, std::uint64_t max_bytes = kDefaultMaxInputBytes);
+
+// A tape file as read_whole_file reads it, as its text (essi::decode_tape_text: UTF-16 with a byte order mark becomes
+// UTF-8); UTF-16 that is no text is not read (ok false, the error in `lang` says where).
+[[nodiscard]] ReadResult read_tape_file(const std::string& path, std::uint64_t max_bytes, Lang lang);
 
 // "the file has more than 1 GiB (--max-size 1GB)": the error of a file beyond `max_bytes`.
 [[nodiscard]] std::string too_large_text(std::uint64_t size, std::uint64_t max_bytes, bool size_known);

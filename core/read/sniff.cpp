@@ -73,4 +73,33 @@ bool looks_like_essi(std::string_view head) {
     return lines >= 2 && digit_seen && good * 100 >= lines * kEssiLinesPercent;
 }
 
+namespace {
+
+// A file format's signature: the bytes it starts with, what it is and its name.
+struct Signature {
+    std::string_view start;
+    Msg what;
+    const char* name;
+};
+constexpr Signature kSignatures[] = {
+    {"\x89PNG\r\n\x1A\n", Msg::FilePicture, "PNG"},
+    {"\xFF\xD8\xFF", Msg::FilePicture, "JPEG"},
+    {"GIF87a", Msg::FilePicture, "GIF"},
+    {"GIF89a", Msg::FilePicture, "GIF"},
+    {"PK\x03\x04", Msg::FileArchive, "ZIP"},
+    {"PK\x05\x06", Msg::FileArchive, "ZIP"},  // (an empty ZIP)
+    {"\x1F\x8B", Msg::FileArchive, "gzip"},
+    {"%PDF-", Msg::FilePdf, "PDF"},
+};
+
+}  // namespace
+
+Message not_a_tape(std::string_view text) {
+    if (text.empty()) return {Msg::FileEmpty};
+    for (const Signature& s : kSignatures)
+        if (text.starts_with(s.start)) return {s.what, {s.name}};
+    if (looks_binary(text)) return {Msg::FileBinary};
+    return {};
+}
+
 }  // namespace essi

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "essi/charset.hpp"
+#include "essi/lines.hpp"
 #include "essi/text.hpp"
 
 namespace essi {
@@ -92,6 +93,69 @@ TextEncoding detect_text_encoding(std::string_view bytes) {
 
 std::string decode_text(std::string_view bytes, TextEncoding encoding) {
     return encoding == TextEncoding::Gb18030 ? decode_gb18030(bytes) : display_text(bytes);
+}
+
+namespace {
+
+// The 1-based line a character after `text` is on (the core's line-end rule: CR, LF, CR LF and LF CR end a line).
+std::size_t line_at_end(std::string_view text) {
+    std::size_t line = 1;
+    const auto* data = reinterpret_cast<const unsigned char*>(text.data());
+    const auto size = static_cast<std::uint32_t>(text.size());
+    for (std::size_t end = find_line_end(text, 0); end < text.size(); end = find_line_end(text, end)) {
+        ++line;
+        end = past_line_end(data, static_cast<std::uint32_t>(end), size);
+    }
+    return line;
+}
+
+std::string hex_unit(unsigned unit) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "%04X", unit);
+    return buf;
+}
+
+bool is_high_surrogate(unsigned u) { return u >= 0xD800 && u <= 0xDBFF; }
+bool is_low_surrogate(unsigned u) { return u >= 0xDC00 && u <= 0xDFFF; }
+
+// UTF-16 after its byte order mark (big-endian or not) as UTF-8, or the problem with it.
+TapeText decode_utf16(std::string_view bytes, bool big_endian) {
+    const char* order = big_endian ? "BE" : "LE";
+    TapeText t;
+    std::string out;
+    out.reserve(bytes.size() / 2);
+    const auto unit_at = [&](std::size_t i) {
+        const auto a = static_cast<unsigned char>(bytes[i]), b = static_cast<unsigned char>(bytes[i + 1]);
+        return big_endian ? (unsigned{a} << 8) | b : (unsigned{b} << 8) | a;
+    };
+    constexpr std::size_t kMark = 2;
+    std::size_t i = kMark;
+    for (; i + 1 < bytes.size(); i += 2) {
+        const unsigned u = unit_at(i);
+        if (is_high_surrogate(u) && i + 3 < bytes.size() && is_low_surrogate(unit_at(i + 2))) {
+            append_utf8(out, 0x10000 + ((u - 0xD800) << 10) + (unit_at(i + 2) - 0xDC00));
+            i += 2;
+        } else if (is_high_surrogate(u) || is_low_surrogate(u)) {
+            t.problem = {Msg::ReadUtf16Unpaired, {order, hex_unit(u), i, line_at_end(out)}};
+            return t;
+        } else {
+            append_utf8(out, u);
+        }
+    }
+    if (i < bytes.size()) {
+        t.problem = {Msg::ReadUtf16OddBytes, {order, bytes.size(), line_at_end(out)}};
+        return t;
+    }
+    t.decoded = std::move(out);
+    return t;
+}
+
+}  // namespace
+
+TapeText decode_tape_text(std::string_view bytes) {
+    if (bytes.starts_with("\xFF\xFE")) return decode_utf16(bytes, false);
+    if (bytes.starts_with("\xFE\xFF")) return decode_utf16(bytes, true);
+    return {};
 }
 
 }  // namespace essi

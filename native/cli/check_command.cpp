@@ -80,6 +80,7 @@ int run_check(const CheckOptions& o) {
     if (o.max_diagnostics >= 0) batch.max_diagnostics = static_cast<std::size_t>(o.max_diagnostics);
     batch.max_size = o.max_size;
     batch.parts = o.parts && o.format == "json";
+    batch.lang = lang();
     const FailOn fail_on = fail_on_of(o.fail_on);
 
     BatchTotals totals;

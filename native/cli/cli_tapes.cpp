@@ -11,9 +11,10 @@
 namespace essi::cli {
 namespace {
 
-// A tape file (or '-') within --max-size; the problem on stderr when it cannot be read.
+// A tape file (or '-') within --max-size, as its text (native::read_tape_file); the problem on stderr when it cannot
+// be read.
 native::ReadResult read_tape_file(const std::string& path, std::uint64_t max_size) {
-    native::ReadResult file = native::read_whole_file(path, max_size);
+    native::ReadResult file = native::read_tape_file(path, max_size, lang());
     if (!file.ok) err("essi: cannot read " + display_text(path) + ": " + file.error + "\n");
     return file;
 }

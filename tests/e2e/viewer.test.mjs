@@ -203,14 +203,8 @@ test('a bad tape shows its diagnostics with their lines', async () => {
     assert.equal(after.selection.line, first.line);
     await page.screenshot({ path: path.join(shots, `diagnostics-${file.replace(/\.(esi|eia)$/, '')}.png`) });
   }
-  // Not a tape at all: a clear message, never a blank page.
-  const png = Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0, 0, 0, 13, 0x49, 0x48, 0x44, 0x52, 0, 1, 2, 3]);
-  let state = await dropFile(page, 'picture.png', png);
-  assert.match(state.banner, /binary/);
-  state = await dropFile(page, 'empty.esi', Buffer.alloc(0));
-  assert.match(state.banner, /empty/);
-  assert.ok(state.diagnostics.some((d) => d.code === 'E113'));
-  state = await dropFile(page, 'notes.txt', Buffer.from('Hello, this is a letter, not a tape.\nRegards\n'));
+  // Not a tape at all: a clear message, never a blank page (a picture, an empty file: see 'a file that is not a tape').
+  const state = await dropFile(page, 'notes.txt', Buffer.from('Hello, this is a letter, not a tape.\nRegards\n'));
   assert.ok(state.banner.length > 0, 'a text file that is not a tape gets a message');
   await page.screenshot({ path: path.join(shots, 'not-a-tape.png') });
   await page.close();
@@ -778,6 +772,86 @@ test('parts: the Job panel, the parts layer and colour by part group as essi par
   assert.ok(speeds.length >= 1 && speed.legend.every((e) => / mm\/min$/.test(e.text)), JSON.stringify(speed.legend));
   assert.ok(Math.max(...speeds) <= Math.max(...feeds) + 0.5, `${speeds} above ${feeds}`);
   assert.ok(Math.min(...speeds) < Math.min(...feeds), `a = 0.5 mm/s² keeps the short lines below the feed: ${speeds} / ${feeds}`);
+  await page.close();
+});
+
+// The statistics' time: the machine time with the profile's accelerations, else the estimate at the feeds.
+function statisticsTime(stats) {
+  return stats.machine_time_s ?? stats.estimated_time_s;
+}
+
+test('playback lasts the statistics\' time, with accelerations too, and follows every new tape (over 1 MB too)', async () => {
+  const page = await newPage();
+  const { state } = await loadExample(page, 'kerf_parts.esi');  // (kerf compensation: the torch's path is longer)
+  let pb = state.playback;
+  assert.ok(Math.abs(pb.total_s - state.stats.estimated_time_s) < 1e-6, `${pb.total_s} vs ${state.stats.estimated_time_s}`);
+  // Read again with accelerations: the machine time, longer than the estimate; played to the end, all of it.
+  await page.evaluate(() => essikit.load('accel.json', '{"accel_mm_s2": 50, "junction_deviation_mm": 0.05}'));
+  await until(page, () => essikit.state().status === 'ready' && essikit.state().stats.machine_time_s > 0, null,
+              'read again with accel.json');
+  let s = await page.evaluate(() => essikit.state());
+  pb = s.playback;
+  assert.ok(s.stats.machine_time_s > s.stats.estimated_time_s + 1, JSON.stringify(s.stats));
+  assert.ok(Math.abs(pb.total_s - s.stats.machine_time_s) < 1e-6, `${pb.total_s} vs ${s.stats.machine_time_s}`);
+  await tap(page, 'Home');
+  await page.evaluate(() => essikit.setPlayback(1000, true));
+  await until(page, () => !essikit.state().playback.playing, null, 'the playback did not reach the end at 1000 x');
+  pb = (await page.evaluate(() => essikit.state())).playback;
+  assert.ok(Math.abs(pb.elapsed_s - s.stats.machine_time_s) < 1e-6 && pb.remaining_s === 0, JSON.stringify(pb));
+  const first = pb.total_s;
+  // A tape over 1 MB (read in slices): its own time, read with the same profile, as soon as it is there.
+  const big = generatedTape(1.2);
+  await dropFromUrl(page, '/gen/' + big, big);
+  await page.waitForFunction((n) => { const t = essikit.state(); return t.name === n && t.status === 'ready'; }, big,
+                             { timeout: 120000 });
+  s = await page.evaluate(() => essikit.state());
+  assert.equal(s.load.at_once, false);
+  pb = s.playback;
+  assert.ok(s.stats.machine_time_s > 0 && Math.abs(pb.total_s - statisticsTime(s.stats)) < 1e-6,
+            `${big}: playback ${pb.total_s} s, statistics ${statisticsTime(s.stats)} s`);
+  assert.notEqual(pb.total_s, first);
+  assert.equal(pb.elapsed_s, pb.total_s);
+  // Played: the clock runs in the new tape's time.
+  await tap(page, 'Home');
+  await page.evaluate(() => essikit.setPlayback(1000, true));
+  await until(page, () => essikit.state().playback.elapsed_s > 0, null, 'the big tape\'s playback did not start');
+  pb = (await page.evaluate(() => essikit.state())).playback;
+  assert.ok(pb.elapsed_s < pb.total_s && Math.abs(pb.elapsed_s + pb.remaining_s - pb.total_s) < 1e-6, JSON.stringify(pb));
+  await page.evaluate(() => essikit.setPlayback(10, false));
+  await page.close();
+});
+
+test('a file that is not a tape is said and the open tape stays; a UTF-16 tape is read as text', async () => {
+  const page = await newPage();
+  const file = 'bad_character.esi';  // (a verdict with an error: E101 on line 13)
+  const text = fs.readFileSync(path.join(examplesDir, file), 'utf8');
+  const first = await dropFile(page, file, Buffer.from(text));
+  assert.equal(first.ok, false);
+  const kept = (s) => ({ name: s.name, ok: s.ok, diagnostics: s.diagnostics, stats: s.stats, motions: s.motions,
+                         view: [s.view.x_mm, s.view.y_mm, s.view.zoom] });
+  const before = kept(first);
+  const notTapes = [
+    ['picture.png', Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0, 0, 0, 13, 0x49, 0x48, 0x44, 0x52]),
+     'picture.png is not a tape: it is a PNG picture. bad_character.esi stays open.'],
+    ['empty.esi', Buffer.alloc(0), 'empty.esi is not a tape: the file is empty. bad_character.esi stays open.'],
+    ['tapes.zip', Buffer.from([0x50, 0x4b, 0x03, 0x04, 0x14, 0, 0, 0]), 'tapes.zip is not a tape: it is a ZIP archive.'],
+  ];
+  for (const [name, bytes, said] of notTapes) {
+    await dropOnly(page, name, bytes);
+    await page.waitForFunction((n) => essikit.state().message.includes(n), name, { timeout: 30000 });
+    const s = await page.evaluate(() => essikit.state());
+    assert.ok(s.message.startsWith(said), `${name}: ${s.message}`);
+    assert.deepEqual(kept(s), before, `${name} changed the open tape`);
+    assert.equal(s.status, 'ready');
+  }
+  // The same tape saved as UTF-16 LE with a byte order mark: read as text, the UTF-8 tape's verdict and lines.
+  const utf16 = Buffer.concat([Buffer.from([0xff, 0xfe]), Buffer.from(text, 'utf16le')]);
+  const s = await dropFile(page, 'bad_character_utf16.esi', utf16);
+  assert.equal(s.banner, '');
+  assert.equal(s.ok, first.ok);
+  assert.deepEqual(s.diagnostics, first.diagnostics);
+  assert.deepEqual(s.stats, first.stats);
+  assert.equal(s.bytes, Buffer.byteLength(text));
   await page.close();
 });
 

@@ -124,6 +124,26 @@ TEST(PlannedMotions, TheirTimesAndTopSpeedsAreTheMachineTimes) {
                     .empty());
 }
 
+// The seconds of each motion (motion_seconds: the playback's clock): a rapid of 100 mm at the rapid speed (10 000
+// mm/min: 0.6 s), then a cut of 100 mm at 6000 mm/min (1 s) with the pierce before it (2 s) on the line that switches
+// the torch on. They add up to the statistics' time, with the planner's times too.
+TEST(MotionSeconds, EachMotionHasItsLinesTimeAndTheyAddUpToTheStatistics) {
+    const std::string tape = "5\n+1000+0\n6\n39+6000\n7\n+1000+0\n8\n64\n";
+    const std::vector<float> seconds = essi::motion_seconds(tape, essi_test::iso_profile(), essi::InputFormat::Essi);
+    ASSERT_EQ(seconds.size(), 2u);
+    EXPECT_NEAR(seconds[0], 0.6, 1e-6);
+    EXPECT_NEAR(seconds[1], 3.0, 1e-6);
+    EXPECT_NEAR(seconds[0] + seconds[1], essi::check_tape(tape, essi_test::iso_profile()).stats.estimated_time_s, 1e-6);
+
+    const essi::ProfileResult accel = essi::parse_profile(R"({"accel_mm_s2": 500, "pierce_time_s": 0})");
+    ASSERT_TRUE(accel.profile);
+    const std::string line = read_file(machine_time_dir() + "/line.esi");
+    const std::vector<float> planned = essi::motion_seconds(line, *accel.profile, essi::InputFormat::Essi);
+    ASSERT_EQ(planned.size(), 1u);
+    EXPECT_NEAR(planned[0], 1.2, 1e-5);  // (line.expected works it out)
+    EXPECT_NEAR(planned[0], essi::check_tape(line, *accel.profile).stats.machine_time->total_s, 1e-5);
+}
+
 // Without accel_mm_s2 (the built-in profiles) nothing of it is reported, and the estimate is what it was.
 TEST(MachineTime, AbsentWithoutTheProfileKeys) {
     const essi::CheckResult r = essi::check_tape("39+6000\n7\n+1000+0\n8\n64\n", essi_test::iso_profile());

@@ -41,3 +41,22 @@ TEST(Sniff, BinaryBytes) {
 }
 
 }  // namespace
+
+// What cannot be a tape, by the core's rule (the viewer keeps the open tape then): nothing, a picture, an archive, a
+// PDF, binary data; text is left to the reader, whatever it holds.
+TEST(Sniff, NotATapeSaysWhatTheFileIs) {
+    using essi::Lang;
+    const auto said = [](std::string_view bytes) { return essi::not_a_tape(bytes).text(Lang::En); };
+    EXPECT_EQ(said(""), "the file is empty");
+    EXPECT_EQ(said(std::string("\x89PNG\r\n\x1A\n\0\0\0\rIHDR", 16)), "it is a PNG picture");
+    EXPECT_EQ(said("\xFF\xD8\xFF\xE0\x00\x10JFIF"), "it is a JPEG picture");
+    EXPECT_EQ(said("GIF89a\x01\x00"), "it is a GIF picture");
+    EXPECT_EQ(said(std::string("PK\x03\x04\x14\0\0\0", 8)), "it is a ZIP archive");
+    EXPECT_EQ(said(std::string("\x1F\x8B\x08\0", 4)), "it is a gzip archive");
+    EXPECT_EQ(said("%PDF-1.7\n%\xE2\xE3\xCF\xD3\n"), "it is a PDF document");
+    EXPECT_EQ(said(std::string("+100\0+200\n", 10)), "it is a binary file (a tape is text: + - digits and line ends)");
+    EXPECT_EQ(essi::not_a_tape("%\n+100+0\n").msg, essi::Msg::None);
+    EXPECT_EQ(essi::not_a_tape("Hello, a letter\n").msg, essi::Msg::None);  // (text: its diagnostics say it)
+    EXPECT_EQ(essi::not_a_tape("\n").msg, essi::Msg::None);
+    EXPECT_EQ(essi::not_a_tape("%PDF-1.7").text(Lang::De), "es ist ein PDF-Dokument");
+}

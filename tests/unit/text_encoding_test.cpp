@@ -45,3 +45,55 @@ TEST(TextEncoding, NamesOfTheSetting) {
     EXPECT_FALSE(essi::parse_text_encoding("latin1").has_value());
     EXPECT_EQ(essi::text_encoding_name(TextEncoding::Gb18030), "gb18030");
 }
+
+namespace {
+// `text` (ASCII and "切割") in UTF-16, little-endian or big-endian, with its byte order mark.
+std::string utf16(const std::u16string& text, bool big_endian) {
+    std::string out = big_endian ? "\xFE\xFF" : "\xFF\xFE";
+    for (const char16_t u : text) {
+        const char hi = static_cast<char>(u >> 8), lo = static_cast<char>(u & 0xFF);
+        out += big_endian ? std::string{hi, lo} : std::string{lo, hi};
+    }
+    return out;
+}
+}  // namespace
+
+// A tape saved as UTF-16 with a byte order mark is read as its UTF-8 text without the mark (a character beyond the
+// BMP from its surrogate pair); other bytes are the text as they are.
+TEST(TapeText, Utf16WithAByteOrderMarkBecomesUtf8) {
+    const std::u16string tape = u"3\r\n切割 \U0001F527\r\n4\r\n+100+0\r\n";
+    const std::string want = "3\r\n" + kUtf8Cut + " \xF0\x9F\x94\xA7\r\n4\r\n+100+0\r\n";
+    for (const bool big_endian : {false, true}) {
+        const essi::TapeText t = essi::decode_tape_text(utf16(tape, big_endian));
+        EXPECT_TRUE(t.ok());
+        ASSERT_TRUE(t.decoded.has_value());
+        EXPECT_EQ(*t.decoded, want);
+    }
+    EXPECT_EQ(*essi::decode_tape_text(utf16(u"", false)).decoded, "");
+    for (const std::string plain : {"3\n+100+0\n", "\xEF\xBB\xBF+100+0\n", "", "\xFF"}) {
+        const essi::TapeText t = essi::decode_tape_text(plain);
+        EXPECT_TRUE(t.ok());
+        EXPECT_FALSE(t.decoded.has_value()) << plain;
+    }
+}
+
+// UTF-16 that is no text: the message says which order, what and where (the byte, and the line of the decoded text).
+TEST(TapeText, BadUtf16SaysWhere) {
+    const essi::TapeText odd = essi::decode_tape_text(utf16(u"+1\n+2\n", false) + "x");
+    EXPECT_FALSE(odd.ok());
+    EXPECT_FALSE(odd.decoded.has_value());
+    EXPECT_EQ(odd.problem.text(essi::Lang::En),
+              "the file is UTF-16 LE text with an odd number of bytes (15): its last byte, on line 3, is half a "
+              "character");
+    const std::u16string lone_high = u"+1\r\n+2\r\n\xD800+";
+    const essi::TapeText high = essi::decode_tape_text(utf16(lone_high, true));
+    EXPECT_EQ(high.problem.text(essi::Lang::En),
+              "the file is UTF-16 BE text with an unpaired surrogate D800 at byte 18 (line 3): it is no character");
+    const essi::TapeText low = essi::decode_tape_text(utf16(u"\xDC01", false));
+    EXPECT_EQ(low.problem.text(essi::Lang::En),
+              "the file is UTF-16 LE text with an unpaired surrogate DC01 at byte 2 (line 1): it is no character");
+    const essi::TapeText at_end = essi::decode_tape_text(utf16(u"+1\n\xD83D", false));
+    EXPECT_EQ(at_end.problem.text(essi::Lang::De),
+              "die Datei ist UTF-16-LE-Text mit einem ungepaarten Surrogat D83D bei Byte 8 (Zeile 2): es ist kein "
+              "Zeichen");
+}

@@ -42,7 +42,7 @@ void App::frame() {
     session_.begin_frame();
     view.plate = navigation_.coordinates().plate();
     if (const Document* d = session_.document(); d && playback_.playing) {
-        playback_.advance(io.DeltaTime, *d);
+        if (const MotionTimes* times = tape_facts_.motion_times()) playback_.advance(io.DeltaTime, *times);
         navigation_.follow(*d, playback_);
     }
     input_.handle_shortcuts();

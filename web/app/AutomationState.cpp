@@ -56,15 +56,17 @@ void add_document(json& j, const Document& doc, const LoadController& load, cons
 }
 
 // What the Playback panel shows: the motion at the scrubber, its line, the tools and where the tool is.
-json playback_json(const Playback& playback, const Document* doc, const Coordinates& cs) {
+json playback_json(const Playback& playback, const Document* doc, const MotionTimesSource& times,
+                   const Coordinates& cs) {
     json p = {{"active", playback.active},
               {"playing", playback.playing},
               {"position", playback.position},
               {"factor", playback.factor}};
     if (doc) {
-        p["elapsed_s"] = playback.elapsed_s(*doc);
-        p["total_s"] = playback.total_s(*doc);
-        p["remaining_s"] = playback.total_s(*doc) - playback.elapsed_s(*doc);
+        const double elapsed = playback.elapsed_s(*doc, times), total = Playback::total_s(*doc);
+        p["elapsed_s"] = elapsed;
+        p["total_s"] = total;
+        p["remaining_s"] = total - elapsed;
     }
     if (!playback.active || !doc || doc->motions.empty()) return p;
     const std::size_t n = doc->motions.size();
@@ -355,7 +357,7 @@ std::string Automation::state_json() const {
     j["problems_only"] = p_.layers.problems_only;
     j["colour_by"] = colour_by_json(p_.layers, p_.load);
     j["marks"] = doc ? marks_json(*doc, p_.navigation.view(), p_.ui.hovered_mark, selection.line) : json(nullptr);
-    j["playback"] = playback_json(p_.playback, doc, cs);
+    j["playback"] = playback_json(p_.playback, doc, p_.tape_facts, cs);
     j["measure"] = measure_json(p_.measure, cs);
     j["inspector"] = inspector_json(doc, selection.line);
     j["render"] = render_json(p_.renderer.stats(), p_.scene.skipped_frames());

@@ -121,12 +121,6 @@ float Document::feed_of(std::size_t i) const {
     return value_at(feeds, i);
 }
 
-double Document::duration_s(std::size_t i) const {
-    double t = motion_time_s(record(i).length_mm, feed_of(i));
-    if (std::binary_search(pierces.begin(), pierces.end(), static_cast<std::uint32_t>(i))) t += profile.pierce_time_s;
-    return t;
-}
-
 const MotionRecord* Document::torch_copies(std::size_t i) const {
     if (!(motions[i].flags & Motion::kFlagKept)) return nullptr;
     const MotionRecord& r = kept_record(i);

@@ -135,9 +135,6 @@ struct Document {
     [[nodiscard]] Point end_of(std::size_t i) const;
     [[nodiscard]] Point start_of(std::size_t i) const;
     [[nodiscard]] float feed_of(std::size_t i) const;
-    // The machine time of motion i along the programmed path: essi::motion_time_s of its length and feed (rapid at
-    // the profile's rapid speed), plus the profile's pierce time where a pierce is (`pierces`).
-    [[nodiscard]] double duration_s(std::size_t i) const;
     [[nodiscard]] float kerf_of(std::size_t i) const;
     // The centre of arc i (an arc motion), without working out the rest of its record.
     [[nodiscard]] Point arc_centre(std::size_t i) const;

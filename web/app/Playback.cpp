@@ -2,10 +2,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "app/Document.hpp"
+#include "essi/stats.hpp"
 
 namespace essi::viewer {
+
+MotionTimes::MotionTimes(std::vector<float> seconds) : seconds_(std::move(seconds)) {
+    before_.reserve(seconds_.size() / kStride + 1);
+    double t = 0;
+    for (std::size_t i = 0; i < seconds_.size(); ++i) {
+        if (i % kStride == 0) before_.push_back(t);
+        t += seconds_[i];
+    }
+    before_.push_back(t);  // (past the last stride: the sum)
+}
+
+double MotionTimes::before(std::size_t motion) const {
+    const std::size_t k = std::min(motion / kStride, before_.size() - 1);
+    double t = before_[k];
+    for (std::size_t i = k * kStride; i < motion && i < seconds_.size(); ++i) t += seconds_[i];
+    return t;
+}
 
 void Playback::toggle(std::size_t n) {
     if (!active || position >= static_cast<double>(n)) position = 0;
@@ -44,16 +63,15 @@ void Playback::seek(double motion) {
 void Playback::stop() {
     playing = false;
     active = false;
-    time_before_.clear();
 }
 
-void Playback::advance(float seconds, const Document& doc) {
+void Playback::advance(float seconds, const MotionTimes& times) {
     if (!playing) return;
-    const std::size_t n = doc.motions.size();
+    const std::size_t n = times.size();
     double budget = static_cast<double>(seconds) * std::clamp(factor, kMinFactor, kMaxFactor);
     while (position < static_cast<double>(n)) {
         const auto i = static_cast<std::size_t>(position);
-        const double d = doc.duration_s(i);
+        const double d = times.seconds(i);
         const double left = (1 - (position - std::floor(position))) * d;
         if (d > 0 && budget < left) {
             position += budget / d;
@@ -66,31 +84,17 @@ void Playback::advance(float seconds, const Document& doc) {
     playing = false;
 }
 
-void Playback::make_times(const Document& doc) const {
+double Playback::elapsed_s(const Document& doc, const MotionTimesSource& source) const {
+    const double total = total_s(doc);
     const std::size_t n = doc.motions.size();
-    time_before_.assign(1, 0.0);
-    double t = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        t += doc.duration_s(i);
-        if ((i + 1) % kTimeStride == 0) time_before_.push_back(t);
-    }
-    time_before_.push_back(t);  // (the total)
-}
-
-double Playback::elapsed_s(const Document& doc) const {
-    if (time_before_.empty()) make_times(doc);
-    const std::size_t n = doc.motions.size();
-    if (position >= static_cast<double>(n)) return time_before_.back();
+    const MotionTimes* times = active && position < static_cast<double>(n) ? source.motion_times() : nullptr;
+    if (!times || times->size() != n) return total;
     const auto i = static_cast<std::size_t>(position);
-    double t = time_before_[i / kTimeStride];
-    for (std::size_t k = i / kTimeStride * kTimeStride; k < i; ++k) t += doc.duration_s(k);
-    return t + (position - std::floor(position)) * doc.duration_s(i);
+    const double t = times->before(i) + (position - std::floor(position)) * times->seconds(i);
+    return std::min(t, total);
 }
 
-double Playback::total_s(const Document& doc) const {
-    if (time_before_.empty()) make_times(doc);
-    return time_before_.back();
-}
+double Playback::total_s(const Document& doc) { return statistics_time_s(doc.stats); }
 
 std::size_t Playback::limit(std::size_t n) const {
     if (!active) return n;

@@ -11,6 +11,7 @@
 #include "essi/profile.hpp"
 #include "essi/sniff.hpp"
 #include "essi/text.hpp"
+#include "essi/text_encoding.hpp"
 
 namespace essi::viewer {
 
@@ -53,6 +54,7 @@ Session::Session(const Parts& parts)
 
 void Session::load(std::string name, std::string bytes) {
     if (use_profile_file(name, bytes)) return;
+    if (!take_tape_text(name, bytes)) return;
     if (compare_.pending() && document()) return compare_with(std::move(name), bytes);
     compare_.forget();      // (a new tape: a comparison was of the one before)
     input_format_.reset();  // (a new tape: its content says what it is)
@@ -69,6 +71,21 @@ void Session::load_shared(std::string name, std::string bytes, const ShareLink& 
 
 void Session::compare_with(std::string name, const std::string& bytes) {
     compare_.compare_with(document(), profile_name_ == kAutoProfile, std::move(name), bytes);
+}
+
+// The text of a file opened as a tape (essi::decode_tape_text: UTF-16 becomes UTF-8), or false when the core says
+// it is no tape (essi::not_a_tape: empty, a picture, an archive, binary): the toolbar says so, the open tape stays.
+bool Session::take_tape_text(const std::string& name, std::string& bytes) {
+    TapeText text = decode_tape_text(bytes);
+    const Message problem = text.ok() ? not_a_tape(text.decoded ? *text.decoded : bytes) : text.problem;
+    if (problem.msg != Msg::None) {
+        if (const Document* d = document())
+            notices_.notify(Msg::UiNotATapeKept, {display_text(name), problem, display_text(d->name)});
+        else notices_.notify(Msg::UiNotATape, {display_text(name), problem});
+        return false;
+    }
+    if (text.decoded) bytes = std::move(*text.decoded);
+    return true;
 }
 
 // A dropped `.json` file is a profile (as `essi check --profile FILE` reads one): the tape is checked again with

@@ -51,7 +51,8 @@ public:
 
     // --- Opening ---
     // A file's bytes: a profile file (`.json`: the tape is read again with it), the other revision in compare
-    // mode, or a tape to read.
+    // mode, or a tape to read (UTF-16 with a byte order mark as its text). A file that is no tape (empty, a picture,
+    // an archive, binary: essi::not_a_tape) is said in the toolbar and leaves the open tape as it is.
     void load(std::string name, std::string bytes);
     // A share link's tape, read as its sender read it: the link's profile (a built-in name, or the user profile it
     // carries) and input format (essi/share_link.hpp). The page applies the link's view after it.
@@ -86,6 +87,7 @@ public:
 
 private:
     bool use_profile_file(const std::string& name, const std::string& bytes);
+    bool take_tape_text(const std::string& name, std::string& bytes);
     void use_link_profile(const ShareLink& link);
     void read(std::string name, std::string bytes,
               std::optional<ViewRequest> view);  // with the profile and format chosen

@@ -14,4 +14,9 @@ const std::vector<PlannedMotion>* TapeFacts::planned() const {
     return planned_.get(load_, [](const Document& d) { return planned_motions(d.bytes, d.profile, d.setup.format); });
 }
 
+const MotionTimes* TapeFacts::motion_times() const {
+    return motion_times_.get(
+        load_, [](const Document& d) { return MotionTimes(motion_seconds(d.bytes, d.profile, d.setup.format)); });
+}
+
 }  // namespace essi::viewer

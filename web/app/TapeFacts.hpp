@@ -1,7 +1,8 @@
 // What the viewer works out from the open tape beyond its check, when first asked: its parts and plates
-// (essi/parts.hpp, what `essi parts` lists: the Job panel, the job sheet, the parts layer, colour by part group) and
-// the machine-time planner's motions (essi/machine_time.hpp: colour by speed). Each is made by the core reading the
-// tape's bytes again, and kept until another tape is read.
+// (essi/parts.hpp, what `essi parts` lists: the Job panel, the job sheet, the parts layer, colour by part group),
+// the machine-time planner's motions (essi/machine_time.hpp: colour by speed) and the seconds of each motion
+// (essi::motion_seconds: the playback). Each is made by the core reading the tape's bytes again, and kept until
+// another tape is read.
 #pragma once
 
 #include <cstdint>
@@ -9,12 +10,13 @@
 
 #include "app/ColourBy.hpp"
 #include "app/LoadController.hpp"
+#include "app/Playback.hpp"
 #include "essi/machine_time.hpp"
 #include "essi/parts.hpp"
 
 namespace essi::viewer {
 
-class TapeFacts final : public ColourSources {
+class TapeFacts final : public ColourSources, public MotionTimesSource {
 public:
     explicit TapeFacts(const LoadController& load) : load_(load) {}
 
@@ -25,6 +27,8 @@ public:
     [[nodiscard]] const PartsList* parts_made() const;
     // The open tape's planned motions (empty without the profile's accel_mm_s2); null while no tape is open.
     [[nodiscard]] const std::vector<PlannedMotion>* planned() const override;
+    // The open tape's motion times (the playback's clock); null while no tape is open.
+    [[nodiscard]] const MotionTimes* motion_times() const override;
 
 private:
     // A value kept for the tape it was made for.
@@ -51,6 +55,7 @@ private:
     const LoadController& load_;
     mutable Kept<PartsList> parts_;
     mutable Kept<std::vector<PlannedMotion>> planned_;
+    mutable Kept<MotionTimes> motion_times_;
 };
 
 }  // namespace essi::viewer

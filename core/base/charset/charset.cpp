@@ -22,6 +22,8 @@ constexpr std::uint32_t kBmpFourByteCount = 39420;          // 81 30 81 30 .. 84
 constexpr std::uint32_t kSupplementaryFirstIndex = 189000;  // 90 30 81 30 = U+10000
 constexpr char32_t kLastCodePoint = 0x10FFFF;
 
+}  // namespace
+
 void append_utf8(std::string& out, char32_t cp) {
     if (cp < 0x80) {
         out += static_cast<char>(cp);
@@ -39,8 +41,6 @@ void append_utf8(std::string& out, char32_t cp) {
         out += static_cast<char>(0x80 | (cp & 0x3F));
     }
 }
-
-}  // namespace
 
 std::optional<char32_t> gb18030_four_byte_code_point(std::string_view c) {
     if (c.size() != 4) return std::nullopt;

@@ -13,6 +13,9 @@
 
 namespace essi {
 
+// Appends the UTF-8 of a code point (at most U+10FFFF) to `out`.
+void append_utf8(std::string& out, char32_t code_point);
+
 // The UTF-8 of one well-formed GB 18030 character (2 or 4 bytes), or nullopt when it is none.
 [[nodiscard]] std::optional<std::string> gb18030_char_to_utf8(std::string_view character);
 

@@ -79,6 +79,12 @@ void replay_tape(std::string_view bytes, const Profile& profile, InputFormat for
 [[nodiscard]] std::vector<PlannedMotion> planned_motions(std::string_view bytes, const Profile& profile,
                                                          InputFormat format);
 
+// The seconds of every motion of the tape's motion stream (what a MotionSink gets, in order) by the statistics'
+// time (statistics_time_s: planned with the profile's accel_mm_s2, else at the feeds): what its source line and the
+// lines without a motion before it take (its part of the torch's path, pierces, dwells); what comes after the last
+// motion is the last one's. They add up to the statistics' time. Reads and runs the tape again.
+[[nodiscard]] std::vector<float> motion_seconds(std::string_view bytes, const Profile& profile, InputFormat format);
+
 // The coordinate mapping of functions 21-28 (§7): machine = M * tape.
 struct AxisMapping {
     int xx = 1, xy = 0, yx = 0, yy = 1;  // machine x = xx*X + xy*Y; machine y = yx*X + yy*Y

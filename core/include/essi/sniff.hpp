@@ -1,9 +1,11 @@
 // "Is this a tape?": what the first bytes of a file say about it, for the CLI (which files of a folder to check)
-// and the viewer (what to tell about a file that draws nothing). One rule for both.
+// and the viewer (which files it opens, what to tell about a file that draws nothing). One rule for both.
 #pragma once
 
 #include <cstddef>
 #include <string_view>
+
+#include "essi/i18n.hpp"
 
 namespace essi {
 
@@ -20,5 +22,10 @@ constexpr std::size_t kBinarySniffBytes = 4096;
 // comment sections at least 2 non-empty lines, of which at least 80 % hold only + - 0-9 (spaces, tabs
 // allowed), or are % or /, and at least one holds a digit. A UTF-8 byte order mark is skipped.
 [[nodiscard]] bool looks_like_essi(std::string_view head);
+
+// Why a file's text (decode_tape_text, essi/text_encoding.hpp) cannot be a tape, or Msg::None when it may be one:
+// it is empty, it starts with the signature of a picture (PNG, JPEG, GIF), an archive (ZIP, gzip) or a PDF, or it
+// looks_binary. (Text that is no tape is read and its diagnostics say so.)
+[[nodiscard]] Message not_a_tape(std::string_view text);
 
 }  // namespace essi

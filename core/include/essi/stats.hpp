@@ -37,14 +37,20 @@ struct Stats {
 };
 
 // The time a motion of `length_mm` takes at `feed_mm_min` (none without a feed): what the statistics estimate
-// along the compensated path, and what the viewer's playback gives each motion.
+// along the compensated path.
 [[nodiscard]] constexpr double motion_time_s(double length_mm, double feed_mm_min) {
     return feed_mm_min > 0 ? length_mm / feed_mm_min * 60.0 : 0.0;
 }
 
+// The statistics' time: the machine time with the profile's accel_mm_s2 (§9), else the estimate. What the cost is
+// reckoned from, what the viewer's Statistics panel shows and what its playback lasts.
+[[nodiscard]] inline double statistics_time_s(const Stats& s) {
+    return s.machine_time ? s.machine_time->total_s : s.estimated_time_s;
+}
+
 // Where the pierces fall in the motion stream. A pierce is made when a cutting tool comes on (starts_cutting: the
 // statistics count it and its time then); it is at the first motion after that, when that motion cuts (the
-// viewer's marker and the playback's pierce time). Tools that go off before any motion leave the pierce at none.
+// viewer's marker). Tools that go off before any motion leave the pierce at none.
 class PierceTracker {
 public:
     // The tools on after an event: true when it makes a pierce.
@@ -72,16 +78,22 @@ private:
 // last motion.
 class StatsSink final : public MotionSink {
 public:
-    explicit StatsSink(const Profile& profile)
-        : profile_(profile), timed_(profile.accel_mm_s2 || profile.consumables), torch_path_(stats_),
+    // `time_trace`: every part of the statistics' time (statistics_time_s) appended to it as it is counted, on the
+    // source line it comes from: each motion of the torch's path (as the planner runs it with the profile's
+    // accel_mm_s2, else at its feed), each pierce and each dwell (their peak_mm_min 0). Not in line order (the
+    // planner's motions come when they are planned); the seconds add up to the statistics' time.
+    explicit StatsSink(const Profile& profile, std::vector<PlannedMotion>* time_trace = nullptr)
+        : profile_(profile), timed_(profile.accel_mm_s2 || profile.consumables || time_trace), torch_path_(stats_),
           machine_path_(*this), cutting_path_(*this),
-          kerf_(profile.accel_mm_s2   ? static_cast<MotionSink&>(machine_path_)
-                : profile.consumables ? static_cast<MotionSink&>(cutting_path_)
-                                      : torch_path_,
+          kerf_(profile.accel_mm_s2                 ? static_cast<MotionSink&>(machine_path_)
+                : profile.consumables || time_trace ? static_cast<MotionSink&>(cutting_path_)
+                                                    : torch_path_,
                 profile.chord_tolerance_mm),
-          placement_(profile), plain_(!placement_.turns()) {
-        if (profile.accel_mm_s2) [[unlikely]]
+          placement_(profile), plain_(!placement_.turns()), time_trace_(time_trace) {
+        if (profile.accel_mm_s2) [[unlikely]] {
             timer_.emplace(*profile.accel_mm_s2, profile.junction_deviation_mm);
+            timer_->trace_into(time_trace);
+        }
     }
     StatsSink(const StatsSink&) = delete;
     StatsSink& operator=(const StatsSink&) = delete;
@@ -202,6 +214,11 @@ private:
             s.estimated_time_s += t;
             return t;
         }
+        // A part of the time, appended to `out` (the time trace).
+        static void traced(std::vector<PlannedMotion>* out, MotionKind kind, double feed_mm_min, std::uint32_t line,
+                           double seconds) {
+            out->push_back({line, static_cast<float>(seconds), static_cast<float>(feed_mm_min), kind});
+        }
 
     private:
         Stats& stats_;
@@ -219,7 +236,8 @@ private:
     private:
         StatsSink& owner_;
     };
-    // The compensated path for the consumables without a machine time: the cutting time at the feed, once per torch.
+    // The compensated path for the consumables or the time trace without a machine time: the cutting time at the
+    // feed, once per torch.
     class CuttingTimeTorchPath final : public MotionSink {
     public:
         explicit CuttingTimeTorchPath(StatsSink& owner) : owner_(owner) {}
@@ -227,6 +245,8 @@ private:
             const int torches = m.kind == MotionKind::Cut ? m.torches : 1;
             const double t = TorchPath::add(owner_.stats_, m.kind, m.length_mm, m.feed_mm_min, torches);
             if (m.kind == MotionKind::Cut) owner_.torch_cutting_s_ += t * torches;
+            if (owner_.time_trace_) [[unlikely]]
+                TorchPath::traced(owner_.time_trace_, m.kind, m.feed_mm_min, m.line, t);
         }
 
     private:
@@ -234,8 +254,10 @@ private:
     };
     [[gnu::noinline]] void time_line(MotionKind kind, Point start, Point end, double length_mm, double feed_mm_min,
                                      std::uint32_t line) {
-        if (timer_) timer_->line(kind, start, end, length_mm, feed_mm_min, line);
-        else if (kind == MotionKind::Cut) torch_cutting_s_ += motion_time_s(length_mm, feed_mm_min);
+        if (timer_) return timer_->line(kind, start, end, length_mm, feed_mm_min, line);
+        const double t = motion_time_s(length_mm, feed_mm_min);
+        if (kind == MotionKind::Cut) torch_cutting_s_ += t;
+        if (time_trace_) TorchPath::traced(time_trace_, kind, feed_mm_min, line, t);
     }
 
     // An event that may change the time (affects_time): its dwell while cutting (the consumables), its pierce and
@@ -261,11 +283,13 @@ private:
             if (e.kind == EventKind::Dwell) {
                 if (e.tools_after & kCuttingTools) cutting_dwell_s_ += e.value * e.torches_after;
                 if (timer_) timer_->add_dwell(e.value);
+                if (time_trace_) TorchPath::traced(time_trace_, MotionKind::Travel, 0, e.line, e.value);
             }
         }
+        const bool pierce = starts_cutting(before, e.tools_after);  // (PierceTracker's rule)
+        if (pierce && time_trace_) TorchPath::traced(time_trace_, MotionKind::Cut, 0, e.line, profile_.pierce_time_s);
         if (!timer_) return;
-        if (starts_cutting(before, e.tools_after))
-            timer_->add_pierce(profile_.pierce_time_s);  // (PierceTracker's rule)
+        if (pierce) timer_->add_pierce(profile_.pierce_time_s);
         timer_->pause(stop, block_stops_, kerf_.open() ? std::int64_t{kerf_.open_block()} : -1);
     }
     // The cost and the consumables, from the statistics (the machine time when there is one).
@@ -273,8 +297,7 @@ private:
         const bool machine = stats_.machine_time.has_value();
         if (profile_.costs) {
             stats_.cost = reckon_cost(*profile_.costs, profile_.material, profile_.plate,
-                                      {machine ? stats_.machine_time->total_s : stats_.estimated_time_s, machine,
-                                       stats_.pierces, stats_.cut_length_mm});
+                                      {statistics_time_s(stats_), machine, stats_.pierces, stats_.cut_length_mm});
         }
         if (profile_.consumables) {
             const double cutting = machine ? stats_.machine_time->torch_cutting_s : torch_cutting_s_;
@@ -363,7 +386,7 @@ private:
     Stats stats_;
     PierceTracker pierces_;
     // The machine time (with the profile's accel_mm_s2), what it follows of the events, and the consumables' times.
-    bool timed_;  // accel_mm_s2 or consumables
+    bool timed_;  // accel_mm_s2, consumables or the time trace
     std::optional<MachineTimer> timer_;
     double torch_cutting_s_ = 0;  // the cutting motions at their feed, once per torch
     double cutting_dwell_s_ = 0;  // dwells while a cutting tool is on, once per torch
@@ -376,6 +399,7 @@ private:
     Placement placement_;
     bool plain_;
     Point tool_offset_;
+    std::vector<PlannedMotion>* time_trace_;  // (the constructor's)
 };
 
 }  // namespace essi

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "essi/i18n.hpp"
+
 namespace essi {
 
 enum class TextEncoding : unsigned char {
@@ -27,5 +29,15 @@ enum class TextEncoding : unsigned char {
 // `bytes` as UTF-8: as they are for Utf8 (malformed bytes as \xNN, control characters too: display_text), decoded
 // by essi/charset.hpp for Gb18030 (a byte that is no GB 18030 character as \xNN).
 [[nodiscard]] std::string decode_text(std::string_view bytes, TextEncoding encoding);
+
+// A file's bytes as the text of a tape. UTF-16 with a byte order mark (FF FE: little-endian, FE FF: big-endian) is
+// decoded to UTF-8 without the mark (the line and column of what is found in it are those of the decoded text);
+// any other bytes are the text as they are (a UTF-8 mark too: the reader says it is there).
+struct TapeText {
+    std::optional<std::string> decoded;  // the UTF-8 text of UTF-16 bytes (nullopt: the bytes are the text)
+    Message problem;  // UTF-16 that is no text: an odd number of bytes, an unpaired surrogate (where: byte, line)
+    [[nodiscard]] bool ok() const { return problem.msg == Msg::None; }
+};
+[[nodiscard]] TapeText decode_tape_text(std::string_view bytes);
 
 }  // namespace essi

@@ -42,7 +42,7 @@ void stats_table(const Document& doc) {
     stats_row(Msg::UiStatPierces, fmt("%llu", s.pierces));
     stats_row(Msg::UiStatBlocks, fmt("%llu", s.blocks));
     stats_row(Msg::UiStatMotions, fmt("%llu", s.motions));
-    stats_row(Msg::UiStatTime, hms(s.estimated_time_s));
+    stats_row(Msg::UiStatTime, hms(statistics_time_s(s)));  // (the machine time with the profile's accel_mm_s2)
     const Box& c = s.cut_bbox;
     if (!c.empty) {
         stats_row(Msg::UiStatCutExtent, fmt("%.1f x %.1f mm", c.max_x - c.min_x, c.max_y - c.min_y));
@@ -215,7 +215,7 @@ void layers(Layers& layers, Preferences& preferences, const Document* doc, const
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiProblemsOnlyTip));
 }
 
-void playback(Playback& p, Navigation& navigation, const Document* doc) {
+void playback(Playback& p, Navigation& navigation, const Document* doc, const MotionTimesSource& times) {
     if (!doc || doc->motions.empty()) {
         ImGui::TextDisabled("%s", tr(Msg::UiNoMotion));
         return;
@@ -236,7 +236,7 @@ void playback(Playback& p, Navigation& navigation, const Document* doc) {
     ImGui::SliderFloat("##factor", &p.factor, Playback::kMinFactor, Playback::kMaxFactor,
                        tr_format(Msg::UiSliderSpeed, "%.0f").c_str(),
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-    const double elapsed = p.elapsed_s(*doc), total = p.total_s(*doc);
+    const double elapsed = p.elapsed_s(*doc, times), total = Playback::total_s(*doc);
     ImGui::TextWrapped("%s", tr(Msg::UiMachineTime, {hms(elapsed), hms(total), hms(total - elapsed)}).c_str());
     if (!p.active) return;
     const std::size_t cur = p.at(n).motion;
@@ -339,7 +339,7 @@ void Panels::tape_panel() {
     if (header(Msg::UiStatistics, "Statistics")) statistics(doc, p_.load);
     if (header(Msg::UiJob, "Job")) job(doc, p_.exports);
     if (header(Msg::UiLayers, "Layers")) layers(p_.layers, p_.preferences, doc, p_.load);
-    if (header(Msg::UiPlayback, "Playback")) playback(p_.playback, p_.navigation, doc);
+    if (header(Msg::UiPlayback, "Playback")) playback(p_.playback, p_.navigation, doc, p_.tape_facts);
     if (header(Msg::UiDiagnostics, "Diagnostics")) diagnostics(doc, p_.navigation, p_.exports);
     ImGui::End();
 }
