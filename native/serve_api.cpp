@@ -17,6 +17,7 @@
 #include "essi/report_json.hpp"
 #include "essi/sha256.hpp"
 #include "essi/share_link.hpp"
+#include "essi/text_encoding.hpp"
 #include "essi/write.hpp"
 #include "pipelined_check.hpp"
 #include "serve.hpp"
@@ -164,10 +165,27 @@ std::optional<TapeRequest> tape_request(const httplib::Request& req, httplib::Re
     return r;
 }
 
-void check_tape(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& body,
+// The body as a tape's text (essi::decode_tape_text, as `essi check` reads a file): the body itself, or its UTF-16
+// (with a byte order mark) decoded into `decoded`; null with a 400 answer when it is UTF-16 that is no text.
+const std::string* tape_text(const std::string& body, std::string& decoded, httplib::Response& res) {
+    TapeText text = decode_tape_text(body);
+    if (!text.ok()) {
+        json_error(res, 400, text.problem.text(Lang::En));
+        return nullptr;
+    }
+    if (!text.decoded) return &body;
+    decoded = std::move(*text.decoded);
+    return &decoded;
+}
+
+void check_tape(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& bytes,
                 const Keep& keep) {
     const auto request = tape_request(req, res);
     if (!request) return;
+    std::string decoded;
+    const std::string* text_of_tape = tape_text(bytes, decoded, res);
+    if (!text_of_tape) return;
+    const std::string& body = *text_of_tape;
     FileReport report;
     report.path = param_or(req, "name", "-");
     report.result = check_tape_pipelined(body, request->setup(body), limits.max_diagnostics);
@@ -183,10 +201,14 @@ void check_tape(const ApiLimits& limits, const httplib::Request& req, httplib::R
 // {"text", "diagnostics"}; 422 with the diagnostics when the tape has errors (as `essi convert` exits 1), unless
 // force=1 (then the text of what the machine would run, with X-Essi-Errors). At most --max-diagnostics
 // diagnostics, the rest counted in "diagnostics_omitted".
-void convert(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& body,
+void convert(const ApiLimits& limits, const httplib::Request& req, httplib::Response& res, const std::string& bytes,
              const Keep& keep) {
     const auto request = tape_request(req, res);
     if (!request) return;
+    std::string decoded;
+    const std::string* text_of_tape = tape_text(bytes, decoded, res);
+    if (!text_of_tape) return;
+    const std::string& body = *text_of_tape;
     const std::string to = param_or(req, "to", "");
     ConvertOptions options;
     if (const auto format = parse_output_format(to)) options.to = *format;

@@ -103,6 +103,16 @@ expect "check body over --max-body: 413" 413 '"error":"request body too large' -
 expect "chunked body over --max-body: 413" 413 '"error"' -- -H 'Transfer-Encoding: chunked' --data-binary @"$tmp/big.esi" "$url/api/check"
 expect "unknown API path: 404" 404 '"error":"no API endpoint' -- "$url/api/nothing"
 
+# A tape saved as UTF-16 with a byte order mark is read as its text, as `essi check` reads the file.
+{ printf '\xFF\xFE'; iconv -f UTF-8 -t UTF-16LE "$bad"; } > "$tmp/utf16le.esi"
+curl -sS -H 'Expect:' --data-binary @"$bad" "$url/api/check" > "$tmp/utf8.json"
+curl -sS -H 'Expect:' --data-binary @"$tmp/utf16le.esi" "$url/api/check" > "$tmp/utf16.json"
+if grep -q '"code"' "$tmp/utf8.json" && cmp -s "$tmp/utf8.json" "$tmp/utf16.json"; then pass "check a UTF-16 LE tape: the UTF-8 tape's report"
+else fail "check a UTF-16 LE tape: the report differs from the UTF-8 tape's"; diff "$tmp/utf8.json" "$tmp/utf16.json" | head; fi
+printf '\xFF\xFEx' > "$tmp/odd16.esi"
+expect "check UTF-16 of an odd number of bytes: 400" 400 'UTF-16' -- --data-binary @"$tmp/odd16.esi" "$url/api/check"
+expect "convert a UTF-16 LE tape with errors: 422" 422 '"E119"' -- --data-binary @"$tmp/utf16le.esi" "$url/api/convert?to=gcode&input=eia"
+
 # The API's report is the CLI's report (same JSON, same path when named "-").
 curl -sS -H 'Expect:' --data-binary @"$bad" "$url/api/check" > "$tmp/api.json"
 "$essi" check --format json - < "$bad" > "$tmp/cli.json" 2>/dev/null
