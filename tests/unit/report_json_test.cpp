@@ -17,7 +17,7 @@ essi::Diagnostic diag(essi::Severity s, essi::DiagCode c, std::uint32_t line, st
     d.code = c;
     d.line = line;
     d.column = col;
-    d.message = msg;
+    d.set_text(msg);
     return d;
 }
 
