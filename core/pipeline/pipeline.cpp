@@ -11,14 +11,26 @@ namespace essi {
 namespace {
 
 // The cut plan's diagnostics name a block by its line: their column is where the block begins (the line's first
-// byte that is not a blank). The lines are indexed only when there is such a diagnostic.
+// byte that is not a blank). The lines are walked once, up to the last such diagnostic's, in the order of their
+// lines (LineIndex::line's rule, without an index: a tape with a finding on every part has one a few lines apart).
 void block_columns(std::string_view bytes, std::vector<Diagnostic>& diagnostics) {
-    if (diagnostics.empty()) return;
-    LineIndex lines;
-    lines.build(bytes);
-    for (Diagnostic& d : diagnostics) {
-        if (d.line == 0 || d.column > 0) continue;
-        const std::string_view text = lines.line(bytes, d.line);
+    std::vector<std::size_t> wanted;  // the diagnostics without a column
+    for (std::size_t k = 0; k < diagnostics.size(); ++k)
+        if (diagnostics[k].line > 0 && diagnostics[k].column == 0) wanted.push_back(k);
+    std::sort(wanted.begin(), wanted.end(),
+              [&](std::size_t a, std::size_t b) { return diagnostics[a].line < diagnostics[b].line; });
+    std::uint32_t line = 1;
+    std::size_t at = 0;  // where `line` starts (bytes.size(): past the last line)
+    for (const std::size_t k : wanted) {
+        Diagnostic& d = diagnostics[k];
+        for (; line < d.line && at < bytes.size(); ++line) {
+            at = find_line_end(bytes, at);
+            if (at >= bytes.size()) break;
+            const char end = bytes[at++];
+            if (at < bytes.size() && is_line_end_pair(end, bytes[at])) ++at;
+        }
+        const std::string_view text =
+            line < d.line || at >= bytes.size() ? std::string_view{} : bytes.substr(at, find_line_end(bytes, at) - at);
         const std::size_t first = text.find_first_not_of(" \t");
         d.column = static_cast<std::uint32_t>(first == std::string_view::npos ? 0 : first) + 1;
     }

@@ -53,7 +53,7 @@ public:
         next();
         buf_ += '"';
         buf_ += name;
-        buf_ += "\": ";
+        buf_.append("\": ", 3);
     }
     // ... or the next element (in an array), then its value.
     void element() { next(); }
@@ -124,7 +124,8 @@ public:
 
 private:
     void next() {
-        buf_ += first_ ? "\n" : ",\n";
+        if (!first_) buf_ += ',';
+        buf_ += '\n';
         first_ = false;
         indent();
     }
