@@ -14,15 +14,15 @@ namespace {
 // byte that is not a blank). The lines are walked once, up to the last such diagnostic's, in the order of their
 // lines (LineIndex::line's rule, without an index: a tape with a finding on every part has one a few lines apart).
 void block_columns(std::string_view bytes, std::vector<Diagnostic>& diagnostics) {
-    std::vector<std::size_t> wanted;  // the diagnostics without a column
+    std::vector<std::uint64_t> wanted;  // the diagnostics without a column: line << 32 | index
     for (std::size_t k = 0; k < diagnostics.size(); ++k)
-        if (diagnostics[k].line > 0 && diagnostics[k].column == 0) wanted.push_back(k);
-    std::sort(wanted.begin(), wanted.end(),
-              [&](std::size_t a, std::size_t b) { return diagnostics[a].line < diagnostics[b].line; });
+        if (diagnostics[k].line > 0 && diagnostics[k].column == 0)
+            wanted.push_back(std::uint64_t{diagnostics[k].line} << 32 | k);
+    std::sort(wanted.begin(), wanted.end());
     std::uint32_t line = 1;
     std::size_t at = 0;  // where `line` starts (bytes.size(): past the last line)
-    for (const std::size_t k : wanted) {
-        Diagnostic& d = diagnostics[k];
+    for (const std::uint64_t key : wanted) {
+        Diagnostic& d = diagnostics[static_cast<std::size_t>(key & 0xFFFFFFFFu)];
         for (; line < d.line && at < bytes.size(); ++line) {
             at = find_line_end(bytes, at);
             if (at >= bytes.size()) break;
