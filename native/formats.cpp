@@ -192,7 +192,7 @@ std::string path_to_uri(std::string_view path) {
 static nlohmann::json sarif_related(const nlohmann::json& artifact, const Diagnostic& d, Lang lang) {
     nlohmann::json related = nlohmann::json::array();
     int id = 0;
-    for (const RelatedLocation& r : d.related) {
+    for (const RelatedLocation& r : d.related()) {
         nlohmann::json phys = artifact;
         phys["region"] = {{"startLine", r.line}, {"endLine", std::max(r.line, r.end_line)}};
         related.push_back(
@@ -263,7 +263,7 @@ nlohmann::json sarif_report(std::span<const BatchItem> items, std::string_view p
                                   {"level", sarif_level(d.severity)},
                                   {"message", {{"text", diagnostic_message(d, lang)}}},
                                   {"locations", {{{"physicalLocation", phys}}}}};
-            if (!d.related.empty()) res["relatedLocations"] = sarif_related(artifact, d, lang);
+            if (!d.related().empty()) res["relatedLocations"] = sarif_related(artifact, d, lang);
             if (auto f = rule_index.find(id); f != rule_index.end()) res["ruleIndex"] = f->second;
             results.push_back(std::move(res));
         }
@@ -324,7 +324,7 @@ nlohmann::json codeclimate_report(std::span<const BatchItem> items, Lang lang) {
         }
         for (const Diagnostic& d : it.report.result.diagnostics)
             issue(path, code_name(d.code), d.line, codeclimate_severity(d.severity), diagnostic_message(d, lang),
-                  d.message);
+                  diagnostic_message(d, Lang::En));
     }
     return issues;
 }

@@ -66,7 +66,7 @@ std::string diagnostics_text(const essi::CheckResult& r) {
     std::string s;
     for (const auto& d : r.diagnostics) {
         s += "\n  " + essi::code_name(d.code) + " line " + std::to_string(d.line) + " col " + std::to_string(d.column) +
-             ": " + d.message;
+             ": " + essi::diagnostic_message(d, essi::Lang::En);
     }
     return s.empty() ? "\n  (none)" : s;
 }

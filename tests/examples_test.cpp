@@ -188,7 +188,7 @@ TEST_P(ExampleTape, MatchesExpectedAndTrace) {
     for (const auto& d : result.diagnostics) {
         got.push_back(diag_key(essi::code_name(d.code), d.line));
         got_detail += "\n  " + essi::code_name(d.code) + " line " + std::to_string(d.line) + " col " +
-                      std::to_string(d.column) + ": " + d.message;
+                      std::to_string(d.column) + ": " + essi::diagnostic_message(d, essi::Lang::En);
     }
     std::sort(want.begin(), want.end());
     std::sort(got.begin(), got.end());

@@ -177,15 +177,49 @@ Diagnostic make_diagnostic(Severity severity, DiagCode code, std::uint32_t line,
     d.code = code;
     d.line = line;
     d.column = column;
-    d.message = format_message(msg, Lang::En, args);
     d.msg = msg;
     d.args = std::move(args);
     return d;
 }
 
 std::string diagnostic_message(const Diagnostic& d, Lang lang) {
-    if (lang == Lang::En || d.msg == Msg::None) return d.message;
+    if (d.msg == Msg::None) return d.args.packed();
     return format_message(d.msg, lang, d.args);
+}
+
+Diagnostic::Diagnostic(const Diagnostic& o)
+    : severity(o.severity), has_at(o.has_at), code(o.code), msg(o.msg), line(o.line), column(o.column),
+      contour_first(o.contour_first), contour_last(o.contour_last), at(o.at), args(o.args),
+      places_(o.places_ ? std::make_unique<Places>(*o.places_) : nullptr) {}
+
+Diagnostic& Diagnostic::operator=(const Diagnostic& o) {
+    if (this != &o) *this = Diagnostic(o);
+    return *this;
+}
+
+void Diagnostic::set_text(std::string text) {
+    msg = Msg::None;
+    args = MessageArgs::from_packed(std::move(text));
+}
+
+const std::vector<RelatedLocation>& Diagnostic::related() const {
+    static const std::vector<RelatedLocation> none;
+    return places_ ? places_->related : none;
+}
+
+const std::vector<std::vector<Point>>& Diagnostic::overlap() const {
+    static const std::vector<std::vector<Point>> none;
+    return places_ ? places_->overlap : none;
+}
+
+void Diagnostic::add_related(RelatedLocation r) {
+    if (!places_) places_ = std::make_unique<Places>();
+    places_->related.push_back(std::move(r));
+}
+
+void Diagnostic::set_overlap(std::vector<std::vector<Point>> polygons) {
+    if (!places_) places_ = std::make_unique<Places>();
+    places_->overlap = std::move(polygons);
 }
 
 std::string related_message(const RelatedLocation& r, Lang lang) { return format_message(r.msg, lang, r.args); }

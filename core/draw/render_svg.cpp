@@ -198,7 +198,7 @@ void write_highlights(std::string& s, const std::vector<Diagnostic>& diagnostics
                      range_text(r) + "\" stroke=\"" + color + "\" stroke-opacity=\"" + num(kContourOpacity) +
                      "\" stroke-width=\"" + scale_text(kContourWidthPx * px) + "\" d=\"" + path + "\"/>\n";
         }
-        for (const RelatedLocation& rel : d.related) {
+        for (const RelatedLocation& rel : d.related()) {
             const LineRange r{rel.line, std::max(rel.line, rel.end_line)};
             const std::string path = rel.line > 0 ? sink.lines_path(r) : std::string();
             if (path.empty()) continue;
@@ -218,19 +218,19 @@ void write_overlaps(std::string& s, const std::vector<Diagnostic>& diagnostics) 
     s += "<g id=\"overlaps\" stroke=\"none\">\n";
     for (std::size_t k = 0; k < diagnostics.size(); ++k) {
         const Diagnostic& d = diagnostics[k];
-        if (d.overlap.empty()) continue;
+        if (d.overlap().empty()) continue;
         const std::string index = std::to_string(k);
         const auto clip_id = [&](std::size_t j) { return "overlap-" + index + "-" + std::to_string(j); };
         s += "<defs>";
-        for (std::size_t j = 1; j < d.overlap.size(); ++j)
+        for (std::size_t j = 1; j < d.overlap().size(); ++j)
             s += "<clipPath id=\"" + clip_id(j) + "\" clipPathUnits=\"userSpaceOnUse\"><path d=\"" +
-                 polygon_path(d.overlap[j]) + "\"/></clipPath>";
+                 polygon_path(d.overlap()[j]) + "\"/></clipPath>";
         s += "</defs>\n<g class=\"overlap\" data-diagnostic=\"" + index + "\" data-polygons=\"" +
-             std::to_string(d.overlap.size()) + "\">";
-        for (std::size_t j = 1; j < d.overlap.size(); ++j) s += "<g clip-path=\"url(#" + clip_id(j) + ")\">";
+             std::to_string(d.overlap().size()) + "\">";
+        for (std::size_t j = 1; j < d.overlap().size(); ++j) s += "<g clip-path=\"url(#" + clip_id(j) + ")\">";
         s += "<path class=\"overlap-area\" fill=\"" + std::string(mark_color(d.severity)) + "\" fill-opacity=\"" +
-             num(kOverlapOpacity) + "\" d=\"" + polygon_path(d.overlap[0]) + "\"/>";
-        for (std::size_t j = 1; j < d.overlap.size(); ++j) s += "</g>";
+             num(kOverlapOpacity) + "\" d=\"" + polygon_path(d.overlap()[0]) + "\"/>";
+        for (std::size_t j = 1; j < d.overlap().size(); ++j) s += "</g>";
         s += "</g>\n";
     }
     s += "</g>\n";
@@ -248,7 +248,7 @@ void write_marks(std::string& s, const std::vector<Diagnostic>& diagnostics,
         const Point p = *places[k];
         const std::string color(mark_color(d.severity));
         std::string tip = diagnostic_line(title, d);
-        for (const RelatedLocation& rel : d.related) tip += "\n  " + related_message(rel, Lang::En);
+        for (const RelatedLocation& rel : d.related()) tip += "\n  " + related_message(rel, Lang::En);
         s += "<g class=\"diagnostic " + std::string(severity_name(d.severity)) + "\" id=\"diagnostic-" +
              std::to_string(k) + "\" data-index=\"" + std::to_string(k) + "\" data-code=\"" + code_name(d.code) +
              "\" data-line=\"" + std::to_string(d.line) + "\" data-x=\"" + num(p.x) + "\" data-y=\"" + num(p.y) +

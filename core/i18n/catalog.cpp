@@ -221,17 +221,20 @@ MessageArgs MessageArgs::from_packed(std::string packed) {
 std::string format_template(std::string_view tmpl, Lang lang, const MessageArgs& args) {
     std::string out;
     out.reserve(tmpl.size() + args.packed().size());
-    for (std::size_t i = 0; i < tmpl.size(); ++i) {
-        const char c = tmpl[i];
-        const std::size_t close = c == '{' ? tmpl.find('}', i) : std::string_view::npos;
-        if (close == std::string_view::npos || i + 1 >= close ||
-            !std::isdigit(static_cast<unsigned char>(tmpl[i + 1]))) {
-            out += c;
+    for (std::size_t i = 0; i < tmpl.size();) {
+        const std::size_t open = tmpl.find('{', i);
+        out.append(tmpl.substr(i, open == std::string_view::npos ? std::string_view::npos : open - i));
+        if (open == std::string_view::npos) break;
+        const std::size_t close = tmpl.find('}', open);
+        if (close == std::string_view::npos || open + 1 >= close ||
+            !std::isdigit(static_cast<unsigned char>(tmpl[open + 1]))) {
+            out += '{';
+            i = open + 1;
             continue;
         }
-        const std::size_t n = static_cast<std::size_t>(tmpl[i + 1] - '0');
+        const std::size_t n = static_cast<std::size_t>(tmpl[open + 1] - '0');
         const std::string value = argument(args.packed(), n, lang);
-        const std::string_view inner = tmpl.substr(i + 2, close - i - 2);  // "" or "|one|other"
+        const std::string_view inner = tmpl.substr(open + 2, close - open - 2);  // "" or "|one|other"
         if (inner.empty()) {
             out += value;
         } else {
@@ -241,7 +244,7 @@ std::string format_template(std::string_view tmpl, Lang lang, const MessageArgs&
             const std::string_view other = bar == std::string_view::npos ? std::string_view{} : inner.substr(bar + 1);
             out += value == "1" ? one : other;
         }
-        i = close;
+        i = close + 1;
     }
     return out;
 }

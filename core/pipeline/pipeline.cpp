@@ -11,14 +11,26 @@ namespace essi {
 namespace {
 
 // The cut plan's diagnostics name a block by its line: their column is where the block begins (the line's first
-// byte that is not a blank). The lines are indexed only when there is such a diagnostic.
+// byte that is not a blank). The lines are walked once, up to the last such diagnostic's, in the order of their
+// lines (LineIndex::line's rule, without an index: a tape with a finding on every part has one a few lines apart).
 void block_columns(std::string_view bytes, std::vector<Diagnostic>& diagnostics) {
-    if (diagnostics.empty()) return;
-    LineIndex lines;
-    lines.build(bytes);
-    for (Diagnostic& d : diagnostics) {
-        if (d.line == 0 || d.column > 0) continue;
-        const std::string_view text = lines.line(bytes, d.line);
+    std::vector<std::uint64_t> wanted;  // the diagnostics without a column: line << 32 | index
+    for (std::size_t k = 0; k < diagnostics.size(); ++k)
+        if (diagnostics[k].line > 0 && diagnostics[k].column == 0)
+            wanted.push_back(std::uint64_t{diagnostics[k].line} << 32 | k);
+    std::sort(wanted.begin(), wanted.end());
+    std::uint32_t line = 1;
+    std::size_t at = 0;  // where `line` starts (bytes.size(): past the last line)
+    for (const std::uint64_t key : wanted) {
+        Diagnostic& d = diagnostics[static_cast<std::size_t>(key & 0xFFFFFFFFu)];
+        for (; line < d.line && at < bytes.size(); ++line) {
+            at = find_line_end(bytes, at);
+            if (at >= bytes.size()) break;
+            const char end = bytes[at++];
+            if (at < bytes.size() && is_line_end_pair(end, bytes[at])) ++at;
+        }
+        const std::string_view text =
+            line < d.line || at >= bytes.size() ? std::string_view{} : bytes.substr(at, find_line_end(bytes, at) - at);
         const std::size_t first = text.find_first_not_of(" \t");
         d.column = static_cast<std::uint32_t>(first == std::string_view::npos ? 0 : first) + 1;
     }

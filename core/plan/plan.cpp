@@ -332,10 +332,10 @@ struct CutPlan::State {
     // points; later ones go without (the report's size stays bounded whatever the collisions).
     void keep_overlap_within_budget(Diagnostic& d) {
         std::size_t points = 0;
-        for (const std::vector<Point>& polygon : d.overlap) points += polygon.size();
+        for (const std::vector<Point>& polygon : d.overlap()) points += polygon.size();
         if (points == 0) return;
         if (points > overlap_points_left) {
-            d.overlap.clear();
+            d.set_overlap({});
             overlap_points_left = 0;
             return;
         }
@@ -397,7 +397,7 @@ struct CutPlan::State {
         Diagnostic d = make_diagnostic(
             Severity::Warning, DiagCode::W608_FeedOutOfRange, line, 0, Msg::PlanFeed,
             {number_text(feed), number_text(profile.feed_min_mm_min), number_text(profile.feed_max_mm_min)});
-        if (feed_line > 0) d.related.push_back({feed_line, feed_line, Msg::RelatedFeedSet, {}});
+        if (feed_line > 0) d.add_related({feed_line, feed_line, Msg::RelatedFeedSet, {}});
         if (cap.admit(d)) found.push_back(std::move(d));
     }
 

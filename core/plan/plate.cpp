@@ -148,7 +148,7 @@ private:
             Diagnostic d = about(DiagCode::W601_ContourGap, c, {(e.x + c.gap_from.x) / 2, (e.y + c.gap_from.y) / 2},
                                  Msg::PlanGap, {mm_text(c.gap_mm), c.gap_line, mm_text(st_.closure_mm)});
             d.line = last_piece(c).line;
-            d.related.push_back({c.gap_line, c.gap_line, Msg::RelatedContourStart, {}});
+            d.add_related({c.gap_line, c.gap_line, Msg::RelatedContourStart, {}});
             emit(std::move(d));
         }
     }
@@ -230,7 +230,7 @@ private:
         const Cut& c = cuts_[later];
         Diagnostic d =
             about(DiagCode::W607_SamePathTwice, c, first_piece(c).end, Msg::PlanSamePath, {a.first_line, a.last_line});
-        d.related.push_back(related(a, Msg::RelatedFirstCut));
+        d.add_related(related(a, Msg::RelatedFirstCut));
         emit(std::move(d));
     }
 
@@ -392,9 +392,11 @@ private:
                 code = DiagCode::N603_KerfInsideLoneContour;
             }
             if (msg == Msg::None) continue;
+            const std::uint32_t line = pieces_[c.loop_begin].line;
+            if (!cap_.admit(code, line, default_severity(code))) continue;  // (on every part of a tape: counted only)
             Diagnostic d = about(code, c, c.loop_start, msg, {side, travel, other});
-            d.line = pieces_[c.loop_begin].line;
-            emit(std::move(d));
+            d.line = line;
+            out_.push_back(std::move(d));
         }
     }
 
@@ -414,7 +416,7 @@ private:
                                  part ? Msg::PlanPartBeforeHoles : Msg::PlanHoleBeforeParts,
                                  {children.size(), first.first_line, first.last_line});
             for (int ch : children)
-                d.related.push_back(
+                d.add_related(
                     related(cuts_[static_cast<std::size_t>(ch)], part ? Msg::RelatedHoleAfter : Msg::RelatedPartAfter));
             emit(std::move(d));
         }
@@ -502,26 +504,26 @@ private:
         if (lone) {
             diag =
                 about(DiagCode::N612_ContoursOverlap, b, where, Msg::PlanContoursOverlap, {a.first_line, a.last_line});
-            diag.related.push_back(related(a, Msg::RelatedOtherContour));
+            diag.add_related(related(a, Msg::RelatedOtherContour));
         } else if (ra == ContourRole::LoneHole || rb == ContourRole::LoneHole) {
             const bool b_is_hole = rb == ContourRole::LoneHole;
             diag = about(DiagCode::E605_PartsCollide, b, where,
                          b_is_hole ? Msg::PlanPlateHoleOverlapsPart : Msg::PlanPartOverlapsPlateHole,
                          {a.first_line, a.last_line, mm_text(width)});
-            diag.related.push_back(related(a, b_is_hole ? Msg::RelatedOtherPart : Msg::RelatedPlateHole));
+            diag.add_related(related(a, b_is_hole ? Msg::RelatedOtherPart : Msg::RelatedPlateHole));
         } else if (width <= kPlanTouchToleranceMm) {  // (no compensation on either: no kerf width to name)
             diag = about(DiagCode::E605_PartsCollide, b, where, Msg::PlanPartsTouch, {a.first_line, a.last_line});
-            diag.related.push_back(related(a, Msg::RelatedOtherPart));
+            diag.add_related(related(a, Msg::RelatedOtherPart));
         } else if (d == 0) {
             diag = about(DiagCode::E605_PartsCollide, b, where, Msg::PlanPartsOverlap,
                          {a.first_line, a.last_line, mm_text(width)});
-            diag.related.push_back(related(a, Msg::RelatedOtherPart));
+            diag.add_related(related(a, Msg::RelatedOtherPart));
         } else {
             diag = about(DiagCode::E605_PartsCollide, b, where, Msg::PlanPartsTooClose,
                          {mm_text(d), a.first_line, a.last_line, mm_text(width)});
-            diag.related.push_back(related(a, Msg::RelatedOtherPart));
+            diag.add_related(related(a, Msg::RelatedOtherPart));
         }
-        if (d == 0) diag.overlap = {outline(polygon(i)), outline(polygon(j))};
+        if (d == 0) diag.set_overlap({outline(polygon(i)), outline(polygon(j))});
         out_.push_back(std::move(diag));
     }
     // A polygon of a collision's overlap: itself, or kPlanMaxOverlapPoints of its points evenly spread (a report's
@@ -566,7 +568,7 @@ private:
                         continue;
                     Diagnostic d = about(DiagCode::E606_CutCrossesCutPart, cuts_[i], where, Msg::PlanCutCrossesPart,
                                          {p.first_line, p.last_line});
-                    d.related.push_back(related(p, Msg::RelatedPartCutFree));
+                    d.add_related(related(p, Msg::RelatedPartCutFree));
                     emit(std::move(d));
                     done = true;
                     break;

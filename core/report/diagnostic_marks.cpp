@@ -52,7 +52,7 @@ std::vector<LineRange> concerned_lines(const Diagnostic& d) {
 
 std::vector<LineRange> related_lines(const Diagnostic& d) {
     std::vector<LineRange> out;
-    for (const RelatedLocation& r : d.related)
+    for (const RelatedLocation& r : d.related())
         if (r.line > 0) out.push_back({r.line, std::max(r.line, r.end_line)});
     return out;
 }

@@ -4,6 +4,8 @@
 #include <optional>
 #include <string>
 
+#include "json_text.hpp"
+
 namespace essi {
 
 namespace {
@@ -51,15 +53,15 @@ nlohmann::json diagnostic_to_json(const Diagnostic& d, Lang lang) {
     // The cut plan's (6xx): the contour concerned, the point on the drawing, the other places, the overlap.
     if (d.contour_first > 0) j["contour"] = {{"first_line", d.contour_first}, {"last_line", d.contour_last}};
     if (d.has_at) j["at"] = point_to_json(d.at);
-    if (!d.related.empty()) {
+    if (!d.related().empty()) {
         nlohmann::json related = nlohmann::json::array();
-        for (const RelatedLocation& r : d.related)
+        for (const RelatedLocation& r : d.related())
             related.push_back({{"line", r.line}, {"end_line", r.end_line}, {"message", related_message(r, lang)}});
         j["related"] = std::move(related);
     }
-    if (!d.overlap.empty()) {
+    if (!d.overlap().empty()) {
         nlohmann::json polygons = nlohmann::json::array();
-        for (const std::vector<Point>& polygon : d.overlap) {
+        for (const std::vector<Point>& polygon : d.overlap()) {
             nlohmann::json points = nlohmann::json::array();
             for (Point p : polygon) points.push_back({round_for_json(p.x), round_for_json(p.y)});
             polygons.push_back(std::move(points));
@@ -182,13 +184,14 @@ nlohmann::json parts_to_json(const PartsList& list) {
 
 namespace {
 
-// What stands for a file's parts list member in write_report_json's text until it is written there.
-std::string parts_placeholder(std::size_t file, std::string_view member) {
-    return "(parts list of file " + std::to_string(file) + ": " + std::string(member) + ")";
+// What stands for a file's diagnostics or parts list member in write_report_json's text until it is written there.
+std::string member_placeholder(std::size_t file, std::string_view member) {
+    return "(" + std::string(member) + " of file " + std::to_string(file) + ")";
 }
 constexpr std::string_view kPartsMembers[] = {"groups", "parts", "plates"};  // (as a JSON object orders them)
 
-// file_report_to_json, the parts list's members as their placeholders when `file_index` is given.
+// file_report_to_json, the diagnostics and the parts list's members as their placeholders when `file_index` is
+// given.
 nlohmann::json file_json(const FileReport& file, Lang lang, std::optional<std::size_t> file_index) {
     nlohmann::json j = nlohmann::json::object();
     j["path"] = file.display_path();
@@ -198,12 +201,14 @@ nlohmann::json file_json(const FileReport& file, Lang lang, std::optional<std::s
         j["profile"] = file.result.profile;
         j["dialect_evidence"] = file.result.dialect_evidence;
     }
-    j["diagnostics"] = diagnostics_to_json(file.result.diagnostics, lang);
+    if (file_index && !file.result.diagnostics.empty())
+        j["diagnostics"] = member_placeholder(*file_index, "diagnostics");
+    else j["diagnostics"] = diagnostics_to_json(file.result.diagnostics, lang);
     j["stats"] = stats_to_json(file.result.stats);
     if (file.omitted() > 0) j["diagnostics_omitted"] = file.omitted();
     if (file.result.parts && file_index) {
         for (const std::string_view member : kPartsMembers)
-            j[std::string(member)] = parts_placeholder(*file_index, member);
+            j[std::string(member)] = member_placeholder(*file_index, member);
     } else if (file.result.parts) {
         nlohmann::json parts = parts_to_json(*file.result.parts);
         for (auto& [key, value] : parts.items()) j[key] = std::move(value);
@@ -247,21 +252,100 @@ void write_report_json(std::span<const FileReport> files, std::string_view profi
     const std::string text = report_json(files, profile_name, lang, indent > 0).dump(indent);
     const std::string_view all(text);
     std::size_t at = 0;
+    // Writes the text up to the placeholder of `member`, if it is there, and the member's value in its place.
+    const auto write_member = [&](std::size_t file, std::string_view member, const auto& write_value) {
+        // `"member": "placeholder"` (a quote inside a string is written escaped: nothing else reads so)
+        const std::string stand_in = "\"" + std::string(member) + "\": \"" + member_placeholder(file, member) + "\"";
+        const std::size_t found = all.find(stand_in, at);
+        if (found == std::string_view::npos) return;
+        const std::size_t line = all.rfind('\n', found) + 1;  // (the member's indentation: its line's spaces)
+        write(all.substr(at, found + member.size() + 4 - at));
+        write_value(static_cast<int>((found - line) / indent));
+        at = found + stand_in.size();
+    };
     for (std::size_t k = 0; k < files.size() && indent > 0; ++k) {
-        if (!files[k].result.parts) continue;
-        for (const std::string_view member : kPartsMembers) {
-            // `"member": "placeholder"` (a quote inside a string is written escaped: nothing else reads so)
-            const std::string stand_in = "\"" + std::string(member) + "\": \"" + parts_placeholder(k, member) + "\"";
-            const std::size_t found = all.find(stand_in, at);
-            if (found == std::string_view::npos) continue;
-            const std::size_t line = all.rfind('\n', found) + 1;  // (the member's indentation: its line's spaces)
-            write(all.substr(at, found + member.size() + 4 - at));
-            write_parts_member_json(*files[k].result.parts, member, indent, static_cast<int>((found - line) / indent),
-                                    write);
-            at = found + stand_in.size();
-        }
+        const CheckResult& r = files[k].result;
+        if (!r.diagnostics.empty())
+            write_member(k, "diagnostics",
+                         [&](int depth) { write_diagnostics_json(r.diagnostics, lang, indent, depth, write); });
+        if (!r.parts) continue;
+        for (const std::string_view member : kPartsMembers)
+            write_member(k, member,
+                         [&](int depth) { write_parts_member_json(*r.parts, member, indent, depth, write); });
     }
     write(all.substr(at));
+}
+
+namespace {
+
+// diagnostic_to_json(d, lang), its members by name as nlohmann::json keeps them.
+void diagnostic_json(JsonText& j, const Diagnostic& d, Lang lang) {
+    j.open('{');
+    if (d.has_at) {
+        j.key("at");
+        j.open('{');
+        j.rounded("x", d.at.x);
+        j.rounded("y", d.at.y);
+        j.close('}');
+    }
+    j.string("code", code_name(d.code));
+    j.integer("column", d.column);
+    if (d.contour_first > 0) {
+        j.key("contour");
+        j.open('{');
+        j.integer("first_line", d.contour_first);
+        j.integer("last_line", d.contour_last);
+        j.close('}');
+    }
+    j.integer("line", d.line);
+    j.string("message", diagnostic_message(d, lang));
+    if (!d.overlap().empty()) {
+        j.key("overlap");
+        j.open('[');
+        for (const std::vector<Point>& polygon : d.overlap()) {
+            j.element();
+            j.open('[');
+            for (const Point p : polygon) {
+                j.element();
+                j.open('[');
+                j.element();
+                j.number(round_for_json(p.x));
+                j.element();
+                j.number(round_for_json(p.y));
+                j.close(']');
+            }
+            j.close(']');
+        }
+        j.close(']');
+    }
+    if (!d.related().empty()) {
+        j.key("related");
+        j.open('[');
+        for (const RelatedLocation& r : d.related()) {
+            j.element();
+            j.open('{');
+            j.integer("end_line", r.end_line);
+            j.integer("line", r.line);
+            j.string("message", related_message(r, lang));
+            j.close('}');
+        }
+        j.close(']');
+    }
+    j.string("severity", severity_name(d.severity));
+    j.close('}');
+}
+
+}  // namespace
+
+void write_diagnostics_json(std::span<const Diagnostic> diagnostics, Lang lang, int indent, int depth,
+                            const std::function<void(std::string_view)>& write) {
+    JsonText j(indent, depth, write);
+    j.open('[');
+    for (const Diagnostic& d : diagnostics) {
+        j.element();
+        diagnostic_json(j, d, lang);
+    }
+    j.close(']');
 }
 
 nlohmann::json stats_report_to_json(std::span<const FileReport> files, std::string_view profile_name) {

@@ -150,7 +150,7 @@ std::vector<Diagnostic> trace_tape(std::string_view bytes, const Profile& profil
     sort_diagnostics(diagnostics);
     for (const auto& d : diagnostics) {
         sink.add("# " + code_name(d.code) + " line " + std::to_string(d.line) + " col " + std::to_string(d.column) +
-                 ": " + d.message);
+                 ": " + diagnostic_message(d, Lang::En));
     }
     sink.flush();
     return diagnostics;

@@ -85,7 +85,7 @@ inline void check_one(std::string_view bytes, const char* name, essi::InputForma
             fail("diagnostics are not sorted by line, column", name);
     }
     for (const auto& d : r.diagnostics)
-        if (d.message.empty()) fail("a diagnostic has no message", name);
+        if (essi::diagnostic_message(d, essi::Lang::En).empty()) fail("a diagnostic has no message", name);
 
     // Every diagnostic points at a line of the tape (the line index counts lines by the reader's rule), with a
     // column; only a tape too large to read has none.

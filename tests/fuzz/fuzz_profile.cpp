@@ -59,7 +59,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (r.profile.has_value() == !r.diagnostics.empty()) fail("a profile and its diagnostics disagree");
     for (const essi::Diagnostic& d : r.diagnostics) {
         if (d.code != essi::DiagCode::E402_BadProfile) fail("a profile diagnostic that is not E402");
-        if (d.message.empty() || d.message.size() > 400) fail("a profile diagnostic without a short message");
+        if (essi::diagnostic_message(d, essi::Lang::En).empty() ||
+            essi::diagnostic_message(d, essi::Lang::En).size() > 400)
+            fail("a profile diagnostic without a short message");
     }
     if (r.profile) check_accepted(*r.profile);
     return 0;

@@ -30,7 +30,9 @@ TEST(HostileInput, AWordOfTwoBillionDigitsIsE104NotAWrongCoordinate) {
     EXPECT_EQ(count_code(r.diagnostics, DiagCode::E104_NumberTooLarge), 1u);
     EXPECT_FALSE(r.ok());
     EXPECT_EQ(r.stats.motions, 0u);
-    for (const essi::Diagnostic& d : r.diagnostics) EXPECT_LT(d.message.size(), 300u) << d.message.substr(0, 300);
+    for (const essi::Diagnostic& d : r.diagnostics)
+        EXPECT_LT(essi::diagnostic_message(d, essi::Lang::En).size(), 300u)
+            << essi::diagnostic_message(d, essi::Lang::En).substr(0, 300);
 
     // The same digits as a leading number: a function code of more than 3 digits (E103, was E105), and its
     // message quotes the start of the number, not 2 GB of it.
@@ -38,7 +40,9 @@ TEST(HostileInput, AWordOfTwoBillionDigitsIsE104NotAWrongCoordinate) {
     const essi::CheckResult f = essi::check_tape(tape, *essi::builtin_profile("iso6582"));
     EXPECT_EQ(count_code(f.diagnostics, DiagCode::E103_FunctionCodeTooLong), 1u);
     EXPECT_EQ(count_code(f.diagnostics, DiagCode::E105_WordCount), 0u);
-    for (const essi::Diagnostic& d : f.diagnostics) EXPECT_LT(d.message.size(), 300u) << d.message.substr(0, 300);
+    for (const essi::Diagnostic& d : f.diagnostics)
+        EXPECT_LT(essi::diagnostic_message(d, essi::Lang::En).size(), 300u)
+            << essi::diagnostic_message(d, essi::Lang::En).substr(0, 300);
 }
 
 // A tape truncated while it is checked: a reader that mapped the file would touch pages that no longer exist and

@@ -41,7 +41,7 @@ essi::Diagnostic diag(essi::Severity s, essi::DiagCode c, std::uint32_t line, st
     d.code = c;
     d.line = line;
     d.column = col;
-    d.message = std::move(msg);
+    d.set_text(std::move(msg));
     return d;
 }
 

@@ -45,15 +45,15 @@ inline void expect_deferred_plan_is_the_same(const std::string& tape, const essi
     for (std::size_t k = 0; k < direct.diagnostics.size(); ++k) {
         const essi::Diagnostic& a = direct.diagnostics[k];
         const essi::Diagnostic& b = later.diagnostics[k];
-        SCOPED_TRACE(a.message);
+        SCOPED_TRACE(essi::diagnostic_message(a, essi::Lang::En));
         EXPECT_EQ(a.code, b.code);
         EXPECT_EQ(a.line, b.line);
         EXPECT_EQ(a.column, b.column);
-        EXPECT_EQ(a.message, b.message);
+        EXPECT_EQ(essi::diagnostic_message(a, essi::Lang::En), essi::diagnostic_message(b, essi::Lang::En));
         EXPECT_EQ(a.contour_first, b.contour_first);
         EXPECT_EQ(a.contour_last, b.contour_last);
-        EXPECT_EQ(a.related.size(), b.related.size());
-        EXPECT_EQ(a.overlap.size(), b.overlap.size());
+        EXPECT_EQ(a.related().size(), b.related().size());
+        EXPECT_EQ(a.overlap().size(), b.overlap().size());
     }
     EXPECT_EQ(later.stats.motions, direct.stats.motions);
 }

@@ -223,10 +223,12 @@ TEST(Convert, HeadTwoKeepsItsAddressInEssiAndIsSaidLeftOutOfEia) {
     o.target = *builtin_profile("woyda");
     const ConvertResult eia = convert_tape(tape, source, o);
     const auto w501 = std::find_if(eia.diagnostics.begin(), eia.diagnostics.end(), [](const Diagnostic& d) {
-        return d.code == DiagCode::W501_NoCounterpart && d.message.find("head 2") != std::string::npos;
+        return d.code == DiagCode::W501_NoCounterpart &&
+               essi::diagnostic_message(d, essi::Lang::En).find("head 2") != std::string::npos;
     });
     ASSERT_NE(w501, eia.diagnostics.end());
-    EXPECT_NE(w501->message.find("head 2's motions"), std::string::npos) << w501->message;
+    EXPECT_NE(essi::diagnostic_message(*w501, essi::Lang::En).find("head 2's motions"), std::string::npos)
+        << essi::diagnostic_message(*w501, essi::Lang::En);
     EXPECT_EQ(eia.text.find("X250"), std::string::npos) << eia.text;  // (head 2's cut is not written as head 1's)
 }
 
@@ -268,7 +270,7 @@ TEST(Convert, IsoProgramEndIsM30InEia) {
     o.target = iso;
     const ConvertResult r = convert_tape("7\n+1000+0\n8\n64\n", setup_of(InputFormat::Essi, iso), o);
     EXPECT_EQ(r.text, "%\nG91\nM70\nG01 X100 Y0\nM71\nM30\n");
-    EXPECT_TRUE(r.diagnostics.empty()) << r.diagnostics.front().message;
+    EXPECT_TRUE(r.diagnostics.empty()) << essi::diagnostic_message(r.diagnostics.front(), essi::Lang::En);
     const CheckResult back = check_tape(r.text, iso, InputFormat::Eia);
-    EXPECT_TRUE(back.diagnostics.empty()) << back.diagnostics.front().message;
+    EXPECT_TRUE(back.diagnostics.empty()) << essi::diagnostic_message(back.diagnostics.front(), essi::Lang::En);
 }

@@ -68,7 +68,8 @@ TEST(DiagnosticCap, KeepsTheFirstOfACodeAndCountsTheRest) {
     EXPECT_EQ(out[0].code, DiagCode::W109_WhitespaceSkipped);
     EXPECT_EQ(out[0].severity, Severity::Warning);
     EXPECT_EQ(out[0].line, 4u);  // the first left out
-    EXPECT_EQ(out[0].message, "12 more W109 diagnostics not listed (at most 2 of a code: --max-per-code)");
+    EXPECT_EQ(essi::diagnostic_message(out[0], essi::Lang::En),
+              "12 more W109 diagnostics not listed (at most 2 of a code: --max-per-code)");
     DiagnosticCap all(0);
     for (int i = 0; i < 5000; ++i) EXPECT_TRUE(all.admit(DiagCode::W109_WhitespaceSkipped, 1, Severity::Warning));
 }
@@ -85,7 +86,8 @@ TEST(DiagnosticCap, PartsCollidingInOnePlaceCostMaxPerCodeFindings) {
     const Diagnostic* s = summary_of(capped, DiagCode::E605_PartsCollide);
     ASSERT_NE(s, nullptr);
     EXPECT_EQ(s->severity, Severity::Error);
-    EXPECT_EQ(s->message, "1670 more E605 diagnostics not listed (at most 100 of a code: --max-per-code)");
+    EXPECT_EQ(essi::diagnostic_message(*s, essi::Lang::En),
+              "1670 more E605 diagnostics not listed (at most 100 of a code: --max-per-code)");
     EXPECT_FALSE(capped.ok());
     // The statistics do not depend on the cap.
     EXPECT_EQ(capped.stats.pierces, all.stats.pierces);
@@ -100,7 +102,8 @@ TEST(DiagnosticCap, TheDefaultIsAThousandOfACode) {
     ASSERT_NE(s, nullptr);
     EXPECT_EQ(s->line, 1001u);
     EXPECT_EQ(s->column, 1u);
-    EXPECT_EQ(s->message, "500 more W109 diagnostics not listed (at most 1000 of a code: --max-per-code)");
+    EXPECT_EQ(essi::diagnostic_message(*s, essi::Lang::En),
+              "500 more W109 diagnostics not listed (at most 1000 of a code: --max-per-code)");
     EXPECT_EQ(diagnostic_message(*s, Lang::De),
               "500 weitere Meldungen W109 nicht aufgeführt (höchstens 1000 je Code: --max-per-code)");
 }
@@ -115,9 +118,10 @@ TEST(DiagnosticCap, ProfileKeyMaxPerCode) {
         const ProfileResult r = parse_profile(bad);
         EXPECT_FALSE(r.profile) << bad;
         ASSERT_FALSE(r.diagnostics.empty()) << bad;
-        EXPECT_NE(r.diagnostics[0].message.find("\"max_per_code\" must be a whole number from 0 to 1000000000"),
+        EXPECT_NE(essi::diagnostic_message(r.diagnostics[0], essi::Lang::En)
+                      .find("\"max_per_code\" must be a whole number from 0 to 1000000000"),
                   std::string::npos)
-            << r.diagnostics[0].message;
+            << essi::diagnostic_message(r.diagnostics[0], essi::Lang::En);
     }
 }
 
@@ -136,7 +140,9 @@ TEST(DiagnosticCap, MaxDiagnosticsWhileCheckingKeepsWhatCuttingAfterwardsKeeps) 
             for (std::size_t i = 0; i < during.diagnostics.size(); ++i) {
                 EXPECT_EQ(during.diagnostics[i].code, after.diagnostics[i].code) << i;
                 EXPECT_EQ(during.diagnostics[i].line, after.diagnostics[i].line) << i;
-                EXPECT_EQ(during.diagnostics[i].message, after.diagnostics[i].message) << i;
+                EXPECT_EQ(essi::diagnostic_message(during.diagnostics[i], essi::Lang::En),
+                          essi::diagnostic_message(after.diagnostics[i], essi::Lang::En))
+                    << i;
             }
             EXPECT_EQ(during.count(Severity::Error), errors);
             EXPECT_EQ(during.count(Severity::Warning), warnings);
@@ -154,7 +160,9 @@ TEST(PlanBounds, PiledContoursAreComparedWithinABudget) {
         if (d.code == DiagCode::N613_PlateTooCrowded) n = &d;
     EXPECT_EQ(n->line, 4u);  // the plate's first cut (its first motion)
     EXPECT_EQ(n->severity, Severity::Note);
-    EXPECT_NE(n->message.find("the search for colliding pairs stopped after"), std::string::npos) << n->message;
+    EXPECT_NE(essi::diagnostic_message(*n, essi::Lang::En).find("the search for colliding pairs stopped after"),
+              std::string::npos)
+        << essi::diagnostic_message(*n, essi::Lang::En);
     EXPECT_EQ(count_code(r, DiagCode::E605_PartsCollide), 1001u);  // (the cap, and its summary)
     // An ordinary number of neighbours: no note.
     EXPECT_EQ(count_code(check_tape(fan_of_parts(30), Profile{}), DiagCode::N613_PlateTooCrowded), 0u);
@@ -174,8 +182,9 @@ TEST(PlanBounds, AHugePlateIsAnalysedInParts) {
         // the feed's line), at its last motion, the line before its `8`.
         const std::size_t last_line = 11 * (kPlanMaxPlateMotions / 4) - 1;
         EXPECT_EQ(d.line, last_line);
-        EXPECT_EQ(d.message, "the plate is analysed in parts of at most 131072 cutting motions: the cuts after line " +
-                                 std::to_string(last_line) + " are not compared with those up to it");
+        EXPECT_EQ(essi::diagnostic_message(d, essi::Lang::En),
+                  "the plate is analysed in parts of at most 131072 cutting motions: the cuts after line " +
+                      std::to_string(last_line) + " are not compared with those up to it");
     }
     EXPECT_TRUE(r.ok());
 }
@@ -198,7 +207,7 @@ TEST(PlanBounds, BigArcsSplitAPlateByItsPoints) {
         if (d.code != DiagCode::N614_PlateSplit) continue;
         const std::size_t last_line = 4 * 511 + 2;  // the circle of the 512th cut (4 lines a cut)
         EXPECT_EQ(d.line, last_line);
-        EXPECT_EQ(d.message,
+        EXPECT_EQ(essi::diagnostic_message(d, essi::Lang::En),
                   "the plate is analysed in parts of at most 524288 points of its contours flattened: the "
                   "cuts after line " +
                       std::to_string(last_line) + " are not compared with those up to it");
@@ -220,7 +229,7 @@ TEST(PlanBounds, ACutOfTooManyPointsIsLeftOut) {
         EXPECT_EQ(d.contour_first, 2u);
         EXPECT_EQ(d.contour_last, 601u);
         EXPECT_EQ(d.severity, Severity::Note);
-        EXPECT_EQ(d.message,
+        EXPECT_EQ(essi::diagnostic_message(d, essi::Lang::En),
                   "the cut of lines 2-601 is more than 524288 points when flattened: the cut plan leaves it "
                   "out (no nesting, collision or crossing tests for it)");
     }
@@ -242,10 +251,11 @@ TEST(PlanBounds, PairsWeighTheirContoursPoints) {
         if (d.code != DiagCode::N613_PlateTooCrowded) continue;
         // "... the search for colliding pairs stopped after N pairs (at most 64 a cut) ..."
         const std::string after = "stopped after ";
-        const std::size_t at = d.message.find(after);
-        ASSERT_NE(at, std::string::npos) << d.message;
-        const std::size_t pairs = std::stoul(d.message.substr(at + after.size()));
+        const std::size_t at = essi::diagnostic_message(d, essi::Lang::En).find(after);
+        ASSERT_NE(at, std::string::npos) << essi::diagnostic_message(d, essi::Lang::En);
+        const std::size_t pairs = std::stoul(essi::diagnostic_message(d, essi::Lang::En).substr(at + after.size()));
         EXPECT_GT(pairs, 0u);
-        EXPECT_LE(pairs, 2 * most_pairs) << d.message;  // (a pair found both ways counts twice)
+        EXPECT_LE(pairs, 2 * most_pairs) << essi::diagnostic_message(
+            d, essi::Lang::En);  // (a pair found both ways counts twice)
     }
 }

@@ -22,7 +22,7 @@ essi::Diagnostic diag(essi::Severity s, std::uint32_t line, std::string message 
     d.code = essi::DiagCode::E605_PartsCollide;
     d.line = line;
     d.column = 1;
-    d.message = std::move(message);
+    d.set_text(std::move(message));
     return d;
 }
 
@@ -90,7 +90,7 @@ TEST(DiagnosticMarks, RangesMerge) {
     essi::Diagnostic d = diag(essi::Severity::Error, 7);
     d.contour_first = 2;
     d.contour_last = 9;
-    d.related.push_back({12, 15, essi::Msg::None, {}});
+    d.add_related({12, 15, essi::Msg::None, {}});
     EXPECT_EQ(essi::concerned_lines(d), (R{{7, 7}, {2, 9}}));
     EXPECT_EQ(essi::related_lines(d), (R{{12, 15}}));
 }
@@ -129,8 +129,8 @@ TEST(RenderMarks, ContourRelatedPlacesAndTheOverlapIntersection) {
     essi::Diagnostic d = diag(essi::Severity::Error, 3, "parts collide");
     d.contour_first = 2;
     d.contour_last = 3;
-    d.related.push_back({5, 5, essi::Msg::RelatedOtherPart, {}});
-    d.overlap = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{5, 5}, {15, 5}, {15, 15}, {5, 15}}};
+    d.add_related({5, 5, essi::Msg::RelatedOtherPart, {}});
+    d.set_overlap({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{5, 5}, {15, 5}, {15, 15}, {5, 15}}});
     const std::string svg = render({d});
     const std::string contour = element_with(svg, "class=\"contour-highlight\"");
     EXPECT_EQ(attr(contour, "data-lines"), "2-3");

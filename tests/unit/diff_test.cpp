@@ -32,7 +32,7 @@ TapeContours contours_of(const std::string& tape) {
 
 TEST(Diff, ContoursAreTheCutsAndMarks) {
     const TapeContours t = contours_of(part(0, 0) + "64\n");
-    ASSERT_TRUE(t.check.diagnostics.empty()) << t.check.diagnostics.front().message;
+    ASSERT_TRUE(t.check.diagnostics.empty()) << essi::diagnostic_message(t.check.diagnostics.front(), essi::Lang::En);
     ASSERT_EQ(t.contours.size(), 2u);
     EXPECT_EQ(t.contours[0].motions, 1u);  // the hole
     EXPECT_NEAR(t.contours[0].length_mm, 2 * 3.14159265358979 * 20, 1e-6);

@@ -101,14 +101,15 @@ TEST(EiaRead, ErrorsNameLineAndColumn) {
     EXPECT_EQ(at(DiagCode::E123_EiaArcWithoutDirection)->line, 4u);
     ASSERT_NE(at(DiagCode::E119_EiaUnknownLetter), nullptr);
     EXPECT_EQ(at(DiagCode::E119_EiaUnknownLetter)->line, 5u);
-    EXPECT_NE(at(DiagCode::E119_EiaUnknownLetter)->message.find("'Q'"), std::string::npos);
+    EXPECT_NE(essi::diagnostic_message(*at(DiagCode::E119_EiaUnknownLetter), essi::Lang::En).find("'Q'"),
+              std::string::npos);
     ASSERT_NE(at(DiagCode::E126_EiaUnclosedComment), nullptr);
     EXPECT_EQ(at(DiagCode::E126_EiaUnclosedComment)->line, 6u);
 }
 
 TEST(EiaRead, DinAllowsSeveralFunctionsAndAnyOrder) {
     const CheckResult r = check_eia("X10 Y0 G01 F600 M03\nM05 M30\n", "din66025");
-    EXPECT_TRUE(r.diagnostics.empty()) << r.diagnostics.front().message;
+    EXPECT_TRUE(r.diagnostics.empty()) << essi::diagnostic_message(r.diagnostics.front(), essi::Lang::En);
     EXPECT_EQ(r.stats.pierces, 1u);
     EXPECT_DOUBLE_EQ(r.stats.cut_length_mm, 10.0);
 }
@@ -122,7 +123,8 @@ TEST(EiaRead, UnknownCodeAndRounding) {
     for (const Diagnostic& d : r.diagnostics)
         if (d.code == DiagCode::W125_EiaRounded) {
             EXPECT_EQ(d.line, 2u);
-            EXPECT_NE(d.message.find("2 coordinates"), std::string::npos) << d.message;
+            EXPECT_NE(essi::diagnostic_message(d, essi::Lang::En).find("2 coordinates"), std::string::npos)
+                << essi::diagnostic_message(d, essi::Lang::En);
         }
 }
 
@@ -173,7 +175,7 @@ TEST(Dialect, ExplicitProfileGetsANoteWhenTheEvidenceDiffers) {
     ASSERT_TRUE(iso.note.has_value());
     EXPECT_EQ(iso.note->code, DiagCode::N403_OtherDialect);
     EXPECT_EQ(iso.note->severity, Severity::Note);
-    EXPECT_NE(iso.note->message.find("--profile woyda"), std::string::npos);
+    EXPECT_NE(essi::diagnostic_message(*iso.note, essi::Lang::En).find("--profile woyda"), std::string::npos);
     EXPECT_FALSE(setup_tape(tape, std::nullopt, builtin("woyda")).note.has_value());
     const TapeSetup chosen = setup_tape(tape, std::nullopt, std::nullopt);
     EXPECT_TRUE(chosen.auto_profile);
@@ -204,7 +206,8 @@ TEST(ProfileEia, BuiltinsParseAndRoundTrip) {
 TEST(ProfileEia, BadEiaKeysNameTheKey) {
     const auto errors = [](const char* json) {
         std::string all;
-        for (const Diagnostic& d : parse_profile(json).diagnostics) all += d.message + "\n";
+        for (const Diagnostic& d : parse_profile(json).diagnostics)
+            all += essi::diagnostic_message(d, essi::Lang::En) + "\n";
         return all;
     };
     EXPECT_NE(errors(R"({"eia": {"codes": [["X70", 7]]}})").find("\"eia.codes\""), std::string::npos);
@@ -221,7 +224,8 @@ TEST(FunctionValues, OutOfRangeIsAnErrorNamingTheRange) {
     ASSERT_EQ(std::count_if(r.diagnostics.begin(), r.diagnostics.end(),
                             [](const Diagnostic& d) { return d.code == DiagCode::E216_FunctionValueRange; }),
               3);
-    EXPECT_NE(r.diagnostics[0].message.find("outside 0 to 3600 s"), std::string::npos) << r.diagnostics[0].message;
+    EXPECT_NE(essi::diagnostic_message(r.diagnostics[0], essi::Lang::En).find("outside 0 to 3600 s"), std::string::npos)
+        << essi::diagnostic_message(r.diagnostics[0], essi::Lang::En);
     EXPECT_DOUBLE_EQ(r.stats.estimated_time_s,
                      10.0 / 1000.0 * 60.0 + 2.0);  // none of them took effect (10 mm at the profile feed)
 }

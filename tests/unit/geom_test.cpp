@@ -231,8 +231,10 @@ TEST(GeomArc, EndBeyondToleranceE301NamesBothRadii) {
     ASSERT_NE(d, nullptr) << r.dump();
     EXPECT_EQ(d->severity, Severity::Error);
     EXPECT_EQ(d->line, 2u);
-    EXPECT_NE(d->message.find("12.5"), std::string::npos) << d->message;
-    EXPECT_NE(d->message.find("12.8"), std::string::npos) << d->message;
+    EXPECT_NE(essi::diagnostic_message(*d, essi::Lang::En).find("12.5"), std::string::npos)
+        << essi::diagnostic_message(*d, essi::Lang::En);
+    EXPECT_NE(essi::diagnostic_message(*d, essi::Lang::En).find("12.8"), std::string::npos)
+        << essi::diagnostic_message(*d, essi::Lang::En);
 }
 
 TEST(GeomArc, ToleranceIsAProfileSetting) {

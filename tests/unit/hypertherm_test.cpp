@@ -68,8 +68,9 @@ TEST(Hypertherm, MarkerOffsetsOneToEight) {
     EXPECT_FALSE(has(check_tape("11+8\n12+8\n64\n", hypertherm()), DiagCode::E216_FunctionValueRange));
     const CheckResult nine = check_tape("11+9\n64\n", hypertherm());
     ASSERT_TRUE(has(nine, DiagCode::E216_FunctionValueRange));
-    EXPECT_NE(nine.diagnostics.front().message.find("outside 1 to 8"), std::string::npos)
-        << nine.diagnostics.front().message;
+    EXPECT_NE(essi::diagnostic_message(nine.diagnostics.front(), essi::Lang::En).find("outside 1 to 8"),
+              std::string::npos)
+        << essi::diagnostic_message(nine.diagnostics.front(), essi::Lang::En);
 }
 
 TEST(Hypertherm, DwellValueInMilliseconds) {
@@ -83,8 +84,9 @@ TEST(Hypertherm, DwellValueInMilliseconds) {
     EXPECT_FALSE(has(check_tape("41+3600000\n64\n", hypertherm()), DiagCode::E216_FunctionValueRange));
     const CheckResult over = check_tape("41+3600001\n64\n", hypertherm());
     ASSERT_TRUE(has(over, DiagCode::E216_FunctionValueRange));
-    EXPECT_NE(over.diagnostics.front().message.find("(3600.001 s at 0.001 s a unit)"), std::string::npos)
-        << over.diagnostics.front().message;
+    EXPECT_NE(essi::diagnostic_message(over.diagnostics.front(), essi::Lang::En).find("(3600.001 s at 0.001 s a unit)"),
+              std::string::npos)
+        << essi::diagnostic_message(over.diagnostics.front(), essi::Lang::En);
     // iso6582: seconds
     EXPECT_DOUBLE_EQ(
         essi_test::run("41+2\n64\n", *builtin_profile("iso6582")).sink.events_of(EventKind::Dwell)[0].value, 2.0);
@@ -182,11 +184,13 @@ TEST(Hypertherm, ProfileCodesTakeAValueAndRoundTrip) {
         const ProfileResult r = parse_profile(std::string(R"({"eia": {"codes": )") + bad + "}}");
         EXPECT_FALSE(r.profile.has_value());
         ASSERT_FALSE(r.diagnostics.empty());
-        EXPECT_NE(r.diagnostics.front().message.find("eia.codes"), std::string::npos) << r.diagnostics.front().message;
+        EXPECT_NE(essi::diagnostic_message(r.diagnostics.front(), essi::Lang::En).find("eia.codes"), std::string::npos)
+            << essi::diagnostic_message(r.diagnostics.front(), essi::Lang::En);
     }
     const ProfileResult unit = parse_profile(R"({"dwell_unit_s": 0})");
     ASSERT_FALSE(unit.profile.has_value());
-    EXPECT_NE(unit.diagnostics.front().message.find("dwell_unit_s"), std::string::npos);
+    EXPECT_NE(essi::diagnostic_message(unit.diagnostics.front(), essi::Lang::En).find("dwell_unit_s"),
+              std::string::npos);
 }
 
 TEST(Hypertherm, ConversionWritesTheTargetsDwellUnit) {

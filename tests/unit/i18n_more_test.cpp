@@ -154,11 +154,10 @@ TEST(I18nMore, DialectEvidenceAndN403InEachLanguage) {
     // N403: the evidence is an argument of the note, in the reader's language too.
     const essi::TapeSetup iso = essi::setup_tape(tape, std::nullopt, essi::builtin_profile("iso6582"));
     ASSERT_TRUE(iso.note.has_value());
-    EXPECT_EQ(iso.note->message,
+    EXPECT_EQ(essi::diagnostic_message(*iso.note, essi::Lang::En),
               "this tape looks like woyda (woyda: `135+2` sets the burner count at line 4; woyda: `136+6000` sets the "
               "burner spacing at line 5; woyda: `/` ends the program at line 9), not iso6582; try --profile woyda or "
               "--profile auto");
-    EXPECT_EQ(essi::diagnostic_message(*iso.note, Lang::En), iso.note->message);
     EXPECT_EQ(essi::diagnostic_message(*iso.note, Lang::De),
               "dieses Programm sieht nach woyda aus (woyda: `135+2` setzt die Anzahl Brenner in Zeile 4; woyda: "
               "`136+6000` setzt den Brennerabstand in Zeile 5; woyda: `/` beendet das Programm in Zeile 9), nicht nach "
@@ -175,33 +174,34 @@ TEST(I18nMore, ProfileErrorsInEachLanguage) {
     ASSERT_EQ(r.diagnostics.size(), 5u);
     for (const essi::Diagnostic& d : r.diagnostics) {
         EXPECT_EQ(d.code, essi::DiagCode::E402_BadProfile);
-        EXPECT_EQ(d.line, 1u);                     // at its key
-        EXPECT_NE(d.msg, Msg::None) << d.message;  // (made from the catalogue: any language)
-        EXPECT_EQ(essi::diagnostic_message(d, Lang::En), d.message);
+        EXPECT_EQ(d.line, 1u);  // at its key
+        EXPECT_NE(d.msg, Msg::None) << essi::diagnostic_message(d,
+                                                                Lang::En);  // (made from the catalogue: any language)
     }
-    EXPECT_EQ(r.diagnostics[0].message, "\"kerf\" must be a number");
+    EXPECT_EQ(essi::diagnostic_message(r.diagnostics[0], Lang::En), "\"kerf\" must be a number");
     EXPECT_EQ(r.diagnostics[0].column, 24u);
     EXPECT_EQ(r.diagnostics[1].column, 2u);
-    EXPECT_EQ(r.diagnostics[1].message, "\"feed_mm_min\" must be between 1e-09 and 1000000000; found 1e+300");
+    EXPECT_EQ(essi::diagnostic_message(r.diagnostics[1], essi::Lang::En),
+              "\"feed_mm_min\" must be between 1e-09 and 1000000000; found 1e+300");
     EXPECT_EQ(essi::diagnostic_message(r.diagnostics[1], Lang::De),
               "\"feed_mm_min\" muss zwischen 1e-09 und 1000000000 liegen; gefunden: 1e+300");
     EXPECT_EQ(essi::diagnostic_message(r.diagnostics[1], Lang::Zh),
               "\"feed_mm_min\" 必须在 1e-09 到 1000000000 之间;实际为 1e+300");
-    EXPECT_EQ(r.diagnostics[2].message,
+    EXPECT_EQ(essi::diagnostic_message(r.diagnostics[2], essi::Lang::En),
               "\"zero_offsets\" entry \"G55\" needs a number \"y_mm\" between -1000000000 and 1000000000");
     EXPECT_EQ(essi::diagnostic_message(r.diagnostics[2], Lang::De),
               "Eintrag \"G55\" von \"zero_offsets\" braucht eine Zahl \"y_mm\" zwischen -1000000000 und 1000000000");
     EXPECT_EQ(essi::diagnostic_message(r.diagnostics[2], Lang::Zh),
               "\"zero_offsets\" 的条目 \"G55\" 需要 -1000000000 到 1000000000 之间的数值 \"y_mm\"");
-    EXPECT_EQ(r.diagnostics[3].message, "\"eia.strict_order\" must be true or false");
+    EXPECT_EQ(essi::diagnostic_message(r.diagnostics[3], essi::Lang::En), "\"eia.strict_order\" must be true or false");
     EXPECT_EQ(essi::diagnostic_message(r.diagnostics[3], Lang::Zh), "\"eia.strict_order\" 必须是 true 或 false");
-    EXPECT_EQ(r.diagnostics[4].message, "unknown key \"colour\"");
+    EXPECT_EQ(essi::diagnostic_message(r.diagnostics[4], essi::Lang::En), "unknown key \"colour\"");
     EXPECT_EQ(essi::diagnostic_message(r.diagnostics[4], Lang::De), "unbekannter Schlüssel \"colour\"");
 
     const essi::ProfileResult not_json = essi::parse_profile("{");
     ASSERT_EQ(not_json.diagnostics.size(), 1u);
     EXPECT_EQ(
-        not_json.diagnostics[0].message,
+        essi::diagnostic_message(not_json.diagnostics[0], essi::Lang::En),
         "the text is not valid JSON at line 1, column 2 (syntax error while parsing object key - unexpected end "
         "of input; expected string literal); expected an object such as {\"base\": \"woyda\", \"feed_mm_min\": 1200}");
     EXPECT_EQ(essi::diagnostic_message(not_json.diagnostics[0], Lang::Zh),
@@ -210,7 +210,7 @@ TEST(I18nMore, ProfileErrorsInEachLanguage) {
     // A number beyond a double: where it is, and why.
     const essi::ProfileResult huge = essi::parse_profile("{\"name\": \"x\",\n  \"unit_mm\": 1e999}");
     ASSERT_EQ(huge.diagnostics.size(), 1u);
-    EXPECT_EQ(huge.diagnostics[0].message,
+    EXPECT_EQ(essi::diagnostic_message(huge.diagnostics[0], essi::Lang::En),
               "the text is not valid JSON at line 2, column 14 (number overflow parsing '1e999'); expected an object "
               "such as {\"base\": \"woyda\", \"feed_mm_min\": 1200}");
     const essi::ProfileResult base = essi::parse_profile(R"({"base": "nope"})");

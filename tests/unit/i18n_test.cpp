@@ -61,14 +61,13 @@ TEST(I18n, LanguageFromTagsAndTheEnvironment) {
     EXPECT_EQ(essi::lang_from_environment(nullptr, nullptr, nullptr), Lang::En);
 }
 
-// A tape's diagnostics, read once, shown in each language: the English one is the message as made.
+// A tape's diagnostics, read once, shown in each language.
 TEST(I18n, DiagnosticsOfATapeInEachLanguage) {
     const essi::CheckResult r = essi::check_tape("7\n+100+0\n+0+1x\n+1+2+3\n8\n", *essi::builtin_profile("woyda"));
     ASSERT_EQ(r.diagnostics.size(), 3u);
     const essi::Diagnostic& bad_char = r.diagnostics[0];
     EXPECT_EQ(bad_char.code, essi::DiagCode::E101_InvalidCharacter);
-    EXPECT_EQ(essi::diagnostic_message(bad_char, Lang::En), bad_char.message);
-    EXPECT_EQ(bad_char.message, "unexpected 'x' (0x78); expected + - or a digit");
+    EXPECT_EQ(essi::diagnostic_message(bad_char, Lang::En), "unexpected 'x' (0x78); expected + - or a digit");
     EXPECT_EQ(essi::diagnostic_message(bad_char, Lang::De),
               "unerwartetes Zeichen 'x' (0x78); erwartet: + - oder eine Ziffer");
     EXPECT_EQ(essi::diagnostic_message(bad_char, Lang::Zh), "意外的字符 'x'(0x78);应为 + - 或数字");
@@ -82,6 +81,45 @@ TEST(I18n, DiagnosticsOfATapeInEachLanguage) {
     EXPECT_EQ(essi::diagnostic_message(no_end, Lang::Zh), "控制带结束时没有程序结束;最后一个程序块应为 63、64 或 /");
     EXPECT_EQ(essi::diagnostic_line("t.esi", bad_char, Lang::De),
               "t.esi:3:5: Fehler E101: unerwartetes Zeichen 'x' (0x78); erwartet: + - oder eine Ziffer");
+}
+
+// A diagnostic made from the catalogue keeps the row and its arguments, no sentence: its text in each language is
+// made when asked, the same in a copy, and its other places go with it.
+TEST(I18n, CatalogueDiagnosticIsWordedWhenShown) {
+    essi::Diagnostic d =
+        essi::make_diagnostic(essi::Severity::Error, essi::DiagCode::E602_KerfIntoPart, 7, 0, Msg::PlanKerfInsidePart,
+                              {Msg::PlanSideLeft, Msg::PlanClockwise, Msg::PlanSideRight});
+    d.add_related({9, 12, Msg::RelatedOtherPart, {}});
+    EXPECT_EQ(d.msg, Msg::PlanKerfInsidePart);
+    const essi::Diagnostic copy = d;
+    for (const Lang lang : essi::kLanguages) {
+        const std::string text = essi::format_message(Msg::PlanKerfInsidePart, lang,
+                                                      {Msg::PlanSideLeft, Msg::PlanClockwise, Msg::PlanSideRight});
+        EXPECT_EQ(essi::diagnostic_message(d, lang), text);
+        EXPECT_EQ(essi::diagnostic_message(copy, lang), text);
+    }
+    EXPECT_NE(essi::diagnostic_message(d, Lang::En).find("inside this part (left (29), travelling clockwise)"),
+              std::string::npos)
+        << essi::diagnostic_message(d, Lang::En);
+    EXPECT_NE(essi::diagnostic_message(d, Lang::De).find("links (29)"), std::string::npos);
+    EXPECT_NE(essi::diagnostic_message(d, Lang::Zh).find("左侧(29)"), std::string::npos);
+    ASSERT_EQ(copy.related().size(), 1u);
+    EXPECT_EQ(copy.related()[0].end_line, 12u);
+    EXPECT_EQ(essi::related_message(copy.related()[0], Lang::De), "das andere Teil");
+    EXPECT_TRUE(copy.overlap().empty());
+}
+
+// A diagnostic given a text of its own keeps it as it is, in every language (no template, no escaping).
+TEST(I18n, FreeTextDiagnosticKeepsItsText) {
+    essi::Diagnostic d =
+        essi::make_diagnostic(essi::Severity::Warning, essi::DiagCode::W201_UnknownFunction, 3, 1, Msg::PlanSideLeft);
+    const std::string text = "a text of its own: {0} {1|one|other} \x1f \"quoted\"";
+    d.set_text(text);
+    EXPECT_EQ(d.msg, Msg::None);
+    for (const Lang lang : essi::kLanguages) EXPECT_EQ(essi::diagnostic_message(d, lang), text);
+    const essi::Diagnostic copy = d;
+    EXPECT_EQ(essi::diagnostic_message(copy, Lang::Zh), text);
+    EXPECT_EQ(essi::diagnostic_line("t.esi", copy, Lang::En), "t.esi:3:1: warning W201: " + text);
 }
 
 TEST(I18n, CodeSummariesInEachLanguage) {

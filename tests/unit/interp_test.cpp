@@ -511,7 +511,8 @@ TEST(InterpFunctions, UnknownW201NamesTheCode) {
         ASSERT_NE(d, nullptr) << code << r.dump();
         EXPECT_EQ(d->severity, Severity::Warning);
         EXPECT_EQ(d->line, 1u);
-        EXPECT_NE(d->message.find(std::to_string(code)), std::string::npos) << d->message;
+        EXPECT_NE(essi::diagnostic_message(*d, essi::Lang::En).find(std::to_string(code)), std::string::npos)
+            << essi::diagnostic_message(*d, essi::Lang::En);
     }
 }
 

@@ -217,7 +217,8 @@ TEST_P(ProfileErrorFile, GivesTheseE402) {
     std::vector<std::string> got;
     for (const essi::Diagnostic& d : r.diagnostics) {
         EXPECT_EQ(d.code, essi::DiagCode::E402_BadProfile);
-        got.push_back(std::to_string(d.line) + ":" + std::to_string(d.column) + ": " + d.message);
+        got.push_back(std::to_string(d.line) + ":" + std::to_string(d.column) + ": " +
+                      essi::diagnostic_message(d, essi::Lang::En));
     }
     EXPECT_EQ(got, expected_lines(base + ".expected"));
 }

@@ -18,7 +18,7 @@ std::string first_errors(const essi::CheckResult& r, std::size_t max = 5) {
     for (const auto& d : r.diagnostics) {
         if (d.severity != essi::Severity::Error) continue;
         s += essi::code_name(d.code) + " line " + std::to_string(d.line) + ":" + std::to_string(d.column) + " " +
-             d.message + "\n";
+             essi::diagnostic_message(d, essi::Lang::En) + "\n";
         if (--max == 0) break;
     }
     return s;

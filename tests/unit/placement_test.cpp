@@ -94,8 +94,9 @@ TEST(Placement, LeavingTheTableIsE401ThroughEveryLink) {
     // 11 at (0,0): the carriage goes to (10-50, 10): off the table at the 11
     const CheckResult marker = check_tape("11\n9\n+1000+0\n10\n12\n64\n", p);
     EXPECT_TRUE(has(marker, DiagCode::E401_LeavesTable, 1));
-    EXPECT_NE(marker.diagnostics.front().message.find("tool offset"), std::string::npos)
-        << marker.diagnostics.front().message;
+    EXPECT_NE(essi::diagnostic_message(marker.diagnostics.front(), essi::Lang::En).find("tool offset"),
+              std::string::npos)
+        << essi::diagnostic_message(marker.diagnostics.front(), essi::Lang::En);
 }
 
 TEST(Placement, TraceMachinePlacesEveryRecord) {

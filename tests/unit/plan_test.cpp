@@ -177,13 +177,15 @@ TEST(CutPlanRules, GapWithItsSizeAndPlace) {
     ASSERT_EQ(d.size(), 1u) << codes_of(d);
     EXPECT_EQ(d[0].code, DiagCode::W601_ContourGap);
     EXPECT_EQ(d[0].line, 11u);
-    EXPECT_NE(d[0].message.find("stops 2.000 mm short"), std::string::npos) << d[0].message;
-    EXPECT_NE(d[0].message.find("began at line 8"), std::string::npos) << d[0].message;
+    EXPECT_NE(essi::diagnostic_message(d[0], essi::Lang::En).find("stops 2.000 mm short"), std::string::npos)
+        << essi::diagnostic_message(d[0], essi::Lang::En);
+    EXPECT_NE(essi::diagnostic_message(d[0], essi::Lang::En).find("began at line 8"), std::string::npos)
+        << essi::diagnostic_message(d[0], essi::Lang::En);
     ASSERT_TRUE(d[0].has_at);
     EXPECT_DOUBLE_EQ(d[0].at.x, 61);  // halfway across the gap
     EXPECT_DOUBLE_EQ(d[0].at.y, 50);
-    ASSERT_EQ(d[0].related.size(), 1u);
-    EXPECT_EQ(d[0].related[0].line, 8u);
+    ASSERT_EQ(d[0].related().size(), 1u);
+    EXPECT_EQ(d[0].related()[0].line, 8u);
     EXPECT_EQ(d[0].contour_first, 7u);
     EXPECT_EQ(d[0].contour_last, 11u);
     // A gap over closure_gap_mm is an open cut, not a contour left open.
@@ -203,13 +205,15 @@ TEST(CutPlanRules, KerfSideOfPartsHolesAndLoneContours) {
     ASSERT_EQ(d.size(), 3u) << codes_of(d);
     EXPECT_EQ(d[0].code, DiagCode::E602_KerfIntoPart);
     EXPECT_EQ(d[0].severity, essi::Severity::Error);
-    EXPECT_EQ(d[0].message,
+    EXPECT_EQ(essi::diagnostic_message(d[0], essi::Lang::En),
               "the kerf is outside this hole (right (30), travelling counter-clockwise): the hole comes out a kerf too "
               "small; travelling counter-clockwise, a hole's kerf belongs on the left (29)");
     EXPECT_EQ(d[1].code, DiagCode::E602_KerfIntoPart);
-    EXPECT_NE(d[1].message.find("inside this part (right (30), travelling clockwise)"), std::string::npos)
-        << d[1].message;
-    EXPECT_NE(d[1].message.find("belongs on the left (29)"), std::string::npos);
+    EXPECT_NE(
+        essi::diagnostic_message(d[1], essi::Lang::En).find("inside this part (right (30), travelling clockwise)"),
+        std::string::npos)
+        << essi::diagnostic_message(d[1], essi::Lang::En);
+    EXPECT_NE(essi::diagnostic_message(d[1], essi::Lang::En).find("belongs on the left (29)"), std::string::npos);
     EXPECT_EQ(d[2].code, DiagCode::N603_KerfInsideLoneContour);
     EXPECT_EQ(d[2].severity, essi::Severity::Note);
     EXPECT_EQ(
@@ -227,12 +231,14 @@ TEST(CutPlanRules, PartBeforeItsHolesNamesThem) {
     ASSERT_EQ(d.size(), 1u) << codes_of(d);
     EXPECT_EQ(d[0].code, DiagCode::W604_CutBeforeInside);
     EXPECT_EQ(d[0].line, 7u);  // the part's lead-in: lines 7-12
-    ASSERT_EQ(d[0].related.size(), 2u);
-    EXPECT_EQ(d[0].related[0].line, 20u);
-    EXPECT_EQ(d[0].related[1].line, 29u);
-    EXPECT_EQ(essi::related_message(d[0].related[0], essi::Lang::En), "a hole cut after its part");
-    EXPECT_NE(d[0].message.find("before 2 holes inside it (the first at lines 20-21)"), std::string::npos)
-        << d[0].message;
+    ASSERT_EQ(d[0].related().size(), 2u);
+    EXPECT_EQ(d[0].related()[0].line, 20u);
+    EXPECT_EQ(d[0].related()[1].line, 29u);
+    EXPECT_EQ(essi::related_message(d[0].related()[0], essi::Lang::En), "a hole cut after its part");
+    EXPECT_NE(
+        essi::diagnostic_message(d[0], essi::Lang::En).find("before 2 holes inside it (the first at lines 20-21)"),
+        std::string::npos)
+        << essi::diagnostic_message(d[0], essi::Lang::En);
     // Holes first: nothing to say.
     Tape good;
     good.hole(110, 100, 20).hole(210, 100, 20).part_cw(60, 50, 260, 150);
@@ -247,17 +253,18 @@ TEST(CutPlanRules, CollisionsOverlapAndTooClose) {
     const auto d = plan_of(check(t.end()));
     ASSERT_EQ(d.size(), 2u) << codes_of(d);
     EXPECT_EQ(d[0].code, DiagCode::E605_PartsCollide);
-    EXPECT_NE(d[0].message.find("overlaps the part at lines 7-12"), std::string::npos) << d[0].message;
-    ASSERT_EQ(d[0].overlap.size(), 2u);  // the two rectangles: their intersection is the overlap
-    EXPECT_EQ(d[0].overlap[0].size(), 5u);
-    ASSERT_EQ(d[0].related.size(), 1u);
-    EXPECT_EQ(d[0].related[0].line, 7u);
+    EXPECT_NE(essi::diagnostic_message(d[0], essi::Lang::En).find("overlaps the part at lines 7-12"), std::string::npos)
+        << essi::diagnostic_message(d[0], essi::Lang::En);
+    ASSERT_EQ(d[0].overlap().size(), 2u);  // the two rectangles: their intersection is the overlap
+    EXPECT_EQ(d[0].overlap()[0].size(), 5u);
+    ASSERT_EQ(d[0].related().size(), 1u);
+    EXPECT_EQ(d[0].related()[0].line, 7u);
     EXPECT_EQ(d[1].code, DiagCode::E605_PartsCollide);
-    EXPECT_NE(
-        d[1].message.find("comes within 1.000 mm of the part at lines 20-25, closer than the kerf width (2.000 mm)"),
-        std::string::npos)
-        << d[1].message;
-    EXPECT_TRUE(d[1].overlap.empty());
+    EXPECT_NE(essi::diagnostic_message(d[1], essi::Lang::En)
+                  .find("comes within 1.000 mm of the part at lines 20-25, closer than the kerf width (2.000 mm)"),
+              std::string::npos)
+        << essi::diagnostic_message(d[1], essi::Lang::En);
+    EXPECT_TRUE(d[1].overlap().empty());
     // Without compensation only a real overlap counts, and the roles are unknown: a note.
     Tape plain;
     plain.part_cw(60, 50, 260, 150, "38").part_cw(240, 50, 440, 150, "38", 5).part_cw(441, 50, 641, 150, "38", 0.5);
@@ -285,8 +292,8 @@ TEST(CutPlanRules, ACrowdedColumnAndARowGiveTheSameFindings) {
         const auto d = plan_of(check(t.end()));
         ASSERT_EQ(d.size(), 1u) << codes_of(d);
         EXPECT_EQ(d[0].code, DiagCode::E605_PartsCollide);
-        ASSERT_EQ(d[0].related.size(), 1u);
-        EXPECT_EQ(d[0].related[0].line,
+        ASSERT_EQ(d[0].related().size(), 1u);
+        EXPECT_EQ(d[0].related()[0].line,
                   2 + 30 * 13 + 5u);  // (part 30's first cut: 30 parts of 13 lines and the feed before it)
     }
 }
@@ -315,7 +322,7 @@ TEST(CutPlanRules, SamePathTwiceButNotOnAnotherPlate) {
     const auto d = plan_of(check(twice.end()));
     ASSERT_EQ(d.size(), 1u) << codes_of(d);
     EXPECT_EQ(d[0].code, DiagCode::W607_SamePathTwice);
-    EXPECT_EQ(d[0].related[0].line, 7u);
+    EXPECT_EQ(d[0].related()[0].line, 7u);
     // The same part on the next plate (home, stop 0 between them): nothing.
     Tape plates;
     plates.part_cw(60, 50, 260, 150).next_plate().part_cw(60, 50, 260, 150);
@@ -337,17 +344,17 @@ TEST(CutPlanRules, FeedDwellLeadInAndTableFromTheProfile) {
     const auto d = plan_of(check(t.end(), p));
     ASSERT_EQ(d.size(), 4u) << codes_of(d);
     EXPECT_EQ(d[0].code, DiagCode::W609_DwellTooLong);  // line 7
-    EXPECT_EQ(d[0].message,
+    EXPECT_EQ(essi::diagnostic_message(d[0], essi::Lang::En),
               "a dwell of 600 s, longer than the profile's max_dwell_s (120 s); check the dwell's value and unit");
     EXPECT_EQ(d[1].code, DiagCode::W608_FeedOutOfRange);  // once, at the first cut at 30 mm/min (line 9)
     EXPECT_EQ(d[1].line, 9u);
-    ASSERT_EQ(d[1].related.size(), 1u);
-    EXPECT_EQ(d[1].related[0].line, 2u);                      // where 39+30 is
+    ASSERT_EQ(d[1].related().size(), 1u);
+    EXPECT_EQ(d[1].related()[0].line, 2u);                    // where 39+30 is
     EXPECT_EQ(d[2].code, DiagCode::W611_CutLargerThanTable);  // the first cut, 200 mm on a 150 mm table
-    EXPECT_NE(
-        d[2].message.find("this cut is 200.000 x 100.000 mm, larger than the table's travel (150.000 x 1000.000 mm)"),
-        std::string::npos)
-        << d[2].message;
+    EXPECT_NE(essi::diagnostic_message(d[2], essi::Lang::En)
+                  .find("this cut is 200.000 x 100.000 mm, larger than the table's travel (150.000 x 1000.000 mm)"),
+              std::string::npos)
+        << essi::diagnostic_message(d[2], essi::Lang::En);
     EXPECT_EQ(d[3].code, DiagCode::W610_PierceWithoutLeadIn);  // the second part (110 mm wide) fits and has a lead-in
     // The defaults: no lead-in asked for, no table.
     const auto defaults = plan_of(check(t.end()));
@@ -379,12 +386,13 @@ TEST(CutPlanRules, AHoleInThePlateOverAPartWhicheverIsCutFirst) {
         for (const Diagnostic& x : d) {
             if (x.code != DiagCode::E605_PartsCollide) continue;
             ++collisions;
-            EXPECT_NE(x.message.find(hole_first ? "this part overlaps the hole in the plate at lines 7-8"
-                                                : "this hole in the plate (a lone contour with its kerf inside) "
-                                                  "overlaps the part at lines 7-12"),
+            EXPECT_NE(essi::diagnostic_message(x, essi::Lang::En)
+                          .find(hole_first ? "this part overlaps the hole in the plate at lines 7-8"
+                                           : "this hole in the plate (a lone contour with its kerf inside) "
+                                             "overlaps the part at lines 7-12"),
                       std::string::npos)
-                << x.message;
-            EXPECT_EQ(x.overlap.size(), 2u);
+                << essi::diagnostic_message(x, essi::Lang::En);
+            EXPECT_EQ(x.overlap().size(), 2u);
         }
         EXPECT_EQ(collisions, 1u) << codes_of(d);
     }
@@ -412,9 +420,10 @@ TEST(CutPlanRules, PartsWithoutCompensationThatTouch) {
     const auto d = plan_of(check(t.end()));
     ASSERT_EQ(d.size(), 1u) << codes_of(d);
     EXPECT_EQ(d[0].code, DiagCode::E605_PartsCollide);
-    EXPECT_NE(d[0].message.find("this part touches or overlaps the part at lines 16-21: neither has kerf compensation"),
+    EXPECT_NE(essi::diagnostic_message(d[0], essi::Lang::En)
+                  .find("this part touches or overlaps the part at lines 16-21: neither has kerf compensation"),
               std::string::npos)
-        << d[0].message;
+        << essi::diagnostic_message(d[0], essi::Lang::En);
 }
 
 TEST(CutPlanRules, TheHeadsOfAThreeAxisTapeAreComparedApart) {

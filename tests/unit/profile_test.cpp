@@ -140,7 +140,7 @@ TEST(ProfileParse, MalformedJsonE402NeverThrows) {
             EXPECT_EQ(d.severity, Severity::Error) << text;
             EXPECT_EQ(d.line, key ? 1u : 0u) << text;
             EXPECT_EQ(d.column, key ? 2u : 0u) << text;
-            EXPECT_FALSE(d.message.empty()) << text;
+            EXPECT_FALSE(essi::diagnostic_message(d, essi::Lang::En).empty()) << text;
         }
     }
 }
@@ -170,7 +170,8 @@ TEST(ProfileParse, ValuesBeyondTheirRangeAreErrorsNamingKeyAndRange) {
         const ProfileResult r = parse_profile(c.json);
         EXPECT_FALSE(r.profile.has_value()) << c.json;
         ASSERT_EQ(r.diagnostics.size(), 1u) << c.json;
-        EXPECT_NE(r.diagnostics[0].message.find(c.key), std::string::npos) << r.diagnostics[0].message;
+        EXPECT_NE(essi::diagnostic_message(r.diagnostics[0], essi::Lang::En).find(c.key), std::string::npos)
+            << essi::diagnostic_message(r.diagnostics[0], essi::Lang::En);
     }
     // The largest allowed values still give finite numbers.
     const ProfileResult big = parse_profile(R"({"unit_mm": 1000, "feed_mm_min": 1e9})");
@@ -184,8 +185,8 @@ TEST(ProfileParse, AnUnknownKeyIsQuotedShort) {
     const std::string key(100000, 'k');
     const ProfileResult r = parse_profile("{\"" + key + "\": 1}");
     ASSERT_EQ(r.diagnostics.size(), 1u);
-    EXPECT_LT(r.diagnostics[0].message.size(), 100u);
-    EXPECT_NE(r.diagnostics[0].message.find("unknown key \"kkkk"), std::string::npos);
+    EXPECT_LT(essi::diagnostic_message(r.diagnostics[0], essi::Lang::En).size(), 100u);
+    EXPECT_NE(essi::diagnostic_message(r.diagnostics[0], essi::Lang::En).find("unknown key \"kkkk"), std::string::npos);
 }
 
 TEST(ProfileParse, SettingsTakeEffect) {

@@ -59,18 +59,20 @@ TEST(Quoting, AQuoteStopsAtItsWord) {
         if (d.code == DiagCode::W124_EiaUnknownCode) w124 = &d;
     ASSERT_NE(w124, nullptr);
     EXPECT_EQ(w124->line, 4u);
-    EXPECT_EQ(w124->message, "G-1 is not a G code; it is ignored");
+    EXPECT_EQ(essi::diagnostic_message(*w124, essi::Lang::En), "G-1 is not a G code; it is ignored");
     const CheckResult e122 = check_tape("%\nX12345678901234\x1b[2J\nM30\n", din, InputFormat::Eia);
     ASSERT_FALSE(e122.diagnostics.empty());
     EXPECT_EQ(e122.diagnostics[0].code, DiagCode::E122_EiaBadNumber);
-    EXPECT_EQ(e122.diagnostics[0].message.find('\x1b'), std::string::npos) << e122.diagnostics[0].message;
-    EXPECT_NE(e122.diagnostics[0].message.find("12345678901234"), std::string::npos) << e122.diagnostics[0].message;
+    EXPECT_EQ(essi::diagnostic_message(e122.diagnostics[0], essi::Lang::En).find('\x1b'), std::string::npos)
+        << essi::diagnostic_message(e122.diagnostics[0], essi::Lang::En);
+    EXPECT_NE(essi::diagnostic_message(e122.diagnostics[0], essi::Lang::En).find("12345678901234"), std::string::npos)
+        << essi::diagnostic_message(e122.diagnostics[0], essi::Lang::En);
 }
 
 TEST(Quoting, MessageArgumentsAreMadeSafe) {
     const Diagnostic d = make_diagnostic(Severity::Error, DiagCode::E402_BadProfile, 0, 0, Msg::ProfileUnknownKey,
                                          {std::string("a\x1b[31m\xff\nb")});
-    EXPECT_EQ(d.message, "unknown key \"a\\x1B[31m\\xFF\\x0Ab\"");
+    EXPECT_EQ(essi::diagnostic_message(d, essi::Lang::En), "unknown key \"a\\x1B[31m\\xFF\\x0Ab\"");
     EXPECT_EQ(diagnostic_message(d, Lang::Zh), "未知的键 \"a\\x1B[31m\\xFF\\x0Ab\"");
 }
 
@@ -83,9 +85,11 @@ TEST(Quoting, AProfileNameIsPrintableAndShort) {
         const ProfileResult r = parse_profile(bad);
         EXPECT_FALSE(r.profile) << bad;
         ASSERT_EQ(r.diagnostics.size(), 1u) << bad;
-        EXPECT_NE(r.diagnostics[0].message.find("\"name\" must be 1 to 64 bytes of printable UTF-8 text"),
+        EXPECT_NE(essi::diagnostic_message(r.diagnostics[0], essi::Lang::En)
+                      .find("\"name\" must be 1 to 64 bytes of printable UTF-8 text"),
                   std::string::npos)
-            << r.diagnostics[0].message;
-        EXPECT_EQ(display_text(r.diagnostics[0].message), r.diagnostics[0].message);
+            << essi::diagnostic_message(r.diagnostics[0], essi::Lang::En);
+        EXPECT_EQ(display_text(essi::diagnostic_message(r.diagnostics[0], essi::Lang::En)),
+                  essi::diagnostic_message(r.diagnostics[0], essi::Lang::En));
     }
 }

@@ -63,7 +63,8 @@ TEST(ReadNumbers, TenDigitsAreTooMany) {
 TEST(ReadNumbers, LeadingZerosKeepTheirValue) {
     const essi::Profile profile;
     const essi::Tape t = essi::read_tape("+0000000000012-007\n63\n", profile);
-    ASSERT_EQ(t.block(0).kind, BlockKind::Motion) << (t.diagnostics().empty() ? "" : t.diagnostics()[0].message);
+    ASSERT_EQ(t.block(0).kind, BlockKind::Motion)
+        << (t.diagnostics().empty() ? "" : essi::diagnostic_message(t.diagnostics()[0], essi::Lang::En));
     EXPECT_EQ(t.words(0)[0], 12);
     EXPECT_EQ(t.words(0)[1], -7);
 }

@@ -175,7 +175,9 @@ TEST(ReadMarks, NoEndW114) {
     const Diagnostic* d = find_code(t.diagnostics(), DiagCode::W114_NoProgramEnd);
     ASSERT_NE(d, nullptr) << dump(t.diagnostics());
     EXPECT_EQ(d->severity, Severity::Warning);
-    EXPECT_NE(d->message.find("expected 63, 64 or / as the last block"), std::string::npos) << d->message;
+    EXPECT_NE(essi::diagnostic_message(*d, essi::Lang::En).find("expected 63, 64 or / as the last block"),
+              std::string::npos)
+        << essi::diagnostic_message(*d, essi::Lang::En);
     EXPECT_FALSE(t.has_errors());
 }
 
@@ -324,7 +326,8 @@ TEST(ReadWords, FunctionValueAfterMinusE118) {
     EXPECT_EQ(d->severity, Severity::Error);
     EXPECT_EQ(d->line, 2u);
     EXPECT_EQ(d->column, 1u);
-    EXPECT_NE(d->message.find("41+value"), std::string::npos) << d->message;
+    EXPECT_NE(essi::diagnostic_message(*d, essi::Lang::En).find("41+value"), std::string::npos)
+        << essi::diagnostic_message(*d, essi::Lang::En);
 }
 
 TEST(ReadWords, NegativeDwellNoLongerMakesTheTimeNegative) {
@@ -340,7 +343,8 @@ TEST(ReadWords, ALineOfSignsCostsNoMemoryPerSign) {
     const std::string line(1000000, '+');
     const Tape t = rd("7\n" + line + "\n8\n64\n");
     EXPECT_EQ(count_code(t.diagnostics(), DiagCode::E105_WordCount), 1u) << dump(t.diagnostics());
-    EXPECT_NE(t.diagnostics().front().message.find("1000000 signed words"), std::string::npos);
+    EXPECT_NE(essi::diagnostic_message(t.diagnostics().front(), essi::Lang::En).find("1000000 signed words"),
+              std::string::npos);
     EXPECT_LT(t.memory_bytes(), 4096u);
     const std::string bytes = line + "+1+1\n";
     const Profile iso = *builtin_profile("iso6582");  // (the reader keeps a reference: the profile must outlive it)
@@ -507,9 +511,10 @@ TEST(ReadChars, InvalidCharacterE101) {
     EXPECT_EQ(d->severity, Severity::Error);
     EXPECT_EQ(d->line, 2u);
     EXPECT_EQ(d->column, 5u);
-    const bool names_byte = d->message.find('X') != std::string::npos || d->message.find("0x58") != std::string::npos ||
-                            d->message.find("0X58") != std::string::npos;
-    EXPECT_TRUE(names_byte) << d->message;
+    const bool names_byte = essi::diagnostic_message(*d, essi::Lang::En).find('X') != std::string::npos ||
+                            essi::diagnostic_message(*d, essi::Lang::En).find("0x58") != std::string::npos ||
+                            essi::diagnostic_message(*d, essi::Lang::En).find("0X58") != std::string::npos;
+    EXPECT_TRUE(names_byte) << essi::diagnostic_message(*d, essi::Lang::En);
     EXPECT_TRUE(t.has_errors());
     EXPECT_EQ(t.block(1).kind, BlockKind::Invalid);
 }

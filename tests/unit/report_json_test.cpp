@@ -1,6 +1,8 @@
 // The JSON report contract (docs/report-schema.json) as built by core/report/report_json.cpp, which the CLI,
 // the server and the viewer's state() share.
 #include <cmath>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -17,7 +19,7 @@ essi::Diagnostic diag(essi::Severity s, essi::DiagCode c, std::uint32_t line, st
     d.code = c;
     d.line = line;
     d.column = col;
-    d.message = msg;
+    d.set_text(msg);
     return d;
 }
 
@@ -121,6 +123,43 @@ TEST(ReportJson, WholeReport) {
     EXPECT_EQ(s.at("files_ok"), 1);
     EXPECT_EQ(s.at("errors"), 2);
     EXPECT_EQ(s.at("warnings"), 2);
+}
+
+// The report written a diagnostic at a time (write_report_json) is the dump of its JSON value byte for byte, in
+// each language: a cut plan diagnostic with its point, contour, other places and overlap; free texts that need
+// escaping (quotes, control characters, UTF-8); a file without diagnostics between files with them.
+TEST(ReportJson, DiagnosticsWrittenOneAtATimeAreTheDump) {
+    FileReport plan = sample_ok();
+    essi::Diagnostic collide = essi::make_diagnostic(
+        essi::Severity::Error, essi::DiagCode::E605_PartsCollide, 7, 0, essi::Msg::PlanKerfInsidePart,
+        {essi::Msg::PlanSideLeft, essi::Msg::PlanClockwise, essi::Msg::PlanSideRight});
+    collide.contour_first = 7;
+    collide.contour_last = 12;
+    collide.has_at = true;
+    collide.at = {1.00000049, -0.0000001};
+    collide.add_related({20, 25, essi::Msg::RelatedOtherPart, {}});
+    collide.add_related({30, 30, essi::Msg::None, {}});
+    collide.set_overlap(
+        {{{0, 0}, {10.5, 0}, {10.5, 10}}, {{5, 5}, {15, 5}, {std::numeric_limits<double>::infinity(), 15}}});
+    plan.result.diagnostics.push_back(collide);
+    plan.result.diagnostics.push_back(diag(essi::Severity::Note, essi::DiagCode::N403_OtherDialect, 0, 0,
+                                           "say \"x\" \\ tab\there\x01 \xE4\xB8\xAD\xE6\x96\x87 {0}"));
+    FileReport empty;
+    empty.path = "empty.esi";
+    const std::vector<FileReport> files = {plan, empty, sample_bad()};
+    for (const essi::Lang lang : essi::kLanguages) {
+        std::string written;
+        std::size_t pieces = 0;
+        essi::write_report_json(files, "woyda", lang, 2, [&](std::string_view s) {
+            written += s;
+            ++pieces;
+        });
+        const std::string dump = essi::report_to_json(files, "woyda", lang).dump(2);
+        EXPECT_EQ(written, dump);
+        EXPECT_GT(pieces, 3u);
+        EXPECT_NE(dump.find("\"overlap\""), std::string::npos);
+        EXPECT_NE(dump.find("\"diagnostics\": []"), std::string::npos);  // (the file without any)
+    }
 }
 
 TEST(ReportJson, EmptyReport) {

@@ -346,7 +346,7 @@ TEST(TextReport, FileReportTextIsWhatCheckPrintsAndCsvQuotes) {
     const std::string csv = essi::diagnostics_csv(std::span<const essi::FileReport>(&f, 1));
     EXPECT_EQ(csv.rfind("file,severity,code,line,column,message\r\n\"a,b.esi\",warning,W201,4,1,", 0), 0u) << csv;
     EXPECT_EQ(csv.substr(csv.size() - 2), "\r\n");
-    f.result.diagnostics[0].message = "say \"x\"";
+    f.result.diagnostics[0].set_text("say \"x\"");
     EXPECT_NE(essi::diagnostics_csv(std::span<const essi::FileReport>(&f, 1)).find(",\"say \"\"x\"\"\"\r\n"),
               std::string::npos);
 }

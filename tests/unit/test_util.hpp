@@ -90,7 +90,8 @@ public:
 inline std::string dump(const std::vector<essi::Diagnostic>& diags) {
     std::ostringstream os;
     for (const auto& d : diags)
-        os << essi::code_name(d.code) << " line " << d.line << " col " << d.column << ": " << d.message << "\n";
+        os << essi::code_name(d.code) << " line " << d.line << " col " << d.column << ": "
+           << essi::diagnostic_message(d, essi::Lang::En) << "\n";
     return os.str();
 }
 
@@ -179,7 +180,7 @@ inline void expect_same_result(const essi::CheckResult& a, const essi::CheckResu
         EXPECT_EQ(essi::code_name(d.code), essi::code_name(e.code));
         EXPECT_EQ(d.line, e.line);
         EXPECT_EQ(d.column, e.column);
-        EXPECT_EQ(d.message, e.message);
+        EXPECT_EQ(essi::diagnostic_message(d, essi::Lang::En), essi::diagnostic_message(e, essi::Lang::En));
     }
 }
 

@@ -18,7 +18,7 @@ TEST(Torches, EveryTorchCutsAndPierces) {
     const Profile woyda = *builtin_profile("woyda");
     const CheckResult one = check_tape("7\n+100+0\n+0+100+0+50+\n8\n5\n+10+0\n6\n63\n", woyda);
     const CheckResult two = check_tape(kTwoTorches, woyda);
-    ASSERT_TRUE(two.diagnostics.empty()) << two.diagnostics.front().message;
+    ASSERT_TRUE(two.diagnostics.empty()) << essi::diagnostic_message(two.diagnostics.front(), essi::Lang::En);
     EXPECT_DOUBLE_EQ(two.stats.cut_length_mm, 2 * one.stats.cut_length_mm);
     EXPECT_EQ(two.stats.pierces, 2u);
     EXPECT_DOUBLE_EQ(two.stats.travel_length_mm, one.stats.travel_length_mm);  // the carriage travels once

@@ -133,7 +133,7 @@ json toolbar_json(const UiState& ui) {
 json mark_diagnostic_json(const Diagnostic& d, std::size_t index) {
     json j = diagnostic_to_json(d, ui_lang());
     j["diagnostic"] = index;
-    j["overlap_polygons"] = d.overlap.size();
+    j["overlap_polygons"] = d.overlap().size();
     return j;
 }
 
@@ -155,7 +155,7 @@ json marks_json(const Document& doc, const View& view, std::size_t hovered, std:
                          {"in_view", view.area.contains(static_cast<float>(px.x), static_cast<float>(px.y))}});
     }
     std::size_t overlaps = 0;
-    for (const Diagnostic& d : doc.diagnostics) overlaps += d.overlap.empty() ? 0 : 1;
+    for (const Diagnostic& d : doc.diagnostics) overlaps += d.overlap().empty() ? 0 : 1;
     json active = json::array();
     for (const std::size_t k : active_diagnostics(doc, hovered, selected_line)) active.push_back(k);
     return {{"count", doc.marks.size()},

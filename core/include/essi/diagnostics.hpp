@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -113,29 +114,53 @@ struct RelatedLocation {
     MessageArgs args;
 };
 
+// A diagnostic is kept compactly: its code, severity and position, the catalogue row of its message and the row's
+// arguments (MessageArgs: one string, numbers as their text, short enough mostly to need no heap); the sentence
+// itself is made only when it is shown (diagnostic_message). The cut plan's contour and point are kept in place;
+// its other places and overlap polygons, which few diagnostics have, out of line.
 struct Diagnostic {
     Severity severity = Severity::Error;
+    bool has_at = false;  // (the cut plan's, below)
     DiagCode code = DiagCode::E101_InvalidCharacter;
+    Msg msg = Msg::None;       // the catalogue row of the message (None: a free text, set_text)
     std::uint32_t line = 0;    // 1-based; 0 when the problem has no position (profile)
     std::uint32_t column = 0;  // 1-based byte column
-    std::string message;       // what was found and what was expected, in English
-    Msg msg = Msg::None;       // the catalogue row `message` was made from, and its arguments: the message
-    MessageArgs args;          // in another language (diagnostic_message); None for a message made otherwise
     // The cut plan's diagnostics (6xx, essi/plan.hpp) concern a contour and a place on the drawing:
     std::uint32_t contour_first = 0, contour_last = 0;  // the lines of the contour concerned (0: none)
-    bool has_at = false;
-    Point at;                              // where on the drawing (program mm, as the motions)
-    std::vector<RelatedLocation> related;  // the other places it concerns
-    // A collision's overlapping area: the area inside every one of these polygons (program mm).
-    std::vector<std::vector<Point>> overlap;
+    Point at;                                           // where on the drawing (program mm, as the motions)
+    MessageArgs args;  // the row's arguments; for a free text (msg None), the text itself
+
+    Diagnostic() = default;
+    Diagnostic(const Diagnostic& o);
+    Diagnostic& operator=(const Diagnostic& o);
+    Diagnostic(Diagnostic&&) noexcept = default;
+    Diagnostic& operator=(Diagnostic&&) noexcept = default;
+    ~Diagnostic() = default;
+
+    // A message that is not in the catalogue, shown as it is in every language.
+    void set_text(std::string text);
+    // The other places it concerns (none for most).
+    [[nodiscard]] const std::vector<RelatedLocation>& related() const;
+    void add_related(RelatedLocation r);
+    // A collision's overlapping area: the area inside every one of these polygons (program mm; none for most).
+    [[nodiscard]] const std::vector<std::vector<Point>>& overlap() const;
+    void set_overlap(std::vector<std::vector<Point>> polygons);
+
+private:
+    struct Places {
+        std::vector<RelatedLocation> related;
+        std::vector<std::vector<Point>> overlap;
+    };
+    std::unique_ptr<Places> places_;  // null while it has neither
 };
 // The related place's text in `lang`.
 [[nodiscard]] std::string related_message(const RelatedLocation& r, Lang lang);
 
-// A diagnostic whose message is the catalogue's `msg` with `args` (its `message` in English).
+// A diagnostic whose message is the catalogue's `msg` with `args`.
 [[nodiscard]] Diagnostic make_diagnostic(Severity severity, DiagCode code, std::uint32_t line, std::uint32_t column,
                                          Msg msg, MessageArgs args = {});
-// The diagnostic's message in `lang` (its English `message` when it was not made from the catalogue).
+// The diagnostic's message in `lang` (its text as it is when it was not made from the catalogue): the one way a
+// diagnostic's sentence is made, for every report, the viewer and the server.
 [[nodiscard]] std::string diagnostic_message(const Diagnostic& d, Lang lang);
 
 // "E101", "W109" ...

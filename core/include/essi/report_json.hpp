@@ -19,6 +19,8 @@ namespace essi {
 // Lengths, coordinates and times are written as doubles rounded to this many decimals
 // (1e-6 mm is far below any machine resolution; it keeps reports stable across platforms).
 constexpr int kJsonLengthDecimals = 6;
+// The report text written a piece at a time (write_report_json) is handed on in pieces of about this many bytes.
+constexpr std::size_t kJsonFlushBytes = std::size_t{1} << 16;
 
 // Rounds `value` to kJsonLengthDecimals decimals; -0 becomes 0. Non-finite values are returned unchanged
 // (nlohmann::json writes them as null).
@@ -65,10 +67,15 @@ struct FileReport {
                                             Lang lang = Lang::En);
 
 // report_to_json(files, profile_name, lang).dump(indent) (indent > 0), written to `write` a piece at a time: the
-// files' parts lists are written from the lists (write_parts_member_json), never made JSON values, so a report of
-// many parts takes little memory beyond the lists.
+// files' diagnostics one at a time (write_diagnostics_json) and their parts lists from the lists
+// (write_parts_member_json), never made one JSON value, so a report of many diagnostics or parts takes little memory
+// beyond them.
 void write_report_json(std::span<const FileReport> files, std::string_view profile_name, Lang lang, int indent,
                        const std::function<void(std::string_view)>& write);
+// The array diagnostics_to_json(diagnostics, lang) as dump(indent) writes it at `depth` levels of indentation, to
+// `write` a piece at a time (one diagnostic made a JSON value at a time).
+void write_diagnostics_json(std::span<const Diagnostic> diagnostics, Lang lang, int indent, int depth,
+                            const std::function<void(std::string_view)>& write);
 // The member `member` ("parts", "groups" or "plates") of parts_to_json(parts), written as dump(indent) writes it
 // at `depth` levels of indentation, to `write` a piece at a time.
 void write_parts_member_json(const PartsList& parts, std::string_view member, int indent, int depth,

@@ -28,10 +28,10 @@ ImU32 color_u32(Rgba c, float alpha) {
 
 // The area inside every polygon of one diagnostic's overlap, in the drawing area: its rows' spans as rectangles.
 void overlap_area(ImDrawList* dl, const Document& doc, const View& view, const Diagnostic& d) {
-    std::vector<std::vector<Point>> screen(d.overlap.size());
+    std::vector<std::vector<Point>> screen(d.overlap().size());
     double top = HUGE_VAL, bottom = -HUGE_VAL, left = HUGE_VAL, right = -HUGE_VAL;
-    for (std::size_t k = 0; k < d.overlap.size(); ++k)
-        for (const Point& p : d.overlap[k]) {
+    for (std::size_t k = 0; k < d.overlap().size(); ++k)
+        for (const Point& p : d.overlap()[k]) {
             const Point q = view.to_screen({p.x - doc.origin.x, p.y - doc.origin.y});
             screen[k].push_back(q);
             top = std::min(top, q.y);
@@ -64,8 +64,8 @@ void tooltip_diagnostic(UiFonts& fonts, const Diagnostic& d) {
     const std::string message = diagnostic_message(d, lang);
     fonts.require_glyphs(message);
     ImGui::TextUnformatted(message.c_str());
-    for (std::size_t k = 0; k < d.related.size() && k < kTooltipRelated; ++k) {
-        const RelatedLocation& r = d.related[k];
+    for (std::size_t k = 0; k < d.related().size() && k < kTooltipRelated; ++k) {
+        const RelatedLocation& r = d.related()[k];
         const std::string what = related_message(r, lang);
         const std::string text = r.end_line > r.line ? tr(Msg::UiMarkRelatedLines, {r.line, r.end_line, what})
                                                      : tr(Msg::UiMarkRelatedLine, {r.line, what});
@@ -97,7 +97,7 @@ void Panels::problem_marks(ImDrawList* dl) {
     if (!doc || doc->diagnostics.empty() || p_.load.loading()) return;
     const View& view = p_.navigation.view();
     for (const Diagnostic& d : doc->diagnostics)
-        if (d.overlap.size() > 0) overlap_area(dl, *doc, view, d);
+        if (d.overlap().size() > 0) overlap_area(dl, *doc, view, d);
     const std::uint32_t line = p_.navigation.selection().line;
     for (const DiagnosticMark& m : doc->marks)
         if (line > 0 && doc->diagnostics[m.diagnostic].line == line) ring(dl, *doc, view, m, to_u32(kSelectionColor));
