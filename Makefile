@@ -92,10 +92,13 @@ bench: setup-test
 # build/fuzz/corpus/NAME (the saved corpus tests/fuzz/corpus/NAME is read only); crashes are written to
 # build/fuzz/artifacts/; each target's last status line goes to build/fuzz/NAME.log. The ESSI target reads long
 # inputs (whole generated tapes are in its corpus) with a dictionary of ESSI tokens; the EIA target has its own
-# (read_eia.dict). Promote interesting inputs by hand. scripts/fuzz_table prints docs/fuzzing.md's table.
+# (read_eia.dict). An earlier run's log is kept as NAME.K.log (the runs continue on the same corpus; the table adds
+# up their executions). FUZZ_FLAGS go to every target (default -entropic=0: libFuzzer's entropic schedule took a fifth
+# of a read_interp execution). Promote interesting inputs by hand. scripts/fuzz_table prints docs/fuzzing.md's table.
 FUZZ_TARGETS ?= read_interp read_eia profile share_link serve_request
 FUZZ_PRESET ?= fuzz-fast
 FUZZ_RUNS ?= -1
+FUZZ_FLAGS ?= -entropic=0
 fuzz:
 	@scripts/setup fuzz
 	cmake --preset $(FUZZ_PRESET)
@@ -103,9 +106,11 @@ fuzz:
 	@for t in $(FUZZ_TARGETS); do \
 	  mkdir -p build/fuzz/corpus/$$t build/fuzz/artifacts; \
 	  dict=""; [ -f tests/fuzz/$$t.dict ] && dict="-dict=tests/fuzz/$$t.dict"; \
-	  echo "== essi_fuzz_$$t ($(FUZZ_PRESET), $(FUZZ_SECONDS) s, runs $(FUZZ_RUNS), max_len 4096)"; \
+	  if [ -s build/fuzz/$$t.log ]; then k=2; while [ -e build/fuzz/$$t.$$k.log ]; do k=$$((k+1)); done; \
+	    mv build/fuzz/$$t.log build/fuzz/$$t.$$k.log; fi; \
+	  echo "== essi_fuzz_$$t ($(FUZZ_PRESET), $(FUZZ_SECONDS) s, runs $(FUZZ_RUNS), max_len 4096, $(FUZZ_FLAGS))"; \
 	  build/$(FUZZ_PRESET)/bin/essi_fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -runs=$(FUZZ_RUNS) -max_len=4096 \
-	    -timeout=10 -print_final_stats=1 $$dict -artifact_prefix=build/fuzz/artifacts/$$t- \
+	    -timeout=10 -print_final_stats=1 $(FUZZ_FLAGS) $$dict -artifact_prefix=build/fuzz/artifacts/$$t- \
 	    build/fuzz/corpus/$$t tests/fuzz/corpus/$$t 2>&1 | tee build/fuzz/$$t.log | grep -E "^#[0-9]+.*(pulse|DONE)|^stat::|ERROR|SUMMARY" ; \
 	  [ $${PIPESTATUS[0]} -eq 0 ] || exit 1; \
 	done

@@ -123,8 +123,14 @@ namespace geom_detail {
 // Exact bounding box of a motion (arc and parabola extremes included).
 [[nodiscard]] Box bounding_box(const MotionRecord& m);
 
-// A motion is flattened into at most this many chords (by default), whatever the tolerance.
+// A motion is flattened into at most this many chords (by default), whatever the tolerance. The fuzz-fast build
+// sets a smaller cap (ESSI_FUZZ_MAX_FLATTEN_SEGMENTS, core/CMakeLists.txt): its executions go to reading tapes,
+// not to the thousands of chords of every random parabola.
+#ifdef ESSI_MAX_FLATTEN_SEGMENTS
+constexpr int kMaxFlattenSegments = ESSI_MAX_FLATTEN_SEGMENTS;
+#else
 constexpr int kMaxFlattenSegments = 4096;
+#endif
 
 // How many chords flatten() makes of the motion: enough to stay within `chord_tolerance_mm`, at most `max_segments`.
 [[nodiscard]] int flatten_segments(const MotionRecord& m, double chord_tolerance_mm, int max_segments);

@@ -39,8 +39,9 @@ namespace essi {
 // Arcs are flattened within this for containment and collision tests (mm): far below a kerf.
 constexpr double kPlanChordToleranceMm = 0.05;
 // An arc is at most this many chords for those tests (a radius up to about 10 m keeps kPlanChordToleranceMm; a
-// larger one is coarser: a tape's bounds, not a plate's, make such arcs).
-constexpr int kPlanMaxArcChords = 1024;
+// larger one is coarser: a tape's bounds, not a plate's, make such arcs). Never more than kMaxFlattenSegments (the
+// fuzz-fast build's is smaller).
+constexpr int kPlanMaxArcChords = kMaxFlattenSegments < 1024 ? kMaxFlattenSegments : 1024;
 // A collision's overlap polygons (E605, N612) are at most this many points each: a longer contour's outline keeps
 // this many of its points, evenly spread.
 constexpr std::size_t kPlanMaxOverlapPoints = 256;
