@@ -102,7 +102,7 @@ FUZZ_FLAGS ?= -entropic=0
 fuzz:
 	@scripts/setup fuzz
 	cmake --preset $(FUZZ_PRESET)
-	cmake --build --preset $(FUZZ_PRESET) -j$(JOBS)
+	cmake --build --preset $(FUZZ_PRESET) -j$(JOBS) --target $(addprefix essi_fuzz_,$(FUZZ_TARGETS))
 	@for t in $(FUZZ_TARGETS); do \
 	  mkdir -p build/fuzz/corpus/$$t build/fuzz/artifacts; \
 	  dict=""; [ -f tests/fuzz/$$t.dict ] && dict="-dict=tests/fuzz/$$t.dict"; \
