@@ -1206,6 +1206,103 @@ test('export the view as PNG (the drawing area as drawn) and as SVG (that part o
   await page.close();
 });
 
+test('compare, a difference shown: A and B both in view, B\'s circle round at any zoom', async () => {
+  const page = await newPage();
+  // A: a square; B: the square moved 150 mm to the right, and a circle of radius 50 about (350, 0) added
+  const a = '7\n+1000+0\n+0+1000\n-1000+0\n+0-1000\n8\n64\n';
+  const b = '5\n+1500+0\n6\n7\n+1000+0\n+0+1000\n-1000+0\n+0-1000\n8\n5\n+1500+0\n6\n7\n+0+0+500+0+\n8\n64\n';
+  await page.evaluate((t) => essikit.load('rev_a.esi', t), a);
+  const s = await page.evaluate((t) => essikit.compare('rev_b.esi', t), b);
+  assert.deepEqual(s.compare.differences.map((d) => d.change).sort(), ['added', 'moved'], JSON.stringify(s.compare));
+  const moved = s.compare.differences.findIndex((d) => d.change === 'moved');
+  await page.evaluate((k) => essikit.showDifference(k), moved);
+  await nextFrames(page, 3);
+  // the view holds A's square (0..100) and B's (150..250) whole
+  const area = (await page.evaluate(() => essikit.state())).view.area;
+  for (const [x, y] of [[0, 0], [100, 100], [150, 0], [250, 100]]) {
+    const p = await page.evaluate(([x, y]) => essikit.project(x, y), [x, y]);
+    assert.ok(p.x >= area[0] && p.x <= area[0] + area[2] && p.y >= area[1] && p.y <= area[1] + area[3],
+              `(${x}, ${y}) out of view at ${JSON.stringify(p)} in ${JSON.stringify(area)}`);
+  }
+  // 400 px a mm on the circle (its start at 180 degrees, kept as 71 chords within 0.05 mm: a chord's middle lies
+  // 0.049 mm = 20 px inside the circle): B's colour on the circle itself all along
+  const mid = Math.PI + Math.PI / 71;
+  await page.evaluate(([x, y]) => essikit.setView(x, y, 400), [350 + 50 * Math.cos(mid), 50 * Math.sin(mid)]);
+  await page.mouse.move(5, 890);
+  await nextFrames(page, 3);
+  const at = await pixels(page, await page.screenshot({ path: path.join(shots, 'compare-circle-close.png') }));
+  const off = [];
+  for (let d = 0; d <= 0.0151; d += 0.0015) {  // (from the chord's middle down: the Compare window is above)
+    const t = mid + d;
+    const p = await page.evaluate(([x, y]) => essikit.project(x, y), [350 + 50 * Math.cos(t), 50 * Math.sin(t)]);
+    const hits = [];
+    for (let dx = -2; dx <= 2; ++dx) hits.push(at(Math.round(p.x) + dx, Math.round(p.y)));
+    if (!hits.some((c) => c[2] > 200 && c[1] > 150 && c[0] < 150)) off.push([t.toFixed(4), JSON.stringify(hits)]);
+  }
+  assert.deepEqual(off, [], 'B\'s circle drawn off the circle (facets)');
+  await page.evaluate(() => essikit.endCompare());
+  await page.close();
+});
+
+test('a toolbar button\'s tooltip opens under the bar: Compare\'s new label never covers the profile list', async () => {
+  const page = await newPage();
+  await page.evaluate(() => essikit.setLanguage('de'));
+  await page.evaluate(() => essikit.load('a.esi', '7\n+1000+0\n+0+1000\n-1000+0\n+0-1000\n8\n64\n'));
+  await nextFrames(page, 3);
+  let tb = (await page.evaluate(() => essikit.state())).toolbar;
+  const compare = tb.items.find((i) => i.id === 'compare').rect;
+  await page.mouse.click(compare.x + compare.w / 2, compare.y + compare.h / 2);  // (the label becomes longer)
+  await nextFrames(page, 4);
+  tb = (await page.evaluate(() => essikit.state())).toolbar;
+  const profile = tb.items.find((i) => i.id === 'profile').rect;
+  const shot = async (name) => pixels(page, await page.screenshot({ path: path.join(shots, name) }));
+  const hovered = await shot('toolbar-tooltip.png');  // the mouse still on Compare: its tooltip shown
+  await page.mouse.move(800, 600);
+  await nextFrames(page, 4);
+  const away = await shot('toolbar-no-tooltip.png');
+  const covered = [];
+  for (let y = Math.ceil(profile.y); y < profile.y + profile.h; y += 2)
+    for (let x = Math.ceil(profile.x); x < profile.x + profile.w; x += 3) {
+      const a = hovered(x, y), b = away(x, y);
+      if (a.some((v, k) => Math.abs(v - b[k]) > 8)) covered.push([x, y]);
+    }
+  assert.deepEqual(covered.slice(0, 5), [], `the profile list is covered at ${covered.length} points while Compare is hovered`);
+  await page.evaluate(() => { essikit.endCompare(); essikit.setLanguage('en'); });
+  await page.close();
+});
+
+test('View as PNG with the Export menu open: the picture holds the drawing, not the menu', async () => {
+  const page = await newPage();
+  await page.evaluate(() => essikit.setPanels(false, true, 310, 470));  // (the menu opens over the drawing)
+  await loadExample(page, 'plate_holes.esi');
+  await page.evaluate(() => essikit.setView(160, 120, 3));
+  await nextFrames(page, 3);
+  const s = await page.evaluate(() => essikit.state());
+  const decode = async (url) => pixels(page, Buffer.from(url.replace(/^data:image\/png;base64,/, ''), 'base64'));
+  const closed = await decode(await page.evaluate(() => essikit.exportPng()));
+  // the Export menu opened by its button; the screen shows it over the drawing
+  const button = s.toolbar.items.find((i) => i.id === 'export' && !i.in_menu);
+  assert.ok(button, JSON.stringify(s.toolbar.items.map((i) => i.id)));
+  await page.mouse.click(button.rect.x + button.rect.w / 2, button.rect.y + button.rect.h / 2);
+  await nextFrames(page, 3);
+  const screen = await pixels(page, await page.screenshot({ path: path.join(shots, 'export-menu-open.png') }));
+  const [ax, ay] = s.view.area;
+  const box = [];  // where the menu opens: under its button, inside the drawing area (the picture's own pixels)
+  for (let y = 10; y < 110; y += 10)
+    for (let x = 10; x < 150; x += 10) box.push([button.rect.x + x - ax, button.rect.y + button.rect.h + y - ay]);
+  const inside = box.filter(([x, y]) => x >= 0 && y >= 0 && x < s.view.area[2] && y < s.view.area[3]);
+  assert.ok(inside.length > 50, `the menu's place is not over the drawing: ${JSON.stringify(s.view.area)}`);
+  const same = (a, b) => a.every((v, k) => Math.abs(v - b[k]) <= 2);
+  const covered = inside.filter(([x, y]) => !same(screen(x + ax, y + ay), closed(x, y))).length;
+  assert.ok(covered > inside.length / 4, `the open menu is not drawn over the drawing (${covered} of ${inside.length})`);
+  const open = await decode(await page.evaluate(() => essikit.exportPng()));
+  const differing = inside.filter(([x, y]) => !same(open(x, y), closed(x, y)));
+  assert.equal(differing.length, 0, `the PNG holds the open menu at ${JSON.stringify(differing.slice(0, 5))}`);
+  await tap(page, 'Escape');
+  await page.evaluate(() => essikit.setPanels(true, true, 310, 470));  // (the defaults, for the tests after)
+  await page.close();
+});
+
 test('measure: distance and dx/dy between two points, snapping to end points and arc centres', async () => {
   const page = await newPage();
   const { motions } = await loadExample(page, 'plate_holes.esi');
@@ -1233,6 +1330,41 @@ test('measure: distance and dx/dy between two points, snapping to end points and
   await until(page, () => essikit.state().measure.points === 1, null, 'third click not taken');
   ms = (await page.evaluate(() => essikit.state())).measure;
   assert.deepEqual(ms.a_mm, hole.centre, 'did not snap to the arc centre');
+  await page.close();
+});
+
+test('measure: the Measure window never covers the mouse or the points A and B', async () => {
+  const page = await newPage();
+  await loadExample(page, 'plate_holes.esi');
+  await page.keyboard.press('m');
+  await until(page, () => essikit.state().measure.active, null, 'M did not start measuring');
+  const area = (await page.evaluate(() => essikit.state())).view.area;
+  const inside = (r, x, y) => x >= r.x - 4 && x <= r.x + r.w + 4 && y >= r.y - 4 && y <= r.y + r.h + 4;
+  const windowAt = async () => {
+    await nextFrames(page, 3);
+    const w = (await page.evaluate(() => essikit.state())).measure.window;
+    assert.ok(w && w.w > 50 && w.h > 20, JSON.stringify(w));
+    assert.ok(w.x >= area[0] && w.y >= area[1] && w.x + w.w <= area[0] + area[2] + 1 && w.y + w.h <= area[1] + area[3] + 1,
+              `the window ${JSON.stringify(w)} is not inside the drawing area ${JSON.stringify(area)}`);
+    return w;
+  };
+  // the mouse far from the top left: the window there; the mouse where it was: it goes elsewhere
+  await page.mouse.move(area[0] + area[2] - 40, area[1] + area[3] - 40);
+  const first = await windowAt();
+  assert.ok(Math.abs(first.x - area[0] - 10) < 2 && Math.abs(first.y - area[1] - 10) < 2, JSON.stringify(first));
+  const under = [first.x + 30, first.y + 15];
+  await page.mouse.move(...under);
+  const moved = await windowAt();
+  assert.ok(!inside(moved, ...under), `the window ${JSON.stringify(moved)} covers the mouse at ${under}`);
+  // A picked in the top right corner, the mouse in the bottom left: the window neither on A nor under the mouse
+  const a = [area[0] + area[2] - 30, area[1] + 30], mouse = [area[0] + 30, area[1] + area[3] - 30];
+  await page.mouse.click(...a);
+  await until(page, () => essikit.state().measure.points === 1, null, 'the click was not taken');
+  await page.mouse.move(...mouse);
+  const third = await windowAt();
+  const pa = await page.evaluate(([x, y]) => essikit.project(x, y), (await page.evaluate(() => essikit.state())).measure.a_mm);
+  assert.ok(!inside(third, pa.x, pa.y) && !inside(third, ...mouse), `the window ${JSON.stringify(third)} covers A ${JSON.stringify(pa)} or the mouse ${mouse}`);
+  await page.keyboard.press('Escape');
   await page.close();
 });
 

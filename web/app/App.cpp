@@ -82,16 +82,20 @@ void App::announce_selection() {
 void App::render(bool keep_unchanged) {
     if (!graphics_ok_) return;
     const auto [fb_w, fb_h] = framebuffer_size();
-    const bool png = exports_.png_pending();
-    scene_.render(renderer_, ui_renderer_, fb_w, fb_h, keep_unchanged && !png && !fonts_changed_);
+    if (exports_.png_pending()) save_view_png(fb_w, fb_h);
+    scene_.render(renderer_, ui_renderer_, fb_w, fb_h, keep_unchanged && !fonts_changed_);
     load_.note_rendered(scene_.tape_drawn(), renderer_.filling());
     // Between frames: the atlas at the screen's pixel ratio, with the glyphs asked for (UiFonts); the next frame
     // draws with it.
     fonts_.require_language(ui_lang());
     fonts_changed_ = fonts_.update(framebuffer_scale());
     if (fonts_changed_) ui_renderer_.upload_fonts();
-    if (!png) return;
-    // The drawing area of the frame just drawn, in the framebuffer's pixels (top-left origin).
+}
+
+// The view as a picture: this frame's scene and its overlays without the windows (an open menu, a tooltip), its
+// drawing area taken in the framebuffer's pixels (top-left origin); the frame is then drawn again with them.
+void App::save_view_png(int fb_w, int fb_h) {
+    scene_.render(renderer_, ui_renderer_, fb_w, fb_h, false, SceneAssembly::Windows::LeftOut);
     const float s = framebuffer_scale();
     const Rect& a = navigation_.view().area;
     exports_.save_view_png({a.x * s, a.y * s, a.w * s, a.h * s});

@@ -71,7 +71,8 @@ public:
 
 private:
     void prepare_scene();
-    void announce_selection();  // the selection told to the page when it changed
+    void announce_selection();               // the selection told to the page when it changed
+    void save_view_png(int fb_w, int fb_h);  // Export > View as PNG: the scene and its overlays, no window
 
     PlatformServices& platform_;
     UiFonts fonts_;

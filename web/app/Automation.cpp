@@ -48,7 +48,7 @@ void Automation::show_difference(int k) {
     if (!c || k < 0) return;
     for (const ContourDiff& d : c->diff.contours) {
         if (d.change == ContourChange::Same || k-- > 0) continue;
-        p_.compare.show_contour(static_cast<std::size_t>(d.a >= 0 ? d.a : d.b), d.a < 0);
+        p_.compare.show_difference(d);
         return;
     }
 }

@@ -65,7 +65,7 @@ public:
         if (by) p_.layers.colour_by = *by;
         return by.has_value();
     }
-    // The k-th difference's contour shown (CompareMode::show_contour).
+    // The k-th difference shown (CompareMode::show_difference).
     void show_difference(int k);
     void export_view_png() { p_.exports.export_view_png(); }
     void set_text_encoding(std::optional<TextEncoding> chosen) { p_.comments.choose(chosen, p_.session.document()); }

@@ -117,9 +117,10 @@ json render_json(const RenderStats& rs, std::uint64_t unchanged_frames) {
             {"unchanged_frames", unchanged_frames}};
 }
 
+json rect(const Rect& r) { return json{{"x", r.x}, {"y", r.y}, {"w", r.w}, {"h", r.h}}; }
+
 // The toolbar's items as the last frame drew them: where each is, in the bar or in its overflow menu ("more").
 json toolbar_json(const UiState& ui) {
-    const auto rect = [](const Rect& r) { return json{{"x", r.x}, {"y", r.y}, {"w", r.w}, {"h", r.h}}; };
     json items = json::array();
     for (const ToolbarItem& t : ui.toolbar)
         items.push_back({{"id", t.id}, {"in_menu", t.in_menu}, {"rect", rect(t.rect)}});
@@ -359,6 +360,7 @@ std::string Automation::state_json() const {
     j["marks"] = doc ? marks_json(*doc, p_.navigation.view(), p_.ui.hovered_mark, selection.line) : json(nullptr);
     j["playback"] = playback_json(p_.playback, doc, p_.tape_facts, cs);
     j["measure"] = measure_json(p_.measure, cs);
+    j["measure"]["window"] = p_.ui.measure_window.w > 0 ? rect(p_.ui.measure_window) : json(nullptr);
     j["inspector"] = inspector_json(doc, selection.line);
     j["render"] = render_json(p_.renderer.stats(), p_.scene.skipped_frames());
     add_panels(j, p_);

@@ -7,20 +7,18 @@
 namespace essi::viewer {
 namespace {
 
-constexpr double kCompareChordMm = 0.05;  // arcs drawn as chords within this (a hair at any useful zoom)
-
 std::vector<std::vector<Point>> flattened(const std::vector<DiffContour>& contours) {
-    std::vector<std::vector<Point>> out;
-    out.reserve(contours.size());
-    for (const DiffContour& c : contours) {
-        std::vector<Point> pts;
-        for (std::size_t k = 0; k < c.path.size(); ++k) flatten(c.path[k], kCompareChordMm, pts, k == 0);
-        out.push_back(std::move(pts));
-    }
+    std::vector<std::vector<Point>> out(contours.size());
+    for (std::size_t k = 0; k < contours.size(); ++k) flatten_contour(contours[k], kCompareChordMm, out[k]);
     return out;
 }
 
 }  // namespace
+
+void flatten_contour(const DiffContour& c, double chord_mm, std::vector<Point>& out) {
+    out.clear();
+    for (std::size_t k = 0; k < c.path.size(); ++k) flatten(c.path[k], chord_mm, out, k == 0);
+}
 
 std::unique_ptr<Compare> make_compare(const Document& a, bool auto_profile, std::string name,
                                       const std::string& bytes) {
@@ -55,13 +53,19 @@ void CompareMode::end() {
     next_ = false;
 }
 
-void CompareMode::show_contour(std::size_t index, bool of_b) {
+void CompareMode::show_difference(const ContourDiff& d) {
     if (!compare_) return;
-    const auto& contours = of_b ? compare_->b.contours : compare_->a.contours;
-    if (index >= contours.size()) return;
-    const DiffContour& c = contours[index];
-    if (!of_b) navigation_.select_line(c.first_line, false);
-    navigation_.show_box(c.box);
+    const auto of = [](const std::vector<DiffContour>& contours, int k) {
+        return k >= 0 && static_cast<std::size_t>(k) < contours.size() ? &contours[static_cast<std::size_t>(k)]
+                                                                       : nullptr;
+    };
+    const DiffContour* a = of(compare_->a.contours, d.a);
+    const DiffContour* b = of(compare_->b.contours, d.b);
+    Box box;
+    for (const DiffContour* c : {a, b})
+        if (c) box.add(c->box);
+    if (a) navigation_.select_line(a->first_line, false);
+    if (!box.empty) navigation_.show_box(box);
 }
 
 }  // namespace essi::viewer

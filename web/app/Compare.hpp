@@ -26,6 +26,13 @@ struct Compare {
     std::vector<std::vector<Point>> a_lines, b_lines;
 };
 
+// Contours are kept flattened within this for drawing (mm): a hair at any useful zoom; closer, the contours in view
+// are flattened again (flatten_contour) within kCompareMaxSagittaPx.
+constexpr double kCompareChordMm = 0.05;
+constexpr double kCompareMaxSagittaPx = 0.5;
+// Contour `c` flattened within `chord_mm` into `out` (emptied first; program mm).
+void flatten_contour(const DiffContour& c, double chord_mm, std::vector<Point>& out);
+
 // A compared with B (`bytes`, read with A's profile, or by its own evidence when A's is auto).
 [[nodiscard]] std::unique_ptr<Compare> make_compare(const Document& a, bool auto_profile, std::string name,
                                                     const std::string& bytes);
@@ -46,8 +53,8 @@ public:
     void forget() { compare_.reset(); }
     [[nodiscard]] const Compare* result() const { return compare_.get(); }
     [[nodiscard]] bool pending() const { return next_; }
-    // Shows contour `index` of A (or of B: `of_b`): its lines selected (A's), the view on it.
-    void show_contour(std::size_t index, bool of_b);
+    // Shows a difference: A's contour's lines selected (when A has it), the view on A's and B's contours together.
+    void show_difference(const ContourDiff& d);
 
 private:
     Navigation& navigation_;

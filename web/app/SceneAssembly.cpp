@@ -128,7 +128,8 @@ bool SceneAssembly::prepare(const SceneInputs& in, const Renderer& renderer, boo
     return true;
 }
 
-void SceneAssembly::render(Renderer& renderer, UiRenderer& ui, int fb_w, int fb_h, bool keep_unchanged) {
+void SceneAssembly::render(Renderer& renderer, UiRenderer& ui, int fb_w, int fb_h, bool keep_unchanged,
+                           Windows windows) {
     const ImDrawData& data = *ImGui::GetDrawData();
     const std::uint64_t hash = ui_hash(data);
     if (keep_unchanged && scene_ && scene_ == last_scene_ && hash == last_ui_hash_ && !renderer.filling()) {
@@ -139,6 +140,16 @@ void SceneAssembly::render(Renderer& renderer, UiRenderer& ui, int fb_w, int fb_
         const SceneFrame& s = *scene_;
         renderer.draw(s.view, s.fb_w, s.fb_h, s.options, s.grid_step, s.grid_origin, s.path,
                       whole_ ? Renderer::kWholeImage : Renderer::kSegmentsPerFrame);
+    }
+    if (windows == Windows::LeftOut) {
+        // ImGui lists the background draw list first, then the windows: the first list alone.
+        ImDrawList* background = ImGui::GetBackgroundDrawList();
+        ImDrawData overlays = data;
+        overlays.CmdLists = &background;
+        overlays.CmdListsCount = data.CmdListsCount > 0 && data.CmdLists[0] == background ? 1 : 0;
+        ui.draw(overlays, fb_w, fb_h);
+        last_scene_.reset();  // (the next frame is drawn again, with its windows)
+        return;
     }
     ui.draw(data, fb_w, fb_h);
     last_scene_ = scene_;

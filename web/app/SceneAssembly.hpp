@@ -36,8 +36,11 @@ public:
     // Puts this frame's scene together; false (no scene) when there is no framebuffer or no GPU.
     bool prepare(const SceneInputs& in, const Renderer& renderer, bool graphics_ok);
     // Draws the scene, then the panels. With `keep_unchanged` a frame that would draw the same pixels as the last
-    // one draws nothing.
-    void render(Renderer& renderer, UiRenderer& ui, int fb_w, int fb_h, bool keep_unchanged);
+    // one draws nothing. `Windows::LeftOut` draws the scene and the overlays on it (ImGui's background draw list:
+    // marks, grid labels, measure) but no window, menu or tooltip: the view as a picture.
+    enum class Windows { Drawn, LeftOut };
+    void render(Renderer& renderer, UiRenderer& ui, int fb_w, int fb_h, bool keep_unchanged,
+                Windows windows = Windows::Drawn);
 
     [[nodiscard]] bool tape_drawn() const { return tape_drawn_; }  // the tape's segments or its level of detail
     [[nodiscard]] bool lod_drawn() const { return lod_drawn_; }

@@ -26,6 +26,7 @@ struct UiState {
     std::vector<ToolbarItem> toolbar;            // the toolbar's items (Panels::toolbar)
     Rect toolbar_more;                           // its overflow menu's button (w 0: every item fits)
     bool toolbar_menu_open = false;
+    Rect measure_window;                // where the Measure window was drawn (w 0: not shown)
     std::vector<std::string> examples;  // the tapes the server offers (the start screen), none natively
     panels::PanelLayout layout;         // the side panels (kept across sessions: Preferences::set_layout)
     bool layout_changed = false;        // by the user this frame: saved once the mouse is up

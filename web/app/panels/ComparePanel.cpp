@@ -24,6 +24,30 @@ void polyline(ImDrawList* dl, const View& view, Point o, const std::vector<Point
     dl->AddPolyline(px.data(), static_cast<int>(px.size()), colour, ImDrawFlags_None, width);
 }
 
+// The part of the program (mm) the view shows.
+Box seen_box(const View& view, Point origin) {
+    Box box;
+    const Rect& a = view.area;
+    for (const auto& [x, y] : {std::pair{a.x, a.y}, {a.x + a.w, a.y}, {a.x, a.y + a.h}, {a.x + a.w, a.y + a.h}}) {
+        const Point p = view.to_world(x, y);
+        box.add(Point{p.x + origin.x, p.y + origin.y});
+    }
+    return box;
+}
+
+bool overlap(const Box& a, const Box& b) {
+    return !a.empty && !b.empty && a.min_x <= b.max_x && b.min_x <= a.max_x && a.min_y <= b.max_y && b.min_y <= a.max_y;
+}
+
+// A contour's points as drawn: the kept ones, or, once the view is so close that their chords would show as facets,
+// the contour flattened again within kCompareMaxSagittaPx (only a contour in view: few are, that close).
+const std::vector<Point>& drawn_points(const std::vector<Point>& kept, const DiffContour& c, const View& view,
+                                       const Box& seen, std::vector<Point>& scratch) {
+    if (kCompareChordMm * view.zoom <= kCompareMaxSagittaPx || !overlap(c.box, seen)) return kept;
+    flatten_contour(c, kCompareMaxSagittaPx / view.zoom, scratch);
+    return scratch;
+}
+
 }  // namespace
 
 void Panels::compare_overlay(ImDrawList* dl) {
@@ -31,12 +55,17 @@ void Panels::compare_overlay(ImDrawList* dl) {
     if (!c) return;
     const View& view = p_.navigation.view();
     const Point o = p_.navigation.origin();
+    const Box seen = seen_box(view, o);
+    std::vector<Point> scratch;
     std::size_t points = 0;
     for (const ContourDiff& d : c->diff.contours) {
-        if (d.change != ContourChange::Same && d.a >= 0)
-            polyline(dl, view, o, c->a_lines[static_cast<std::size_t>(d.a)], kAColor, 3.5f);
+        if (d.change != ContourChange::Same && d.a >= 0) {
+            const auto k = static_cast<std::size_t>(d.a);
+            polyline(dl, view, o, drawn_points(c->a_lines[k], c->a.contours[k], view, seen, scratch), kAColor, 3.5f);
+        }
         if (d.b < 0) continue;
-        const auto& pts = c->b_lines[static_cast<std::size_t>(d.b)];
+        const auto k = static_cast<std::size_t>(d.b);
+        const auto& pts = drawn_points(c->b_lines[k], c->b.contours[k], view, seen, scratch);
         if (d.change == ContourChange::Same && (points += pts.size()) > kMaxSamePoints) continue;
         polyline(dl, view, o, pts, d.change == ContourChange::Same ? kSameColor : kBColor,
                  d.change == ContourChange::Same ? 1.f : 2.f);
@@ -68,7 +97,7 @@ void Panels::compare_window() {
         if (d.change == ContourChange::Same) continue;
         ImGui::PushID(row++);
         if (ImGui::Selectable(difference_text(c->a, c->b, d, ui_lang()).c_str()))  // (essi diff's words)
-            p_.compare.show_contour(static_cast<std::size_t>(d.a >= 0 ? d.a : d.b), d.a < 0);
+            p_.compare.show_difference(d);
         ImGui::PopID();
     }
     if (row == 0) ImGui::TextColored(to_vec4(kOkColor), "%s", tr(Msg::UiSameCut));

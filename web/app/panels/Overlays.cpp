@@ -3,6 +3,9 @@
 // direction of the selected motions, and the measure (its points, its line and its window).
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <utility>
 
 #include "app/Input.hpp"
 #include "app/panels/Panels.hpp"
@@ -104,9 +107,30 @@ void selection_arrows(ImDrawList* dl, const Document& doc, const Selection& sel,
     }
 }
 
-// The measure's numbers in the shown coordinates (a and b: program mm).
-void measure_window(const Measure& m, Point b, const Coordinates& cs, const Rect& a) {
-    ImGui::SetNextWindowPos(ImVec2(a.x + 10, a.y + 10));
+// Where the Measure window goes: the corner of the drawing area farthest from the points it must not cover (the
+// mouse, A, B), the top left when that is as far as any other; its position and pivot.
+std::pair<ImVec2, ImVec2> measure_corner(const Rect& a, std::initializer_list<ImVec2> keep_clear) {
+    constexpr float kInset = 10;
+    const ImVec2 pivots[] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};  // top left, top right, bottom left, bottom right
+    std::pair<ImVec2, ImVec2> best;
+    float best_clearance = -1;
+    for (const ImVec2& pivot : pivots) {
+        const ImVec2 at(pivot.x == 0 ? a.x + kInset : a.x + a.w - kInset,
+                        pivot.y == 0 ? a.y + kInset : a.y + a.h - kInset);
+        float clearance = std::numeric_limits<float>::max();
+        for (const ImVec2& p : keep_clear) clearance = std::min(clearance, std::hypot(p.x - at.x, p.y - at.y));
+        if (clearance > best_clearance + 1) {
+            best_clearance = clearance;
+            best = {at, pivot};
+        }
+    }
+    return best;
+}
+
+// The measure's numbers in the shown coordinates (a and b: program mm), in the corner `corner` (measure_corner);
+// where it was drawn goes to `drawn`.
+void measure_window(const Measure& m, Point b, const Coordinates& cs, std::pair<ImVec2, ImVec2> corner, Rect& drawn) {
+    ImGui::SetNextWindowPos(corner.first, ImGuiCond_Always, corner.second);
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin(tr_id(Msg::UiMeasureTitle, "Measure").c_str(), nullptr,
                  ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
@@ -124,25 +148,30 @@ void measure_window(const Measure& m, Point b, const Coordinates& cs, const Rect
                     tr(cs.machine() ? Msg::UiMachineCoordinates : Msg::UiProgramCoordinates));
     }
     ImGui::TextDisabled("%s", tr(Msg::UiMeasureLeave));
+    const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    drawn = Rect{at.x, at.y, size.x, size.y};
     ImGui::End();
 }
 
 // The snapped point under the mouse, the line from A to B (or to the mouse), and the numbers.
-void measure(ImDrawList* dl, const Document* doc, const Measure& m, const View& view, const Coordinates& cs, Point o) {
+void measure(ImDrawList* dl, const Document* doc, const Measure& m, const View& view, const Coordinates& cs, Point o,
+             Rect& window) {
     const ImGuiIO& io = ImGui::GetIO();
     bool snapped = false;
     const Point hover = snap(doc, view, io.MousePos.x, io.MousePos.y, &snapped);
     const ImVec2 hs = to_im(view.to_screen({hover.x - o.x, hover.y - o.y}));
     if (snapped) dl->AddCircle(hs, 7, kMeasureColor, 16, 2);
     const Point b = m.points == 2 ? m.b : hover;
+    const ImVec2 as = to_im(view.to_screen({m.a.x - o.x, m.a.y - o.y}));
+    const ImVec2 bs = to_im(view.to_screen({b.x - o.x, b.y - o.y}));
     if (m.points >= 1) {
-        const ImVec2 as = to_im(view.to_screen({m.a.x - o.x, m.a.y - o.y}));
-        const ImVec2 bs = to_im(view.to_screen({b.x - o.x, b.y - o.y}));
         dl->AddLine(as, bs, kMeasureColor, 1.5f);
         dl->AddCircleFilled(as, 3.5f, kMeasureColor);
         dl->AddCircleFilled(bs, 3.5f, kMeasureColor);
     }
-    measure_window(m, b, cs, view.area);
+    const ImVec2 mouse = io.MousePos;
+    const auto corner = m.points == 0 ? measure_corner(view.area, {mouse}) : measure_corner(view.area, {mouse, as, bs});
+    measure_window(m, b, cs, corner, window);
 }
 
 // The machine's table (the profile's `table`, docs/semantics.md §12) where it lies under the program: turned and
@@ -218,7 +247,8 @@ void Panels::overlays() {
     problem_marks(dl);
     const Selection& sel = p_.navigation.selection();
     if (doc && (sel.motion != Selection::npos || sel.line > 0)) selection_arrows(dl, *doc, sel, view);
-    if (p_.measure.active) measure(dl, doc, p_.measure, view, cs, o);
+    p_.ui.measure_window = Rect{0, 0, 0, 0};
+    if (p_.measure.active) measure(dl, doc, p_.measure, view, cs, o, p_.ui.measure_window);
     dl->PopClipRect();
 }
 

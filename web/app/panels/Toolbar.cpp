@@ -76,8 +76,15 @@ float combo_width(std::initializer_list<std::string_view> choices) {
     return w + ImGui::GetStyle().FramePadding.x * 2 + ImGui::GetFrameHeight();
 }
 
+// An item's tooltip. A tooltip follows the mouse: in the bar it would cover the items beside the one hovered, so
+// there it opens under the bar (as far along as the mouse is across the window, so it stays inside it).
 void tooltip(Msg tip) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(tip));
+    if (!ImGui::IsItemHovered()) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.MousePos.y < kToolbarHeight && io.DisplaySize.x > 0)
+        ImGui::SetNextWindowPos(ImVec2(io.MousePos.x, kToolbarHeight + 2), ImGuiCond_Always,
+                                ImVec2(std::clamp(io.MousePos.x / io.DisplaySize.x, 0.f, 1.f), 0.f));
+    ImGui::SetTooltip("%s", tr(tip));
 }
 
 using Parts = Panels::Parts;
