@@ -198,6 +198,7 @@ test('keys pressed within one frame are all applied', async () => {
   await page.waitForTimeout(200);
   assert.equal((await page.evaluate(() => essikit.state())).playback.position, 3, 'a key was applied twice');
   // End, Home, End in one frame: all three, in order (the playback ends).
+  await twoFrames(page);
   await page.evaluate((codes) => {
     for (const key of ['End', 'Home', 'End']) {
       for (const type of ['keydown', 'keyup']) {
@@ -208,5 +209,42 @@ test('keys pressed within one frame are all applied', async () => {
     }
   }, kKeyCodes);
   await until(page, () => !essikit.state().playback.active, null, 'End, Home, End: the playback is still on');
+  await page.close();
+});
+
+// Tabs until `done(state.keyboard)` holds (at most `max` Tabs), a Tab at a time.
+async function tabUntil(page, done, max = 150) {
+  for (let k = 0; k < max; ++k) {
+    if (await page.evaluate(done)) return;
+    await page.keyboard.press('Tab');
+    await twoFrames(page);
+  }
+  assert.ok(await page.evaluate(done), `${max} Tabs did not get there`);
+}
+
+test('the source lines and the toolbar\'s lists: Enter, arrows, Enter', async () => {
+  const page = await newPage();
+  await loadExample(page, 'bad_eia_order.eia');
+  await page.keyboard.press('Tab');  // (the canvas)
+  // The source lines: Enter goes into the list on line 1, Down twice, Enter selects line 3.
+  await tabUntil(page, () => essikit.state().keyboard.list.includes('/source_'));
+  await page.keyboard.press('Enter');
+  await until(page, () => essikit.state().keyboard.window.includes('/source_'), null, 'Enter did not go into the source');
+  for (const key of ['ArrowDown', 'ArrowDown', 'Enter']) await page.keyboard.press(key);
+  await until(page, () => (essikit.state().selection || {}).line === 3, null, 'Down, Down, Enter did not select line 3');
+  // The language list, the toolbar's last control: Enter opens it, Down, Enter chooses Deutsch.
+  await page.keyboard.press('Escape');
+  await page.mouse.click(700, 450);  // (the keyboard's way ends; Tab starts again at the toolbar)
+  await page.keyboard.press('Tab');
+  await until(page, () => essikit.state().keyboard.window === '##toolbar', null, 'Tab did not reach the toolbar');
+  for (let i = 0; i < 12; ++i) {
+    await page.keyboard.press('Tab');
+    await twoFrames(page);
+  }
+  for (const key of ['Enter', 'ArrowDown', 'Enter']) {
+    await page.keyboard.press(key);
+    await twoFrames(page);
+  }
+  await until(page, () => essikit.state().lang === 'de', null, 'Enter, Down, Enter on the language list did not choose German');
   await page.close();
 });
