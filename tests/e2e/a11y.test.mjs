@@ -52,9 +52,16 @@ async function until(page, fn, arg, what) {
   assert.ok(await page.evaluate(fn, arg), what);
 }
 
-function twoFrames(page) {
-  return page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r()))));
+function frames(page, n) {
+  return page.evaluate((k) => new Promise((r) => {
+    const next = () => (k-- > 0 ? requestAnimationFrame(next) : r());
+    next();
+  }), n);
 }
+const twoFrames = (page) => frames(page, 2);
+// After a Tab: down in one frame, up in the next, a window entered in the one after (its first control found
+// while it is drawn) and the focus there in the state of the next.
+const afterTab = (page) => frames(page, 4);
 
 // The verdict as the toolbar says it in English.
 function verdictOf(state) {
@@ -146,7 +153,7 @@ test('Tab reaches the canvas with a visible focus ring, then the panels; arrows 
     const kb = (await page.evaluate(() => essikit.state())).keyboard;
     if (kb.list.includes('diaglist')) break;
     await page.keyboard.press('Tab');
-    await twoFrames(page);
+    await afterTab(page);
   }
   assert.ok(k < 120, 'Tab never reached the Diagnostics list');
   await page.screenshot({ path: path.join(shots, 'a11y-focus-list.png') });
@@ -166,7 +173,7 @@ test('Tab reaches the canvas with a visible focus ring, then the panels; arrows 
   // clears the selection).
   for (k = 0; k < 400 && (await page.evaluate(() => essikit.state().keyboard.mode)) !== 'drawing'; ++k) {
     await page.keyboard.press('Tab');
-    await twoFrames(page);  // (a Tab is down in one frame and up in the next: none queued past the drawing)
+    await afterTab(page);  // (a Tab is down in one frame and up in the next: none queued past the drawing)
   }
   assert.equal((await page.evaluate(() => essikit.state())).keyboard.mode, 'drawing');
   await page.screenshot({ path: path.join(shots, 'a11y-focus-drawing.png') });
@@ -217,7 +224,7 @@ async function tabUntil(page, done, max = 150) {
   for (let k = 0; k < max; ++k) {
     if (await page.evaluate(done)) return;
     await page.keyboard.press('Tab');
-    await twoFrames(page);
+    await afterTab(page);
   }
   assert.ok(await page.evaluate(done), `${max} Tabs did not get there`);
 }
@@ -239,7 +246,7 @@ test('the source lines and the toolbar\'s lists: Enter, arrows, Enter', async ()
   await until(page, () => essikit.state().keyboard.window === '##toolbar', null, 'Tab did not reach the toolbar');
   for (let i = 0; i < 12; ++i) {
     await page.keyboard.press('Tab');
-    await twoFrames(page);
+    await afterTab(page);
   }
   for (const key of ['Enter', 'ArrowDown', 'Enter']) {
     await page.keyboard.press(key);

@@ -18,12 +18,19 @@ constexpr ImGuiWindowFlags kNotInTabOrder = ImGuiWindowFlags_ChildWindow | ImGui
                                             ImGuiWindowFlags_Popup | ImGuiWindowFlags_NoNavInputs |
                                             ImGuiWindowFlags_NoNavFocus;
 
+// A window with a control to focus (a message with text only has none: the page's live region says it), in the
+// last frame or this one.
+bool has_controls(const ImGuiWindow* w) {
+    constexpr int kMain = 1 << ImGuiNavLayer_Main;
+    return ((w->DC.NavLayersActiveMask | w->DC.NavLayersActiveMaskNext) & kMain) != 0;
+}
+
 // The windows Tab goes through, shown in the last frame, in reading order: by rows (the toolbar and the side panels,
 // then the windows over the drawing), left to right, top first.
 std::vector<ImGuiWindow*> tab_order() {
     std::vector<ImGuiWindow*> out;
     for (ImGuiWindow* w : GImGui->Windows)
-        if (w->WasActive && !w->Hidden && (w->Flags & kNotInTabOrder) == 0) out.push_back(w);
+        if (w->WasActive && !w->Hidden && (w->Flags & kNotInTabOrder) == 0 && has_controls(w)) out.push_back(w);
     std::stable_sort(out.begin(), out.end(), [](const ImGuiWindow* a, const ImGuiWindow* b) {
         const float ra = std::floor(a->Pos.y / kRowBandPx), rb = std::floor(b->Pos.y / kRowBandPx);
         if (ra != rb) return ra < rb;
