@@ -15,7 +15,14 @@ import {
   webRoot, chromiumPath, examplesDir, shots, freePort, startStaticServer, launch, newPage as openPage,
 } from './support.mjs';
 
-const axePath = createRequire(import.meta.url).resolve('axe-core/axe.min.js');
+function resolveAxe() {
+  try {
+    return createRequire(import.meta.url).resolve('axe-core/axe.min.js');
+  } catch (e) {
+    return null;
+  }
+}
+const axePath = resolveAxe();
 const kWcagTags = ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa'];
 
 let server, baseUrl, browser;
@@ -24,6 +31,7 @@ before(async () => {
   assert.ok(fs.existsSync(path.join(webRoot, 'essi_viewer.wasm')),
             `the viewer is not built in ${webRoot} (cmake --build --preset wasm --target essi_viewer)`);
   assert.ok(fs.existsSync(chromiumPath), `no Chromium at ${chromiumPath} (apt-get install chromium)`);
+  assert.ok(axePath, 'axe-core is not installed in tests/e2e/node_modules (scripts/setup, or npm install there)');
   fs.mkdirSync(shots, { recursive: true });
   server = await startStaticServer(await freePort());
   baseUrl = `http://127.0.0.1:${server.address().port}/`;
