@@ -115,7 +115,10 @@ void KeyboardFocus::tab(bool forward) {
     }
     // Through the window's controls (ImGui's tabbing request, over every control and not only text fields); whether
     // it ran past the last one is known once the panels are drawn (end_frame).
-    g.NavTabbingDir = forward ? 1 : -1;
+    // With no control focused yet in the window (its first one is still being found: two quick Tabs), forward goes to
+    // its first control and backward to its last.
+    from_start_ = g.NavId == 0;
+    g.NavTabbingDir = forward ? (from_start_ ? 0 : 1) : -1;
     ImGui::NavMoveRequestSubmit(ImGuiDir_None, forward ? ImGuiDir_Down : ImGuiDir_Up,
                                 ImGuiNavMoveFlags_Tabbing | ImGuiNavMoveFlags_FocusApi,
                                 ImGuiScrollFlags_KeepVisibleEdgeX | ImGuiScrollFlags_KeepVisibleEdgeY);
@@ -143,7 +146,9 @@ void KeyboardFocus::next_window(bool forward) {
 void KeyboardFocus::end_frame(const Rect& a) {
     ImGuiContext& g = *GImGui;
     // A tab that found no control after (before) the focused one in its window: on to the next (previous) window.
-    if (tabbing_ != Tabbing::None && g.NavMoveScoringItems && (g.NavMoveFlags & ImGuiNavMoveFlags_Tabbing)) {
+    const bool found = g.NavMoveResultLocal.ID != 0 || g.NavTabbingResultFirst.ID != 0;
+    if (tabbing_ != Tabbing::None && g.NavMoveScoringItems && (g.NavMoveFlags & ImGuiNavMoveFlags_Tabbing) &&
+        !(from_start_ && found)) {
         ImGui::NavMoveRequestCancel();  // (ImGui would wrap around to the window's first control)
         pending_ = tabbing_;
     }

@@ -36,6 +36,7 @@ private:
     UiState& ui_;
     Tabbing tabbing_ = Tabbing::None;   // a tab through a window's controls asked for this frame
     Tabbing pending_ = Tabbing::None;   // a tab that ran past its window's controls: the next window, next frame
+    bool from_start_ = false;           // that tab began with no control focused in its window
     bool tabbed_ = false;               // a tab was asked for in the last frame (its landing activates nothing)
     const void* tab_window_ = nullptr;  // the window that tab runs through (its root: where the next one is found)
 };
