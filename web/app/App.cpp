@@ -28,6 +28,7 @@ bool App::init_graphics() {
     ImGuiIO& io = ImGui::GetIO();
     if (!io.Fonts->IsBuilt()) io.Fonts->Build();  // (ui_renderer_.init() makes the atlas unless the GPU refused it)
     io.IniFilename = nullptr;                     // no imgui.ini: the layout is fixed
+    keyboard_.init();
     preferences_.graphics_ready(graphics_ok_);
     return graphics_ok_;
 }
@@ -45,14 +46,17 @@ void App::frame() {
         if (const MotionTimes* times = tape_facts_.motion_times()) playback_.advance(io.DeltaTime, *times);
         navigation_.follow(*d, playback_);
     }
+    keyboard_.begin_frame();
     input_.handle_shortcuts();
     input_.handle_canvas();
     load_.set_colour_by(layers_.colour_by, &tape_facts_);
     load_.maybe_rebuild(view.chord_tolerance_mm());
     panels_.draw();
+    keyboard_.end_frame(view.area);
     prepare_scene();  // (drawn by render(), below the panels)
     session_.end_frame();
     announce_selection();
+    announce_mirror();
 }
 
 void App::prepare_scene() {
@@ -77,6 +81,14 @@ void App::announce_selection() {
     if (s.line == announced_.line && s.motion == announced_.motion) return;
     announced_ = s;
     platform_.selection_changed(s.line, s.motion == Selection::npos ? -1 : static_cast<long long>(s.motion));
+}
+
+void App::announce_mirror() {
+    const std::string* loading = load_.loading() ? &load_.loading_name() : nullptr;
+    bool changed = false;
+    const PageMirror& m =
+        mirror_.update(session_.document(), load_.load_frames().handed, navigation_.selection(), loading, &changed);
+    if (changed) platform_.show_mirror(m);
 }
 
 void App::render(bool keep_unchanged) {

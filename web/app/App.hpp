@@ -21,11 +21,13 @@
 #include "app/Compare.hpp"
 #include "app/Exports.hpp"
 #include "app/Input.hpp"
+#include "app/KeyboardFocus.hpp"
 #include "app/Layers.hpp"
 #include "app/LoadController.hpp"
 #include "app/Measure.hpp"
 #include "app/Navigation.hpp"
 #include "app/Notices.hpp"
+#include "app/PageMirror.hpp"
 #include "app/Playback.hpp"
 #include "app/PlatformServices.hpp"
 #include "app/Preferences.hpp"
@@ -51,6 +53,9 @@ public:
     App& operator=(const App&) = delete;
 
     bool init_graphics();  // after the GL context and ImGui exist
+    // Before ImGui's frame begins (ImGui::NewFrame), once the frame's key events are in ImGui's IO and after the
+    // platform backend's NewFrame.
+    void before_frame() { keyboard_.before_new_frame(); }
     // One frame: UI, input, drawing. Called by the platform loop between NewFrame and Render.
     void frame();
     // Draws the frame: the scene frame() prepared, then the panels (ImGui's draw data, after ImGui::Render).
@@ -72,6 +77,7 @@ public:
 private:
     void prepare_scene();
     void announce_selection();               // the selection told to the page when it changed
+    void announce_mirror();                  // the page's title and text for screen readers, when they changed
     void save_view_png(int fb_w, int fb_h);  // Export > View as PNG: the scene and its overlays, no window
 
     PlatformServices& platform_;
@@ -96,10 +102,12 @@ private:
     Exports exports_;
     ShareLinks shares_;
     Input input_;
+    KeyboardFocus keyboard_{ui_};
     ViewerParts parts_;  // (what the panels and the page's API are given)
     panels::Panels panels_;
     Automation automation_;
     Selection announced_;  // the selection the page last heard of (PlatformServices::selection_changed)
+    PageMirrorKeeper mirror_;
 };
 
 }  // namespace essi::viewer

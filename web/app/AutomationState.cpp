@@ -319,6 +319,10 @@ void add_reading(json& j, const Automation::Parts& p) {
 void add_panels(json& j, const Automation::Parts& p) {
     const UiState& ui = p.ui;
     j["help"] = ui.help;
+    static constexpr const char* kKeyboardModes[] = {"mouse", "drawing", "panels"};
+    j["keyboard"] = {{"mode", kKeyboardModes[static_cast<int>(ui.keyboard)]},
+                     {"window", ui.keyboard_window},
+                     {"list", ui.keyboard_list}};
     j["share_url"] = p.shares.text();
     j["link_problem"] = p.session.link_problem().text();
     j["copied"] = p.exports.copied();

@@ -129,8 +129,9 @@ void Input::handle_characters() {
             case '?': p_.ui.help = !p_.ui.help; break;
             case 'm':
             case 'M': p_.measure.toggle(); break;
-            case ' ':
-                if (const Document* d = p_.session.document()) p_.playback.toggle(d->motions.size());
+            case ' ':  // (on a focused control Space presses it)
+                if (const Document* d = p_.session.document(); d && p_.ui.keyboard != KeyboardMode::Panels)
+                    p_.playback.toggle(d->motions.size());
                 break;
             case '+':
             case '=': view.zoom_at(view.ox(), view.oy(), kKeyZoom); break;
@@ -163,16 +164,18 @@ void Input::toggle_side_panel(bool left) {
     p_.preferences.set_layout(l);
 }
 
-// Keys without a character: Esc, F1, the playback's arrows, Home and End.
+// Keys without a character: Esc, F1, the playback's arrows, Home and End. While the keyboard's focus is on a control
+// (KeyboardFocus) the arrows, Home and End move through the panels, and Esc backs out of a list, not the selection.
 void Input::handle_keys() {
+    const bool on_control = p_.ui.keyboard == KeyboardMode::Panels;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
         if (p_.measure.active) p_.measure.leave();
         else if (p_.ui.help) p_.ui.help = false;
-        else p_.navigation.selection().clear();
+        else if (!on_control) p_.navigation.selection().clear();
     }
     if (ImGui::IsKeyPressed(GLFW_KEY_F1)) p_.ui.help = !p_.ui.help;
     const Document* doc = p_.session.document();
-    if (!doc || doc->motions.empty()) return;
+    if (!doc || doc->motions.empty() || on_control) return;
     const std::size_t n = doc->motions.size();
     Playback& playback = p_.playback;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) playback.step_forward(n);

@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "app/PageMirror.hpp"
 #include "essi/i18n.hpp"
 #include "render/UiFonts.hpp"
 
@@ -77,6 +78,10 @@ public:
     // The selected line (0: none) and motion (-1: none) changed: the page hears of it through
     // window.essikitSelected(line, motion) (<essi-viewer> fires essi-select); nothing natively.
     virtual void selection_changed(std::uint32_t line, long long motion) = 0;
+    // What the page shows for screen readers changed (PageMirror: the title, the live region, the problems): the
+    // browser puts it in the page's title and its elements beside the canvas (window.essikitMirror); the desktop
+    // sets its window's title.
+    virtual void show_mirror(const PageMirror& mirror) = 0;
 };
 
 }  // namespace essi::viewer

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,11 @@ struct ToolbarItem {
     bool in_menu = false;
 };
 
+// Where the keyboard's focus is (KeyboardFocus): nowhere in particular (the mouse's way: the shortcuts act on the
+// drawing), on the drawing (reached with Tab: the shortcuts act on it, a focus ring around it), or on a control of the
+// toolbar, a panel or a window (ImGui's keyboard navigation: arrows, Enter, Esc; the playback's keys wait).
+enum class KeyboardMode : std::uint8_t { Mouse, Drawing, Panels };
+
 struct UiState {
     bool help = false;
     bool share_popup = false;                    // the Share link window (ShareLinks::text)
@@ -30,6 +36,9 @@ struct UiState {
     std::vector<std::string> examples;  // the tapes the server offers (the start screen), none natively
     panels::PanelLayout layout;         // the side panels (kept across sessions: Preferences::set_layout)
     bool layout_changed = false;        // by the user this frame: saved once the mouse is up
+    KeyboardMode keyboard = KeyboardMode::Mouse;
+    std::string keyboard_window;  // the window the keyboard's focus is in (ImGui's name), empty: none
+    std::string keyboard_list;    // the list (child window) whose box has the focus, empty: none
 };
 
 }  // namespace essi::viewer

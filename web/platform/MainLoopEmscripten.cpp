@@ -12,12 +12,15 @@
 #include <cstdio>
 
 #include "app/App.hpp"
+#include "app/KeyQueue.hpp"
 #include "platform/ApiEmscripten.hpp"
 #include "platform/Platform.hpp"
 
 namespace {
 
 using essi::viewer::App;
+using essi::viewer::KeyEvent;
+using essi::viewer::KeyQueue;
 
 // The page's loop: its window, its app, and what the loop keeps between frames.
 struct Loop {
@@ -39,6 +42,22 @@ void on_scroll(GLFWwindow* window, double dx, double dy) {
         return -d / (std::fabs(d) < kWheelLineModeBelow ? kWheelLinesPerNotch : kWheelPixelsPerNotch);
     };
     ImGui_ImplGlfw_ScrollCallback(window, notches(dx), notches(dy));
+}
+
+// Key events wait in a queue and reach ImGui a change per key and frame (app/KeyQueue.hpp): a key tapped within one
+// frame, or several arrows at once, are all seen.
+KeyQueue& key_queue() {
+    static KeyQueue queue;
+    return queue;
+}
+
+void on_key(GLFWwindow*, int key, int scancode, int action, int mods) {
+    key_queue().push({key, scancode, action, mods});
+}
+
+void apply_keys(GLFWwindow* window) {
+    for (const KeyEvent& e : key_queue().take_frame())
+        ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, e.action, e.mods);
 }
 
 // While the viewer loads, slices of its work also run between two animation frames (a task queued after each
@@ -112,7 +131,9 @@ void frame(void* arg) {
     Loop& loop = *static_cast<Loop*>(arg);
     fit_canvas(loop);
     glfwPollEvents();
+    apply_keys(loop.window);
     ImGui_ImplGlfw_NewFrame();
+    loop.app->before_frame();  // (after the backend, which clears the navigation inputs)
     apply_pixel_ratio(loop.pixel_ratio);
     ImGui::NewFrame();
     loop.app->frame();
@@ -156,6 +177,7 @@ int main() {
     ImGui::CreateContext();
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     glfwSetScrollCallback(window, on_scroll);  // replaces the backend's (on_scroll calls it)
+    glfwSetKeyCallback(window, on_key);        // replaces the backend's (apply_keys calls it)
     // The platform, the app and the loop live as long as the page (main returns; the runtime stays).
     static essi::viewer::platform::Platform platform;
     static App app(platform);

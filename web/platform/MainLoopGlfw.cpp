@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "app/App.hpp"
+#include "app/KeyQueue.hpp"
 #include "platform/FilesGlfw.hpp"
 #include "platform/Platform.hpp"
 
@@ -124,6 +125,22 @@ int write_outputs(const Options& opt, GLFWwindow* window, const essi::viewer::Au
     return status;
 }
 
+// Key events wait in a queue and reach ImGui a change per key and frame (app/KeyQueue.hpp): a key tapped within one
+// frame is seen.
+essi::viewer::KeyQueue& key_queue() {
+    static essi::viewer::KeyQueue queue;
+    return queue;
+}
+
+void on_key(GLFWwindow*, int key, int scancode, int action, int mods) {
+    key_queue().push({key, scancode, action, mods});
+}
+
+void apply_keys(GLFWwindow* window) {
+    for (const essi::viewer::KeyEvent& e : key_queue().take_frame())
+        ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, e.action, e.mods);
+}
+
 // Loads the tape and runs the frames; the exit status.
 int run(const Options& opt, GLFWwindow* window) {
     using namespace essi::viewer;
@@ -145,7 +162,9 @@ int run(const Options& opt, GLFWwindow* window) {
     long frames_left = opt.frames;  // counted once the loading and the drawing's build are done
     while (!glfwWindowShouldClose(window)) {
         glfwPollEvents();
+        apply_keys(window);
         ImGui_ImplGlfw_NewFrame();
+        app.before_frame();  // (after the backend, which clears the navigation inputs)
         ImGui::NewFrame();
         app.frame();
         ImGui::Render();
@@ -179,6 +198,7 @@ int main(int argc, char** argv) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui_ImplGlfw_InitForOpenGL(window, true);
+    glfwSetKeyCallback(window, on_key);  // replaces the backend's (apply_keys calls it)
     const int status = run(opt, window);
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();

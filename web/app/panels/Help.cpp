@@ -35,6 +35,8 @@ constexpr Shortcut kShortcuts[] = {
     {Msg::UiKeyCtrlV, nullptr, Msg::UiKeyCtrlVDoes},
     {Msg::UiKeyDrop, nullptr, Msg::UiKeyDropDoes},
     {Msg::UiKeyHelp, nullptr, Msg::UiKeyHelpDoes},
+    {Msg::UiKeyTab, nullptr, Msg::UiKeyTabDoes},
+    {Msg::UiKeyArrowsEnter, nullptr, Msg::UiKeyArrowsEnterDoes},
 };
 
 void colours() {

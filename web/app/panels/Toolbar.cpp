@@ -11,6 +11,7 @@
 #include "app/panels/Panels.hpp"
 #include "app/panels/UiText.hpp"
 #include "app/Language.hpp"
+#include "app/PageMirror.hpp"
 #include "essi/dialect.hpp"
 #include "essi/profile.hpp"
 #include "render/UiFonts.hpp"
@@ -105,14 +106,6 @@ std::vector<std::string> profile_choices(const Session& session) {
 
 Msg compare_label(const CompareMode& compare) {
     return compare.result() ? Msg::UiEndCompare : compare.pending() ? Msg::UiCompareDropB : Msg::UiCompare;
-}
-
-// The tape's name and "ok" or its error and warning counts.
-std::string verdict_text(const Document& doc) {
-    const std::size_t e = doc.count(Severity::Error), w = doc.count(Severity::Warning);
-    if (e == 0 && w == 0) return tr(Msg::UiVerdictOk);
-    if (e == 0) return tr(Msg::UiVerdictWarnings, {w});
-    return tr(Msg::UiVerdictErrors, {e, w});
 }
 
 float item_width(const Parts& p, Item item) {
