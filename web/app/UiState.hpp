@@ -4,8 +4,11 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "app/ProblemList.hpp"
+#include "app/ScreenLayout.hpp"
 #include "app/View.hpp"
 #include "app/panels/Layout.hpp"
 
@@ -29,6 +32,18 @@ struct UiState {
     std::vector<std::string> examples;  // the tapes the server offers (the start screen), none natively
     panels::PanelLayout layout;         // the side panels (kept across sessions: Preferences::set_layout)
     bool layout_changed = false;        // by the user this frame: saved once the mouse is up
+    bool compact = false;               // the window is narrow: the bottom sheet instead of the side panels
+    BottomSheet sheet;                  // the bottom sheet of the compact layout
+    // The problems list (ProblemList) of the document's diagnostics, made again when they change, and its groups
+    // that are open.
+    ProblemList problems;
+    const void* problems_of = nullptr;
+    std::size_t problems_count = ~std::size_t(0);
+    std::vector<bool> open_groups;
+    std::vector<Rect> group_rects;  // the groups' rows as the last frame drew them (w 0: not drawn)
+    // Controls the last frame drew, by name (state().controls): the sheet's tabs, next and previous problem.
+    std::vector<std::pair<std::string, Rect>> controls;
+    Rect tooltip;  // the tooltip the last frame showed (w 0: none), state().tooltip
 };
 
 }  // namespace essi::viewer

@@ -49,9 +49,13 @@ void Panels::compare_window() {
     const Rect& a = p_.navigation.view().area;
     ImGui::SetNextWindowPos(ImVec2(a.x + a.w - 8, a.y + 8), ImGuiCond_Appearing, ImVec2(1.f, 0.f));
     ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 16, 420.f), 0), ImGuiCond_Appearing);
+    // In a low window it opens as its title bar alone (within the fitted view's margin: the plate's edge stays in
+    // sight); a click on its arrow opens it.
+    const bool low = ImGui::GetIO().DisplaySize.y < kShortWindowPx;
+    if (low) ImGui::SetNextWindowCollapsed(true, ImGuiCond_Appearing);
     bool open = true;
     ImGui::Begin(tr_id(Msg::UiCompareTitle, "Compare").c_str(), &open,
-                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+                 ImGuiWindowFlags_NoSavedSettings | (low ? 0 : ImGuiWindowFlags_NoCollapse));
     const Document* doc = p_.session.document();
     ImGui::TextWrapped("A: %s  B: %s", doc ? doc->name.c_str() : "-", c->name.c_str());
     ImGui::TextColored(ImVec4(0.31f, 0.86f, 1, 1), "%s", tr(Msg::UiBContours));

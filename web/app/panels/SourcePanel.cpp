@@ -155,4 +155,7 @@ void Panels::source_panel() {
     ImGui::End();
 }
 
+void Panels::source_view() { source(p_); }
+void Panels::inspector_view() { inspector(p_); }
+
 }  // namespace essi::viewer::panels
