@@ -2451,3 +2451,57 @@ test('many findings of one code are one row that opens to list them; state() pag
   await page.screenshot({ path: path.join(shots, 'phone-many-findings-open.png') });
   await page.close();
 });
+
+test('a tape with a million findings of one code loads with frames never a second apart; its list is one row', async () => {
+  const page = await newPage();
+  const tape = '+10+0 \n'.repeat(1000000) + '64\n';  // 7 MB, one W109 a line
+  const file = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'essi-million-')), 'million.esi');
+  fs.writeFileSync(file, tape);
+  const cli = cliReportOf(file);
+  // (the path layers hidden: this test is about the findings, not SwiftShader drawing a million segments)
+  await page.evaluate(() => { for (const k of [0, 1, 2, 3]) essikit.setLayer(k, false); });
+  await page.evaluate(() => {
+    window.__frames = [];
+    const tick = (t) => { window.__frames.push(t); if (!window.__stop) requestAnimationFrame(tick); };
+    requestAnimationFrame(tick);
+  });
+  const s = await dropFile(page, 'million.esi', Buffer.from(tape));
+  const frameTimes = await page.evaluate(() => { window.__stop = true; return window.__frames; });
+  const gaps = frameTimes.slice(1).map((t, i) => t - frameTimes[i]);
+  const maxGap = Math.max(...gaps);
+  console.log(`a million W109: ${frameTimes.length} frames while loading, the longest gap ${maxGap.toFixed(0)} ms`);
+  assert.equal(s.load.at_once, false);
+  assert.ok(frameTimes.length >= 5, `${frameTimes.length} frames while loading`);
+  assert.ok(maxGap < 1000, `the frames stopped for ${maxGap} ms`);
+  // 1 000 kept and the cap's summary of the 999 000 more: one row
+  assert.equal(s.problems.total, cli.diagnostics.length);
+  assert.equal(s.problems.total, 1001);
+  assert.deepEqual(s.diagnostics, cli.diagnostics.slice(0, 100));
+  await nextFrames(page, 3);
+  const groups = (await page.evaluate(() => essikit.state())).problems.groups;
+  assert.deepEqual(groups.map((g) => [g.code, g.findings, g.kept]), [['W109', 1000000, 1001]]);
+  await page.close();
+});
+
+test('at 1024x600 the problems list is on the screen and the Compare window leaves the plate\'s top edge in sight', async () => {
+  const page = await openPage(browser, baseUrl, { width: 1024, height: 600 });
+  const { state } = await loadExample(page, 'plan_collision.esi');
+  await nextFrames(page, 3);
+  let s = await page.evaluate(() => essikit.state());
+  // the left panel's Diagnostics section, its buttons above the list, inside the window
+  const next = s.controls.next_problem;
+  assert.ok(next && next[0] + next[2] <= s.view.area[0] && next[1] >= 38 && next[1] + next[3] <= 600 - 40, JSON.stringify(next));
+  await page.screenshot({ path: path.join(shots, 'problems-1024x600.png') });
+  // compare with itself: the window over the drawing no lower than the fitted view's margin (24 px)
+  const text = fs.readFileSync(path.join(examplesDir, 'plan_collision.esi'), 'utf8');
+  await page.evaluate((t) => essikit.compare('plan_collision_b.esi', t), text);
+  await nextFrames(page, 4);
+  s = await page.evaluate(() => essikit.state());
+  const w = s.controls.compare_window;
+  assert.ok(w, JSON.stringify(s.controls));
+  const top = await page.evaluate(([x, y]) => essikit.project(x, y), [0, state.bbox_mm.max_y]);
+  assert.ok(w[1] + w[3] <= top.y + 1, `the Compare window (${w}) covers the plate's top edge at y ${top.y}`);
+  await page.screenshot({ path: path.join(shots, 'compare-1024x600.png') });
+  await page.evaluate(() => essikit.endCompare());
+  await page.close();
+});
