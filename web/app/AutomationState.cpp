@@ -318,12 +318,13 @@ void add_reading(json& j, const Automation::Parts& p) {
 
 // A page of the diagnostics (`diagnostics`, as the report writes them) and what the problems list shows of them:
 // {total, offset, limit, shown, groups: [{code, severity, findings, kept, open, rect}]}.
-void add_problems(json& j, const Document& doc, const UiState& ui, std::size_t shown, ProblemPage page) {
+void add_problems(json& j, const Document& doc, const UiState& ui, const LoadController& load, std::size_t shown,
+                  ProblemPage page) {
     const std::size_t total = doc.diagnostics.size(), end = page.end(total);
     const std::size_t first = std::min(page.offset, total);
     j["diagnostics"] = diagnostics_to_json(std::span<const Diagnostic>(doc.diagnostics).subspan(first, end - first));
     json groups = json::array();
-    const bool current = ui.problems_of == &doc && ui.problems_count == total;  // (the list drawn last)
+    const bool current = ui.problems_of == UiState::ProblemsOf{&doc, load.load_frames().handed, total};  // (as drawn)
     for (std::size_t g = 0; current && g < ui.problems.groups().size(); ++g) {
         const ProblemGroup& group = ui.problems.groups()[g];
         const Rect r = g < ui.group_rects.size() ? ui.group_rects[g] : Rect{0, 0, 0, 0};
@@ -382,7 +383,7 @@ std::string Automation::state_json(ProblemPage page) const {
     const Document* doc = p_.session.document();
     add_loading(j, p_.load, doc != nullptr, p_.scene, p_.session.frames());
     add_reading(j, p_);
-    if (doc) add_problems(j, *doc, p_.ui, p_.navigation.problem(), page);
+    if (doc) add_problems(j, *doc, p_.ui, p_.load, p_.navigation.problem(), page);
     const Selection& selection = p_.navigation.selection();
     const Coordinates cs = p_.navigation.coordinates();
     j["selection"] = selection_json(selection);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,11 +35,16 @@ struct UiState {
     bool layout_changed = false;        // by the user this frame: saved once the mouse is up
     bool compact = false;               // the window is narrow: the bottom sheet instead of the side panels
     BottomSheet sheet;                  // the bottom sheet of the compact layout
-    // The problems list (ProblemList) of the document's diagnostics, made again when they change, and its groups
-    // that are open.
+    // The problems list (ProblemList) of the document's diagnostics, made again when they change (another load,
+    // more findings), and its groups that are open.
+    struct ProblemsOf {
+        const void* document = nullptr;
+        std::uint64_t handed_frame = 0;  // its load's (LoadController::LoadFrames::handed)
+        std::size_t diagnostics = 0;
+        friend bool operator==(const ProblemsOf&, const ProblemsOf&) = default;
+    };
     ProblemList problems;
-    const void* problems_of = nullptr;
-    std::size_t problems_count = ~std::size_t(0);
+    ProblemsOf problems_of;
     std::vector<bool> open_groups;
     std::vector<Rect> group_rects;  // the groups' rows as the last frame drew them (w 0: not drawn)
     // Controls the last frame drew, by name (state().controls): the sheet's tabs, next and previous problem.

@@ -18,6 +18,7 @@ Rect tooltip_rect() {
 
 void Panels::draw() {
     p_.ui.controls.clear();
+    p_.ui.group_rects.assign(p_.ui.group_rects.size(), Rect{0, 0, 0, 0});  // (drawn again, or not shown)
     toolbar();
     if (p_.ui.compact) {
         bottom_sheet();

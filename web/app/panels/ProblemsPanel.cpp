@@ -11,11 +11,11 @@ namespace essi::viewer::panels {
 namespace {
 
 // The list made again when the document's diagnostics change (the cut plan's findings join them later).
-void keep_current(UiState& ui, const Document& doc) {
-    if (ui.problems_of == &doc && ui.problems_count == doc.diagnostics.size()) return;
+void keep_current(UiState& ui, const Document& doc, const LoadController& load) {
+    const UiState::ProblemsOf now{&doc, load.load_frames().handed, doc.diagnostics.size()};
+    if (ui.problems_of == now) return;
     ui.problems.build(doc.diagnostics);
-    ui.problems_of = &doc;
-    ui.problems_count = doc.diagnostics.size();
+    ui.problems_of = now;
     ui.open_groups.assign(ui.problems.groups().size(), false);
 }
 
@@ -105,7 +105,7 @@ void Panels::problems_list() {
         return;
     }
     UiState& ui = p_.ui;
-    keep_current(ui, *doc);
+    keep_current(ui, *doc, p_.load);
     if (!ui.compact) {  // (the compact layout has them over the drawing: floating_problem_steps)
         problem_steps();
         same_line_if_fits(ImGui::CalcTextSize(tr(Msg::UiCopyReport)).x + ImGui::GetStyle().FramePadding.x * 2);

@@ -77,7 +77,7 @@ float combo_width(std::initializer_list<std::string_view> choices) {
 }
 
 void tooltip(Msg tip) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(tip));
+    if (ImGui::IsItemHovered()) wrapped_tooltip(tr(tip));
 }
 
 using Parts = Panels::Parts;
