@@ -84,9 +84,9 @@ TEST(ViewerProblems, AFewFindingsOfACodeKeepARowEach) {
 }
 
 TEST(ViewerProblems, NextAndPreviousGoRoundThoseWithAPlace) {
-    const std::vector<Diagnostic> d = {at_line(DiagCode::E402_BadProfile, 0), at_line(DiagCode::E101_InvalidCharacter, 3),
-                                       at_line(DiagCode::W109_WhitespaceSkipped, 7),
-                                       at_line(DiagCode::E101_InvalidCharacter, 9)};
+    const std::vector<Diagnostic> d = {
+        at_line(DiagCode::E402_BadProfile, 0), at_line(DiagCode::E101_InvalidCharacter, 3),
+        at_line(DiagCode::W109_WhitespaceSkipped, 7), at_line(DiagCode::E101_InvalidCharacter, 9)};
     constexpr std::size_t none = ProblemList::npos;
     EXPECT_EQ(step_problem(d, none, 1), 1u);  // (the first with a line: not the profile's)
     EXPECT_EQ(step_problem(d, 1, 1), 2u);

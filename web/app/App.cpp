@@ -39,8 +39,9 @@ void App::frame() {
     preferences_.keep_dragged_layout();
     View& view = navigation_.view();
     ui_.compact = compact_layout(io.DisplaySize.x);
-    view.area = ui_.compact ? compact_drawing_area(io.DisplaySize.x, io.DisplaySize.y, panels::kToolbarHeight, ui_.sheet)
-                            : panels::drawing_area(io.DisplaySize.x, io.DisplaySize.y, ui_.layout);
+    view.area = ui_.compact
+                    ? compact_drawing_area(io.DisplaySize.x, io.DisplaySize.y, panels::kToolbarHeight, ui_.sheet)
+                    : panels::drawing_area(io.DisplaySize.x, io.DisplaySize.y, ui_.layout);
     session_.begin_frame();
     view.plate = navigation_.coordinates().plate();
     if (const Document* d = session_.document(); d && playback_.playing) {

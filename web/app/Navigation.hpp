@@ -88,7 +88,7 @@ private:
     View view_;
     Selection selection_;
     bool machine_coordinates_ = false;
-    std::optional<ViewRequest> pending_;  // set_view / select_line before the document is there
+    std::optional<ViewRequest> pending_;     // set_view / select_line before the document is there
     std::size_t problem_ = Selection::npos;  // the diagnostic shown last (show_problem)
 };
 

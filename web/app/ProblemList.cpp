@@ -66,7 +66,9 @@ std::size_t step_problem(const std::vector<Diagnostic>& diagnostics, std::size_t
     return ProblemList::npos;
 }
 
-std::size_t ProblemPage::end(std::size_t total) const { return offset >= total ? total : offset + std::min(limit, total - offset); }
+std::size_t ProblemPage::end(std::size_t total) const {
+    return offset >= total ? total : offset + std::min(limit, total - offset);
+}
 
 ProblemPage problem_page(long long offset, long long limit) {
     ProblemPage p;

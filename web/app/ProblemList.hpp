@@ -42,9 +42,9 @@ public:
     static constexpr std::size_t npos = ~std::size_t(0);
 
 private:
-    std::vector<ProblemRow> top_;              // the rows with every group closed
+    std::vector<ProblemRow> top_;  // the rows with every group closed
     std::vector<ProblemGroup> groups_;
-    std::vector<std::size_t> group_of_;        // by diagnostic
+    std::vector<std::size_t> group_of_;  // by diagnostic
 };
 
 // The diagnostic after (step 1) or before (step -1) `current` that has a place on the tape (a line), going round;

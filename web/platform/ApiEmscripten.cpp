@@ -125,7 +125,8 @@ EMSCRIPTEN_KEEPALIVE const char* essi_state() {
 // state({problems: {offset, limit}}): the page of the diagnostics asked for (-1: the default offset or limit).
 EMSCRIPTEN_KEEPALIVE const char* essi_state_page(double offset, double limit) {
     static std::string s;
-    s = g_api ? g_api->state_json(essi::viewer::problem_page(static_cast<long long>(offset), static_cast<long long>(limit)))
+    s = g_api ? g_api->state_json(
+                    essi::viewer::problem_page(static_cast<long long>(offset), static_cast<long long>(limit)))
               : "{\"status\":\"starting\"}";
     return s.c_str();
 }

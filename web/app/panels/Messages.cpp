@@ -58,8 +58,8 @@ void welcome(const Panels::Parts& p, const Rect& a, ImVec2 centre) {
         ImGui::TextUnformatted(tr(Msg::UiWelcomeExamples));
         for (std::size_t k = 0; k < ui.examples.size(); ++k) {
             const float w = ImGui::CalcTextSize(ui.examples[k].c_str()).x + ImGui::GetStyle().FramePadding.x * 2;
-            if (k % kExamplesPerRow != 0 && ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + w -
-                                                    ImGui::GetWindowPos().x <= wrap)
+            if (k % kExamplesPerRow != 0 &&
+                ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + w - ImGui::GetWindowPos().x <= wrap)
                 ImGui::SameLine();
             if (ImGui::SmallButton(ui.examples[k].c_str())) p.platform.open_example(ui.examples[k]);
         }

@@ -34,8 +34,7 @@ void diagnostic_row(const Document& doc, std::size_t i, Navigation& navigation, 
         ImGui::EndPopup();
     }
     const std::string message = diagnostic_message(d, ui_lang());
-    if (ImGui::IsItemHovered())
-        wrapped_tooltip(message + "\n" + std::string(code_summary(d.code, ui_lang())));
+    if (ImGui::IsItemHovered()) wrapped_tooltip(message + "\n" + std::string(code_summary(d.code, ui_lang())));
     ImGui::SameLine();
     ImGui::TextWrapped("%s", message.c_str());
     ImGui::PopID();
@@ -47,8 +46,8 @@ void group_row(UiState& ui, const Document& doc, std::size_t g) {
     ImGui::PushID("group");
     ImGui::PushID(static_cast<int>(g));
     ImGui::PushStyleColor(ImGuiCol_Text, severity_color(group.severity));
-    const std::string label =
-        tr(Msg::UiProblemGroup, {code_name(group.code), count_text(group.total), static_cast<unsigned long long>(group.total)});
+    const std::string label = tr(Msg::UiProblemGroup, {code_name(group.code), count_text(group.total),
+                                                       static_cast<unsigned long long>(group.total)});
     ImGui::SetNextItemOpen(ui.open_groups[g]);
     ui.open_groups[g] = ImGui::TreeNodeEx("group", ImGuiTreeNodeFlags_NoTreePushOnOpen, "%s", label.c_str());
     ImGui::PopStyleColor();
