@@ -2,6 +2,8 @@
 #include "essi/diagnostic_cap.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+#include <string>
 
 namespace essi {
 
@@ -58,6 +60,13 @@ void DiagnosticCap::append_summaries(std::vector<Diagnostic>& out) const {
             c.severity, code, c.first_omitted_line, 1, Msg::DiagnosticsOmittedOfCode,
             {static_cast<unsigned long long>(c.omitted), code_name(code), static_cast<unsigned long long>(max_)}));
     }
+}
+
+// (the summary's first argument is the count, written as its digits: append_summaries)
+std::uint64_t cap_omitted(const Diagnostic& d) {
+    if (d.msg != Msg::DiagnosticsOmittedOfCode) return 0;
+    const std::string& packed = d.args.packed();
+    return std::strtoull(packed.c_str(), nullptr, 10);
 }
 
 }  // namespace essi

@@ -99,17 +99,27 @@ std::string fixed_text(double v, int decimals) {
 
 std::string mm_text(double mm) { return fixed_text(mm, kMmDecimals); }
 
+namespace {
+// The digits of a whole number with the thousands apart ("184377" -> "184 377").
+std::string thousands_apart(std::string_view digits) {
+    std::string out;
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0) out += ' ';
+        out += digits[i];
+    }
+    return out;
+}
+}  // namespace
+
 std::string length_text(double mm) {
     if (!(std::fabs(mm) >= 10000)) return mm_text(mm) + " mm";
     const std::string digits = mm_text(std::fabs(mm) / 1000);  // "184377.775"
     const std::size_t point = digits.find('.');
-    std::string out = mm < 0 ? "-" : "";
-    for (std::size_t i = 0; i < point; ++i) {
-        if (i > 0 && (point - i) % 3 == 0) out += ' ';
-        out += digits[i];
-    }
-    return out + digits.substr(point) + " m";
+    return (mm < 0 ? "-" : "") + thousands_apart(std::string_view(digits).substr(0, point)) + digits.substr(point) +
+           " m";
 }
+
+std::string count_text(std::uint64_t n) { return thousands_apart(std::to_string(n)); }
 
 std::string xml_escape(std::string_view s) {
     std::string out;

@@ -2384,3 +2384,256 @@ test('a collision: its overlapping area filled, its contour and the other part h
   await page.screenshot({ path: path.join(shots, 'collision-hover.png') });
   await page.close();
 });
+
+// ---- a phone's screen and many findings -----------------------------------------------------------------------
+
+// A page as a phone shows it: 390 x 844 CSS pixels, touch, a mobile viewport.
+async function phonePage() {
+  const page = await browser.newPage({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true });
+  page.on('pageerror', (e) => console.log(`pageerror: ${e.message}`));
+  await page.goto(baseUrl);
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 30000 });
+  await page.evaluate(() => essikit.ready);
+  return page;
+}
+
+// A finger dragged over the canvas from (x, y) by (dx, dy): touch events only (a pan, no mouse event follows).
+async function fingerDrag(page, x, y, dx, dy) {
+  const cdp = await page.context().newCDPSession(page);
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x, y }] });
+  for (let k = 1; k <= 4; ++k) {
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: x + (dx * k) / 4, y: y + (dy * k) / 4 }] });
+    await nextFrames(page, 1);
+  }
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await cdp.detach();
+}
+
+function centreOf(r) { return [r[0] + r[2] / 2, r[1] + r[3] / 2]; }
+
+// One W109 (a blank at a block's end) on each of `lines` lines, and an E101 (a letter) on the last line but one.
+function blanksTape(lines) {
+  return '+10+0 \n'.repeat(lines) + '+10x\n64\n';
+}
+
+test('a phone: the drawing takes the width, the panels are a bottom sheet with tabs, the verdict stays in the bar', async () => {
+  const page = await phonePage();
+  let s = await page.evaluate(() => essikit.state());
+  assert.equal(s.compact, true);
+  await page.screenshot({ path: path.join(shots, 'phone-start.png') });
+  ({ state: s } = await loadExample(page, 'plan_collision.esi'));
+  await nextFrames(page, 3);
+  s = await page.evaluate(() => essikit.state());
+  // the drawing: the whole width, from the toolbar to the sheet's tabs
+  assert.deepEqual(s.view.area, [0, 38, 390, 844 - 38 - 40]);
+  assert.deepEqual(s.sheet, { open: false, tab: 'problems' });
+  // the verdict in the bar, inside the screen; what does not fit is in the » menu
+  const verdict = s.toolbar.items.find((i) => i.id === 'verdict');
+  assert.equal(verdict.in_menu, false);
+  assert.ok(verdict.rect.w > 0 && verdict.rect.x >= 0 && verdict.rect.x + verdict.rect.w <= 390, JSON.stringify(verdict));
+  assert.ok(s.toolbar.more && s.toolbar.more.x >= verdict.rect.x + verdict.rect.w, JSON.stringify(s.toolbar));
+  // four tabs side by side along the bottom, inside the screen
+  const tabs = ['tab_problems', 'tab_statistics', 'tab_source', 'tab_inspector'].map((id) => s.controls[id]);
+  let right = 0;
+  for (const r of tabs) {
+    assert.ok(r && r[0] >= right && r[0] + r[2] <= 390 && r[1] >= 844 - 40 && r[1] + r[3] <= 844, JSON.stringify(tabs));
+    right = r[0] + r[2];
+  }
+  await page.screenshot({ path: path.join(shots, 'phone-collapsed.png') });
+  // a tab opens the sheet on it (the drawing gives it the room), the open tab closes it
+  await page.touchscreen.tap(...centreOf(s.controls.tab_statistics));
+  await until(page, () => essikit.state().sheet.open && essikit.state().sheet.tab === 'statistics', null, 'the Statistics tab did not open');
+  s = await page.evaluate(() => essikit.state());
+  assert.ok(Math.abs(s.view.area[3] - (844 - 38 - 844 * 0.45)) < 1, JSON.stringify(s.view.area));
+  await page.screenshot({ path: path.join(shots, 'phone-statistics.png') });
+  const tab = s.controls.tab_statistics;
+  await page.touchscreen.tap(...centreOf(tab));
+  await until(page, () => !essikit.state().sheet.open, null, 'the open tab did not close the sheet');
+  s = await page.evaluate(() => essikit.state());
+  await page.touchscreen.tap(...centreOf(s.controls.tab_problems));
+  await until(page, () => essikit.state().sheet.open && essikit.state().sheet.tab === 'problems', null, 'the Problems tab did not open');
+  await page.screenshot({ path: path.join(shots, 'phone-problems.png') });
+  // the side panels are not drawn: their layout is kept for a wider window
+  await page.setViewportSize({ width: 1024, height: 600 });
+  await nextFrames(page, 3);
+  s = await page.evaluate(() => essikit.state());
+  assert.equal(s.compact, false);
+  assert.ok(s.view.area[0] > 0 && s.view.area[2] >= 512, JSON.stringify(s.view.area));
+  await page.close();
+});
+
+test('next and previous problem (N, Shift+N, the buttons) select each finding in turn and zoom to it', async () => {
+  const page = await phonePage();
+  const { state } = await loadExample(page, 'plan_collision.esi');
+  const lines = state.diagnostics.map((d) => d.line);
+  assert.deepEqual(lines, [24, 37]);
+  const fitted = state.view;
+  assert.equal(state.problems.shown, null);
+  await tap(page, 'KeyN');
+  await until(page, () => essikit.state().problems.shown === 0, null, 'N did not show the first problem');
+  let s = await page.evaluate(() => essikit.state());
+  assert.equal(s.selection.line, 24);
+  assert.ok(s.view.zoom > fitted.zoom * 1.2, `the view did not zoom to the problem: ${fitted.zoom} -> ${s.view.zoom}`);
+  // the problem's contour (lines 24-29) is in view, around the middle of the drawing
+  const first = await page.evaluate(() => essikit.motion(essikit.state().selection.motion));
+  const p = await page.evaluate(([x, y]) => essikit.project(x, y), first.mid);
+  const [ax, ay, aw, ah] = s.view.area;
+  assert.ok(p.x > ax && p.x < ax + aw && p.y > ay && p.y < ay + ah, `line 24 at ${JSON.stringify(p)}, the area ${s.view.area}`);
+  const view1 = s.view;
+  await tap(page, 'KeyN');
+  await until(page, () => essikit.state().problems.shown === 1, null, 'N did not show the second problem');
+  s = await page.evaluate(() => essikit.state());
+  assert.equal(s.selection.line, 37);
+  assert.ok(s.view.x_mm !== view1.x_mm || s.view.y_mm !== view1.y_mm, 'the view stayed on the first problem');
+  await page.keyboard.down('Shift');
+  await tap(page, 'KeyN');
+  await page.keyboard.up('Shift');
+  await until(page, () => essikit.state().problems.shown === 0, null, 'Shift+N did not go back to the first problem');
+  assert.equal((await page.evaluate(() => essikit.state())).selection.line, 24);
+  // the buttons over the drawing's corner, by touch: round from the first to the second and back
+  s = await page.evaluate(() => essikit.state());
+  const next = s.controls.next_problem, previous = s.controls.previous_problem;
+  assert.ok(next && previous && next[0] + next[2] <= 390 && next[1] + next[3] <= s.view.area[1] + s.view.area[3], JSON.stringify(s.controls));
+  await page.touchscreen.tap(...centreOf(next));
+  await until(page, () => essikit.state().problems.shown === 1, null, 'the next problem button did not go on');
+  await page.touchscreen.tap(...centreOf(previous));
+  await until(page, () => essikit.state().problems.shown === 0, null, 'the previous problem button did not go back');
+  await page.close();
+});
+
+test('a phone: a tapped mark\'s tooltip stays inside the screen; the next touch takes a tooltip away', async () => {
+  const page = await phonePage();
+  const { state } = await loadExample(page, 'plan_collision.esi');
+  // the second collision's mark near the right edge of the screen
+  const mark = state.marks.items.find((m) => m.line === 37);
+  const zoom = state.view.zoom;
+  const [, ay, aw, ah] = state.view.area;
+  await page.evaluate(([x, y, z]) => essikit.setView(x, y, z), [mark.at_mm[0] - (aw / 2 - 14) / zoom, mark.at_mm[1], zoom]);
+  await nextFrames(page, 3);
+  const px = await page.evaluate(([x, y]) => essikit.project(x, y), mark.at_mm);
+  assert.ok(px.x > 360 && px.x < 390 && px.y > ay && px.y < ay + ah, JSON.stringify(px));
+  await page.touchscreen.tap(px.x, px.y);
+  await until(page, () => essikit.state().tooltip !== null, null, 'no tooltip after a tap on the mark');
+  await nextFrames(page, 2);
+  let s = await page.evaluate(() => essikit.state());
+  assert.equal(s.selection.line, 37);
+  const [tx, ty, tw, th] = s.tooltip;
+  assert.ok(tx >= 0 && tx + tw <= 390 && ty >= 0 && ty + th <= 844, `the tooltip at ${s.tooltip}`);
+  await page.screenshot({ path: path.join(shots, 'phone-mark-tooltip.png') });
+  // a finger on the drawing (a pan: no mouse event follows it) takes the tooltip away
+  await fingerDrag(page, 150, 300, 40, 30);
+  await until(page, () => essikit.state().tooltip === null, null, 'the mark\'s tooltip stayed after the next touch');
+  // a tapped button's tooltip too
+  s = await page.evaluate(() => essikit.state());
+  await page.touchscreen.tap(...centreOf(s.controls.next_problem));
+  await until(page, () => essikit.state().tooltip !== null, null, 'no tooltip over the tapped button');
+  s = await page.evaluate(() => essikit.state());
+  assert.ok(s.tooltip[0] >= 0 && s.tooltip[0] + s.tooltip[2] <= 390, `the tooltip at ${s.tooltip}`);
+  await fingerDrag(page, 150, 300, -40, 0);
+  await until(page, () => essikit.state().tooltip === null, null, 'the button\'s tooltip stayed after the next touch');
+  await page.close();
+});
+
+test('many findings of one code are one row that opens to list them; state() pages through the problems', async () => {
+  const page = await phonePage();
+  const tape = blanksTape(3000);
+  const file = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'essi-many-')), 'blanks.esi');
+  fs.writeFileSync(file, tape);
+  const cli = cliReportOf(file);
+  assert.equal(cli.diagnostics.length, 1002);  // 1 000 W109 kept, their summary, the E101
+  let s = await dropFile(page, 'blanks.esi', Buffer.from(tape));
+  // the default page: the first 100, with the list's total
+  assert.equal(s.problems.total, 1002);
+  assert.equal(s.problems.offset, 0);
+  assert.equal(s.problems.limit, 100);
+  assert.deepEqual(s.diagnostics, cli.diagnostics.slice(0, 100));
+  // a page asked for, and the last one (shorter)
+  const page2 = await page.evaluate(() => essikit.state({ problems: { offset: 100, limit: 50 } }));
+  assert.equal(page2.problems.offset, 100);
+  assert.equal(page2.problems.limit, 50);
+  assert.deepEqual(page2.diagnostics, cli.diagnostics.slice(100, 150));
+  const last = await page.evaluate(() => essikit.state({ problems: { offset: 990, limit: 100 } }));
+  assert.deepEqual(last.diagnostics, cli.diagnostics.slice(990));
+  assert.equal(last.diagnostics.length, 12);
+  assert.ok(last.diagnostics.some((d) => d.code === 'W109' && /^2000 more W109 diagnostics not listed/.test(d.message)), JSON.stringify(last.diagnostics));
+  // the default answer is quick (the median of 21 answers: other work on the machine makes some slow)
+  const ms = await page.evaluate(() => {
+    const times = [];
+    for (let k = 0; k < 21; ++k) {
+      const t0 = performance.now();
+      essikit.state();
+      times.push(performance.now() - t0);
+    }
+    return times.sort((a, b) => a - b)[10];
+  });
+  console.log(`state() with ${s.problems.total} problems: ${ms.toFixed(2)} ms`);
+  assert.ok(ms < 10, `state() took ${ms} ms`);
+  // the list: one row for the 3 000 W109 (closed), the E101 a row of its own
+  await page.touchscreen.tap(...centreOf(s.controls.tab_problems));
+  await until(page, () => essikit.state().sheet.open, null, 'the Problems tab did not open');
+  await nextFrames(page, 3);
+  s = await page.evaluate(() => essikit.state());
+  assert.equal(s.problems.groups.length, 1);
+  const g = s.problems.groups[0];
+  assert.deepEqual([g.code, g.severity, g.findings, g.kept, g.open], ['W109', 'warning', 3000, 1001, false]);
+  assert.ok(g.rect[2] > 0 && g.rect[1] > s.view.area[1] + s.view.area[3], JSON.stringify(g));
+  await page.screenshot({ path: path.join(shots, 'phone-many-findings.png') });
+  await page.touchscreen.tap(g.rect[0] + 20, g.rect[1] + g.rect[3] / 2);
+  await until(page, () => essikit.state().problems.groups[0].open, null, 'the group did not open');
+  await page.screenshot({ path: path.join(shots, 'phone-many-findings-open.png') });
+  await page.close();
+});
+
+test('a tape with a million findings of one code loads with frames never a second apart; its list is one row', async () => {
+  const page = await newPage();
+  const tape = '+10+0 \n'.repeat(1000000) + '64\n';  // 7 MB, one W109 a line
+  const file = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'essi-million-')), 'million.esi');
+  fs.writeFileSync(file, tape);
+  const cli = cliReportOf(file);
+  // (the path layers hidden: this test is about the findings, not SwiftShader drawing a million segments)
+  await page.evaluate(() => { for (const k of [0, 1, 2, 3]) essikit.setLayer(k, false); });
+  await page.evaluate(() => {
+    window.__frames = [];
+    const tick = (t) => { window.__frames.push(t); if (!window.__stop) requestAnimationFrame(tick); };
+    requestAnimationFrame(tick);
+  });
+  const s = await dropFile(page, 'million.esi', Buffer.from(tape));
+  const frameTimes = await page.evaluate(() => { window.__stop = true; return window.__frames; });
+  const gaps = frameTimes.slice(1).map((t, i) => t - frameTimes[i]);
+  const maxGap = Math.max(...gaps);
+  console.log(`a million W109: ${frameTimes.length} frames while loading, the longest gap ${maxGap.toFixed(0)} ms`);
+  assert.equal(s.load.at_once, false);
+  assert.ok(frameTimes.length >= 5, `${frameTimes.length} frames while loading`);
+  assert.ok(maxGap < 1000, `the frames stopped for ${maxGap} ms`);
+  // 1 000 kept and the cap's summary of the 999 000 more: one row
+  assert.equal(s.problems.total, cli.diagnostics.length);
+  assert.equal(s.problems.total, 1001);
+  assert.deepEqual(s.diagnostics, cli.diagnostics.slice(0, 100));
+  await nextFrames(page, 3);
+  const groups = (await page.evaluate(() => essikit.state())).problems.groups;
+  assert.deepEqual(groups.map((g) => [g.code, g.findings, g.kept]), [['W109', 1000000, 1001]]);
+  await page.close();
+});
+
+test('at 1024x600 the problems list is on the screen and the Compare window leaves the plate\'s top edge in sight', async () => {
+  const page = await openPage(browser, baseUrl, { width: 1024, height: 600 });
+  const { state } = await loadExample(page, 'plan_collision.esi');
+  await nextFrames(page, 3);
+  let s = await page.evaluate(() => essikit.state());
+  // the left panel's Diagnostics section, its buttons above the list, inside the window
+  const next = s.controls.next_problem;
+  assert.ok(next && next[0] + next[2] <= s.view.area[0] && next[1] >= 38 && next[1] + next[3] <= 600 - 40, JSON.stringify(next));
+  await page.screenshot({ path: path.join(shots, 'problems-1024x600.png') });
+  // compare with itself: the window over the drawing no lower than the fitted view's margin (24 px)
+  const text = fs.readFileSync(path.join(examplesDir, 'plan_collision.esi'), 'utf8');
+  await page.evaluate((t) => essikit.compare('plan_collision_b.esi', t), text);
+  await nextFrames(page, 4);
+  s = await page.evaluate(() => essikit.state());
+  const w = s.controls.compare_window;
+  assert.ok(w, JSON.stringify(s.controls));
+  const top = await page.evaluate(([x, y]) => essikit.project(x, y), [0, state.bbox_mm.max_y]);
+  assert.ok(w[1] + w[3] <= top.y + 1, `the Compare window (${w}) covers the plate's top edge at y ${top.y}`);
+  await page.screenshot({ path: path.join(shots, 'compare-1024x600.png') });
+  await page.evaluate(() => essikit.endCompare());
+  await page.close();
+});

@@ -39,7 +39,10 @@ void App::frame() {
     const ImGuiIO& io = ImGui::GetIO();
     preferences_.keep_dragged_layout();
     View& view = navigation_.view();
-    view.area = panels::drawing_area(io.DisplaySize.x, io.DisplaySize.y, ui_.layout);
+    ui_.compact = compact_layout(io.DisplaySize.x);
+    view.area = ui_.compact
+                    ? compact_drawing_area(io.DisplaySize.x, io.DisplaySize.y, panels::kToolbarHeight, ui_.sheet)
+                    : panels::drawing_area(io.DisplaySize.x, io.DisplaySize.y, ui_.layout);
     session_.begin_frame();
     view.plate = navigation_.coordinates().plate();
     if (const Document* d = session_.document(); d && playback_.playing) {

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/ProblemList.hpp"
 #include "app/ViewerParts.hpp"
 #include "essi/share_link.hpp"
 #include "essi/text_encoding.hpp"
@@ -23,8 +24,9 @@ public:
     explicit Automation(const Parts& parts) : p_(parts) {}
 
     // --- What the page reads (AutomationState.cpp) ---
-    // state(): {status, name, stats, diagnostics, selection, view, ...} as JSON text.
-    [[nodiscard]] std::string state_json() const;
+    // state(): {status, name, stats, diagnostics, selection, view, ...} as JSON text; `diagnostics` the page of them
+    // asked for (the first kStateProblemsPage without one), `problems` the list's total and groups.
+    [[nodiscard]] std::string state_json(ProblemPage page = problem_page(-1, -1)) const;
     // One motion as JSON: {"index","line","block","kind","curve","start","end","mid","length_mm","centre","text"};
     // "null" past the end.
     [[nodiscard]] std::string motion_json(std::size_t i) const;

@@ -1,8 +1,11 @@
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <nlohmann/json.hpp>
 
 #include "app/Automation.hpp"
 #include "app/Describe.hpp"
+#include "app/ProblemList.hpp"
 #include "app/Problems.hpp"
 #include "essi/diagnostics.hpp"
 #include "essi/geom.hpp"
@@ -15,12 +18,11 @@ namespace {
 
 using nlohmann::json;
 
-constexpr std::size_t kStateMarks = 1000;  // marks listed in state().marks.items at most (the count is all of them)
+constexpr std::size_t kStateMarks = 100;  // marks listed in state().marks.items at most (the count is all of them)
 
 // The document's part of the state: statistics, diagnostics, sizes, memory, level of detail.
 void add_document(json& j, const Document& doc, const LoadController& load, const Renderer& renderer, bool lod_drawn) {
     j["stats"] = stats_to_json(doc.stats);  // the report's own writer (essi/report_json.hpp)
-    j["diagnostics"] = diagnostics_to_json(doc.diagnostics);
     j["ok"] = !doc.has_errors();
     j["bytes"] = doc.bytes.size();
     j["lines"] = doc.line_count();
@@ -315,6 +317,32 @@ void add_reading(json& j, const Automation::Parts& p) {
     j["banner"] = p.session.banner_text();
 }
 
+// A page of the diagnostics (`diagnostics`, as the report writes them) and what the problems list shows of them:
+// {total, offset, limit, shown, groups: [{code, severity, findings, kept, open, rect}]}.
+void add_problems(json& j, const Document& doc, const UiState& ui, const LoadController& load, std::size_t shown,
+                  ProblemPage page) {
+    const std::size_t total = doc.diagnostics.size(), end = page.end(total);
+    const std::size_t first = std::min(page.offset, total);
+    j["diagnostics"] = diagnostics_to_json(std::span<const Diagnostic>(doc.diagnostics).subspan(first, end - first));
+    json groups = json::array();
+    const bool current = ui.problems_of == UiState::ProblemsOf{&doc, load.load_frames().handed, total};  // (as drawn)
+    for (std::size_t g = 0; current && g < ui.problems.groups().size(); ++g) {
+        const ProblemGroup& group = ui.problems.groups()[g];
+        const Rect r = g < ui.group_rects.size() ? ui.group_rects[g] : Rect{0, 0, 0, 0};
+        groups.push_back({{"code", code_name(group.code)},
+                          {"severity", severity_name(group.severity)},
+                          {"findings", group.total},
+                          {"kept", group.members.size()},
+                          {"open", g < ui.open_groups.size() && ui.open_groups[g]},
+                          {"rect", {r.x, r.y, r.w, r.h}}});
+    }
+    j["problems"] = {{"total", total},
+                     {"offset", page.offset},
+                     {"limit", page.limit},
+                     {"shown", shown < total ? json(shown) : json(nullptr)},
+                     {"groups", std::move(groups)}};
+}
+
 // The windows, the messages and the panels' layout.
 void add_panels(json& j, const Automation::Parts& p) {
     const UiState& ui = p.ui;
@@ -332,6 +360,12 @@ void add_panels(json& j, const Automation::Parts& p) {
     j["layout"] = layout_json(ui.layout);
     j["message"] = p.notices.message().text();
     j["toolbar"] = toolbar_json(ui);
+    j["compact"] = ui.compact;
+    j["sheet"] = {{"open", ui.sheet.open}, {"tab", sheet_tab_name(ui.sheet.tab)}};
+    json controls = json::object();
+    for (const auto& [id, r] : ui.controls) controls[id] = {r.x, r.y, r.w, r.h};
+    j["controls"] = std::move(controls);
+    j["tooltip"] = ui.tooltip.w > 0 ? json{ui.tooltip.x, ui.tooltip.y, ui.tooltip.w, ui.tooltip.h} : json(nullptr);
 }
 
 // The Job panel's sections as they are shown: [{id, title, fields: [[label, value] ...], table: {columns, rows}}].
@@ -349,11 +383,12 @@ json job_json(Exports& exports) {
 
 }  // namespace
 
-std::string Automation::state_json() const {
+std::string Automation::state_json(ProblemPage page) const {
     json j;
     const Document* doc = p_.session.document();
     add_loading(j, p_.load, doc != nullptr, p_.scene, p_.session.frames());
     add_reading(j, p_);
+    if (doc) add_problems(j, *doc, p_.ui, p_.load, p_.navigation.problem(), page);
     const Selection& selection = p_.navigation.selection();
     const Coordinates cs = p_.navigation.coordinates();
     j["selection"] = selection_json(selection);

@@ -142,6 +142,8 @@ void Input::handle_characters() {
             case 'S': p_.shares.share(); break;
             case 'p':
             case 'P': p_.preferences.set_problems_only(!p_.preferences.problems_only()); break;
+            case 'n': p_.navigation.step_problem(1); break;  // (Shift+N: the one before)
+            case 'N': p_.navigation.step_problem(-1); break;
             case '1': layers.kind(MotionKind::Cut) = !layers.kind(MotionKind::Cut); break;
             case '2':  // travel and rapid together
                 layers.kind(MotionKind::Travel) = !layers.kind(MotionKind::Travel);

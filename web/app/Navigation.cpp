@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <utility>
 
+#include "app/Document.hpp"
 #include "app/LoadController.hpp"
+#include "app/ProblemList.hpp"
 #include "app/Playback.hpp"
 
 namespace essi::viewer {
@@ -81,7 +83,37 @@ void Navigation::select_motion(std::size_t motion) {
 
 void Navigation::select_diagnostic(std::size_t index) {
     const Document* d = load_.document();
-    if (d && index < d->diagnostics.size() && d->diagnostics[index].line > 0) select_line(d->diagnostics[index].line);
+    if (!d || index >= d->diagnostics.size()) return;
+    problem_ = index;  // (next and previous problem go on from it)
+    if (d->diagnostics[index].line > 0) select_line(d->diagnostics[index].line);
+}
+
+void Navigation::show_problem(std::size_t index) {
+    const Document* d = settled_document();
+    if (!d || index >= d->diagnostics.size()) return;
+    const Diagnostic& diag = d->diagnostics[index];
+    problem_ = index;
+    if (diag.line > 0) select_line(diag.line, false);
+    Box box;
+    for (const LineRange& lines : concerned_lines(diag)) {
+        const auto [a, b] = d->motions_of_lines(lines);
+        for (std::size_t i = a; i < b; ++i) box.add(bounding_box(d->record(i)));
+    }
+    for (const DiagnosticMark& m : d->marks)  // (a block that is no motion: where its mark is)
+        if (box.empty && m.diagnostic == index) box.add(m.at);
+    if (box.empty) return;
+    const double cx = (box.min_x + box.max_x) / 2, cy = (box.min_y + box.max_y) / 2;
+    const double half = kProblemViewMm / 2;
+    box.add(Point{std::min(box.min_x, cx - half), std::min(box.min_y, cy - half)});
+    box.add(Point{std::max(box.max_x, cx + half), std::max(box.max_y, cy + half)});
+    show_box(box);
+}
+
+void Navigation::step_problem(int step) {
+    const Document* d = settled_document();
+    if (!d) return;
+    const std::size_t next = viewer::step_problem(d->diagnostics, problem_, step);
+    if (next != Selection::npos) show_problem(next);
 }
 
 void Navigation::show_box(const Box& box) {
@@ -133,6 +165,7 @@ ViewRequest Navigation::current() const {
 
 void Navigation::document_loaded(const Document& d) {
     selection_.clear();
+    problem_ = Selection::npos;
     view_.plate = coordinates().plate();
     view_.fit(d.bbox, d.origin);
     apply_request(d);

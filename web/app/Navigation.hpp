@@ -29,6 +29,7 @@ public:
     static constexpr const char* kOrientationSetting = "orientation";
     static constexpr const char* kCoordinatesSetting = "coordinates";
     static constexpr float kContourMarginPx = 80;  // show_box's margin around the box
+    static constexpr double kProblemViewMm = 20;   // a problem shown: at least this much of the tape around it
 
     // The orientation and the coordinates as they were kept.
     Navigation(const LoadController& load, SettingsStore& settings);
@@ -44,6 +45,13 @@ public:
     void select_motion(std::size_t motion);
     // A diagnostic chosen (its mark clicked, as a click in the problems list): its block selected and in view.
     void select_diagnostic(std::size_t index);
+    // A diagnostic shown ("next problem", "previous problem"): its block selected and the view zoomed to what it
+    // concerns (its block and contour, else its mark), at least kProblemViewMm across.
+    void show_problem(std::size_t index);
+    // The diagnostic after (step 1) or before (-1) the one shown last, going round (N, Shift+N).
+    void step_problem(int step);
+    // The diagnostic shown last (npos: none since the tape was loaded).
+    [[nodiscard]] std::size_t problem() const { return problem_; }
     // The box (program mm) in view with a margin (a compared contour).
     void show_box(const Box& box);
     // The source view and the inspector show the playback's line (the view stays where the user put it).
@@ -80,7 +88,8 @@ private:
     View view_;
     Selection selection_;
     bool machine_coordinates_ = false;
-    std::optional<ViewRequest> pending_;  // set_view / select_line before the document is there
+    std::optional<ViewRequest> pending_;     // set_view / select_line before the document is there
+    std::size_t problem_ = Selection::npos;  // the diagnostic shown last (show_problem)
 };
 
 }  // namespace essi::viewer

@@ -5,8 +5,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "app/ProblemList.hpp"
+#include "app/ScreenLayout.hpp"
 #include "app/View.hpp"
 #include "app/panels/Layout.hpp"
 
@@ -39,6 +42,23 @@ struct UiState {
     KeyboardMode keyboard = KeyboardMode::Mouse;
     std::string keyboard_window;  // the window the keyboard's focus is in (ImGui's name), empty: none
     std::string keyboard_list;    // the list (child window) whose box has the focus, empty: none
+    bool compact = false;               // the window is narrow: the bottom sheet instead of the side panels
+    BottomSheet sheet;                  // the bottom sheet of the compact layout
+    // The problems list (ProblemList) of the document's diagnostics, made again when they change (another load,
+    // more findings), and its groups that are open.
+    struct ProblemsOf {
+        const void* document = nullptr;
+        std::uint64_t handed_frame = 0;  // its load's (LoadController::LoadFrames::handed)
+        std::size_t diagnostics = 0;
+        friend bool operator==(const ProblemsOf&, const ProblemsOf&) = default;
+    };
+    ProblemList problems;
+    ProblemsOf problems_of;
+    std::vector<bool> open_groups;
+    std::vector<Rect> group_rects;  // the groups' rows as the last frame drew them (w 0: not drawn)
+    // Controls the last frame drew, by name (state().controls): the sheet's tabs, next and previous problem.
+    std::vector<std::pair<std::string, Rect>> controls;
+    Rect tooltip;  // the tooltip the last frame showed (w 0: none), state().tooltip
 };
 
 }  // namespace essi::viewer

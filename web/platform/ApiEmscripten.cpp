@@ -122,6 +122,15 @@ EMSCRIPTEN_KEEPALIVE const char* essi_state() {
     return s.c_str();
 }
 
+// state({problems: {offset, limit}}): the page of the diagnostics asked for (-1: the default offset or limit).
+EMSCRIPTEN_KEEPALIVE const char* essi_state_page(double offset, double limit) {
+    static std::string s;
+    s = g_api ? g_api->state_json(
+                    essi::viewer::problem_page(static_cast<long long>(offset), static_cast<long long>(limit)))
+              : "{\"status\":\"starting\"}";
+    return s.c_str();
+}
+
 // The WASM heap as malloc sees it (tests and benchmarks): {"footprint": bytes taken from the heap's end (sbrk),
 // "peak": the largest footprint so far, "in_use": bytes in allocated blocks}. The page's memory (HEAPU8.length)
 // grows to hold the peak footprint and never shrinks.

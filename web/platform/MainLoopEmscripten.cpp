@@ -127,6 +127,23 @@ void apply_pixel_ratio(double pixel_ratio) {
     }
 }
 
+// A finger touched the screen (essi_touch_start): the mouse is not where it was any more, so nothing is hovered (no
+// tooltip stays) until the browser's mouse events of a tap come, a press or a move.
+bool g_touch_lifted_hover = false;
+ImVec2 g_mouse_at;        // where GLFW says the mouse is (this frame)
+ImVec2 g_touch_mouse_at;  // where it was when the finger touched
+
+void touch_hover(ImGuiIO& io) {
+    g_mouse_at = io.MousePos;
+    if (!g_touch_lifted_hover) return;
+    const bool pressed = std::any_of(std::begin(io.MouseDown), std::end(io.MouseDown), [](bool d) { return d; });
+    if (pressed || io.MousePos.x != g_touch_mouse_at.x || io.MousePos.y != g_touch_mouse_at.y) {
+        g_touch_lifted_hover = false;
+        return;
+    }
+    io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+}
+
 void frame(void* arg) {
     Loop& loop = *static_cast<Loop*>(arg);
     fit_canvas(loop);
@@ -135,6 +152,7 @@ void frame(void* arg) {
     ImGui_ImplGlfw_NewFrame();
     loop.app->before_frame();  // (after the backend, which clears the navigation inputs)
     apply_pixel_ratio(loop.pixel_ratio);
+    touch_hover(ImGui::GetIO());
     ImGui::NewFrame();
     loop.app->frame();
     ImGui::Render();
@@ -190,4 +208,12 @@ int main() {
     EM_ASM(if (window.essikitStarted) window.essikitStarted());
     // clang-format on
     return 0;
+}
+
+extern "C" {
+// The page's touchstart (index.html).
+EMSCRIPTEN_KEEPALIVE void essi_touch_start() {
+    g_touch_lifted_hover = true;
+    g_touch_mouse_at = g_mouse_at;
+}
 }

@@ -44,4 +44,7 @@ private:
     std::vector<Count> counts_;  // by code number
 };
 
+// How many diagnostics of its code `d` says were left out when it is a summary of append_summaries; 0 for any other.
+[[nodiscard]] std::uint64_t cap_omitted(const Diagnostic& d);
+
 }  // namespace essi

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -38,5 +39,7 @@ constexpr int kMmDecimals = 3;  // 1 micrometre
 [[nodiscard]] std::string xml_escape(std::string_view s);
 // A length as people read it: "1234.567 mm" below 10 m (mm_text), "184 377.775 m" (thousands apart) from 10 m on.
 [[nodiscard]] std::string length_text(double mm);
+// A count as people read it, the thousands apart: "58 780", "1 000 000", "999".
+[[nodiscard]] std::string count_text(std::uint64_t n);
 
 }  // namespace essi

@@ -12,6 +12,7 @@ constexpr ImU32 kSameColor = IM_COL32(80, 220, 255, 70);  // B's contours that a
 constexpr ImU32 kBColor = IM_COL32(80, 220, 255, 255);    // B's that differ
 constexpr ImU32 kAColor = IM_COL32(255, 70, 90, 200);     // A's that differ (removed, changed, moved from)
 constexpr std::size_t kMaxSamePoints = 200000;            // B's same contours drawn up to this many points
+constexpr float kInsetPx = 8, kLowInsetPx = 2;            // the window from the drawing area's top right corner
 
 void polyline(ImDrawList* dl, const View& view, Point o, const std::vector<Point>& pts, ImU32 colour, float width) {
     if (pts.size() < 2) return;
@@ -76,11 +77,18 @@ void Panels::compare_window() {
     const Compare* c = p_.compare.result();
     if (!c) return;
     const Rect& a = p_.navigation.view().area;
-    ImGui::SetNextWindowPos(ImVec2(a.x + a.w - 8, a.y + 8), ImGuiCond_Appearing, ImVec2(1.f, 0.f));
-    ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 16, 420.f), 0), ImGuiCond_Appearing);
+    // In a low window it opens as its title bar alone, at the top of the fitted view's margin (the plate's edge
+    // stays in sight); a click on its arrow opens it.
+    const bool low = ImGui::GetIO().DisplaySize.y < kShortWindowPx;
+    const float inset = low ? kLowInsetPx : kInsetPx;
+    ImGui::SetNextWindowPos(ImVec2(a.x + a.w - inset, a.y + inset), ImGuiCond_Appearing, ImVec2(1.f, 0.f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(a.w - 2 * inset, 420.f), 0), ImGuiCond_Appearing);
+    if (low) ImGui::SetNextWindowCollapsed(true, ImGuiCond_Appearing);
     bool open = true;
     ImGui::Begin(tr_id(Msg::UiCompareTitle, "Compare").c_str(), &open,
-                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+                 ImGuiWindowFlags_NoSavedSettings | (low ? 0 : ImGuiWindowFlags_NoCollapse));
+    const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    p_.ui.controls.emplace_back("compare_window", Rect{at.x, at.y, size.x, size.y});
     const Document* doc = p_.session.document();
     ImGui::TextWrapped("A: %s  B: %s", doc ? doc->name.c_str() : "-", c->name.c_str());
     ImGui::TextColored(ImVec4(0.31f, 0.86f, 1, 1), "%s", tr(Msg::UiBContours));

@@ -31,6 +31,7 @@ constexpr Shortcut kShortcuts[] = {
     {Msg::None, "G", Msg::UiKeyGridDoes},
     {Msg::None, "S", Msg::UiKeyShareDoes},
     {Msg::None, "P", Msg::UiKeyProblemsOnlyDoes},
+    {Msg::UiKeyProblemSteps, nullptr, Msg::UiKeyProblemStepsDoes},
     {Msg::UiKeyCtrlO, nullptr, Msg::UiKeyCtrlODoes},
     {Msg::UiKeyCtrlV, nullptr, Msg::UiKeyCtrlVDoes},
     {Msg::UiKeyDrop, nullptr, Msg::UiKeyDropDoes},

@@ -18,6 +18,9 @@ inline constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiW
                                                 ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoBackground;
 
 inline constexpr float kMinPanelWidth = 160;  // a side panel is no narrower (when shown)
+// A window lower than this (1024 x 600) opens the left panel with its reading and diagnostics only, and the Compare
+// window collapsed to its title: the problems list and the plate's edges stay in sight.
+inline constexpr float kShortWindowPx = 720;
 
 // The side panels as the user set them (docs/viewer.md, "Layout"): widths dragged at their inner edge, shown or
 // hidden; kept across sessions (setting "layout").

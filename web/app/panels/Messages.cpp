@@ -13,6 +13,7 @@ constexpr ImGuiWindowFlags kMessageFlags =
     ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove;
 constexpr std::size_t kShareUrlShown = 600;  // characters of a share link shown
 constexpr std::size_t kExamplesPerRow = 3;   // buttons a row on the start screen
+constexpr float kWelcomeMarginPx = 24;       // the start screen inside the drawing area, this much to spare
 
 void loading(const LoadController& load, const Rect& a, ImVec2 centre, bool tape_drawn) {
     // Over the middle of the drawing area; at its top once the level of detail shows the tape.
@@ -40,9 +41,12 @@ void drawing(const LoadController& load, const Renderer& renderer, const Rect& a
     ImGui::End();
 }
 
-void welcome(const Panels::Parts& p, ImVec2 centre) {
+void welcome(const Panels::Parts& p, const Rect& a, ImVec2 centre) {
     ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::Begin("##welcome", nullptr, kMessageFlags | ImGuiWindowFlags_AlwaysAutoResize);
+    // (wrapped inside the drawing area: a phone's is narrower than the texts)
+    const float wrap = std::max(a.w - kWelcomeMarginPx - 2 * ImGui::GetStyle().WindowPadding.x, 120.f);
+    ImGui::PushTextWrapPos(wrap);
     ImGui::TextUnformatted(tr(Msg::UiWelcomeTitle));
     ImGui::Spacing();
     ImGui::TextUnformatted(tr(Msg::UiWelcomeDrop));
@@ -53,7 +57,10 @@ void welcome(const Panels::Parts& p, ImVec2 centre) {
         ImGui::Spacing();
         ImGui::TextUnformatted(tr(Msg::UiWelcomeExamples));
         for (std::size_t k = 0; k < ui.examples.size(); ++k) {
-            if (k % kExamplesPerRow != 0) ImGui::SameLine();
+            const float w = ImGui::CalcTextSize(ui.examples[k].c_str()).x + ImGui::GetStyle().FramePadding.x * 2;
+            if (k % kExamplesPerRow != 0 &&
+                ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + w - ImGui::GetWindowPos().x <= wrap)
+                ImGui::SameLine();
             if (ImGui::SmallButton(ui.examples[k].c_str())) p.platform.open_example(ui.examples[k]);
         }
     }
@@ -64,6 +71,7 @@ void welcome(const Panels::Parts& p, ImVec2 centre) {
     }
     if (!p.graphics_ok)
         ImGui::TextColored(severity_color(Severity::Error), "%s", tr(Msg::UiGraphicsError, {program_error()}).c_str());
+    ImGui::PopTextWrapPos();
     ImGui::End();
 }
 
@@ -118,7 +126,7 @@ void Panels::messages() {
         // (a tape loaded at once has none: it is read and drawn before the next frame's panels)
         if (!load.at_once()) loading(load, a, centre, p_.scene.tape_drawn());
     } else if (doc && (p_.renderer.filling() || load.remaking())) drawing(load, p_.renderer, a, centre);
-    else if (!doc) welcome(p_, centre);
+    else if (!doc) welcome(p_, a, centre);
     else if (p_.session.banner() != Msg::None) problem(*doc, p_.session.banner_text(), a, centre);
     if (p_.ui.share_popup) share_popup(p_.ui, p_.shares, p_.platform, a, centre);
     if (!p_.session.link_problem().empty()) link_problem(p_.session, a, centre);

@@ -76,7 +76,7 @@ void tooltip_diagnostic(UiFonts& fonts, const Diagnostic& d) {
 
 void tooltip(UiFonts& fonts, const Document& doc, const std::vector<std::size_t>& near) {
     ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32);
+    ImGui::PushTextWrapPos(tooltip_wrap_x());
     for (std::size_t k = 0; k < near.size() && k < kTooltipDiagnostics; ++k) {
         if (k > 0) ImGui::Separator();
         tooltip_diagnostic(fonts, doc.diagnostics[doc.marks[near[k]].diagnostic]);

@@ -52,9 +52,14 @@ void source_line(const Panels::Parts& p, const Document& d, std::uint32_t line, 
     }
     if (diags.any() && ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
-        for (auto k = diags.begin; k != diags.end; ++k)
-            ImGui::TextColored(severity_color(k->severity), "%s %u:%u %s", code_name(k->code).c_str(), k->line,
-                               k->column, diagnostic_message(*k, ui_lang()).c_str());
+        ImGui::PushTextWrapPos(tooltip_wrap_x());  // (inside a narrow screen)
+        for (auto k = diags.begin; k != diags.end; ++k) {
+            ImGui::PushStyleColor(ImGuiCol_Text, severity_color(k->severity));
+            ImGui::TextWrapped("%s %u:%u %s", code_name(k->code).c_str(), k->line, k->column,
+                               diagnostic_message(*k, ui_lang()).c_str());
+            ImGui::PopStyleColor();
+        }
+        ImGui::PopTextWrapPos();
         ImGui::EndTooltip();
     }
     ImGui::SetCursorScreenPos(pos);
@@ -154,5 +159,8 @@ void Panels::source_panel() {
     ImGui::EndChild();
     ImGui::End();
 }
+
+void Panels::source_view() { source(p_); }
+void Panels::inspector_view() { inspector(p_); }
 
 }  // namespace essi::viewer::panels

@@ -287,60 +287,26 @@ void job(const Document* doc, Exports& exports) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiJobPrintTip));
 }
 
-void diagnostics(const Document* doc, Navigation& navigation, Exports& exports) {
-    if (!doc) {
-        ImGui::TextDisabled("-");
-        return;
-    }
-    if (doc->diagnostics.empty()) {
-        ImGui::TextColored(to_vec4(kOkColor), "%s", tr(Msg::UiNoProblems));
-        return;
-    }
-    if (ImGui::SmallButton(tr_id(Msg::UiCopyReport, "copy report").c_str())) exports.copy(Exports::CopyWhat::Report);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(Msg::UiCopyReportTip));
-    ImGui::BeginChild("diaglist", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
-    ImGuiListClipper clipper;
-    clipper.Begin(static_cast<int>(doc->diagnostics.size()));
-    while (clipper.Step()) {
-        for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
-            const Diagnostic& d = doc->diagnostics[static_cast<std::size_t>(i)];
-            ImGui::PushID(i);
-            ImGui::PushStyleColor(ImGuiCol_Text, severity_color(d.severity));
-            const std::string label = tr(Msg::UiDiagLabel, {code_name(d.code), d.line, d.column});
-            if (ImGui::Selectable(label.c_str(), d.line != 0 && d.line == navigation.selection().line))
-                navigation.select_diagnostic(static_cast<std::size_t>(i));
-            ImGui::PopStyleColor();
-            if (ImGui::BeginPopupContextItem("diagnostic menu")) {
-                if (ImGui::Selectable(tr(Msg::UiCopyThisProblem)))
-                    exports.copy(Exports::CopyWhat::Diagnostic, static_cast<std::uint32_t>(i));
-                if (ImGui::Selectable(tr(Msg::UiCopyReport))) exports.copy(Exports::CopyWhat::Report);
-                ImGui::EndPopup();
-            }
-            const std::string message = diagnostic_message(d, ui_lang());
-            if (ImGui::IsItemHovered())
-                ImGui::SetTooltip("%s\n%s", message.c_str(), std::string(code_summary(d.code, ui_lang())).c_str());
-            ImGui::SameLine();
-            ImGui::TextWrapped("%s", message.c_str());
-            ImGui::PopID();
-        }
-    }
-    ImGui::EndChild();
-}
-
 }  // namespace
+
+void Panels::statistics_section() { statistics(p_.session.document(), p_.load); }
 
 void Panels::tape_panel() {
     if (!begin_side_panel(p_.ui.layout, p_.ui.layout_changed, tr_id(Msg::UiTapePanel, "Tape").c_str(), true)) return;
     const Document* doc = p_.session.document();
-    const auto header = [](Msg title, const char* id) {
+    // In a short window the sections between the reading and the diagnostics start closed, so that the problems
+    // list is on the screen.
+    const bool short_window = ImGui::GetIO().DisplaySize.y < kShortWindowPx;
+    const auto header = [short_window](Msg title, const char* id, bool closed_when_short = false) {
+        if (short_window && closed_when_short) ImGui::SetNextItemOpen(false, ImGuiCond_Once);
         return ImGui::CollapsingHeader(tr_id(title, id).c_str(), ImGuiTreeNodeFlags_DefaultOpen);
     };
     if (header(Msg::UiReading, "Reading")) reading(p_.session, p_.comments);
-    if (header(Msg::UiStatistics, "Statistics")) statistics(doc, p_.load);
-    if (header(Msg::UiJob, "Job")) job(doc, p_.exports);
-    if (header(Msg::UiLayers, "Layers")) layers(p_.layers, p_.preferences, doc, p_.load);
-    if (header(Msg::UiPlayback, "Playback")) playback(p_.playback, p_.navigation, doc, p_.tape_facts);
-    if (header(Msg::UiDiagnostics, "Diagnostics")) diagnostics(doc, p_.navigation, p_.exports);
+    if (header(Msg::UiStatistics, "Statistics", true)) statistics(doc, p_.load);
+    if (header(Msg::UiJob, "Job", true)) job(doc, p_.exports);
+    if (header(Msg::UiLayers, "Layers", true)) layers(p_.layers, p_.preferences, doc, p_.load);
+    if (header(Msg::UiPlayback, "Playback", true)) playback(p_.playback, p_.navigation, doc, p_.tape_facts);
+    if (header(Msg::UiDiagnostics, "Diagnostics")) problems_list();
     ImGui::End();
 }
 

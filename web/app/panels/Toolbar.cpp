@@ -1,7 +1,7 @@
 // The toolbar: Open, Paste, Share, Export, Fit, Measure, Help, the View (panels) menu, Compare, the profile, the
 // orientation, the coordinates, the language, the tape's name and verdict, the message. Items that do not fit in
 // the window's width (German is longer; a 1024 px screen) go, in their order, into the overflow menu (») at the end
-// of the bar, where they work as in the bar (docs/viewer.md, "Languages").
+// of the bar, where they work as in the bar (docs/viewer.md, "Languages"); the verdict is always in the bar.
 
 #include <algorithm>
 #include <array>
@@ -85,7 +85,7 @@ void tooltip(Msg tip) {
     if (io.MousePos.y < kToolbarHeight && io.DisplaySize.x > 0)
         ImGui::SetNextWindowPos(ImVec2(io.MousePos.x, kToolbarHeight + 2), ImGuiCond_Always,
                                 ImVec2(std::clamp(io.MousePos.x / io.DisplaySize.x, 0.f, 1.f), 0.f));
-    ImGui::SetTooltip("%s", tr(tip));
+    wrapped_tooltip(tr(tip));
 }
 
 using Parts = Panels::Parts;
@@ -246,10 +246,13 @@ void language_combo(Preferences& preferences, float width) {
     tooltip(Msg::UiLanguageTip);
 }
 
-void verdict(const Document* doc) {
+// The tape's name (when `with_name`) and its verdict.
+void verdict(const Document* doc, bool with_name = true) {
     if (!doc) return;
-    ImGui::TextUnformatted(doc->name.c_str());
-    ImGui::SameLine();
+    if (with_name) {
+        ImGui::TextUnformatted(doc->name.c_str());
+        ImGui::SameLine();
+    }
     const std::size_t e = doc->count(Severity::Error), w = doc->count(Severity::Warning);
     const ImVec4 colour = e > 0   ? severity_color(Severity::Error)
                           : w > 0 ? severity_color(Severity::Warning)
@@ -390,20 +393,36 @@ void Panels::toolbar() {
     ui.toolbar_more = Rect{0, 0, 0, 0};
     ui.toolbar_menu_open = false;
 
+    // The verdict is always in the bar, after the items that fit and before the overflow button: without the tape's
+    // name when the bar is too narrow for both.
     std::vector<ItemInfo> items(std::begin(kItems), std::end(kItems));
-    if (!p_.session.document()) std::erase_if(items, [](const ItemInfo& i) { return i.item == Item::Verdict; });
+    std::erase_if(items, [](const ItemInfo& i) { return i.item == Item::Verdict; });
     std::vector<float> widths(items.size());
     for (std::size_t k = 0; k < items.size(); ++k) widths[k] = item_width(p_, items[k].item);
     const float right = io.DisplaySize.x - style.WindowPadding.x;
-    const std::size_t fit = items_that_fit(widths, right);
+    const Document* doc = p_.session.document();
+    const float least = widths.front() + button_width(kMoreLabel) + style.ItemSpacing.x * 3;  // (Open and »)
+    float verdict_w = doc ? item_width(p_, Item::Verdict) : 0;
+    const bool with_name = verdict_w + least <= right - style.WindowPadding.x;
+    if (doc && !with_name) verdict_w = text_width(verdict_text(*doc).c_str());
+    const std::size_t fit = items_that_fit(widths, right - (doc ? verdict_w + style.ItemSpacing.x : 0));
     float bar_end = style.WindowPadding.x;
     for (std::size_t k = 0; k < fit; ++k) {
         if (k > 0) ImGui::SameLine();
         placed_item(p_, items[k], widths[k], false);
         bar_end = ImGui::GetItemRectMax().x;
     }
-    if (fit < items.size()) {
+    if (doc) {
         if (fit > 0) ImGui::SameLine();
+        ImGui::BeginGroup();
+        verdict(doc, with_name);
+        ImGui::EndGroup();
+        const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+        ui.toolbar.push_back({"verdict", Rect{a.x, a.y, b.x - a.x, b.y - a.y}, false});
+        bar_end = b.x;
+    }
+    if (fit < items.size()) {
+        if (fit > 0 || doc) ImGui::SameLine();
         bar_end = overflow_menu(p_, items, widths, fit);
     }
     message(p_.notices, p_.navigation.view().area, bar_end, right);

@@ -46,6 +46,22 @@ void hint_wrapped(const char* text) {
     ImGui::PopStyleColor();
 }
 
+float tooltip_wrap_x() {
+    const ImGuiStyle& st = ImGui::GetStyle();
+    constexpr float kTooltipEms = 32, kScreenMarginPx = 8;
+    const float room = ImGui::GetIO().DisplaySize.x - 2 * (st.DisplaySafeAreaPadding.x + kScreenMarginPx) -
+                       st.WindowPadding.x;  // (the window's other padding is before the wrap position)
+    return std::max(std::min(ImGui::GetFontSize() * kTooltipEms, room), ImGui::GetFontSize() * 4);
+}
+
+void wrapped_tooltip(const std::string& text) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(tooltip_wrap_x());
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
 ImVec4 severity_color(Severity s) {
     const Rgba& c = severity_rgba(s);  // (the marks' colours: render/Palette.hpp)
     return ImVec4(c.r, c.g, c.b, c.a);

@@ -28,6 +28,10 @@ namespace essi::viewer {
 void same_line_if_fits(float width);
 // Text in the disabled colour, wrapped at the window's edge (hints in a narrow panel, any language).
 void hint_wrapped(const char* text);
+// Where a tooltip's text wraps (its window's x): at 32 ems, or narrower to stay inside a narrow screen.
+[[nodiscard]] float tooltip_wrap_x();
+// A tooltip of one text, wrapped at tooltip_wrap_x.
+void wrapped_tooltip(const std::string& text);
 
 [[nodiscard]] ImVec4 severity_color(Severity s);
 [[nodiscard]] inline ImVec4 to_vec4(const Rgba& c) { return ImVec4(c.r, c.g, c.b, c.a); }
