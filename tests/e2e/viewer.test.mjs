@@ -2584,6 +2584,29 @@ test('many findings of one code are one row that opens to list them; state() pag
   await page.close();
 });
 
+test('the problems list wraps its texts beside its scroll bar (German, Chinese): none runs on under it', async () => {
+  const page = await newPage();
+  await page.evaluate((t) => essikit.load('blanks.esi', t), blanksTape(60));
+  await nextFrames(page, 3);
+  for (const lang of ['de', 'zh']) {
+    await page.evaluate((l) => essikit.setLanguage(l), lang);
+    let s = await page.evaluate(() => essikit.state());
+    const g = s.problems.groups[0];
+    if (!g.open) {
+      await page.mouse.click(g.rect[0] + 20, g.rect[1] + g.rect[3] / 2);
+      await until(page, () => essikit.state().problems.groups[0].open, null, 'the group did not open');
+    }
+    await nextFrames(page, 4);
+    s = await page.evaluate(() => essikit.state());
+    const [lx, , lw] = s.controls.problems_list, [, , rw] = s.controls.problems_rows;
+    await page.screenshot({ path: path.join(shots, `problems-wrapped-${lang}.png`) });
+    assert.ok(lw > 100 && rw > 100, JSON.stringify(s.controls));
+    assert.ok(lx + rw <= lx + lw + 1, `${lang}: the rows' texts end at ${lx + rw}, the list's visible part at ${lx + lw}`);
+  }
+  await page.evaluate(() => essikit.setLanguage('en'));
+  await page.close();
+});
+
 test('a tape with a million findings of one code loads with frames never a second apart; its list is one row', async () => {
   const page = await newPage();
   const tape = '+10+0 \n'.repeat(1000000) + '64\n';  // 7 MB, one W109 a line

@@ -113,22 +113,27 @@ void Panels::problems_list() {
     if (ImGui::IsItemHovered()) wrapped_tooltip(tr(Msg::UiCopyReportTip));
     ui.group_rects.assign(ui.problems.groups().size(), Rect{0, 0, 0, 0});
     const std::vector<ProblemRow> rows = ui.problems.rows(ui.open_groups);
-    ImGui::BeginChild("diaglist", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
+    // No horizontal scrolling: the rows' texts wrap at the list's visible width (beside its scroll bar). With it the
+    // widest row widened the region they wrap in, and the texts ran on under the scroll bar.
+    ImGui::BeginChild("diaglist", ImVec2(0, 0), false);
+    float right = 0;  // where the rows' texts end (state().controls.problems_rows)
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(rows.size()));
     while (clipper.Step()) {
         for (int k = clipper.DisplayStart; k < clipper.DisplayEnd; ++k) {
             const ProblemRow& r = rows[static_cast<std::size_t>(k)];
-            if (r.kind == ProblemRow::Kind::Group) {
-                group_row(ui, *doc, r.index);
-                continue;
-            }
             const bool member = r.kind == ProblemRow::Kind::Member;
             if (member) ImGui::Indent();
-            diagnostic_row(*doc, r.index, p_.navigation, p_.exports);
+            if (r.kind == ProblemRow::Kind::Group) group_row(ui, *doc, r.index);
+            else diagnostic_row(*doc, r.index, p_.navigation, p_.exports);
             if (member) ImGui::Unindent();
+            right = std::max(right, ImGui::GetItemRectMax().x);
         }
     }
+    const ImVec2 at = ImGui::GetWindowPos();
+    const float visible_right = at.x + ImGui::GetWindowContentRegionMax().x;
+    ui.controls.emplace_back("problems_list", Rect{at.x, at.y, visible_right - at.x, ImGui::GetWindowHeight()});
+    ui.controls.emplace_back("problems_rows", Rect{at.x, at.y, right - at.x, ImGui::GetWindowHeight()});
     ImGui::EndChild();
 }
 
