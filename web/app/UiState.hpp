@@ -42,8 +42,8 @@ struct UiState {
     KeyboardMode keyboard = KeyboardMode::Mouse;
     std::string keyboard_window;  // the window the keyboard's focus is in (ImGui's name), empty: none
     std::string keyboard_list;    // the list (child window) whose box has the focus, empty: none
-    bool compact = false;               // the window is narrow: the bottom sheet instead of the side panels
-    BottomSheet sheet;                  // the bottom sheet of the compact layout
+    bool compact = false;         // the window is narrow: the bottom sheet instead of the side panels
+    BottomSheet sheet;            // the bottom sheet of the compact layout
     // The problems list (ProblemList) of the document's diagnostics, made again when they change (another load,
     // more findings), and its groups that are open.
     struct ProblemsOf {
