@@ -187,6 +187,14 @@ test('Tab reaches the canvas with a visible focus ring, then the panels; arrows 
   await page.screenshot({ path: path.join(shots, 'a11y-focus-drawing.png') });
   await page.keyboard.press('Escape');
   await until(page, () => essikit.state().selection === null, null, 'Esc on the drawing did not clear the selection');
+  // No keyboard trap (WCAG 2.1.2): Tab from the last stop leaves the canvas; Tab from the page comes back in.
+  assert.equal(await page.evaluate(() => document.activeElement.id), 'canvas');
+  await page.keyboard.press('Tab');
+  await until(page, () => document.activeElement !== document.getElementById('canvas'), null,
+              'Tab from the drawing did not leave the canvas');
+  await page.keyboard.press('Tab');
+  await until(page, () => document.activeElement === document.getElementById('canvas'), null,
+              'Tab from the page did not come back to the canvas');
   // A mouse press ends the keyboard's focus.
   await page.mouse.click(700, 450);
   await until(page, () => essikit.state().keyboard.mode === 'mouse', null, 'a click did not end the keyboard focus');

@@ -2590,6 +2590,7 @@ test('the problems list wraps its texts beside its scroll bar (German, Chinese):
   await nextFrames(page, 3);
   for (const lang of ['de', 'zh']) {
     await page.evaluate((l) => essikit.setLanguage(l), lang);
+    await nextFrames(page, 4);  // (the list laid out in that language: the group's row where it is now)
     let s = await page.evaluate(() => essikit.state());
     const g = s.problems.groups[0];
     if (!g.open) {

@@ -40,6 +40,15 @@ std::string tape_with_findings(std::size_t n) {
 
 }  // namespace
 
+// A widget's format in the UI's language: the argument's place takes the printf spec, a '%' of the text is doubled.
+TEST(ViewerLanguage, AFormatHasTheSpecWhereTheArgumentGoes) {
+    EXPECT_EQ(viewer::tr_format(Msg::UiSliderMotion, "%d"), "motion %d");
+    EXPECT_EQ(viewer::tr_format(Msg::UiSliderSpeed, "%.0f"), "%.0fx machine speed");
+    const InLanguage de(Lang::De);
+    EXPECT_EQ(viewer::tr_format(Msg::UiSliderMotion, "%d"), "Bewegung %d");
+    EXPECT_EQ(viewer::tr_format(Msg::UiSliderSpeed, "%.0f"), "%.0f-fache Maschinengeschwindigkeit");
+}
+
 TEST(ViewerKeyQueue, ATapWithinOneFrameIsDownForAFrameThenUp) {
     KeyQueue q;
     q.push({kHome, 0, kPress, 0});

@@ -61,6 +61,8 @@ public:
     void compare_with(std::string name, const std::string& bytes) { p_.session.compare_with(std::move(name), bytes); }
     void end_compare() { p_.compare.end(); }
     void print_job_sheet() { p_.exports.print_job_sheet(); }
+    // The keyboard's focus is on the drawing, the last stop of the viewer's Tab order (the page lets Tab leave).
+    [[nodiscard]] bool keyboard_at_drawing() const { return p_.ui.keyboard == KeyboardMode::Drawing; }
     // Colour by (ColourBy.hpp): "kind", "feed" or "order"; false for another name.
     bool set_colour_by(std::string_view name) {
         const std::optional<ColourBy> by = colour_by_named(name);

@@ -1,5 +1,7 @@
 #include "app/Language.hpp"
 
+#include <string_view>
+
 namespace essi::viewer {
 
 namespace {
@@ -17,12 +19,18 @@ std::string tr_id(Msg id, const char* stable_id) {
 }
 
 std::string tr_format(Msg id, const char* spec) {
-    const std::string text = tr(id, {"\x01"});
+    // The argument's place marked by a character no message has (U+E000, of the private use area): a control
+    // character would come back escaped, as every argument does ("\x01").
+    constexpr std::string_view kMark = "\xEE\x80\x80";
+    const std::string text = tr(id, {std::string(kMark)});
     std::string out;
-    for (const char c : text) {
-        if (c == '\x01') out += spec;
-        else if (c == '%') out += "%%";
-        else out += c;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        if (text.compare(k, kMark.size(), kMark) == 0) {
+            out += spec;
+            k += kMark.size() - 1;
+        } else {
+            out += text[k] == '%' ? "%%" : std::string(1, text[k]);
+        }
     }
     return out;
 }

@@ -224,6 +224,9 @@ EMSCRIPTEN_KEEPALIVE void essi_show_difference(int k) {
     if (g_api) g_api->show_difference(k);
 }
 
+// 1 when the keyboard's focus is on the drawing, the viewer's last Tab stop: the page lets Tab leave the canvas there.
+EMSCRIPTEN_KEEPALIVE int essi_keyboard_at_drawing() { return g_api && g_api->keyboard_at_drawing() ? 1 : 0; }
+
 // The view as PNG after the next frame (window.essikitLastPng gets its data URL).
 EMSCRIPTEN_KEEPALIVE void essi_export_png() {
     if (g_api) g_api->export_view_png();
