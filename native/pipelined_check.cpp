@@ -33,17 +33,16 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
         std::atomic<bool> full{false};
     };
     std::array<Slot, kPipelineChunks> slots;
-    // The cut plan's plates, analysed by the reading thread while it would wait for the interpreter, and once it has
-    // read the last chunk until the check is done.
+    // The cut plan's plates, analysed by the reading thread while it would wait for the interpreter.
     SharedPlateRunner plates;
-    std::atomic<bool> checked{false};
 
     std::thread reader_thread([&] {
         TapeReader reader(bytes, profile, format);
         for (std::size_t k = 0;; ++k) {
             Slot& slot = slots[k % slots.size()];
-            // While the slot is still being checked: the plates queued meanwhile, as they come.
-            plates.run_until([&] { return !slot.full.load(std::memory_order_acquire); });
+            while (slot.full.load(std::memory_order_acquire) && plates.run_one()) {
+            }
+            slot.full.wait(true, std::memory_order_acquire);
             const bool more = reader.read_chunk(slot.chunk, kPipelineChunkBlocks);
             // The arcs' square roots and atan2s, off the interpreting thread, but only while a chunk waits for
             // it besides the one it is checking (this thread is ahead): else the chunk goes at once and the
@@ -56,9 +55,8 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
             slot.last = !more;
             slot.full.store(true, std::memory_order_release);
             slot.full.notify_one();
-            if (!more) break;
+            if (!more) return;
         }
-        plates.run_until([&] { return checked.load(std::memory_order_acquire); });
     });
 
     TapeChecker checker(bytes, profile);
@@ -71,13 +69,11 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
         const bool last = slot.last;
         if (!last) checker.check_chunk(slot.chunk, slot.measures);
         slot.full.store(false, std::memory_order_release);
-        plates.nudge();  // (the reading thread waits for this slot or for a plate)
+        slot.full.notify_one();
         if (last) break;
     }
-    CheckResult r = checker.finish();  // (the plates left, on both threads)
-    checked.store(true, std::memory_order_release);
-    plates.nudge();
     reader_thread.join();
+    CheckResult r = checker.finish();
     r.input = format;
     r.profile = profile.name;
     return r;

@@ -3,17 +3,15 @@
 namespace essi::native {
 
 void SharedPlateRunner::run(std::function<void()> job, std::size_t motions) {
-    bool queued = false;
     {
         std::lock_guard lock(mutex_);
         if (jobs_.size() < max_waiting_ && waiting_motions_ + motions <= kMaxWaitingMotions) {
             jobs_.push_back({std::move(job), motions});
             waiting_motions_ += motions;
-            queued = true;
+            return;
         }
     }
-    if (!queued) return job();
-    nudge();  // (a thread waiting for news takes it)
+    job();
 }
 
 bool SharedPlateRunner::run_one() {

@@ -4,9 +4,7 @@
 // and interpret.
 #pragma once
 
-#include <atomic>
 #include <condition_variable>
-#include <cstdint>
 #include <cstddef>
 #include <deque>
 #include <functional>
@@ -28,21 +26,6 @@ public:
     // Runs the oldest plate queued, if any; false when none was.
     bool run_one();
 
-    // Runs the plates queued, as they come, until `done()`: between plates it sleeps until one is queued or another
-    // thread calls nudge() (which it must do after whatever makes `done()` true).
-    template <class Done>
-    void run_until(Done done) {
-        for (;;) {
-            const std::uint32_t seen = news_.load(std::memory_order_acquire);
-            if (done()) return;
-            if (!run_one()) news_.wait(seen, std::memory_order_acquire);
-        }
-    }
-    void nudge() {
-        news_.fetch_add(1, std::memory_order_release);
-        news_.notify_all();
-    }
-
     static constexpr std::size_t kMaxWaitingPlates = 8;
     static constexpr std::size_t kMaxWaitingMotions = kPlanMaxPlateMotions;
 
@@ -57,7 +40,6 @@ private:
     std::size_t waiting_motions_ = 0;
     std::size_t running_ = 0;
     std::size_t max_waiting_;
-    std::atomic<std::uint32_t> news_{0};  // counts the plates queued and the nudges
 };
 
 }  // namespace essi::native
