@@ -2443,6 +2443,7 @@ test('a phone: the drawing takes the width, the panels are a bottom sheet with t
   // a tab opens the sheet on it (the drawing gives it the room), the open tab closes it
   await page.touchscreen.tap(...centreOf(s.controls.tab_statistics));
   await until(page, () => essikit.state().sheet.open && essikit.state().sheet.tab === 'statistics', null, 'the Statistics tab did not open');
+  await nextFrames(page, 3);  // (the frame that opened it had laid the drawing out for the closed sheet)
   s = await page.evaluate(() => essikit.state());
   assert.ok(Math.abs(s.view.area[3] - (844 - 38 - 844 * 0.45)) < 1, JSON.stringify(s.view.area));
   await page.screenshot({ path: path.join(shots, 'phone-statistics.png') });
