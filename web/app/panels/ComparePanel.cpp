@@ -25,17 +25,6 @@ void polyline(ImDrawList* dl, const View& view, Point o, const std::vector<Point
     dl->AddPolyline(px.data(), static_cast<int>(px.size()), colour, ImDrawFlags_None, width);
 }
 
-// The part of the program (mm) the view shows.
-Box seen_box(const View& view, Point origin) {
-    Box box;
-    const Rect& a = view.area;
-    for (const auto& [x, y] : {std::pair{a.x, a.y}, {a.x + a.w, a.y}, {a.x, a.y + a.h}, {a.x + a.w, a.y + a.h}}) {
-        const Point p = view.to_world(x, y);
-        box.add(Point{p.x + origin.x, p.y + origin.y});
-    }
-    return box;
-}
-
 bool overlap(const Box& a, const Box& b) {
     return !a.empty && !b.empty && a.min_x <= b.max_x && b.min_x <= a.max_x && a.min_y <= b.max_y && b.min_y <= a.max_y;
 }
@@ -56,7 +45,7 @@ void Panels::compare_overlay(ImDrawList* dl) {
     if (!c) return;
     const View& view = p_.navigation.view();
     const Point o = p_.navigation.origin();
-    const Box seen = seen_box(view, o);
+    const Box seen = p_.navigation.visible_box();
     std::vector<Point> scratch;
     std::size_t points = 0;
     for (const ContourDiff& d : c->diff.contours) {
