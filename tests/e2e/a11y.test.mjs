@@ -12,7 +12,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { createRequire } from 'node:module';
 import {
-  webRoot, chromiumPath, examplesDir, shots, freePort, startStaticServer, launch, newPage as openPage,
+  examplesDir, shots, startHarness, stopHarness, newPage as openPage,
 } from './support.mjs';
 
 function resolveAxe() {
@@ -28,20 +28,11 @@ const kWcagTags = ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa'];
 let server, baseUrl, browser;
 
 before(async () => {
-  assert.ok(fs.existsSync(path.join(webRoot, 'essi_viewer.wasm')),
-            `the viewer is not built in ${webRoot} (cmake --build --preset wasm --target essi_viewer)`);
-  assert.ok(fs.existsSync(chromiumPath), `no Chromium at ${chromiumPath} (apt-get install chromium)`);
   assert.ok(axePath, 'axe-core is not installed in tests/e2e/node_modules (scripts/setup, or npm install there)');
-  fs.mkdirSync(shots, { recursive: true });
-  server = await startStaticServer(await freePort());
-  baseUrl = `http://127.0.0.1:${server.address().port}/`;
-  browser = await launch();
+  ({ server, baseUrl, browser } = await startHarness());
 });
 
-after(async () => {
-  if (browser) await browser.close();
-  if (server) server.close();
-});
+after(() => stopHarness({ server, browser }));
 
 function newPage() {
   return openPage(browser, baseUrl);

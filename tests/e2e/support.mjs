@@ -1,5 +1,6 @@
 // Shared by the browser tests (viewer.test.mjs) and the browser benchmark (bench.mjs): paths, a static server
 // for the built page, the examples and generated tapes, Chromium with SwiftShader, and page helpers.
+import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
@@ -52,6 +53,22 @@ export function startStaticServer(port) {
     });
   });
   return new Promise((resolve) => srv.listen(port, '127.0.0.1', () => resolve(srv)));
+}
+
+// The browser tests' start: the built viewer and Chromium checked, the static server and Chromium started;
+// stopHarness ends them.
+export async function startHarness() {
+  assert.ok(fs.existsSync(path.join(webRoot, 'essi_viewer.wasm')),
+            `the viewer is not built in ${webRoot} (cmake --build --preset wasm --target essi_viewer)`);
+  assert.ok(fs.existsSync(chromiumPath), `no Chromium at ${chromiumPath} (apt-get install chromium)`);
+  fs.mkdirSync(shots, { recursive: true });
+  const server = await startStaticServer(await freePort());
+  return { server, baseUrl: `http://127.0.0.1:${server.address().port}/`, browser: await launch() };
+}
+
+export async function stopHarness({ server, browser }) {
+  if (browser) await browser.close();
+  if (server) server.close();
 }
 
 export function launch() {

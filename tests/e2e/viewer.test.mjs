@@ -12,7 +12,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import {
-  webRoot, essiBin, genBin, chromiumPath, examplesDir, shots, CUT_RGB, freePort, startStaticServer, launch,
+  webRoot, essiBin, genBin, examplesDir, shots, CUT_RGB, freePort, startHarness, stopHarness,
   newPage as openPage, generatedTape, dropFromUrl, cliReport as cliReportOf, genDir,
 } from './support.mjs';
 
@@ -116,19 +116,10 @@ function near(rgb, want, tol = 45) {
 }
 
 before(async () => {
-  assert.ok(fs.existsSync(path.join(webRoot, 'essi_viewer.wasm')),
-            `the viewer is not built in ${webRoot} (cmake --build --preset wasm --target essi_viewer)`);
-  assert.ok(fs.existsSync(chromiumPath), `no Chromium at ${chromiumPath} (apt-get install chromium)`);
-  fs.mkdirSync(shots, { recursive: true });
-  server = await startStaticServer(await freePort());
-  baseUrl = `http://127.0.0.1:${server.address().port}/`;
-  browser = await launch();
+  ({ server, baseUrl, browser } = await startHarness());
 });
 
-after(async () => {
-  if (browser) await browser.close();
-  if (server) server.close();
-});
+after(() => stopHarness({ server, browser }));
 
 test('every example tape dropped on the page has the statistics and diagnostics of essi check', async () => {
   const page = await newPage();
