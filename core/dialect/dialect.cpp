@@ -18,11 +18,7 @@ constexpr std::size_t kTailBytes = 4 << 10;
 constexpr std::size_t kEvidencePerDialect = 3;  // what a report lists of each dialect's evidence
 constexpr std::size_t kQuoteChars = 24;
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-    return s;
-}
+bool is_blank(char c) { return c == ' ' || c == '\t'; }
 
 bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 
@@ -30,11 +26,14 @@ bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z')
 // when f returns false (and returns false).
 template <class F>
 bool for_each_line_of(std::string_view part, std::uint32_t line, F& f) {
+    const char* p = part.data();
     std::size_t pos = 0;
     while (pos < part.size()) {
         const std::size_t end = find_line_end(part, pos);
-        const std::string_view t = trim(part.substr(pos, end - pos));
-        if (!t.empty() && !f(line, t)) return false;
+        std::size_t first = pos, last = end;  // the line without the blanks around it
+        while (first < last && is_blank(p[first])) ++first;
+        while (last > first && is_blank(p[last - 1])) --last;
+        if (first < last && !f(line, std::string_view(p + first, last - first))) return false;
         if (end >= part.size()) break;
         pos = past_line_end(reinterpret_cast<const unsigned char*>(part.data()), static_cast<std::uint32_t>(end),
                             static_cast<std::uint32_t>(part.size()));
@@ -87,6 +86,15 @@ constexpr std::array kEssiSigns = {
     Sign{"62", "woyda", Msg::EvidenceWoydaProgramZero},     Sign{"66", "woyda", Msg::EvidenceWoydaRepeatStart},
     Sign{"11+", "hypertherm", Msg::EvidenceMarkerOffsetOn}, Sign{"12+", "hypertherm", Msg::EvidenceMarkerOffsetOff},
 };
+
+// Which bytes start a sign's token: a line that starts otherwise is none of them (most function codes).
+template <std::size_t N>
+constexpr std::array<bool, 256> first_bytes_of(const std::array<Sign, N>& signs) {
+    std::array<bool, 256> first{};
+    for (const Sign& s : signs) first[static_cast<unsigned char>(s.token.front())] = true;
+    return first;
+}
+constexpr std::array<bool, 256> kEssiSignFirstBytes = first_bytes_of(kEssiSigns);
 
 // EIA words.
 constexpr std::array kEiaSigns = {
@@ -161,6 +169,8 @@ void scan_essi(std::string_view bytes, Evidence& ev) {
     bool comment = false, after_63 = false;
     std::uint32_t line_63 = 0;
     for_each_line(bytes, [&](std::uint32_t line, std::string_view t) {
+        // A motion (most lines) says nothing unless it comes right after a 63.
+        if (!comment && !after_63 && (t.front() == '+' || t.front() == '-')) return true;
         if (comment) {
             comment = t != "4";
             return true;
@@ -178,6 +188,7 @@ void scan_essi(std::string_view bytes, Evidence& ev) {
             after_63 = true;
             line_63 = line;
         }
+        if (!kEssiSignFirstBytes[static_cast<unsigned char>(t.front())]) return true;
         const std::string_view token = essi_token(t);
         if (token.empty()) return true;
         for (const Sign& s : kEssiSigns)
