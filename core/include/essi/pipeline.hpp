@@ -114,5 +114,10 @@ private:
 
 // Blocks per chunk when check_tape streams a tape (about 100 KB of blocks: stays in the L2 cache).
 constexpr std::size_t kCheckChunkBlocks = 8192;
+// What check_tape reserves for a chunk: a block for every kMinBlockBytes bytes of the tape (a line of one
+// character and its line end), up to kCheckChunkBlocks, and kChunkWordsPerBlock words each (an ESSI motion has
+// two, an EIA block three or four); a chunk that needs more grows.
+constexpr std::size_t kMinBlockBytes = 2;
+constexpr std::size_t kChunkWordsPerBlock = 4;
 
 }  // namespace essi
