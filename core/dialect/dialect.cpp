@@ -169,8 +169,6 @@ void scan_essi(std::string_view bytes, Evidence& ev) {
     bool comment = false, after_63 = false;
     std::uint32_t line_63 = 0;
     for_each_line(bytes, [&](std::uint32_t line, std::string_view t) {
-        // A motion (most lines) says nothing unless it comes right after a 63.
-        if (!comment && !after_63 && (t.front() == '+' || t.front() == '-')) return true;
         if (comment) {
             comment = t != "4";
             return true;

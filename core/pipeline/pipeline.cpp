@@ -118,7 +118,7 @@ CheckResult check_tape(std::string_view bytes, const Profile& profile, InputForm
     TapeReader reader(bytes, profile, format);
     Tape chunk;
     // The chunk's room at once (the next chunks reuse it): a small tape's blocks and words are not copied over
-    // while they grow (2 % of a batch of small tapes' instructions).
+    // while they grow.
     const std::size_t blocks = std::min(kCheckChunkBlocks, bytes.size() / kMinBlockBytes + 1);
     chunk.reserve(blocks, blocks * kChunkWordsPerBlock);
     while (reader.read_chunk(chunk, kCheckChunkBlocks)) checker.check_chunk(chunk);
