@@ -5,6 +5,7 @@
 
 #include <array>
 #include <atomic>
+#include <cstdint>
 #include <thread>
 #include "essi/pipeline.hpp"
 
@@ -33,16 +34,60 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
         std::atomic<bool> full{false};
     };
     std::array<Slot, kPipelineChunks> slots;
-    // The cut plan's plates, analysed by the reading thread while it would wait for the interpreter.
+    // A second ring, the other way: the interpreter's stream for the cut plan, a chunk's in each slot, which the
+    // reading thread feeds to the plan (TapeChecker::feed_plan) between its chunks.
+    struct PlanSlot {
+        MotionBuffer stream;
+        std::atomic<bool> full{false};
+    };
+    std::array<PlanSlot, kPipelinePlanChunks> plan_slots;
+    // Bumped (and notified) by the interpreting thread whenever the reading thread may have work: a chunk's slot
+    // emptied, a plan slot filled, the interpreter done.
+    std::atomic<std::uint32_t> reader_wake{0};
+    std::atomic<bool> interpreted{false};  // every plan slot the interpreter fills is filled
+    const auto wake_reader = [&] {
+        reader_wake.fetch_add(1, std::memory_order_release);
+        reader_wake.notify_one();
+    };
+    // The cut plan's plates, analysed by whichever thread would otherwise wait for the other.
     SharedPlateRunner plates;
+
+    TapeChecker checker(bytes, profile);
+    checker.set_max_diagnostics(max_diagnostics);
+    checker.set_plate_runner(&plates);
+    if (parts) checker.find_parts();
 
     std::thread reader_thread([&] {
         TapeReader reader(bytes, profile, format);
-        for (std::size_t k = 0;; ++k) {
-            Slot& slot = slots[k % slots.size()];
-            while (slot.full.load(std::memory_order_acquire) && plates.run_one()) {
+        std::size_t next_plan = 0;  // the plan slot to feed next
+        // Feeds the plan slots filled, in order; false when none was.
+        const auto feed_plan = [&] {
+            bool fed = false;
+            for (;; ++next_plan, fed = true) {
+                PlanSlot& p = plan_slots[next_plan % plan_slots.size()];
+                if (!p.full.load(std::memory_order_acquire)) return fed;
+                checker.feed_plan(p.stream);
+                p.full.store(false, std::memory_order_release);
+                p.full.notify_one();
             }
-            slot.full.wait(true, std::memory_order_acquire);
+        };
+        bool reading = true;
+        for (std::size_t k = 0;;) {
+            const std::uint32_t seen = reader_wake.load(std::memory_order_acquire);
+            if (feed_plan()) continue;  // (first: the interpreter may be waiting for a plan slot)
+            if (!reading) {
+                if (!interpreted.load(std::memory_order_acquire)) {
+                    if (!plates.run_one()) reader_wake.wait(seen, std::memory_order_acquire);
+                    continue;
+                }
+                feed_plan();  // (what was filled before `interpreted` was set)
+                return;
+            }
+            Slot& slot = slots[k % slots.size()];
+            if (slot.full.load(std::memory_order_acquire)) {
+                if (!plates.run_one()) reader_wake.wait(seen, std::memory_order_acquire);
+                continue;
+            }
             const bool more = reader.read_chunk(slot.chunk, kPipelineChunkBlocks);
             // The arcs' square roots and atan2s, off the interpreting thread, but only while a chunk waits for
             // it besides the one it is checking (this thread is ahead): else the chunk goes at once and the
@@ -55,23 +100,32 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
             slot.last = !more;
             slot.full.store(true, std::memory_order_release);
             slot.full.notify_one();
-            if (!more) return;
+            ++k;
+            reading = more;
         }
     });
 
-    TapeChecker checker(bytes, profile);
-    checker.set_max_diagnostics(max_diagnostics);
-    checker.set_plate_runner(&plates);
-    if (parts) checker.find_parts();
     for (std::size_t k = 0;; ++k) {
         Slot& slot = slots[k % slots.size()];
+        while (!slot.full.load(std::memory_order_acquire) && plates.run_one()) {
+        }
         slot.full.wait(false, std::memory_order_acquire);
         const bool last = slot.last;
-        if (!last) checker.check_chunk(slot.chunk, slot.measures);
+        if (!last) {
+            PlanSlot& plan = plan_slots[k % plan_slots.size()];
+            while (plan.full.load(std::memory_order_acquire) && plates.run_one()) {
+            }
+            plan.full.wait(true, std::memory_order_acquire);
+            checker.check_chunk(slot.chunk, slot.measures, plan.stream);
+            plan.full.store(true, std::memory_order_release);
+        }
         slot.full.store(false, std::memory_order_release);
         slot.full.notify_one();
         if (last) break;
+        wake_reader();
     }
+    interpreted.store(true, std::memory_order_release);
+    wake_reader();
     reader_thread.join();
     CheckResult r = checker.finish();
     r.input = format;

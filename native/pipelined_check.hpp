@@ -1,5 +1,7 @@
 // Checking one tape on two cores: a thread reads chunks of blocks while the caller's thread interprets
-// the chunks already read. The same core steps as essi::check_tape, so the same result to the bit.
+// the chunks already read; the reading thread also feeds the interpreted chunks' motions to the cut plan, and each
+// thread analyses the plan's plates while it would wait for the other. The same core steps as essi::check_tape, so
+// the same result to the bit.
 #pragma once
 
 #include <string_view>
@@ -13,6 +15,9 @@ constexpr std::size_t kPipelineMinBytes = 1u << 20;
 // Blocks per chunk handed between the threads, and chunks in flight.
 constexpr std::size_t kPipelineChunkBlocks = 16384;
 constexpr int kPipelineChunks = 4;
+// Chunks' streams for the cut plan in flight (from the interpreting thread to the reading thread, which feeds the
+// plan): each at most a chunk's motions and events, so at most kPipelinePlanChunks x kPipelineChunkBlocks blocks'.
+constexpr int kPipelinePlanChunks = 4;
 
 // `parts`: the result has the parts list too (TapeChecker::find_parts).
 [[nodiscard]] CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,

@@ -35,6 +35,29 @@ MotionRecord record_of(const UnitLine& l) {
     return m;
 }
 
+void MotionBuffer::replay(MotionSink& sink) const {
+    std::size_t line = 0, motion = 0, event = 0;
+    for (const Item item : order_) {
+        switch (item) {
+            case Item::Line: sink.on_line(lines_[line++]); break;
+            case Item::Motion: sink.on_motion(motions_[motion++]); break;
+            case Item::Event: sink.on_event(events_[event++]); break;
+        }
+    }
+}
+
+void MotionBuffer::clear() {
+    order_.clear();
+    lines_.clear();
+    motions_.clear();
+    events_.clear();
+}
+
+std::size_t MotionBuffer::memory_bytes() const {
+    return order_.capacity() * sizeof(Item) + lines_.capacity() * sizeof(UnitLine) +
+           motions_.capacity() * sizeof(MotionRecord) + events_.capacity() * sizeof(MachineEvent);
+}
+
 const char* motion_kind_name(MotionKind k) {
     static constexpr const char* kNames[] = {"rapid", "travel", "cut", "mark"};  // MotionKind's order
     return name_in(k, kNames);

@@ -100,6 +100,9 @@ public:
 
     void run(const Tape& chunk, std::span<const MotionMeasure> measures);
     void finish();
+    void send_also_to(MotionSink& also) {
+        if (also_) also_ = &also;
+    }
 
 private:
     void function(const Block& b, std::size_t index, bool has_value, double value);
@@ -176,7 +179,7 @@ private:
     // The statistics follow the machine time or the consumables (StatsSink::timed): they get every event.
     const bool timed_stats_ = stats_ != nullptr && stats_->timed();
     // The one more sink of a check (the viewer's document): given the lines of head 1 as UnitLines.
-    MotionSink* const also_;
+    MotionSink* also_;
     std::vector<Diagnostic>& diags_;
     const FunctionFlags& function_flags_;
     // A motion or an event to the sinks: the statistics, then the one more sink; or the one sink.
@@ -989,6 +992,7 @@ void measure_motions(const Tape& chunk, std::vector<MotionMeasure>& out) {
     }
 }
 void Interpreter::finish() { machine_->finish(); }
+void Interpreter::send_also_to(MotionSink& also) { machine_->send_also_to(also); }
 
 void interpret(const Tape& tape, std::string_view source, const Profile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics) {

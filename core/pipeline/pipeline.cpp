@@ -43,8 +43,7 @@ void block_columns(std::string_view bytes, std::vector<Diagnostic>& diagnostics)
 TapeChecker::TapeChecker(std::string_view bytes, const Profile& profile, MotionSink* also)
     : bytes_(bytes), profile_(profile), cap_(profile.max_per_code), stats_(profile), plan_(profile),
       both_(also ? std::make_unique<PlanThenAlso>(plan_, *also) : nullptr),
-      interpreter_(bytes, profile, stats_, both_ ? static_cast<MotionSink*>(both_.get()) : &plan_,
-                   result_.diagnostics) {}
+      interpreter_(bytes, profile, stats_, &plan_then_also(), result_.diagnostics) {}
 
 TapeChecker::~TapeChecker() = default;
 
@@ -56,6 +55,15 @@ void TapeChecker::check_chunk(const Tape& chunk, std::span<const MotionMeasure> 
     if (result_.diagnostics.size() > first) [[unlikely]]
         keep_diagnostics_from(first);
 }
+
+void TapeChecker::check_chunk(const Tape& chunk, std::span<const MotionMeasure> measures, MotionBuffer& plan_input) {
+    plan_input.clear();
+    interpreter_.send_also_to(plan_input);
+    check_chunk(chunk, measures);
+    interpreter_.send_also_to(plan_then_also());
+}
+
+void TapeChecker::feed_plan(const MotionBuffer& plan_input) { plan_input.replay(plan_then_also()); }
 
 // The chunk's diagnostics (from `first` on) through max_per_code; past twice max_kept_ the list is sorted and cut
 // back to max_kept_: a stable sort keeps equal positions in the order found, so the first max_kept_ stay what they

@@ -57,6 +57,9 @@ public:
     void run(const Tape& chunk, std::span<const MotionMeasure> measures = {});
     // After the last chunk: reports what the program opened and never closed.
     void finish();
+    // From now on, what went to the one more sink `also` goes to `also` here (a checker that constructed it with
+    // one: e.g. a chunk's stream for the cut plan kept in a MotionBuffer).
+    void send_also_to(MotionSink& also);
 
 private:
     std::unique_ptr<detail::Machine> machine_;

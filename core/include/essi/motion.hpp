@@ -5,8 +5,10 @@
 
 #include "essi/i18n.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace essi {
 
@@ -124,6 +126,39 @@ public:
     // A straight motion of head 1 (see UnitLine). A sink that keeps motions in units overrides it; by default
     // it is the record, to on_motion.
     virtual void on_line(const UnitLine& line) { on_motion(record_of(line)); }
+};
+
+// A stretch of the motion stream kept to be passed on later, in order, maybe on another thread (the pipelined
+// check hands the interpreter's stream for the cut plan to the reading thread this way). Its lines stay UnitLines.
+class MotionBuffer final : public MotionSink {
+public:
+    void on_motion(const MotionRecord& m) override {
+        order_.push_back(Item::Motion);
+        motions_.push_back(m);
+    }
+    void on_event(const MachineEvent& e) override {
+        order_.push_back(Item::Event);
+        events_.push_back(e);
+    }
+    void on_line(const UnitLine& l) override {
+        order_.push_back(Item::Line);
+        lines_.push_back(l);
+    }
+    // What was kept, to `sink`, in the order it came.
+    void replay(MotionSink& sink) const;
+    // Empty again (its room kept for the next stretch).
+    void clear();
+    [[nodiscard]] bool empty() const { return order_.empty(); }
+    [[nodiscard]] std::size_t size() const { return order_.size(); }
+    // The room it holds (capacity), in bytes.
+    [[nodiscard]] std::size_t memory_bytes() const;
+
+private:
+    enum class Item : std::uint8_t { Line, Motion, Event };
+    std::vector<Item> order_;
+    std::vector<UnitLine> lines_;
+    std::vector<MotionRecord> motions_;
+    std::vector<MachineEvent> events_;
 };
 
 [[nodiscard]] const char* motion_kind_name(MotionKind k);  // "rapid", "travel", "cut", "mark"

@@ -47,6 +47,13 @@ public:
     TapeChecker& operator=(const TapeChecker&) = delete;
     // `measures`: measure_motions(chunk), when the caller worked it out ahead (on another thread).
     void check_chunk(const Tape& chunk, std::span<const MotionMeasure> measures = {});
+    // The same, the chunk's stream for the cut plan (and `also`) kept in `plan_input` (emptied first) instead of
+    // fed to them: feed_plan passes it on. For a pipeline that feeds the plan on another thread.
+    void check_chunk(const Tape& chunk, std::span<const MotionMeasure> measures, MotionBuffer& plan_input);
+    // A chunk's stream for the cut plan (check_chunk's `plan_input`) to the plan (and `also`): every chunk's that
+    // was kept, once each, in chunk order, before the next chunk checked without a buffer and before finish(); on
+    // any one thread at a time (the plan is touched by nothing else meanwhile).
+    void feed_plan(const MotionBuffer& plan_input);
     // The cut plan's plates are analysed by `runner` (essi/plan.hpp; null: on this thread as they end).
     void set_plate_runner(PlateRunner* runner) { plan_.set_runner(runner); }
     // At most `max` diagnostics are kept (the first by line and column, as limit_diagnostics on the sorted
@@ -76,6 +83,8 @@ public:
 
 private:
     void finish_reading();  // the interpreter's and the plan's input ended; the statistics taken
+    // What the interpreter feeds besides the statistics: the plan, or the plan and `also`.
+    MotionSink& plan_then_also() { return both_ ? static_cast<MotionSink&>(*both_) : plan_; }
     void keep_diagnostics_from(std::size_t first);  // max_per_code on the new ones, then max_kept_
     void finish_diagnostics();                      // the summaries of max_per_code, sorted, cut to max_kept_
     // The cut plan, then `also`: the one more sink the interpreter feeds.
