@@ -7,6 +7,7 @@
 #include <new>
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -17,6 +18,8 @@ namespace essi::native {
 namespace {
 
 constexpr std::size_t kReadChunkBytes = 1 << 16;
+// Files of this size and more are read into a buffer of huge pages (file_buffer).
+constexpr std::size_t kHugePageBufferBytes = std::size_t{4} << 20;
 
 // Reads what is left of `f` in chunks (for streams whose size is unknown), at most `max_bytes` in all.
 bool read_chunks(std::FILE* f, std::string& out, std::string& error, std::uint64_t max_bytes) {
@@ -68,6 +71,22 @@ std::string too_large_text(std::uint64_t size, std::uint64_t max_bytes, bool siz
 
 namespace {
 
+// A buffer of `size` bytes that nothing initialises; null when there is no memory for it. From
+// kHugePageBufferBytes on it is a mapping of its own with transparent huge pages asked for (madvise): read() then
+// fills 2 MB pages, one fault each, where a heap buffer takes a fault every 4 KB (reading a 100 MB tape cost about
+// 24 500 faults and 0.4 s of system time on a VM, a third of its check). Where the kernel has them off, 4 KB pages.
+std::shared_ptr<char[]> file_buffer(std::size_t size) {
+#if defined(MADV_HUGEPAGE) && !defined(__EMSCRIPTEN__)
+    if (size >= kHugePageBufferBytes) {
+        void* const p = ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (p == MAP_FAILED) return nullptr;
+        ::madvise(p, size, MADV_HUGEPAGE);  // (a refusal leaves 4 KB pages: nothing else changes)
+        return {static_cast<char*>(p), [size](char* q) { ::munmap(q, size); }};
+    }
+#endif
+    return std::shared_ptr<char[]>(new (std::nothrow) char[size]);
+}
+
 // A regular file of `size` bytes (at stat time), read into one buffer that nothing initialises first. Not mapped: a
 // file truncated while it is read would kill the process that reads the mapping (SIGBUS); read() instead returns
 // what is there. A file that shrank is taken as it is now; one that grew, up to its size at stat time (which was
@@ -79,7 +98,7 @@ ReadResult read_regular_file(const std::string& path, std::size_t size) {
         r.error = std::strerror(errno);
         return r;
     }
-    std::shared_ptr<char[]> buffer(new (std::nothrow) char[size]);
+    std::shared_ptr<char[]> buffer = file_buffer(size);
     if (!buffer) {
         ::close(fd);
         r.error = "file too large for memory";

@@ -12,6 +12,7 @@
 #include "essi/i18n.hpp"
 #include "essi/text.hpp"
 #include "essi_version.hpp"
+#include "process_memory.hpp"
 
 namespace {
 
@@ -73,7 +74,10 @@ int main(int argc, char** argv) {
         return essi.exit(e) == 0 ? kExitOk : kExitUsage;
     }
     if (!choose_lang(lang_arg)) return kExitUsage;
-    for (const Subcommand& sub : subcommands)
-        if (*sub.app) return sub.run();
+    for (const Subcommand& sub : subcommands) {
+        if (!*sub.app) continue;
+        if (sub.app->get_name() != "serve") essi::native::keep_freed_memory();  // (a server gives memory back)
+        return sub.run();
+    }
     return kExitUsage;
 }

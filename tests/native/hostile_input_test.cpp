@@ -47,20 +47,24 @@ TEST(HostileInput, AWordOfTwoBillionDigitsIsE104NotAWrongCoordinate) {
 
 // A tape truncated while it is checked: a reader that mapped the file would touch pages that no longer exist and
 // die of SIGBUS (rc 135, no message, the batch lost). The file is read, not mapped: the bytes read stay the bytes
-// checked.
+// checked. Both buffers: the heap's for a small file, a mapping of huge pages from kHugePageBufferBytes (4 MB) on.
 TEST(HostileInput, ATapeTruncatedWhileItIsCheckedIsCheckedAsItWasRead) {
     const std::filesystem::path dir = temp_dir("truncated");
     const std::filesystem::path file = dir / "t.esi";
-    std::string tape;
-    for (int i = 0; i < 200000; ++i) tape += "+10+0\n";
-    tape += "64\n";
-    std::ofstream(file) << tape;
-    const essi::native::ReadResult r = essi::native::read_whole_file(file.string());
-    ASSERT_TRUE(r.ok) << r.error;
-    std::filesystem::resize_file(file, 0);
-    const essi::CheckResult c = essi::check_tape(r.bytes, *essi::builtin_profile("iso6582"));
-    EXPECT_TRUE(c.ok());
-    EXPECT_EQ(c.stats.motions, 200000u);
+    for (const std::size_t motions : {200000u, 1000000u}) {
+        SCOPED_TRACE(std::to_string(motions) + " motions");
+        std::string tape;
+        for (std::size_t i = 0; i < motions; ++i) tape += "+10+0\n";
+        tape += "64\n";
+        std::ofstream(file) << tape;
+        const essi::native::ReadResult r = essi::native::read_whole_file(file.string());
+        ASSERT_TRUE(r.ok) << r.error;
+        std::filesystem::resize_file(file, 0);
+        EXPECT_TRUE(r.bytes == tape);
+        const essi::CheckResult c = essi::check_tape(r.bytes, *essi::builtin_profile("iso6582"));
+        EXPECT_TRUE(c.ok());
+        EXPECT_EQ(c.stats.motions, motions);
+    }
     std::filesystem::remove_all(dir);
 }
 
