@@ -11,6 +11,11 @@
 
 namespace essi::native {
 
+namespace {
+// What a thread writing a line takes from another core's cache (x86-64 and most others).
+constexpr std::size_t kCacheLineBytes = 64;
+}  // namespace
+
 CheckResult check_tape_pipelined(std::string_view bytes, const TapeSetup& setup, std::size_t max_diagnostics,
                                  bool parts) {
     CheckResult r = check_tape_pipelined(bytes, setup.profile, setup.format, max_diagnostics, parts);
@@ -27,7 +32,9 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
     // A ring of chunks: the reader fills slot k, the checker empties it, in order. A slot changes hands through
     // its atomic `full` flag (C++20 wait/notify: a short spin, then a futex), so a thread that is only a little
     // ahead does not go to sleep and wait to be woken at every chunk.
-    struct Slot {
+    // (each slot on cache lines of its own: the thread filling one writes its vectors' ends at every item, and must
+    // not take the lines of the slot the other thread is reading from it)
+    struct alignas(kCacheLineBytes) Slot {
         Tape chunk;
         std::vector<MotionMeasure> measures;  // worked out by the reading thread (arcs: radii, sweeps)
         bool last = false;                    // the reader is done: this slot holds nothing
@@ -36,7 +43,7 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
     std::array<Slot, kPipelineChunks> slots;
     // A second ring, the other way: the interpreter's stream for the cut plan, a chunk's in each slot, which the
     // reading thread feeds to the plan (TapeChecker::feed_plan) between its chunks.
-    struct PlanSlot {
+    struct alignas(kCacheLineBytes) PlanSlot {
         MotionBuffer stream;
         std::atomic<bool> full{false};
     };

@@ -16,8 +16,9 @@ constexpr std::size_t kPipelineMinBytes = 1u << 20;
 constexpr std::size_t kPipelineChunkBlocks = 16384;
 constexpr int kPipelineChunks = 4;
 // Chunks' streams for the cut plan in flight (from the interpreting thread to the reading thread, which feeds the
-// plan): each at most a chunk's motions and events, so at most kPipelinePlanChunks x kPipelineChunkBlocks blocks'.
-constexpr int kPipelinePlanChunks = 4;
+// plan): the one the interpreter fills and the one the reader feeds. Each holds a chunk's motions and events, up to
+// 208 bytes a block (a tape of parabolas: 3.4 MB), so more cost memory (docs/hostile-input.md).
+constexpr int kPipelinePlanChunks = 2;
 
 // `parts`: the result has the parts list too (TapeChecker::find_parts).
 [[nodiscard]] CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,

@@ -36,12 +36,16 @@ MotionRecord record_of(const UnitLine& l) {
 }
 
 void MotionBuffer::replay(MotionSink& sink) const {
-    std::size_t line = 0, motion = 0, event = 0;
-    for (const Item item : order_) {
-        switch (item) {
-            case Item::Line: sink.on_line(lines_[line++]); break;
-            case Item::Motion: sink.on_motion(motions_[motion++]); break;
-            case Item::Event: sink.on_event(events_[event++]); break;
+    // (pointers held here: the sink's calls could change the vectors for all the compiler knows, so it would read
+    // them from this object again at every item)
+    const UnitLine* line = lines_.data();
+    const MotionRecord* motion = motions_.data();
+    const MachineEvent* event = events_.data();
+    for (const Item *item = order_.data(), *end = item + order_.size(); item != end; ++item) {
+        switch (*item) {
+            case Item::Line: sink.on_line(*line++); break;
+            case Item::Motion: sink.on_motion(*motion++); break;
+            case Item::Event: sink.on_event(*event++); break;
         }
     }
 }
