@@ -31,6 +31,8 @@ import { genBin } from './support.mjs';
 const targets = process.argv.slice(2).map(Number).filter((n) => n > 0);
 const motionTargets = targets.length ? targets : [1e3, 1e4, 5e4, 1e6, 1e7];
 const smallRuns = Number(process.env.RUNS_SMALL || 5);
+const cold = process.env.COLD === '1';
+const kWarmSettleMs = 1000;
 const kAtOnceBytes = 1000000;  // LoadController::kAtOnceBytes: tapes under this are loaded at once
 
 function rssKb(pid) {
@@ -86,6 +88,14 @@ async function measureLoad(browser, baseUrl, tape) {
     };
     requestAnimationFrame(tick);
   }));
+  // Then its warm-up (web/app/WarmUp.hpp: the load path run on built-in tapes), and a pause for the browser's
+  // optimising compiler, which goes on with the hot functions on other threads (a person takes longer than that to
+  // drop a file). COLD=1 drops at once instead: the first drop pays for that compiling.
+  if (!cold) {
+    await page.waitForFunction(() => essikit.state().warm_up.state !== 'running', null, { timeout: 60000 });
+    await page.waitForTimeout(kWarmSettleMs);
+  }
+  const warmUp = await page.evaluate(() => essikit.state().warm_up);
   const before = await memory(browser, page);
   // Watch every animation frame: the first one after the state says the tape was drawn is the first frame that
   // shows it; the first one after "ready" comes once every segment is made.
@@ -149,7 +159,7 @@ async function measureLoad(browser, baseUrl, tape) {
   });
   const state = await page.evaluate(() => essikit.state());
   const after = await memory(browser, page);
-  return { page, state, before, after, ...r };
+  return { page, state, before, after, warm_up: warmUp, ...r };
 }
 
 // Frame time with the drawing at rest (what every frame of a pan costs at least): three frame intervals.
@@ -275,8 +285,10 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
         wasm_heap: r.after.wasm_heap, wasm_heap_empty_page: r.before.wasm_heap,
         malloc_peak: r.after.malloc_peak, malloc_empty_page: r.before.malloc_footprint, js_heap: r.after.js_heap,
         renderer_rss: r.after.renderer_rss, renderer_rss_before: r.before.renderer_rss, gpu_rss: r.after.gpu_rss,
+        cold, warm_up: r.warm_up,
       };
-      console.log(`   motions ${s.motions}, segments ${s.segments}, blocks ${s.blocks_read}`);
+      console.log(`   motions ${s.motions}, segments ${s.segments}, blocks ${s.blocks_read}; ` +
+                  (cold ? 'dropped at once (COLD=1)' : `dropped ${kWarmSettleMs} ms after the warm-up (${r.warm_up.state}: ${r.warm_up.tapes} tapes, ${r.warm_up.ms} ms)`));
       const l = s.load;
       console.log(`   drop -> first frame, GPU finished: ${row.drop_to_first_frame_gpu_ms} ms; drawn complete, GPU finished: ${row.drop_to_complete_frame_gpu_ms} ms` +
                   (runs > 1 ? ` (medians of ${runs} runs: ${row.drop_to_first_frame_gpu_ms_runs.join(' ')} / ${row.drop_to_complete_frame_gpu_ms_runs.join(' ')})` : '') +

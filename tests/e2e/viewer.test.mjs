@@ -1665,6 +1665,42 @@ test('a tape under 1 MB is drawn complete in the first frame after the drop; a 2
   await page.close();
 });
 
+// Before the first tape the page runs the load path on built-in tapes (web/app/WarmUp.hpp), so that the browser's
+// compilers are done with it before a person drops one; none of it shows. A tape dropped meanwhile stops it.
+test('the page warms up on built-in tapes before the first drop and shows none of them; a drop stops it', async () => {
+  const page = await newPage();
+  await page.mouse.move(5, 890);
+  await page.waitForFunction(() => essikit.state().warm_up.state === 'done', null, { timeout: 60000 });
+  const s = await page.evaluate(() => essikit.state());
+  console.log(`warm-up: ${JSON.stringify(s.warm_up)}`);
+  assert.ok(s.warm_up.tapes >= 11, `${s.warm_up.tapes} tapes`);  // every built-in one at least once
+  assert.ok(s.warm_up.bytes >= 200000, `${s.warm_up.bytes} bytes`);
+  assert.equal(s.status, 'empty');
+  assert.equal(s.name, '');
+  // Nothing of the warm-up's tapes on the screen (a frame drawn after it: the grid off and on again).
+  await page.keyboard.press('g');
+  await page.keyboard.press('g');
+  await page.waitForFunction((f) => essikit.state().frame > f + 2, s.frame);
+  const at = await pixels(page, await page.screenshot({ path: path.join(shots, 'warm-up-done.png') }));
+  const [ax, ay, aw, ah] = s.view.area;
+  let cut = 0;
+  for (let y = ay + 4; y < ay + ah - 4; y += 3) for (let x = ax + 4; x < ax + aw - 4; x += 3) if (near(at(x, y), CUT_RGB)) ++cut;
+  assert.equal(cut, 0, `${cut} sampled pixels in the cut colour on the empty page`);
+  await page.close();
+
+  // Dropped at once in a new page: the tape is the one shown, checked as essi check does, and the warm-up stops.
+  const early = await newPage();
+  const file = 'kerf_parts.esi';
+  const state = await dropFile(early, file, fs.readFileSync(path.join(examplesDir, file)));
+  await early.waitForFunction(() => essikit.state().warm_up.state === 'stopped', null, { timeout: 10000 });
+  const cli = cliReport(file);
+  assertStatsEqual(state.stats, cli.stats, file);
+  assert.deepEqual(state.diagnostics.map((d) => [d.code, d.line]), cli.diagnostics.map((d) => [d.code, d.line]));
+  const w = await early.evaluate(() => essikit.state().warm_up);
+  assert.ok(w.bytes < 200000, `the warm-up went on after the drop: ${JSON.stringify(w)}`);
+  await early.close();
+});
+
 test('a 50 MB tape loads with a moving progress bar while the page keeps drawing', async () => {
   const name = generatedTape(50);
   const page = await newPage();

@@ -16,9 +16,9 @@ App::App(PlatformServices& platform)
       exports_(session_, tape_facts_, navigation_, notices_, platform),
       shares_(session_, navigation_, notices_, ui_, platform),
       input_({session_, navigation_, layers_, playback_, measure_, shares_, preferences_, ui_, platform}),
-      parts_{session_,  load_,     navigation_,  layers_, playback_,    measure_,    compare_,
-             comments_, exports_,  tape_facts_,  shares_, preferences_, notices_,    ui_,
-             fonts_,    renderer_, ui_renderer_, scene_,  platform,     graphics_ok_},
+      parts_{session_,  load_,     navigation_,  layers_, playback_,    measure_, compare_,
+             comments_, exports_,  tape_facts_,  shares_, preferences_, notices_, ui_,
+             fonts_,    renderer_, ui_renderer_, scene_,  warm_up_,     platform, graphics_ok_},
       panels_(parts_), automation_(parts_) {}
 
 bool App::init_graphics() {
@@ -34,6 +34,12 @@ bool App::init_graphics() {
 }
 
 void App::load(std::string name, std::string bytes) { session_.load(std::move(name), std::move(bytes)); }
+
+bool App::background_step() {
+    if (load_.has_work()) return session_.background_step() || warm_up_.has_work();
+    warm_up_.step(LoadController::kStepBudgetMs);
+    return has_background_work();
+}
 
 void App::frame() {
     const ImGuiIO& io = ImGui::GetIO();

@@ -38,6 +38,7 @@
 #include "app/ShareLinks.hpp"
 #include "app/UiState.hpp"
 #include "app/ViewerParts.hpp"
+#include "app/WarmUp.hpp"
 #include "app/panels/Panels.hpp"
 #include "render/Renderer.hpp"
 #include "render/UiFonts.hpp"
@@ -63,9 +64,12 @@ public:
     // draw the same pixels as the last one draws nothing: no GPU work while nothing moves.
     void render(bool keep_unchanged);
     // Loading or building work left to do (the browser loop also runs slices of it between frames).
-    [[nodiscard]] bool has_background_work() const { return load_.has_work(); }
+    [[nodiscard]] bool has_background_work() const { return load_.has_work() || warm_up_.has_work(); }
     // One slice (about LoadController::kStepBudgetMs) of that work outside a frame; returns has_background_work().
-    bool background_step() { return session_.background_step(); }
+    bool background_step();
+    // Runs the load path on the built-in tapes before the first tape (app/WarmUp.hpp): the browser's choice, once
+    // its page has started (its code is compiled while it runs; the desktop's is compiled already).
+    void start_warm_up() { warm_up_.start(graphics_ok_); }
 
     // AppCallbacks: a file opened, dropped or pasted; a platform service's message.
     void load(std::string name, std::string bytes) override;
@@ -89,6 +93,7 @@ private:
     bool graphics_ok_ = false;
     bool fonts_changed_ = false;  // the atlas was made again after the last frame: the next one is drawn in full
     LoadController load_;
+    WarmUp warm_up_{renderer_, load_};
     TapeFacts tape_facts_;
     SceneAssembly scene_;
     Layers layers_;

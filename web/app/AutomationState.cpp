@@ -387,6 +387,11 @@ std::string Automation::state_json(ProblemPage page) const {
     json j;
     const Document* doc = p_.session.document();
     add_loading(j, p_.load, doc != nullptr, p_.scene, p_.session.frames());
+    const WarmUp& w = p_.warm_up;
+    j["warm_up"] = {{"state", warm_up_state_name(w.state())},
+                    {"tapes", w.tapes()},
+                    {"bytes", w.bytes()},
+                    {"ms", std::lround(w.seconds() * 1000)}};
     add_reading(j, p_);
     if (doc) add_problems(j, *doc, p_.ui, p_.load, p_.navigation.problem(), page);
     const Selection& selection = p_.navigation.selection();

@@ -83,6 +83,12 @@ public:
     // A load at once not yet drawn complete: its first frame draws the whole image (no fill over frames).
     [[nodiscard]] bool draw_whole() const { return frames_.at_once && frames_.complete == 0 && doc_ && !loading(); }
 
+    // Gives the drawing's segments back to the GPU (a LoadController that goes away: the renderer outlives it).
+    void release_drawing() {
+        renderer_.release(gpu_);
+        renderer_.release(gpu_building_);
+    }
+
     [[nodiscard]] Phase phase() const;
     [[nodiscard]] bool loading() const { return phase() != Phase::Idle; }  // reading, or the first drawing
     [[nodiscard]] float progress() const;

@@ -17,6 +17,7 @@
 #include "app/Session.hpp"
 #include "app/ShareLinks.hpp"
 #include "app/UiState.hpp"
+#include "app/WarmUp.hpp"
 #include "render/Renderer.hpp"
 #include "render/UiFonts.hpp"
 #include "render/UiRenderer.hpp"
@@ -42,6 +43,7 @@ struct ViewerParts {
     const Renderer& renderer;
     const UiRenderer& ui_renderer;
     const SceneAssembly& scene;
+    const WarmUp& warm_up;
     PlatformServices& platform;
     const bool& graphics_ok;  // the drawing programs compiled
 };

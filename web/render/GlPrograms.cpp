@@ -130,7 +130,8 @@ bool ScenePrograms::init(int tex_width) {
     p.set("u_tex_width", tex_width);
 
     const Setup g(grid_id);
-    grid = {g.scene(), g("u_world_origin"), g("u_step")};
+    grid = {g.scene(),          g("u_first"), g("u_step"),    g("u_count"),
+            g("u_major_phase"), g("u_zero"),  g("u_axes_at"), g("u_span")};
 
     const Setup m(marker_id);
     marker = {m.scene(),     m("u_radius_px"),      m("u_type_mask"),   m("u_use_single"),

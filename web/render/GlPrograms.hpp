@@ -38,7 +38,7 @@ struct PathProgram : SceneProgram {
 };
 // shaders/grid.*: the grid under the drawing.
 struct GridProgram : SceneProgram {
-    int world_origin = -1, step = -1;
+    int first = -1, step = -1, count = -1, major_phase = -1, zero = -1, axes_at = -1, span = -1;
 };
 // shaders/marker.*: pierces, the start point, the playback tool and the diagnostics' marks.
 struct MarkerProgram : SceneProgram {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <vector>
 
+#include "render/GridLines.hpp"
+
 namespace essi::viewer {
 
 namespace {
@@ -279,12 +281,23 @@ Renderer::Target Renderer::grid_target(const Target& t, const View& view) {
 }
 
 void Renderer::draw_grid(const Target& t, double grid_step, Point world_origin) {
+    const GridLines g = grid_lines(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.rot, grid_step, world_origin);
     const GridProgram& p = programs_.grid;
     glUseProgram(p.id);
     p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.rot);
-    glUniform2f(p.world_origin, static_cast<float>(world_origin.x), static_cast<float>(world_origin.y));
-    glUniform1f(p.step, static_cast<float>(grid_step));
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    auto f = [](double v) { return static_cast<float>(v); };
+    auto phase = [](long long index) { return static_cast<GLint>(((index % 10) + 10) % 10); };
+    auto zero = [](long long index, int count) {
+        return index <= 0 && -index < count ? static_cast<GLint>(-index) : GLint{-1};
+    };
+    glUniform2f(p.first, f(g.first_x), f(g.first_y));
+    glUniform1f(p.step, f(g.step));
+    glUniform2i(p.count, g.count_x, g.count_y);
+    glUniform2i(p.major_phase, phase(g.first_index_x), phase(g.first_index_y));
+    glUniform2i(p.zero, zero(g.first_index_x, g.count_x), zero(g.first_index_y, g.count_y));
+    glUniform2f(p.axes_at, f(g.axis_x), f(g.axis_y));
+    glUniform4f(p.span, f(g.lo_x), f(g.lo_y), f(g.hi_x), f(g.hi_y));
+    glDrawArrays(GL_TRIANGLES, 0, 6 * (g.count_x + g.count_y + 2));
 }
 
 void Renderer::begin_paths(const Target& t, int layer_mask, const DrawOptions& o, float alpha) {
@@ -391,6 +404,49 @@ bool Renderer::ensure_cache(int w, int h) {
     cache_w_ = ok ? w : 0;
     cache_h_ = ok ? h : 0;
     return ok;
+}
+
+void Renderer::warm_up(const GpuPath& path, Point center, double zoom) {
+    constexpr int kPx = kWarmUpImagePx;
+    const unsigned tex = new_texture();
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kPx, kPx, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);  // (as the image's)
+    glBindTexture(GL_TEXTURE_2D, 0);
+    GLuint fbo = 0;
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
+        glViewport(0, 0, kPx, kPx);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_CULL_FACE);
+        glDisable(GL_SCISSOR_TEST);
+        glBindVertexArray(empty_vao_);
+        glActiveTexture(GL_TEXTURE0);
+        const float half = static_cast<float>(kPx) / 2;
+        const Target t{static_cast<float>(center.x),
+                       static_cast<float>(center.y),
+                       static_cast<float>(zoom),
+                       half,
+                       half,
+                       kPx,
+                       kPx,
+                       1.f,
+                       Rotation{}};
+        begin_paths(t, kAllPathMask, DrawOptions{});
+        draw_run(path, 0, path.count);
+        draw_markers(t, kAllMarkersMask, false);
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glBindVertexArray(0);
+        glUseProgram(0);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(1, &tex);
 }
 
 // How far the cached image has moved on the screen since it was drawn (framebuffer pixels): the pan since, turned

@@ -121,6 +121,13 @@ public:
     void draw(const View& view, int fb_w, int fb_h, const DrawOptions& options, double grid_step_mm, Point grid_origin,
               const GpuPath* path, std::size_t fill_budget = kSegmentsPerFrame);
 
+    // Draws `path` and the markers once, as a frame's scene draws them, into a small image of their own that is
+    // then deleted (nothing on the screen changes, nothing counts in stats()): the GPU prepares what drawing them
+    // takes (SwiftShader compiles a program's code on its first draw) before a tape is dropped (app/WarmUp.hpp).
+    // `center` (mm relative to the document origin) and `zoom` (px/mm) place the drawing in the image.
+    void warm_up(const GpuPath& path, Point center, double zoom);
+    static constexpr int kWarmUpImagePx = 64;
+
     [[nodiscard]] const RenderStats& stats() const { return stats_; }
     // The image is still being filled: the next frames must be drawn even when nothing changed.
     [[nodiscard]] bool filling() const { return stats_.pending_segments > 0; }
