@@ -406,6 +406,26 @@ bool Renderer::ensure_cache(int w, int h) {
     return ok;
 }
 
+// What every program of the scene draws with: blending, no depth, no culling, the attribute-less vertex array.
+void Renderer::begin_scene_state() const {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glBindVertexArray(empty_vao_);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+void Renderer::end_scene_state() const {
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+
 void Renderer::warm_up(const GpuPath& path, Point center, double zoom) {
     constexpr int kPx = kWarmUpImagePx;
     const unsigned tex = new_texture();
@@ -417,13 +437,7 @@ void Renderer::warm_up(const GpuPath& path, Point center, double zoom) {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
         glViewport(0, 0, kPx, kPx);
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_CULL_FACE);
-        glDisable(GL_SCISSOR_TEST);
-        glBindVertexArray(empty_vao_);
-        glActiveTexture(GL_TEXTURE0);
+        begin_scene_state();
         const float half = static_cast<float>(kPx) / 2;
         const Target t{static_cast<float>(center.x),
                        static_cast<float>(center.y),
@@ -437,12 +451,7 @@ void Renderer::warm_up(const GpuPath& path, Point center, double zoom) {
         begin_paths(t, kAllPathMask, DrawOptions{});
         draw_run(path, 0, path.count);
         draw_markers(t, kAllMarkersMask, false);
-        glActiveTexture(GL_TEXTURE1);
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glBindVertexArray(0);
-        glUseProgram(0);
+        end_scene_state();
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(1, &fbo);
@@ -596,13 +605,7 @@ void Renderer::blit_image(const Frame& f) {
 void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, double grid_step, Point world_origin,
                     const GpuPath* path, std::size_t fill_budget) {
     ++stats_.frames;
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_SCISSOR_TEST);
-    glBindVertexArray(empty_vao_);
-    glActiveTexture(GL_TEXTURE0);
+    begin_scene_state();
     const float s = o.framebuffer_scale;
     const Target window{static_cast<float>(view.cx),
                         static_cast<float>(view.cy),
@@ -647,12 +650,7 @@ void Renderer::draw(const View& view, int fb_w, int fb_h, const DrawOptions& o, 
     // (what the highlights and the selection cover of the marks: a hovered or selected diagnostic's mark)
     if (!o.highlights.empty() || o.selection_count > 0) draw_marks_on_top(window);
     draw_tool(window, o);
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glBindVertexArray(0);
-    glUseProgram(0);
+    end_scene_state();
 }
 
 }  // namespace essi::viewer

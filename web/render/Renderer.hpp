@@ -190,6 +190,8 @@ private:
     void draw_selection(const Target& t, const GpuPath& path, const DrawOptions& o);
     void draw_tool(const Target& t, const DrawOptions& o);
     void draw_lod(const Target& t, int mask);
+    void begin_scene_state() const;  // the GL state the scene's programs draw with
+    void end_scene_state() const;    // textures, vertex array and program unbound
     bool ensure_cache(int w, int h);
     // The scene into target t: the grid (when `full`), the paths [from, f.limit) that show in t until `budget`
     // segments are drawn, then the markers once every path is in. Returns where the paths stopped.
