@@ -258,10 +258,31 @@ HardenedServer::HardenedServer(const ConnectionLimits& limits)
     });
 }
 
+// The answer went out before the request's body was read (413, 503, a 4xx): the client may still be sending it.
+// Closing now would make the kernel answer its next bytes with a reset, which can destroy the answer before the
+// client has read it (curl: "Broken pipe", "Connection reset by peer"). So the server says it has written all
+// (FIN), then reads and drops what comes until the client closes, for at most kLingerMs and kLingerBytes.
+namespace {
+void linger(socket_t sock) {
+    ::shutdown(sock, SHUT_WR);
+    const Clock::time_point until = Clock::now() + std::chrono::milliseconds(kLingerMs);
+    char scratch[16384];
+    std::size_t dropped = 0;
+    while (dropped < kLingerBytes) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(until - Clock::now()).count();
+        if (left <= 0 || !wait_for(sock, POLLIN, static_cast<int>(left))) break;
+        const ssize_t n = recv(sock, scratch, sizeof scratch, 0);
+        if (n <= 0) break;
+        dropped += static_cast<std::size_t>(n);
+    }
+}
+}  // namespace
+
 bool HardenedServer::process_and_close_socket(socket_t sock) {
     const std::string client = client_key(endpoint(sock, true).ip);
     if (slots_.enter(client)) {
         serve_connection(sock);
+        if (t_body_unread) linger(sock);
         slots_.leave(client);
     } else {
         refuse(sock);

@@ -52,6 +52,10 @@ inline constexpr int kEvictAfterMs = 1000;               // a connection waiting
 inline constexpr std::size_t kMaxHeadBytes = 64 * 1024;  // the request line and headers together
 inline constexpr std::size_t kMaxHeadLines = 128;        // the request line, the headers and the blank line
 inline constexpr std::size_t kMaxLineBytes = 64 * 1024;  // any line read (a chunk size too)
+// A lingering close (after an answer given before the request's body was read): the body still coming is read and
+// dropped for at most this long and this many bytes, so that the client reads the answer instead of a reset.
+inline constexpr int kLingerMs = 2000;
+inline constexpr std::size_t kLingerBytes = 4 * 1024 * 1024;
 
 // The connections waiting for a request or still reading its head, by socket, with the time they began to wait.
 class WaitingConnections {

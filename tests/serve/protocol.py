@@ -5,7 +5,8 @@ remaining bytes are never answered as a second request; headers are bounded in b
 arrive whole within --body-timeout even at a rate above --min-transfer-rate, so a slow sender frees its
 large-request slot in time; a request that finds no check slot within --body-timeout gets 503 (an unread answer keeps
 its slot); the body's framing must be unambiguous; every method an endpoint does not take gets 405 with Allow;
-Accept-Encoding is read with its q-values; --max-diagnostics cuts an answer. Loopback only; stops by itself (90 s
+Accept-Encoding is read with its q-values; --max-diagnostics cuts an answer; a body refused before it is read is
+drained, so the client reads the refusal (a lingering close). Loopback only; stops by itself (90 s
 alarm).
 Usage: protocol.py PATH/TO/essi"""
 import gzip
@@ -88,6 +89,30 @@ def connection_endings(port, report):
     # Keep-alive still works for requests without a body.
     got, closed, _ = exchange(port, health + health + get(port, "/api/health", "Connection: close\r\n"))
     report.check(statuses(got) == [200, 200, 200], f"three pipelined GETs: answers {statuses(got)}")
+
+
+def early_answer(port, report):
+    # A body over --max-body (4 MB here) is refused from its Content-Length, before it is read, while the client is
+    # still sending it. The server lingers (reads and drops what comes, kLingerMs / kLingerBytes): the client's
+    # sending ends without a reset or a broken pipe (curl gives up on those, answer or not), and it reads the 413.
+    head = b"POST /api/check HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/octet-stream\r\nContent-Length: 6000000\r\n\r\n"
+    send_error = None
+    got = b""
+    with socket.create_connection(("127.0.0.1", port), timeout=6) as s:
+        try:
+            s.sendall(head)
+            for _ in range(48):  # 3 MB in 64 KB writes
+                s.sendall(b"1" * 65536)
+        except OSError as e:
+            send_error = e
+        try:
+            while chunk := s.recv(65536):
+                got += chunk
+        except OSError:
+            pass
+    report.check(send_error is None and statuses(got) == [413] and b"request body too large" in body_of(got),
+                 f"3 MB of a 6 MB body sent before reading the answer: sending ended with {send_error!r}, "
+                 f"answers {statuses(got)} {body_of(got)[:50]!r} (413)")
 
 
 def header_limits(port, report):
@@ -250,6 +275,7 @@ def main(essi):
                                  "--max-diagnostics", "2")
     try:
         connection_endings(port, report)
+        early_answer(port, report)
         header_limits(port, report)
         framing(port, report)
         methods(port, report)
