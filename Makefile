@@ -81,7 +81,9 @@ bench: setup-test
 	@if [ -f third_party/benchmark/CMakeLists.txt ]; then \
 	  cmake --build --preset wasm -j$(JOBS) --target essi_bench && \
 	  echo "== WASM (node) ==" && \
-	  cd build/wasm/bin && node --no-experimental-fetch essi_bench.js; \
+	  (cd build/wasm/bin && node --no-experimental-fetch essi_bench.js) && \
+	  echo "== the core in WASM (node) against native, per CPU second (goal: 0.5x or more) ==" && \
+	  scripts/bench_wasm; \
 	else echo "make bench: third_party/benchmark missing, no WASM bench"; fi
 	cmake --build --preset native -j$(JOBS) --target essi_gen_nest
 	cmake --build --preset wasm -j$(JOBS) --target essi_viewer
