@@ -18,8 +18,6 @@ constexpr std::size_t kTailBytes = 4 << 10;
 constexpr std::size_t kEvidencePerDialect = 3;  // what a report lists of each dialect's evidence
 constexpr std::size_t kQuoteChars = 24;
 
-bool is_blank(char c) { return c == ' ' || c == '\t'; }
-
 bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 
 // Calls f(line number, trimmed text) for each non-empty line of `part`, whose first line is line `line`; stops
@@ -30,10 +28,8 @@ bool for_each_line_of(std::string_view part, std::uint32_t line, F& f) {
     std::size_t pos = 0;
     while (pos < part.size()) {
         const std::size_t end = find_line_end(part, pos);
-        std::size_t first = pos, last = end;  // the line without the blanks around it
-        while (first < last && is_blank(p[first])) ++first;
-        while (last > first && is_blank(p[last - 1])) --last;
-        if (first < last && !f(line, std::string_view(p + first, last - first))) return false;
+        const std::string_view text = trim_blanks(std::string_view(p + pos, end - pos));
+        if (!text.empty() && !f(line, text)) return false;
         if (end >= part.size()) break;
         pos = past_line_end(reinterpret_cast<const unsigned char*>(part.data()), static_cast<std::uint32_t>(end),
                             static_cast<std::uint32_t>(part.size()));

@@ -563,7 +563,7 @@ void EiaReader::commit(const LineResult& r) {
 // A line: its blocks are worked out first (read_block, on a copy of the machine state), then committed with its
 // diagnostics unless they do not fit in the chunk.
 bool EiaReader::read_line(std::uint32_t begin, std::uint32_t end, std::size_t max_blocks) {
-    const std::string_view text = detail::trim_blanks(src_.substr(begin, end - begin));
+    const std::string_view text = trim_blanks(src_.substr(begin, end - begin));
     const auto text_at = static_cast<std::uint32_t>(text.empty() ? begin : text.data() - src_.data());
     LineResult& r = line_out_;
     r.blocks.clear();

@@ -390,7 +390,7 @@ std::uint32_t EssiReader::read_plain_lines(std::uint32_t pos, std::uint32_t size
 
 void EssiReader::read_ignored_line(std::uint32_t begin, std::uint32_t end) {
     const std::string_view text = src_.substr(begin, end - begin);
-    const std::string_view t = detail::trim_blanks(text);
+    const std::string_view t = trim_blanks(text);
     if (t == "4") {
         in_ignore_ = false;
         push_block(begin + static_cast<std::uint32_t>(text.find('4')), BlockKind::Function, fn::kIgnoreOff, 0);
@@ -400,7 +400,7 @@ void EssiReader::read_ignored_line(std::uint32_t begin, std::uint32_t end) {
 }
 
 void EssiReader::after_end_line(std::uint32_t begin, std::uint32_t end) {
-    const std::string_view t = detail::trim_blanks(src_.substr(begin, end - begin));
+    const std::string_view t = trim_blanks(src_.substr(begin, end - begin));
     if (t.empty()) return;
     if (t == "%") {  // a rewind-stop mark after the program is accepted (kept, but not part of the program)
         push_block(begin + static_cast<std::uint32_t>(src_.substr(begin, end - begin).find('%')), BlockKind::Percent,

@@ -22,13 +22,6 @@ namespace essi::detail {
 // Reading stops after this many errors (E115): the bytes are most likely not a tape.
 constexpr std::size_t kMaxReadErrors = 100;
 
-// `s` without the spaces and tabs around it.
-[[nodiscard]] inline std::string_view trim_blanks(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-    return s;
-}
-
 // A byte as two hex digits ("C3"), as the messages quote it.
 [[nodiscard]] std::string hex_byte(unsigned char c);
 

@@ -12,12 +12,6 @@ namespace {
 constexpr std::size_t kControlBytesPerBinary = 20;  // more than 1 control byte in 20: binary
 constexpr std::size_t kEssiLinesPercent = 80;       // lines that must hold only ESSI characters
 
-std::string_view trim_blanks(std::string_view line) {
-    while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
-    while (!line.empty() && (line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
-    return line;
-}
-
 bool is_essi_char(char c) { return c == '+' || c == '-' || (c >= '0' && c <= '9') || c == ' ' || c == '\t'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 

@@ -62,7 +62,9 @@ TEST(ViewerPlayback, LastsTheStatisticsTimeWithAndWithoutAccelerations) {
             ASSERT_EQ(times.size(), n);
             EXPECT_NEAR(doc->stats.estimated_time_s, estimate, 1e-5);
             const double want = profile.accel_mm_s2 ? doc->stats.machine_time->total_s : doc->stats.estimated_time_s;
-            if (profile.accel_mm_s2) EXPECT_GT(want, estimate + 0.05);  // (the machine time, not the estimate)
+            if (profile.accel_mm_s2) {
+                EXPECT_GT(want, estimate + 0.05);  // (the machine time, not the estimate)
+            }
             EXPECT_EQ(Playback::total_s(*doc), want);
             EXPECT_NEAR(times.before(n), want, 1e-4);
             Playback p;

@@ -34,6 +34,12 @@ namespace essi {
     return pos;
 }
 
+// A line without the blanks (spaces and tabs) around it: how every reader and scan of a tape sees a line's text.
+[[nodiscard]] constexpr std::string_view trim_blanks(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+    return s;
+}
 // 1-based column of a byte offset (counts bytes from the start of its line).
 [[nodiscard]] std::uint32_t column_of(std::string_view bytes, std::uint32_t offset);
 // The source text of the line holding `offset`, without its line end.
