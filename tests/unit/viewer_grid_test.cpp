@@ -33,6 +33,17 @@ TEST(ViewerGrid, LinesAtEveryMultipleOfTheStepThatTheTargetShows) {
     EXPECT_DOUBLE_EQ(g.axis_y, 0);
 }
 
+TEST(ViewerGrid, EveryTenthLineIsMajorAndTheLineAtZeroIsLeftToTheAxis) {
+    const GridLines g = lines_at(3, 0, 10);      // indices -4 .. 5 along x
+    EXPECT_EQ(major_phase(g.first_index_x), 6);  // -4 + 4 = 0: line 4 (x = 0) is a multiple of 10 steps
+    EXPECT_EQ(line_on_axis(g.first_index_x, g.count_x), 4);
+    EXPECT_EQ(major_phase(-23), 7);  // line 3 (index -20) is major
+    EXPECT_EQ(major_phase(96), 6);   // line 4 (index 100)
+    EXPECT_EQ(line_on_axis(96, 10), -1);
+    EXPECT_EQ(line_on_axis(-9, 9), -1);  // indices -9 .. -1: the axis is past the last line
+    EXPECT_EQ(line_on_axis(0, 1), 0);
+}
+
 TEST(ViewerGrid, TheDocumentOriginShiftsTheLinesNotTheAxesMeaning) {
     // The shown coordinates are the document's plus its origin: the centre at 1003 mm shown.
     const GridLines g = lines_at(3, 0, 10, {1000, 500});

@@ -2,7 +2,6 @@
 
 #include <GLFW/glfw3.h>
 
-#include <algorithm>
 #include <iterator>
 #include <string>
 
@@ -52,14 +51,14 @@ void WarmUp::run_one() {
     const Document& d = *load.document();
     for (const Diagnostic& diagnostic : d.diagnostics) (void)diagnostic_message(diagnostic, ui_lang());
     if (d.bbox.empty) return;
-    const double extent = std::max({d.bbox.max_x - d.bbox.min_x, d.bbox.max_y - d.bbox.min_y, 1.0});
-    View view;
-    view.zoom = kViewPx / extent;
+    View view;  // fitted as a dropped tape's view is
+    view.area = {0, 0, kViewPx, kViewPx};
+    view.fit(d.bbox, d.origin);
     load.begin_drawing(view.chord_tolerance_mm(), view.zoom, 1.0);
     while (load.has_work()) (void)load.step();
     if (!draw) return;
-    const Point center{(d.bbox.min_x + d.bbox.max_x) / 2 - d.origin.x, (d.bbox.min_y + d.bbox.max_y) / 2 - d.origin.y};
-    if (const GpuPath* path = load.drawn_path()) renderer_.warm_up(*path, center, Renderer::kWarmUpImagePx / extent);
+    if (const GpuPath* path = load.drawn_path())
+        renderer_.warm_up(*path, {view.cx, view.cy}, view.zoom * Renderer::kWarmUpImagePx / kViewPx);
     load.release_drawing();
     renderer_.upload_markers({});  // (the markers are the shown tape's: none yet)
 }

@@ -20,13 +20,13 @@ namespace essi::viewer {
 
 class WarmUp {
 public:
-    // Tape bytes read in all (the built-in tapes over and over): about 14 000 motions' worth of code run, which
-    // makes the reading, the check and the drawing's loops hot enough to be optimised.
+    // Tape bytes read in all (the built-in tapes over and over): enough to make the reading, the check and the
+    // drawing's loops hot enough to be optimised (the size of a 14 000-motion nesting tape).
     static constexpr std::size_t kBytes = 200000;
-    // Tapes per round that are drawn as well (the GPU's part is done after one draw each).
+    // Rounds over the built-in tapes whose tapes are drawn as well (the GPU's part is done after one draw each).
     static constexpr std::size_t kDrawnRounds = 1;
-    // The view the drawing is made for: a drawing area this many pixels wide (its chord tolerance).
-    static constexpr double kViewPx = 1000;
+    // The view each tape is fitted to: a square drawing area this many pixels wide (its chord tolerance).
+    static constexpr float kViewPx = 1000;
 
     enum class State { Off, Running, Done, Stopped };
 

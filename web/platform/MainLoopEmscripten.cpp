@@ -31,12 +31,12 @@ struct Loop {
     double pixel_ratio = 1;          // the device pixel ratio the canvas is drawn at (a hi-DPI screen: 2)
 };
 
-// Emscripten's GLFW (3.1.6) passes the browser's wheel deltas as the scroll offsets: pixels (about 100 a
-// notch; 3 a notch in line mode), positive downwards. GLFW's offsets are notches, positive upwards: without
-// this, one notch zoomed the drawing 1.2^120 times the wrong way and scrolled the panels by 120 lines.
 // The warm-up (app/WarmUp.hpp) starts once the page has drawn this many frames: its start comes first.
 constexpr int kWarmUpAfterFrames = 3;
 
+// Emscripten's GLFW (3.1.6) passes the browser's wheel deltas as the scroll offsets: pixels (about 100 a
+// notch; 3 a notch in line mode), positive downwards. GLFW's offsets are notches, positive upwards: without
+// this, one notch zoomed the drawing 1.2^120 times the wrong way and scrolled the panels by 120 lines.
 constexpr double kWheelPixelsPerNotch = 100;
 constexpr double kWheelLinesPerNotch = 3;
 constexpr double kWheelLineModeBelow = 10;  // deltas smaller than this come in lines

@@ -25,6 +25,15 @@ struct GridLines {
     static constexpr int kMaxLines = 2000;
 };
 
+// Of lines along one axis whose first has grid index `first_index`: the first's index modulo kMajorEvery (line i is
+// major when (phase + i) is a multiple of it), and the line of index 0 (i, -1 when none: the axis draws it).
+[[nodiscard]] constexpr int major_phase(long long first_index) {
+    return static_cast<int>(((first_index % GridLines::kMajorEvery) + GridLines::kMajorEvery) % GridLines::kMajorEvery);
+}
+[[nodiscard]] constexpr int line_on_axis(long long first_index, int count) {
+    return first_index <= 0 && -first_index < count ? static_cast<int>(-first_index) : -1;
+}
+
 // The lines of a grid of `step` mm over a target of w x h pixels, whose centre (cx, cy: mm in the shown
 // coordinates, relative to `origin`, the document origin in them) is drawn at pixel (ox, oy) (top-left origin), at
 // `zoom` px/mm, turned by `rot` (quarter turns: the grid lies along the screen's axes). `step` kNoGrid: the axes only.

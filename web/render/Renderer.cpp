@@ -286,15 +286,11 @@ void Renderer::draw_grid(const Target& t, double grid_step, Point world_origin) 
     glUseProgram(p.id);
     p.target.set(t.cx, t.cy, t.zoom, t.ox, t.oy, t.w, t.h, t.rot);
     auto f = [](double v) { return static_cast<float>(v); };
-    auto phase = [](long long index) { return static_cast<GLint>(((index % 10) + 10) % 10); };
-    auto zero = [](long long index, int count) {
-        return index <= 0 && -index < count ? static_cast<GLint>(-index) : GLint{-1};
-    };
     glUniform2f(p.first, f(g.first_x), f(g.first_y));
     glUniform1f(p.step, f(g.step));
     glUniform2i(p.count, g.count_x, g.count_y);
-    glUniform2i(p.major_phase, phase(g.first_index_x), phase(g.first_index_y));
-    glUniform2i(p.zero, zero(g.first_index_x, g.count_x), zero(g.first_index_y, g.count_y));
+    glUniform2i(p.major_phase, major_phase(g.first_index_x), major_phase(g.first_index_y));
+    glUniform2i(p.zero, line_on_axis(g.first_index_x, g.count_x), line_on_axis(g.first_index_y, g.count_y));
     glUniform2f(p.axes_at, f(g.axis_x), f(g.axis_y));
     glUniform4f(p.span, f(g.lo_x), f(g.lo_y), f(g.hi_x), f(g.hi_y));
     glDrawArrays(GL_TRIANGLES, 0, 6 * (g.count_x + g.count_y + 2));
