@@ -26,11 +26,21 @@ struct Served {
     const char* type;
 };
 constexpr Served kViewerFiles[] = {
-    {"index.html", "text/html; charset=utf-8"}, {"essi_viewer.js", "text/javascript"},
-    {"essi_viewer.wasm", "application/wasm"},   {"essi_viewer.data", "application/octet-stream"},
-    {"share_store.js", "text/javascript"},      {"favicon.ico", "image/x-icon"},
+    {"index.html", "text/html; charset=utf-8"},
+    {"essi_viewer.js", "text/javascript"},
+    {"essi_viewer.wasm", "application/wasm"},
+    {"essi_viewer.data", "application/octet-stream"},
+    {"share_store.js", "text/javascript"},
+    {"favicon.ico", "image/x-icon"},
     {"essi_cjk.ttc", "font/collection"},  // (the CJK font, fetched only when a text needs it: web/render/UiFonts.hpp)
+    // The reading worker's program (web/worker/), which the page starts in a Web Worker.
+    {"essi_reader.js", "text/javascript"},
+    {"essi_reader.wasm", "application/wasm"},
 };
+
+// A worker runs under the policy its own script is sent with: the reading worker loads its program and compiles
+// it (script-src 'self' 'wasm-unsafe-eval') and fetches nothing else.
+constexpr const char* kReaderWorkerCsp = "default-src 'none'; script-src 'self' 'wasm-unsafe-eval'; connect-src 'self'";
 
 void not_found(httplib::Response& res) {
     res.status = 404;
@@ -82,6 +92,7 @@ void send_embedded_file(const Served& served, const httplib::Request& req, httpl
     const EmbeddedFile* file = find_embedded_web_file(served.name);
     if (file == nullptr) return not_found(res);
     const std::string_view name = served.name;
+    if (name == "essi_reader.js") res.set_header("Content-Security-Policy", kReaderWorkerCsp);
     if (name == "index.html") {
         send_index(std::string(file->bytes), res);
     } else {
@@ -102,8 +113,10 @@ void send_viewer_file(const StaticFiles& files, const std::string& name, const h
     std::error_code ec;
     if (name == "share_store.js" && !fs::exists(path, ec) && !files.share_store_js.empty()) path = files.share_store_js;
     if (name == "index.html") return send_index(read_small_file(path), res);
-    // The program's gzip twin (made by the build, web/CMakeLists.txt: 40 % of its size) for clients that take it.
-    if (name == "essi_viewer.wasm") {
+    if (name == "essi_reader.js") res.set_header("Content-Security-Policy", kReaderWorkerCsp);
+    // The programs' gzip twins (made by the build, web/CMakeLists.txt: 40 % of their size) for clients that take
+    // them.
+    if (name == "essi_viewer.wasm" || name == "essi_reader.wasm") {
         res.set_header("Vary", "Accept-Encoding");
         const fs::path gz = path.string() + ".gz";
         if (accepts_gzip(req.get_header_value("Accept-Encoding")) && fs::is_regular_file(gz, ec)) {

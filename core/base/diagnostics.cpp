@@ -231,4 +231,72 @@ std::vector<DiagCode> all_codes() {
     return v;
 }
 
+namespace {
+
+// The fewest bytes a saved diagnostic takes (its fixed members and three counts).
+constexpr std::size_t kSavedDiagnosticMinBytes = 5 * sizeof(std::uint32_t) + 3 * sizeof(std::uint64_t);
+
+void save_diagnostic(WireWriter& out, const Diagnostic& d) {
+    out.put(d.severity);
+    out.put(d.has_at);
+    out.put(d.code);
+    out.put(d.msg);
+    out.put(d.line);
+    out.put(d.column);
+    out.put(d.contour_first);
+    out.put(d.contour_last);
+    out.put(d.at);
+    out.put_string(d.args.packed());
+    out.put<std::uint64_t>(d.related().size());
+    for (const RelatedLocation& r : d.related()) {
+        out.put(r.line);
+        out.put(r.end_line);
+        out.put(r.msg);
+        out.put_string(r.args.packed());
+    }
+    out.put<std::uint64_t>(d.overlap().size());
+    for (const std::vector<Point>& polygon : d.overlap()) out.put_vector(polygon);
+}
+
+bool restore_diagnostic(WireReader& in, Diagnostic& d) {
+    std::string packed;
+    if (!in.get(d.severity) || !in.get(d.has_at) || !in.get(d.code) || !in.get(d.msg) || !in.get(d.line) ||
+        !in.get(d.column) || !in.get(d.contour_first) || !in.get(d.contour_last) || !in.get(d.at) ||
+        !in.get_string(packed))
+        return false;
+    d.args = MessageArgs::from_packed(std::move(packed));
+    std::uint64_t related = 0;
+    if (!in.get_count(related, 2 * sizeof(std::uint32_t) + sizeof(Msg) + sizeof(std::uint64_t))) return false;
+    for (std::uint64_t k = 0; k < related; ++k) {
+        RelatedLocation r;
+        if (!in.get(r.line) || !in.get(r.end_line) || !in.get(r.msg) || !in.get_string(packed)) return false;
+        r.args = MessageArgs::from_packed(std::move(packed));
+        d.add_related(std::move(r));
+    }
+    std::uint64_t polygons = 0;
+    if (!in.get_count(polygons, sizeof(std::uint64_t))) return false;
+    if (polygons == 0) return true;
+    std::vector<std::vector<Point>> overlap;
+    for (std::uint64_t k = 0; k < polygons; ++k)
+        if (!in.get_vector(overlap.emplace_back())) return false;
+    d.set_overlap(std::move(overlap));
+    return true;
+}
+
+}  // namespace
+
+void save_diagnostics(WireWriter& out, const std::vector<Diagnostic>& diagnostics) {
+    out.put<std::uint64_t>(diagnostics.size());
+    for (const Diagnostic& d : diagnostics) save_diagnostic(out, d);
+}
+
+bool restore_diagnostics(WireReader& in, std::vector<Diagnostic>& diagnostics) {
+    std::uint64_t n = 0;
+    if (!in.get_count(n, kSavedDiagnosticMinBytes)) return false;
+    diagnostics.clear();
+    for (std::uint64_t k = 0; k < n; ++k)
+        if (!restore_diagnostic(in, diagnostics.emplace_back())) return false;
+    return true;
+}
+
 }  // namespace essi

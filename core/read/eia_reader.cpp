@@ -131,6 +131,22 @@ private:
     // What the driver asks of a front end (reader_driver.hpp).
     bool read_line(std::uint32_t begin, std::uint32_t end, std::size_t max_blocks);
     void end_tape(Tape& chunk);
+    void save_own(WireWriter& out) const {
+        out.put(state_.arc);
+        out.put(state_.rapid);
+        out.put(state_.absolute);
+        out.put(state_.inch);
+        out.put(state_.x);
+        out.put(state_.y);
+        out.put(rounded_);
+        out.put(rounded_line_);
+        out.put(rounded_column_);
+    }
+    [[nodiscard]] bool restore_own(WireReader& in) {
+        return in.get(state_.arc) && in.get(state_.rapid) && in.get(state_.absolute) && in.get(state_.inch) &&
+               in.get(state_.x) && in.get(state_.y) && in.get(rounded_) && in.get(rounded_line_) &&
+               in.get(rounded_column_);
+    }
 
     void make_tables();
     void read_block(std::uint32_t begin, std::uint32_t end, LineResult& out, State& st);

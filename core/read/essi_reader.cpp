@@ -201,6 +201,15 @@ private:
     std::uint32_t read_run(std::uint32_t pos, std::uint32_t size, std::size_t max_blocks);
     bool read_line(std::uint32_t begin, std::uint32_t end, std::size_t max_blocks);
     void end_tape(Tape& chunk);
+    void save_own(WireWriter& out) const {
+        out.put(skip_);
+        out.put(in_ignore_);
+        out.put(ignore_line_);
+        out.put(ignore_column_);
+    }
+    [[nodiscard]] bool restore_own(WireReader& in) {
+        return in.get(skip_) && in.get(in_ignore_) && in.get(ignore_line_) && in.get(ignore_column_);
+    }
 
     std::uint32_t read_plain_lines(std::uint32_t pos, std::uint32_t size, std::size_t max_blocks);
     void read_block(std::uint32_t begin, std::uint32_t end);

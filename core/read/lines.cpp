@@ -98,4 +98,22 @@ std::string_view LineIndex::line(std::string_view bytes, std::size_t n) const {
     return bytes.substr(i, find_line_end(bytes, i) - i);
 }
 
+void LineIndex::save(WireWriter& out) const {
+    out.put_vector(starts_);
+    out.put<std::uint64_t>(lines_);
+    out.put<std::uint64_t>(signed_lines_);
+    out.put<std::uint64_t>(pos_);
+    out.put(started_);
+}
+
+bool LineIndex::restore(WireReader& in) {
+    std::uint64_t lines = 0, signed_lines = 0, pos = 0;
+    if (!in.get_vector(starts_) || !in.get(lines) || !in.get(signed_lines) || !in.get(pos) || !in.get(started_))
+        return false;
+    lines_ = static_cast<std::size_t>(lines);
+    signed_lines_ = static_cast<std::size_t>(signed_lines);
+    pos_ = static_cast<std::size_t>(pos);
+    return starts_.size() * kStride >= lines_;  // (line() finds a start for every line)
+}
+
 }  // namespace essi

@@ -77,6 +77,26 @@ bool ReaderState::finish_chunk(Tape& chunk, std::uint32_t pos) {
     return !stopped_;
 }
 
+void ReaderState::save_state(WireWriter& out) const {
+    out.put<std::uint64_t>(src_.size());
+    for (const std::uint32_t v : {pos_, line_, line_begin_, last_line_, end_line_, percent_line_, percent_column_})
+        out.put(v);
+    out.put(total_blocks_);
+    out.put(errors_);
+    for (const bool b : {started_, finished_, stopped_, after_end_seen_, ended_, program_started_}) out.put(b);
+}
+
+bool ReaderState::restore_state(WireReader& in) {
+    std::uint64_t size = 0;
+    if (!in.get(size) || size != src_.size()) return false;
+    for (std::uint32_t* v : {&pos_, &line_, &line_begin_, &last_line_, &end_line_, &percent_line_, &percent_column_})
+        if (!in.get(*v)) return false;
+    if (!in.get(total_blocks_) || !in.get(errors_)) return false;
+    for (bool* b : {&started_, &finished_, &stopped_, &after_end_seen_, &ended_, &program_started_})
+        if (!in.get(*b)) return false;
+    return pos_ <= src_.size();
+}
+
 void ReaderState::report_tape_end(Tape& chunk) {
     if (total_blocks_ == 0) {
         diagnostics_of(chunk).push_back(

@@ -59,6 +59,10 @@ protected:
     bool begin_chunk(Tape& chunk);
     bool finish_chunk(Tape& chunk, std::uint32_t pos);
     void report_tape_end(Tape& chunk);
+    // BlockReader::save and restore of what every front end keeps (between chunks: the chunk's own counts are
+    // not kept); the format's own state follows it (ReaderDriver).
+    void save_state(WireWriter& out) const;
+    [[nodiscard]] bool restore_state(WireReader& in);
 
     std::string_view src_;
     const Profile& profile_;
@@ -111,7 +115,9 @@ inline void ReaderState::push_block(std::uint32_t offset, BlockKind kind, std::u
 //   void begin_tape()             before the first line of the tape;
 //   std::uint32_t read_run(std::uint32_t pos, std::uint32_t size, std::size_t max_blocks)
 //       lines read its quick way from `pos` (keeping line_ up to date): the first line it did not read, or `size`;
-//   void end_tape(Tape& chunk)    its own closing diagnostics, before the shared ones.
+//   void end_tape(Tape& chunk)    its own closing diagnostics, before the shared ones;
+//   void save_own(WireWriter&) const, bool restore_own(WireReader&)
+//                                 the state it keeps from one chunk to the next (its modes), for save/restore.
 template <class Format>
 class ReaderDriver : public ReaderState {
 public:
@@ -120,11 +126,19 @@ public:
         return std::make_unique<Format>(static_cast<const Format&>(*this));
     }
     [[nodiscard]] std::size_t state_bytes() const final { return sizeof(Format); }
+    void save(WireWriter& out) const final {
+        save_state(out);
+        static_cast<const Format&>(*this).save_own(out);
+    }
+    [[nodiscard]] bool restore(WireReader& in) final { return restore_state(in) && format().restore_own(in); }
 
 protected:
     using ReaderState::ReaderState;
 
     void begin_tape() {}
+    // The format's own state between chunks (none by default).
+    void save_own(WireWriter& /*out*/) const {}
+    [[nodiscard]] bool restore_own(WireReader& /*in*/) { return true; }
     std::uint32_t read_run(std::uint32_t pos, std::uint32_t /*size*/, std::size_t /*max_blocks*/) { return pos; }
     void end_tape(Tape& /*chunk*/) {}
 

@@ -33,16 +33,36 @@ Tape read_tape(std::string_view bytes, const Profile& profile, InputFormat forma
 }
 
 TapeReader::TapeReader(std::string_view bytes, const Profile& profile, InputFormat format)
-    : impl_(make_block_reader(format, bytes, profile)) {}
+    : impl_(make_block_reader(format, bytes, profile)), format_(format) {}
 TapeReader::~TapeReader() = default;
 TapeReader::TapeReader(TapeReader&&) noexcept = default;
 TapeReader& TapeReader::operator=(TapeReader&&) noexcept = default;
-TapeReader::TapeReader(const TapeReader& other) : impl_(other.impl_->clone()) {}
+TapeReader::TapeReader(const TapeReader& other) : impl_(other.impl_->clone()), format_(other.format_) {}
 TapeReader& TapeReader::operator=(const TapeReader& other) {
-    if (this != &other) impl_ = other.impl_->clone();
+    if (this != &other) {
+        impl_ = other.impl_->clone();
+        format_ = other.format_;
+    }
     return *this;
 }
 std::size_t TapeReader::state_bytes() const { return sizeof(TapeReader) + impl_->state_bytes(); }
+
+std::string TapeReader::checkpoint() const {
+    WireWriter out;
+    out.put(format_);
+    impl_->save(out);
+    return out.take();
+}
+
+std::optional<TapeReader> TapeReader::resume(std::string_view bytes, const Profile& profile, InputFormat format,
+                                             std::string_view checkpoint) {
+    WireReader in(checkpoint);
+    InputFormat saved = InputFormat::Essi;
+    if (!in.get(saved) || saved != format) return std::nullopt;
+    TapeReader reader(bytes, profile, format);
+    if (!reader.impl_->restore(in) || !in.at_end()) return std::nullopt;
+    return reader;
+}
 
 bool TapeReader::read_chunk(Tape& chunk, std::size_t max_blocks) { return impl_->read_chunk(chunk, max_blocks); }
 

@@ -2690,3 +2690,58 @@ test('at 1024x600 the problems list is on the screen and the Compare window leav
   await page.evaluate(() => essikit.endCompare());
   await page.close();
 });
+
+// A page whose Worker is replaced before its scripts run (an init script): `script` is the replacement's source.
+async function pageWithWorker(script) {
+  const page = await browser.newPage({ viewport: { width: 1600, height: 900 } });
+  page.on('pageerror', (e) => console.log(`pageerror: ${e.message}`));
+  await page.addInitScript(script);
+  await page.goto(baseUrl);
+  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 30000 });
+  await page.evaluate(() => essikit.ready);
+  return page;
+}
+
+test('a tape loaded in slices is read and checked in the reading worker: the same verdict, its blocks read again for the inspector; without a worker, or when it fails, the page reads it', async () => {
+  const tape = platesTape(25, 600);
+  const file = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'essi-worker-')), 'plates.esi');
+  fs.writeFileSync(file, tape);
+  const cli = cliReportOf(file);
+  const verdict = (s) => s.diagnostics.map((d) => [d.severity, d.code, d.line, d.column, d.message]);
+  const want = cli.diagnostics.map((d) => [d.severity, d.code, d.line, d.column, d.message]);
+  const lastLine = tape.split('\r\n').length - 1;  // (the last line: 64, the program's end)
+
+  const page = await newPage();
+  assert.equal(await page.evaluate(() => typeof Worker), 'function');
+  const state = await dropFile(page, 'plates.esi', Buffer.from(tape));
+  assert.equal(state.load.at_once, false);
+  assert.equal(state.load.read_in, 'worker', JSON.stringify(state.load));
+  assert.equal(state.load.worker_failure, '');
+  assert.ok(state.load.progress_frames >= 2, `the page drew ${state.load.progress_frames} frames while the worker read`);
+  assert.deepEqual(verdict(state), want);
+  assert.equal(state.stats.motions, cli.stats.motions);
+  assert.equal(state.stats.cut_length_mm, cli.stats.cut_length_mm);
+  // The inspector reads the last line's blocks again from the reader the worker handed over before its chunk.
+  await page.evaluate((line) => essikit.selectLine(line), lastLine);
+  await page.waitForFunction((line) => essikit.state().selection.line === line, lastLine);
+  const inspector = await page.evaluate(() => essikit.state().inspector);
+  assert.ok(inspector.length > 0 && inspector.some((l) => l.includes('64')), JSON.stringify(inspector));
+  await page.close();
+
+  // No Worker in the page: it reads the tape itself.
+  const none = await pageWithWorker('window.Worker = undefined;');
+  const alone = await dropFile(none, 'plates.esi', Buffer.from(tape));
+  assert.equal(alone.load.read_in, 'page');
+  assert.equal(alone.load.worker_failure, '');
+  assert.deepEqual(verdict(alone), want);
+  await none.close();
+
+  // A worker whose script cannot be loaded: the page reads the tape itself and says why.
+  const broken = await pageWithWorker(
+    'const W = window.Worker; window.Worker = class extends W { constructor(u, o) { super("no_such_reader.js", o); } };');
+  const fallen = await dropFile(broken, 'plates.esi', Buffer.from(tape));
+  assert.equal(fallen.load.read_in, 'page');
+  assert.match(fallen.load.worker_failure, /^the reading worker failed: /);
+  assert.deepEqual(verdict(fallen), want);
+  await broken.close();
+});

@@ -1,6 +1,7 @@
 // The real viewer (build/wasm/web) served by `essi serve` runs under the server's Content-Security-Policy and
 // COOP/COEP headers: no CSP violation, the WebAssembly module starts, the page is cross-origin isolated
-// (SharedArrayBuffer available), and a cross-origin page can neither frame it nor write a share.
+// (SharedArrayBuffer available), a big tape is read in the reading worker under its script's own policy, and a
+// cross-origin page can neither frame it nor write a share.
 // Needs the wasm build's viewer; skipped without it.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -24,6 +25,14 @@ test('the viewer runs under the CSP and is cross-origin isolated', { skip: !have
     assert.equal(state.status, 'ready');
     assert.deepEqual(await page.evaluate(() => [window.crossOriginIsolated, typeof SharedArrayBuffer]), [true, 'function']);
     assert.equal((await page.evaluate(() => window.essikit.shareStore.ready)).ok, true);
+    // A tape over 1 MB is read in the reading worker, whose script has a policy of its own.
+    const big = '+100+0\n'.repeat(180000) + '63\n';
+    const bigState = await page.evaluate((t) => window.essikit.load('big.esi', t), big);
+    assert.equal(bigState.status, 'ready');
+    assert.equal(bigState.stats.motions, 180000);
+    assert.deepEqual([bigState.load.read_in, bigState.load.worker_failure], ['worker', ''], JSON.stringify(bigState.load));
+    const worker = await fetch(url + '/essi_reader.js');
+    assert.match(worker.headers.get('content-security-policy'), /^default-src 'none'; script-src 'self' 'wasm-unsafe-eval'/);
     assert.deepEqual(violations, []);
     // Another origin (http://localhost:PORT is another origin than http://127.0.0.1:PORT to the browser, though
     // the same server): its page cannot write a share.

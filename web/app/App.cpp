@@ -25,6 +25,7 @@ bool App::init_graphics() {
     fonts_.update(framebuffer_scale());  // (the atlas, before ui_renderer_ uploads it)
     graphics_ok_ = renderer_.init() && ui_renderer_.init();
     load_.set_graphics(graphics_ok_);
+    load_.set_reading_worker(platform_.reading_worker());
     ImGuiIO& io = ImGui::GetIO();
     if (!io.Fonts->IsBuilt()) io.Fonts->Build();  // (ui_renderer_.init() makes the atlas unless the GPU refused it)
     io.IniFilename = nullptr;                     // no imgui.ini: the layout is fixed

@@ -297,10 +297,14 @@ void add_loading(json& j, const LoadController& load, bool has_document, const S
     // long after the start of the load the first such frame came.
     j["drawn"] = scene.tape_drawn();
     // Work left after "ready" too: the finer level of detail of a big tape, a rebuild at another tolerance.
-    j["busy"] = load.has_work();
+    j["busy"] = load.busy();
     j["shown_seconds"] = load.shown_seconds();
     j["frame"] = frames;
     j["load"] = load_frames_json(load.load_frames());
+    // Where the last tape loaded in slices was read: "worker" (the reading worker), "page" (no worker, or it
+    // failed: worker_failure says why).
+    j["load"]["read_in"] = load.read_by_worker() && load.worker_failure().empty() ? "worker" : "page";
+    j["load"]["worker_failure"] = load.worker_failure();
 }
 
 // The tape and how it is read (as `essi check --format json` says it), its document's numbers, its banner.

@@ -35,6 +35,21 @@ std::size_t RankIndex::rank(std::size_t i) const {
     return before_[word] + static_cast<std::size_t>(std::popcount(bits_[word] & below));
 }
 
+void RankIndex::save(WireWriter& out) const {
+    out.put_vector(bits_);
+    out.put_vector(before_);
+    out.put<std::uint64_t>(size_);
+    out.put<std::uint64_t>(count_);
+}
+
+bool RankIndex::restore(WireReader& in) {
+    std::uint64_t size = 0, count = 0;
+    if (!in.get_vector(bits_) || !in.get_vector(before_) || !in.get(size) || !in.get(count)) return false;
+    size_ = static_cast<std::size_t>(size);
+    count_ = static_cast<std::size_t>(count);
+    return bits_.size() * 64 >= size_ && before_.size() >= bits_.size();
+}
+
 std::size_t RankIndex::memory_bytes() const {
     return bits_.capacity() * sizeof(std::uint64_t) + before_.capacity() * sizeof(std::uint32_t);
 }

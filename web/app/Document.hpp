@@ -58,6 +58,9 @@ public:
     // Entries of the motions before i (the index of motion i's entry when it has one).
     [[nodiscard]] std::size_t rank(std::size_t i) const;
     [[nodiscard]] std::size_t memory_bytes() const;
+    // As bytes, and read back (false when the bytes are not one): DocumentWire.hpp.
+    void save(WireWriter& out) const;
+    [[nodiscard]] bool restore(WireReader& in);
 
 private:
     std::vector<std::uint64_t> bits_;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/Document.hpp"
+#include "app/DocumentSource.hpp"
 #include "essi/i18n.hpp"
 #include "essi/pipeline.hpp"
 
@@ -16,24 +17,24 @@ namespace essi::viewer {
 
 class DocumentSink;
 
-class DocumentLoader {
+class DocumentLoader final : public DocumentSource {
 public:
     // `plan_later`: the cut plan's plates are kept while the tape is read and analysed after it (step_plan), from
     // the document's motions (TapeChecker::defer_plan): the document is drawn first, its plan's findings follow.
     DocumentLoader(std::string name, std::string bytes, TapeSetup setup, bool plan_later = false);
-    ~DocumentLoader();
+    ~DocumentLoader() override;
     // Runs for about budget_ms; returns true when the document is complete (but for the plan's findings when
     // plan_later: plan_pending()).
-    bool step(double budget_ms = 12);
-    [[nodiscard]] float progress() const;  // 0..1
-    [[nodiscard]] Msg stage() const;       // "indexing lines", "reading and checking", ... (ui.def)
-    [[nodiscard]] std::unique_ptr<Document> take() { return std::move(doc_); }
+    bool step(double budget_ms) override;
+    [[nodiscard]] float progress() const override;
+    [[nodiscard]] Msg stage() const override;
+    [[nodiscard]] std::unique_ptr<Document> take() override { return std::move(doc_); }
     // After step() returned true and take(): the cut plan's plates still to analyse.
-    [[nodiscard]] bool plan_pending() const { return checker_ != nullptr; }
+    [[nodiscard]] bool plan_pending() const override { return checker_ != nullptr; }
     // Analyses plates for about budget_ms; when the last is done, its findings join `doc`'s diagnostics (sorted,
     // their marks placed) and true is returned. `doc` is the document this loader made.
-    bool step_plan(Document& doc, double budget_ms);
-    [[nodiscard]] float plan_progress() const;  // 0..1
+    bool step_plan(Document& doc, double budget_ms) override;
+    [[nodiscard]] float plan_progress() const override;
 
 private:
     class Motions;

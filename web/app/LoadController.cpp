@@ -6,6 +6,9 @@
 #include <cmath>
 #include <limits>
 
+#include "app/DocumentLoader.hpp"
+#include "app/WorkerLoader.hpp"
+
 namespace essi::viewer {
 
 namespace {
@@ -36,7 +39,13 @@ void LoadController::start(std::string name, std::string bytes, TapeSetup setup)
     awaiting_shown_ = false;
     plan_.reset();  // (the plan of the tape before is not finished: it is dropped with it)
     // A tape loaded in slices keeps its cut plan's plates for after its drawing; one loaded at once is complete.
-    loader_ = std::make_unique<DocumentLoader>(std::move(name), std::move(bytes), std::move(setup), !frames_.at_once);
+    read_by_worker_ = worker_ != nullptr && !frames_.at_once;
+    worker_failure_.clear();
+    if (read_by_worker_)
+        loader_ = std::make_unique<WorkerLoader>(*worker_, std::move(name), std::move(bytes), std::move(setup));
+    else
+        loader_ =
+            std::make_unique<DocumentLoader>(std::move(name), std::move(bytes), std::move(setup), !frames_.at_once);
     frames_since_start_ = 0;
     started_ = glfwGetTime();
 }
@@ -49,6 +58,7 @@ bool LoadController::step() {
         if (!at_once && frames_since_start_++ == 0) return false;
         ++frames_.steps;
         if (!loader_->step(at_once ? kNoLimit : kStepBudgetMs)) return false;
+        note_worker(*loader_);
         doc_ = loader_->take();
         ++documents_;
         if (loader_->plan_pending()) plan_ = std::move(loader_);
@@ -78,8 +88,13 @@ void LoadController::build(double until) {
 
 void LoadController::step_plan(double until) {
     if (!plan_->step_plan(*doc_, (until - glfwGetTime()) * 1000.0)) return;
+    note_worker(*plan_);
     plan_.reset();
     frames_.planned = frame_;
+}
+
+void LoadController::note_worker(const DocumentSource& source) {
+    if (!source.failure().empty()) worker_failure_ = source.failure();
 }
 
 void LoadController::step_overview(double until) {

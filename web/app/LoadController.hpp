@@ -13,7 +13,8 @@
 #include <string>
 
 #include "app/Document.hpp"
-#include "app/DocumentLoader.hpp"
+#include "app/DocumentSource.hpp"
+#include "app/ReadingWorker.hpp"
 #include "render/LodRaster.hpp"
 #include "render/PathBuffers.hpp"
 #include "render/Renderer.hpp"
@@ -38,6 +39,10 @@ public:
 
     explicit LoadController(Renderer& renderer) : renderer_(renderer) {}
     void set_graphics(bool ok) { graphics_ok_ = ok; }
+    // The reading worker (none: every tape is read on the page). Tapes loaded in slices (kAtOnceBytes and more)
+    // are read and checked there (WorkerLoader); smaller ones at once on the page, which shows them in the next
+    // frame.
+    void set_reading_worker(ReadingWorker* worker) { worker_ = worker; }
 
     // How the last load went, in the caller's frame numbers (begin_frame), for state().load: a tape handed over
     // between frames N and N + 1 and loaded at once is drawable before frame N + 1 begins and shown by it.
@@ -93,10 +98,14 @@ public:
     [[nodiscard]] bool loading() const { return phase() != Phase::Idle; }  // reading, or the first drawing
     [[nodiscard]] float progress() const;
     [[nodiscard]] Msg stage() const;  // what the progress bar says (a row of ui.def)
-    // Loading or building work left to do (the browser loop also runs slices of it between frames).
+    // Loading or building work left to do on the page (the browser loop also runs slices of it between frames;
+    // while the reading worker works, only the frames look for its messages).
     [[nodiscard]] bool has_work() const {
-        return loader_ != nullptr || lod_building_ || building_ != nullptr || plan_ != nullptr;
+        return (loader_ != nullptr && loader_->works_on_page()) || lod_building_ || building_ != nullptr ||
+               (plan_ != nullptr && plan_->works_on_page());
     }
+    // Work left, on the page or in the reading worker.
+    [[nodiscard]] bool busy() const { return has_work() || loader_ != nullptr || plan_ != nullptr; }
     // The slice may run outside a frame (not before the first frame of a load has shown the progress bar).
     [[nodiscard]] bool may_step_outside_frame() const {
         return !(loader_ && !frames_.at_once && frames_since_start_ == 0);
@@ -105,6 +114,10 @@ public:
     [[nodiscard]] bool remaking() const { return building_ != nullptr && !first_build_ && renderer_.has_lod(); }
     [[nodiscard]] bool first_build() const { return first_build_; }
     [[nodiscard]] bool reading() const { return loader_ != nullptr; }
+    // The last tape loaded in slices was read by the reading worker; why the page read it after all (empty: it
+    // did not, or there is no worker).
+    [[nodiscard]] bool read_by_worker() const { return read_by_worker_; }
+    [[nodiscard]] const std::string& worker_failure() const { return worker_failure_; }
 
     [[nodiscard]] const Document* document() const { return doc_.get(); }
     // The documents read so far (the current one's number): what a cache of something worked out from the document
@@ -130,13 +143,17 @@ private:
     void begin_overview(double zoom, double framebuffer_scale);
     void build(double until);  // the drawing's work until `until` (glfwGetTime; infinity: all of it)
     void step_plan(double until);
+    void note_worker(const DocumentSource& source);  // what the worker's failure was, if it failed
 
     Renderer& renderer_;
     bool graphics_ok_ = false;
 
     // Reading
-    std::unique_ptr<DocumentLoader> loader_;
-    std::unique_ptr<DocumentLoader> plan_;  // the loader of the drawn document while its cut plan is analysed
+    ReadingWorker* worker_ = nullptr;
+    std::unique_ptr<DocumentSource> loader_;
+    std::unique_ptr<DocumentSource> plan_;  // the loader of the drawn document while its cut plan is analysed
+    bool read_by_worker_ = false;
+    std::string worker_failure_;
     std::string loading_name_;
     std::size_t loading_bytes_ = 0;
     int frames_since_start_ = 0;

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "app/PageMirror.hpp"
+#include "app/ReadingWorker.hpp"
 #include "essi/i18n.hpp"
 #include "render/UiFonts.hpp"
 
@@ -82,6 +83,9 @@ public:
     // browser puts it in the page's title and its elements beside the canvas (window.essikitMirror); the desktop
     // sets its window's title.
     virtual void show_mirror(const PageMirror& mirror) = 0;
+    // The reading worker, where tapes too big to load at once are read and checked off the drawing's thread (a
+    // Web Worker in the browser, ReadingWorkerEmscripten.cpp); null: the page reads them itself (the desktop).
+    [[nodiscard]] virtual ReadingWorker* reading_worker() { return nullptr; }
 };
 
 }  // namespace essi::viewer

@@ -23,7 +23,7 @@ void WarmUp::step(double budget_ms) {
     if (state_ != State::Running) return;
     // A tape of the viewer's own is being loaded or shown: its load is warm enough now, and the renderer's markers
     // and level of detail are its own.
-    if (app_load_.documents_read() > 0 || app_load_.has_work()) {
+    if (app_load_.documents_read() > 0 || app_load_.busy()) {
         state_ = State::Stopped;
         return;
     }

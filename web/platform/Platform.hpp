@@ -8,6 +8,7 @@
 //   FontsEmscripten.cpp    / FontsGlfw.cpp       the CJK font, loaded when a text needs it (UiFonts)
 //   SelectionEmscripten.cpp / SelectionGlfw.cpp  the selection told to the page (window.essikitSelected)
 //   MirrorEmscripten.cpp   / MirrorGlfw.cpp      the page's title and its text for screen readers (PageMirror)
+//   ReadingWorkerEmscripten.cpp / ReadingWorkerGlfw.cpp  the reading worker (a Web Worker; none on the desktop)
 //   ApiEmscripten.cpp                            window.essikit (exported C functions, into app/Automation.hpp)
 // web/platform includes web/app's headers; web/app includes nothing of web/platform.
 #pragma once
@@ -46,6 +47,7 @@ public:
     void show_language(Lang lang) override;
     void selection_changed(std::uint32_t line, long long motion) override;
     void show_mirror(const PageMirror& mirror) override;
+    [[nodiscard]] ReadingWorker* reading_worker() override;
 
 private:
     // The desktop's services say how they went in the toolbar, and load the file chosen or pasted.

@@ -29,6 +29,8 @@ struct ConsumableUse {
     unsigned long long pierces = 0;  // each torch's
     double arc_on_s = 0;  // each torch's time with its arc on: cutting motions, pierces, dwells while cutting
 };
+template <>
+struct WireFloats<ConsumableUse> : std::true_type {};
 
 // The inputs the cost is reckoned from (the statistics').
 struct CostBasis {

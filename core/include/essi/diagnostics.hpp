@@ -11,6 +11,7 @@
 
 #include "essi/i18n.hpp"
 #include "essi/motion.hpp"
+#include "essi/wire.hpp"
 
 namespace essi {
 
@@ -173,5 +174,9 @@ private:
 [[nodiscard]] std::string_view code_summary(DiagCode code, Lang lang = Lang::En);
 // Every code, in numeric order.
 [[nodiscard]] std::vector<DiagCode> all_codes();
+
+// Diagnostics as bytes (essi/wire.hpp), and read back: false when the bytes end before them.
+void save_diagnostics(WireWriter& out, const std::vector<Diagnostic>& diagnostics);
+[[nodiscard]] bool restore_diagnostics(WireReader& in, std::vector<Diagnostic>& diagnostics);
 
 }  // namespace essi

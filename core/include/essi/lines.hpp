@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "essi/wire.hpp"
+
 namespace essi {
 
 // A line ends at CR, LF, CR LF or LF CR: the other of CR and LF right after a line end belongs to it.
@@ -65,6 +67,9 @@ public:
     [[nodiscard]] std::string_view line(std::string_view bytes, std::size_t n) const;
     [[nodiscard]] std::size_t memory_bytes() const { return starts_.capacity() * sizeof(std::uint32_t); }
     void shrink_to_fit() { starts_.shrink_to_fit(); }
+    // The index as bytes, and read back (false when the bytes are not one): what the viewer's worker hands its page.
+    void save(WireWriter& out) const;
+    [[nodiscard]] bool restore(WireReader& in);
 
 private:
     std::vector<std::uint32_t> starts_;  // byte offset of line 1 + k * kStride

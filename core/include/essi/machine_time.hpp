@@ -46,6 +46,8 @@ struct MachineTime {
     double acceleration_s = 0;   // of the motions' time: how much longer they take than at their feed
     double torch_cutting_s = 0;  // cutting_s once per torch that cuts (for the consumables)
 };
+template <>
+struct WireFloats<MachineTime> : std::true_type {};
 
 // One motion as the planner runs it (MachineTimer::trace_into): its source line, how long it takes and the highest
 // speed it reaches. Motions shorter than kMachineTimeMinLength have none.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "essi/i18n.hpp"
+#include "essi/wire.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +17,8 @@ struct Point {
     double x = 0, y = 0;
     friend bool operator==(const Point&, const Point&) = default;
 };
+template <>
+struct WireFloats<Point> : std::true_type {};
 
 enum class MotionKind : std::uint8_t { Rapid, Travel, Cut, Mark };
 enum class CurveKind : std::uint8_t { Line, Arc, Parabola };
@@ -49,6 +52,8 @@ struct ParabolaGeom {
     double p = 1;
     double t0 = 0, t1 = 0;
 };
+template <>
+struct WireFloats<ParabolaGeom> : std::true_type {};
 
 // One motion: a line, arc or parabola from `start` to `end` (the programmed end point, exactly).
 struct MotionRecord {
@@ -74,6 +79,10 @@ struct MotionRecord {
     std::uint8_t torches = 1;
     Point torch_step;
 };
+
+// A record as bytes (essi/wire.hpp), and read back: false when the bytes end before it.
+void save_motion_record(WireWriter& out, const MotionRecord& r);
+[[nodiscard]] bool restore_motion_record(WireReader& in, MotionRecord& r);
 
 // Where copy k of a motion cut by several torches lies: the motion moved by k x step.
 [[nodiscard]] constexpr Point torch_copy(Point p, Point step, int k) { return {p.x + k * step.x, p.y + k * step.y}; }

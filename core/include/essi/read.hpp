@@ -22,6 +22,7 @@
 #include "essi/diagnostics.hpp"
 #include "essi/lines.hpp"
 #include "essi/profile.hpp"
+#include "essi/wire.hpp"
 
 namespace essi {
 
@@ -240,6 +241,12 @@ public:
     [[nodiscard]] virtual std::unique_ptr<BlockReader> clone() const = 0;
     // The bytes this reader holds (what keeping a copy costs).
     [[nodiscard]] virtual std::size_t state_bytes() const = 0;
+    // The state as bytes: where the reader is in the tape and what it has read that the rest depends on (modes,
+    // the errors so far); restore() puts it back into a reader of the same bytes, profile and format, which then
+    // reads on as this one would. restore() is false when the bytes are not such a state (cut short, another size
+    // of tape).
+    virtual void save(WireWriter& out) const = 0;
+    [[nodiscard]] virtual bool restore(WireReader& in) = 0;
 
 protected:
     // What a front end writes into a Tape.
@@ -274,12 +281,20 @@ public:
     TapeReader& operator=(const TapeReader& other);
     // The bytes a reader holds (what keeping a copy costs).
     [[nodiscard]] std::size_t state_bytes() const;
+    // The reader's state as bytes, to read on from in another instance of this build (the viewer's worker hands
+    // its page the reader before each chunk): resume() with the same bytes, profile and format.
+    [[nodiscard]] std::string checkpoint() const;
+    // A reader of `bytes` that reads on from `checkpoint`; nullopt when it is not a checkpoint of a reader of
+    // this format and these bytes' size.
+    [[nodiscard]] static std::optional<TapeReader> resume(std::string_view bytes, const Profile& profile,
+                                                          InputFormat format, std::string_view checkpoint);
     // Empties `chunk` and reads up to `max_blocks` more blocks into it, with the diagnostics found
     // meanwhile. Returns false when the tape is done (nothing was read).
     bool read_chunk(Tape& chunk, std::size_t max_blocks);
 
 private:
     std::unique_ptr<BlockReader> impl_;
+    InputFormat format_ = InputFormat::Essi;
 };
 
 }  // namespace essi

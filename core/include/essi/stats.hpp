@@ -13,6 +13,7 @@
 #include "essi/motion.hpp"
 #include "essi/placement.hpp"
 #include "essi/profile.hpp"
+#include "essi/wire.hpp"
 
 namespace essi {
 
@@ -35,6 +36,11 @@ struct Stats {
     std::optional<Cost> cost;                  // with the profile's costs
     std::optional<ConsumableUse> consumables;  // with the profile's consumables
 };
+
+// Statistics as bytes (essi/wire.hpp), and read back: false when the bytes end before them. (A new field of
+// Stats, Cost or the others goes into stats_wire.cpp too: its test compares every field through the report.)
+void save_stats(WireWriter& out, const Stats& s);
+[[nodiscard]] bool restore_stats(WireReader& in, Stats& s);
 
 // The time a motion of `length_mm` takes at `feed_mm_min` (none without a feed): what the statistics estimate
 // along the compensated path.
