@@ -237,21 +237,11 @@ namespace {
 constexpr std::size_t kSavedDiagnosticMinBytes = 5 * sizeof(std::uint32_t) + 3 * sizeof(std::uint64_t);
 
 void save_diagnostic(WireWriter& out, const Diagnostic& d) {
-    out.put(d.severity);
-    out.put(d.has_at);
-    out.put(d.code);
-    out.put(d.msg);
-    out.put(d.line);
-    out.put(d.column);
-    out.put(d.contour_first);
-    out.put(d.contour_last);
-    out.put(d.at);
+    out.put_all(d.severity, d.has_at, d.code, d.msg, d.line, d.column, d.contour_first, d.contour_last, d.at);
     out.put_string(d.args.packed());
     out.put<std::uint64_t>(d.related().size());
     for (const RelatedLocation& r : d.related()) {
-        out.put(r.line);
-        out.put(r.end_line);
-        out.put(r.msg);
+        out.put_all(r.line, r.end_line, r.msg);
         out.put_string(r.args.packed());
     }
     out.put<std::uint64_t>(d.overlap().size());
@@ -260,8 +250,7 @@ void save_diagnostic(WireWriter& out, const Diagnostic& d) {
 
 bool restore_diagnostic(WireReader& in, Diagnostic& d) {
     std::string packed;
-    if (!in.get(d.severity) || !in.get(d.has_at) || !in.get(d.code) || !in.get(d.msg) || !in.get(d.line) ||
-        !in.get(d.column) || !in.get(d.contour_first) || !in.get(d.contour_last) || !in.get(d.at) ||
+    if (!in.get_all(d.severity, d.has_at, d.code, d.msg, d.line, d.column, d.contour_first, d.contour_last, d.at) ||
         !in.get_string(packed))
         return false;
     d.args = MessageArgs::from_packed(std::move(packed));
@@ -269,7 +258,7 @@ bool restore_diagnostic(WireReader& in, Diagnostic& d) {
     if (!in.get_count(related, 2 * sizeof(std::uint32_t) + sizeof(Msg) + sizeof(std::uint64_t))) return false;
     for (std::uint64_t k = 0; k < related; ++k) {
         RelatedLocation r;
-        if (!in.get(r.line) || !in.get(r.end_line) || !in.get(r.msg) || !in.get_string(packed)) return false;
+        if (!in.get_all(r.line, r.end_line, r.msg) || !in.get_string(packed)) return false;
         r.args = MessageArgs::from_packed(std::move(packed));
         d.add_related(std::move(r));
     }

@@ -110,27 +110,14 @@ MessageArgs::Arg tools_arg(std::uint8_t tools) {
 }
 
 void save_motion_record(WireWriter& out, const MotionRecord& r) {
-    out.put(r.line);
-    out.put(r.block);
-    out.put(r.kind);
-    out.put(r.curve);
-    out.put(r.tools);
-    out.put(r.head);
-    out.put(r.kerf);
-    out.put(r.ccw);
-    for (const Point& p : {r.start, r.end, r.centre}) out.put(p);
-    for (const double v : {r.radius, r.end_radius, r.sweep}) out.put(v);
-    out.put(r.parabola);
-    for (const double v : {r.length_mm, r.feed_mm_min, r.kerf_mm}) out.put(v);
-    out.put(r.torches);
-    out.put(r.torch_step);
+    out.put_all(r.line, r.block, r.kind, r.curve, r.tools, r.head, r.kerf, r.ccw, r.start, r.end, r.centre, r.radius,
+                r.end_radius, r.sweep, r.parabola, r.length_mm, r.feed_mm_min, r.kerf_mm, r.torches, r.torch_step);
 }
 
 bool restore_motion_record(WireReader& in, MotionRecord& r) {
-    return in.get(r.line) && in.get(r.block) && in.get(r.kind) && in.get(r.curve) && in.get(r.tools) &&
-           in.get(r.head) && in.get(r.kerf) && in.get(r.ccw) && in.get(r.start) && in.get(r.end) && in.get(r.centre) &&
-           in.get(r.radius) && in.get(r.end_radius) && in.get(r.sweep) && in.get(r.parabola) && in.get(r.length_mm) &&
-           in.get(r.feed_mm_min) && in.get(r.kerf_mm) && in.get(r.torches) && in.get(r.torch_step);
+    return in.get_all(r.line, r.block, r.kind, r.curve, r.tools, r.head, r.kerf, r.ccw, r.start, r.end, r.centre,
+                      r.radius, r.end_radius, r.sweep, r.parabola, r.length_mm, r.feed_mm_min, r.kerf_mm, r.torches,
+                      r.torch_step);
 }
 
 }  // namespace essi

@@ -24,20 +24,15 @@ bool get_optional(WireReader& in, std::optional<T>& v) {
 
 void save_cost(WireWriter& out, const Cost& c) {
     out.put_string(c.currency);
-    out.put(c.time_s);
-    out.put(c.machine_time);
-    out.put(c.machine);
-    out.put(c.pierces);
-    out.put(c.cut);
+    out.put_all(c.time_s, c.machine_time, c.machine, c.pierces, c.cut);
     put_optional(out, c.material_kg);
     put_optional(out, c.material);
     out.put(c.total);
 }
 
 bool restore_cost(WireReader& in, Cost& c) {
-    return in.get_string(c.currency) && in.get(c.time_s) && in.get(c.machine_time) && in.get(c.machine) &&
-           in.get(c.pierces) && in.get(c.cut) && get_optional(in, c.material_kg) && get_optional(in, c.material) &&
-           in.get(c.total);
+    return in.get_string(c.currency) && in.get_all(c.time_s, c.machine_time, c.machine, c.pierces, c.cut) &&
+           get_optional(in, c.material_kg) && get_optional(in, c.material) && in.get(c.total);
 }
 
 }  // namespace

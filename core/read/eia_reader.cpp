@@ -132,20 +132,12 @@ private:
     bool read_line(std::uint32_t begin, std::uint32_t end, std::size_t max_blocks);
     void end_tape(Tape& chunk);
     void save_own(WireWriter& out) const {
-        out.put(state_.arc);
-        out.put(state_.rapid);
-        out.put(state_.absolute);
-        out.put(state_.inch);
-        out.put(state_.x);
-        out.put(state_.y);
-        out.put(rounded_);
-        out.put(rounded_line_);
-        out.put(rounded_column_);
+        out.put_all(state_.arc, state_.rapid, state_.absolute, state_.inch, state_.x, state_.y, rounded_, rounded_line_,
+                    rounded_column_);
     }
     [[nodiscard]] bool restore_own(WireReader& in) {
-        return in.get(state_.arc) && in.get(state_.rapid) && in.get(state_.absolute) && in.get(state_.inch) &&
-               in.get(state_.x) && in.get(state_.y) && in.get(rounded_) && in.get(rounded_line_) &&
-               in.get(rounded_column_);
+        return in.get_all(state_.arc, state_.rapid, state_.absolute, state_.inch, state_.x, state_.y, rounded_,
+                          rounded_line_, rounded_column_);
     }
 
     void make_tables();

@@ -201,14 +201,9 @@ private:
     std::uint32_t read_run(std::uint32_t pos, std::uint32_t size, std::size_t max_blocks);
     bool read_line(std::uint32_t begin, std::uint32_t end, std::size_t max_blocks);
     void end_tape(Tape& chunk);
-    void save_own(WireWriter& out) const {
-        out.put(skip_);
-        out.put(in_ignore_);
-        out.put(ignore_line_);
-        out.put(ignore_column_);
-    }
+    void save_own(WireWriter& out) const { out.put_all(skip_, in_ignore_, ignore_line_, ignore_column_); }
     [[nodiscard]] bool restore_own(WireReader& in) {
-        return in.get(skip_) && in.get(in_ignore_) && in.get(ignore_line_) && in.get(ignore_column_);
+        return in.get_all(skip_, in_ignore_, ignore_line_, ignore_column_);
     }
 
     std::uint32_t read_plain_lines(std::uint32_t pos, std::uint32_t size, std::size_t max_blocks);

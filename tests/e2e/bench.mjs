@@ -32,6 +32,9 @@ const targets = process.argv.slice(2).map(Number).filter((n) => n > 0);
 const motionTargets = targets.length ? targets : [1e3, 1e4, 5e4, 1e6, 1e7];
 const smallRuns = Number(process.env.RUNS_SMALL || 5);
 const cold = process.env.COLD === '1';
+// NO_WORKER=1: the page has no Worker, so it reads every tape itself (as before the reading worker, and as the
+// desktop viewer does): the same build measured both ways.
+const noWorker = process.env.NO_WORKER === '1';
 const kWarmSettleMs = 1000;
 
 // The first frame's goals (docs/performance.md): 10 000 motions within 0.25 s of the drop, 1 M within 1 s, 10 M
@@ -83,7 +86,7 @@ async function memory(browser, page) {
 }
 
 async function measureLoad(browser, baseUrl, tape) {
-  const page = await newPage(browser, baseUrl);
+  const page = await newPage(browser, baseUrl, undefined, noWorker ? 'window.Worker = undefined;' : null);
   // The page as a person finds it: its first frames drawn and the GPU done with them (the drop is measured, not the
   // page's start, whose work on SwiftShader can hold the next frames back for a few hundred ms).
   await page.evaluate(() => new Promise((res) => {
@@ -293,7 +296,7 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
         wasm_heap: r.after.wasm_heap, wasm_heap_empty_page: r.before.wasm_heap,
         malloc_peak: r.after.malloc_peak, malloc_empty_page: r.before.malloc_footprint, js_heap: r.after.js_heap,
         renderer_rss: r.after.renderer_rss, renderer_rss_before: r.before.renderer_rss, gpu_rss: r.after.gpu_rss,
-        cold, warm_up: r.warm_up,
+        cold, warm_up: r.warm_up, read_in: s.load ? s.load.read_in : null,
       };
       console.log(`   motions ${s.motions}, segments ${s.segments}, blocks ${s.blocks_read}; ` +
                   (cold ? 'dropped at once (COLD=1)' : `dropped ${kWarmSettleMs} ms after the warm-up (${r.warm_up.state}: ${r.warm_up.tapes} tapes, ${r.warm_up.ms} ms)`));
@@ -301,7 +304,8 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
       console.log(`   drop -> first frame, GPU finished: ${row.drop_to_first_frame_gpu_ms} ms; drawn complete, GPU finished: ${row.drop_to_complete_frame_gpu_ms} ms` +
                   (runs > 1 ? ` (medians of ${runs} runs: ${row.drop_to_first_frame_gpu_ms_runs.join(' ')} / ${row.drop_to_complete_frame_gpu_ms_runs.join(' ')})` : '') +
                   (l ? `; ${l.at_once ? 'loaded at once' : 'loaded in slices'}: shown ${l.frames_to_show} frame(s) after the hand-over, complete in frame +${l.complete_frame - l.handed_frame}, ` +
-                       `${l.steps} slice(s), ${l.progress_frames} frame(s) with the progress bar` : ''));
+                       `${l.steps} slice(s), ${l.progress_frames} frame(s) with the progress bar, read in the ${l.read_in}` +
+                       (l.worker_failure ? ` (${l.worker_failure})` : '') : ''));
       console.log(`   drop -> first frame ${row.drop_to_first_frame_ms} ms (level of detail ${s.lod.available ? 'made' : 'none'}), ` +
                   `drop -> ready (every segment on the GPU) ${row.drop_to_ready_ms} ms (${r.frames} frames meanwhile, longest gap ${row.longest_frame_gap_ms} ms, ending ${r.longest_gap_end_ms} ms after the drop)`);
       console.log(`   stages (ms from the drop, seen at animation frames): ${r.stages.map(([t, st]) => `${t} ${st}`).join(', ')}`);

@@ -75,9 +75,11 @@ export function launch() {
   return chromium.launch({ executablePath: chromiumPath, args: chromiumArgs });
 }
 
-export async function newPage(browser, baseUrl, viewport = { width: 1600, height: 900 }) {
+// `init`: a script run before the page's own (Playwright's addInitScript), if any.
+export async function newPage(browser, baseUrl, viewport = { width: 1600, height: 900 }, init = null) {
   const page = await browser.newPage({ viewport });
   page.on('pageerror', (e) => console.log(`pageerror: ${e.message}`));
+  if (init) await page.addInitScript(init);
   await page.goto(baseUrl);
   await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 30000 });
   await page.evaluate(() => essikit.ready);

@@ -2692,14 +2692,8 @@ test('at 1024x600 the problems list is on the screen and the Compare window leav
 });
 
 // A page whose Worker is replaced before its scripts run (an init script): `script` is the replacement's source.
-async function pageWithWorker(script) {
-  const page = await browser.newPage({ viewport: { width: 1600, height: 900 } });
-  page.on('pageerror', (e) => console.log(`pageerror: ${e.message}`));
-  await page.addInitScript(script);
-  await page.goto(baseUrl);
-  await page.waitForFunction(() => window.essikit && essikit.started, null, { timeout: 30000 });
-  await page.evaluate(() => essikit.ready);
-  return page;
+function pageWithWorker(script) {
+  return openPage(browser, baseUrl, undefined, script);
 }
 
 test('a tape loaded in slices is read and checked in the reading worker: the same verdict, its blocks read again for the inspector; without a worker, or when it fails, the page reads it', async () => {

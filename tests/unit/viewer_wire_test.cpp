@@ -173,10 +173,23 @@ TEST(ViewerWire, ACutShortDocumentSaysWhereAndGivesTheBytesBack) {
         ASSERT_FALSE(error.what.empty()) << "cut at " << cut;
         if (parts.empty() || parts.back() != error.what) parts.push_back(error.what);
     }
-    const std::vector<std::string> want = {"name", "setup", "diagnostics", "statistics", "motions", "arc centres",
-                                           "arc index", "kept motions", "jumps", "kerfs", "feeds", "pierces",
-                                           "line index", "diagnostic marks", "concerned motions",
-                                           "reader checkpoints", "counts"};
+    const std::vector<std::string> want = {"name",
+                                           "setup",
+                                           "diagnostics",
+                                           "statistics",
+                                           "motions",
+                                           "arc centres",
+                                           "arc index",
+                                           "kept motions",
+                                           "jumps",
+                                           "kerfs",
+                                           "feeds",
+                                           "pierces",
+                                           "line index",
+                                           "diagnostic marks",
+                                           "concerned motions",
+                                           "reader checkpoints",
+                                           "counts"};
     EXPECT_EQ(parts, want);  // (each part in its turn)
     std::string given = bytes;
     WireError error;

@@ -208,7 +208,8 @@ bool decode_into(Document& d, std::string_view wire, WireError& error) {
         !w.check(get_chunks(in, d), "reader checkpoints"))
         return false;
     std::uint64_t blocks = 0, words = 0, curves = 0;
-    if (!w.check(in.get(blocks) && in.get(words) && in.get(curves) && d.bbox.restore(in) && in.get(d.origin), "counts") ||
+    if (!w.check(in.get(blocks) && in.get(words) && in.get(curves) && d.bbox.restore(in) && in.get(d.origin),
+                 "counts") ||
         !w.at_end())
         return false;
     d.blocks = static_cast<std::size_t>(blocks);

@@ -36,9 +36,14 @@ void run_reading_job(std::string_view header, std::string bytes, const PostReadi
         post(ReadingMessage::Failed, error.message());
         return;
     }
+    read_for_page(std::move(name), std::move(bytes), std::move(setup), post);
+}
+
+void read_for_page(std::string name, std::string bytes, TapeSetup setup, const PostReadingMessage& post) {
     // The plan's plates are analysed after the document is handed over: the page draws it meanwhile.
     DocumentLoader loader(std::move(name), std::move(bytes), std::move(setup), true);
-    while (!loader.step(kProgressMs)) post(ReadingMessage::Progress, encode_progress({loader.progress(), loader.stage()}));
+    while (!loader.step(kProgressMs))
+        post(ReadingMessage::Progress, encode_progress({loader.progress(), loader.stage()}));
     const std::unique_ptr<Document> doc = loader.take();
     post(ReadingMessage::Document, encode_document(*doc));
     while (!loader.step_plan(*doc, kProgressMs))

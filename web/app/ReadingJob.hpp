@@ -33,6 +33,8 @@ inline constexpr double kProgressMs = 50;  // the worker's slices between two pr
 // its body) as soon as it is made.
 using PostReadingMessage = std::function<void(ReadingMessage kind, std::string_view body)>;
 void run_reading_job(std::string_view header, std::string bytes, const PostReadingMessage& post);
+// The job once its request is read (what the worker's warm-up runs too).
+void read_for_page(std::string name, std::string bytes, TapeSetup setup, const PostReadingMessage& post);
 
 [[nodiscard]] std::string encode_progress(ReadingProgress p);
 [[nodiscard]] bool decode_progress(std::string_view body, ReadingProgress& p);

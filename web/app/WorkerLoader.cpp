@@ -60,9 +60,7 @@ bool WorkerLoader::step(double budget_ms) {
     return doc_received_;
 }
 
-bool WorkerLoader::plan_pending() const {
-    return local_ ? local_->plan_pending() : !plan_done_;
-}
+bool WorkerLoader::plan_pending() const { return local_ ? local_->plan_pending() : !plan_done_; }
 
 Msg WorkerLoader::stage() const {
     if (local_) return local_->stage();

@@ -1,10 +1,11 @@
-// The reading worker in the browser: a Web Worker running essi_reader.js (web/worker/), started when the first
-// tape is handed to it. The page posts it a job (the request's header and a copy of the tape's bytes, both
-// transferred) and it posts back ReadingJob.hpp's messages, which land here (essi_reading_buffer, then
-// essi_reading_received) for WorkerLoader to pick up in the next frame. A job handed over while another runs
-// ends the worker and starts a new one (a job runs to its end once begun); so does the end of a job on a large
-// tape, which gives its memory back. A worker that cannot start or fails sends its job a Failed message: the page
-// reads the tape itself.
+// The reading worker in the browser: a Web Worker running essi_reader.js (web/worker/), started when the page's
+// warm-up starts (or by the first tape handed to it). The page posts it a job (the request's header and a copy of the
+// tape's bytes, both transferred) and it posts back ReadingJob.hpp's messages, which land here (essi_reading_buffer,
+// then essi_reading_received) for WorkerLoader to pick up in the next frame. A job handed over while another runs ends
+// the worker and starts a new one (a job runs to its end once begun); so does the end of a job on a large tape, which
+// gives its memory back (a new one is started). Each worker started warms its code up on built-in tapes before its
+// first job (prepare(): the page calls it when its own warm-up starts). A worker that cannot start or fails sends its
+// job a Failed message: the page reads the tape itself.
 #include <emscripten.h>
 
 #include <deque>
@@ -19,6 +20,7 @@ namespace {
 
 class WebReadingWorker final : public ReadingWorker {
 public:
+    void prepare() override;
     void post(std::uint32_t job, std::string_view header, std::string_view bytes) override;
     std::optional<std::string> receive(std::uint32_t job) override;
     void cancel(std::uint32_t job) override;
@@ -44,41 +46,50 @@ EM_JS(int, essi_reading_supported, (), {
     return typeof Worker !== 'undefined' ? 1 : 0;
 });
 
-// (the worker's script beside the page; a job's buffers are transferred, not copied again)
+// The page's side of the worker: Module.essikitReading, made once. A worker started warms up at once ({warmUp}).
+EM_JS(void, essi_reading_setup, (), {
+    if (Module.essikitReading) return;
+    Module.essikitReading = {
+        worker: null, job: 0, bytes: 0,
+        start() {
+            this.worker = new Worker('essi_reader.js');
+            this.worker.onmessage = (e) => this.deliver(e.data.job, new Uint8Array(e.data.data));
+            this.worker.onerror = (e) => {
+                e.preventDefault();
+                const text = 'e' + 'the reading worker failed: ' + (e.message || 'its script could not be loaded');
+                if (this.job) this.deliver(this.job, new TextEncoder().encode(text));
+                this.stop();
+            };
+            this.worker.postMessage({warmUp: true});
+        },
+        stop() {
+            if (this.worker) this.worker.terminate();
+            this.worker = null;
+            this.job = 0;
+        },
+        deliver(job, data) {
+            const ptr = Module._essi_reading_buffer(job, data.length);
+            Module.HEAPU8.set(data, ptr);
+            Module._essi_reading_received();
+            const last = data[0] === 102 || data[0] === 101; /* 'f', 'e': the job's last message */
+            if (last && job === this.job) {
+                this.job = 0;
+                if (this.bytes >= 32 * 1024 * 1024) { this.stop(); this.start(); } /* (its memory back) */
+            }
+        },
+    };
+});
+
+EM_JS(void, essi_reading_prepare, (), {
+    const r = Module.essikitReading;
+    if (!r.worker) r.start();
+});
+
+/* (the worker's script beside the page; a job's buffers are transferred, not copied again) */
 EM_JS(void, essi_reading_post, (std::uint32_t job, const char* header, std::size_t header_len, const char* bytes,
                                 std::size_t bytes_len), {
-    let r = Module.essikitReading;
-    if (!r) {
-        r = Module.essikitReading = {
-            worker: null, job: 0, bytes: 0,
-            start() {
-                this.worker = new Worker('essi_reader.js');
-                this.worker.onmessage = (e) => this.deliver(e.data.job, new Uint8Array(e.data.data));
-                this.worker.onerror = (e) => {
-                    e.preventDefault();
-                    const text = 'e' + 'the reading worker failed: ' + (e.message || 'its script could not be loaded');
-                    if (this.job) this.deliver(this.job, new TextEncoder().encode(text));
-                    this.restart();
-                };
-            },
-            restart() {
-                if (this.worker) this.worker.terminate();
-                this.worker = null;
-                this.job = 0;
-            },
-            deliver(job, data) {
-                const ptr = Module._essi_reading_buffer(job, data.length);
-                Module.HEAPU8.set(data, ptr);
-                Module._essi_reading_received();
-                const last = data[0] === 102 || data[0] === 101; /* 'f', 'e': the job's last message */
-                if (last && job === this.job) {
-                    this.job = 0;
-                    if (this.bytes >= 32 * 1024 * 1024) this.restart(); /* (its memory back) */
-                }
-            },
-        };
-    }
-    if (r.job) r.restart();
+    const r = Module.essikitReading;
+    if (r.job) r.stop();
     if (!r.worker) r.start();
     r.job = job;
     r.bytes = bytes_len;
@@ -89,11 +100,17 @@ EM_JS(void, essi_reading_post, (std::uint32_t job, const char* header, std::size
 
 EM_JS(void, essi_reading_cancel, (std::uint32_t job), {
     const r = Module.essikitReading;
-    if (r && r.job === job) r.restart();
+    if (r && r.job === job) r.stop();
 });
 // clang-format on
 
+void WebReadingWorker::prepare() {
+    essi_reading_setup();
+    essi_reading_prepare();
+}
+
 void WebReadingWorker::post(std::uint32_t job, std::string_view header, std::string_view bytes) {
+    essi_reading_setup();
     essi_reading_post(job, header.data(), header.size(), bytes.data(), bytes.size());
 }
 
@@ -106,7 +123,10 @@ std::optional<std::string> WebReadingWorker::receive(std::uint32_t job) {
     return std::nullopt;
 }
 
-void WebReadingWorker::cancel(std::uint32_t job) { essi_reading_cancel(job); }
+void WebReadingWorker::cancel(std::uint32_t job) {
+    std::erase_if(messages_, [job](const auto& m) { return m.first == job; });  // (a document may be among them)
+    essi_reading_cancel(job);
+}
 
 }  // namespace
 

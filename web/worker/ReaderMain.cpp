@@ -5,13 +5,23 @@
 #include <emscripten.h>
 
 #include <cstdint>
+#include <iterator>
 #include <string>
 
 #include "app/ReadingJob.hpp"
+#include "essi/dialect.hpp"
+#include "essi_warm_up_tapes.hpp"
 
 namespace {
 
 std::string g_bytes;  // the tape of the next job (essi_reader_buffer)
+
+// The warm-up: the page's warm-up tapes (web/CMakeLists.txt) read through the job, messages dropped, until as many
+// bytes as the page's own warm-up (WarmUp::kBytes) were read: meanwhile the browser compiles the hot functions
+// at its top tier, so that the first tape does not run in baseline code.
+constexpr std::size_t kWarmUpBytes = 200000;
+std::size_t g_warm_up_bytes = 0;
+std::size_t g_warm_up_tapes = 0;
 
 // clang-format off
 EM_JS(void, essi_reader_post, (std::uint32_t job, char kind, const char* body, std::size_t len), {
@@ -30,6 +40,21 @@ extern "C" {
 EMSCRIPTEN_KEEPALIVE char* essi_reader_buffer(std::size_t size) {
     g_bytes.assign(size, '\0');
     return g_bytes.data();
+}
+
+// Warm-up tapes for about `budget_ms`; 1 while there are more to read.
+EMSCRIPTEN_KEEPALIVE int essi_reader_warm_up(double budget_ms) {
+    namespace tapes = essi::warm_up_tapes;
+    const double until = emscripten_get_now() + budget_ms;
+    while (g_warm_up_bytes < kWarmUpBytes && emscripten_get_now() < until) {
+        const tapes::EmbeddedFile& file = tapes::kFiles[g_warm_up_tapes++ % std::size(tapes::kFiles)];
+        std::string bytes = file.text;
+        g_warm_up_bytes += bytes.size();
+        essi::TapeSetup setup = essi::setup_tape(bytes, std::nullopt, std::nullopt);
+        essi::viewer::read_for_page(file.name, std::move(bytes), std::move(setup),
+                                    [](essi::viewer::ReadingMessage, std::string_view) {});
+    }
+    return g_warm_up_bytes < kWarmUpBytes ? 1 : 0;
 }
 
 // Reads and checks the tape put in essi_reader_buffer as the request `header` says.

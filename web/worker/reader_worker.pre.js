@@ -1,9 +1,14 @@
-// The reading worker's side of the messages (before Emscripten's code in essi_reader.js): each message from the
-// page is a job { job, header, bytes } (ArrayBuffers), run once the program has started, one after another.
+// The reading worker's side of the messages (before Emscripten's code in essi_reader.js): the page posts a job
+// { job, header, bytes } (ArrayBuffers) for each tape, run once the program has started, one after another, and
+// { warmUp: true } once, before the first: the warm-up's tapes are then read in slices of kWarmUpSliceMs until
+// done or until a job comes.
 var essiReaderJobs = [];
 var essiReaderStarted = false;
+var essiReaderWarming = false;
+var kWarmUpSliceMs = 20;
 
 function essiReaderRun(m) {
+  essiReaderWarming = false;  // (a tape of the page's own: warm enough now)
   const header = new Uint8Array(m.header);
   const bytes = new Uint8Array(m.bytes);
   const at = Module._essi_reader_buffer(bytes.length);
@@ -17,12 +22,25 @@ function essiReaderRun(m) {
   }
 }
 
+function essiReaderWarmUp() {
+  if (!essiReaderWarming) return;
+  if (Module._essi_reader_warm_up(kWarmUpSliceMs)) setTimeout(essiReaderWarmUp, 0);
+  else essiReaderWarming = false;
+}
+
 Module['onRuntimeInitialized'] = function () {
   essiReaderStarted = true;
   for (const m of essiReaderJobs.splice(0)) essiReaderRun(m);
+  essiReaderWarmUp();
 };
 
 self.onmessage = function (e) {
-  if (essiReaderStarted) essiReaderRun(e.data);
-  else essiReaderJobs.push(e.data);
+  if (e.data.warmUp) {
+    essiReaderWarming = true;
+    if (essiReaderStarted) essiReaderWarmUp();
+  } else if (essiReaderStarted) {
+    essiReaderRun(e.data);
+  } else {
+    essiReaderJobs.push(e.data);
+  }
 };

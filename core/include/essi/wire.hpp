@@ -20,8 +20,8 @@ namespace essi {
 template <class T>
 struct WireFloats : std::false_type {};
 template <class T>
-inline constexpr bool kWirePlain = std::is_arithmetic_v<T> || std::is_enum_v<T> ||
-                                   std::has_unique_object_representations_v<T> || WireFloats<T>::value;
+inline constexpr bool kWirePlain =
+    std::is_arithmetic_v<T> || std::is_enum_v<T> || std::has_unique_object_representations_v<T> || WireFloats<T>::value;
 
 class WireWriter {
 public:
@@ -29,6 +29,11 @@ public:
     void put(const T& v) {
         static_assert(kWirePlain<T>, "only plain values (no padding) are written as they lie in memory");
         out_.append(reinterpret_cast<const char*>(&v), sizeof v);
+    }
+    // Several plain values, one after the other.
+    template <class... T>
+    void put_all(const T&... v) {
+        (put(v), ...);
     }
     void put_string(std::string_view s) {
         put<std::uint64_t>(s.size());
@@ -58,6 +63,11 @@ public:
         std::memcpy(&v, in_.data() + pos_, sizeof v);
         pos_ += sizeof v;
         return true;
+    }
+    // Several plain values, one after the other: false at the first that fails.
+    template <class... T>
+    [[nodiscard]] bool get_all(T&... v) {
+        return (get(v) && ...);
     }
     [[nodiscard]] bool get_string(std::string& s) {
         std::uint64_t n = 0;
