@@ -32,9 +32,9 @@ const targets = process.argv.slice(2).map(Number).filter((n) => n > 0);
 const motionTargets = targets.length ? targets : [1e3, 1e4, 5e4, 1e6, 1e7];
 const smallRuns = Number(process.env.RUNS_SMALL || 5);
 const cold = process.env.COLD === '1';
-// NO_WORKER=1: the page has no Worker, so it reads every tape itself (as before the reading worker, and as the
-// desktop viewer does): the same build measured both ways.
-const noWorker = process.env.NO_WORKER === '1';
+// WORKER=1: the page is opened with ?worker=1, so tapes of 1 MB and more are read in the reading worker (without
+// it the page reads every tape itself): the same build measured both ways.
+const useWorker = process.env.WORKER === '1';
 const kWarmSettleMs = 1000;
 
 // The first frame's goals (docs/performance.md): 10 000 motions within 0.25 s of the drop, 1 M within 1 s, 10 M
@@ -86,7 +86,7 @@ async function memory(browser, page) {
 }
 
 async function measureLoad(browser, baseUrl, tape) {
-  const page = await newPage(browser, baseUrl, undefined, noWorker ? 'window.Worker = undefined;' : null);
+  const page = await newPage(browser, useWorker ? `${baseUrl}?worker=1` : baseUrl);
   // The page as a person finds it: its first frames drawn and the GPU done with them (the drop is measured, not the
   // page's start, whose work on SwiftShader can hold the next frames back for a few hundred ms).
   await page.evaluate(() => new Promise((res) => {

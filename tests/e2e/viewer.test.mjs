@@ -2691,12 +2691,13 @@ test('at 1024x600 the problems list is on the screen and the Compare window leav
   await page.close();
 });
 
-// A page whose Worker is replaced before its scripts run (an init script): `script` is the replacement's source.
-function pageWithWorker(script) {
-  return openPage(browser, baseUrl, undefined, script);
+// A page that asks for the reading worker (?worker=1), its Worker replaced before its scripts run when `script`
+// (an init script) says so.
+function pageWithWorker(script = null) {
+  return openPage(browser, `${baseUrl}?worker=1`, undefined, script);
 }
 
-test('a tape loaded in slices is read and checked in the reading worker: the same verdict, its blocks read again for the inspector; without a worker, or when it fails, the page reads it', async () => {
+test('with ?worker=1 a tape loaded in slices is read and checked in the reading worker: the same verdict, its blocks read again for the inspector; without it, without a Worker, or when the worker fails, the page reads it', async () => {
   const tape = platesTape(25, 600);
   const file = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'essi-worker-')), 'plates.esi');
   fs.writeFileSync(file, tape);
@@ -2705,7 +2706,7 @@ test('a tape loaded in slices is read and checked in the reading worker: the sam
   const want = cli.diagnostics.map((d) => [d.severity, d.code, d.line, d.column, d.message]);
   const lastLine = tape.split('\r\n').length - 1;  // (the last line: 64, the program's end)
 
-  const page = await newPage();
+  const page = await pageWithWorker();
   assert.equal(await page.evaluate(() => typeof Worker), 'function');
   const state = await dropFile(page, 'plates.esi', Buffer.from(tape));
   assert.equal(state.load.at_once, false);
@@ -2722,7 +2723,12 @@ test('a tape loaded in slices is read and checked in the reading worker: the sam
   assert.ok(inspector.length > 0 && inspector.some((l) => l.includes('64')), JSON.stringify(inspector));
   await page.close();
 
-  // No Worker in the page: it reads the tape itself.
+  // Without ?worker=1 (the default), and with it but no Worker in the page: the page reads the tape itself.
+  const plain = await newPage();
+  const here = await dropFile(plain, 'plates.esi', Buffer.from(tape));
+  assert.deepEqual([here.load.read_in, here.load.worker_failure], ['page', '']);
+  assert.deepEqual(verdict(here), want);
+  await plain.close();
   const none = await pageWithWorker('window.Worker = undefined;');
   const alone = await dropFile(none, 'plates.esi', Buffer.from(tape));
   assert.equal(alone.load.read_in, 'page');

@@ -25,7 +25,9 @@ test('the viewer runs under the CSP and is cross-origin isolated', { skip: !have
     assert.equal(state.status, 'ready');
     assert.deepEqual(await page.evaluate(() => [window.crossOriginIsolated, typeof SharedArrayBuffer]), [true, 'function']);
     assert.equal((await page.evaluate(() => window.essikit.shareStore.ready)).ok, true);
-    // A tape over 1 MB is read in the reading worker, whose script has a policy of its own.
+    // With ?worker=1, a tape over 1 MB is read in the reading worker, whose script has a policy of its own.
+    await page.goto(url + '/?worker=1');
+    await page.waitForFunction(() => window.essikit && window.essikit.started, null, { timeout: 120000 });
     const big = '+100+0\n'.repeat(180000) + '63\n';
     const bigState = await page.evaluate((t) => window.essikit.load('big.esi', t), big);
     assert.equal(bigState.status, 'ready');

@@ -69,10 +69,7 @@ public:
     bool background_step();
     // Runs the load path on the built-in tapes before the first tape (app/WarmUp.hpp): the browser's choice, once
     // its page has started (its code is compiled while it runs; the desktop's is compiled already).
-    void start_warm_up() {
-        warm_up_.start(graphics_ok_);
-        if (ReadingWorker* worker = platform_.reading_worker()) worker->prepare();
-    }
+    void start_warm_up() { warm_up_.start(graphics_ok_); }
 
     // AppCallbacks: a file opened, dropped or pasted; a platform service's message.
     void load(std::string name, std::string bytes) override;

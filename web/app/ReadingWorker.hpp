@@ -12,9 +12,6 @@ namespace essi::viewer {
 class ReadingWorker {
 public:
     virtual ~ReadingWorker() = default;
-    // Starts the worker before the first tape, and lets it warm its code up (the browser compiles the hot functions
-    // at its top tier while the worker reads built-in tapes, as the page does: app/WarmUp.hpp).
-    virtual void prepare() {}
     // Hands job `job` to the worker: the request's header and the tape's bytes (both copied). A job that has not
     // finished is dropped.
     virtual void post(std::uint32_t job, std::string_view header, std::string_view bytes) = 0;

@@ -1,11 +1,11 @@
-// The reading worker in the browser: a Web Worker running essi_reader.js (web/worker/), started when the page's
-// warm-up starts (or by the first tape handed to it). The page posts it a job (the request's header and a copy of the
-// tape's bytes, both transferred) and it posts back ReadingJob.hpp's messages, which land here (essi_reading_buffer,
-// then essi_reading_received) for WorkerLoader to pick up in the next frame. A job handed over while another runs ends
-// the worker and starts a new one (a job runs to its end once begun); so does the end of a job on a large tape, which
-// gives its memory back (a new one is started). Each worker started warms its code up on built-in tapes before its
-// first job (prepare(): the page calls it when its own warm-up starts). A worker that cannot start or fails sends its
-// job a Failed message: the page reads the tape itself.
+// The reading worker in the browser: a Web Worker running essi_reader.js (web/worker/), started by the first tape
+// handed to it (so a page that only ever sees small tapes never fetches its program). The page posts it a job (the
+// request's header and a copy of the tape's bytes, both transferred) and it posts back ReadingJob.hpp's messages,
+// which land here (essi_reading_buffer, then essi_reading_received) for WorkerLoader to pick up in the next frame. A
+// job handed over while another runs ends the worker and starts a new one (a job runs to its end once begun). The
+// end of a job on a large tape does too, which gives its memory back; that new worker warms its code up on built-in
+// tapes while it waits ({warmUp}). A worker that cannot start or fails sends its job a Failed message: the page
+// reads the tape itself.
 #include <emscripten.h>
 
 #include <deque>
@@ -20,7 +20,6 @@ namespace {
 
 class WebReadingWorker final : public ReadingWorker {
 public:
-    void prepare() override;
     void post(std::uint32_t job, std::string_view header, std::string_view bytes) override;
     std::optional<std::string> receive(std::uint32_t job) override;
     void cancel(std::uint32_t job) override;
@@ -42,11 +41,15 @@ private:
 WebReadingWorker g_worker;
 
 // clang-format off
+/* Opt-in for now (the page's address has ?worker=1): the first big tape is shown later than when the page reads
+   it (docs/performance.md, "The reading worker"). */
 EM_JS(int, essi_reading_supported, (), {
-    return typeof Worker !== 'undefined' ? 1 : 0;
+    const asked = new URLSearchParams(location.search).get('worker') === '1';
+    return asked && typeof Worker !== 'undefined' ? 1 : 0;
 });
 
-// The page's side of the worker: Module.essikitReading, made once. A worker started warms up at once ({warmUp}).
+// The page's side of the worker: Module.essikitReading, made once. A worker started is told to warm up ({warmUp}):
+// a job that comes first stops that.
 EM_JS(void, essi_reading_setup, (), {
     if (Module.essikitReading) return;
     Module.essikitReading = {
@@ -80,11 +83,6 @@ EM_JS(void, essi_reading_setup, (), {
     };
 });
 
-EM_JS(void, essi_reading_prepare, (), {
-    const r = Module.essikitReading;
-    if (!r.worker) r.start();
-});
-
 /* (the worker's script beside the page; a job's buffers are transferred, not copied again) */
 EM_JS(void, essi_reading_post, (std::uint32_t job, const char* header, std::size_t header_len, const char* bytes,
                                 std::size_t bytes_len), {
@@ -103,11 +101,6 @@ EM_JS(void, essi_reading_cancel, (std::uint32_t job), {
     if (r && r.job === job) r.stop();
 });
 // clang-format on
-
-void WebReadingWorker::prepare() {
-    essi_reading_setup();
-    essi_reading_prepare();
-}
 
 void WebReadingWorker::post(std::uint32_t job, std::string_view header, std::string_view bytes) {
     essi_reading_setup();
