@@ -239,13 +239,11 @@ constexpr std::size_t kSavedDiagnosticMinBytes = 5 * sizeof(std::uint32_t) + 3 *
 void save_diagnostic(WireWriter& out, const Diagnostic& d) {
     out.put_all(d.severity, d.has_at, d.code, d.msg, d.line, d.column, d.contour_first, d.contour_last, d.at);
     out.put_string(d.args.packed());
-    out.put<std::uint64_t>(d.related().size());
-    for (const RelatedLocation& r : d.related()) {
+    out.put_items(d.related(), [&](const RelatedLocation& r) {
         out.put_all(r.line, r.end_line, r.msg);
         out.put_string(r.args.packed());
-    }
-    out.put<std::uint64_t>(d.overlap().size());
-    for (const std::vector<Point>& polygon : d.overlap()) out.put_vector(polygon);
+    });
+    out.put_items(d.overlap(), [&](const std::vector<Point>& polygon) { out.put_vector(polygon); });
 }
 
 bool restore_diagnostic(WireReader& in, Diagnostic& d) {
@@ -254,38 +252,31 @@ bool restore_diagnostic(WireReader& in, Diagnostic& d) {
         !in.get_string(packed))
         return false;
     d.args = MessageArgs::from_packed(std::move(packed));
-    std::uint64_t related = 0;
-    if (!in.get_count(related, 2 * sizeof(std::uint32_t) + sizeof(Msg) + sizeof(std::uint64_t))) return false;
-    for (std::uint64_t k = 0; k < related; ++k) {
-        RelatedLocation r;
-        if (!in.get_all(r.line, r.end_line, r.msg) || !in.get_string(packed)) return false;
-        r.args = MessageArgs::from_packed(std::move(packed));
-        d.add_related(std::move(r));
-    }
-    std::uint64_t polygons = 0;
-    if (!in.get_count(polygons, sizeof(std::uint64_t))) return false;
-    if (polygons == 0) return true;
+    std::vector<RelatedLocation> related;
+    if (!in.get_items(related, 2 * sizeof(std::uint32_t) + sizeof(Msg) + sizeof(std::uint64_t),
+                      [&](RelatedLocation& r) {
+                          if (!in.get_all(r.line, r.end_line, r.msg) || !in.get_string(packed)) return false;
+                          r.args = MessageArgs::from_packed(std::move(packed));
+                          return true;
+                      }))
+        return false;
+    for (RelatedLocation& r : related) d.add_related(std::move(r));
     std::vector<std::vector<Point>> overlap;
-    for (std::uint64_t k = 0; k < polygons; ++k)
-        if (!in.get_vector(overlap.emplace_back())) return false;
-    d.set_overlap(std::move(overlap));
+    if (!in.get_items(overlap, sizeof(std::uint64_t), [&](std::vector<Point>& p) { return in.get_vector(p); }))
+        return false;
+    if (!overlap.empty()) d.set_overlap(std::move(overlap));
     return true;
 }
 
 }  // namespace
 
 void save_diagnostics(WireWriter& out, const std::vector<Diagnostic>& diagnostics) {
-    out.put<std::uint64_t>(diagnostics.size());
-    for (const Diagnostic& d : diagnostics) save_diagnostic(out, d);
+    out.put_items(diagnostics, [&](const Diagnostic& d) { save_diagnostic(out, d); });
 }
 
 bool restore_diagnostics(WireReader& in, std::vector<Diagnostic>& diagnostics) {
-    std::uint64_t n = 0;
-    if (!in.get_count(n, kSavedDiagnosticMinBytes)) return false;
-    diagnostics.clear();
-    for (std::uint64_t k = 0; k < n; ++k)
-        if (!restore_diagnostic(in, diagnostics.emplace_back())) return false;
-    return true;
+    return in.get_items(diagnostics, kSavedDiagnosticMinBytes,
+                        [&](Diagnostic& d) { return restore_diagnostic(in, d); });
 }
 
 }  // namespace essi

@@ -12,68 +12,45 @@ namespace {
 // (std::pair is not trivially copyable: its parts are written one after the other)
 template <class A, class B>
 void put_pairs(WireWriter& out, const std::vector<std::pair<A, B>>& v) {
-    out.put<std::uint64_t>(v.size());
-    for (const auto& [a, b] : v) {
-        out.put(a);
-        out.put(b);
-    }
+    out.put_items(v, [&](const std::pair<A, B>& p) { out.put_all(p.first, p.second); });
 }
 
 template <class A, class B>
 bool get_pairs(WireReader& in, std::vector<std::pair<A, B>>& v) {
-    std::uint64_t n = 0;
-    if (!in.get_count(n, sizeof(A) + sizeof(B))) return false;
-    v.resize(static_cast<std::size_t>(n));
-    for (auto& [a, b] : v)
-        if (!in.get(a) || !in.get(b)) return false;
-    return true;
+    return in.get_items(v, sizeof(A) + sizeof(B), [&](std::pair<A, B>& p) { return in.get_all(p.first, p.second); });
 }
 
 bool get_kept(WireReader& in, std::vector<std::pair<std::uint32_t, MotionRecord>>& kept) {
-    std::uint64_t n = 0;
-    if (!in.get_count(n, sizeof(std::uint32_t) + sizeof(MotionRecord) / 2)) return false;
-    kept.resize(static_cast<std::size_t>(n));
-    for (auto& [motion, record] : kept)
-        if (!in.get(motion) || !restore_motion_record(in, record)) return false;
-    return true;
+    return in.get_items(kept, sizeof(std::uint32_t) + sizeof(MotionRecord) / 2,
+                        [&](auto& k) { return in.get(k.first) && restore_motion_record(in, k.second); });
 }
 
 bool get_marks(WireReader& in, std::vector<DiagnosticMark>& marks) {
-    std::uint64_t n = 0;
-    if (!in.get_count(n, sizeof(std::uint32_t) + sizeof(Point))) return false;
-    marks.resize(static_cast<std::size_t>(n));
-    for (DiagnosticMark& m : marks)
-        if (!in.get(m.diagnostic) || !in.get(m.at)) return false;
-    return true;
+    return in.get_items(marks, sizeof(std::uint32_t) + sizeof(Point),
+                        [&](DiagnosticMark& m) { return in.get_all(m.diagnostic, m.at); });
 }
 
 void put_messages(WireWriter& out, const std::vector<Message>& messages) {
-    out.put<std::uint64_t>(messages.size());
-    for (const Message& m : messages) {
+    out.put_items(messages, [&](const Message& m) {
         out.put(m.msg);
         out.put_string(m.args.packed());
-    }
+    });
 }
 
 bool get_messages(WireReader& in, std::vector<Message>& messages) {
-    std::uint64_t n = 0;
-    if (!in.get_count(n, sizeof(Msg) + sizeof(std::uint64_t))) return false;
-    messages.clear();
     std::string packed;
-    for (std::uint64_t k = 0; k < n; ++k) {
-        Message& m = messages.emplace_back();
+    return in.get_items(messages, sizeof(Msg) + sizeof(std::uint64_t), [&](Message& m) {
         if (!in.get(m.msg) || !in.get_string(packed)) return false;
         m.args = MessageArgs::from_packed(std::move(packed));
-    }
-    return true;
+        return true;
+    });
 }
 
 void put_setup(WireWriter& out, const TapeSetup& s) {
     out.put(s.format);
     out.put_string(profile_to_json(s.profile));
     out.put(s.auto_profile);
-    out.put<std::uint64_t>(s.evidence.size());
-    for (const std::string& e : s.evidence) out.put_string(e);
+    out.put_items(s.evidence, [&](const std::string& e) { out.put_string(e); });
     std::vector<Diagnostic> note;
     if (s.note) note.push_back(*s.note);
     save_diagnostics(out, note);
@@ -82,16 +59,12 @@ void put_setup(WireWriter& out, const TapeSetup& s) {
 
 bool get_setup(WireReader& in, TapeSetup& s) {
     std::string profile;
-    std::uint64_t evidence = 0;
     if (!in.get(s.format) || !in.get_string(profile) || !in.get(s.auto_profile) ||
-        !in.get_count(evidence, sizeof(std::uint64_t)))
+        !in.get_items(s.evidence, sizeof(std::uint64_t), [&](std::string& e) { return in.get_string(e); }))
         return false;
     ProfileResult parsed = parse_profile(profile);
     if (!parsed.profile) return false;
     s.profile = std::move(*parsed.profile);
-    s.evidence.clear();
-    for (std::uint64_t k = 0; k < evidence; ++k)
-        if (!in.get_string(s.evidence.emplace_back())) return false;
     std::vector<Diagnostic> note;
     if (!restore_diagnostics(in, note) || note.size() > 1) return false;
     s.note.reset();
@@ -167,21 +140,16 @@ std::string encode_document(const Document& d) {
     out.put_vector(d.motions);
     out.put_vector(d.arc_centres);
     d.arc_rank.save(out);
-    out.put<std::uint64_t>(d.kept.size());
-    for (const auto& [motion, record] : d.kept) {
-        out.put(motion);
-        save_motion_record(out, record);
-    }
+    out.put_items(d.kept, [&](const std::pair<std::uint32_t, MotionRecord>& k) {
+        out.put(k.first);
+        save_motion_record(out, k.second);
+    });
     put_pairs(out, d.jumps);
     put_pairs(out, d.kerfs);
     put_pairs(out, d.feeds);
     out.put_vector(d.pierces);
     d.line_index.save(out);
-    out.put<std::uint64_t>(d.marks.size());
-    for (const DiagnosticMark& m : d.marks) {
-        out.put(m.diagnostic);
-        out.put(m.at);
-    }
+    out.put_items(d.marks, [&](const DiagnosticMark& m) { out.put_all(m.diagnostic, m.at); });
     put_pairs(out, d.concerned_motions);
     put_chunks(out, d.chunks);
     for (const std::size_t n : {d.blocks, d.block_words, d.curves}) out.put<std::uint64_t>(n);

@@ -105,7 +105,9 @@ public:
                (plan_ != nullptr && plan_->works_on_page());
     }
     // Work left, on the page or in the reading worker.
-    [[nodiscard]] bool busy() const { return has_work() || loader_ != nullptr || plan_ != nullptr; }
+    [[nodiscard]] bool busy() const {
+        return loader_ != nullptr || plan_ != nullptr || lod_building_ || building_ != nullptr;
+    }
     // The slice may run outside a frame (not before the first frame of a load has shown the progress bar).
     [[nodiscard]] bool may_step_outside_frame() const {
         return !(loader_ && !frames_.at_once && frames_since_start_ == 0);

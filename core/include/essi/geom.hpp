@@ -13,13 +13,8 @@ struct Box {
     double min_x = 0, min_y = 0, max_x = 0, max_y = 0;
     bool empty = true;
     // As bytes (essi/wire.hpp; a member at a time: the struct has padding), and read back.
-    void save(WireWriter& out) const {
-        for (const double v : {min_x, min_y, max_x, max_y}) out.put(v);
-        out.put(empty);
-    }
-    [[nodiscard]] bool restore(WireReader& in) {
-        return in.get(min_x) && in.get(min_y) && in.get(max_x) && in.get(max_y) && in.get(empty);
-    }
+    void save(WireWriter& out) const { out.put_all(min_x, min_y, max_x, max_y, empty); }
+    [[nodiscard]] bool restore(WireReader& in) { return in.get_all(min_x, min_y, max_x, max_y, empty); }
     void add(Point p) {
         if (empty) {
             min_x = max_x = p.x;

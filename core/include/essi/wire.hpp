@@ -45,6 +45,12 @@ public:
         put<std::uint64_t>(v.size());
         if (!v.empty()) out_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
     }
+    // A count, then each item as `write(item)` writes it.
+    template <class Items, class Write>
+    void put_items(const Items& items, Write write) {
+        put<std::uint64_t>(items.size());
+        for (const auto& item : items) write(item);
+    }
     [[nodiscard]] std::size_t size() const { return out_.size(); }
     [[nodiscard]] std::string take() { return std::move(out_); }
 
@@ -59,7 +65,7 @@ public:
     template <class T>
     [[nodiscard]] bool get(T& v) {
         static_assert(kWirePlain<T>, "only plain values (no padding) are read as they lie in memory");
-        if (in_.size() - pos_ < sizeof v) return fail();
+        if (in_.size() - pos_ < sizeof v) return false;
         std::memcpy(&v, in_.data() + pos_, sizeof v);
         pos_ += sizeof v;
         return true;
@@ -71,7 +77,7 @@ public:
     }
     [[nodiscard]] bool get_string(std::string& s) {
         std::uint64_t n = 0;
-        if (!get(n) || n > in_.size() - pos_) return fail();
+        if (!get(n) || n > in_.size() - pos_) return false;
         s.assign(in_.data() + pos_, static_cast<std::size_t>(n));
         pos_ += static_cast<std::size_t>(n);
         return true;
@@ -80,7 +86,7 @@ public:
     [[nodiscard]] bool get_vector(std::vector<T>& v) {
         static_assert(kWirePlain<T>, "only plain values (no padding) are read as they lie in memory");
         std::uint64_t n = 0;
-        if (!get(n) || n > (in_.size() - pos_) / sizeof(T)) return fail();
+        if (!get_count(n, sizeof(T))) return false;
         v.resize(static_cast<std::size_t>(n));
         if (n > 0) std::memcpy(v.data(), in_.data() + pos_, static_cast<std::size_t>(n) * sizeof(T));
         pos_ += static_cast<std::size_t>(n) * sizeof(T);
@@ -90,23 +96,27 @@ public:
     // no count read from bad bytes makes the caller allocate more than the bytes could fill).
     [[nodiscard]] bool get_count(std::uint64_t& n, std::size_t min_bytes) {
         if (!get(n)) return false;
-        if (min_bytes > 0 && n > (in_.size() - pos_) / min_bytes) return fail();
+        return min_bytes == 0 || n <= (in_.size() - pos_) / min_bytes;
+    }
+    // What put_items wrote, into `v` (emptied first): a count of items that take at least `min_bytes` each, then
+    // each item as `read(item)` reads it into a new element; false at the first that fails.
+    template <class T, class Read>
+    [[nodiscard]] bool get_items(std::vector<T>& v, std::size_t min_bytes, Read read) {
+        std::uint64_t n = 0;
+        if (!get_count(n, min_bytes)) return false;
+        v.clear();
+        v.reserve(static_cast<std::size_t>(n));
+        for (std::uint64_t k = 0; k < n; ++k)
+            if (!read(v.emplace_back())) return false;
         return true;
     }
     // The bytes read so far (where a failed get stopped).
     [[nodiscard]] std::size_t position() const { return pos_; }
     [[nodiscard]] bool at_end() const { return pos_ == in_.size(); }
-    // A get failed (the bytes end before the value, or a count is larger than the bytes left).
-    [[nodiscard]] bool failed() const { return failed_; }
 
 private:
-    bool fail() {
-        failed_ = true;
-        return false;
-    }
     std::string_view in_;
     std::size_t pos_ = 0;
-    bool failed_ = false;
 };
 
 }  // namespace essi
