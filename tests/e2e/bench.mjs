@@ -35,6 +35,9 @@ const cold = process.env.COLD === '1';
 // WORKER=1: the page is opened with ?worker=1, so tapes of 1 MB and more are read in the reading worker (without
 // it the page reads every tape itself): the same build measured both ways.
 const useWorker = process.env.WORKER === '1';
+// TRACE=FILE: a Chrome trace (every thread: the page's, the worker's, V8's compilers, the GPU's) from the drop to
+// the first frame with the tape drawn, of the last tape loaded, written to FILE (chrome://tracing, Perfetto).
+const traceFile = process.env.TRACE || '';
 const kWarmSettleMs = 1000;
 
 // The first frame's goals (docs/performance.md): 10 000 motions within 0.25 s of the drop, 1 M within 1 s, 10 M
@@ -131,6 +134,7 @@ async function measureLoad(browser, baseUrl, tape) {
       gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
       const t = performance.now() - window.__dropT0;
       if (shown) window.__gpuShown = t;
+      if (shown) window.__renderShown = s.render;
       if (complete) window.__gpuComplete = t;
     };
     let drawnSeen = false, readySeen = false;
@@ -153,8 +157,15 @@ async function measureLoad(browser, baseUrl, tape) {
     };
     requestAnimationFrame(tick);
   });
-  await page.evaluate((n) => { window.__want = n; }, tape.name);
+  await page.evaluate((n) => { window.__want = n; window.__render0 = essikit.state().render; }, tape.name);
+  if (traceFile) {
+    await browser.startTracing(page, { path: traceFile, categories: ['devtools.timeline', 'v8', 'v8.execute', 'disabled-by-default-v8.compile', 'blink.user_timing', 'toplevel'] });
+  }
   await dropFromUrl(page, '/gen/' + tape.name, tape.name);
+  if (traceFile) {
+    await page.waitForFunction(() => window.__gpuShown > 0, null, { timeout: 900000, polling: 250 });
+    await browser.stopTracing();
+  }
   await page.waitForFunction(() => window.__readyAt > 0 && window.__drawnAt > 0 && window.__gpuComplete > 0, null, { timeout: 900000, polling: 250 });
   const r = await page.evaluate(() => {
     const f = window.__frames;
@@ -166,7 +177,10 @@ async function measureLoad(browser, baseUrl, tape) {
     return { longest_gap_end_ms: Math.round(at - window.__dropT0), first_frame_ms: window.__drawnAt - window.__dropT0, ready_ms: window.__readyAt - window.__dropT0,
              gpu_shown_ms: window.__gpuShown, gpu_complete_ms: window.__gpuComplete,
              stages: window.__stages.map(([t, st]) => [Math.round(t - window.__dropT0), st]),
-             frames: gaps.length, max_gap_ms: Math.max(...gaps) };
+             frames: gaps.length, max_gap_ms: Math.max(...gaps),
+             // the page's own frames from the drop to the first frame that showed the tape: drawn, and left as they were
+             redraws_to_first: window.__renderShown.frames - window.__render0.frames,
+             unchanged_to_first: window.__renderShown.unchanged_frames - window.__render0.unchanged_frames };
   });
   const state = await page.evaluate(() => essikit.state());
   const after = await memory(browser, page);
@@ -290,7 +304,8 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
         drop_to_complete_frame_gpu_ms_runs: sorted('gpu_complete_ms').map(Math.round),
         load_frames: s.load,
         shown_seconds_viewer: s.shown_seconds, load_seconds_viewer: s.load_seconds,
-        frames_while_loading: r.frames, longest_frame_gap_ms: Math.round(r.max_gap_ms), longest_gap_end_ms: r.longest_gap_end_ms,
+        frames_while_loading: r.frames, redraws_to_first: r.redraws_to_first, unchanged_to_first: r.unchanged_to_first,
+        longest_frame_gap_ms: Math.round(r.max_gap_ms), longest_gap_end_ms: r.longest_gap_end_ms,
         core_bytes_per_block: +perBlock.toFixed(1), budget_bytes: budget,
         viewer_bytes: s.memory_bytes, viewer_parts: s.memory_parts, gpu_bytes: s.gpu_bytes, lod: s.lod,
         wasm_heap: r.after.wasm_heap, wasm_heap_empty_page: r.before.wasm_heap,
@@ -307,7 +322,8 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
                        `${l.steps} slice(s), ${l.progress_frames} frame(s) with the progress bar, read in the ${l.read_in}` +
                        (l.worker_failure ? ` (${l.worker_failure})` : '') : ''));
       console.log(`   drop -> first frame ${row.drop_to_first_frame_ms} ms (level of detail ${s.lod.available ? 'made' : 'none'}), ` +
-                  `drop -> ready (every segment on the GPU) ${row.drop_to_ready_ms} ms (${r.frames} frames meanwhile, longest gap ${row.longest_frame_gap_ms} ms, ending ${r.longest_gap_end_ms} ms after the drop)`);
+                  `drop -> ready (every segment on the GPU) ${row.drop_to_ready_ms} ms (${r.frames} frames meanwhile, longest gap ${row.longest_frame_gap_ms} ms, ending ${r.longest_gap_end_ms} ms after the drop); ` +
+                  `before the first frame the page drew ${r.redraws_to_first} frame(s) and left ${r.unchanged_to_first} unchanged`);
       console.log(`   stages (ms from the drop, seen at animation frames): ${r.stages.map(([t, st]) => `${t} ${st}`).join(', ')}`);
       console.log(`   memory: viewer ${mb(s.memory_bytes)} (${(s.memory_bytes / s.motions).toFixed(0)} B/motion), textures ${mb(s.gpu_bytes)}, wasm heap ${mb(r.after.wasm_heap)}, ` +
                   `JS heap ${mb(r.after.js_heap)}, renderer RSS ${mb(r.after.renderer_rss)} (empty page ${mb(r.before.renderer_rss)}), ` +

@@ -10,6 +10,7 @@
 
 #include "app/ProblemList.hpp"
 #include "app/ScreenLayout.hpp"
+#include "app/ShownProgress.hpp"
 #include "app/View.hpp"
 #include "app/panels/Layout.hpp"
 
@@ -31,6 +32,7 @@ enum class KeyboardMode : std::uint8_t { Mouse, Drawing, Panels };
 struct UiState {
     bool help = false;
     bool share_popup = false;                    // the Share link window (ShareLinks::text)
+    ShownProgress loading_progress;              // the loading window's bar
     std::size_t hovered_mark = ~std::size_t(0);  // the diagnostic's mark under the mouse (Document::marks), or none
     std::vector<ToolbarItem> toolbar;            // the toolbar's items (Panels::toolbar)
     Rect toolbar_more;                           // its overflow menu's button (w 0: every item fits)

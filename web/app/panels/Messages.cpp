@@ -15,7 +15,7 @@ constexpr std::size_t kShareUrlShown = 600;  // characters of a share link shown
 constexpr std::size_t kExamplesPerRow = 3;   // buttons a row on the start screen
 constexpr float kWelcomeMarginPx = 24;       // the start screen inside the drawing area, this much to spare
 
-void loading(const LoadController& load, const Rect& a, ImVec2 centre, bool tape_drawn) {
+void loading(const LoadController& load, ShownProgress& bar, const Rect& a, ImVec2 centre, bool tape_drawn) {
     // Over the middle of the drawing area; at its top once the level of detail shows the tape.
     if (tape_drawn) ImGui::SetNextWindowPos(ImVec2(centre.x, a.y + 8), ImGuiCond_Always, ImVec2(0.5f, 0.f));
     else ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
@@ -23,7 +23,7 @@ void loading(const LoadController& load, const Rect& a, ImVec2 centre, bool tape
     ImGui::Begin("##loading", nullptr, kMessageFlags);
     ImGui::TextWrapped(
         "%s", tr(Msg::UiLoadingLine, {load.loading_name(), size_text(load.loading_bytes()), load.stage()}).c_str());
-    ImGui::ProgressBar(stepped(load.progress()), ImVec2(-1, 0));
+    ImGui::ProgressBar(bar.update(stepped(load.progress()), ImGui::GetTime()), ImVec2(-1, 0));
     ImGui::End();
 }
 
@@ -124,7 +124,7 @@ void Panels::messages() {
     const LoadController& load = p_.load;
     if (load.loading()) {
         // (a tape loaded at once has none: it is read and drawn before the next frame's panels)
-        if (!load.at_once()) loading(load, a, centre, p_.scene.tape_drawn());
+        if (!load.at_once()) loading(load, p_.ui.loading_progress, a, centre, p_.scene.tape_drawn());
     } else if (doc && (p_.renderer.filling() || load.remaking())) drawing(load, p_.renderer, a, centre);
     else if (!doc) welcome(p_, a, centre);
     else if (p_.session.banner() != Msg::None) problem(*doc, p_.session.banner_text(), a, centre);
