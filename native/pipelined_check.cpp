@@ -6,6 +6,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <exception>
 #include <thread>
 #include "essi/pipeline.hpp"
 
@@ -56,6 +57,27 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
         reader_wake.fetch_add(1, std::memory_order_release);
         reader_wake.notify_one();
     };
+    // A thread that throws (no memory for a chunk, say) ends the check on both, and its exception comes out of this
+    // call once the reading thread is joined: never std::terminate, never a thread left waiting for the other
+    // (essi serve answers the request with an error and goes on).
+    std::atomic<bool> reader_failed{false};  // the reading thread threw: `reader_error`
+    std::atomic<bool> stop_reading{false};   // the interpreting thread threw: the reading thread returns
+    std::exception_ptr reader_error;
+    // The reading thread, failed: every empty chunk slot says "last" and every plan slot is empty, so that the
+    // interpreting thread, waiting for either or coming to them, sees `reader_failed` and stops.
+    const auto release_interpreter = [&] {
+        reader_failed.store(true, std::memory_order_release);
+        for (Slot& s : slots) {
+            if (s.full.load(std::memory_order_acquire)) continue;
+            s.last = true;
+            s.full.store(true, std::memory_order_release);
+            s.full.notify_one();
+        }
+        for (PlanSlot& p : plan_slots) {
+            p.full.store(false, std::memory_order_release);
+            p.full.notify_one();
+        }
+    };
     // The cut plan's plates, analysed by whichever thread would otherwise wait for the other.
     SharedPlateRunner plates;
 
@@ -64,7 +86,7 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
     checker.set_plate_runner(&plates);
     if (parts) checker.find_parts();
 
-    std::thread reader_thread([&] {
+    const auto read_all = [&] {
         TapeReader reader(bytes, profile, format);
         std::size_t next_plan = 0;  // the plan slot to feed next
         // Feeds the plan slots filled, in order; false when none was.
@@ -81,6 +103,7 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
         bool reading = true;
         for (std::size_t k = 0;;) {
             const std::uint32_t seen = reader_wake.load(std::memory_order_acquire);
+            if (stop_reading.load(std::memory_order_acquire)) return;
             if (feed_plan()) continue;  // (first: the interpreter may be waiting for a plan slot)
             if (!reading) {
                 if (!interpreted.load(std::memory_order_acquire)) {
@@ -110,30 +133,50 @@ CheckResult check_tape_pipelined(std::string_view bytes, const Profile& profile,
             ++k;
             reading = more;
         }
+    };
+    std::thread reader_thread([&] {
+        try {
+            read_all();
+        } catch (...) {
+            reader_error = std::current_exception();
+            release_interpreter();
+        }
     });
 
-    for (std::size_t k = 0;; ++k) {
-        Slot& slot = slots[k % slots.size()];
-        while (!slot.full.load(std::memory_order_acquire) && plates.run_one()) {
-        }
-        slot.full.wait(false, std::memory_order_acquire);
-        const bool last = slot.last;
-        if (!last) {
-            PlanSlot& plan = plan_slots[k % plan_slots.size()];
-            while (plan.full.load(std::memory_order_acquire) && plates.run_one()) {
+    const auto interpret_all = [&] {
+        for (std::size_t k = 0;; ++k) {
+            Slot& slot = slots[k % slots.size()];
+            while (!slot.full.load(std::memory_order_acquire) && plates.run_one()) {
             }
-            plan.full.wait(true, std::memory_order_acquire);
-            checker.check_chunk(slot.chunk, slot.measures, plan.stream);
-            plan.full.store(true, std::memory_order_release);
+            slot.full.wait(false, std::memory_order_acquire);
+            const bool last = slot.last;
+            if (!last) {
+                PlanSlot& plan = plan_slots[k % plan_slots.size()];
+                while (plan.full.load(std::memory_order_acquire) && plates.run_one()) {
+                }
+                plan.full.wait(true, std::memory_order_acquire);
+                if (reader_failed.load(std::memory_order_acquire)) return;
+                checker.check_chunk(slot.chunk, slot.measures, plan.stream);
+                plan.full.store(true, std::memory_order_release);
+            }
+            slot.full.store(false, std::memory_order_release);
+            slot.full.notify_one();
+            if (last) return;
+            wake_reader();
         }
-        slot.full.store(false, std::memory_order_release);
-        slot.full.notify_one();
-        if (last) break;
+    };
+    try {
+        interpret_all();
+    } catch (...) {
+        stop_reading.store(true, std::memory_order_release);
         wake_reader();
+        reader_thread.join();
+        throw;
     }
     interpreted.store(true, std::memory_order_release);
     wake_reader();
     reader_thread.join();
+    if (reader_error) std::rethrow_exception(reader_error);
     CheckResult r = checker.finish();
     r.input = format;
     r.profile = profile.name;
