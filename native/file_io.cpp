@@ -18,8 +18,8 @@ namespace essi::native {
 namespace {
 
 constexpr std::size_t kReadChunkBytes = 1 << 16;
-// Files of this size and more are read into a buffer of huge pages (file_buffer).
-constexpr std::size_t kHugePageBufferBytes = std::size_t{4} << 20;
+// Files of this size and more are read into a buffer of huge pages (file_buffer; not under Emscripten).
+[[maybe_unused]] constexpr std::size_t kHugePageBufferBytes = std::size_t{4} << 20;
 
 // Reads what is left of `f` in chunks (for streams whose size is unknown), at most `max_bytes` in all.
 bool read_chunks(std::FILE* f, std::string& out, std::string& error, std::uint64_t max_bytes) {

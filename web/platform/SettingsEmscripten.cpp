@@ -28,7 +28,7 @@ std::optional<std::string> Platform::load_setting(const char* name) {
     // clang-format off
     EM_ASM({
         try {
-            stringToUTF8(window.localStorage.getItem('essikit.' + UTF8ToString($0)) || '', $1, $2);
+            stringToUTF8(window.localStorage.getItem('essikit.' + UTF8ToString($0)) || "", $1, $2);
         } catch (e) {
         }
     }, name, value.data(), len + 1);
@@ -52,14 +52,14 @@ void Platform::save_setting(const char* name, const std::string& value) {
 Lang Platform::system_language() {
     // clang-format off
     const int len = EM_ASM_INT({
-        const tags = (navigator.languages && navigator.languages.length) ? navigator.languages : [navigator.language || ''];
+        const tags = (navigator.languages && navigator.languages.length) ? navigator.languages : [navigator.language || ""];
         return lengthBytesUTF8(tags.join(' '));
     });
     // clang-format on
     std::string tags(static_cast<std::size_t>(len) + 1, '\0');
     // clang-format off
     EM_ASM({
-        const tags = (navigator.languages && navigator.languages.length) ? navigator.languages : [navigator.language || ''];
+        const tags = (navigator.languages && navigator.languages.length) ? navigator.languages : [navigator.language || ""];
         stringToUTF8(tags.join(' '), $0, $1);
     }, tags.data(), len + 1);
     // clang-format on
