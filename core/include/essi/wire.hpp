@@ -99,7 +99,8 @@ public:
         return min_bytes == 0 || n <= (in_.size() - pos_) / min_bytes;
     }
     // What put_items wrote, into `v` (emptied first): a count of items that take at least `min_bytes` each, then
-    // each item as `read(item)` reads it into a new element; false at the first that fails.
+    // each item as `read(item)` reads it into a new element; false at the first that fails. (Room for the count is
+    // made at once: at most sizeof(T) / min_bytes times the bytes left.)
     template <class T, class Read>
     [[nodiscard]] bool get_items(std::vector<T>& v, std::size_t min_bytes, Read read) {
         std::uint64_t n = 0;
