@@ -74,7 +74,15 @@ long caller_allocations() {
     return g_counted.load();
 }
 
-void expect_whole_check_after() {
+// One check with the big allocation after `skip` more refused on the thread `mode` names: the call throws
+// std::bad_alloc once both threads are done, an allocation was refused indeed, and the next check is whole.
+void expect_refused(Mode mode, long skip) {
+    g_caller = std::this_thread::get_id();
+    g_skip = skip;
+    g_mode = mode;
+    EXPECT_THROW((void)check_tape_pipelined(tape(), essi::Profile{}), std::bad_alloc);
+    EXPECT_EQ(g_mode.load(), Mode::Off) << "no allocation was refused: the test did not test";
+    g_mode = Mode::Off;
     const essi::Profile profile;
     essi_test::expect_same_result(check_tape_pipelined(tape(), profile), essi::check_tape(tape(), profile),
                                   "the check after the failed one");
@@ -83,13 +91,7 @@ void expect_whole_check_after() {
 TEST(PipelineFault, TheReadingThreadFailsInTheMiddle) {
     for (const long skip : {0L, 2L, 5L}) {  // its first chunk, the third, the sixth
         SCOPED_TRACE("allocations let through first: " + std::to_string(skip));
-        g_caller = std::this_thread::get_id();
-        g_skip = skip;
-        g_mode = Mode::FailOther;
-        EXPECT_THROW((void)check_tape_pipelined(tape(), essi::Profile{}), std::bad_alloc);
-        EXPECT_EQ(g_mode.load(), Mode::Off) << "no allocation was refused: the test did not test";
-        g_mode = Mode::Off;
-        expect_whole_check_after();
+        expect_refused(Mode::FailOther, skip);
     }
 }
 
@@ -98,13 +100,7 @@ TEST(PipelineFault, TheInterpretingThreadFailsInTheMiddle) {
     ASSERT_GE(big, 4) << "the interpreting thread's big allocations: too few to fail one in the middle";
     for (const long skip : {big / 4, big / 2}) {
         SCOPED_TRACE("allocations let through first: " + std::to_string(skip) + " of " + std::to_string(big));
-        g_caller = std::this_thread::get_id();
-        g_skip = skip;
-        g_mode = Mode::FailCaller;
-        EXPECT_THROW((void)check_tape_pipelined(tape(), essi::Profile{}), std::bad_alloc);
-        EXPECT_EQ(g_mode.load(), Mode::Off) << "no allocation was refused: the test did not test";
-        g_mode = Mode::Off;
-        expect_whole_check_after();
+        expect_refused(Mode::FailCaller, skip);
     }
 }
 
