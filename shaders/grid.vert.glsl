@@ -15,7 +15,8 @@ uniform vec2 u_turn;          // (cos, sin) of the view's quarter turns
 uniform vec2 u_first;         // the first line along x and along y
 uniform float u_step;         // minor step in mm
 uniform ivec2 u_count;        // lines along x and along y (the axes not counted)
-uniform ivec2 u_major_phase;  // the first line's grid index, modulo 10 (a multiple of 10 is a major line)
+uniform int u_major_every;    // every this many lines a major one (GridLines::kMajorEvery)
+uniform ivec2 u_major_phase;  // the first line's grid index, modulo u_major_every (a multiple of it is a major line)
 uniform ivec2 u_zero;         // the line that lies on the axis (-1: none): the axis draws it
 uniform vec2 u_axes_at;
 uniform vec4 u_span;          // what a line spans: x from .x to .z, y from .y to .w
@@ -38,7 +39,7 @@ const vec2 kCorners[6] = vec2[6](vec2(0.0, -1.0), vec2(1.0, -1.0), vec2(0.0, 1.0
 
 vec4 line_color(int i, int phase, int zero) {
     if (i == zero) return vec4(0.0);
-    return (phase + i) % 10 == 0 ? u_major : u_minor;
+    return (phase + i) % u_major_every == 0 ? u_major : u_minor;
 }
 
 void main() {

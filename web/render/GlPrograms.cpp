@@ -7,6 +7,7 @@
 #include <string>
 
 #include "essi_shaders.hpp"
+#include "render/GridLines.hpp"
 #include "render/Palette.hpp"
 
 namespace essi::viewer {
@@ -132,6 +133,7 @@ bool ScenePrograms::init(int tex_width) {
     const Setup g(grid_id);
     grid = {g.scene(),          g("u_first"), g("u_step"),    g("u_count"),
             g("u_major_phase"), g("u_zero"),  g("u_axes_at"), g("u_span")};
+    g.set("u_major_every", GridLines::kMajorEvery);
 
     const Setup m(marker_id);
     marker = {m.scene(),     m("u_radius_px"),      m("u_type_mask"),   m("u_use_single"),
