@@ -133,8 +133,10 @@ async function measureLoad(browser, baseUrl, tape) {
       if (!shown && !complete) return;
       gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
       const t = performance.now() - window.__dropT0;
-      if (shown) window.__gpuShown = t;
-      if (shown) window.__renderShown = s.render;
+      if (shown) {
+        window.__gpuShown = t;
+        window.__renderShown = s.render;
+      }
       if (complete) window.__gpuComplete = t;
     };
     let drawnSeen = false, readySeen = false;
