@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -21,6 +22,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A worker runs under the policy its own script is sent with: the reading worker loads its program and compiles
+// it (script-src 'self' 'wasm-unsafe-eval'), its reading thread's worker loads the same program, and neither fetches
+// anything else.
+constexpr const char* kReaderWorkerCsp = "default-src 'none'; script-src 'self' 'wasm-unsafe-eval'; connect-src 'self'";
+
 struct Served {
     const char* name;
     const char* type;
@@ -33,14 +39,20 @@ constexpr Served kViewerFiles[] = {
     {"share_store.js", "text/javascript"},
     {"favicon.ico", "image/x-icon"},
     {"essi_cjk.ttc", "font/collection"},  // (the CJK font, fetched only when a text needs it: web/render/UiFonts.hpp)
-    // The reading worker's program (web/worker/), which the page starts in a Web Worker.
+    // The reading worker's program (web/worker/), which the page starts in a Web Worker; a cross-origin isolated
+    // page (this server's) starts the one built with threads, whose second thread runs essi_reader_mt.worker.js.
     {"essi_reader.js", "text/javascript"},
     {"essi_reader.wasm", "application/wasm"},
+    {"essi_reader_mt.js", "text/javascript"},
+    {"essi_reader_mt.wasm", "application/wasm"},
+    {"essi_reader_mt.worker.js", "text/javascript"},
 };
 
-// A worker runs under the policy its own script is sent with: the reading worker loads its program and compiles
-// it (script-src 'self' 'wasm-unsafe-eval') and fetches nothing else.
-constexpr const char* kReaderWorkerCsp = "default-src 'none'; script-src 'self' 'wasm-unsafe-eval'; connect-src 'self'";
+// The scripts that start a worker, sent with kReaderWorkerCsp.
+bool is_worker_script(std::string_view name) {
+    return name == "essi_reader.js" || name == "essi_reader_mt.js" || name == "essi_reader_mt.worker.js";
+}
+
 
 void not_found(httplib::Response& res) {
     res.status = 404;
@@ -92,7 +104,7 @@ void send_embedded_file(const Served& served, const httplib::Request& req, httpl
     const EmbeddedFile* file = find_embedded_web_file(served.name);
     if (file == nullptr) return not_found(res);
     const std::string_view name = served.name;
-    if (name == "essi_reader.js") res.set_header("Content-Security-Policy", kReaderWorkerCsp);
+    if (is_worker_script(name)) res.set_header("Content-Security-Policy", kReaderWorkerCsp);
     if (name == "index.html") {
         send_index(std::string(file->bytes), res);
     } else {
@@ -113,10 +125,10 @@ void send_viewer_file(const StaticFiles& files, const std::string& name, const h
     std::error_code ec;
     if (name == "share_store.js" && !fs::exists(path, ec) && !files.share_store_js.empty()) path = files.share_store_js;
     if (name == "index.html") return send_index(read_small_file(path), res);
-    if (name == "essi_reader.js") res.set_header("Content-Security-Policy", kReaderWorkerCsp);
+    if (is_worker_script(name)) res.set_header("Content-Security-Policy", kReaderWorkerCsp);
     // The programs' gzip twins (made by the build, web/CMakeLists.txt: 40 % of their size) for clients that take
     // them.
-    if (name == "essi_viewer.wasm" || name == "essi_reader.wasm") {
+    if (name.ends_with(".wasm")) {
         res.set_header("Vary", "Accept-Encoding");
         const fs::path gz = path.string() + ".gz";
         if (accepts_gzip(req.get_header_value("Accept-Encoding")) && fs::is_regular_file(gz, ec)) {

@@ -5,15 +5,9 @@
 #include <cstddef>
 #include <functional>
 
-namespace essi::native {
+#include "essi/threads.hpp"  // (kHaveThreads)
 
-// Whether this build can start threads: not under Emscripten without pthreads (the npm package's CLI, npm/), where
-// every batch and every check runs on the calling thread.
-#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
-inline constexpr bool kHaveThreads = false;
-#else
-inline constexpr bool kHaveThreads = true;
-#endif
+namespace essi::native {
 
 // Calls work(i) for every i in [0, n) on `jobs` worker threads (jobs <= 1 or no threads: on the calling thread), and
 // emit(i) on the calling thread in increasing i, as soon as items 0..i are done. At most `window` items

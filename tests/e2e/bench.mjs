@@ -35,6 +35,9 @@ const cold = process.env.COLD === '1';
 // WORKER=1: the page is opened with ?worker=1, so tapes of 1 MB and more are read in the reading worker (without
 // it the page reads every tape itself): the same build measured both ways.
 const useWorker = process.env.WORKER === '1';
+// ISOLATED=1: the page is served with COOP/COEP (as essi serve serves it): cross-origin isolated, its reading worker
+// is the one built with threads (essi_reader_mt.js), which checks a big tape on two threads.
+const isolated = process.env.ISOLATED === '1';
 // TRACE=FILE: a Chrome trace (every thread: the page's, the worker's, V8's compilers, the GPU's) from the drop to
 // the first frame with the tape drawn, of the last tape loaded, written to FILE (chrome://tracing, Perfetto).
 const traceFile = process.env.TRACE || '';
@@ -276,7 +279,7 @@ const mb = (b) => (b / 1048576).toFixed(1) + ' MB';
   if (!fs.existsSync(small)) execFileSync(genBin, ['2', small], { stdio: 'ignore' });
   const perByte = cliReport(small).stats.motions / fs.statSync(small).size;
 
-  const server = await startStaticServer(await freePort());
+  const server = await startStaticServer(await freePort(), { isolated });
   const baseUrl = `http://127.0.0.1:${server.address().port}/`;
   const browser = await launch();
   const results = [];

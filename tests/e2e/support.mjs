@@ -34,8 +34,10 @@ export function freePort() {
   });
 }
 
-// A static server: the built page at /, examples/ at /examples/, generated tapes at /gen/.
-export function startStaticServer(port) {
+// A static server: the built page at /, examples/ at /examples/, generated tapes at /gen/. `isolated`: every answer
+// with COOP/COEP, as essi serve's (the page is cross-origin isolated: its reading worker has threads).
+export function startStaticServer(port, { isolated = false } = {}) {
+  const isolation = isolated ? { 'cross-origin-opener-policy': 'same-origin', 'cross-origin-embedder-policy': 'require-corp' } : {};
   const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm',
                   '.esi': 'text/plain', '.json': 'application/json' };
   const srv = http.createServer((req, res) => {
@@ -48,7 +50,7 @@ export function startStaticServer(port) {
     fs.stat(file, (err, st) => {
       if (err || !st.isFile()) { res.writeHead(404); return res.end(); }
       res.writeHead(200, { 'content-type': types[path.extname(file)] || 'application/octet-stream',
-                           'content-length': st.size, 'cache-control': 'no-cache' });
+                           'content-length': st.size, 'cache-control': 'no-cache', ...isolation });
       fs.createReadStream(file).pipe(res);
     });
   });

@@ -1,7 +1,8 @@
 // The real viewer (build/wasm/web) served by `essi serve` runs under the server's Content-Security-Policy and
 // COOP/COEP headers: no CSP violation, the WebAssembly module starts, the page is cross-origin isolated
-// (SharedArrayBuffer available), a big tape is read in the reading worker under its script's own policy, and a
-// cross-origin page can neither frame it nor write a share.
+// (SharedArrayBuffer available), a big tape is read in the reading worker built with threads (essi_reader_mt.js, its
+// thread's worker essi_reader_mt.worker.js) under its scripts' own policy, twice in one worker, with the document
+// the page reads itself, and a cross-origin page can neither frame it nor write a share.
 // Needs the wasm build's viewer; skipped without it.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -33,8 +34,25 @@ test('the viewer runs under the CSP and is cross-origin isolated', { skip: !have
     assert.equal(bigState.status, 'ready');
     assert.equal(bigState.stats.motions, 180000);
     assert.deepEqual([bigState.load.read_in, bigState.load.worker_failure], ['worker', ''], JSON.stringify(bigState.load));
-    const worker = await fetch(url + '/essi_reader.js');
-    assert.match(worker.headers.get('content-security-policy'), /^default-src 'none'; script-src 'self' 'wasm-unsafe-eval'/);
+    assert.equal(await page.evaluate(() => Module.essikitReading.script), 'essi_reader_mt.js');
+    // A second big tape in the same worker (its reading thread back in the pool), with arcs and findings: the
+    // verdict of the page's own reading (without ?worker=1).
+    const arcs = ('+1000+0\n+1000+1000+0+1000-\n-0-1000-1000+0-\n').repeat(50000) + '63\n';
+    const second = await page.evaluate((t) => window.essikit.load('arcs.esi', t), arcs);
+    assert.deepEqual([second.status, second.load.read_in, second.load.worker_failure], ['ready', 'worker', '']);
+    const onPage = await browser.newPage();
+    await onPage.goto(url + '/');
+    await onPage.waitForFunction(() => window.essikit && window.essikit.started, null, { timeout: 120000 });
+    const here = await onPage.evaluate((t) => window.essikit.load('arcs.esi', t), arcs);
+    assert.equal(here.load.read_in, 'page');
+    assert.deepEqual([second.stats, second.diagnostics], [here.stats, here.diagnostics]);
+    await onPage.close();
+    for (const script of ['essi_reader.js', 'essi_reader_mt.js', 'essi_reader_mt.worker.js']) {
+      const worker = await fetch(url + '/' + script);
+      assert.equal(worker.status, 200, script);
+      assert.match(worker.headers.get('content-security-policy'), /^default-src 'none'; script-src 'self' 'wasm-unsafe-eval'/, script);
+      assert.equal(worker.headers.get('cross-origin-embedder-policy'), 'require-corp', script);
+    }
     assert.deepEqual(violations, []);
     // Another origin (http://localhost:PORT is another origin than http://127.0.0.1:PORT to the browser, though
     // the same server): its page cannot write a share.

@@ -102,7 +102,8 @@ describe('the package', () => {
     assert.deepEqual(pkg.bin, { essikit: 'bin/essikit.js' });
     assert.ok(fs.existsSync(path.join(app, 'node_modules', '.bin', 'essikit')));
     for (const f of ['index.d.ts', 'viewer/essi-viewer.d.ts', 'lib/essikit_api.wasm', 'viewer/page/essi_viewer.wasm',
-                    'viewer/page/essi_reader.js', 'viewer/page/essi_reader.wasm'])
+                    'viewer/page/essi_reader.js', 'viewer/page/essi_reader.wasm', 'viewer/page/essi_reader_mt.js',
+                    'viewer/page/essi_reader_mt.wasm', 'viewer/page/essi_reader_mt.worker.js'])
       assert.ok(fs.existsSync(path.join(app, 'node_modules', 'essikit', f)), f);
     // The package's name resolves from the folder it is installed in (its "exports").
     const probe = "import('essikit').then(async (e) => console.log((await e.profiles()).join(',')))";

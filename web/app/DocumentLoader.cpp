@@ -7,6 +7,7 @@
 
 #include "app/DocumentSink.hpp"
 #include "essi/plan.hpp"
+#include "essi/threads.hpp"
 
 namespace essi::viewer {
 
@@ -58,15 +59,17 @@ private:
     const Document& doc_;
 };
 
-DocumentLoader::DocumentLoader(std::string name, std::string bytes, TapeSetup setup, bool plan_later)
-    : doc_(std::make_unique<Document>()), plan_later_(plan_later) {
+DocumentLoader::DocumentLoader(std::string name, std::string bytes, TapeSetup setup, bool plan_later,
+                               std::size_t two_threads_min_bytes)
+    : doc_(std::make_unique<Document>()), plan_later_(plan_later), two_threads_min_bytes_(two_threads_min_bytes) {
     doc_->name = std::move(name);
     doc_->bytes = std::move(bytes);
     doc_->profile = setup.profile;
     doc_->setup = std::move(setup);
 }
 
-DocumentLoader::~DocumentLoader() = default;
+// (the reading thread first: it uses the checker, the sink and the document)
+DocumentLoader::~DocumentLoader() { pipeline_.reset(); }
 
 bool DocumentLoader::step(double budget_ms) {
     const double until = now_ms() + budget_ms;
@@ -99,49 +102,80 @@ void DocumentLoader::start_reading() {
     d.motions.reserve(motion_lines + motion_lines / kMotionReserveSlack + 16);
     d.arc_rank.reserve(d.motions.capacity());
     sink_ = std::make_unique<DocumentSink>(d);
-    reader_ = std::make_unique<TapeReader>(d.bytes, d.profile, d.setup.format);
-    chunk_.reserve(Document::kReadChunkBlocks, 2 * Document::kReadChunkBlocks);  // (no doubling steps)
+    TapeReader reader(d.bytes, d.profile, d.setup.format);
     checker_ = std::make_unique<TapeChecker>(d.bytes, d.profile, sink_.get());
     if (plan_later_) {
         motions_ = std::make_unique<Motions>(d);
         checker_->defer_plan(motions_.get());
     }
+    two_threads_ = kHaveThreads && d.bytes.size() >= two_threads_min_bytes_;
+    if (!two_threads_) {
+        reader_ = std::make_unique<TapeReader>(std::move(reader));
+        chunk_.reserve(Document::kReadChunkBlocks, 2 * Document::kReadChunkBlocks);  // (no doubling steps)
+        return;
+    }
+    // The reading thread reads the chunks and feeds their streams to the document (the checker's `also`) and the
+    // plan, making room for their motions first; this one notes each chunk and interprets it.
+    PipelinedCheck::Hooks hooks;
+    hooks.keep_readers = true;
+    hooks.chunk_read = [this](const Tape& chunk, std::optional<TapeReader>& before) {
+        read_chunk_done(std::move(*before), chunk);
+    };
+    hooks.before_feed = [this](const MotionBuffer& stream) { make_room(stream.size()); };
+    pipeline_ =
+        std::make_unique<PipelinedCheck>(*checker_, std::move(reader), std::move(hooks), Document::kReadChunkBlocks);
 }
 
 // Read and check, a chunk at a time, until the slice's time is up or the tape's end (the stage is Finish then).
 bool DocumentLoader::read_and_check(double until) {
+    if (pipeline_) return check_on_two_threads(until);
     for (;;) {
         TapeReader before = *reader_;  // kept with the chunk: the inspector reads it again from there
         if (!reader_->read_chunk(chunk_, Document::kReadChunkBlocks)) {
             stage_ = Stage::Finish;
             return true;
         }
-        if (chunk_.size() > 0)
-            doc_->chunks.push_back(
-                {std::move(before), static_cast<std::uint32_t>(chunk_.first_block()), chunk_.block(0).line});
-        read_chunk_done();
+        read_chunk_done(std::move(before), chunk_);
+        // Room for the chunk's motions (a motion block makes at most one): counting the chunk's blocks instead made
+        // the last chunks re-reserve the whole stream that was reserved for every motion line at once (a copy of it,
+        // and a hole the size of it in the heap, at 150 000 motions a quarter of the budget).
+        std::size_t motion_blocks = 0;
+        for (std::size_t b = 0; b < chunk_.size(); ++b) motion_blocks += chunk_.block(b).kind == BlockKind::Motion;
+        make_room(motion_blocks);
         checker_->check_chunk(chunk_);
         if (now_ms() > until) return false;
     }
 }
 
-// A chunk read: how far the reader is, what the chunk counts, room for its motions.
-void DocumentLoader::read_chunk_done() {
+// The same on two threads (PipelinedCheck): chunks until the slice's time is up (waiting for the reading thread
+// when it is behind).
+bool DocumentLoader::check_on_two_threads(double until) {
+    if (!pipeline_->run([until] { return now_ms() <= until; })) return false;
+    stage_ = Stage::Finish;
+    return true;
+}
+
+// A chunk read (`before`: the reader before it): the document's note of it, how far the reader is, what it counts.
+void DocumentLoader::read_chunk_done(TapeReader before, const Tape& chunk) {
     Document& d = *doc_;
-    if (chunk_.size() > 0) read_pos_ = chunk_.block(chunk_.size() - 1).offset;
-    d.blocks += chunk_.size();
-    d.block_words += chunk_.all_words().size();
-    // Room for the chunk's motions (a motion block makes at most one): counting the chunk's blocks instead made the
-    // last chunks re-reserve the whole stream that was reserved for every motion line at once (a copy of it, and a
-    // hole the size of it in the heap, at 150 000 motions a quarter of the budget).
-    std::size_t motion_blocks = 0;
-    for (std::size_t b = 0; b < chunk_.size(); ++b) motion_blocks += chunk_.block(b).kind == BlockKind::Motion;
-    grow(d.motions, motion_blocks, read_pos_, d.bytes.size());
-    grow(d.arc_centres, motion_blocks, read_pos_, d.bytes.size());
+    if (chunk.size() == 0) return;
+    d.chunks.push_back({std::move(before), static_cast<std::uint32_t>(chunk.first_block()), chunk.block(0).line});
+    read_pos_.store(chunk.block(chunk.size() - 1).offset, std::memory_order_relaxed);
+    d.blocks += chunk.size();
+    d.block_words += chunk.all_words().size();
+}
+
+// Room for `motions` more motions in the document's tables (on the thread that writes them).
+void DocumentLoader::make_room(std::size_t motions) {
+    Document& d = *doc_;
+    const std::size_t read = read_pos_.load(std::memory_order_relaxed);
+    grow(d.motions, motions, read, d.bytes.size());
+    grow(d.arc_centres, motions, read, d.bytes.size());
 }
 
 // The check's result, the tables without their spare room, the origin, the diagnostics' marks.
 void DocumentLoader::finish() {
+    pipeline_.reset();  // (its reading thread is done)
     Document& d = *doc_;
     CheckResult r = plan_later_ ? checker_->finish_before_plan() : checker_->finish();
     record_setup(r, d.setup);  // (the note N403 among the diagnostics, as `essi check` has it)
@@ -187,7 +221,8 @@ float DocumentLoader::progress() const {
     switch (stage_) {
         case Stage::IndexLines:
             return static_cast<float>(0.1 * static_cast<double>(doc_ ? doc_->line_index.position() : 0) / n);
-        case Stage::ReadAndCheck: return static_cast<float>(0.1 + 0.6 * static_cast<double>(read_pos_) / n);
+        case Stage::ReadAndCheck:
+            return static_cast<float>(0.1 + 0.6 * static_cast<double>(read_pos_.load(std::memory_order_relaxed)) / n);
         default: return 0.7f;
     }
 }

@@ -1,4 +1,5 @@
-// The reading worker in the browser: a Web Worker running essi_reader.js (web/worker/), started by the first tape
+// The reading worker in the browser: a Web Worker running essi_reader.js or essi_reader_mt.js (web/worker/), started
+// by the first tape
 // handed to it (so a page that only ever sees small tapes never fetches its program). The page posts it a job (the
 // request's header and a copy of the tape's bytes, both transferred) and it posts back ReadingJob.hpp's messages,
 // which land here (essi_reading_buffer, then essi_reading_received) for WorkerLoader to pick up in the next frame. A
@@ -49,13 +50,16 @@ EM_JS(int, essi_reading_supported, (), {
 });
 
 // The page's side of the worker: Module.essikitReading, made once. A worker started is told to warm up ({warmUp}):
-// a job that comes first stops that.
+// a job that comes first stops that. A cross-origin isolated page (SharedArrayBuffer: essi serve's COOP/COEP) starts
+// the program built with threads, which checks a big tape on two (essi/pipelined_check.hpp);
+// any other page the one-thread program. `script` says which.
 EM_JS(void, essi_reading_setup, (), {
     if (Module.essikitReading) return;
     Module.essikitReading = {
         worker: null, job: 0, bytes: 0,
+        script: self.crossOriginIsolated ? 'essi_reader_mt.js' : 'essi_reader.js',
         start() {
-            this.worker = new Worker('essi_reader.js');
+            this.worker = new Worker(this.script);
             this.worker.onmessage = (e) => this.deliver(e.data.job, new Uint8Array(e.data.data));
             this.worker.onerror = (e) => {
                 e.preventDefault();

@@ -1,7 +1,10 @@
-// The reading worker's side of the messages (before Emscripten's code in essi_reader.js): the page posts a job
-// { job, header, bytes } (ArrayBuffers) for each tape, run once the program has started, one after another, and
-// { warmUp: true } once, before the first: the warm-up's tapes are then read in slices of kWarmUpSliceMs until
-// done or until a job comes.
+// The reading worker's side of the messages (before Emscripten's code in essi_reader.js and essi_reader_mt.js): the
+// page posts a job { job, header, bytes } (ArrayBuffers) for each tape, run once the program has started, one after
+// another, and { warmUp: true } once, before the first: the warm-up's tapes are then read in slices of
+// kWarmUpSliceMs until done or until a job comes. In essi_reader_mt.js's reading thread (a worker of its own that
+// loads this script too, Module.ENVIRONMENT_IS_PTHREAD) none of this applies: Emscripten's messages are its own.
+// The heap is HEAPU8, not Module.HEAPU8: in essi_reader_mt.js Emscripten renews that view when the reading thread
+// has grown the memory (a growable shared heap).
 var essiReaderJobs = [];
 var essiReaderStarted = false;
 var essiReaderWarming = false;
@@ -12,9 +15,9 @@ function essiReaderRun(m) {
   const header = new Uint8Array(m.header);
   const bytes = new Uint8Array(m.bytes);
   const at = Module._essi_reader_buffer(bytes.length);
-  Module.HEAPU8.set(bytes, at);
+  HEAPU8.set(bytes, at);
   const h = Module._malloc(Math.max(header.length, 1));
-  Module.HEAPU8.set(header, h);
+  HEAPU8.set(header, h);
   try {
     Module._essi_reader_run(m.job, h, header.length);
   } finally {
@@ -28,19 +31,21 @@ function essiReaderWarmUp() {
   else essiReaderWarming = false;
 }
 
-Module['onRuntimeInitialized'] = function () {
-  essiReaderStarted = true;
-  for (const m of essiReaderJobs.splice(0)) essiReaderRun(m);
-  essiReaderWarmUp();
-};
+if (!Module['ENVIRONMENT_IS_PTHREAD']) {
+  Module['onRuntimeInitialized'] = function () {
+    essiReaderStarted = true;
+    for (const m of essiReaderJobs.splice(0)) essiReaderRun(m);
+    essiReaderWarmUp();
+  };
 
-self.onmessage = function (e) {
-  if (e.data.warmUp) {
-    essiReaderWarming = true;
-    if (essiReaderStarted) essiReaderWarmUp();
-  } else if (essiReaderStarted) {
-    essiReaderRun(e.data);
-  } else {
-    essiReaderJobs.push(e.data);
-  }
-};
+  self.onmessage = function (e) {
+    if (e.data.warmUp) {
+      essiReaderWarming = true;
+      if (essiReaderStarted) essiReaderWarmUp();
+    } else if (essiReaderStarted) {
+      essiReaderRun(e.data);
+    } else {
+      essiReaderJobs.push(e.data);
+    }
+  };
+}
