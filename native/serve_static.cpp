@@ -53,7 +53,6 @@ bool is_worker_script(std::string_view name) {
     return name == "essi_reader.js" || name == "essi_reader_mt.js" || name == "essi_reader_mt.worker.js";
 }
 
-
 void not_found(httplib::Response& res) {
     res.status = 404;
     res.set_content(R"({"error":"not found","status":404})", "application/json");
