@@ -213,20 +213,32 @@ std::vector<std::string> run_job(const std::string& header, const std::string& b
     return out;
 }
 
-// A reading worker that runs each job in place when it is posted (or, `spoil`ed, changes its messages first).
+// A reading worker that runs each job in place: up to its document when it is posted, its plan when the page asks
+// (or, `spoil`ed, changes its messages first: all of them, when the page asks for the plan).
 class InPlaceWorker final : public essi::viewer::ReadingWorker {
 public:
     std::function<void(std::vector<std::string>&)> spoil;
     bool hold_last = false;  // the job's last message never comes (it is still running)
     std::vector<std::uint32_t> cancelled;
     int posted = 0;
+    std::vector<std::uint32_t> plans_asked;
 
     void post(std::uint32_t job, std::string_view header, std::string_view bytes) override {
         ++posted;
-        std::vector<std::string> messages = run_job(std::string(header), std::string(bytes));
-        if (spoil) spoil(messages);
-        if (hold_last) messages.pop_back();
-        for (std::string& m : messages) queue_.emplace_back(job, std::move(m));
+        if (spoil || hold_last) {  // (the whole job at once, then changed)
+            std::vector<std::string> messages = run_job(std::string(header), std::string(bytes));
+            if (spoil) spoil(messages);
+            if (hold_last) messages.pop_back();
+            for (std::string& m : messages) queue_.emplace_back(job, std::move(m));
+            return;
+        }
+        job_.read(header, std::string(bytes), to_queue(job));
+    }
+    void analyse_plan(std::uint32_t job) override {
+        plans_asked.push_back(job);
+        if (spoil || hold_last) return;
+        while (!job_.analyse_plan(1e9, to_queue(job))) {
+        }
     }
     std::optional<std::string> receive(std::uint32_t job) override {
         while (!queue_.empty()) {
@@ -239,7 +251,13 @@ public:
     void cancel(std::uint32_t job) override { cancelled.push_back(job); }
 
 private:
+    essi::viewer::PostReadingMessage to_queue(std::uint32_t job) {
+        return [this, job](ReadingMessage kind, std::string_view body) {
+            queue_.emplace_back(job, static_cast<char>(kind) + std::string(body));
+        };
+    }
     std::deque<std::pair<std::uint32_t, std::string>> queue_;
+    essi::viewer::ReadingJob job_;
 };
 
 // What the page holds once a WorkerLoader's document and plan are in.
@@ -249,6 +267,7 @@ std::unique_ptr<Document> load_through(InPlaceWorker& worker, const std::string&
     }
     auto doc = loader.take();
     EXPECT_TRUE(loader.plan_pending());
+    EXPECT_TRUE(worker.plans_asked.empty());  // (the worker analyses the plan only once the page asks)
     while (!loader.step_plan(*doc, 1e9)) {
     }
     failure = std::string(loader.failure());
@@ -305,6 +324,7 @@ TEST(ViewerWire, TheWorkerLoaderGivesThePageTheDocumentReadHere) {
         const auto doc = load_through(worker, bytes, failure);
         EXPECT_EQ(failure, "");
         EXPECT_EQ(worker.posted, 1);
+        EXPECT_EQ(worker.plans_asked.size(), 1u);
         EXPECT_TRUE(worker.cancelled.empty());  // (the job ended by itself)
         const auto here = read_here(bytes);
         EXPECT_EQ(diagnostic_texts(*doc), diagnostic_texts(*here));

@@ -77,7 +77,8 @@ bool LoadController::step() {
 void LoadController::build(double until) {
     if (plan_ && !first_build_) {  // the verdict before the finer level of detail
         step_plan(until);
-        return;
+        // (the reading worker's verdict: the finer level of detail meanwhile, not slices that only wait for it)
+        if (plan_ == nullptr || plan_->works_on_page()) return;
     }
     if (lod_building_ && (first_build_ || !building_)) {
         step_overview(until);

@@ -1,6 +1,5 @@
 #include "app/ReadingJob.hpp"
 
-#include "app/DocumentLoader.hpp"
 #include "essi/wire.hpp"
 
 namespace essi::viewer {
@@ -24,31 +23,55 @@ bool decode_progress(std::string_view body, ReadingProgress& p) {
     return in.get(p.share) && in.get(p.stage) && in.at_end();
 }
 
-void run_reading_job(std::string_view header, std::string bytes, const PostReadingMessage& post) {
+bool ReadingJob::read(std::string_view header, std::string bytes, const PostReadingMessage& post) {
     WireReader in(header);
     std::string name, setup_wire;
     if (!in.get_string(name) || !in.get_string(setup_wire) || !in.at_end()) {
         post(ReadingMessage::Failed, WireError{"request", in.position()}.message());
-        return;
+        return false;
     }
     TapeSetup setup;
     if (WireError error; !decode_setup(setup_wire, setup, error)) {
         post(ReadingMessage::Failed, error.message());
-        return;
+        return false;
     }
-    read_for_page(std::move(name), std::move(bytes), std::move(setup), post);
+    read(std::move(name), std::move(bytes), std::move(setup), post);
+    return true;
+}
+
+void ReadingJob::read(std::string name, std::string bytes, TapeSetup setup, const PostReadingMessage& post) {
+    // The plan's plates are analysed after the document is handed over: the page draws it meanwhile.
+    loader_ = std::make_unique<DocumentLoader>(std::move(name), std::move(bytes), std::move(setup), true);
+    while (!loader_->step(kProgressMs))
+        post(ReadingMessage::Progress, encode_progress({loader_->progress(), loader_->stage()}));
+    doc_ = loader_->take();
+    post(ReadingMessage::Document, encode_document(*doc_));
+}
+
+bool ReadingJob::analyse_plan(double budget_ms, const PostReadingMessage& post) {
+    if (!loader_) return true;
+    if (!loader_->step_plan(*doc_, budget_ms)) {
+        post(ReadingMessage::Progress, encode_progress({loader_->plan_progress(), Msg::UiStagePlan}));
+        return false;
+    }
+    post(ReadingMessage::Diagnostics, encode_diagnostics(doc_->diagnostics));
+    loader_.reset();
+    doc_.reset();
+    return true;
+}
+
+void run_reading_job(std::string_view header, std::string bytes, const PostReadingMessage& post) {
+    ReadingJob job;
+    if (!job.read(header, std::move(bytes), post)) return;
+    while (!job.analyse_plan(kProgressMs, post)) {
+    }
 }
 
 void read_for_page(std::string name, std::string bytes, TapeSetup setup, const PostReadingMessage& post) {
-    // The plan's plates are analysed after the document is handed over: the page draws it meanwhile.
-    DocumentLoader loader(std::move(name), std::move(bytes), std::move(setup), true);
-    while (!loader.step(kProgressMs))
-        post(ReadingMessage::Progress, encode_progress({loader.progress(), loader.stage()}));
-    const std::unique_ptr<Document> doc = loader.take();
-    post(ReadingMessage::Document, encode_document(*doc));
-    while (!loader.step_plan(*doc, kProgressMs))
-        post(ReadingMessage::Progress, encode_progress({loader.plan_progress(), Msg::UiStagePlan}));
-    post(ReadingMessage::Diagnostics, encode_diagnostics(doc->diagnostics));
+    ReadingJob job;
+    job.read(std::move(name), std::move(bytes), std::move(setup), post);
+    while (!job.analyse_plan(kProgressMs, post)) {
+    }
 }
 
 }  // namespace essi::viewer

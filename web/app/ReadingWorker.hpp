@@ -15,6 +15,8 @@ public:
     // Hands job `job` to the worker: the request's header and the tape's bytes (both copied). A job that has not
     // finished is dropped.
     virtual void post(std::uint32_t job, std::string_view header, std::string_view bytes) = 0;
+    // The page is ready for job `job`'s cut plan (it has drawn its document): the worker analyses it now.
+    virtual void analyse_plan(std::uint32_t job) = 0;
     // The next message of job `job` that came (ReadingMessage's kind byte, then its body), if any.
     [[nodiscard]] virtual std::optional<std::string> receive(std::uint32_t job) = 0;
     // Job `job` is no longer wanted: its work stops, its messages are dropped.

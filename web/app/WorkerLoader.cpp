@@ -70,6 +70,8 @@ Msg WorkerLoader::stage() const {
 bool WorkerLoader::step_plan(Document& doc, double budget_ms) {
     if (local_) return local_->step_plan(doc, budget_ms);
     if (!failure_.empty()) return step_plan_on_page(doc, budget_ms);
+    if (!plan_asked_ && job_open_) worker_.analyse_plan(job_);
+    plan_asked_ = true;
     receive();
     if (!failure_.empty() || !diagnostics_received_) return false;
     WireError error;

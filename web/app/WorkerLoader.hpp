@@ -52,7 +52,8 @@ private:
     bool doc_received_ = false;
     std::string diagnostics_;  // the Diagnostics message's body, when it came
     bool diagnostics_received_ = false;
-    bool plan_done_ = false;  // step_plan put all the diagnostics into the document
+    bool plan_asked_ = false;  // the worker was told to analyse the plan
+    bool plan_done_ = false;   // step_plan put all the diagnostics into the document
     ReadingProgress progress_;
     std::unique_ptr<DocumentLoader> local_;       // reading on the page, when the worker failed before the document
     std::unique_ptr<DocumentLoader> local_plan_;  // ... after it: the page's own check gives the plan's findings

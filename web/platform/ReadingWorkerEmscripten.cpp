@@ -22,6 +22,7 @@ namespace {
 class WebReadingWorker final : public ReadingWorker {
 public:
     void post(std::uint32_t job, std::string_view header, std::string_view bytes) override;
+    void analyse_plan(std::uint32_t job) override;
     std::optional<std::string> receive(std::uint32_t job) override;
     void cancel(std::uint32_t job) override;
 
@@ -100,6 +101,11 @@ EM_JS(void, essi_reading_post, (std::uint32_t job, const char* header, std::size
     r.worker.postMessage({job: job, header: h, bytes: b}, [h, b]);
 });
 
+EM_JS(void, essi_reading_analyse_plan, (std::uint32_t job), {
+    const r = Module.essikitReading;
+    if (r && r.job === job) r.worker.postMessage({job: job, plan: true});
+});
+
 EM_JS(void, essi_reading_cancel, (std::uint32_t job), {
     const r = Module.essikitReading;
     if (r && r.job === job) r.stop();
@@ -110,6 +116,8 @@ void WebReadingWorker::post(std::uint32_t job, std::string_view header, std::str
     essi_reading_setup();
     essi_reading_post(job, header.data(), header.size(), bytes.data(), bytes.size());
 }
+
+void WebReadingWorker::analyse_plan(std::uint32_t job) { essi_reading_analyse_plan(job); }
 
 std::optional<std::string> WebReadingWorker::receive(std::uint32_t job) {
     while (!messages_.empty()) {

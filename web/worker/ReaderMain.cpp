@@ -1,11 +1,12 @@
 // The reading worker's program (essi_reader.js and .wasm, in a Web Worker the page starts:
-// platform/ReadingWorkerEmscripten.cpp). Each job the page posts is read and checked by ReadingJob.hpp's
-// run_reading_job, whose messages go back to the page as they are made (reader_worker.pre.js has the worker's
-// side of the messages).
+// platform/ReadingWorkerEmscripten.cpp). Each job the page posts is read and checked by ReadingJob.hpp's ReadingJob,
+// up to its document; its cut plan once the page asks for it, in slices; their messages go back to the page as they
+// are made (reader_worker.pre.js has the worker's side of the messages).
 #include <emscripten.h>
 
 #include <cstdint>
 #include <iterator>
+#include <memory>
 #include <string>
 
 #include "app/ReadingJob.hpp"
@@ -15,6 +16,9 @@
 namespace {
 
 std::string g_bytes;  // the tape of the next job (essi_reader_buffer)
+// The job read, its plan still to analyse, and its number.
+std::unique_ptr<essi::viewer::ReadingJob> g_job;
+std::uint32_t g_job_number = 0;
 
 // The warm-up: the page's warm-up tapes (web/CMakeLists.txt) read through the job, messages dropped, until as many
 // bytes as the page's own warm-up (WarmUp::kBytes) were read: meanwhile the browser compiles the hot functions
@@ -31,6 +35,12 @@ EM_JS(void, essi_reader_post, (std::uint32_t job, char kind, const char* body, s
     postMessage({job: job, data: data.buffer}, [data.buffer]);
 });
 // clang-format on
+
+essi::viewer::PostReadingMessage post_to(std::uint32_t job) {
+    return [job](essi::viewer::ReadingMessage kind, std::string_view body) {
+        essi_reader_post(job, static_cast<char>(kind), body.data(), body.size());
+    };
+}
 
 }  // namespace
 
@@ -57,13 +67,20 @@ EMSCRIPTEN_KEEPALIVE int essi_reader_warm_up(double budget_ms) {
     return g_warm_up_bytes < kWarmUpBytes ? 1 : 0;
 }
 
-// Reads and checks the tape put in essi_reader_buffer as the request `header` says.
+// Reads and checks the tape put in essi_reader_buffer as the request `header` says, up to its document.
 EMSCRIPTEN_KEEPALIVE void essi_reader_run(std::uint32_t job, const char* header, std::size_t header_len) {
-    essi::viewer::run_reading_job(std::string_view(header, header_len), std::move(g_bytes),
-                                  [job](essi::viewer::ReadingMessage kind, std::string_view body) {
-                                      essi_reader_post(job, static_cast<char>(kind), body.data(), body.size());
-                                  });
+    g_job = std::make_unique<essi::viewer::ReadingJob>();
+    g_job_number = job;
+    if (!g_job->read(std::string_view(header, header_len), std::move(g_bytes), post_to(job))) g_job.reset();
     g_bytes = std::string();
+}
+
+// The cut plan of job `job` for about `budget_ms` (once the page asked); 1 while there is more.
+EMSCRIPTEN_KEEPALIVE int essi_reader_plan(std::uint32_t job, double budget_ms) {
+    if (!g_job || job != g_job_number) return 0;
+    if (!g_job->analyse_plan(budget_ms, post_to(job))) return 1;
+    g_job.reset();
+    return 0;
 }
 
 }  // extern "C"

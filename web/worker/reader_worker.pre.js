@@ -1,6 +1,7 @@
 // The reading worker's side of the messages (before Emscripten's code in essi_reader.js and essi_reader_mt.js): the
 // page posts a job { job, header, bytes } (ArrayBuffers) for each tape, run once the program has started, one after
-// another, and { warmUp: true } once, before the first: the warm-up's tapes are then read in slices of
+// another, up to its document; { job, plan: true } when the page wants the job's cut plan, analysed in slices of
+// kPlanSliceMs (a job's messages are not held up meanwhile); and { warmUp: true } once, before the first: the warm-up's tapes are then read in slices of
 // kWarmUpSliceMs until done or until a job comes. In essi_reader_mt.js's reading thread (a worker of its own that
 // loads this script too, Module.ENVIRONMENT_IS_PTHREAD) none of this applies: Emscripten's messages are its own.
 // The heap is HEAPU8, not Module.HEAPU8: in essi_reader_mt.js Emscripten renews that view when the reading thread
@@ -9,6 +10,7 @@ var essiReaderJobs = [];
 var essiReaderStarted = false;
 var essiReaderWarming = false;
 var kWarmUpSliceMs = 20;
+var kPlanSliceMs = 50;
 
 function essiReaderRun(m) {
   essiReaderWarming = false;  // (a tape of the page's own: warm enough now)
@@ -23,6 +25,10 @@ function essiReaderRun(m) {
   } finally {
     Module._free(h);
   }
+}
+
+function essiReaderPlan(job) {
+  if (Module._essi_reader_plan(job, kPlanSliceMs)) setTimeout(() => essiReaderPlan(job), 0);
 }
 
 function essiReaderWarmUp() {
@@ -42,6 +48,8 @@ if (!Module['ENVIRONMENT_IS_PTHREAD']) {
     if (e.data.warmUp) {
       essiReaderWarming = true;
       if (essiReaderStarted) essiReaderWarmUp();
+    } else if (e.data.plan) {
+      essiReaderPlan(e.data.job);  // (a job's plan is asked for after its document: the program has started)
     } else if (essiReaderStarted) {
       essiReaderRun(e.data);
     } else {
