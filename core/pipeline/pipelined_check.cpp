@@ -23,12 +23,12 @@ PipelinedCheck::~PipelinedCheck() {
 
 void PipelinedCheck::wake_reader() {
     reader_wake_.fetch_add(1, std::memory_order_release);
-    reader_wake_.notify_one();
+    wake_one(reader_wake_);
 }
 
 // The interpreting thread is done with (or has given up on) the check: the reading thread returns where it is.
 void PipelinedCheck::stop_reader() {
-    stop_reading_.store(true, std::memory_order_release);
+    stop_reading_.store(1, std::memory_order_release);
     wake_reader();
     reader_thread_.join();
 }
@@ -36,16 +36,16 @@ void PipelinedCheck::stop_reader() {
 // The reading thread failed: every empty chunk slot says "last" and every plan slot is empty, so that the interpreting
 // thread, waiting for either or coming to them, sees reader_failed_ and stops.
 void PipelinedCheck::release_interpreter() {
-    reader_failed_.store(true, std::memory_order_release);
+    reader_failed_.store(1, std::memory_order_release);
     for (Slot& s : slots_) {
         if (s.full.load(std::memory_order_acquire)) continue;
         s.last = true;
-        s.full.store(true, std::memory_order_release);
-        s.full.notify_one();
+        s.full.store(1, std::memory_order_release);
+        wake_one(s.full);
     }
     for (PlanSlot& p : plan_slots_) {
-        p.full.store(false, std::memory_order_release);
-        p.full.notify_one();
+        p.full.store(0, std::memory_order_release);
+        wake_one(p.full);
     }
 }
 
@@ -57,8 +57,8 @@ bool PipelinedCheck::feed_plan() {
         if (!p.full.load(std::memory_order_acquire)) return fed;
         if (hooks_.before_feed) hooks_.before_feed(p.stream);
         checker_.feed_plan(p.stream);
-        p.full.store(false, std::memory_order_release);
-        p.full.notify_one();
+        p.full.store(0, std::memory_order_release);
+        wake_one(p.full);
     }
 }
 
@@ -71,7 +71,7 @@ void PipelinedCheck::read_all(TapeReader& reader) {
         if (feed_plan()) continue;  // (first: the interpreter may be waiting for a plan slot)
         if (!reading) {
             if (!interpreted_.load(std::memory_order_acquire)) {
-                if (!idle()) reader_wake_.wait(seen, std::memory_order_acquire);
+                if (!idle()) wait_while(reader_wake_, seen);
                 continue;
             }
             feed_plan();  // (what was filled before `interpreted_` was set)
@@ -79,7 +79,7 @@ void PipelinedCheck::read_all(TapeReader& reader) {
         }
         Slot& slot = slots_[k % slots_.size()];
         if (slot.full.load(std::memory_order_acquire)) {
-            if (!idle()) reader_wake_.wait(seen, std::memory_order_acquire);
+            if (!idle()) wait_while(reader_wake_, seen);
             continue;
         }
         if (hooks_.keep_readers) slot.before = reader;
@@ -93,8 +93,8 @@ void PipelinedCheck::read_all(TapeReader& reader) {
         if (full >= 2) measure_motions(slot.chunk, slot.measures);
         else slot.measures.clear();
         slot.last = !more;
-        slot.full.store(true, std::memory_order_release);
-        slot.full.notify_one();
+        slot.full.store(1, std::memory_order_release);
+        wake_one(slot.full);
         ++k;
         reading = more;
     }
@@ -108,20 +108,20 @@ bool PipelinedCheck::interpret_chunks(const std::function<bool()>& in_time) {
         Slot& slot = slots_[k % slots_.size()];
         while (!slot.full.load(std::memory_order_acquire) && idle()) {
         }
-        slot.full.wait(false, std::memory_order_acquire);
+        wait_while(slot.full, 0);
         const bool last = slot.last;
         if (!last) {
             PlanSlot& plan = plan_slots_[k % plan_slots_.size()];
             while (plan.full.load(std::memory_order_acquire) && idle()) {
             }
-            plan.full.wait(true, std::memory_order_acquire);
+            wait_while(plan.full, 1);
             if (reader_failed_.load(std::memory_order_acquire)) return true;
             if (hooks_.chunk_read) hooks_.chunk_read(slot.chunk, slot.before);
             checker_.check_chunk(slot.chunk, slot.measures, plan.stream);
-            plan.full.store(true, std::memory_order_release);
+            plan.full.store(1, std::memory_order_release);
         }
-        slot.full.store(false, std::memory_order_release);
-        slot.full.notify_one();
+        slot.full.store(0, std::memory_order_release);
+        wake_one(slot.full);
         if (last) return true;
         ++next_chunk_;
         wake_reader();
@@ -136,7 +136,7 @@ bool PipelinedCheck::run(const std::function<bool()>& in_time) {
         stop_reader();
         throw;
     }
-    interpreted_.store(true, std::memory_order_release);
+    interpreted_.store(1, std::memory_order_release);
     wake_reader();
     reader_thread_.join();
     if (reader_error_) std::rethrow_exception(reader_error_);

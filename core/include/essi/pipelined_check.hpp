@@ -20,6 +20,7 @@
 #include "essi/interp.hpp"
 #include "essi/pipeline.hpp"
 #include "essi/read.hpp"
+#include "essi/threads.hpp"
 
 namespace essi {
 
@@ -63,20 +64,20 @@ public:
 
 private:
     // A chunk's slot: the reader fills slot k, the interpreter empties it, in order. It changes hands through its
-    // atomic `full` flag (C++20 wait/notify: a short spin, then a futex), so a thread that is only a little ahead does
-    // not go to sleep at every chunk. (Each slot on cache lines of its own: the thread filling one writes its
-    // vectors' ends at every item, and must not take the lines of the slot the other thread is reading.)
+    // atomic `full` flag (wait_while/wake_one, essi/threads.hpp: a short spin, then a futex), so a thread that is only
+    // a little ahead does not go to sleep at every chunk. (Each slot on cache lines of its own: the thread filling one
+    // writes its vectors' ends at every item, and must not take the lines of the slot the other thread is reading.)
     struct alignas(64) Slot {
         Tape chunk;
         std::vector<MotionMeasure> measures;  // worked out by the reading thread (arcs: radii, sweeps)
         std::optional<TapeReader> before;     // (Hooks::keep_readers)
         bool last = false;                    // the reader is done: this slot holds nothing
-        std::atomic<bool> full{false};
+        std::atomic<std::uint32_t> full{0};   // (0 or 1: a futex word, essi/threads.hpp)
     };
     // The other way: the interpreter's stream for the cut plan, a chunk's in each slot.
     struct alignas(64) PlanSlot {
         MotionBuffer stream;
-        std::atomic<bool> full{false};
+        std::atomic<std::uint32_t> full{0};  // (0 or 1: a futex word, essi/threads.hpp)
     };
     void read_all(TapeReader& reader);
     bool feed_plan();
