@@ -32,9 +32,9 @@ const targets = process.argv.slice(2).map(Number).filter((n) => n > 0);
 const motionTargets = targets.length ? targets : [1e3, 1e4, 5e4, 1e6, 1e7];
 const smallRuns = Number(process.env.RUNS_SMALL || 5);
 const cold = process.env.COLD === '1';
-// WORKER=1: the page is opened with ?worker=1, so tapes of 1 MB and more are read in the reading worker (without
-// it the page reads every tape itself): the same build measured both ways.
-const useWorker = process.env.WORKER === '1';
+// WORKER=0: the page is opened with ?worker=0, so it reads every tape itself (by default tapes of 1 MB and more are
+// read in the reading worker): the same build measured both ways.
+const useWorker = process.env.WORKER !== '0';
 // ISOLATED=1: the page is served with COOP/COEP (as essi serve serves it): cross-origin isolated, its reading worker
 // is the one built with threads (essi_reader_mt.js), which checks a big tape on two threads.
 const isolated = process.env.ISOLATED === '1';
@@ -92,7 +92,7 @@ async function memory(browser, page) {
 }
 
 async function measureLoad(browser, baseUrl, tape) {
-  const page = await newPage(browser, useWorker ? `${baseUrl}?worker=1` : baseUrl);
+  const page = await newPage(browser, useWorker ? baseUrl : `${baseUrl}?worker=0`);
   // The page as a person finds it: its first frames drawn and the GPU done with them (the drop is measured, not the
   // page's start, whose work on SwiftShader can hold the next frames back for a few hundred ms).
   await page.evaluate(() => new Promise((res) => {

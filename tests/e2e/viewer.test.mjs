@@ -1675,6 +1675,10 @@ test('the page warms up on built-in tapes before the first drop and shows none o
   console.log(`warm-up: ${JSON.stringify(s.warm_up)}`);
   assert.ok(s.warm_up.tapes >= 11, `${s.warm_up.tapes} tapes`);  // every built-in one at least once
   assert.ok(s.warm_up.bytes >= 200000, `${s.warm_up.bytes} bytes`);
+  // A page that is not cross-origin isolated leaves its reading worker to the first big tape (its first load stays
+  // as it was); serve_csp.test.mjs has the isolated page that starts it now.
+  assert.deepEqual(await page.evaluate(() => [self.crossOriginIsolated, typeof Worker, typeof Module.essikitReading]),
+                   [false, 'function', 'undefined']);
   assert.equal(s.status, 'empty');
   assert.equal(s.name, '');
   // Nothing of the warm-up's tapes on the screen (a frame drawn after it: the grid off and on again).
@@ -2691,13 +2695,13 @@ test('at 1024x600 the problems list is on the screen and the Compare window leav
   await page.close();
 });
 
-// A page that asks for the reading worker (?worker=1), its Worker replaced before its scripts run when `script`
-// (an init script) says so.
-function pageWithWorker(script = null) {
-  return openPage(browser, `${baseUrl}?worker=1`, undefined, script);
+// A page with the reading worker (the default; ?worker=0 turns it off), its Worker replaced before its scripts run
+// when `script` (an init script) says so.
+function pageWithWorker(script = null, query = '') {
+  return openPage(browser, `${baseUrl}${query}`, undefined, script);
 }
 
-test('with ?worker=1 a tape loaded in slices is read and checked in the reading worker: the same verdict, its blocks read again for the inspector; without it, without a Worker, or when the worker fails, the page reads it', async () => {
+test('a tape loaded in slices is read and checked in the reading worker: the same verdict, its blocks read again for the inspector; with ?worker=0, without a Worker, or when the worker fails, the page reads it', async () => {
   const tape = platesTape(25, 600);
   const file = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'essi-worker-')), 'plates.esi');
   fs.writeFileSync(file, tape);
@@ -2723,11 +2727,12 @@ test('with ?worker=1 a tape loaded in slices is read and checked in the reading 
   assert.ok(inspector.length > 0 && inspector.some((l) => l.includes('64')), JSON.stringify(inspector));
   await page.close();
 
-  // Without ?worker=1 (the default), and with it but no Worker in the page: the page reads the tape itself.
-  const plain = await newPage();
+  // With ?worker=0, and without a Worker in the page: the page reads the tape itself (and starts no worker).
+  const plain = await pageWithWorker(null, '?worker=0');
   const here = await dropFile(plain, 'plates.esi', Buffer.from(tape));
   assert.deepEqual([here.load.read_in, here.load.worker_failure], ['page', '']);
   assert.deepEqual(verdict(here), want);
+  assert.equal(await plain.evaluate(() => typeof Module.essikitReading), 'undefined');
   await plain.close();
   const none = await pageWithWorker('window.Worker = undefined;');
   const alone = await dropFile(none, 'plates.esi', Buffer.from(tape));

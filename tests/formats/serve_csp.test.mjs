@@ -26,9 +26,12 @@ test('the viewer runs under the CSP and is cross-origin isolated', { skip: !have
     assert.equal(state.status, 'ready');
     assert.deepEqual(await page.evaluate(() => [window.crossOriginIsolated, typeof SharedArrayBuffer]), [true, 'function']);
     assert.equal((await page.evaluate(() => window.essikit.shareStore.ready)).ok, true);
-    // With ?worker=1, a tape over 1 MB is read in the reading worker, whose script has a policy of its own.
-    await page.goto(url + '/?worker=1');
+    // A tape over 1 MB is read in the reading worker, whose script has a policy of its own. The page is
+    // cross-origin isolated, so the worker (the one with threads) is started once the page's warm-up is done.
+    await page.goto(url + '/');
     await page.waitForFunction(() => window.essikit && window.essikit.started, null, { timeout: 120000 });
+    await page.waitForFunction(() => window.essikit.state().warm_up.state === 'done', null, { timeout: 60000 });
+    assert.deepEqual(await page.evaluate(() => [Module.essikitReading.worker !== null, Module.essikitReading.job]), [true, 0]);
     const big = '+100+0\n'.repeat(180000) + '63\n';
     const bigState = await page.evaluate((t) => window.essikit.load('big.esi', t), big);
     assert.equal(bigState.status, 'ready');
@@ -36,12 +39,12 @@ test('the viewer runs under the CSP and is cross-origin isolated', { skip: !have
     assert.deepEqual([bigState.load.read_in, bigState.load.worker_failure], ['worker', ''], JSON.stringify(bigState.load));
     assert.equal(await page.evaluate(() => Module.essikitReading.script), 'essi_reader_mt.js');
     // A second big tape in the same worker (its reading thread back in the pool), with arcs and findings: the
-    // verdict of the page's own reading (without ?worker=1).
+    // verdict of the page's own reading (?worker=0).
     const arcs = ('+1000+0\n+1000+1000+0+1000-\n-0-1000-1000+0-\n').repeat(50000) + '63\n';
     const second = await page.evaluate((t) => window.essikit.load('arcs.esi', t), arcs);
     assert.deepEqual([second.status, second.load.read_in, second.load.worker_failure], ['ready', 'worker', '']);
     const onPage = await browser.newPage();
-    await onPage.goto(url + '/');
+    await onPage.goto(url + '/?worker=0');
     await onPage.waitForFunction(() => window.essikit && window.essikit.started, null, { timeout: 120000 });
     const here = await onPage.evaluate((t) => window.essikit.load('arcs.esi', t), arcs);
     assert.equal(here.load.read_in, 'page');

@@ -223,6 +223,7 @@ public:
     int posted = 0;
     std::vector<std::uint32_t> plans_asked;
 
+    void prepare() override {}
     void post(std::uint32_t job, std::string_view header, std::string_view bytes) override {
         ++posted;
         if (spoil || hold_last) {  // (the whole job at once, then changed)

@@ -38,7 +38,10 @@ void App::load(std::string name, std::string bytes) { session_.load(std::move(na
 
 bool App::background_step() {
     if (load_.has_work()) return session_.background_step() || warm_up_.has_work();
+    const bool warming = warm_up_.has_work();
     warm_up_.step(LoadController::kStepBudgetMs);
+    // (the page's code is warm: the reading worker's turn, while the page waits for a tape)
+    if (warming && warm_up_.state() == WarmUp::State::Done) load_.prepare_reading_worker();
     return has_background_work();
 }
 

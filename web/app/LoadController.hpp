@@ -43,6 +43,10 @@ public:
     // are read and checked there (WorkerLoader); smaller ones at once on the page, which shows them in the next
     // frame.
     void set_reading_worker(ReadingWorker* worker) { worker_ = worker; }
+    // The reading worker, if there is one, started ahead of the first big tape (ReadingWorker::prepare).
+    void prepare_reading_worker() {
+        if (worker_ != nullptr) worker_->prepare();
+    }
 
     // How the last load went, in the caller's frame numbers (begin_frame), for state().load: a tape handed over
     // between frames N and N + 1 and loaded at once is drawable before frame N + 1 begins and shown by it.

@@ -12,6 +12,10 @@ namespace essi::viewer {
 class ReadingWorker {
 public:
     virtual ~ReadingWorker() = default;
+    // The worker may start ahead of its first job (the platform's choice): its program fetched and compiled, then
+    // warmed up on the built-in tapes while it waits (the page calls it once its own warm-up is done). A worker
+    // already running is left so.
+    virtual void prepare() = 0;
     // Hands job `job` to the worker: the request's header and the tape's bytes (both copied). A job that has not
     // finished is dropped.
     virtual void post(std::uint32_t job, std::string_view header, std::string_view bytes) = 0;

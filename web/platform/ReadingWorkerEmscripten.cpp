@@ -1,6 +1,6 @@
 // The reading worker in the browser: a Web Worker running essi_reader.js or essi_reader_mt.js (web/worker/), started
-// by the first tape
-// handed to it (so a page that only ever sees small tapes never fetches its program). The page posts it a job (the
+// on a cross-origin isolated page once the page's own warm-up is done (prepare), else by the first tape handed to
+// it; it warms its code up on built-in tapes while it waits ({warmUp}). The page posts it a job (the
 // request's header and a copy of the tape's bytes, both transferred) and it posts back ReadingJob.hpp's messages,
 // which land here (essi_reading_buffer, then essi_reading_received) for WorkerLoader to pick up in the next frame. A
 // job handed over while another runs ends the worker and starts a new one (a job runs to its end once begun). The
@@ -21,6 +21,7 @@ namespace {
 
 class WebReadingWorker final : public ReadingWorker {
 public:
+    void prepare() override;
     void post(std::uint32_t job, std::string_view header, std::string_view bytes) override;
     void analyse_plan(std::uint32_t job) override;
     std::optional<std::string> receive(std::uint32_t job) override;
@@ -43,11 +44,10 @@ private:
 WebReadingWorker g_worker;
 
 // clang-format off
-/* Opt-in for now (the page's address has ?worker=1): the first big tape is shown later than when the page reads
-   it (docs/performance.md, "The reading worker"). */
+/* On unless the page's address has ?worker=0 (the page then reads every tape itself, as it does without Worker). */
 EM_JS(int, essi_reading_supported, (), {
-    const asked = new URLSearchParams(location.search).get('worker') === '1';
-    return asked && typeof Worker !== 'undefined' ? 1 : 0;
+    const off = new URLSearchParams(location.search).get('worker') === '0';
+    return !off && typeof Worker !== 'undefined' ? 1 : 0;
 });
 
 // The page's side of the worker: Module.essikitReading, made once. A worker started is told to warm up ({warmUp}):
@@ -88,6 +88,13 @@ EM_JS(void, essi_reading_setup, (), {
     };
 });
 
+/* Only on a cross-origin isolated page (essi serve's: a local server, its scripts gzip-encoded): elsewhere the 0.8 MB
+   of the worker's program would join the page's first load for tapes most visits never drop. */
+EM_JS(void, essi_reading_prepare, (), {
+    const r = Module.essikitReading;
+    if (!r.worker && self.crossOriginIsolated) r.start();
+});
+
 /* (the worker's script beside the page; a job's buffers are transferred, not copied again) */
 EM_JS(void, essi_reading_post, (std::uint32_t job, const char* header, std::size_t header_len, const char* bytes,
                                 std::size_t bytes_len), {
@@ -111,6 +118,11 @@ EM_JS(void, essi_reading_cancel, (std::uint32_t job), {
     if (r && r.job === job) r.stop();
 });
 // clang-format on
+
+void WebReadingWorker::prepare() {
+    essi_reading_setup();
+    essi_reading_prepare();
+}
 
 void WebReadingWorker::post(std::uint32_t job, std::string_view header, std::string_view bytes) {
     essi_reading_setup();
