@@ -895,8 +895,10 @@ std::string profile_to_json(const Profile& p) {
 }
 
 bool mm_to_units(const Profile& p, Point mm, long long& x, long long& y) {
-    const double ux = std::round(mm.x / p.unit_mm);
-    const double uy = std::round(mm.y / p.unit_mm);
+    // (nearbyint: one instruction in WebAssembly, where round is a call; they differ only at halves, which are
+    // never on the grid, so the answer is the same)
+    const double ux = std::nearbyint(mm.x / p.unit_mm);
+    const double uy = std::nearbyint(mm.y / p.unit_mm);
     constexpr double kLimit = 9.0e18;                                       // below 2^63: the cast is defined
     if (!(std::fabs(ux) < kLimit && std::fabs(uy) < kLimit)) return false;  // (NaN too)
     x = static_cast<long long>(ux);

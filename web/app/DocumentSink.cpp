@@ -11,8 +11,14 @@ void DocumentSink::on_motion(const MotionRecord& r) {
     // its kerf is what the flags say.
     UnitPoint start, centre;
     // (a cut by several torches keeps its record: the drawing makes its copies from it)
-    bool compact = r.curve != CurveKind::Parabola && r.torches == 1 && kerf_in_flags(r.kerf, r.kerf_mm) &&
-                   d.to_units(r.end, m.end_units) && d.to_units(r.start, start);
+    const bool eligible = r.curve != CurveKind::Parabola && r.torches == 1 && kerf_in_flags(r.kerf, r.kerf_mm);
+    const bool end_in_units = eligible && d.to_units(r.end, m.end_units);
+    const bool continues = (m.flags & Motion::kFlagJump) == 0 && last_end_in_units_;  // (start == the last end)
+    bool compact = end_in_units;
+    if (compact && continues) start = last_end_units_;
+    else if (compact) compact = d.to_units(r.start, start);
+    last_end_units_ = m.end_units;
+    last_end_in_units_ = end_in_units;
     if (compact && r.curve == CurveKind::Arc) compact = d.to_units(r.centre, centre);
     if (!compact) {
         m.flags |= Motion::kFlagKept;
@@ -36,6 +42,8 @@ void DocumentSink::on_line(const UnitLine& l) {
     Motion m =
         start_motion(l.line, l.kind, CurveKind::Line, l.tools, 1, l.kerf, l.start, l.end, l.kerf_mm, l.feed_mm_min);
     m.end_units = {static_cast<std::int32_t>(l.end_x), static_cast<std::int32_t>(l.end_y)};
+    last_end_units_ = m.end_units;
+    last_end_in_units_ = true;
     doc_.arc_rank.push_back(false);
     add(m);
 }
