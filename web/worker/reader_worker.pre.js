@@ -1,7 +1,7 @@
 // The reading worker's side of the messages (before Emscripten's code in essi_reader.js and essi_reader_mt.js): the
 // page posts a job { job, header, bytes } (ArrayBuffers) for each tape, run once the program has started, one after
 // another, up to its document; { job, plan: true } when the page wants the job's cut plan, analysed in slices of
-// kPlanSliceMs (a job's messages are not held up meanwhile); and { warmUp: true } once, before the first: the warm-up's tapes are then read in slices of
+// kPlanSliceMs (a job's messages are not held up meanwhile: each slice is a task of its own); and { warmUp: true } once, before the first: the warm-up's tapes are then read in slices of
 // kWarmUpSliceMs until done or until a job comes. In essi_reader_mt.js's reading thread (a worker of its own that
 // loads this script too, Module.ENVIRONMENT_IS_PTHREAD) none of this applies: Emscripten's messages are its own.
 // The heap is HEAPU8, not Module.HEAPU8: in essi_reader_mt.js Emscripten renews that view when the reading thread
@@ -27,13 +27,25 @@ function essiReaderRun(m) {
   }
 }
 
+// The next slice as a task of its own (the page's messages are taken between two), posted to a MessageChannel: a
+// chain of setTimeout(0) is held back 4 ms a call after the fifth.
+var essiReaderSlices = null;
+function essiReaderNextSlice(f) {
+  if (!essiReaderSlices) {
+    essiReaderSlices = {channel: new MessageChannel(), queue: []};
+    essiReaderSlices.channel.port1.onmessage = () => essiReaderSlices.queue.shift()();
+  }
+  essiReaderSlices.queue.push(f);
+  essiReaderSlices.channel.port2.postMessage(0);
+}
+
 function essiReaderPlan(job) {
-  if (Module._essi_reader_plan(job, kPlanSliceMs)) setTimeout(() => essiReaderPlan(job), 0);
+  if (Module._essi_reader_plan(job, kPlanSliceMs)) essiReaderNextSlice(() => essiReaderPlan(job));
 }
 
 function essiReaderWarmUp() {
   if (!essiReaderWarming) return;
-  if (Module._essi_reader_warm_up(kWarmUpSliceMs)) setTimeout(essiReaderWarmUp, 0);
+  if (Module._essi_reader_warm_up(kWarmUpSliceMs)) essiReaderNextSlice(essiReaderWarmUp);
   else essiReaderWarming = false;
 }
 
