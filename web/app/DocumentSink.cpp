@@ -13,12 +13,12 @@ void DocumentSink::on_motion(const MotionRecord& r) {
     // (a cut by several torches keeps its record: the drawing makes its copies from it)
     const bool eligible = r.curve != CurveKind::Parabola && r.torches == 1 && kerf_in_flags(r.kerf, r.kerf_mm);
     const bool end_in_units = eligible && d.to_units(r.end, m.end_units);
-    const bool continues = (m.flags & Motion::kFlagJump) == 0 && last_end_in_units_;  // (start == the last end)
+    // A motion that starts where a compact one ended (no jump: there is one before) has that one's end units as
+    // its start.
+    const bool continues = (m.flags & Motion::kFlagJump) == 0 && (d.motions.back().flags & Motion::kFlagKept) == 0;
     bool compact = end_in_units;
-    if (compact && continues) start = last_end_units_;
+    if (compact && continues) start = d.motions.back().end_units;
     else if (compact) compact = d.to_units(r.start, start);
-    last_end_units_ = m.end_units;
-    last_end_in_units_ = end_in_units;
     if (compact && r.curve == CurveKind::Arc) compact = d.to_units(r.centre, centre);
     if (!compact) {
         m.flags |= Motion::kFlagKept;
@@ -42,8 +42,6 @@ void DocumentSink::on_line(const UnitLine& l) {
     Motion m =
         start_motion(l.line, l.kind, CurveKind::Line, l.tools, 1, l.kerf, l.start, l.end, l.kerf_mm, l.feed_mm_min);
     m.end_units = {static_cast<std::int32_t>(l.end_x), static_cast<std::int32_t>(l.end_y)};
-    last_end_units_ = m.end_units;
-    last_end_in_units_ = true;
     doc_.arc_rank.push_back(false);
     add(m);
 }

@@ -34,11 +34,7 @@ private:
 
     Document& doc_;
     const float rapid_feed_ = static_cast<float>(doc_.profile.rapid_mm_min);
-    Point last_end_;  // of the motion before (a motion that starts elsewhere is a jump)
-    // The units of last_end_, when they are whole (a motion that starts where the one before ended has them as its
-    // start: no second conversion).
-    UnitPoint last_end_units_;
-    bool last_end_in_units_ = false;
+    Point last_end_;         // of the motion before (a motion that starts elsewhere is a jump)
     PierceTracker pierces_;  // the statistics' pierces, each at its motion
 };
 
